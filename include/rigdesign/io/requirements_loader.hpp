@@ -1,0 +1,12 @@
+#pragma once
+#include <string>
+
+#include "rigdesign/model/requirements.hpp"
+
+namespace rigdesign {
+
+/// Reads an application requirements file R1-R8 (schema in rigs/README.md).
+/// Throws InputError listing every problem.
+Requirements load_requirements(const std::string& path);
+
+}  // namespace rigdesign

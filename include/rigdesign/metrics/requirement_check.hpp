@@ -1,0 +1,36 @@
+#pragma once
+/// Judges a rig's metrics against application requirements R1-R8 through the satisficing
+/// metrics of paper 1 (DESIGN.md section 5): R3/R4/R5 give a minimum F, R6 a maximum R,
+/// R7 a maximum N, R8 the lighting conditions L must hold for.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/metrics/resultant.hpp"
+#include "rigdesign/model/requirements.hpp"
+
+namespace rigdesign {
+
+enum class Verdict { pass, fail, not_evaluated };
+
+struct RequirementResult {
+  std::string id;      ///< "R5"
+  std::string title;   ///< "robot speed"
+  std::string metric;  ///< satisficing metric judged: "F", "R", "N", "L", "d", "body", "SC"
+  std::string unit;    ///< of required and actual ("Hz", "m", "")
+  std::optional<double> required;
+  std::optional<double> actual;
+  Verdict verdict = Verdict::pass;
+  std::vector<std::string> limiting_mounts;  ///< mounts that set the actual value (or fail)
+  std::string explanation;  ///< one sentence: how required was derived, what failed
+  std::string field;        ///< the requirement's key in its file, e.g. "robot_speed"
+  SourceLocation where;     ///< the requirement in its file
+};
+
+std::vector<RequirementResult> evaluate_requirements(const Rig& rig,
+                                                     const ResultantMetrics& metrics,
+                                                     const Requirements& requirements);
+
+std::string to_string(Verdict verdict);
+
+}  // namespace rigdesign

@@ -1,0 +1,63 @@
+#pragma once
+/// Application requirements R1-R8 of paper 1 (section 2.1; DESIGN.md section 5). They are
+/// stated in the application's terms (speed, obstacle size, lighting); the satisficing
+/// metrics SC, F, R, N, L are derived from them, never written directly.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/model/sensor.hpp"
+#include "rigdesign/model/source_location.hpp"
+
+namespace rigdesign {
+
+/// R2: a direction of motion and the spatial coverage it needs.
+struct SectorRequirement {
+  std::string name;
+  double from = 0.0;  ///< [rad] azimuth, counter-clockwise from x (forward)
+  double to = 0.0;    ///< [rad] to > from; the sector may wrap past 180 degrees
+  double min_complete_coverage = 0.0;  ///< SC complete, share in [0, 1]
+  double min_floor_coverage = 0.0;     ///< SC floor, share in [0, 1]
+  SourceLocation where;
+};
+
+/// A speed and how far things may move between two frames: needs F >= speed / travel.
+struct MotionBetweenFrames {
+  double speed = 0.0;   ///< [m/s]
+  double travel = 0.0;  ///< [m]
+  SourceLocation where;
+  double min_frequency() const { return speed / travel; }
+};
+
+struct Requirements {
+  std::string name;
+  // R1: body size and the area to perceive.
+  std::optional<double> body_radius;  ///< [m]
+  std::optional<double> body_height;  ///< [m]
+  SourceLocation body_where;
+  // R2: directions of motion.
+  std::vector<SectorRequirement> sectors;
+  // R3: range and a rate the application needs regardless of motion.
+  double distance = 0.0;  ///< d [m]
+  std::optional<double> min_frequency;  ///< [Hz]
+  SourceLocation range_where;
+  // R4: object dynamics; R5: robot speed.
+  std::optional<MotionBetweenFrames> object_dynamics;
+  std::optional<MotionBetweenFrames> robot_speed;
+  // R6: smallest obstacle to notice at distance d.
+  std::optional<double> smallest_obstacle;  ///< [m]
+  SourceLocation smallest_obstacle_where;
+  // R7: accuracy.
+  std::optional<double> max_noise;  ///< [m] one sigma at distance d
+  SourceLocation accuracy_where;
+  // R8: lighting conditions the rig must work in.
+  std::vector<LightCondition> lighting;
+  SourceLocation lighting_where;
+
+  std::string file;
+
+  /// Satisficing frequency: the largest of R3's rate, R4's and R5's v / travel [Hz].
+  double required_frequency() const;
+};
+
+}  // namespace rigdesign

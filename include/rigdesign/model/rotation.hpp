@@ -1,0 +1,14 @@
+#pragma once
+#include "rigdesign/model/eigen_types.hpp"
+
+namespace rigdesign {
+
+/// Rotation from roll, pitch, yaw [rad] about the fixed x, y, z axes, applied in that order:
+/// R = Rz(yaw) * Ry(pitch) * Rx(roll). This is URDF's and ROS's `rpy` convention, so a pose
+/// copied from a robot description means the same here.
+Mat3 rotation_from_rpy(double roll, double pitch, double yaw);
+
+/// The same pose from xyz [m] and rpy [rad].
+Pose3 pose_from_xyz_rpy(const Vec3& xyz, const Vec3& rpy);
+
+}  // namespace rigdesign

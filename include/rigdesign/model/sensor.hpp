@@ -1,0 +1,128 @@
+#pragma once
+/// The sensor datasheet model: a sensor with its price and the modes it can run in
+/// (DESIGN.md section 3). All values SI: metres, seconds, radians, bytes, USD.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/model/source_location.hpp"
+
+namespace rigdesign {
+
+enum class Technology {
+  tof,
+  structured_light,
+  active_stereo,
+  passive_stereo,
+  lidar_3d_spinning,
+  lidar_2d,
+  solid_state_lidar,
+};
+
+enum class FovShape {
+  pyramid,  ///< camera frustum: `horizontal` x `vertical` full angles about the x axis
+  cone,     ///< circular: `horizontal` is the full apex angle
+  band,     ///< spinning lidar: azimuth span `horizontal`, elevation in [elevation_min, elevation_max]
+  planar,   ///< 2D scanner: aperture `horizontal`, a wedge `vertical` thick (beam divergence)
+};
+
+/// Field of view in the sensor frame (x forward along the optical axis, y left, z up).
+struct FieldOfView {
+  FovShape shape = FovShape::pyramid;
+  double horizontal = 0.0;     ///< [rad] full angle; azimuth span for band and planar
+  double vertical = 0.0;       ///< [rad] full angle; band: elevation_max - elevation_min
+  double elevation_min = 0.0;  ///< [rad] lowest beam, measured from the x-y plane
+  double elevation_max = 0.0;  ///< [rad] highest beam
+};
+
+/// Lighting conditions of requirement R8, in a fixed order for tables.
+enum class LightCondition { dark, indoor, sunlight };
+inline constexpr std::array<LightCondition, 3> kLightConditions = {
+    LightCondition::dark, LightCondition::indoor, LightCondition::sunlight};
+
+/// Whether a sensor works under each lighting condition (true = immune to it).
+struct LightImmunity {
+  bool dark = false;
+  bool indoor = false;
+  bool sunlight = false;
+  bool immune_to(LightCondition condition) const;
+};
+
+/// Range noise (one standard deviation) as a function of distance d [m]:
+/// sigma(d) = a + b*d + c*d^2, from the datasheet (DESIGN.md section 3).
+struct NoiseModel {
+  double a = 0.0;  ///< [m]
+  double b = 0.0;  ///< [-]
+  double c = 0.0;  ///< [1/m]
+  double sigma(double distance) const;
+};
+
+/// How a number was obtained, so estimates are never mistaken for datasheet values.
+enum class Basis { datasheet, measured, estimate };
+
+/// Driver CPU load U_p of one running sensor (paper 1, eq. 5), in core-equivalents of the
+/// reference machine named in sensors.yaml: a fixed part plus a cost per delivered point,
+/// so one entry in `mode_defaults` serves every mode of a sensor.
+struct DriverCpuLoad {
+  double cores = 0.0;              ///< fixed part [core-equivalents]
+  double seconds_per_point = 0.0;  ///< [core-seconds per point]
+  Basis basis = Basis::estimate;
+  std::string note;
+  double load(double points_per_second) const { return cores + seconds_per_point * points_per_second; }
+};
+
+struct SensorMode {
+  std::string id;
+  FieldOfView fov;
+  double min_range = 0.0;  ///< [m] from the sensor origin
+  double max_range = 0.0;  ///< [m]
+  double frequency = 0.0;  ///< [Hz] full frames (or revolutions) per second
+  /// [rad] angle between neighbouring rays; vertical is empty for single-row scanners.
+  double angular_resolution_h = 0.0;
+  std::optional<double> angular_resolution_v;
+  double points_per_frame = 0.0;
+  double bytes_per_frame = 0.0;  ///< [B] data on the wire per frame
+  NoiseModel noise;
+  LightImmunity light;
+  DriverCpuLoad driver_cpu;
+  SourceLocation where;
+
+  /// The coarser of the two ray spacings [rad]: what sets the smallest obstacle seen.
+  double worst_angular_resolution() const;
+};
+
+struct Price {
+  double usd = 0.0;
+  int year = 0;
+  Basis basis = Basis::datasheet;
+  std::string source;
+};
+
+struct Sensor {
+  std::string id;
+  std::string name;
+  Technology technology = Technology::tof;
+  std::string source;  ///< datasheet document or URL the values come from
+  Price price;
+  std::vector<SensorMode> modes;
+  SourceLocation where;
+
+  const SensorMode* find_mode(const std::string& mode_id) const;
+};
+
+/// The contents of a sensors.yaml file.
+struct SensorLibrary {
+  std::string reference_machine;  ///< what one "core-equivalent" of driver load means
+  std::vector<Sensor> sensors;
+  std::string file;
+
+  const Sensor* find(const std::string& sensor_id) const;
+};
+
+std::string to_string(Technology technology);
+std::string to_string(FovShape shape);
+std::string to_string(LightCondition condition);
+std::string to_string(Basis basis);
+
+}  // namespace rigdesign

@@ -1,0 +1,36 @@
+#include "app.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "command.hpp"
+#include "rigdesign/io/input_error.hpp"
+
+namespace rigdesign::cli {
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"rigdesign: design and verify the sensor rig of an autonomous mobile robot"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "rigdesign 0.1.0");
+  const std::vector<Command> commands = {setup_metrics(app), setup_check(app)};
+
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error, out, err);
+    return code == 0 ? kOk : kBadInput;
+  }
+  try {
+    for (const Command& command : commands) {
+      if (command.app->parsed()) return command.run(out, err);
+    }
+  } catch (const InputError& error) {
+    for (const Diagnostic& diagnostic : error.diagnostics()) err << diagnostic.message() << '\n';
+    return kBadInput;
+  }
+  return kBadInput;
+}
+
+}  // namespace rigdesign::cli

@@ -1,0 +1,69 @@
+// `rigdesign check FILE... [--requirements FILE] [--format text|json|junit] [--output FILE]`:
+// validates rig, sensor and requirement files for CI and judges rigs against requirements.
+// Exit 0 when all pass, 1 when a requirement fails, 2 when any input is invalid.
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <ostream>
+
+#include "app.hpp"
+#include "command.hpp"
+#include "file_report.hpp"
+#include "rigdesign/io/atomic_write.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+struct CheckOptions {
+  std::vector<std::string> files;
+  std::string requirements;
+  std::string sensors;
+  std::string format = "text";
+  std::string output;
+};
+
+int run_check(const CheckOptions& options, std::ostream& out) {
+  std::vector<FileReport> reports;
+  for (const std::string& file : options.files) {
+    reports.push_back(check_file(file, options.sensors, options.requirements));
+  }
+  int exit_code = kOk;
+  for (const FileReport& report : reports) {
+    if (report.invalid()) exit_code = kBadInput;
+    if (report.failing() && exit_code == kOk) exit_code = kRequirementFails;
+  }
+  std::string text;
+  if (options.format == "json") {
+    text = format_json(reports, exit_code);
+  } else if (options.format == "junit") {
+    text = format_junit(reports);
+  } else {
+    text = format_text(reports);
+  }
+  if (options.output.empty()) {
+    out << text;
+  } else {
+    write_file_atomically(options.output, text);
+  }
+  return exit_code;
+}
+
+}  // namespace
+
+Command setup_check(CLI::App& parent) {
+  auto options = std::make_shared<CheckOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "check", "Validate rig, sensor and requirement files and judge rigs against requirements "
+               "(exit 0 pass, 1 a requirement fails, 2 invalid input)");
+  app->add_option("files", options->files, "Rig, sensors.yaml or requirement files")->required();
+  app->add_option("--requirements", options->requirements,
+                  "Requirements to judge every rig against (default: the file each rig names)");
+  app->add_option("--sensors", options->sensors, "Sensor library for every rig");
+  app->add_option("--format", options->format, "Report format")
+      ->check(CLI::IsMember({"text", "json", "junit"}));
+  app->add_option("--output", options->output,
+                  "Write the report to this file (atomically) instead of standard output");
+  return {app, [options](std::ostream& out, std::ostream&) { return run_check(*options, out); }};
+}
+
+}  // namespace rigdesign::cli

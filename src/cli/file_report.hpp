@@ -1,0 +1,32 @@
+#pragma once
+// What `rigdesign check` found in one file: its kind, the problems in it (and in the
+// library and requirements a rig pulls in), and the requirement verdicts.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/io/file_kind.hpp"
+#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/metrics/requirement_check.hpp"
+
+namespace rigdesign::cli {
+
+struct FileReport {
+  std::string file;
+  std::optional<FileKind> kind;
+  std::string summary;  ///< one line on what was checked
+  std::vector<Diagnostic> diagnostics;
+  std::vector<RequirementResult> results;
+
+  bool invalid() const;
+  bool failing() const;
+};
+
+FileReport check_file(const std::string& path, const std::string& sensors_path,
+                      const std::string& requirements_path);
+
+std::string format_text(const std::vector<FileReport>& reports);
+std::string format_json(const std::vector<FileReport>& reports, int exit_code);
+std::string format_junit(const std::vector<FileReport>& reports);
+
+}  // namespace rigdesign::cli

@@ -1,0 +1,49 @@
+#include "inputs.hpp"
+
+#include "rigdesign/io/requirements_loader.hpp"
+#include "rigdesign/io/rig_loader.hpp"
+#include "rigdesign/io/rig_references.hpp"
+#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/sensor_library_locator.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+template <typename Load>
+auto load_collecting(Load load, Diagnostics& diagnostics) -> std::optional<decltype(load())> {
+  try {
+    return load();
+  } catch (const InputError& error) {
+    for (const Diagnostic& diagnostic : error.diagnostics()) diagnostics.add(diagnostic);
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensors_path,
+                          const std::string& requirements_path) {
+  RigInputs inputs;
+  inputs.rig = load_rig(rig_path);
+  Diagnostics diagnostics;
+  const std::string library_path = locate_sensor_library(inputs.rig, sensors_path);
+  auto library = load_collecting([&] { return load_sensor_library(library_path); }, diagnostics);
+  std::string wanted_requirements = requirements_path;
+  if (wanted_requirements.empty() && !inputs.rig.requirements.empty()) {
+    wanted_requirements = resolve_beside(inputs.rig.file, inputs.rig.requirements);
+  }
+  if (!wanted_requirements.empty()) {
+    inputs.requirements =
+        load_collecting([&] { return load_requirements(wanted_requirements); }, diagnostics);
+  }
+  if (library) {
+    inputs.library = std::move(*library);
+    const Diagnostics references = check_rig_references(inputs.rig, inputs.library);
+    for (const Diagnostic& diagnostic : references.items()) diagnostics.add(diagnostic);
+  }
+  diagnostics.throw_if_errors();
+  inputs.warnings = diagnostics.items();
+  return inputs;
+}
+
+}  // namespace rigdesign::cli

@@ -1,0 +1,27 @@
+#pragma once
+// Loads what a rig subcommand works on: the rig, the sensor library it refers to and its
+// requirements, reporting every problem of all three at once.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/requirements.hpp"
+#include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/sensor.hpp"
+
+namespace rigdesign::cli {
+
+struct RigInputs {
+  Rig rig;
+  SensorLibrary library;
+  std::optional<Requirements> requirements;
+  std::vector<Diagnostic> warnings;
+};
+
+/// `sensors_path` and `requirements_path` override what the rig file names when not empty.
+/// Throws InputError with every error found (and the warnings).
+RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensors_path,
+                          const std::string& requirements_path);
+
+}  // namespace rigdesign::cli

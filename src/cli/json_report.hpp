@@ -1,0 +1,17 @@
+#pragma once
+// JSON forms of the library's results, shared by `metrics --json` and `check --format json`.
+#include <nlohmann/json_fwd.hpp>
+#include <vector>
+
+#include "inputs.hpp"
+#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/metrics/requirement_check.hpp"
+#include "rigdesign/metrics/resultant.hpp"
+
+namespace rigdesign::cli {
+
+nlohmann::json to_json(const Diagnostic& diagnostic);
+nlohmann::json to_json(const RequirementResult& result);
+nlohmann::json to_json(const RigInputs& inputs, const ResultantMetrics& metrics);
+
+}  // namespace rigdesign::cli

@@ -1,0 +1,165 @@
+// `rigdesign metrics RIG [--requirements FILE] [--sensors FILE] [--json]`: per-sensor and
+// resultant F, R, N, L, bandwidth, driver CPU load and sensor cost (paper 1, section 2).
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <ostream>
+
+#include "app.hpp"
+#include "command.hpp"
+#include "inputs.hpp"
+#include "json_report.hpp"
+#include "rigdesign/metrics/requirement_check.hpp"
+#include "rigdesign/metrics/resultant.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/units.hpp"
+#include "text_table.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+struct MetricsOptions {
+  std::string rig;
+  std::string requirements;
+  std::string sensors;
+  bool json = false;
+};
+
+std::string yes_no(bool value) { return value ? "yes" : "no"; }
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+std::string marked(double value, int decimals, Basis basis) {
+  return fixed(value, decimals) + (basis == Basis::estimate ? "*" : "");
+}
+
+void print_mount_table(const ResultantMetrics& metrics, std::ostream& out) {
+  using Align = TextTable::Align;
+  TextTable table;
+  for (const char* header : {"mount", "sensor / mode"}) table.add_column(header, Align::left);
+  for (const char* header : {"d [m]", "F [Hz]", "R [mm]", "N [mm]"}) {
+    table.add_column(header, Align::right);
+  }
+  for (const char* header : {"dark", "indoor", "sun"}) table.add_column(header, Align::left);
+  for (const char* header : {"B [MB/s]", "U_p [cores]", "price [USD]"}) {
+    table.add_column(header, Align::right);
+  }
+  for (const MountMetrics& mount : metrics.mounts) {
+    table.add_row({mount.mount_id, mount.sensor_id + " / " + mount.mode_id,
+                   fixed(mount.distance, 2) + (mount.distance_in_range ? "" : "!"),
+                   fixed(mount.frequency, 1), fixed(mount.point_spacing * 1000, 1),
+                   fixed(mount.noise * 1000, 1), yes_no(mount.light.dark),
+                   yes_no(mount.light.indoor), yes_no(mount.light.sunlight),
+                   fixed(mount.bandwidth / 1e6, 2),
+                   marked(mount.driver_cpu, 2, mount.driver_cpu_basis),
+                   marked(mount.price, 0, mount.price_basis)});
+  }
+  table.print(out, "  ");
+}
+
+void print_light(const ResultantMetrics& metrics, const std::optional<Requirements>& requirements,
+                 std::ostream& out) {
+  if (requirements && !requirements->lighting.empty()) {
+    bool all = true;
+    std::vector<std::string> names;
+    for (LightCondition condition : requirements->lighting) {
+      all = all && metrics.light_for(condition).immune;
+      names.push_back(to_string(condition));
+    }
+    out << "  L = " << (all ? "true" : "false") << "  (required: " << join(names) << ")\n";
+  }
+  for (const LightResult& light : metrics.light) {
+    out << "      " << to_string(light.condition) << ": "
+        << (light.immune ? "every sensor works" : "fails for " + join(light.failing_mounts))
+        << '\n';
+  }
+}
+
+void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
+                const std::vector<RequirementResult>& results, std::ostream& out) {
+  const Rig& rig = inputs.rig;
+  out << "Rig: " << rig.name << "  (" << rig.file << ", sensors from " << inputs.library.file
+      << ")\n";
+  out << "Body r = " << format_number(rig.body.radius) << " m, h = "
+      << format_number(rig.body.height) << " m; distance of interest d = "
+      << format_number(rig.distance_of_interest) << " m\n\n";
+  print_mount_table(metrics, out);
+  out << "\nResultant metrics (paper 1, section 2.3)\n";
+  out << "  F = " << format_number(metrics.frequency.value, 4) << " Hz      slowest: "
+      << join(metrics.frequency.mounts) << '\n';
+  out << "  R = " << fixed(metrics.point_spacing.value * 1000, 1) << " mm   coarsest: "
+      << join(metrics.point_spacing.mounts) << '\n';
+  out << "  N = " << fixed(metrics.noise.value * 1000, 1) << " mm    noisiest: "
+      << join(metrics.noise.mounts) << '\n';
+  print_light(metrics, inputs.requirements, out);
+  out << "\nCost model inputs (paper 1, eqs. 1-7)\n";
+  out << "  B   = " << fixed(metrics.bandwidth / 1e6, 2) << " MB/s ("
+      << fixed(metrics.bandwidth * 8 / 1e6, 1) << " Mbit/s)\n";
+  out << "  U_p = " << fixed(metrics.driver_cpu, 2) << " core-equivalents of "
+      << inputs.library.reference_machine << '\n';
+  out << "  C_s = " << fixed(metrics.sensor_cost, 0) << " USD\n";
+  if (metrics.any_estimate) out << "  * estimate, not a datasheet or measured value\n";
+  for (const Diagnostic& warning : inputs.warnings) out << warning.message() << '\n';
+  if (results.empty()) return;
+  out << "\nRequirements (" << inputs.requirements->file << ")\n";
+  using Align = TextTable::Align;
+  TextTable table;
+  table.add_column("req", Align::left);
+  table.add_column("title", Align::left);
+  table.add_column("verdict", Align::left);
+  table.add_column("how", Align::left);
+  for (const RequirementResult& result : results) {
+    std::string how = result.explanation;
+    if (result.actual) {
+      const bool in_mm = result.unit == "m" && (result.metric == "R" || result.metric == "N");
+      how = result.metric + " = " +
+            (in_mm ? fixed(*result.actual * 1000, 1) + " mm" : format_number(*result.actual, 4) + " " + result.unit) +
+            "; " + how;
+    }
+    table.add_row({result.id, result.title, to_string(result.verdict), how});
+  }
+  table.print(out, "  ");
+}
+
+int run_metrics(const MetricsOptions& options, std::ostream& out) {
+  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
+  const ResultantMetrics metrics = compute_resultant(inputs.rig, inputs.library);
+  std::vector<RequirementResult> results;
+  if (inputs.requirements) results = evaluate_requirements(inputs.rig, metrics, *inputs.requirements);
+  if (options.json) {
+    nlohmann::json report = to_json(inputs, metrics);
+    if (inputs.requirements) {
+      nlohmann::json list = nlohmann::json::array();
+      for (const RequirementResult& result : results) list.push_back(to_json(result));
+      report["requirements"] = {{"file", inputs.requirements->file}, {"results", list}};
+    }
+    out << report.dump(2) << '\n';
+  } else {
+    print_text(inputs, metrics, results, out);
+  }
+  return kOk;
+}
+
+}  // namespace
+
+Command setup_metrics(CLI::App& parent) {
+  auto options = std::make_shared<MetricsOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "metrics", "Per-sensor and resultant F, R, N, L, bandwidth, driver CPU load and cost");
+  app->add_option("rig", options->rig, "Rig file (rigs/*.yaml)")->required();
+  app->add_option("--requirements", options->requirements,
+                  "Application requirements R1-R8 to judge the rig against (default: the "
+                  "file the rig names)");
+  app->add_option("--sensors", options->sensors,
+                  "Sensor library (default: the rig's sensor_library, else a sensors.yaml in "
+                  "the rig's folder or above, else the bundled one)");
+  app->add_flag("--json", options->json, "Print JSON instead of tables");
+  return {app, [options](std::ostream& out, std::ostream&) { return run_metrics(*options, out); }};
+}
+
+}  // namespace rigdesign::cli

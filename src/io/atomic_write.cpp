@@ -1,0 +1,53 @@
+#include "rigdesign/io/atomic_write.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "rigdesign/io/input_error.hpp"
+
+namespace rigdesign {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& problem) {
+  throw InputError(Diagnostic{{path, 0, 0}, "output", problem, "a writable path"});
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::string& contents) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::string hidden_name(".");  // built with += : GCC 12 misreports "." + string (PR105329)
+  hidden_name += target.filename().string();
+  hidden_name += ".XXXXXX";
+  std::string temporary = (folder / hidden_name).string();
+  const int descriptor = ::mkstemp(temporary.data());
+  if (descriptor < 0) fail(path, std::string("cannot create a file beside it: ") + std::strerror(errno));
+  ::close(descriptor);
+  {
+    std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
+    stream << contents;
+    stream.flush();
+    if (!stream) {
+      std::remove(temporary.c_str());
+      fail(path, "cannot write");
+    }
+  }
+  std::error_code error;
+  fs::permissions(temporary, fs::perms::owner_read | fs::perms::owner_write |
+                                 fs::perms::group_read | fs::perms::others_read,
+                  error);
+  fs::rename(temporary, target, error);
+  if (error) {
+    std::remove(temporary.c_str());
+    fail(path, "cannot rename into place: " + error.message());
+  }
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,31 @@
+#include "rigdesign/io/file_kind.hpp"
+
+#include "io/yaml_reader.hpp"
+
+namespace rigdesign {
+
+FileKind detect_file_kind(const std::string& path) {
+  const YAML::Node root = io::load_yaml_file(path);
+  if (root.IsMap()) {
+    if (root["sensors"].IsDefined()) return FileKind::sensor_library;
+    if (root["mounts"].IsDefined()) return FileKind::rig;
+    if (root["range"].IsDefined()) return FileKind::requirements;
+  }
+  throw InputError(Diagnostic{{path, 1, 1},
+                              "(document)",
+                              root.IsMap() ? "is neither a sensor library, a rig nor requirements"
+                                           : "is not a YAML map",
+                              "a map with top-level `sensors` (library), `mounts` (rig) or "
+                              "`range` (requirements)"});
+}
+
+std::string to_string(FileKind kind) {
+  switch (kind) {
+    case FileKind::sensor_library: return "sensor library";
+    case FileKind::rig: return "rig";
+    case FileKind::requirements: return "requirements";
+  }
+  return "?";
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,152 @@
+#include "rigdesign/io/rig_loader.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "io/field_checks.hpp"
+#include "io/yaml_reader.hpp"
+#include "rigdesign/model/rotation.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace rigdesign {
+namespace {
+
+using io::MapReader;
+using io::Need;
+
+// Twice the signed area: positive for a counter-clockwise polygon.
+double twice_signed_area(const std::vector<Vec2>& polygon) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2& a = polygon[i];
+    const Vec2& b = polygon[(i + 1) % polygon.size()];
+    sum += a.x() * b.y() - b.x() * a.y();
+  }
+  return sum;
+}
+
+std::vector<Vec2> read_footprint(MapReader& body) {
+  const std::string expected = "a list of at least 3 [x, y] vertices in metres";
+  std::vector<Vec2> footprint;
+  const YAML::Node list = body.node("footprint");
+  if (!list.IsSequence() || list.size() < 3) {
+    body.require(false, "footprint", "is not a list of 3 or more vertices", expected);
+    return footprint;
+  }
+  bool all_valid = true;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string field = body.field("footprint") + "[" + std::to_string(i) + "]";
+    const YAML::Node vertex = list[i];
+    if (!vertex.IsSequence() || vertex.size() != 2) {
+      body.diagnostics().error(io::location_of(vertex, body.file()), field, "is not an [x, y] pair",
+                               expected);
+      all_valid = false;
+      continue;
+    }
+    const auto x = io::sequence_number(vertex[0], field + "[0]", body.file(), expected,
+                                       body.diagnostics());
+    const auto y = io::sequence_number(vertex[1], field + "[1]", body.file(), expected,
+                                       body.diagnostics());
+    all_valid = all_valid && x && y;
+    footprint.emplace_back(x.value_or(0.0), y.value_or(0.0));
+  }
+  if (!all_valid) return {};
+  const double area2 = twice_signed_area(footprint);
+  body.require(std::abs(area2) > 1e-9, "footprint", "encloses no area",
+               "vertices of a simple polygon around the robot's vertical axis");
+  if (area2 < 0) std::reverse(footprint.begin(), footprint.end());
+  return footprint;
+}
+
+RobotBody read_body(MapReader& body) {
+  RobotBody result;
+  result.height = io::positive(body, "height", Need::required, "the body height h in metres, > 0");
+  const bool has_radius = body.has("radius");
+  const bool has_footprint = body.has("footprint");
+  body.require(has_radius != has_footprint, "radius",
+               has_radius ? "given together with footprint" : "missing",
+               "either radius (a cylinder) or footprint (a prism), in metres");
+  if (has_radius) {
+    result.radius = io::positive(body, "radius", Need::required, "the body radius r in metres, > 0");
+  } else if (has_footprint) {
+    result.footprint = read_footprint(body);
+    for (const Vec2& vertex : result.footprint) result.radius = std::max(result.radius, vertex.norm());
+  }
+  body.text("note", Need::optional);
+  body.reject_unknown_keys();
+  return result;
+}
+
+Pose3 read_pose(MapReader& pose) {
+  const auto xyz = pose.numbers("xyz", Need::required, 3, 3, "[x, y, z] in metres, finite");
+  const auto rpy = pose.numbers("rpy_deg", Need::optional, 3, 3,
+                                "[roll, pitch, yaw] in degrees, finite (default [0, 0, 0])");
+  pose.reject_unknown_keys();
+  const Vec3 position = xyz ? Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : Vec3::Zero();
+  Vec3 angles = Vec3::Zero();
+  if (rpy) angles = Vec3(deg_to_rad((*rpy)[0]), deg_to_rad((*rpy)[1]), deg_to_rad((*rpy)[2]));
+  return pose_from_xyz_rpy(position, angles);
+}
+
+Mount read_mount(MapReader& reader) {
+  Mount mount;
+  mount.where = reader.location();
+  mount.id = reader.text("id", Need::required, "a mount id, unique in the rig").value_or("");
+  mount.sensor_id = reader.text("sensor", Need::required, "a sensor id from sensors.yaml").value_or("");
+  mount.sensor_where = reader.location("sensor");
+  mount.mode_id = reader.text("mode", Need::required, "a mode id of that sensor").value_or("");
+  mount.mode_where = reader.location("mode");
+  if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg")) {
+    mount.T_robot_sensor = read_pose(*pose);
+  }
+  if (reader.has("distance_of_interest")) {
+    mount.distance_of_interest = io::positive(reader, "distance_of_interest", Need::required,
+                                              "metres, > 0");
+  }
+  reader.text("note", Need::optional);
+  reader.reject_unknown_keys();
+  return mount;
+}
+
+}  // namespace
+
+Rig load_rig(const std::string& path) {
+  const YAML::Node root = io::load_yaml_file(path);
+  Diagnostics diagnostics;
+  MapReader top(root, "", path, diagnostics, {path, 1, 1});
+  if (!top.valid()) {
+    throw InputError(Diagnostic{{path, 1, 1}, "(document)", "is not a map",
+                                "a rig: a map with name, body, distance_of_interest, mounts"});
+  }
+  Rig rig;
+  rig.file = path;
+  rig.where = top.location();
+  rig.name = top.text("name", Need::required, "the rig's name").value_or("");
+  rig.sensor_library = top.text("sensor_library", Need::optional).value_or("");
+  rig.requirements = top.text("requirements", Need::optional).value_or("");
+  if (auto body = top.map("body", Need::required, "a map with height and radius or footprint")) {
+    rig.body = read_body(*body);
+  }
+  rig.distance_of_interest = io::positive(top, "distance_of_interest", Need::required,
+                                          "the distance of interest d in metres, > body radius");
+  if (rig.distance_of_interest > 0 && rig.body.radius > 0) {
+    top.require(rig.distance_of_interest > rig.body.radius, "distance_of_interest",
+                "is not beyond the body radius", "d > r");
+  }
+  std::set<std::string> ids;
+  for (MapReader& reader : top.maps("mounts", Need::required, "a list of mounts")) {
+    Mount mount = read_mount(reader);
+    if (!mount.id.empty() && !ids.insert(mount.id).second) {
+      reader.require(false, "id", "duplicate mount id '" + mount.id + "'", "unique mount ids");
+    }
+    rig.mounts.push_back(std::move(mount));
+  }
+  top.require(!rig.mounts.empty() || !top.has("mounts"), "mounts", "is empty",
+              "at least one mounted sensor");
+  top.text("note", Need::optional);
+  top.reject_unknown_keys();
+  diagnostics.throw_if_errors();
+  return rig;
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,183 @@
+#include "rigdesign/metrics/requirement_check.hpp"
+
+#include <cmath>
+
+#include "rigdesign/model/format_number.hpp"
+
+namespace rigdesign {
+namespace {
+
+// Body dimensions agree when within this [m]: files round to millimetres.
+constexpr double kBodyTolerance = 1e-3;
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+RequirementResult named(std::string id, std::string title, std::string field, std::string metric,
+                        std::string unit, SourceLocation where) {
+  RequirementResult result;
+  result.id = std::move(id);
+  result.title = std::move(title);
+  result.field = std::move(field);
+  result.metric = std::move(metric);
+  result.unit = std::move(unit);
+  result.where = std::move(where);
+  return result;
+}
+
+Verdict verdict(bool pass) { return pass ? Verdict::pass : Verdict::fail; }
+
+// R3's rate, R4 and R5 each bound F from below; each is reported on its own so the binding
+// one is visible.
+RequirementResult minimum_frequency(RequirementResult result, double required,
+                                    const std::string& derivation,
+                                    const ResultantMetrics& metrics) {
+  result.required = required;
+  result.actual = metrics.frequency.value;
+  result.verdict = verdict(metrics.frequency.value >= required);
+  result.limiting_mounts = metrics.frequency.mounts;
+  result.explanation = "F >= " + derivation + " = " + format_number(required, 4) + " Hz";
+  return result;
+}
+
+void check_body(const Rig& rig, const Requirements& requirements,
+                std::vector<RequirementResult>& results) {
+  if (!requirements.body_radius || !requirements.body_height) return;
+  RequirementResult result =
+      named("R1", "body size", "body", "body", "m", requirements.body_where);
+  result.verdict =
+      verdict(std::abs(rig.body.radius - *requirements.body_radius) <= kBodyTolerance &&
+              std::abs(rig.body.height - *requirements.body_height) <= kBodyTolerance);
+  result.explanation = "rig body r = " + format_number(rig.body.radius) +
+                       " m, h = " + format_number(rig.body.height) +
+                       " m must match the application's r = " +
+                       format_number(*requirements.body_radius) +
+                       " m, h = " + format_number(*requirements.body_height) + " m";
+  results.push_back(std::move(result));
+}
+
+void check_sectors(const Requirements& requirements, std::vector<RequirementResult>& results) {
+  for (const SectorRequirement& sector : requirements.sectors) {
+    RequirementResult result = named("R2", "direction of motion: " + sector.name,
+                                     "sectors." + sector.name, "SC", "", sector.where);
+    result.verdict = Verdict::not_evaluated;
+    result.explanation = "spatial coverage per sector is not computed by this version";
+    results.push_back(std::move(result));
+  }
+}
+
+void check_range(const Rig& rig, const Requirements& requirements,
+                 std::vector<RequirementResult>& results) {
+  RequirementResult result =
+      named("R3", "range", "range.distance", "d", "m", requirements.range_where);
+  result.required = requirements.distance;
+  result.actual = rig.distance_of_interest;
+  result.verdict = verdict(rig.distance_of_interest + 1e-9 >= requirements.distance);
+  result.explanation = "the rig's distance of interest must reach the application's d = " +
+                       format_number(requirements.distance) + " m";
+  results.push_back(std::move(result));
+}
+
+void check_frequency(const ResultantMetrics& metrics, const Requirements& requirements,
+                     std::vector<RequirementResult>& results) {
+  if (requirements.min_frequency) {
+    results.push_back(minimum_frequency(
+        named("R3", "perception rate", "range.min_frequency", "F", "Hz", requirements.range_where),
+        *requirements.min_frequency, "the application's rate", metrics));
+  }
+  if (const auto& dynamics = requirements.object_dynamics) {
+    results.push_back(minimum_frequency(
+        named("R4", "object dynamics", "object_dynamics", "F", "Hz", dynamics->where),
+        dynamics->min_frequency(),
+        "v_object / travel = " + format_number(dynamics->speed) + " / " +
+            format_number(dynamics->travel),
+        metrics));
+  }
+  if (const auto& speed = requirements.robot_speed) {
+    results.push_back(minimum_frequency(
+        named("R5", "robot speed", "robot_speed", "F", "Hz", speed->where), speed->min_frequency(),
+        "v / travel = " + format_number(speed->speed) + " / " + format_number(speed->travel),
+        metrics));
+  }
+}
+
+// R6: a ray spacing no wider than the obstacle guarantees a ray hits it at distance d.
+void check_resolution(const ResultantMetrics& metrics, const Requirements& requirements,
+                      std::vector<RequirementResult>& results) {
+  if (!requirements.smallest_obstacle) return;
+  RequirementResult result = named("R6", "smallest obstacle", "smallest_obstacle.size", "R", "m",
+                                   requirements.smallest_obstacle_where);
+  result.required = *requirements.smallest_obstacle;
+  result.actual = metrics.point_spacing.value;
+  result.verdict = verdict(metrics.point_spacing.value <= *requirements.smallest_obstacle);
+  result.limiting_mounts = metrics.point_spacing.mounts;
+  result.explanation = "ray spacing R at the distance of interest must not exceed the smallest "
+                       "obstacle, " +
+                       format_number(*requirements.smallest_obstacle * 1000, 4) + " mm";
+  results.push_back(std::move(result));
+}
+
+void check_noise(const ResultantMetrics& metrics, const Requirements& requirements,
+                 std::vector<RequirementResult>& results) {
+  if (!requirements.max_noise) return;
+  RequirementResult result =
+      named("R7", "accuracy", "accuracy.max_noise", "N", "m", requirements.accuracy_where);
+  result.required = *requirements.max_noise;
+  result.actual = metrics.noise.value;
+  result.verdict = verdict(metrics.noise.value <= *requirements.max_noise);
+  result.limiting_mounts = metrics.noise.mounts;
+  result.explanation = "range noise N (one sigma) at the distance of interest must not exceed " +
+                       format_number(*requirements.max_noise * 1000, 4) + " mm";
+  results.push_back(std::move(result));
+}
+
+void check_lighting(const ResultantMetrics& metrics, const Requirements& requirements,
+                    std::vector<RequirementResult>& results) {
+  if (requirements.lighting.empty()) return;
+  RequirementResult result =
+      named("R8", "lighting", "lighting", "L", "", requirements.lighting_where);
+  std::vector<std::string> names;
+  std::vector<std::string> failures;
+  for (LightCondition condition : requirements.lighting) {
+    names.push_back(to_string(condition));
+    const LightResult& light = metrics.light_for(condition);
+    if (light.immune) continue;
+    failures.push_back(to_string(condition) + ": " + join(light.failing_mounts));
+    result.limiting_mounts.insert(result.limiting_mounts.end(), light.failing_mounts.begin(),
+                                  light.failing_mounts.end());
+  }
+  result.verdict = verdict(failures.empty());
+  result.explanation = "every sensor must work in: " + join(names);
+  if (!failures.empty()) result.explanation += "; not immune: " + join(failures);
+  results.push_back(std::move(result));
+}
+
+}  // namespace
+
+std::vector<RequirementResult> evaluate_requirements(const Rig& rig,
+                                                     const ResultantMetrics& metrics,
+                                                     const Requirements& requirements) {
+  std::vector<RequirementResult> results;
+  check_body(rig, requirements, results);
+  check_sectors(requirements, results);
+  check_range(rig, requirements, results);
+  check_frequency(metrics, requirements, results);
+  check_resolution(metrics, requirements, results);
+  check_noise(metrics, requirements, results);
+  check_lighting(metrics, requirements, results);
+  return results;
+}
+
+std::string to_string(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::pass: return "pass";
+    case Verdict::fail: return "fail";
+    case Verdict::not_evaluated: return "not evaluated";
+  }
+  return "?";
+}
+
+}  // namespace rigdesign
