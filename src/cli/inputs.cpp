@@ -1,5 +1,7 @@
 #include "inputs.hpp"
 
+#include <filesystem>
+
 #include "rigdesign/io/requirements_loader.hpp"
 #include "rigdesign/io/rig_loader.hpp"
 #include "rigdesign/io/rig_references.hpp"
@@ -8,6 +10,16 @@
 
 namespace rigdesign::cli {
 namespace {
+
+// A file named by the rig that does not exist is the rig's error, at the naming field.
+bool exists_or_report(const std::string& path, const SourceLocation& named_at,
+                      const std::string& field, Diagnostics& diagnostics) {
+  std::error_code error;
+  if (std::filesystem::is_regular_file(path, error)) return true;
+  diagnostics.error(named_at, field, "names '" + path + "', which does not exist",
+                    "a path relative to the rig file");
+  return false;
+}
 
 template <typename Load>
 auto load_collecting(Load load, Diagnostics& diagnostics) -> std::optional<decltype(load())> {
@@ -27,12 +39,20 @@ RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensor
   inputs.rig = load_rig(rig_path);
   Diagnostics diagnostics;
   const std::string library_path = locate_sensor_library(inputs.rig, sensors_path);
-  auto library = load_collecting([&] { return load_sensor_library(library_path); }, diagnostics);
+  std::optional<SensorLibrary> library;
+  if (!sensors_path.empty() || inputs.rig.sensor_library.empty() ||
+      exists_or_report(library_path, inputs.rig.sensor_library_where, "sensor_library",
+                       diagnostics)) {
+    library = load_collecting([&] { return load_sensor_library(library_path); }, diagnostics);
+  }
   std::string wanted_requirements = requirements_path;
+  bool requirements_readable = true;
   if (wanted_requirements.empty() && !inputs.rig.requirements.empty()) {
     wanted_requirements = resolve_beside(inputs.rig.file, inputs.rig.requirements);
+    requirements_readable = exists_or_report(wanted_requirements, inputs.rig.requirements_where,
+                                             "requirements", diagnostics);
   }
-  if (!wanted_requirements.empty()) {
+  if (!wanted_requirements.empty() && requirements_readable) {
     inputs.requirements =
         load_collecting([&] { return load_requirements(wanted_requirements); }, diagnostics);
   }

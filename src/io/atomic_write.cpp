@@ -23,10 +23,7 @@ void write_file_atomically(const std::string& path, const std::string& contents)
   namespace fs = std::filesystem;
   const fs::path target(path);
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::string hidden_name(".");  // built with += : GCC 12 misreports "." + string (PR105329)
-  hidden_name += target.filename().string();
-  hidden_name += ".XXXXXX";
-  std::string temporary = (folder / hidden_name).string();
+  std::string temporary = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
   const int descriptor = ::mkstemp(temporary.data());
   if (descriptor < 0) fail(path, std::string("cannot create a file beside it: ") + std::strerror(errno));
   ::close(descriptor);

@@ -123,7 +123,9 @@ Rig load_rig(const std::string& path) {
   rig.where = top.location();
   rig.name = top.text("name", Need::required, "the rig's name").value_or("");
   rig.sensor_library = top.text("sensor_library", Need::optional).value_or("");
+  rig.sensor_library_where = top.location("sensor_library");
   rig.requirements = top.text("requirements", Need::optional).value_or("");
+  rig.requirements_where = top.location("requirements");
   if (auto body = top.map("body", Need::required, "a map with height and radius or footprint")) {
     rig.body = read_body(*body);
   }

@@ -60,14 +60,20 @@ SourceLocation location_of(const YAML::Node& node, const std::string& file) {
 }
 
 MapReader::MapReader(YAML::Node node, std::string path, std::string file,
-                     Diagnostics& diagnostics, SourceLocation fallback)
+                     Diagnostics& diagnostics, SourceLocation named_at)
     : node_(std::move(node)),
       path_(std::move(path)),
       file_(std::move(file)),
       diagnostics_(&diagnostics) {
-  where_ = location_of(node_, file_);
-  if (where_.line == 0 && fallback.line != 0) where_ = fallback;
+  where_ = named_at.line != 0 ? named_at : location_of(node_, file_);
   valid_ = node_.IsMap();
+}
+
+SourceLocation MapReader::key_location(const std::string& key) const {
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    if (it->first.IsScalar() && it->first.Scalar() == key) return location_of(it->first, file_);
+  }
+  return where_;
 }
 
 bool MapReader::has(const std::string& key) const {
@@ -188,7 +194,7 @@ std::optional<MapReader> MapReader::map(const std::string& key, Need need,
     error(key, "is " + describe_kind(value), expected);
     return std::nullopt;
   }
-  return MapReader(value, field(key), file_, *diagnostics_);
+  return MapReader(value, field(key), file_, *diagnostics_, key_location(key));
 }
 
 std::vector<MapReader> MapReader::maps(const std::string& key, Need need,

@@ -26,9 +26,11 @@ SourceLocation location_of(const YAML::Node& node, const std::string& file);
 
 class MapReader {
  public:
-  /// `node` should be a map; if it is not, an error is recorded and every read is empty.
+  /// `node` should be a map. `named_at` is where the map is named (its key in the parent,
+  /// or the file's start): findings about the whole map, such as a missing field, point
+  /// there; without it they point at the map's first entry.
   MapReader(YAML::Node node, std::string path, std::string file, Diagnostics& diagnostics,
-            SourceLocation fallback = {});
+            SourceLocation named_at = {});
 
   bool valid() const { return valid_; }
   bool has(const std::string& key) const;
@@ -71,6 +73,7 @@ class MapReader {
 
  private:
   void error(const std::string& key, const std::string& problem, const std::string& expected);
+  SourceLocation key_location(const std::string& key) const;
   bool present(const std::string& key, Need need, const std::string& expected);
 
   YAML::Node node_;

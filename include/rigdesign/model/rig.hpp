@@ -39,6 +39,8 @@ struct Rig {
   std::vector<Mount> mounts;
   std::string sensor_library;  ///< path as written in the file (relative to it), may be empty
   std::string requirements;    ///< path as written in the file (relative to it), may be empty
+  SourceLocation sensor_library_where;
+  SourceLocation requirements_where;
   std::string file;
   SourceLocation where;
 

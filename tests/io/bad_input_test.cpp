@@ -1,0 +1,145 @@
+// Bad input never crashes: each case gets exit code 2 and a message naming the file, the
+// line (found here by searching the file's text, independently of the loader) and the field.
+#include <catch2/catch.hpp>
+
+#include <regex>
+
+#include "support/cli_runner.hpp"
+#include "support/fixture_files.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign::test;
+
+namespace {
+
+struct BadCase {
+  const char* name;
+  const char* file;         // "sensors.yaml", "rig.yaml" or "req.yaml"
+  std::string from;         // text replaced in the valid fixture
+  std::string to;
+  std::string field;        // field path the message must name
+  std::string line_marker;  // text on the line the message must point at
+};
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST_CASE("the valid fixture passes check") {
+  TempFolder folder;
+  folder.write("sensors.yaml", kLibrary);
+  folder.write("req.yaml", kRequirements);
+  const std::string rig = folder.write("rig.yaml", kRig);
+  const CliResult result = run_cli({"check", rig});
+  INFO(result.out << result.err);
+  CHECK(result.exit_code == 0);
+}
+
+TEST_CASE("bad input: exit 2 with file:line:col and the field") {
+  const std::vector<BadCase> cases = {
+      {"wrong type", "rig.yaml", "distance_of_interest: 3.0", "distance_of_interest: far",
+       "distance_of_interest", "distance_of_interest: far"},
+      {"unknown field", "rig.yaml", "    mode: m30\n", "    mode: m30\n    colour: red\n",
+       "mounts[0].colour", "colour: red"},
+      {"unknown sensor", "rig.yaml", "sensor: cam", "sensor: camera", "mounts[0].sensor",
+       "sensor: camera"},
+      {"unknown mode", "rig.yaml", "mode: m30", "mode: m60", "mounts[0].mode", "mode: m60"},
+      {"negative range", "sensors.yaml", "range: {min: 0.1,", "range: {min: -0.1,",
+       "sensors[0].modes[0].range.min", "min: -0.1"},
+      {"min range not below max", "sensors.yaml", "{min: 0.5, max: 50}", "{min: 60, max: 50}",
+       "sensors[1].modes[0].range.min", "min: 60"},
+      {"NaN pose", "rig.yaml", "xyz: [0.41, 0.0, 0.5]", "xyz: [0.41, .nan, 0.5]",
+       "mounts[0].pose.xyz[1]", ".nan"},
+      {"infinite pose", "rig.yaml", "xyz: [0.0, 0.0, 1.05]", "xyz: [0.0, 0.0, .inf]",
+       "mounts[1].pose.xyz[2]", ".inf"},
+      {"FOV angle 0", "sensors.yaml", "horizontal_deg: 60", "horizontal_deg: 0",
+       "sensors[0].modes[0].fov.horizontal_deg", "horizontal_deg: 0"},
+      {"FOV angle over 360", "sensors.yaml", "horizontal_deg: 360", "horizontal_deg: 400",
+       "sensors[1].modes[0].fov.horizontal_deg", "horizontal_deg: 400"},
+      {"pyramid of 180 degrees", "sensors.yaml", "vertical_deg: 40", "vertical_deg: 180",
+       "sensors[0].modes[0].fov.vertical_deg", "vertical_deg: 180"},
+      {"duplicate mount ids", "rig.yaml", "id: top", "id: front", "mounts[1].id",
+       "id: front\n    sensor: spin"},
+      {"empty rig", "rig.yaml", kRig.substr(kRig.find("mounts:")), "mounts: []\n", "mounts",
+       "mounts: []"},
+      {"requirement out of range", "req.yaml", "min_floor_coverage: 1.0",
+       "min_floor_coverage: 1.5", "sectors[0].min_floor_coverage", "min_floor_coverage: 1.5"},
+      {"negative frequency", "sensors.yaml", "frequency: 30", "frequency: -30",
+       "sensors[0].modes[0].frequency", "frequency: -30"},
+      {"key given twice", "rig.yaml", "distance_of_interest: 3.0",
+       "distance_of_interest: 3.0\ndistance_of_interest: 4.0", "distance_of_interest",
+       "distance_of_interest: 4.0"},
+      {"unknown lighting condition", "req.yaml", "lighting: [dark, indoor]",
+       "lighting: [dark, moonlight]", "lighting[1]", "moonlight"},
+      {"missing required field", "rig.yaml", "  height: 1.0\n", "", "body.height", "body:"},
+      {"sensor library that does not exist", "rig.yaml", "sensor_library: sensors.yaml",
+       "sensor_library: nowhere.yaml", "sensor_library", "nowhere.yaml"},
+      {"unknown technology", "sensors.yaml", "technology: tof", "technology: sonar",
+       "sensors[0].technology", "sonar"},
+      {"distance of interest inside the body", "rig.yaml", "distance_of_interest: 3.0",
+       "distance_of_interest: 0.3", "distance_of_interest", "distance_of_interest: 0.3"},
+      {"negative speed", "req.yaml", "max_speed: 1.0", "max_speed: -1", "robot_speed.max_speed",
+       "max_speed: -1"},
+      {"noise coefficient that is a list", "sensors.yaml", "noise: {a: 0.03}", "noise: {a: [1]}",
+       "sensors[1].modes[0].noise.a", "noise: {a: [1]}"},
+  };
+  for (const BadCase& bad : cases) {
+    DYNAMIC_SECTION(bad.name) {
+      TempFolder folder;
+      const std::string library = bad.file == std::string("sensors.yaml") ? replaced(kLibrary, bad.from, bad.to) : kLibrary;
+      const std::string rig_text = bad.file == std::string("rig.yaml") ? replaced(kRig, bad.from, bad.to) : kRig;
+      const std::string requirements = bad.file == std::string("req.yaml") ? replaced(kRequirements, bad.from, bad.to) : kRequirements;
+      folder.write("sensors.yaml", library);
+      folder.write("req.yaml", requirements);
+      const std::string rig = folder.write("rig.yaml", rig_text);
+      const std::string& bad_text = bad.file == std::string("sensors.yaml") ? library
+                                    : bad.file == std::string("rig.yaml")   ? rig_text
+                                                                            : requirements;
+      const int line = line_of(bad_text, bad.line_marker);
+      REQUIRE(line > 0);
+      const std::string where = folder.path() + "/" + bad.file + ":" + std::to_string(line) + ":";
+
+      const CliResult metrics = run_cli({"metrics", rig});
+      INFO(metrics.err);
+      CHECK(metrics.exit_code == 2);
+      CHECK(metrics.out.empty());  // nothing half-written
+      CHECK(metrics.err.find(where) != std::string::npos);
+      CHECK(metrics.err.find(": " + bad.field + ": ") != std::string::npos);
+      CHECK(metrics.err.find("(expected ") != std::string::npos);
+
+      const CliResult check = run_cli({"check", rig});
+      CHECK(check.exit_code == 2);
+      CHECK(check.out.find(where) != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("bad input: missing file, YAML syntax error and an empty file") {
+  TempFolder folder;
+  SECTION("missing file") {
+    const CliResult result = run_cli({"metrics", folder.path() + "/nope.yaml"});
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find("nope.yaml: file: cannot be opened") != std::string::npos);
+  }
+  SECTION("syntax error") {
+    // An unclosed flow sequence: the parser reports where it gave up, line 3.
+    const std::string rig = folder.write("rig.yaml", "name: x\nbody: [1, 2\nmounts: []\n");
+    const CliResult result = run_cli({"metrics", rig});
+    CHECK(result.exit_code == 2);
+    CHECK(std::regex_search(result.err, std::regex("rig\\.yaml:[0-9]+:[0-9]+: \\(syntax\\): YAML syntax error")));
+  }
+  SECTION("empty file") {
+    const std::string rig = folder.write("rig.yaml", "");
+    const CliResult result = run_cli({"metrics", rig});
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find("rig.yaml:1:1: (document): is not a map") != std::string::npos);
+  }
+  SECTION("unknown option") {
+    const CliResult result = run_cli({"metrics", "--frobnicate"});
+    CHECK(result.exit_code == 2);
+  }
+}

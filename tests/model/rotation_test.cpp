@@ -1,0 +1,31 @@
+#include <catch2/catch.hpp>
+
+#include "rigdesign/model/rotation.hpp"
+#include "rigdesign/model/units.hpp"
+
+using namespace rigdesign;
+
+namespace {
+bool near(const Vec3& a, const Vec3& b) { return (a - b).norm() < 1e-12; }
+}  // namespace
+
+TEST_CASE("rpy follows URDF: positive pitch looks down, positive yaw turns left") {
+  // Ry(+90 deg) maps x to (cos 90, 0, -sin 90) = -z: a camera pitched +90 deg looks at the floor.
+  CHECK(near(rotation_from_rpy(0, deg_to_rad(90), 0) * Vec3::UnitX(), -Vec3::UnitZ()));
+  // Rz(+90 deg) maps x to y: yaw +90 deg faces the robot's left.
+  CHECK(near(rotation_from_rpy(0, 0, deg_to_rad(90)) * Vec3::UnitX(), Vec3::UnitY()));
+}
+
+TEST_CASE("rpy applies roll first, then pitch, then yaw about fixed axes") {
+  // R = Rz(90) * Rx(90): y -> Rx -> z -> Rz -> z. The other order (Rx * Rz) would give -x.
+  const Mat3 rotation = rotation_from_rpy(deg_to_rad(90), 0, deg_to_rad(90));
+  CHECK(near(rotation * Vec3::UnitY(), Vec3::UnitZ()));
+  CHECK(near(rotation * Vec3::UnitX(), Vec3::UnitY()));
+}
+
+TEST_CASE("pose_from_xyz_rpy maps sensor-frame points into the robot frame") {
+  const Pose3 T_robot_sensor =
+      pose_from_xyz_rpy(Vec3(0.46, 0.0, 0.75), Vec3(0, 0, deg_to_rad(180)));
+  // A point 1 m ahead of a backward-facing sensor lies 1 m behind the sensor in the robot frame.
+  CHECK(near(T_robot_sensor * Vec3(1, 0, 0), Vec3(-0.54, 0.0, 0.75)));
+}
