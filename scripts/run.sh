@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Sets up, builds rigdesign (Release) and runs it. Without arguments it runs the main job on
+# the bundled example; with arguments it runs `rigdesign ARGS...`.
+#   scripts/run.sh                                  # UR Cleaner metrics against its requirements
+#   scripts/run.sh check rigs/*.yaml --format junit
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$root/scripts/setup.sh" >&2
+cmake -S "$root" -B "$root/build/release" -DCMAKE_BUILD_TYPE=Release \
+  -DRIGDESIGN_BUILD_TESTS=OFF >/dev/null
+cmake --build "$root/build/release" --target rigdesign -j"$(nproc)" >/dev/null
+cd "$root"
+if [ $# -eq 0 ]; then
+  set -- metrics rigs/ur_cleaner.yaml
+fi
+exec "$root/build/release/src/rigdesign" "$@"

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages rigdesign needs. Idempotent: runs apt-get (update first) only
+# when a package is missing. Needs root, or sudo.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git   # compiler and build
+  libeigen3-dev                          # linear algebra, poses
+  libyaml-cpp-dev                        # sensors.yaml, rigs, requirements (with line/column marks)
+  nlohmann-json3-dev                     # --json and --format json reports
+  libcli11-dev                           # command line
+  catch2                                 # unit tests
+  libcgal-dev libgmp-dev libmpfr-dev     # exact 2D Boolean operations, AABB-tree ray casting
+  libosmesa6-dev                         # off-screen 3D renders of FOV volumes
+  python3                                # an independent XML parser for the JUnit test
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
