@@ -11,6 +11,7 @@ namespace rigdesign::cli {
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"rigdesign: design and verify the sensor rig of an autonomous mobile robot"};
+  app.name("rigdesign");
   app.require_subcommand(1);
   app.set_version_flag("--version", "rigdesign 0.1.0");
   const std::vector<Command> commands = {setup_metrics(app), setup_check(app)};
