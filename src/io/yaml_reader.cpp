@@ -31,6 +31,35 @@ std::string describe_kind(const YAML::Node& node) {
   return "?";
 }
 
+// Edit distance, to suggest the known key a misspelt one was meant to be.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string unknown_key_problem(const std::string& key, const std::vector<std::string>& allowed) {
+  std::string closest;
+  std::size_t best = key.size() / 3 + 1;  // suggest only near misses
+  for (const std::string& candidate : allowed) {
+    const std::size_t distance = edit_distance(key, candidate);
+    if (distance < best) {
+      best = distance;
+      closest = candidate;
+    }
+  }
+  return closest.empty() ? "unknown field" : "unknown field (did you mean '" + closest + "'?)";
+}
+
 }  // namespace
 
 YAML::Node load_yaml_file(const std::string& path) {
@@ -77,6 +106,7 @@ SourceLocation MapReader::key_location(const std::string& key) const {
 }
 
 bool MapReader::has(const std::string& key) const {
+  read_.insert(key);
   return valid_ && node_[key].IsDefined() && !node_[key].IsNull();
 }
 
@@ -240,7 +270,8 @@ void MapReader::reject_keys_other_than(const std::vector<std::string>& allowed) 
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
       std::vector<std::string> sorted(allowed.begin(), allowed.end());
       std::sort(sorted.begin(), sorted.end());
-      diagnostics_->error(where, field(key), "unknown field", "one of: " + join(sorted, ", "));
+      diagnostics_->error(where, field(key), unknown_key_problem(key, sorted),
+                          "one of: " + join(sorted, ", "));
     }
   }
 }

@@ -33,6 +33,7 @@ class MapReader {
             SourceLocation named_at = {});
 
   bool valid() const { return valid_; }
+  /// Whether `key` is present and not null; asking marks the key as known.
   bool has(const std::string& key) const;
   const std::string& path() const { return path_; }
   const std::string& file() const { return file_; }
@@ -82,7 +83,7 @@ class MapReader {
   Diagnostics* diagnostics_;
   SourceLocation where_;
   bool valid_ = false;
-  std::set<std::string> read_;
+  mutable std::set<std::string> read_;  // keys the loader knows: asked for or read
 };
 
 /// Reads one element of a sequence as a scalar number, with its own location.

@@ -146,3 +146,16 @@ TEST_CASE("bad input: missing file, YAML syntax error and an empty file") {
     CHECK(result.exit_code == 2);
   }
 }
+
+TEST_CASE("a misspelt field is named with the field it was probably meant to be") {
+  TempFolder folder;
+  folder.write("sensors.yaml", kLibrary);
+  folder.write("req.yaml", kRequirements);
+  std::string text = kRig;
+  text.replace(text.find("    mode: m30\n"), 13, "    mode: m30\n    distance_of_interst: 2.0\n");
+  const CliResult result = run_cli({"metrics", folder.write("rig.yaml", text)});
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("mounts[0].distance_of_interst: unknown field (did you mean "
+                        "'distance_of_interest'?) (expected one of: distance_of_interest, id, "
+                        "mode, note, pose, sensor)") != std::string::npos);
+}
