@@ -95,7 +95,12 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
         report.diagnostics = inputs.warnings;
         if (inputs.requirements) {
           const ResultantMetrics metrics = compute_resultant(inputs.rig, inputs.library);
-          report.results = evaluate_requirements(inputs.rig, metrics, *inputs.requirements);
+          std::optional<RigCoverage> coverage;
+          if (!inputs.requirements->sectors.empty()) {
+            coverage = compute_coverage(inputs.rig, inputs.library, inputs.requirements->sectors);
+          }
+          report.results = evaluate_requirements(inputs.rig, metrics, *inputs.requirements,
+                                                 coverage ? &*coverage : nullptr);
         }
         break;
       }

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "rigdesign/geometry/mount_placement.hpp"
 #include "rigdesign/io/requirements_loader.hpp"
 #include "rigdesign/io/rig_loader.hpp"
 #include "rigdesign/io/rig_references.hpp"
@@ -61,6 +62,8 @@ RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensor
     const Diagnostics references = check_rig_references(inputs.rig, inputs.library);
     for (const Diagnostic& diagnostic : references.items()) diagnostics.add(diagnostic);
   }
+  const Diagnostics placement = check_mount_placement(inputs.rig);
+  for (const Diagnostic& diagnostic : placement.items()) diagnostics.add(diagnostic);
   diagnostics.throw_if_errors();
   inputs.warnings = diagnostics.items();
   return inputs;

@@ -93,4 +93,68 @@ json to_json(const RigInputs& inputs, const ResultantMetrics& metrics) {
   return report;
 }
 
+namespace {
+
+json summary_json(const CoverageSummary& summary) {
+  return {{"min", summary.min},
+          {"min_theta_deg", summary.min_theta * 180 / 3.141592653589793},
+          {"mean", summary.mean},
+          {"share_of_angles_at_100_percent", summary.full_share}};
+}
+
+}  // namespace
+
+json to_json(const RigCoverage& coverage, bool curves) {
+  json sectors = json::array();
+  for (const SectorCoverage& sector : coverage.sectors) {
+    sectors.push_back({{"name", sector.sector.name},
+                       {"complete", summary_json(sector.complete)},
+                       {"floor", summary_json(sector.floor)},
+                       {"required_complete", sector.sector.min_complete_coverage},
+                       {"required_floor", sector.sector.min_floor_coverage},
+                       {"pass", sector.pass}});
+  }
+  json losses = json::array();
+  for (const MountLoss& loss : coverage.without_each) {
+    losses.push_back({{"without", loss.mount_id},
+                      {"complete", summary_json(loss.complete)},
+                      {"floor", summary_json(loss.floor)}});
+  }
+  json report = {{"path", coverage.exact ? "exact" : "raster"},
+                 {"distance_m", coverage.distance},
+                 {"height_m", coverage.height},
+                 {"angles", coverage.angles.size()},
+                 {"complete", summary_json(coverage.complete)},
+                 {"floor", summary_json(coverage.floor)},
+                 {"sectors", sectors},
+                 {"n_minus_1", losses},
+                 {"raster_max_abs_error", {{"complete", coverage.raster_error_complete},
+                                           {"floor", coverage.raster_error_floor}}}};
+  if (!curves) return report;
+  json samples = json::array();
+  for (const AngleCoverage& angle : coverage.angles) {
+    json item = {{"theta_deg", angle.theta * 180 / 3.141592653589793},
+                 {"r_m", angle.r},
+                 {"complete", angle.complete},
+                 {"floor", angle.floor},
+                 {"complete_raster", angle.complete_raster},
+                 {"floor_raster", angle.floor_raster},
+                 {"redundancy", angle.redundancy}};
+    json seen = json::array();
+    for (std::size_t i = 0; i < angle.mount_sees.size(); ++i) {
+      if (angle.mount_sees[i]) seen.push_back(coverage.mount_ids[i]);
+    }
+    item["seen_by"] = seen;
+    if (angle.coarsest_mount >= 0) {
+      item["coarsest"] = {{"mount", coverage.mount_ids[angle.coarsest_mount]},
+                          {"spacing_m", angle.coarsest_spacing}};
+      item["noisiest"] = {{"mount", coverage.mount_ids[angle.noisiest_mount]},
+                          {"noise_m", angle.noisiest_noise}};
+    }
+    samples.push_back(item);
+  }
+  report["curves"] = samples;
+  return report;
+}
+
 }  // namespace rigdesign::cli

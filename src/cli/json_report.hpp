@@ -5,6 +5,7 @@
 
 #include "inputs.hpp"
 #include "rigdesign/io/input_error.hpp"
+#include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 
@@ -13,5 +14,7 @@ namespace rigdesign::cli {
 nlohmann::json to_json(const Diagnostic& diagnostic);
 nlohmann::json to_json(const RequirementResult& result);
 nlohmann::json to_json(const RigInputs& inputs, const ResultantMetrics& metrics);
+/// SC summaries, sectors and the N-1 table; with `curves`, every angle's values too.
+nlohmann::json to_json(const RigCoverage& coverage, bool curves);
 
 }  // namespace rigdesign::cli

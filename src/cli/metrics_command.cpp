@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "inputs.hpp"
 #include "json_report.hpp"
+#include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -80,8 +81,39 @@ void print_light(const ResultantMetrics& metrics, const std::optional<Requiremen
   }
 }
 
+std::string percent(double share) { return fixed(share * 100, 1) + " %"; }
+
+std::string summary_line(const CoverageSummary& summary) {
+  return "min " + percent(summary.min) + " (at " + fixed(rad_to_deg(summary.min_theta), 0) +
+         " deg), mean " + percent(summary.mean) + ", 100 % at " + percent(summary.full_share) +
+         " of angles";
+}
+
+void print_coverage(const RigCoverage& coverage, std::ostream& out) {
+  out << "\nSpatial coverage (paper 1, section 2.3): rho in [r, " << format_number(coverage.distance)
+      << "] m, z in [0, " << format_number(coverage.height) << "] m, " << coverage.angles.size()
+      << " angles, " << (coverage.exact ? "exact path (CGAL polygons)" : "raster path") << "\n";
+  out << "  SC complete: " << summary_line(coverage.complete) << '\n';
+  out << "  SC floor:    " << summary_line(coverage.floor) << '\n';
+  using Align = TextTable::Align;
+  TextTable table;
+  table.add_column("without", Align::left);
+  for (const char* header : {"SC complete min", "mean", "SC floor min", "mean"}) {
+    table.add_column(header, Align::right);
+  }
+  table.add_row({"(all sensors)", percent(coverage.complete.min), percent(coverage.complete.mean),
+                 percent(coverage.floor.min), percent(coverage.floor.mean)});
+  for (const MountLoss& loss : coverage.without_each) {
+    table.add_row({loss.mount_id, percent(loss.complete.min), percent(loss.complete.mean),
+                   percent(loss.floor.min), percent(loss.floor.mean)});
+  }
+  out << "  Losing one sensor (N-1, raster path):\n";
+  table.print(out, "    ");
+}
+
 void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
-                const std::vector<RequirementResult>& results, std::ostream& out) {
+                const RigCoverage& coverage, const std::vector<RequirementResult>& results,
+                std::ostream& out) {
   const Rig& rig = inputs.rig;
   out << "Rig: " << rig.name << "  (" << rig.file << ", sensors from " << inputs.library.file
       << ")\n";
@@ -104,6 +136,7 @@ void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
       << inputs.library.reference_machine << '\n';
   out << "  C_s = " << fixed(metrics.sensor_cost, 0) << " USD\n";
   if (metrics.any_estimate) out << "  * estimate, not a datasheet or measured value\n";
+  print_coverage(coverage, out);
   for (const Diagnostic& warning : inputs.warnings) out << warning.message() << '\n';
   if (results.empty()) return;
   out << "\nRequirements (" << inputs.requirements->file << ")\n";
@@ -129,10 +162,16 @@ void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
 int run_metrics(const MetricsOptions& options, std::ostream& out) {
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
   const ResultantMetrics metrics = compute_resultant(inputs.rig, inputs.library);
+  const std::vector<SectorRequirement> sectors =
+      inputs.requirements ? inputs.requirements->sectors : std::vector<SectorRequirement>{};
+  const RigCoverage coverage = compute_coverage(inputs.rig, inputs.library, sectors);
   std::vector<RequirementResult> results;
-  if (inputs.requirements) results = evaluate_requirements(inputs.rig, metrics, *inputs.requirements);
+  if (inputs.requirements) {
+    results = evaluate_requirements(inputs.rig, metrics, *inputs.requirements, &coverage);
+  }
   if (options.json) {
     nlohmann::json report = to_json(inputs, metrics);
+    report["coverage"] = to_json(coverage, false);
     if (inputs.requirements) {
       nlohmann::json list = nlohmann::json::array();
       for (const RequirementResult& result : results) list.push_back(to_json(result));
@@ -140,7 +179,7 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
     }
     out << report.dump(2) << '\n';
   } else {
-    print_text(inputs, metrics, results, out);
+    print_text(inputs, metrics, coverage, results, out);
   }
   return kOk;
 }

@@ -96,6 +96,7 @@ Mount read_mount(MapReader& reader) {
   mount.sensor_where = reader.location("sensor");
   mount.mode_id = reader.text("mode", Need::required, "a mode id of that sensor").value_or("");
   mount.mode_where = reader.location("mode");
+  mount.pose_where = reader.location("pose");
   if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg")) {
     mount.T_robot_sensor = read_pose(*pose);
   }

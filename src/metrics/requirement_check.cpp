@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/units.hpp"
 
 namespace rigdesign {
 namespace {
@@ -59,12 +60,32 @@ void check_body(const Rig& rig, const Requirements& requirements,
   results.push_back(std::move(result));
 }
 
-void check_sectors(const Requirements& requirements, std::vector<RequirementResult>& results) {
-  for (const SectorRequirement& sector : requirements.sectors) {
+std::string percent(double share) { return format_number(share * 100, 4) + " %"; }
+
+void check_sectors(const Requirements& requirements, const RigCoverage* coverage,
+                   std::vector<RequirementResult>& results) {
+  for (std::size_t i = 0; i < requirements.sectors.size(); ++i) {
+    const SectorRequirement& sector = requirements.sectors[i];
     RequirementResult result = named("R2", "direction of motion: " + sector.name,
                                      "sectors." + sector.name, "SC", "", sector.where);
-    result.verdict = Verdict::not_evaluated;
-    result.explanation = "spatial coverage per sector is not computed by this version";
+    if (coverage == nullptr || i >= coverage->sectors.size()) {
+      result.verdict = Verdict::not_evaluated;
+      result.explanation = "spatial coverage was not computed";
+      results.push_back(std::move(result));
+      continue;
+    }
+    const SectorCoverage& measured = coverage->sectors[i];
+    result.required = sector.min_complete_coverage;
+    result.actual = measured.complete.min;
+    result.verdict = verdict(measured.pass);
+    result.explanation =
+        "over " + format_number(rad_to_deg(sector.from)) + ".." +
+        format_number(rad_to_deg(sector.to)) + " deg: SC complete min " +
+        percent(measured.complete.min) + " (at " +
+        format_number(rad_to_deg(measured.complete.min_theta), 4) + " deg) >= " +
+        percent(sector.min_complete_coverage) + ", SC floor min " + percent(measured.floor.min) +
+        " (at " + format_number(rad_to_deg(measured.floor.min_theta), 4) + " deg) >= " +
+        percent(sector.min_floor_coverage);
     results.push_back(std::move(result));
   }
 }
@@ -159,10 +180,11 @@ void check_lighting(const ResultantMetrics& metrics, const Requirements& require
 
 std::vector<RequirementResult> evaluate_requirements(const Rig& rig,
                                                      const ResultantMetrics& metrics,
-                                                     const Requirements& requirements) {
+                                                     const Requirements& requirements,
+                                                     const RigCoverage* coverage) {
   std::vector<RequirementResult> results;
   check_body(rig, requirements, results);
-  check_sectors(requirements, results);
+  check_sectors(requirements, coverage, results);
   check_range(rig, requirements, results);
   check_frequency(metrics, requirements, results);
   check_resolution(metrics, requirements, results);

@@ -64,7 +64,7 @@ TEST_CASE("bad input: exit 2 with file:line:col and the field") {
        "id: front\n    sensor: spin"},
       {"empty rig", "rig.yaml", kRig.substr(kRig.find("mounts:")), "mounts: []\n", "mounts",
        "mounts: []"},
-      {"requirement out of range", "req.yaml", "min_floor_coverage: 1.0",
+      {"requirement out of range", "req.yaml", "min_floor_coverage: 0.0",
        "min_floor_coverage: 1.5", "sectors[0].min_floor_coverage", "min_floor_coverage: 1.5"},
       {"negative frequency", "sensors.yaml", "frequency: 30", "frequency: -30",
        "sensors[0].modes[0].frequency", "frequency: -30"},

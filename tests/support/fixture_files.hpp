@@ -63,7 +63,7 @@ mounts:
 inline const std::string kRequirements = R"(name: Test application
 body: {radius: 0.4, height: 1.0}
 sectors:
-  - {name: front, from_deg: -45, to_deg: 45, min_complete_coverage: 0.9, min_floor_coverage: 1.0}
+  - {name: front, from_deg: -45, to_deg: 45, min_complete_coverage: 0.1, min_floor_coverage: 0.0}
 range: {distance: 3.0}
 robot_speed: {max_speed: 1.0, max_travel_between_frames: 0.1}
 smallest_obstacle: {size: 0.15}

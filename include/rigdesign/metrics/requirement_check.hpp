@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/requirements.hpp"
 
@@ -27,9 +28,12 @@ struct RequirementResult {
   SourceLocation where;     ///< the requirement in its file
 };
 
+/// `coverage` judges R2's sectors; computed with requirements.sectors (compute_coverage).
+/// Without it, R2 is reported as not evaluated.
 std::vector<RequirementResult> evaluate_requirements(const Rig& rig,
                                                      const ResultantMetrics& metrics,
-                                                     const Requirements& requirements);
+                                                     const Requirements& requirements,
+                                                     const RigCoverage* coverage = nullptr);
 
 std::string to_string(Verdict verdict);
 

@@ -30,6 +30,7 @@ struct Mount {
   SourceLocation where;         ///< the mount's entry
   SourceLocation sensor_where;  ///< its `sensor` value, for findings about the reference
   SourceLocation mode_where;    ///< its `mode` value
+  SourceLocation pose_where;    ///< its `pose`
 };
 
 struct Rig {

@@ -1,0 +1,28 @@
+#pragma once
+/// A sorted set of disjoint closed intervals on a line: what one sensor covers along a
+/// column or the floor of a cross-section.
+#include <utility>
+#include <vector>
+
+namespace rigdesign {
+
+class IntervalSet {
+ public:
+  using Interval = std::pair<double, double>;
+
+  IntervalSet() = default;
+  /// Adds [low, high]; intervals must be added in increasing order. Touching or overlapping
+  /// ones merge.
+  void append(double low, double high);
+  const std::vector<Interval>& intervals() const { return intervals_; }
+  bool empty() const { return intervals_.empty(); }
+  double length() const;
+  bool contains(double x) const;
+
+  IntervalSet united(const IntervalSet& other) const;
+
+ private:
+  std::vector<Interval> intervals_;
+};
+
+}  // namespace rigdesign

@@ -1,0 +1,11 @@
+#pragma once
+#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/rig.hpp"
+
+namespace rigdesign {
+
+/// A sensor whose origin is inside the robot body would see nothing: each such mount is an
+/// error at its pose. (On the body's surface is allowed.)
+Diagnostics check_mount_placement(const Rig& rig);
+
+}  // namespace rigdesign

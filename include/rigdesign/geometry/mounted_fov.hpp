@@ -1,0 +1,51 @@
+#pragma once
+/// A sensor mode's field of view placed on the robot: the FOV shape (pyramid, cone, band,
+/// planar wedge) between the min and max range measured from the sensor origin (spherical
+/// caps), seen past the robot body. Gives exact coverage along any line in the robot frame.
+#include <string>
+#include <vector>
+
+#include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/interval_set.hpp"
+#include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/sensor.hpp"
+
+namespace rigdesign {
+
+class MountedFov {
+ public:
+  MountedFov(const SensorMode& mode, const Pose3& T_robot_sensor, const BodyOccluder& body);
+
+  /// True when the sensor measures `p_robot`: inside its FOV and range and not behind the body.
+  bool sees(const Vec3& p_robot) const;
+
+  /// The parameters t in [t_min, t_max] at which the line start + t * direction is seen,
+  /// exact up to floating point: every t where coverage can change (a root of the range
+  /// spheres, FOV boundary planes and cones, or the body's silhouette) splits the line and
+  /// each piece is tested once.
+  IntervalSet covered_along(const Vec3& start, const Vec3& direction, double t_min,
+                            double t_max) const;
+
+  const Vec3& origin() const { return origin_; }
+  const Pose3& pose() const { return T_robot_sensor_; }
+  const SensorMode& mode() const { return *mode_; }
+
+ private:
+  bool in_fov(const Vec3& q_sensor) const;
+  void append_fov_roots(const Vec3& c, const Vec3& w, std::vector<double>& roots) const;
+
+  const SensorMode* mode_;
+  Pose3 T_robot_sensor_;
+  Mat3 R_sensor_robot_;
+  Vec3 origin_;
+  const BodyOccluder* body_;
+  // Shape constants, precomputed: tangents of half-angles, sines of elevation limits.
+  double tan_half_h_ = 0.0;
+  double tan_half_v_ = 0.0;
+  double cos_half_apex_ = 0.0;
+  double sin_elevation_min_ = 0.0;
+  double sin_elevation_max_ = 0.0;
+  double half_span_ = 0.0;  // band / planar azimuth half-span [rad]
+};
+
+}  // namespace rigdesign

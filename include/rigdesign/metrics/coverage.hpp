@@ -1,0 +1,89 @@
+#pragma once
+/// Spatial Coverage (paper 1, section 2.3, Fig. 2; DESIGN.md section 4): for every azimuth
+/// theta, the share of the cross-section [r, d] x [0, h] that the rig sees (SC complete) and
+/// the share of its floor segment (SC floor), with summaries overall and per requirement
+/// sector, plus what existing tools do not report: per-angle worst ray spacing and noise
+/// among the sensors covering the angle, a redundancy curve and an N-1 table.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/geometry/section_polygons.hpp"
+#include "rigdesign/geometry/section_raster.hpp"
+#include "rigdesign/model/requirements.hpp"
+#include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/sensor.hpp"
+
+namespace rigdesign {
+
+struct CoverageSettings {
+  double step = 0.017453292519943295;  ///< [rad] between sampled azimuths (1 degree)
+  bool exact = true;  ///< SC curves from CGAL polygons (else from the raster)
+  TessellationSettings tessellation;
+  double raster_cell = 0.01;  ///< [m] raster cell size along rho and z
+};
+
+/// A coverage share counts as 100 % from here: the exact path's topology gaps (min_gap wide)
+/// keep a fully covered section a few 1e-5 short of 1.
+inline constexpr double kFullCoverage = 1.0 - 1e-4;
+
+struct AngleCoverage {
+  double theta = 0.0;      ///< [rad]
+  double r = 0.0;          ///< [m] body radius along theta
+  double complete = 0.0;   ///< SC complete, share in [0, 1]
+  double floor = 0.0;      ///< SC floor
+  double complete_raster = 0.0;
+  double floor_raster = 0.0;
+  double redundancy = 0.0;  ///< share of the cross-section seen by two or more sensors (raster)
+  std::vector<bool> mount_sees;  ///< per mount: sees part of this cross-section
+  int coarsest_mount = -1;       ///< index of the covering mount with the widest ray spacing
+  double coarsest_spacing = 0.0; ///< [m] its spacing at its distance of interest
+  int noisiest_mount = -1;
+  double noisiest_noise = 0.0;   ///< [m]
+};
+
+struct CoverageSummary {
+  double min = 0.0;
+  double mean = 0.0;
+  double full_share = 0.0;  ///< share of angles at 100 %
+  double min_theta = 0.0;   ///< [rad] where the minimum is
+};
+
+struct SectorCoverage {
+  SectorRequirement sector;
+  CoverageSummary complete;
+  CoverageSummary floor;
+  bool pass = false;
+};
+
+/// SC summaries with one mount removed (N-1), from the raster path.
+struct MountLoss {
+  std::string mount_id;
+  CoverageSummary complete;
+  CoverageSummary floor;
+};
+
+struct RigCoverage {
+  std::vector<std::string> mount_ids;
+  double distance = 0.0;  ///< d [m]
+  double height = 0.0;    ///< h [m]
+  std::vector<AngleCoverage> angles;
+  CoverageSummary complete;
+  CoverageSummary floor;
+  std::vector<SectorCoverage> sectors;
+  std::vector<MountLoss> without_each;
+  double raster_error_complete = 0.0;  ///< largest |exact - raster| over angles
+  double raster_error_floor = 0.0;
+  bool exact = true;
+};
+
+/// Precondition: the rig's references resolve (check_rig_references) and no mount is inside
+/// the body. Deterministic.
+RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
+                             const std::vector<SectorRequirement>& sectors,
+                             const CoverageSettings& settings = {});
+
+/// Whether azimuth `theta` lies in the sector (angles compared modulo 360 degrees).
+bool in_sector(const SectorRequirement& sector, double theta);
+
+}  // namespace rigdesign

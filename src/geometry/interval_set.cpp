@@ -1,0 +1,36 @@
+#include "rigdesign/geometry/interval_set.hpp"
+
+#include <algorithm>
+
+namespace rigdesign {
+
+void IntervalSet::append(double low, double high) {
+  if (high < low) return;
+  if (!intervals_.empty() && low <= intervals_.back().second) {
+    intervals_.back().second = std::max(intervals_.back().second, high);
+    return;
+  }
+  intervals_.emplace_back(low, high);
+}
+
+double IntervalSet::length() const {
+  double total = 0.0;
+  for (const auto& [low, high] : intervals_) total += high - low;
+  return total;
+}
+
+bool IntervalSet::contains(double x) const {
+  return std::any_of(intervals_.begin(), intervals_.end(),
+                     [x](const Interval& i) { return i.first <= x && x <= i.second; });
+}
+
+IntervalSet IntervalSet::united(const IntervalSet& other) const {
+  std::vector<Interval> all = intervals_;
+  all.insert(all.end(), other.intervals_.begin(), other.intervals_.end());
+  std::sort(all.begin(), all.end());
+  IntervalSet result;
+  for (const auto& [low, high] : all) result.append(low, high);
+  return result;
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,134 @@
+#include "rigdesign/geometry/mounted_fov.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rigdesign {
+namespace {
+
+// Pieces of a line shorter than this [m or line parameter] are not tested on their own.
+constexpr double kPiece = 1e-12;
+
+// Roots of the quadratic |c + t w|^2 - radius^2 = 0.
+void append_sphere_roots(const Vec3& c, const Vec3& w, double radius, std::vector<double>& roots) {
+  append_quadratic_roots(w.squaredNorm(), 2 * c.dot(w), c.squaredNorm() - radius * radius, roots);
+}
+
+// Roots of the linear n . (c + t w) = 0.
+void append_plane_root(const Vec3& normal, const Vec3& c, const Vec3& w, std::vector<double>& roots) {
+  const double slope = normal.dot(w);
+  if (std::abs(slope) > 1e-15) roots.push_back(-normal.dot(c) / slope);
+}
+
+// Roots where the angle between c + t w and `axis` equals acos(sigma): (k.q)^2 = sigma^2 |q|^2.
+void append_cone_roots(const Vec3& axis, double sigma, const Vec3& c, const Vec3& w,
+                       std::vector<double>& roots) {
+  const double kc = axis.dot(c);
+  const double kw = axis.dot(w);
+  const double s2 = sigma * sigma;
+  append_quadratic_roots(kw * kw - s2 * w.squaredNorm(), 2 * (kc * kw - s2 * c.dot(w)),
+                         kc * kc - s2 * c.squaredNorm(), roots);
+}
+
+}  // namespace
+
+MountedFov::MountedFov(const SensorMode& mode, const Pose3& T_robot_sensor,
+                       const BodyOccluder& body)
+    : mode_(&mode),
+      T_robot_sensor_(T_robot_sensor),
+      R_sensor_robot_(T_robot_sensor.linear().transpose()),
+      origin_(T_robot_sensor.translation()),
+      body_(&body) {
+  const FieldOfView& fov = mode.fov;
+  tan_half_h_ = std::tan(fov.horizontal / 2);
+  tan_half_v_ = std::tan(fov.vertical / 2);
+  cos_half_apex_ = std::cos(fov.horizontal / 2);
+  sin_elevation_min_ = std::sin(fov.elevation_min);
+  sin_elevation_max_ = std::sin(fov.elevation_max);
+  half_span_ = fov.horizontal / 2;
+}
+
+bool MountedFov::in_fov(const Vec3& q) const {
+  const double distance = q.norm();
+  if (distance < mode_->min_range || distance > mode_->max_range || distance == 0.0) return false;
+  switch (mode_->fov.shape) {
+    case FovShape::pyramid:
+      return q.x() > 0 && std::abs(q.y()) <= tan_half_h_ * q.x() &&
+             std::abs(q.z()) <= tan_half_v_ * q.x();
+    case FovShape::cone:
+      return q.x() >= cos_half_apex_ * distance;
+    case FovShape::band:
+    case FovShape::planar: {
+      if (q.z() < sin_elevation_min_ * distance || q.z() > sin_elevation_max_ * distance) {
+        return false;
+      }
+      if (half_span_ >= std::numbers::pi) return true;
+      return std::abs(std::atan2(q.y(), q.x())) <= half_span_;
+    }
+  }
+  return false;
+}
+
+bool MountedFov::sees(const Vec3& p_robot) const {
+  return in_fov(R_sensor_robot_ * (p_robot - origin_)) && !body_->blocks(origin_, p_robot);
+}
+
+void MountedFov::append_fov_roots(const Vec3& c, const Vec3& w, std::vector<double>& roots) const {
+  append_sphere_roots(c, w, mode_->min_range, roots);
+  append_sphere_roots(c, w, mode_->max_range, roots);
+  switch (mode_->fov.shape) {
+    case FovShape::pyramid:
+      append_plane_root(Vec3(1, 0, 0), c, w, roots);
+      for (const double sign : {-1.0, 1.0}) {
+        append_plane_root(Vec3(tan_half_h_, sign, 0), c, w, roots);
+        append_plane_root(Vec3(tan_half_v_, 0, sign), c, w, roots);
+      }
+      break;
+    case FovShape::cone:
+      append_cone_roots(Vec3::UnitX(), cos_half_apex_, c, w, roots);
+      append_plane_root(Vec3::UnitX(), c, w, roots);
+      break;
+    case FovShape::band:
+    case FovShape::planar:
+      // Elevation limits are cones about the sensor's z axis; their sign flips at q_z = 0.
+      append_cone_roots(Vec3::UnitZ(), sin_elevation_min_, c, w, roots);
+      append_cone_roots(Vec3::UnitZ(), sin_elevation_max_, c, w, roots);
+      append_plane_root(Vec3::UnitZ(), c, w, roots);
+      if (half_span_ < std::numbers::pi) {  // azimuth limits: half-planes through the z axis
+        append_plane_root(Vec3(-std::sin(half_span_), std::cos(half_span_), 0), c, w, roots);
+        append_plane_root(Vec3(std::sin(half_span_), std::cos(half_span_), 0), c, w, roots);
+        append_plane_root(Vec3::UnitX(), c, w, roots);
+        append_plane_root(Vec3::UnitY(), c, w, roots);
+      }
+      break;
+  }
+}
+
+IntervalSet MountedFov::covered_along(const Vec3& start, const Vec3& direction, double t_min,
+                                      double t_max) const {
+  const Vec3 c = R_sensor_robot_ * (start - origin_);
+  const Vec3 w = R_sensor_robot_ * direction;
+  std::vector<double> cuts;
+  cuts.reserve(32);
+  cuts.push_back(t_min);
+  cuts.push_back(t_max);
+  append_fov_roots(c, w, cuts);
+  body_->append_critical_parameters(origin_, start, direction, cuts);
+  std::sort(cuts.begin(), cuts.end());
+  IntervalSet covered;
+  double previous = t_min;
+  for (const double cut : cuts) {
+    if (cut <= previous) continue;
+    const double next = std::min(cut, t_max);
+    if (next - previous > kPiece) {
+      const double mid = 0.5 * (previous + next);
+      if (sees(start + mid * direction)) covered.append(previous, next);
+    }
+    previous = next;
+    if (previous >= t_max) break;
+  }
+  return covered;
+}
+
+}  // namespace rigdesign

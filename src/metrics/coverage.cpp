@@ -1,0 +1,178 @@
+#include "rigdesign/metrics/coverage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "rigdesign/geometry/cross_section.hpp"
+#include "rigdesign/metrics/mount_metrics.hpp"
+
+namespace rigdesign {
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+struct PlacedMount {
+  const Mount* mount;
+  const SensorMode* mode;
+  MountedFov fov;
+  double spacing;  // R_i at the mount's distance of interest
+  double noise;    // N_i
+};
+
+std::vector<PlacedMount> place_mounts(const Rig& rig, const SensorLibrary& library,
+                                      const BodyOccluder& body) {
+  std::vector<PlacedMount> placed;
+  for (const Mount& mount : rig.mounts) {
+    const Sensor* sensor = library.find(mount.sensor_id);
+    const SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
+    if (mode == nullptr) throw std::logic_error("compute_coverage: unresolved mount " + mount.id);
+    const double distance = rig.distance_for(mount);
+    placed.push_back({&mount, mode, MountedFov(*mode, mount.T_robot_sensor, body),
+                      ray_spacing(distance, mode->worst_angular_resolution()),
+                      mode->noise.sigma(distance)});
+  }
+  return placed;
+}
+
+RasterGrid grid_for(const SectionFrame& frame, double cell) {
+  return {std::max(1, static_cast<int>(std::ceil(frame.width() / cell))),
+          std::max(1, static_cast<int>(std::ceil(frame.h / cell)))};
+}
+
+double floor_share(const std::vector<IntervalSet>& floors, const SectionFrame& frame) {
+  IntervalSet united;
+  for (const IntervalSet& floor : floors) united = united.united(floor);
+  return united.length() / frame.width();
+}
+
+template <typename Value>
+CoverageSummary summarize(const std::vector<AngleCoverage>& angles, Value value,
+                          const SectorRequirement* sector = nullptr) {
+  CoverageSummary summary;
+  summary.min = std::numeric_limits<double>::infinity();
+  int count = 0;
+  int full = 0;
+  for (const AngleCoverage& angle : angles) {
+    if (sector != nullptr && !in_sector(*sector, angle.theta)) continue;
+    const double share = value(angle);
+    if (share < summary.min) {
+      summary.min = share;
+      summary.min_theta = angle.theta;
+    }
+    summary.mean += share;
+    full += share >= kFullCoverage ? 1 : 0;
+    ++count;
+  }
+  if (count == 0) return {};
+  summary.mean /= count;
+  summary.full_share = static_cast<double>(full) / count;
+  return summary;
+}
+
+// Worst ray spacing and noise among the mounts that see part of this cross-section.
+void limiting_mounts(const std::vector<PlacedMount>& mounts, AngleCoverage& angle) {
+  for (std::size_t i = 0; i < mounts.size(); ++i) {
+    if (!angle.mount_sees[i]) continue;
+    if (angle.coarsest_mount < 0 || mounts[i].spacing > angle.coarsest_spacing) {
+      angle.coarsest_mount = static_cast<int>(i);
+      angle.coarsest_spacing = mounts[i].spacing;
+    }
+    if (angle.noisiest_mount < 0 || mounts[i].noise > angle.noisiest_noise) {
+      angle.noisiest_mount = static_cast<int>(i);
+      angle.noisiest_noise = mounts[i].noise;
+    }
+  }
+}
+
+}  // namespace
+
+bool in_sector(const SectorRequirement& sector, double theta) {
+  const double offset = std::fmod(std::fmod(theta - sector.from, kTwoPi) + kTwoPi, kTwoPi);
+  return offset <= sector.to - sector.from + 1e-12;
+}
+
+RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
+                             const std::vector<SectorRequirement>& sectors,
+                             const CoverageSettings& settings) {
+  const BodyOccluder body(rig.body);
+  const std::vector<PlacedMount> mounts = place_mounts(rig, library, body);
+  RigCoverage result;
+  result.exact = settings.exact;
+  result.distance = rig.distance_of_interest;
+  result.height = rig.body.height;
+  for (const PlacedMount& mount : mounts) result.mount_ids.push_back(mount.mount->id);
+
+  const int steps = std::max(1, static_cast<int>(std::lround(kTwoPi / settings.step)));
+  // Per angle, each mount's raster: kept for the N-1 table.
+  std::vector<std::vector<SectionRaster>> rasters(mounts.size());
+  for (int step = 0; step < steps; ++step) {
+    AngleCoverage angle;
+    angle.theta = kTwoPi * step / steps;
+    const SectionFrame frame = section_frame(body, angle.theta, rig.distance_of_interest);
+    angle.r = frame.r;
+    const RasterGrid grid = grid_for(frame, settings.raster_cell);
+    SectionRaster seen_once(grid);
+    SectionRaster seen_twice(grid);
+    std::vector<IntervalSet> floors;
+    std::vector<std::vector<Polygon2>> polygons;
+    for (std::size_t i = 0; i < mounts.size(); ++i) {
+      SectionRaster raster = rasterize(mounts[i].fov, frame, grid);
+      SectionRaster overlap = raster;
+      overlap &= seen_once;
+      seen_twice |= overlap;
+      seen_once |= raster;
+      floors.push_back(floor_coverage(mounts[i].fov, frame));
+      if (settings.exact) {
+        polygons.push_back(section_polygons(mounts[i].fov, frame, settings.tessellation));
+      }
+      angle.mount_sees.push_back(settings.exact ? !polygons.back().empty() : raster.any());
+      rasters[i].push_back(std::move(raster));
+    }
+    angle.complete_raster = seen_once.complete_share();
+    angle.floor_raster = seen_once.floor_share();
+    angle.redundancy = seen_twice.complete_share();
+    angle.complete = settings.exact ? union_area(polygons) / frame.area() : angle.complete_raster;
+    angle.floor = settings.exact ? floor_share(floors, frame) : angle.floor_raster;
+    result.raster_error_complete =
+        std::max(result.raster_error_complete, std::abs(angle.complete - angle.complete_raster));
+    result.raster_error_floor =
+        std::max(result.raster_error_floor, std::abs(angle.floor - angle.floor_raster));
+    limiting_mounts(mounts, angle);
+    result.angles.push_back(std::move(angle));
+  }
+
+  const auto complete = [](const AngleCoverage& a) { return a.complete; };
+  const auto floor = [](const AngleCoverage& a) { return a.floor; };
+  result.complete = summarize(result.angles, complete);
+  result.floor = summarize(result.angles, floor);
+  for (const SectorRequirement& sector : sectors) {
+    SectorCoverage coverage{sector, summarize(result.angles, complete, &sector),
+                            summarize(result.angles, floor, &sector)};
+    // Compared with the tolerance that counts a section as fully covered.
+    coverage.pass = coverage.complete.min >= sector.min_complete_coverage - (1 - kFullCoverage) &&
+                    coverage.floor.min >= sector.min_floor_coverage - (1 - kFullCoverage);
+    result.sectors.push_back(std::move(coverage));
+  }
+
+  // N-1: the union of every other mount's raster, angle by angle.
+  for (std::size_t lost = 0; lost < mounts.size(); ++lost) {
+    std::vector<AngleCoverage> remaining(result.angles.size());
+    for (std::size_t a = 0; a < result.angles.size(); ++a) {
+      SectionRaster united(rasters[0][a].grid());
+      for (std::size_t i = 0; i < mounts.size(); ++i) {
+        if (i != lost) united |= rasters[i][a];
+      }
+      remaining[a].theta = result.angles[a].theta;
+      remaining[a].complete = united.complete_share();
+      remaining[a].floor = united.floor_share();
+    }
+    result.without_each.push_back({mounts[lost].mount->id, summarize(remaining, complete),
+                                   summarize(remaining, floor)});
+  }
+  return result;
+}
+
+}  // namespace rigdesign
