@@ -12,6 +12,8 @@ packages=(
   catch2                                 # unit tests
   libcgal-dev libgmp-dev libmpfr-dev     # exact 2D Boolean operations, AABB-tree ray casting
   libosmesa6-dev                         # off-screen 3D renders of FOV volumes
+  libcairo2-dev                          # 2D charts, cross-section images, text, PNG and SVG
+  liburdfdom-dev                         # mount poses from a robot's URDF
   python3                                # an independent XML parser for the JUnit test
 )
 
