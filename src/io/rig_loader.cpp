@@ -4,6 +4,8 @@
 #include <set>
 
 #include "io/field_checks.hpp"
+#include "rigdesign/io/sensor_library_locator.hpp"
+#include "rigdesign/io/urdf_poses.hpp"
 #include "io/yaml_reader.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
@@ -77,7 +79,24 @@ RobotBody read_body(MapReader& body) {
   return result;
 }
 
-Pose3 read_pose(MapReader& pose) {
+// A pose is xyz (+ rpy_deg) in the robot frame, or the pose of a link of the rig's URDF.
+Pose3 read_pose(MapReader& pose, const std::optional<UrdfPoses>& urdf) {
+  if (pose.has("urdf_link")) {
+    const std::string link = pose.text("urdf_link", Need::required, "a URDF link name").value_or("");
+    pose.require(!pose.has("xyz") && !pose.has("rpy_deg"), "urdf_link", "given together with xyz",
+                 "either urdf_link or xyz/rpy_deg");
+    pose.reject_unknown_keys();
+    if (!urdf) {
+      pose.require(false, "urdf_link", "needs the rig's top-level `urdf` (file, base_link)",
+                   "a rig with `urdf: {file: robot.urdf}`");
+      return Pose3::Identity();
+    }
+    if (const auto T_base_link = urdf->T_base(link)) return *T_base_link;
+    std::string names;
+    for (const std::string& name : urdf->link_names()) names += (names.empty() ? "" : ", ") + name;
+    pose.require(false, "urdf_link", "no link '" + link + "' in the URDF", "one of: " + names);
+    return Pose3::Identity();
+  }
   const auto xyz = pose.numbers("xyz", Need::required, 3, 3, "[x, y, z] in metres, finite");
   const auto rpy = pose.numbers("rpy_deg", Need::optional, 3, 3,
                                 "[roll, pitch, yaw] in degrees, finite (default [0, 0, 0])");
@@ -88,7 +107,24 @@ Pose3 read_pose(MapReader& pose) {
   return pose_from_xyz_rpy(position, angles);
 }
 
-Mount read_mount(MapReader& reader) {
+std::optional<UrdfPoses> read_urdf(MapReader& top, const std::string& rig_path) {
+  auto urdf = top.map("urdf", Need::optional, "a map with file and base_link");
+  if (!urdf) return std::nullopt;
+  const auto file = urdf->text("file", Need::required, "a URDF path relative to the rig file");
+  const std::string base = urdf->text("base_link", Need::optional).value_or("");
+  const SourceLocation file_at = urdf->location("file");
+  const SourceLocation base_at = urdf->location("base_link");
+  urdf->reject_unknown_keys();
+  if (!file) return std::nullopt;
+  try {
+    return UrdfPoses::load(resolve_beside(rig_path, *file), base, file_at, base_at);
+  } catch (const InputError& error) {
+    for (const Diagnostic& diagnostic : error.diagnostics()) top.diagnostics().add(diagnostic);
+    return std::nullopt;
+  }
+}
+
+Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf) {
   Mount mount;
   mount.where = reader.location();
   mount.id = reader.text("id", Need::required, "a mount id, unique in the rig").value_or("");
@@ -97,8 +133,8 @@ Mount read_mount(MapReader& reader) {
   mount.mode_id = reader.text("mode", Need::required, "a mode id of that sensor").value_or("");
   mount.mode_where = reader.location("mode");
   mount.pose_where = reader.location("pose");
-  if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg")) {
-    mount.T_robot_sensor = read_pose(*pose);
+  if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg, or urdf_link")) {
+    mount.T_robot_sensor = read_pose(*pose, urdf);
   }
   if (reader.has("distance_of_interest")) {
     mount.distance_of_interest = io::positive(reader, "distance_of_interest", Need::required,
@@ -136,9 +172,10 @@ Rig load_rig(const std::string& path) {
     top.require(rig.distance_of_interest > rig.body.radius, "distance_of_interest",
                 "is not beyond the body radius", "d > r");
   }
+  const std::optional<UrdfPoses> urdf = read_urdf(top, path);
   std::set<std::string> ids;
   for (MapReader& reader : top.maps("mounts", Need::required, "a list of mounts")) {
-    Mount mount = read_mount(reader);
+    Mount mount = read_mount(reader, urdf);
     if (!mount.id.empty() && !ids.insert(mount.id).second) {
       reader.require(false, "id", "duplicate mount id '" + mount.id + "'", "unique mount ids");
     }

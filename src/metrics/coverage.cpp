@@ -89,6 +89,23 @@ void limiting_mounts(const std::vector<PlacedMount>& mounts, AngleCoverage& angl
 
 }  // namespace
 
+SectionView section_view(const Rig& rig, const SensorLibrary& library, double theta,
+                         const TessellationSettings& tessellation) {
+  const BodyOccluder body(rig.body);
+  const std::vector<PlacedMount> mounts = place_mounts(rig, library, body);
+  SectionView view;
+  view.frame = section_frame(body, theta, rig.distance_of_interest);
+  for (const PlacedMount& mount : mounts) {
+    view.mount_ids.push_back(mount.mount->id);
+    view.polygons.push_back(section_polygons(mount.fov, view.frame, tessellation));
+    view.floors.push_back(floor_coverage(mount.fov, view.frame));
+    view.origins.push_back(mount.fov.origin());
+  }
+  view.complete = union_area(view.polygons) / view.frame.area();
+  view.floor = floor_share(view.floors, view.frame);
+  return view;
+}
+
 bool in_sector(const SectorRequirement& sector, double theta) {
   const double offset = std::fmod(std::fmod(theta - sector.from, kTwoPi) + kTwoPi, kTwoPi);
   return offset <= sector.to - sector.from + 1e-12;

@@ -83,6 +83,21 @@ RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
                              const std::vector<SectorRequirement>& sectors,
                              const CoverageSettings& settings = {});
 
+/// One cross-section in full, for pictures: each mount's region as polygons and its floor
+/// intervals, and the union's shares (exact path).
+struct SectionView {
+  SectionFrame frame;
+  std::vector<std::string> mount_ids;
+  std::vector<std::vector<Polygon2>> polygons;  ///< per mount, (rho, z)
+  std::vector<IntervalSet> floors;              ///< per mount, rho intervals at z = 0
+  std::vector<Vec3> origins;                    ///< per mount, sensor origin (robot frame)
+  double complete = 0.0;
+  double floor = 0.0;
+};
+
+SectionView section_view(const Rig& rig, const SensorLibrary& library, double theta,
+                         const TessellationSettings& tessellation = {});
+
 /// Whether azimuth `theta` lies in the sector (angles compared modulo 360 degrees).
 bool in_sector(const SectorRequirement& sector, double theta);
 

@@ -1,0 +1,24 @@
+#pragma once
+/// Spatial Coverage curves as pictures (PNG or SVG by the file extension), drawn with Cairo.
+#include <string>
+
+#include "rigdesign/metrics/coverage.hpp"
+
+namespace rigdesign {
+
+/// SC complete and floor (and redundancy) against theta in degrees, with every requirement
+/// sector's thresholds drawn over its angles.
+void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
+                       const std::string& path, int width = 1200, int height = 620);
+
+/// The same curves around the robot seen from above: forward (theta = 0) up, left (90 deg)
+/// to the left; the radius is the coverage share.
+void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
+                   const std::string& path, int size = 900);
+
+/// A cross-section: each sensor's region in its colour (overlaps show through), the
+/// [r, d] x [0, h] frame, the body, the covered floor, axes in metres.
+void draw_section(const SectionView& view, const std::string& rig_name, const std::string& path,
+                  int width = 1200, int height = 600);
+
+}  // namespace rigdesign
