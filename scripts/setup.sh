@@ -15,6 +15,8 @@ packages=(
   libcairo2-dev                          # 2D charts, cross-section images, text, PNG and SVG
   liburdfdom-dev                         # mount poses from a robot's URDF
   python3                                # an independent XML parser for the JUnit test
+  libbenchmark-dev                       # Google Benchmark for scripts/bench.sh
+  fonts-dejavu-core                      # the font Cairo draws labels with
 )
 
 missing=()

@@ -47,6 +47,79 @@ MountedFov::MountedFov(const SensorMode& mode, const Pose3& T_robot_sensor,
   sin_elevation_min_ = std::sin(fov.elevation_min);
   sin_elevation_max_ = std::sin(fov.elevation_max);
   half_span_ = fov.horizontal / 2;
+  may_be_occluded_ = rays_can_reach(body);
+  bound_azimuths();
+}
+
+// A pyramid's (or cone's) volume lies inside the convex hull of its origin and the four
+// corner rays at x = max range (|q| <= max implies q_x <= max). Seen from above, that hull
+// spans the azimuths of its five points unless it encloses the robot's vertical axis.
+void MountedFov::bound_azimuths() {
+  if (mode_->fov.shape != FovShape::pyramid && mode_->fov.shape != FovShape::cone) return;
+  const double far = mode_->max_range;
+  const double tan_h = mode_->fov.shape == FovShape::cone ? std::tan(mode_->fov.horizontal / 2) : tan_half_h_;
+  const double tan_v = mode_->fov.shape == FovShape::cone ? tan_h : tan_half_v_;
+  std::vector<Vec2> hull_points = {origin_.head<2>()};
+  for (const double sy : {-1.0, 1.0}) {
+    for (const double sz : {-1.0, 1.0}) {
+      hull_points.push_back((T_robot_sensor_ * Vec3(far, sy * far * tan_h, sz * far * tan_v)).head<2>());
+    }
+  }
+  // The hull encloses the axis when the points' azimuths leave no gap wider than pi.
+  std::vector<double> azimuths;
+  for (const Vec2& p : hull_points) {
+    if (p.norm() < 1e-12) return;  // a point on the axis: every azimuth
+    azimuths.push_back(std::atan2(p.y(), p.x()));
+  }
+  std::sort(azimuths.begin(), azimuths.end());
+  double widest_gap = azimuths.front() + 2 * std::numbers::pi - azimuths.back();
+  double gap_end = azimuths.front();
+  for (std::size_t i = 1; i < azimuths.size(); ++i) {
+    if (azimuths[i] - azimuths[i - 1] > widest_gap) {
+      widest_gap = azimuths[i] - azimuths[i - 1];
+      gap_end = azimuths[i];
+    }
+  }
+  if (widest_gap <= std::numbers::pi) return;
+  azimuth_from_ = gap_end;
+  azimuth_span_ = 2 * std::numbers::pi - widest_gap;
+}
+
+bool MountedFov::may_reach_azimuth(double theta) const {
+  if (azimuth_span_ >= 2 * std::numbers::pi) return true;
+  const double offset = std::fmod(std::fmod(theta - azimuth_from_, 2 * std::numbers::pi) +
+                                      2 * std::numbers::pi, 2 * std::numbers::pi);
+  return offset <= azimuth_span_ + 1e-9;
+}
+
+// A ray leaving a sensor outside the cylinder while moving away from the robot's axis only
+// gets farther from it, so it never meets the body. Directions of a pyramid are positive
+// combinations of its four corner rays, so checking the corners covers them all; a cone's
+// directions stay within its half-angle of the axis.
+bool MountedFov::rays_can_reach(const BodyOccluder& body) const {
+  const Vec2 o = origin_.head<2>();
+  if (!body.is_cylinder() || o.norm() < body.radius()) return true;
+  const Vec3 outward(o.x(), o.y(), 0.0);
+  const Mat3& R_robot_sensor = T_robot_sensor_.linear();
+  switch (mode_->fov.shape) {
+    case FovShape::pyramid:
+      for (const double sy : {-1.0, 1.0}) {
+        for (const double sz : {-1.0, 1.0}) {
+          const Vec3 corner = R_robot_sensor * Vec3(1.0, sy * tan_half_h_, sz * tan_half_v_);
+          if (corner.dot(outward) < 0) return true;
+        }
+      }
+      return false;
+    case FovShape::cone: {
+      const double axis_to_outward =
+          std::acos(std::clamp((R_robot_sensor * Vec3::UnitX()).dot(outward.normalized()), -1.0, 1.0));
+      return axis_to_outward + mode_->fov.horizontal / 2 > std::numbers::pi / 2;
+    }
+    case FovShape::band:
+    case FovShape::planar:
+      return true;
+  }
+  return true;
 }
 
 bool MountedFov::in_fov(const Vec3& q) const {
@@ -71,7 +144,8 @@ bool MountedFov::in_fov(const Vec3& q) const {
 }
 
 bool MountedFov::sees(const Vec3& p_robot) const {
-  return in_fov(R_sensor_robot_ * (p_robot - origin_)) && !body_->blocks(origin_, p_robot);
+  return in_fov(R_sensor_robot_ * (p_robot - origin_)) &&
+         !(may_be_occluded_ && body_->blocks(origin_, p_robot));
 }
 
 void MountedFov::append_fov_roots(const Vec3& c, const Vec3& w, std::vector<double>& roots) const {
@@ -109,12 +183,12 @@ IntervalSet MountedFov::covered_along(const Vec3& start, const Vec3& direction, 
                                       double t_max) const {
   const Vec3 c = R_sensor_robot_ * (start - origin_);
   const Vec3 w = R_sensor_robot_ * direction;
-  std::vector<double> cuts;
-  cuts.reserve(32);
+  thread_local std::vector<double> cuts;  // reused: this runs once per raster column
+  cuts.clear();
   cuts.push_back(t_min);
   cuts.push_back(t_max);
   append_fov_roots(c, w, cuts);
-  body_->append_critical_parameters(origin_, start, direction, cuts);
+  if (may_be_occluded_) body_->append_critical_parameters(origin_, start, direction, cuts);
   std::sort(cuts.begin(), cuts.end());
   IntervalSet covered;
   double previous = t_min;

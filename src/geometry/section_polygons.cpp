@@ -106,6 +106,7 @@ double polygon_area(const Polygon2& polygon) {
 
 std::vector<Polygon2> section_polygons(const MountedFov& fov, const SectionFrame& frame,
                                        const TessellationSettings& settings) {
+  if (!fov.may_reach_azimuth(frame.theta)) return {};
   const std::vector<Column> columns = ColumnSampler(fov, frame, settings).sample();
   std::vector<Polygon2> polygons;
   std::size_t run_start = 0;

@@ -84,9 +84,22 @@ bool SectionRaster::test(int column, int row) const {
 
 SectionRaster rasterize(const MountedFov& fov, const SectionFrame& frame, const RasterGrid& grid) {
   SectionRaster raster(grid);
+  if (!fov.may_reach_azimuth(frame.theta)) return raster;
   const double column_width = frame.width() / grid.columns;
   const double row_height = frame.h / grid.rows;
-  for (int column = 0; column < grid.columns; ++column) {
+  // Columns whose horizontal distance from the sensor exceeds its max range see nothing:
+  // |rho * e_theta - o|^2 <= max^2 bounds rho to [rho_near, rho_far].
+  const Vec2 outward(std::cos(frame.theta), std::sin(frame.theta));
+  const Vec2 o = fov.origin().head<2>();
+  const double along = o.dot(outward);
+  const double reach2 = fov.mode().max_range * fov.mode().max_range - (o.squaredNorm() - along * along);
+  if (reach2 < 0) return raster;
+  const double rho_near = along - std::sqrt(reach2);
+  const double rho_far = along + std::sqrt(reach2);
+  const int first_column = std::max(0, static_cast<int>(std::floor((rho_near - frame.r) / column_width)));
+  const int end_column =
+      std::min(grid.columns, static_cast<int>(std::ceil((rho_far - frame.r) / column_width)) + 1);
+  for (int column = first_column; column < end_column; ++column) {
     const double rho = frame.r + (column + 0.5) * column_width;
     const IntervalSet covered = column_coverage(fov, frame, rho);
     for (const auto& [low, high] : covered.intervals()) {

@@ -180,3 +180,25 @@ TEST_CASE("the raster path stays within 0.5 % of the exact path on every bundled
     CHECK(coverage.raster_error_floor <= 0.005);
   }
 }
+
+TEST_CASE("azimuth culling never drops a section a sensor sees") {
+  // Where the conservative bound says a sensor cannot reach an azimuth, the exact column
+  // coverage (which does no culling) must be empty at every rho.
+  const SensorLibrary library = load_sensor_library(test::source_path("sensors.yaml"));
+  for (const char* file : {"rigs/ur_cleaner.yaml", "rigs/elektron.yaml", "rigs/delivery_amr.yaml"}) {
+    const Rig rig = load_rig(test::source_path(file));
+    const BodyOccluder body(rig.body);
+    for (const Mount& mount : rig.mounts) {
+      const MountedFov fov(*library.find(mount.sensor_id)->find_mode(mount.mode_id),
+                           mount.T_robot_sensor, body);
+      for (int degrees = 0; degrees < 360; degrees += 2) {
+        const SectionFrame frame = section_frame(body, deg_to_rad(degrees), rig.distance_of_interest);
+        if (fov.may_reach_azimuth(frame.theta)) continue;
+        for (double rho = frame.r; rho <= frame.d; rho += 0.05) {
+          INFO(file << " " << mount.id << " theta " << degrees << " rho " << rho);
+          CHECK(column_coverage(fov, frame, rho).empty());
+        }
+      }
+    }
+  }
+}

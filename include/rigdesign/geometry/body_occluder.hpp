@@ -29,6 +29,8 @@ class BodyOccluder {
   double radius_at(double theta) const;
 
   double height() const { return height_; }
+  bool is_cylinder() const { return footprint_.empty(); }
+  double radius() const { return radius_; }
 
  private:
   double radius_ = 0.0;

@@ -27,11 +27,18 @@ class MountedFov {
                             double t_max) const;
 
   const Vec3& origin() const { return origin_; }
+  /// False when the FOV certainly misses the vertical half-plane at azimuth `theta` (a
+  /// conservative test: true does not promise coverage).
+  bool may_reach_azimuth(double theta) const;
+
+  /// False when no direction in the FOV can reach the body, so occlusion can be skipped.
+  bool may_be_occluded() const { return may_be_occluded_; }
   const Pose3& pose() const { return T_robot_sensor_; }
   const SensorMode& mode() const { return *mode_; }
 
  private:
   bool in_fov(const Vec3& q_sensor) const;
+  bool rays_can_reach(const BodyOccluder& body) const;
   void append_fov_roots(const Vec3& c, const Vec3& w, std::vector<double>& roots) const;
 
   const SensorMode* mode_;
@@ -46,6 +53,11 @@ class MountedFov {
   double sin_elevation_min_ = 0.0;
   double sin_elevation_max_ = 0.0;
   double half_span_ = 0.0;  // band / planar azimuth half-span [rad]
+  bool may_be_occluded_ = true;
+  // Azimuths (about the robot's vertical axis) the FOV can reach: [from, from + span].
+  double azimuth_from_ = 0.0;
+  double azimuth_span_ = 7.0;  // > 2 pi: every azimuth
+  void bound_azimuths();
 };
 
 }  // namespace rigdesign

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Builds the benchmarks (Release, no sanitizers) and runs them; prints medians.
+#   scripts/bench.sh                 # every benchmark
+#   scripts/bench.sh coverage        # one benchmark binary
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$root/scripts/setup.sh" >&2
+build="$root/build/bench"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRIGDESIGN_BUILD_TESTS=OFF \
+  -DRIGDESIGN_BUILD_BENCHMARKS=ON >/dev/null
+cmake --build "$build" -j"$(nproc)" >/dev/null
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
+for bench in "$build"/tests/bench/*_bench; do
+  name="$(basename "$bench" _bench)"
+  if [ $# -gt 0 ] && [ "$1" != "$name" ]; then continue; fi
+  "$bench" --benchmark_format=console
+done

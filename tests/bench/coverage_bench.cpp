@@ -1,0 +1,128 @@
+// Coverage speed on the UR Cleaner (5 sensors), 360 angles, SC complete + floor:
+// the exact path (CGAL polygons), the raster path (column intervals into bitsets), and what
+// one candidate rig costs the selection search once each sensor's rasters are cached
+// (OR + popcount). Run through scripts/bench.sh; Google Benchmark prints medians.
+#include <benchmark/benchmark.h>
+
+#include <numbers>
+#include <thread>
+
+#include "rigdesign/geometry/section_polygons.hpp"
+#include "rigdesign/geometry/section_raster.hpp"
+#include "rigdesign/io/rig_loader.hpp"
+#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/metrics/coverage.hpp"
+
+namespace {
+
+using namespace rigdesign;
+
+constexpr int kAngles = 360;
+constexpr double kCell = CoverageSettings{}.raster_cell;  // [m] the default raster cell
+
+struct UrCleaner {
+  SensorLibrary library = load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
+  Rig rig = load_rig(RIGDESIGN_SOURCE_DIR "/rigs/ur_cleaner.yaml");
+  BodyOccluder body{rig.body};
+  std::vector<MountedFov> fovs;
+  UrCleaner() {
+    for (const Mount& mount : rig.mounts) {
+      fovs.emplace_back(*library.find(mount.sensor_id)->find_mode(mount.mode_id),
+                        mount.T_robot_sensor, body);
+    }
+  }
+  SectionFrame frame(int step) const {
+    return section_frame(body, 2 * std::numbers::pi * step / kAngles, rig.distance_of_interest);
+  }
+};
+
+const UrCleaner& ur_cleaner() {
+  static const UrCleaner instance;
+  return instance;
+}
+
+RasterGrid grid_for(const SectionFrame& frame) {
+  return {static_cast<int>(std::ceil(frame.width() / kCell)), static_cast<int>(std::ceil(frame.h / kCell))};
+}
+
+void BM_ExactSweep(benchmark::State& state) {
+  const UrCleaner& rig = ur_cleaner();
+  for (auto _ : state) {
+    double total = 0.0;
+    for (int step = 0; step < kAngles; ++step) {
+      const SectionFrame frame = rig.frame(step);
+      std::vector<std::vector<Polygon2>> polygons;
+      IntervalSet floor;
+      for (const MountedFov& fov : rig.fovs) {
+        polygons.push_back(section_polygons(fov, frame));
+        floor = floor.united(floor_coverage(fov, frame));
+      }
+      total += union_area(polygons) / frame.area() + floor.length() / frame.width();
+    }
+    benchmark::DoNotOptimize(total);
+  }
+}
+
+double raster_sweep(const UrCleaner& rig, int first_step, int step_stride) {
+  double total = 0.0;
+  for (int step = first_step; step < kAngles; step += step_stride) {
+    const SectionFrame frame = rig.frame(step);
+    SectionRaster united(grid_for(frame));
+    for (const MountedFov& fov : rig.fovs) united |= rasterize(fov, frame, grid_for(frame));
+    total += united.complete_share() + united.floor_share();
+  }
+  return total;
+}
+
+void BM_RasterSweep(benchmark::State& state) {
+  const UrCleaner& rig = ur_cleaner();
+  for (auto _ : state) benchmark::DoNotOptimize(raster_sweep(rig, 0, 1));
+}
+
+// The same sweep with the angles shared between two threads (this machine has two cores).
+void BM_RasterSweepTwoThreads(benchmark::State& state) {
+  const UrCleaner& rig = ur_cleaner();
+  for (auto _ : state) {
+    double odd = 0.0;
+    std::thread worker([&] { odd = raster_sweep(rig, 1, 2); });
+    const double even = raster_sweep(rig, 0, 2);
+    worker.join();
+    benchmark::DoNotOptimize(even + odd);
+  }
+}
+
+void BM_PerCandidateCachedRasters(benchmark::State& state) {
+  const UrCleaner& rig = ur_cleaner();
+  std::vector<std::vector<SectionRaster>> cached(rig.fovs.size());
+  for (std::size_t i = 0; i < rig.fovs.size(); ++i) {
+    for (int step = 0; step < kAngles; ++step) {
+      cached[i].push_back(rasterize(rig.fovs[i], rig.frame(step), grid_for(rig.frame(step))));
+    }
+  }
+  for (auto _ : state) {
+    double total = 0.0;
+    for (int step = 0; step < kAngles; ++step) {
+      SectionRaster united = cached[0][step];
+      for (std::size_t i = 1; i < cached.size(); ++i) united |= cached[i][step];
+      total += united.complete_share() + united.floor_share();
+    }
+    benchmark::DoNotOptimize(total);
+  }
+}
+
+void BM_ComputeCoverageAll(benchmark::State& state) {
+  const UrCleaner& rig = ur_cleaner();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(compute_coverage(rig.rig, rig.library, {}));
+  }
+}
+
+BENCHMARK(BM_ExactSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
+BENCHMARK(BM_RasterSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
+BENCHMARK(BM_RasterSweepTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(5)->ReportAggregatesOnly();
+BENCHMARK(BM_PerCandidateCachedRasters)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly();
+BENCHMARK(BM_ComputeCoverageAll)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
+
+}  // namespace
+
+BENCHMARK_MAIN();
