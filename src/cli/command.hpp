@@ -16,5 +16,6 @@ struct Command {
 
 Command setup_metrics(CLI::App& parent);
 Command setup_check(CLI::App& parent);
+Command setup_coverage(CLI::App& parent);
 
 }  // namespace rigdesign::cli

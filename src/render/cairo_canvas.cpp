@@ -70,6 +70,7 @@ void draw_text(cairo_t* cairo, const std::string& text, double x, double y, doub
   if (anchor == Anchor::right) left = x - extents.x_advance;
   cairo_move_to(cairo, left, y);
   cairo_show_text(cairo, text.c_str());
+  cairo_new_path(cairo);  // no current point left behind for the next arc or line
 }
 
 }  // namespace rigdesign::render

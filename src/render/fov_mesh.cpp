@@ -1,0 +1,328 @@
+#include "rigdesign/render/fov_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <numeric>
+
+namespace rigdesign {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// 48 segments over a full turn are 7.5 deg chords: round at figure sizes, and a spherical
+// cap tessellated this finely loses well under 1 % of its volume.
+constexpr int kSegmentsOnWiderAngle = 48;
+// Angles this close [rad] to a pole (elevation +-90 deg, a cone's axis) or to a full turn are
+// taken as that pole or full turn; datasheet angles converted from degrees land within ~1e-15.
+constexpr double kAngleTolerance = 1e-9;
+// The body cylinder's polygon: its inscribed area is 0.16 % short of pi r^2.
+constexpr int kCylinderSides = 64;
+
+// A FOV's directions as a map from a rectangle of two angles (u, v) [rad] to unit vectors in
+// the sensor frame, sampled on a grid. The map is oriented so that (d/du) x (d/dv) points out
+// through the far cap, which makes counter-clockwise grid quads outward-facing there.
+struct AngleGrid {
+  FovShape shape = FovShape::pyramid;
+  double u_min = 0.0;
+  double u_max = 0.0;
+  double v_min = 0.0;
+  double v_max = 0.0;
+  int columns = 1;             // segments along u
+  int rows = 1;                // segments along v
+  bool wraps_u = false;        // u is a full turn: column `columns` is column 0
+  bool pole_at_v_min = false;  // every u gives the same direction on row 0
+  bool pole_at_v_max = false;  // ... on row `rows`
+
+  double u(int i) const { return u_min + (u_max - u_min) * i / columns; }
+  double v(int j) const { return v_min + (v_max - v_min) * j / rows; }
+  bool is_pole_row(int j) const {
+    return (j == 0 && pole_at_v_min) || (j == rows && pole_at_v_max);
+  }
+  int vertices_in_row(int j) const {
+    if (is_pole_row(j)) return 1;
+    return wraps_u ? columns : columns + 1;
+  }
+};
+
+// Unit direction in the sensor frame for the grid angles of each shape:
+// pyramid u = atan(y/x), v = atan(z/x); cone u = roll about x, v = angle from +x;
+// band and planar u = azimuth atan2(y, x), v = elevation asin(z).
+Vec3 direction(FovShape shape, double u, double v) {
+  switch (shape) {
+    case FovShape::pyramid: return Vec3(1.0, std::tan(u), std::tan(v)).normalized();
+    case FovShape::cone:
+      return Vec3(std::cos(v), std::sin(v) * std::sin(u), std::sin(v) * std::cos(u));
+    case FovShape::band:
+    case FovShape::planar:
+      return Vec3(std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v));
+  }
+  return Vec3::UnitX();
+}
+
+int segments_for(double span, double wider_span) {
+  const double share = span / wider_span;
+  return std::max(1, static_cast<int>(std::ceil(kSegmentsOnWiderAngle * share - kAngleTolerance)));
+}
+
+AngleGrid angle_grid(const FieldOfView& fov) {
+  AngleGrid grid;
+  grid.shape = fov.shape;
+  switch (fov.shape) {
+    case FovShape::pyramid:
+      grid.u_max = fov.horizontal / 2;
+      grid.v_max = fov.vertical / 2;
+      grid.u_min = -grid.u_max;
+      grid.v_min = -grid.v_max;
+      break;
+    case FovShape::cone:
+      grid.u_min = -kPi;
+      grid.u_max = kPi;
+      grid.wraps_u = true;
+      grid.v_max = std::min(fov.horizontal / 2, kPi);
+      grid.pole_at_v_min = true;  // the optical axis
+      grid.pole_at_v_max = grid.v_max >= kPi - kAngleTolerance;
+      break;
+    case FovShape::band:
+    case FovShape::planar: {
+      const double half_span = std::min(fov.horizontal / 2, kPi);
+      grid.u_min = -half_span;
+      grid.u_max = half_span;
+      grid.wraps_u = half_span >= kPi - kAngleTolerance;
+      grid.v_min = fov.elevation_min;
+      grid.v_max = fov.elevation_max;
+      grid.pole_at_v_min = grid.v_min <= -kPi / 2 + kAngleTolerance;
+      grid.pole_at_v_max = grid.v_max >= kPi / 2 - kAngleTolerance;
+      break;
+    }
+  }
+  const double u_span = grid.u_max - grid.u_min;
+  const double v_span = grid.v_max - grid.v_min;
+  const double wider_span = std::max(u_span, v_span);
+  if (wider_span > 0) {
+    grid.columns = segments_for(u_span, wider_span);
+    grid.rows = segments_for(v_span, wider_span);
+  }
+  return grid;
+}
+
+// Builds the closed shell between two spheres cut by the FOV: the far cap, the near cap (or
+// the sensor origin as an apex when the near radius is 0) and the walls along the grid's
+// boundary. Pole rows and a wrapping column share vertices, and triangles that collapse on
+// them are dropped, so the surface is closed and every edge is used once each way.
+class ShellBuilder {
+ public:
+  ShellBuilder(const AngleGrid& grid, const Pose3& T_robot_sensor)
+      : grid_(grid), T_robot_sensor_(T_robot_sensor) {}
+
+  TriangleMesh build(double near_radius, double far_radius) {
+    const Layer outer = add_layer(far_radius);
+    const Layer inner = add_layer(near_radius);
+    add_caps(outer, inner);
+    add_wall(outer, inner, 0, 0, 1, 0, grid_.columns);                        // v = v_min
+    add_wall(outer, inner, grid_.columns, grid_.rows, -1, 0, grid_.columns);  // v = v_max
+    if (!grid_.wraps_u) {
+      add_wall(outer, inner, grid_.columns, 0, 0, 1, grid_.rows);  // u = u_max
+      add_wall(outer, inner, 0, grid_.rows, 0, -1, grid_.rows);    // u = u_min
+    }
+    return std::move(mesh_);
+  }
+
+ private:
+  // One sphere's vertices, row by row; a layer of radius 0 is the single apex vertex.
+  struct Layer {
+    int first = 0;
+    bool is_apex = false;
+  };
+
+  Layer add_layer(double radius) {
+    const Layer layer{static_cast<int>(mesh_.vertices.size()), radius <= 0.0};
+    if (layer.is_apex) {
+      mesh_.vertices.push_back(T_robot_sensor_.translation());
+      return layer;
+    }
+    for (int j = 0; j <= grid_.rows; ++j) {
+      for (int i = 0; i < grid_.vertices_in_row(j); ++i) {
+        const Vec3 q_sensor = radius * direction(grid_.shape, grid_.u(i), grid_.v(j));
+        mesh_.vertices.push_back(T_robot_sensor_ * q_sensor);
+      }
+    }
+    return layer;
+  }
+
+  int index(const Layer& layer, int i, int j) const {
+    if (layer.is_apex) return layer.first;
+    int row_start = layer.first;
+    for (int row = 0; row < j; ++row) row_start += grid_.vertices_in_row(row);
+    if (grid_.is_pole_row(j)) return row_start;
+    return row_start + (grid_.wraps_u ? i % grid_.columns : i);
+  }
+
+  void add_triangle(int a, int b, int c) {
+    if (a == b || b == c || c == a) return;  // collapsed on a pole or the apex
+    mesh_.triangles.push_back({a, b, c});
+  }
+
+  // Two triangles a-b-c and a-c-d of a quad given counter-clockwise seen from outside.
+  void add_quad(int a, int b, int c, int d) {
+    add_triangle(a, b, c);
+    add_triangle(a, c, d);
+  }
+
+  void add_caps(const Layer& outer, const Layer& inner) {
+    for (int j = 0; j < grid_.rows; ++j) {
+      for (int i = 0; i < grid_.columns; ++i) {
+        add_quad(index(outer, i, j), index(outer, i + 1, j), index(outer, i + 1, j + 1),
+                 index(outer, i, j + 1));
+        // The near cap faces the sensor, so its quads run the other way round.
+        add_quad(index(inner, i, j), index(inner, i, j + 1), index(inner, i + 1, j + 1),
+                 index(inner, i + 1, j));
+      }
+    }
+  }
+
+  // Walls along one side of the grid, walked counter-clockwise in (u, v) from (i0, j0) in
+  // `steps` steps of (di, dj). The far cap runs each boundary edge p -> q, so the wall runs it
+  // q -> p to face outward too.
+  void add_wall(const Layer& outer, const Layer& inner, int i0, int j0, int di, int dj, int steps) {
+    for (int s = 0; s < steps; ++s) {
+      const int pi = i0 + s * di;
+      const int pj = j0 + s * dj;
+      const int qi = pi + di;
+      const int qj = pj + dj;
+      add_quad(index(outer, qi, qj), index(outer, pi, pj), index(inner, pi, pj),
+               index(inner, qi, qj));
+    }
+  }
+
+  AngleGrid grid_;
+  Pose3 T_robot_sensor_;
+  TriangleMesh mesh_;
+};
+
+// Twice the signed area of triangle a-b-c: positive when it turns left (counter-clockwise).
+double turn(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const Vec2 ab = b - a;
+  const Vec2 ac = c - a;
+  return ab.x() * ac.y() - ab.y() * ac.x();
+}
+
+double signed_area(const std::vector<Vec2>& polygon) {
+  double twice_area = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2& a = polygon[i];
+    const Vec2& b = polygon[(i + 1) % polygon.size()];
+    twice_area += a.x() * b.y() - b.x() * a.y();
+  }
+  return twice_area / 2;
+}
+
+// A point on the border counts as inside, so an ear never swallows a vertex touching it.
+bool inside_or_on(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
+  return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
+}
+
+bool is_ear(const std::vector<Vec2>& polygon, const std::vector<int>& remaining, std::size_t k) {
+  const std::size_t count = remaining.size();
+  const int prev = remaining[(k + count - 1) % count];
+  const int here = remaining[k];
+  const int next = remaining[(k + 1) % count];
+  if (turn(polygon[prev], polygon[here], polygon[next]) <= 0) return false;  // reflex or straight
+  for (const int other : remaining) {
+    if (other == prev || other == here || other == next) continue;
+    if (inside_or_on(polygon[other], polygon[prev], polygon[here], polygon[next])) return false;
+  }
+  return true;
+}
+
+// When no ear is left, what remains is straight runs, where dropping the straightest vertex
+// loses no area, or a self-intersecting outline, which has no proper triangulation; dropping
+// its straightest vertex still ends the loop and draws something.
+std::size_t straightest_corner(const std::vector<Vec2>& polygon,
+                               const std::vector<int>& remaining) {
+  const std::size_t count = remaining.size();
+  std::size_t best = 0;
+  double best_turn = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < count; ++k) {
+    const double bend = std::abs(turn(polygon[remaining[(k + count - 1) % count]],
+                                      polygon[remaining[k]], polygon[remaining[(k + 1) % count]]));
+    if (bend < best_turn) {
+      best_turn = bend;
+      best = k;
+    }
+  }
+  return best;
+}
+
+// Ear clipping of a simple counter-clockwise polygon (any convexity): repeatedly cut off a
+// convex corner whose triangle holds no other vertex. Returns triangles of polygon indices.
+std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
+  std::vector<int> remaining(polygon.size());
+  std::iota(remaining.begin(), remaining.end(), 0);
+  std::vector<std::array<int, 3>> triangles;
+  while (remaining.size() >= 3) {
+    const std::size_t count = remaining.size();
+    std::size_t cut = count;
+    for (std::size_t k = 0; k < count && cut == count; ++k) {
+      if (is_ear(polygon, remaining, k)) cut = k;
+    }
+    if (cut == count) cut = straightest_corner(polygon, remaining);
+    const int prev = remaining[(cut + count - 1) % count];
+    const int here = remaining[cut];
+    const int next = remaining[(cut + 1) % count];
+    if (turn(polygon[prev], polygon[here], polygon[next]) > 0) {
+      triangles.push_back({prev, here, next});
+    }
+    remaining.erase(remaining.begin() + static_cast<std::ptrdiff_t>(cut));
+  }
+  return triangles;
+}
+
+std::vector<Vec2> counter_clockwise_outline(const RobotBody& body) {
+  if (!body.footprint.empty()) {
+    std::vector<Vec2> outline = body.footprint;
+    if (signed_area(outline) < 0) std::reverse(outline.begin(), outline.end());
+    return outline;
+  }
+  std::vector<Vec2> circle;
+  circle.reserve(kCylinderSides);
+  for (int i = 0; i < kCylinderSides; ++i) {
+    const double angle = 2 * kPi * i / kCylinderSides;
+    circle.emplace_back(body.radius * std::cos(angle), body.radius * std::sin(angle));
+  }
+  return circle;
+}
+
+}  // namespace
+
+TriangleMesh fov_mesh(const SensorMode& mode, const Pose3& T_robot_sensor, double truncate_at) {
+  const double near_radius = std::max(0.0, mode.min_range);
+  const double far_radius = std::min(mode.max_range, truncate_at);
+  if (!(far_radius > near_radius)) return {};
+  const AngleGrid grid = angle_grid(mode.fov);
+  return ShellBuilder(grid, T_robot_sensor).build(near_radius, far_radius);
+}
+
+TriangleMesh body_mesh(const RobotBody& body) {
+  const std::vector<Vec2> outline = counter_clockwise_outline(body);
+  const int count = static_cast<int>(outline.size());
+  TriangleMesh mesh;
+  if (count < 3) return mesh;
+  // Vertices 0..count-1 on the floor, count..2*count-1 on the top, in outline order.
+  for (const double z : {0.0, body.height}) {
+    for (const Vec2& corner : outline) mesh.vertices.emplace_back(corner.x(), corner.y(), z);
+  }
+  for (const auto& [a, b, c] : triangulate(outline)) {
+    mesh.triangles.push_back({count + a, count + b, count + c});  // top faces up
+    mesh.triangles.push_back({a, c, b});                          // floor faces down
+  }
+  for (int i = 0; i < count; ++i) {
+    // Outward is to the right of a counter-clockwise edge; the quad runs floor, then top.
+    const int next = (i + 1) % count;
+    mesh.triangles.push_back({i, next, count + next});
+    mesh.triangles.push_back({i, count + next, count + i});
+  }
+  return mesh;
+}
+
+}  // namespace rigdesign

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -26,27 +27,43 @@ double tick_step(double span, int count) {
   return 10 * magnitude;
 }
 
-struct SectionAxes {
-  double left, bottom, scale;  // pixels per metre, equal on both axes
-  double x(double rho) const { return left + rho * scale; }
-  double y(double z) const { return bottom - z * scale; }
-};
-
 }  // namespace
 
-void draw_section(const SectionView& view, const std::string& rig_name, const std::string& path,
-                  int width, int height) {
-  render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
-    const SectionFrame& frame = view.frame;
-    const double rho_max = frame.d * 1.04;
-    const double z_max = frame.h * 1.12;
-    const double plot_left = 80;
-    const double plot_right = width - 250.0;
-    const double plot_top = 70;
-    const double plot_bottom = height - 70.0;
-    const double scale = std::min((plot_right - plot_left) / rho_max, (plot_bottom - plot_top) / z_max);
-    const SectionAxes axes{plot_left, plot_bottom, scale};
+constexpr double kPlotLeft = 80;
+constexpr double kPlotTop = 70;
+constexpr double kLegendWidth = 250;
+constexpr double kAxisMargin = 70;
 
+SectionLayout section_layout(const SectionFrame& frame, std::size_t sensors, int width,
+                             int max_height) {
+  // The canvas is as tall as the section needs at equal scales (and tall enough for the
+  // legend), but no taller than max_height.
+  const double rho_max = frame.d * 1.04;
+  const double z_max = frame.h * 1.12;
+  const double plot_right = width - kLegendWidth;
+  const double legend_height = 140.0 + 26.0 * static_cast<double>(sensors);
+  const double wanted = kPlotTop + z_max * (plot_right - kPlotLeft) / rho_max + kAxisMargin;
+  SectionLayout layout;
+  layout.width = width;
+  layout.height = static_cast<int>(std::clamp(std::max(wanted, legend_height + kAxisMargin), 300.0,
+                                              static_cast<double>(max_height)));
+  layout.left = kPlotLeft;
+  layout.bottom = layout.height - kAxisMargin;
+  layout.scale = std::min((plot_right - kPlotLeft) / rho_max, (layout.bottom - kPlotTop) / z_max);
+  return layout;
+}
+
+void draw_section(const SectionView& view, const std::string& rig_name, const std::string& path,
+                  int width, int max_height) {
+  const SectionFrame& frame = view.frame;
+  const SectionLayout axes = section_layout(frame, view.polygons.size(), width, max_height);
+  const double rho_max = frame.d * 1.04;
+  const double z_max = frame.h * 1.12;
+  const double plot_right = width - kLegendWidth;
+  const double plot_top = kPlotTop;
+  const double scale = axes.scale;
+  const int height = axes.height;
+  render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
     set_colour(cairo, kInk);
     draw_text(cairo,
               rig_name + ": cross-section at theta = " +
@@ -89,8 +106,8 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
     cairo_fill(cairo);
     set_colour(cairo, {1, 1, 1});
     draw_text(cairo, "body", axes.x(frame.r / 2), axes.y(frame.h / 2), 13, Anchor::centre);
+    // One path per sensor: its strips fill as one region, without seams between them.
     for (std::size_t i = 0; i < view.polygons.size(); ++i) {
-      const Rgb colour = sensor_colour(i);
       for (const Polygon2& polygon : view.polygons[i]) {
         for (std::size_t k = 0; k < polygon.size(); ++k) {
           const double x = axes.x(polygon[k].x());
@@ -98,12 +115,9 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
           k == 0 ? cairo_move_to(cairo, x, y) : cairo_line_to(cairo, x, y);
         }
         cairo_close_path(cairo);
-        set_colour(cairo, colour, 0.42);
-        cairo_fill_preserve(cairo);
-        set_colour(cairo, colour, 0.95);
-        cairo_set_line_width(cairo, 1.2);
-        cairo_stroke(cairo);
       }
+      set_colour(cairo, sensor_colour(i), 0.45);
+      cairo_fill(cairo);
     }
     // Covered floor: a thick line under the frame.
     IntervalSet floor;
@@ -134,6 +148,7 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
       const double aside = std::abs(horizontal.x() * outward.y() - horizontal.y() * outward.x());
       if (along < -1e-9 || aside > 0.05 + 0.1 * along) continue;
       set_colour(cairo, sensor_colour(i));
+      cairo_new_sub_path(cairo);
       cairo_arc(cairo, axes.x(along), axes.y(view.origins[i].z()), 6, 0, 2 * std::numbers::pi);
       cairo_fill_preserve(cairo);
       set_colour(cairo, kInk);

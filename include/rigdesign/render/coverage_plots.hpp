@@ -16,9 +16,24 @@ void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
 void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
                    const std::string& path, int size = 900);
 
+/// Where draw_section puts the section: equal scales on both axes.
+struct SectionLayout {
+  int width = 0;
+  int height = 0;
+  double left = 0.0;    ///< [px] x of rho = 0
+  double bottom = 0.0;  ///< [px] y of z = 0
+  double scale = 0.0;   ///< [px/m]
+  double x(double rho) const { return left + rho * scale; }
+  double y(double z) const { return bottom - z * scale; }
+};
+
+SectionLayout section_layout(const SectionFrame& frame, std::size_t sensors, int width = 1200,
+                             int max_height = 800);
+
 /// A cross-section: each sensor's region in its colour (overlaps show through), the
-/// [r, d] x [0, h] frame, the body, the covered floor, axes in metres.
+/// [r, d] x [0, h] frame, the body, the covered floor, axes in metres. Equal scales on both
+/// axes: the height follows the section's aspect, up to `max_height`.
 void draw_section(const SectionView& view, const std::string& rig_name, const std::string& path,
-                  int width = 1200, int height = 600);
+                  int width = 1200, int max_height = 800);
 
 }  // namespace rigdesign

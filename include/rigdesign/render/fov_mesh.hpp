@@ -1,0 +1,36 @@
+#pragma once
+/// Triangle meshes of what the 3D view draws: a sensor mode's FOV volume and the robot body,
+/// both in the robot frame (REP-103: x forward, y left, z up, origin on the floor under the
+/// robot's centre).
+#include <array>
+#include <vector>
+
+#include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/sensor.hpp"
+
+namespace rigdesign {
+
+/// An indexed triangle mesh, coordinates in metres. The meshes built here are closed and
+/// wound counter-clockwise seen from outside, so (b - a) x (c - a) points out of the volume.
+struct TriangleMesh {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<int, 3>> triangles;  ///< indices into `vertices`
+};
+
+/// The closed surface of a mode's FOV volume placed on the robot by `T_robot_sensor`: every
+/// point whose direction from the sensor origin is inside the FOV and whose distance from it
+/// is in [mode.min_range, min(mode.max_range, truncate_at)] [m]. The two range limits are
+/// spherical caps (the inner one shrinks to the sensor origin when min_range is 0) and the
+/// FOV's boundary gives the side walls. Curved parts are tessellated with 48 segments over the
+/// FOV's wider angle, which keeps the enclosed volume within about 1 % of the exact one.
+/// Returns an empty mesh when the range interval is empty. Deterministic.
+TriangleMesh fov_mesh(const SensorMode& mode, const Pose3& T_robot_sensor, double truncate_at);
+
+/// The robot body as a closed prism from z = 0 to z = body.height [m]: the footprint polygon
+/// when there is one (counter-clockwise; a clockwise one is accepted and reversed; simple
+/// polygons only, convex or not), else a vertical cylinder of body.radius approximated by an
+/// inscribed 64-sided polygon (0.16 % less area). Deterministic.
+TriangleMesh body_mesh(const RobotBody& body);
+
+}  // namespace rigdesign

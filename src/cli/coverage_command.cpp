@@ -1,0 +1,132 @@
+// `rigdesign coverage RIG [--out DIR] [--angles 0,45,90] [--step DEG]`: SC curves (Cartesian
+// and polar, PNG and SVG), cross-sections at chosen angles, 3D views of the FOV volumes
+// (OSMesa), and the numbers as CSV and JSON. Runs without a display.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+#include "app.hpp"
+#include "command.hpp"
+#include "coverage_files.hpp"
+#include "inputs.hpp"
+#include "json_report.hpp"
+#include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/metrics/coverage.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/units.hpp"
+#include "rigdesign/render/coverage_plots.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+struct CoverageOptions {
+  std::string rig;
+  std::string out;
+  std::vector<double> angles_deg = {0, 45, 90, 180};
+  double step_deg = 1.0;
+  std::string requirements;
+  std::string sensors;
+  bool raster = false;
+  bool no_3d = false;
+};
+
+void require_option(bool ok, const std::string& option, const std::string& problem,
+                    const std::string& expected) {
+  if (!ok) throw InputError(Diagnostic{{"(command line)", 0, 0}, option, problem, expected});
+}
+
+std::string angle_name(double degrees) {
+  std::ostringstream name;
+  name << "section_" << format_number(degrees, 6);
+  return name.str();
+}
+
+int run_coverage(const CoverageOptions& options, std::ostream& out) {
+  require_option(options.step_deg > 0 && options.step_deg <= 45, "--step",
+                 "is " + format_number(options.step_deg), "degrees in (0, 45]");
+  for (const double angle : options.angles_deg) {
+    require_option(std::isfinite(angle), "--angles", "has a value that is not a number",
+                   "comma-separated degrees, e.g. 0,45,90");
+  }
+  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
+  const std::string folder =
+      options.out.empty()
+          ? "coverage/" + std::filesystem::path(options.rig).stem().string()
+          : options.out;
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  require_option(!error, "--out", "cannot create folder '" + folder + "': " + error.message(),
+                 "a writable folder");
+
+  CoverageSettings settings;
+  settings.step = deg_to_rad(options.step_deg);
+  settings.exact = !options.raster;
+  const std::vector<SectorRequirement> sectors =
+      inputs.requirements ? inputs.requirements->sectors : std::vector<SectorRequirement>{};
+  const RigCoverage coverage = compute_coverage(inputs.rig, inputs.library, sectors, settings);
+
+  std::vector<std::string> written;
+  const auto path = [&](const std::string& name) {
+    written.push_back(folder + "/" + name);
+    return written.back();
+  };
+  for (const char* extension : {".png", ".svg"}) {
+    plot_sc_cartesian(coverage, inputs.rig.name, path(std::string("sc_cartesian") + extension));
+    plot_sc_polar(coverage, inputs.rig.name, path(std::string("sc_polar") + extension));
+  }
+  for (const double degrees : options.angles_deg) {
+    const SectionView view = section_view(inputs.rig, inputs.library, deg_to_rad(degrees));
+    draw_section(view, inputs.rig.name, path(angle_name(degrees) + ".png"));
+    draw_section(view, inputs.rig.name, path(angle_name(degrees) + ".svg"));
+  }
+  if (!options.no_3d) {
+    for (const auto& [viewpoint, name] : views_3d()) {
+      render_rig_3d(inputs.rig, inputs.library, viewpoint, path(name));
+    }
+  }
+  write_file_atomically(path("coverage.csv"), coverage_csv(coverage));
+  write_file_atomically(path("coverage.json"), to_json(coverage, true).dump(2) + "\n");
+
+  out << inputs.rig.name << ": SC complete min " << format_number(coverage.complete.min * 100, 3)
+      << " %, mean " << format_number(coverage.complete.mean * 100, 3) << " %; SC floor min "
+      << format_number(coverage.floor.min * 100, 3) << " %, mean "
+      << format_number(coverage.floor.mean * 100, 3) << " % (" << coverage.angles.size()
+      << " angles, " << (coverage.exact ? "exact path" : "raster path") << ")\n";
+  for (const SectorCoverage& sector : coverage.sectors) {
+    out << "  sector " << sector.sector.name << ": complete min "
+        << format_number(sector.complete.min * 100, 3) << " % (needs "
+        << format_number(sector.sector.min_complete_coverage * 100, 3) << "), floor min "
+        << format_number(sector.floor.min * 100, 3) << " % (needs "
+        << format_number(sector.sector.min_floor_coverage * 100, 3) << "): "
+        << (sector.pass ? "pass" : "FAIL") << '\n';
+  }
+  out << "wrote " << written.size() << " files:\n";
+  for (const std::string& file : written) out << "  " << file << '\n';
+  return kOk;
+}
+
+}  // namespace
+
+Command setup_coverage(CLI::App& parent) {
+  auto options = std::make_shared<CoverageOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "coverage", "Spatial coverage curves, cross-sections and 3D FOV views (PNG, SVG, CSV, JSON)");
+  app->add_option("rig", options->rig, "Rig file (rigs/*.yaml)")->required();
+  app->add_option("--out", options->out, "Output folder (default: coverage/<rig file name>)");
+  app->add_option("--angles", options->angles_deg,
+                  "Azimuths of the cross-section images, degrees (default 0,45,90,180)")
+      ->delimiter(',');
+  app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)");
+  app->add_option("--requirements", options->requirements,
+                  "Requirements whose sector thresholds are drawn (default: the rig's)");
+  app->add_option("--sensors", options->sensors, "Sensor library");
+  app->add_flag("--raster", options->raster, "Use the fast raster path for the curves");
+  app->add_flag("--no-3d", options->no_3d, "Skip the OSMesa 3D views");
+  return {app, [options](std::ostream& out, std::ostream&) { return run_coverage(*options, out); }};
+}
+
+}  // namespace rigdesign::cli

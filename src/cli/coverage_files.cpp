@@ -1,0 +1,58 @@
+#include "coverage_files.hpp"
+
+#include <sstream>
+
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/units.hpp"
+#include "rigdesign/render/fov_mesh.hpp"
+#include "rigdesign/render/palette.hpp"
+
+namespace rigdesign::cli {
+
+std::string coverage_csv(const RigCoverage& coverage) {
+  std::ostringstream csv;
+  csv << "theta_deg,r_m,sc_complete,sc_floor,sc_complete_raster,sc_floor_raster,redundancy,"
+         "coarsest_mount,coarsest_spacing_m,noisiest_mount,noisiest_noise_m,seen_by\n";
+  for (const AngleCoverage& angle : coverage.angles) {
+    csv << format_number(rad_to_deg(angle.theta), 8) << ',' << format_number(angle.r, 8) << ','
+        << format_number(angle.complete, 8) << ',' << format_number(angle.floor, 8) << ','
+        << format_number(angle.complete_raster, 8) << ',' << format_number(angle.floor_raster, 8)
+        << ',' << format_number(angle.redundancy, 8) << ',';
+    if (angle.coarsest_mount >= 0) {
+      csv << coverage.mount_ids[angle.coarsest_mount] << ','
+          << format_number(angle.coarsest_spacing, 8) << ','
+          << coverage.mount_ids[angle.noisiest_mount] << ','
+          << format_number(angle.noisiest_noise, 8) << ',';
+    } else {
+      csv << ",,,,";
+    }
+    std::string seen;
+    for (std::size_t i = 0; i < angle.mount_sees.size(); ++i) {
+      if (angle.mount_sees[i]) seen += (seen.empty() ? "" : ";") + coverage.mount_ids[i];
+    }
+    csv << seen << '\n';
+  }
+  return csv.str();
+}
+
+std::vector<std::pair<Viewpoint, std::string>> views_3d() {
+  return {{Viewpoint::isometric, "view_isometric.png"}, {Viewpoint::top, "view_top.png"}};
+}
+
+void render_rig_3d(const Rig& rig, const SensorLibrary& library, Viewpoint viewpoint,
+                   const std::string& path) {
+  std::vector<ColouredMesh> meshes;
+  meshes.push_back({body_mesh(rig.body), kBodyColour, 1.0});
+  for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
+    const Mount& mount = rig.mounts[i];
+    const SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
+    meshes.push_back({fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest),
+                      sensor_colour(i), 0.35});
+  }
+  View3dSettings settings;
+  settings.viewpoint = viewpoint;
+  settings.extent = 0.0;  // fit the FOV volumes, which reach past d from off-centre mounts
+  render_view_3d(meshes, settings, path);
+}
+
+}  // namespace rigdesign::cli
