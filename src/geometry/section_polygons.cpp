@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include "rigdesign/model/polygon_area.hpp"
+
 namespace rigdesign {
 namespace {
 
@@ -88,21 +90,11 @@ void close_strips(const std::vector<Column>& columns, std::size_t first, std::si
       push_distinct(polygon, Vec2(columns[c].rho, columns[c].covered.intervals()[k].second));
     }
     if (polygon.size() > 2 && (polygon.front() - polygon.back()).norm() <= 1e-12) polygon.pop_back();
-    if (polygon.size() >= 3 && polygon_area(polygon) > 1e-14) polygons.push_back(std::move(polygon));
+    if (polygon.size() >= 3 && signed_area(polygon) > 1e-14) polygons.push_back(std::move(polygon));
   }
 }
 
 }  // namespace
-
-double polygon_area(const Polygon2& polygon) {
-  double twice = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Vec2& a = polygon[i];
-    const Vec2& b = polygon[(i + 1) % polygon.size()];
-    twice += a.x() * b.y() - b.x() * a.y();
-  }
-  return 0.5 * twice;
-}
 
 std::vector<Polygon2> section_polygons(const MountedFov& fov, const SectionFrame& frame,
                                        const TessellationSettings& settings) {

@@ -7,6 +7,7 @@
 #include "rigdesign/io/sensor_library_locator.hpp"
 #include "rigdesign/io/urdf_poses.hpp"
 #include "io/yaml_reader.hpp"
+#include "rigdesign/model/polygon_area.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 
@@ -15,17 +16,6 @@ namespace {
 
 using io::MapReader;
 using io::Need;
-
-// Twice the signed area: positive for a counter-clockwise polygon.
-double twice_signed_area(const std::vector<Vec2>& polygon) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Vec2& a = polygon[i];
-    const Vec2& b = polygon[(i + 1) % polygon.size()];
-    sum += a.x() * b.y() - b.x() * a.y();
-  }
-  return sum;
-}
 
 std::vector<Vec2> read_footprint(MapReader& body) {
   const std::string expected = "a list of at least 3 [x, y] vertices in metres";
@@ -53,10 +43,10 @@ std::vector<Vec2> read_footprint(MapReader& body) {
     footprint.emplace_back(x.value_or(0.0), y.value_or(0.0));
   }
   if (!all_valid) return {};
-  const double area2 = twice_signed_area(footprint);
-  body.require(std::abs(area2) > 1e-9, "footprint", "encloses no area",
+  const double area = signed_area(footprint);
+  body.require(std::abs(area) > 1e-9, "footprint", "encloses no area",
                "vertices of a simple polygon around the robot's vertical axis");
-  if (area2 < 0) std::reverse(footprint.begin(), footprint.end());
+  if (area < 0) std::reverse(footprint.begin(), footprint.end());
   return footprint;
 }
 

@@ -14,8 +14,6 @@ using render::Anchor;
 using render::draw_text;
 using render::set_colour;
 
-constexpr Rgb kGrid{0.85, 0.85, 0.85};
-constexpr Rgb kInk{0.15, 0.15, 0.15};
 constexpr Rgb kRedundancy{0.45, 0.45, 0.45};
 
 std::string title(const RigCoverage& coverage, const std::string& rig_name) {
@@ -63,7 +61,7 @@ void legend_line(cairo_t* cairo, double x, double y, const Rgb& colour, bool das
   cairo_line_to(cairo, x + 30, y - 4);
   cairo_stroke(cairo);
   cairo_set_dash(cairo, nullptr, 0, 0);
-  set_colour(cairo, kInk);
+  set_colour(cairo, kInkColour);
   draw_text(cairo, label, x + 38, y, 14);
 }
 
@@ -73,24 +71,24 @@ void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
                        const std::string& path, int width, int height) {
   render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
     const CartesianAxes axes{80, 60, width - 80.0 - 260.0, height - 60.0 - 80.0};
-    set_colour(cairo, kInk);
+    set_colour(cairo, kInkColour);
     draw_text(cairo, title(coverage, rig_name), width / 2.0, 32, 20, Anchor::centre, true);
     cairo_set_line_width(cairo, 1);
     for (int degrees = 0; degrees <= 360; degrees += 45) {
-      set_colour(cairo, kGrid);
+      set_colour(cairo, kGridColour);
       cairo_move_to(cairo, axes.x(degrees), axes.top);
       cairo_line_to(cairo, axes.x(degrees), axes.top + axes.height);
       cairo_stroke(cairo);
-      set_colour(cairo, kInk);
+      set_colour(cairo, kInkColour);
       draw_text(cairo, std::to_string(degrees), axes.x(degrees), axes.top + axes.height + 20, 13,
                 Anchor::centre);
     }
     for (int percent = 0; percent <= 100; percent += 25) {
-      set_colour(cairo, kGrid);
+      set_colour(cairo, kGridColour);
       cairo_move_to(cairo, axes.left, axes.y(percent / 100.0));
       cairo_line_to(cairo, axes.left + axes.width, axes.y(percent / 100.0));
       cairo_stroke(cairo);
-      set_colour(cairo, kInk);
+      set_colour(cairo, kInkColour);
       draw_text(cairo, std::to_string(percent), axes.left - 8, axes.y(percent / 100.0) + 5, 13,
                 Anchor::right);
     }
@@ -120,7 +118,7 @@ void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
           cairo_stroke(cairo);
         }
         cairo_set_dash(cairo, nullptr, 0, 0);
-        set_colour(cairo, kInk);
+        set_colour(cairo, kInkColour);
         draw_text(cairo, sector.sector.name + (sector.pass ? " (pass)" : " (FAIL)"),
                   (axes.x(from) + axes.x(to)) / 2, axes.top - 6, 12, Anchor::centre);
       }
@@ -139,7 +137,7 @@ void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
     set_colour(cairo, kCompleteColour);
     draw_curve(cairo, coverage, axes, &AngleCoverage::complete);
 
-    set_colour(cairo, kInk);
+    set_colour(cairo, kInkColour);
     cairo_set_line_width(cairo, 1.2);
     cairo_rectangle(cairo, axes.left, axes.top, axes.width, axes.height);
     cairo_stroke(cairo);
@@ -154,7 +152,7 @@ void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
       legend_line(cairo, legend_x, y += 24, kFloorColour, true, "required floor");
     }
     y += 40;
-    set_colour(cairo, kInk);
+    set_colour(cairo, kInkColour);
     draw_text(cairo, "complete: min " + format_number(coverage.complete.min * 100, 3) + " %", legend_x,
               y, 13);
     draw_text(cairo, "  mean " + format_number(coverage.complete.mean * 100, 3) + " %", legend_x,
@@ -177,24 +175,24 @@ void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
     const auto at = [&](double theta, double share) {
       return std::pair{cx - radius * share * std::sin(theta), cy - radius * share * std::cos(theta)};
     };
-    set_colour(cairo, kInk);
+    set_colour(cairo, kInkColour);
     draw_text(cairo, title(coverage, rig_name), cx, 32, 19, Anchor::centre, true);
     cairo_set_line_width(cairo, 1);
     for (int percent = 25; percent <= 100; percent += 25) {
-      set_colour(cairo, kGrid);
+      set_colour(cairo, kGridColour);
       cairo_arc(cairo, cx, cy, radius * percent / 100.0, 0, 2 * std::numbers::pi);
       cairo_stroke(cairo);
-      set_colour(cairo, kInk);
+      set_colour(cairo, kInkColour);
       draw_text(cairo, std::to_string(percent) + " %", cx + 4, cy - radius * percent / 100.0 - 4, 11);
     }
     for (int degrees = 0; degrees < 360; degrees += 45) {
       const auto [x, y] = at(deg_to_rad(degrees), 1.0);
-      set_colour(cairo, kGrid);
+      set_colour(cairo, kGridColour);
       cairo_move_to(cairo, cx, cy);
       cairo_line_to(cairo, x, y);
       cairo_stroke(cairo);
       const auto [lx, ly] = at(deg_to_rad(degrees), 1.12);
-      set_colour(cairo, kInk);
+      set_colour(cairo, kInkColour);
       draw_text(cairo, std::to_string(degrees), lx, ly + 5, 13, Anchor::centre);
     }
     const auto [fx, fy] = at(0.0, 1.22);

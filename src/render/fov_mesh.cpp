@@ -1,5 +1,7 @@
 #include "rigdesign/render/fov_mesh.hpp"
 
+#include "rigdesign/model/polygon_area.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -205,16 +207,6 @@ double turn(const Vec2& a, const Vec2& b, const Vec2& c) {
   const Vec2 ab = b - a;
   const Vec2 ac = c - a;
   return ab.x() * ac.y() - ab.y() * ac.x();
-}
-
-double signed_area(const std::vector<Vec2>& polygon) {
-  double twice_area = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Vec2& a = polygon[i];
-    const Vec2& b = polygon[(i + 1) % polygon.size()];
-    twice_area += a.x() * b.y() - b.x() * a.y();
-  }
-  return twice_area / 2;
 }
 
 // A point on the border counts as inside, so an ear never swallows a vertex touching it.

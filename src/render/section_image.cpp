@@ -4,6 +4,7 @@
 
 #include "cairo_canvas.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/polygon_area.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/coverage_plots.hpp"
 
@@ -14,8 +15,6 @@ using render::Anchor;
 using render::draw_text;
 using render::set_colour;
 
-constexpr Rgb kInk{0.15, 0.15, 0.15};
-constexpr Rgb kGrid{0.9, 0.9, 0.9};
 
 // Round tick spacing giving about `count` ticks over `span`.
 double tick_step(double span, int count) {
@@ -64,7 +63,7 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
   const double scale = axes.scale;
   const int height = axes.height;
   render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
-    set_colour(cairo, kInk);
+    set_colour(cairo, kInkColour);
     draw_text(cairo,
               rig_name + ": cross-section at theta = " +
                   format_number(rad_to_deg(frame.theta), 4) + " deg  (SC complete " +
@@ -77,19 +76,19 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
     const double rho_step = tick_step(rho_max, 8);
     const double z_step = tick_step(z_max, 5);
     for (double rho = 0; rho <= rho_max + 1e-9; rho += rho_step) {
-      set_colour(cairo, kGrid);
+      set_colour(cairo, kGridColour);
       cairo_move_to(cairo, axes.x(rho), axes.y(0));
       cairo_line_to(cairo, axes.x(rho), axes.y(z_max));
       cairo_stroke(cairo);
-      set_colour(cairo, kInk);
+      set_colour(cairo, kInkColour);
       draw_text(cairo, format_number(rho, 3), axes.x(rho), axes.y(0) + 20, 13, Anchor::centre);
     }
     for (double z = 0; z <= z_max + 1e-9; z += z_step) {
-      set_colour(cairo, kGrid);
+      set_colour(cairo, kGridColour);
       cairo_move_to(cairo, axes.x(0), axes.y(z));
       cairo_line_to(cairo, axes.x(rho_max), axes.y(z));
       cairo_stroke(cairo);
-      set_colour(cairo, kInk);
+      set_colour(cairo, kInkColour);
       draw_text(cairo, format_number(z, 3), axes.x(0) - 8, axes.y(z) + 5, 13, Anchor::right);
     }
     draw_text(cairo, "rho: distance from the robot's vertical axis [m]", axes.x(rho_max / 2),
@@ -132,7 +131,7 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
     // The area to perceive: [r, d] x [0, h].
     const double dash[] = {8.0, 5.0};
     cairo_set_dash(cairo, dash, 2, 0);
-    set_colour(cairo, kInk);
+    set_colour(cairo, kInkColour);
     cairo_set_line_width(cairo, 1.6);
     cairo_rectangle(cairo, axes.x(frame.r), axes.y(frame.h), frame.width() * scale, frame.h * scale);
     cairo_stroke(cairo);
@@ -151,7 +150,7 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
       cairo_new_sub_path(cairo);
       cairo_arc(cairo, axes.x(along), axes.y(view.origins[i].z()), 6, 0, 2 * std::numbers::pi);
       cairo_fill_preserve(cairo);
-      set_colour(cairo, kInk);
+      set_colour(cairo, kInkColour);
       cairo_set_line_width(cairo, 1.2);
       cairo_stroke(cairo);
     }
@@ -162,12 +161,12 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
     draw_text(cairo, "sensor (share seen here)", legend_x, y, 14, Anchor::left, true);
     for (std::size_t i = 0; i < view.polygons.size(); ++i) {
       double area = 0.0;
-      for (const Polygon2& polygon : view.polygons[i]) area += polygon_area(polygon);
+      for (const Polygon2& polygon : view.polygons[i]) area += signed_area(polygon);
       y += 26;
       set_colour(cairo, sensor_colour(i), 0.6);
       cairo_rectangle(cairo, legend_x, y - 13, 22, 16);
       cairo_fill(cairo);
-      set_colour(cairo, kInk);
+      set_colour(cairo, kInkColour);
       draw_text(cairo, view.mount_ids[i] + "  " + format_number(area / frame.area() * 100, 3) + " %",
                 legend_x + 30, y, 13);
     }
@@ -177,7 +176,7 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
     cairo_move_to(cairo, legend_x, y - 5);
     cairo_line_to(cairo, legend_x + 22, y - 5);
     cairo_stroke(cairo);
-    set_colour(cairo, kInk);
+    set_colour(cairo, kInkColour);
     draw_text(cairo, "floor seen", legend_x + 30, y, 13);
     y += 24;
     cairo_set_dash(cairo, dash, 2, 0);

@@ -21,9 +21,6 @@ using Polygon2 = std::vector<Vec2>;  ///< counter-clockwise vertices (rho, z)
 std::vector<Polygon2> section_polygons(const MountedFov& fov, const SectionFrame& frame,
                                        const TessellationSettings& settings = {});
 
-/// Signed area of a polygon (positive when counter-clockwise) [m^2].
-double polygon_area(const Polygon2& polygon);
-
 /// Area of the union of all polygons of all sensors, by CGAL's Boolean set operations on
 /// exact-kernel polygons [m^2].
 double union_area(const std::vector<std::vector<Polygon2>>& per_sensor);

@@ -18,5 +18,7 @@ Rgb sensor_colour(std::size_t index);
 inline constexpr Rgb kBodyColour{0.55, 0.55, 0.58};
 inline constexpr Rgb kCompleteColour{0.12, 0.35, 0.75};
 inline constexpr Rgb kFloorColour{0.85, 0.40, 0.05};
+inline constexpr Rgb kInkColour{0.15, 0.15, 0.15};   ///< text, axes, frames
+inline constexpr Rgb kGridColour{0.87, 0.87, 0.87};  ///< chart grid lines
 
 }  // namespace rigdesign
