@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds rigdesign (Release) and runs it. Without arguments it runs the main job on
 # the bundled example; with arguments it runs `rigdesign ARGS...`.
-#   scripts/run.sh                                  # UR Cleaner metrics against its requirements
+#   scripts/run.sh                                  # select the UR Cleaner's rig under a budget
 #   scripts/run.sh check rigs/*.yaml --format junit
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -11,6 +11,8 @@ cmake -S "$root" -B "$root/build/release" -DCMAKE_BUILD_TYPE=Release \
 cmake --build "$root/build/release" --target rigdesign -j"$(nproc)" >/dev/null
 cd "$root"
 if [ $# -eq 0 ]; then
-  set -- metrics rigs/ur_cleaner.yaml
+  set -- select --catalog rigs/catalogs/ur_cleaner.yaml \
+    --requirements rigs/requirements/ur_cleaner.yaml \
+    --policy rigs/policies/ur_cleaner.yaml --budget 3000 --out selection/ur_cleaner
 fi
 exec "$root/build/release/src/rigdesign" "$@"

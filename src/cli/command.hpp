@@ -17,5 +17,6 @@ struct Command {
 Command setup_metrics(CLI::App& parent);
 Command setup_check(CLI::App& parent);
 Command setup_coverage(CLI::App& parent);
+Command setup_select(CLI::App& parent);
 
 }  // namespace rigdesign::cli

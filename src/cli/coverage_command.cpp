@@ -2,23 +2,18 @@
 // and polar, PNG and SVG), cross-sections at chosen angles, 3D views of the FOV volumes
 // (OSMesa), and the numbers as CSV and JSON. Runs without a display.
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <memory>
 #include <ostream>
-#include <sstream>
 
 #include "app.hpp"
 #include "command.hpp"
 #include "coverage_files.hpp"
 #include "inputs.hpp"
-#include "json_report.hpp"
-#include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
-#include "rigdesign/render/coverage_plots.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -37,12 +32,6 @@ struct CoverageOptions {
 void require_option(bool ok, const std::string& option, const std::string& problem,
                     const std::string& expected) {
   if (!ok) throw InputError(Diagnostic{{"(command line)", 0, 0}, option, problem, expected});
-}
-
-std::string angle_name(double degrees) {
-  std::ostringstream name;
-  name << "section_" << format_number(degrees, 6);
-  return name.str();
 }
 
 int run_coverage(const CoverageOptions& options, std::ostream& out) {
@@ -69,27 +58,8 @@ int run_coverage(const CoverageOptions& options, std::ostream& out) {
       inputs.requirements ? inputs.requirements->sectors : std::vector<SectorRequirement>{};
   const RigCoverage coverage = compute_coverage(inputs.rig, inputs.library, sectors, settings);
 
-  std::vector<std::string> written;
-  const auto path = [&](const std::string& name) {
-    written.push_back(folder + "/" + name);
-    return written.back();
-  };
-  for (const char* extension : {".png", ".svg"}) {
-    plot_sc_cartesian(coverage, inputs.rig.name, path(std::string("sc_cartesian") + extension));
-    plot_sc_polar(coverage, inputs.rig.name, path(std::string("sc_polar") + extension));
-  }
-  for (const double degrees : options.angles_deg) {
-    const SectionView view = section_view(inputs.rig, inputs.library, deg_to_rad(degrees));
-    draw_section(view, inputs.rig.name, path(angle_name(degrees) + ".png"));
-    draw_section(view, inputs.rig.name, path(angle_name(degrees) + ".svg"));
-  }
-  if (!options.no_3d) {
-    for (const auto& [viewpoint, name] : views_3d()) {
-      render_rig_3d(inputs.rig, inputs.library, viewpoint, path(name));
-    }
-  }
-  write_file_atomically(path("coverage.csv"), coverage_csv(coverage));
-  write_file_atomically(path("coverage.json"), to_json(coverage, true).dump(2) + "\n");
+  const std::vector<std::string> written = write_coverage_files(
+      inputs.rig, inputs.library, coverage, options.angles_deg, folder, !options.no_3d);
 
   out << inputs.rig.name << ": SC complete min " << format_number(coverage.complete.min * 100, 3)
       << " %, mean " << format_number(coverage.complete.mean * 100, 3) << " %; SC floor min "

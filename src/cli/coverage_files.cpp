@@ -1,8 +1,12 @@
 #include "coverage_files.hpp"
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "json_report.hpp"
+#include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/render/coverage_plots.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
 #include "rigdesign/render/palette.hpp"
@@ -37,6 +41,33 @@ std::string coverage_csv(const RigCoverage& coverage) {
 
 std::vector<std::pair<Viewpoint, std::string>> views_3d() {
   return {{Viewpoint::isometric, "view_isometric.png"}, {Viewpoint::top, "view_top.png"}};
+}
+
+std::vector<std::string> write_coverage_files(const Rig& rig, const SensorLibrary& library,
+                                              const RigCoverage& coverage,
+                                              const std::vector<double>& angles_deg,
+                                              const std::string& folder, bool with_3d) {
+  std::vector<std::string> written;
+  const auto path = [&](const std::string& name) {
+    written.push_back(folder + "/" + name);
+    return written.back();
+  };
+  for (const char* extension : {".png", ".svg"}) {
+    plot_sc_cartesian(coverage, rig.name, path(std::string("sc_cartesian") + extension));
+    plot_sc_polar(coverage, rig.name, path(std::string("sc_polar") + extension));
+  }
+  for (const double degrees : angles_deg) {
+    const SectionView view = section_view(rig, library, deg_to_rad(degrees));
+    const std::string name = "section_" + format_number(degrees, 6);
+    draw_section(view, rig.name, path(name + ".png"));
+    draw_section(view, rig.name, path(name + ".svg"));
+  }
+  if (with_3d) {
+    for (const auto& [viewpoint, name] : views_3d()) render_rig_3d(rig, library, viewpoint, path(name));
+  }
+  write_file_atomically(path("coverage.csv"), coverage_csv(coverage));
+  write_file_atomically(path("coverage.json"), to_json(coverage, true).dump(2) + "\n");
+  return written;
 }
 
 void render_rig_3d(const Rig& rig, const SensorLibrary& library, Viewpoint viewpoint,

@@ -6,7 +6,10 @@
 
 #include "inputs.hpp"
 #include "json_report.hpp"
+#include "rigdesign/io/catalog_loader.hpp"
+#include "rigdesign/io/policy_loader.hpp"
 #include "rigdesign/io/requirements_loader.hpp"
+#include "rigdesign/io/sensor_library_locator.hpp"
 #include "rigdesign/io/sensor_library_loader.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -87,6 +90,23 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
       case FileKind::requirements: {
         const Requirements requirements = load_requirements(path);
         report.summary = "requirements '" + requirements.name + "' are valid";
+        break;
+      }
+      case FileKind::catalog: {
+        const Catalog catalog = load_catalog(path);
+        const std::string library_path = catalog.sensor_library.empty()
+                                             ? (sensors_path.empty() ? bundled_sensor_library() : sensors_path)
+                                             : resolve_beside(path, catalog.sensor_library);
+        check_catalog_references(catalog, load_sensor_library(library_path)).throw_if_errors();
+        report.summary = "catalog '" + catalog.name + "' is valid: " +
+                         std::to_string(catalog.slots.size()) + " slots, " +
+                         std::to_string(catalog.sensors.size()) + " candidate sensors";
+        break;
+      }
+      case FileKind::policy: {
+        const RelaxationPolicy policy = load_policy(path);
+        report.summary = "relaxation policy '" + policy.name + "' is valid: " +
+                         std::to_string(policy.steps.size()) + " steps";
         break;
       }
       case FileKind::rig: {

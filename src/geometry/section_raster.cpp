@@ -73,6 +73,25 @@ double SectionRaster::floor_share() const {
   return static_cast<double>(popcount(floor_)) / grid_.columns;
 }
 
+namespace {
+
+std::size_t union_popcount(const std::vector<std::uint64_t>& a, const std::vector<std::uint64_t>& b) {
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) total += static_cast<std::size_t>(std::popcount(a[i] | b[i]));
+  return total;
+}
+
+}  // namespace
+
+double SectionRaster::complete_share_with(const SectionRaster& other) const {
+  return static_cast<double>(union_popcount(cells_, other.cells_)) /
+         (static_cast<double>(grid_.columns) * grid_.rows);
+}
+
+double SectionRaster::floor_share_with(const SectionRaster& other) const {
+  return static_cast<double>(union_popcount(floor_, other.floor_)) / grid_.columns;
+}
+
 bool SectionRaster::any() const {
   return std::any_of(cells_.begin(), cells_.end(), [](std::uint64_t w) { return w != 0; });
 }

@@ -29,3 +29,17 @@ TEST_CASE("pose_from_xyz_rpy maps sensor-frame points into the robot frame") {
   // A point 1 m ahead of a backward-facing sensor lies 1 m behind the sensor in the robot frame.
   CHECK(near(T_robot_sensor * Vec3(1, 0, 0), Vec3(-0.54, 0.0, 0.75)));
 }
+
+TEST_CASE("rpy_from_rotation inverts rotation_from_rpy") {
+  for (const Vec3& rpy_deg : {Vec3(0, 25, 0), Vec3(0, 20, -90), Vec3(10, -35, 170), Vec3(-5, 0, 180),
+                              Vec3(30, 60, -120)}) {
+    const Vec3 rpy(deg_to_rad(rpy_deg.x()), deg_to_rad(rpy_deg.y()), deg_to_rad(rpy_deg.z()));
+    const Mat3 rotation = rotation_from_rpy(rpy.x(), rpy.y(), rpy.z());
+    const Vec3 back = rpy_from_rotation(rotation);
+    CHECK(rotation_from_rpy(back.x(), back.y(), back.z()).isApprox(rotation, 1e-12));
+  }
+  // At pitch 90 deg only one rotation about the vertical is defined.
+  const Mat3 gimbal = rotation_from_rpy(0, deg_to_rad(90), deg_to_rad(30));
+  const Vec3 back = rpy_from_rotation(gimbal);
+  CHECK(rotation_from_rpy(back.x(), back.y(), back.z()).isApprox(gimbal, 1e-9));
+}

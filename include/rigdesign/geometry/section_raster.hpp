@@ -34,6 +34,10 @@ class SectionRaster {
 
   const RasterGrid& grid() const { return grid_; }
 
+  /// Shares of the union with `other` (same grid), without building it.
+  double complete_share_with(const SectionRaster& other) const;
+  double floor_share_with(const SectionRaster& other) const;
+
  private:
   RasterGrid grid_;
   std::vector<std::uint64_t> cells_;  // column-major: bit column * rows + row

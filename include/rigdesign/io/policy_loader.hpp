@@ -1,0 +1,12 @@
+#pragma once
+#include <string>
+
+#include "rigdesign/model/relaxation_policy.hpp"
+
+namespace rigdesign {
+
+/// Reads a relaxation policy: `steps: [{relax: robot_speed.max_speed, to: 0.8}, ...]`, or
+/// `{relax: lighting, drop: dark}`. Steps are validated against requirements with relax().
+RelaxationPolicy load_policy(const std::string& path);
+
+}  // namespace rigdesign

@@ -1,0 +1,18 @@
+#pragma once
+/// Rig and requirement files as `select` writes them, in the formats the loaders read back
+/// (rigs/README.md), so `rigdesign check` accepts what `select` chose.
+#include <string>
+
+#include "rigdesign/model/requirements.hpp"
+#include "rigdesign/model/rig.hpp"
+
+namespace rigdesign {
+
+/// `sensor_library` and `requirements` are written as given (paths relative to the file);
+/// `comment` becomes the header comment, one "# " line per line.
+std::string rig_to_yaml(const Rig& rig, const std::string& sensor_library,
+                        const std::string& requirements, const std::string& comment);
+
+std::string requirements_to_yaml(const Requirements& requirements, const std::string& comment);
+
+}  // namespace rigdesign

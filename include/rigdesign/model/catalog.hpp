@@ -1,0 +1,56 @@
+#pragma once
+/// What `select` chooses from (paper 1, section 2, Fig. 1): candidate sensor modes, mounting
+/// slots with the sensors each accepts, transfer hardware and CPUs with their prices.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/source_location.hpp"
+
+namespace rigdesign {
+
+struct CandidateSensor {
+  std::string sensor_id;
+  std::vector<std::string> mode_ids;
+  /// Filtering load U_f per delivered point [core-seconds], overriding the catalog's.
+  std::optional<double> filtering_seconds_per_point;
+  SourceLocation where;
+};
+
+struct MountingSlot {
+  std::string id;
+  Pose3 T_robot_sensor = Pose3::Identity();
+  std::vector<std::string> allowed_sensors;
+  std::optional<double> distance_of_interest;  ///< [m] as a mount's
+  SourceLocation where;
+};
+
+/// A transfer component or CPU: the cheapest one whose capacity exceeds the rig's load is
+/// bought (paper 1, eqs. 3 and 6).
+struct PricedCapacity {
+  std::string id;
+  double capacity = 0.0;  ///< transfer: [bit/s]; CPU: [core-equivalents]
+  double price = 0.0;     ///< [USD]
+  SourceLocation where;
+};
+
+struct Catalog {
+  std::string name;
+  std::string sensor_library;  ///< as written, relative to the catalog file
+  SourceLocation sensor_library_where;
+  RobotBody body;
+  double distance_of_interest = 0.0;  ///< d [m]
+  std::vector<CandidateSensor> sensors;
+  std::vector<MountingSlot> slots;
+  std::vector<PricedCapacity> transfer;
+  std::vector<PricedCapacity> cpus;
+  /// Filtering load per delivered point [core-seconds] until the filter benchmark measures it.
+  double filtering_seconds_per_point = 0.0;
+  std::string reference_machine;  ///< what a CPU's core-equivalent means
+  std::string file;
+  SourceLocation where;
+};
+
+}  // namespace rigdesign

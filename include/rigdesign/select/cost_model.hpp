@@ -1,0 +1,38 @@
+#pragma once
+/// Paper 1's cost model, eqs. 1-7 (DESIGN.md section 5): C_s = sum of sensor prices;
+/// B = sum of w_i f_i; C_t = the cheapest transfer hardware whose capacity exceeds B;
+/// U = sum of (U_p,i + U_f,i); C_c = the cheapest CPU whose capacity exceeds U;
+/// C = C_s + C_t + C_c.
+#include <string>
+#include <vector>
+
+#include "rigdesign/model/catalog.hpp"
+
+namespace rigdesign {
+
+/// What a rig asks of the hardware.
+struct RigLoad {
+  double sensor_cost = 0.0;  ///< C_s [USD]
+  double bandwidth = 0.0;    ///< B [bytes/s]
+  double cpu = 0.0;          ///< U [core-equivalents]
+  int sensors = 0;
+};
+
+struct CostBreakdown {
+  bool feasible = false;  ///< some transfer item and some CPU carry the load
+  double sensors = 0.0;   ///< C_s
+  double transfer = 0.0;  ///< C_t
+  double cpu = 0.0;       ///< C_c
+  double total = 0.0;     ///< C
+  std::string transfer_id;
+  std::string cpu_id;
+};
+
+/// The cheapest item whose capacity exceeds `load` (same unit as the capacity), or nullptr.
+const PricedCapacity* cheapest_exceeding(const std::vector<PricedCapacity>& items, double load);
+
+/// C for a load; transfer capacities are bit/s and the bandwidth bytes/s.
+CostBreakdown rig_cost(const RigLoad& load, const std::vector<PricedCapacity>& transfer,
+                       const std::vector<PricedCapacity>& cpus);
+
+}  // namespace rigdesign

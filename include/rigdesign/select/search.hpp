@@ -1,0 +1,69 @@
+#pragma once
+/// The exact minimum-cost search over slot assignments (each slot: nothing or one option),
+/// on precomputed raster sections. Branch and bound, admissible because both the cost and
+/// the coverage only grow when a sensor is added:
+/// - the cost of the sensors chosen so far (with the transfer and CPU their load needs) is a
+///   lower bound on every completion, so a node no cheaper than the incumbent is cut;
+/// - the union with every option of every undecided slot is an upper bound on the coverage
+///   any completion reaches, so a node whose bound misses a sector threshold is cut;
+/// - a node whose chosen sensors already meet every threshold needs nothing more.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/geometry/section_raster.hpp"
+#include "rigdesign/select/cost_model.hpp"
+
+namespace rigdesign {
+
+struct SearchOption {
+  double price = 0.0;      ///< [USD]
+  double bandwidth = 0.0;  ///< [bytes/s]
+  double cpu = 0.0;        ///< [core-equivalents]
+  std::vector<SectionRaster> sections;  ///< one per angle of the problem
+};
+
+/// SC thresholds over some of the problem's angles (R2).
+struct SearchSector {
+  std::vector<int> angles;
+  double min_complete = 0.0;
+  double min_floor = 0.0;
+};
+
+struct SearchProblem {
+  std::vector<std::vector<SearchOption>> slots;
+  std::vector<SearchSector> sectors;
+  std::vector<PricedCapacity> transfer;
+  std::vector<PricedCapacity> cpus;
+  std::vector<RasterGrid> grids;  ///< per angle
+};
+
+/// A rig the search evaluated, for the cost-versus-coverage Pareto plot.
+struct ExploredRig {
+  double cost = 0.0;
+  double mean_complete = 0.0;  ///< SC complete over the problem's angles (raster)
+  bool feasible = false;
+};
+
+struct SearchResult {
+  bool found = false;
+  std::vector<int> choice;  ///< per slot: option index, or -1 for nothing
+  CostBreakdown cost;
+  long nodes = 0;        ///< nodes of the search tree visited
+  long evaluations = 0;  ///< rigs whose coverage was evaluated
+  std::vector<ExploredRig> explored;
+};
+
+/// Coverage shares count as meeting a threshold from threshold - kThresholdSlack.
+inline constexpr double kThresholdSlack = 1e-4;
+
+/// Proven-optimal assignment, skipping the assignments in `excluded` (used when the exact
+/// path rejects a raster winner). `progress` is called now and then with the nodes visited.
+SearchResult branch_and_bound(const SearchProblem& problem,
+                              const std::vector<std::vector<int>>& excluded = {},
+                              const std::function<void(long)>& progress = {});
+
+/// Every assignment, for tests and the benchmark's ratio.
+SearchResult brute_force(const SearchProblem& problem);
+
+}  // namespace rigdesign

@@ -1,0 +1,87 @@
+#pragma once
+/// `select`'s main step (paper 1, section 2, Fig. 1): from application requirements to
+/// satisficing metrics, and the cheapest rig of a catalog that meets them, found on the
+/// raster path and verified on the exact path.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/metrics/coverage.hpp"
+#include "rigdesign/metrics/mount_metrics.hpp"
+#include "rigdesign/model/catalog.hpp"
+#include "rigdesign/model/requirements.hpp"
+#include "rigdesign/select/search.hpp"
+
+namespace rigdesign {
+
+/// The satisficing metrics requirements R1-R8 ask for (DESIGN.md section 5).
+struct SatisficingTargets {
+  double min_frequency = 0.0;             ///< F >= [Hz]: R3's rate, R4 and R5's v / travel
+  std::optional<double> max_spacing;      ///< R <= [m]: R6's smallest obstacle
+  std::optional<double> max_noise;        ///< N <= [m]: R7
+  std::vector<LightCondition> lighting;   ///< L: R8
+  std::vector<SectorRequirement> sectors; ///< SC per sector: R2
+  double distance = 0.0;                  ///< d [m]: R3
+};
+
+SatisficingTargets satisficing_targets(const Requirements& requirements);
+
+/// One sensor mode in one slot, with its metrics and its raster sections.
+struct CatalogOption {
+  std::size_t slot = 0;
+  const Sensor* sensor = nullptr;
+  const SensorMode* mode = nullptr;
+  MountMetrics metrics;    ///< at the slot's distance of interest
+  double filtering = 0.0;  ///< U_f [core-equivalents]
+  std::vector<SectionRaster> sections;  ///< per angle of the space
+};
+
+/// Every option of a catalog rasterised once; searches for different requirements reuse it.
+class SelectionSpace {
+ public:
+  SelectionSpace(const Catalog& catalog, const SensorLibrary& library,
+                 const CoverageSettings& settings = {});
+
+  const Catalog& catalog() const { return *catalog_; }
+  const SensorLibrary& library() const { return *library_; }
+  const CoverageSettings& settings() const { return settings_; }
+  std::size_t option_count() const;
+  double angle(std::size_t index) const;
+
+  /// The search problem for `targets`: per slot, the options that meet F, R, N and L on
+  /// their own (those metrics are the worst sensor's, so every sensor must meet them);
+  /// `kept[k][i]` is the option behind the problem's option i of slot k.
+  SearchProblem problem_for(const SatisficingTargets& targets,
+                            std::vector<std::vector<const CatalogOption*>>& kept) const;
+
+  /// The rig an assignment describes: one mount per chosen slot.
+  Rig rig_for(const std::vector<const CatalogOption*>& chosen) const;
+
+ private:
+  const Catalog* catalog_;
+  const SensorLibrary* library_;
+  CoverageSettings settings_;
+  std::vector<RasterGrid> grids_;
+  std::vector<std::vector<CatalogOption>> options_;  // per slot
+};
+
+struct Selection {
+  bool found = false;
+  std::string infeasible_reason;  ///< when nothing can meet the requirements
+  Rig rig;
+  std::vector<const CatalogOption*> chosen;
+  CostBreakdown cost;
+  SearchResult search;            ///< of the last (accepted) search
+  RigCoverage coverage;           ///< the winner on the exact path
+  int rejected_by_exact_path = 0; ///< raster winners the exact path turned down
+  double seconds = 0.0;
+};
+
+/// The cheapest rig meeting `requirements`, proven optimal on the raster path and verified
+/// on the exact path (a raster winner the exact path rejects is excluded and the search
+/// runs again).
+Selection select_cheapest(const SelectionSpace& space, const Requirements& requirements,
+                          const std::function<void(long)>& progress = {});
+
+}  // namespace rigdesign

@@ -1,0 +1,125 @@
+// `rigdesign select --catalog FILE --requirements FILE --budget USD [--policy FILE]`:
+// the cheapest rig of a catalog meeting the requirements (paper 1, section 2, Fig. 1); when
+// it costs more than the budget, relax the requirements in the policy's order, showing
+// every step. Exit 0 with a rig within budget, 1 when the policy runs out, 2 on bad input.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <ostream>
+
+#include "app.hpp"
+#include "command.hpp"
+#include "select_report.hpp"
+#include "rigdesign/io/catalog_loader.hpp"
+#include "rigdesign/io/policy_loader.hpp"
+#include "rigdesign/io/requirements_loader.hpp"
+#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/sensor_library_locator.hpp"
+#include "rigdesign/select/relaxation.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+struct SelectOptions {
+  std::string catalog;
+  std::string requirements;
+  std::string policy;
+  std::string sensors;
+  std::string out;
+  double budget = -1.0;
+  double step_deg = 1.0;
+  bool json = false;
+  bool no_renders = false;
+};
+
+void require_option(bool ok, const std::string& option, const std::string& problem,
+                    const std::string& expected) {
+  if (!ok) throw InputError(Diagnostic{{"(command line)", 0, 0}, option, problem, expected});
+}
+
+SensorLibrary load_catalog_library(const Catalog& catalog, const std::string& sensors_path) {
+  std::string path = sensors_path;
+  if (path.empty() && !catalog.sensor_library.empty()) {
+    path = resolve_beside(catalog.file, catalog.sensor_library);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) {
+      throw InputError(Diagnostic{catalog.sensor_library_where, "sensor_library",
+                                  "names '" + path + "', which does not exist",
+                                  "a path relative to the catalog file"});
+    }
+  }
+  return load_sensor_library(path.empty() ? bundled_sensor_library() : path);
+}
+
+int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
+  require_option(options.budget > 0, "--budget", "is missing or not positive",
+                 "the budget in US dollars, > 0");
+  require_option(options.step_deg > 0 && options.step_deg <= 45, "--step",
+                 "is out of range", "degrees in (0, 45]");
+  const Catalog catalog = load_catalog(options.catalog);
+  const SensorLibrary library = load_catalog_library(catalog, options.sensors);
+  check_catalog_references(catalog, library).throw_if_errors();
+  const Requirements requirements = load_requirements(options.requirements);
+  RelaxationPolicy policy;
+  if (!options.policy.empty()) {
+    policy = load_policy(options.policy);
+    check_policy(requirements, policy);  // a wrong step fails before any search
+  }
+
+  const bool terminal = ::isatty(STDERR_FILENO) == 1;
+  CoverageSettings settings;
+  settings.step = options.step_deg * 3.141592653589793 / 180.0;
+  if (terminal) err << "rasterising every slot option at " << options.step_deg << " deg steps...\n";
+  const SelectionSpace space(catalog, library, settings);
+  const auto progress = [&](long nodes) {
+    if (terminal) err << "\r  search: " << nodes << " nodes" << std::flush;
+  };
+  SelectReport report(space, requirements, policy, options.budget);
+  if (!options.json) report.print_header(out);
+  const RelaxationOutcome outcome = select_within_budget(
+      space, requirements, policy, options.budget,
+      [&](const RelaxationIteration& iteration) {
+        if (terminal) err << "\r" << std::string(40, ' ') << "\r";
+        if (!options.json) report.print_iteration(iteration, out);
+      },
+      progress);
+  const std::string folder =
+      options.out.empty() ? "selection/" + std::filesystem::path(options.catalog).stem().string()
+                          : options.out;
+  const std::vector<std::string> written = report.write_files(outcome, folder, !options.no_renders);
+  if (options.json) {
+    out << report.to_json(outcome, written).dump(2) << '\n';
+  } else {
+    report.print_summary(outcome, written, out);
+  }
+  return outcome.within_budget ? kOk : kRequirementFails;
+}
+
+}  // namespace
+
+Command setup_select(CLI::App& parent) {
+  auto options = std::make_shared<SelectOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "select", "Cheapest rig of a catalog that meets the requirements; relaxes them in the "
+                "policy's order until the rig fits the budget (exit 0 within budget, 1 policy "
+                "exhausted, 2 bad input)");
+  app->add_option("--catalog", options->catalog, "Candidate catalog (rigs/catalogs/*.yaml)")->required();
+  app->add_option("--requirements", options->requirements, "Application requirements R1-R8")->required();
+  app->add_option("--budget", options->budget, "Budget in US dollars")->required();
+  app->add_option("--policy", options->policy,
+                  "Relaxation policy: the order in which requirements may be relaxed");
+  app->add_option("--sensors", options->sensors, "Sensor library (default: the catalog's)");
+  app->add_option("--out", options->out,
+                  "Folder for the chosen rig, the final requirements, the Pareto plot and the "
+                  "coverage renders (default: selection/<catalog file name>)");
+  app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)");
+  app->add_flag("--json", options->json, "Print JSON instead of the trace");
+  app->add_flag("--no-renders", options->no_renders, "Skip the chosen rig's coverage pictures");
+  return {app, [options](std::ostream& out, std::ostream& err) { return run_select(*options, out, err); }};
+}
+
+}  // namespace rigdesign::cli

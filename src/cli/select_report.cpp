@@ -1,0 +1,236 @@
+#include "select_report.hpp"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "app.hpp"
+#include "coverage_files.hpp"
+#include "json_report.hpp"
+#include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/yaml_writers.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/render/pareto_plot.hpp"
+#include "text_table.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+std::string usd(double value) { return fixed(value, 0) + " USD"; }
+std::string percent(double share) { return format_number(share * 100, 3); }
+
+const RelaxationIteration* last_with_rig(const RelaxationOutcome& outcome) {
+  for (auto it = outcome.iterations.rbegin(); it != outcome.iterations.rend(); ++it) {
+    if (it->selection.found) return &*it;
+  }
+  return nullptr;
+}
+
+// The rig to write: the first within budget, else the cheapest of the last iteration found.
+const RelaxationIteration* chosen(const RelaxationOutcome& outcome) {
+  if (outcome.within_budget) return &outcome.iterations.back();
+  return last_with_rig(outcome);
+}
+
+}  // namespace
+
+std::string describe(const SatisficingTargets& targets) {
+  std::string text = "F >= " + format_number(targets.min_frequency, 4) + " Hz";
+  if (targets.max_spacing) text += ", R <= " + format_number(*targets.max_spacing * 1000, 4) + " mm";
+  if (targets.max_noise) text += ", N <= " + format_number(*targets.max_noise * 1000, 4) + " mm";
+  if (!targets.lighting.empty()) {
+    text += ", L:";
+    for (const LightCondition condition : targets.lighting) text += " " + to_string(condition);
+  }
+  for (const SectorRequirement& sector : targets.sectors) {
+    text += ", SC " + sector.name + " >= " + percent(sector.min_complete_coverage) + "/" +
+            percent(sector.min_floor_coverage) + " %";
+  }
+  return text;
+}
+
+std::string describe(const Rig& rig) {
+  std::string text;
+  for (const Mount& mount : rig.mounts) {
+    text += (text.empty() ? "" : ", ") + mount.id + ": " + mount.sensor_id + "/" + mount.mode_id;
+  }
+  return text;
+}
+
+SelectReport::SelectReport(const SelectionSpace& space, const Requirements& requirements,
+                           const RelaxationPolicy& policy, double budget)
+    : space_(space), requirements_(requirements), policy_(policy), budget_(budget) {}
+
+void SelectReport::print_header(std::ostream& out) const {
+  const Catalog& catalog = space_.catalog();
+  out << "Catalog: " << catalog.name << " (" << catalog.file << "): " << catalog.slots.size()
+      << " slots, " << catalog.sensors.size() << " candidate sensors, " << space_.option_count()
+      << " slot options\n";
+  out << "Requirements: " << requirements_.name << " (" << requirements_.file << ")\n";
+  out << "Budget: " << usd(budget_) << "; relaxation policy: "
+      << (policy_.steps.empty() ? std::string("none") : policy_.file + ", " + std::to_string(policy_.steps.size()) + " steps")
+      << "\n\n";
+}
+
+void SelectReport::print_iteration(const RelaxationIteration& iteration, std::ostream& out) {
+  out << "#" << printed_++ << "  " << (iteration.relaxed.empty() ? "initial requirements" : "relaxed " + iteration.relaxed) << '\n';
+  out << "    needs: " << describe(iteration.targets) << '\n';
+  const Selection& selection = iteration.selection;
+  if (!selection.found) {
+    out << "    no rig: " << selection.infeasible_reason << '\n';
+  } else {
+    out << "    cheapest rig: " << usd(selection.cost.total) << " = sensors " << fixed(selection.cost.sensors, 0)
+        << " + transfer " << fixed(selection.cost.transfer, 0) << " (" << selection.cost.transfer_id
+        << ") + CPU " << fixed(selection.cost.cpu, 0) << " (" << selection.cost.cpu_id << ")  "
+        << (iteration.within_budget ? "WITHIN BUDGET" : "over budget") << '\n';
+    out << "      " << describe(selection.rig) << '\n';
+  }
+  out << "    search: " << selection.search.nodes << " nodes, " << selection.search.evaluations
+      << " rigs evaluated, " << fixed(selection.seconds, 2) << " s, proven optimal on the raster path";
+  if (selection.found) {
+    out << ", verified on the exact path";
+    if (selection.rejected_by_exact_path > 0) {
+      out << " (" << selection.rejected_by_exact_path << " raster winners rejected by it)";
+    }
+  }
+  out << "\n\n";
+}
+
+void SelectReport::print_summary(const RelaxationOutcome& outcome,
+                                 const std::vector<std::string>& written, std::ostream& out) const {
+  using Align = TextTable::Align;
+  TextTable table;
+  table.add_column("#", Align::right);
+  table.add_column("relaxed", Align::left);
+  table.add_column("F >= Hz", Align::right);
+  table.add_column("R <= mm", Align::right);
+  table.add_column("N <= mm", Align::right);
+  table.add_column("cost USD", Align::right);
+  table.add_column("within budget", Align::left);
+  for (std::size_t i = 0; i < outcome.iterations.size(); ++i) {
+    const RelaxationIteration& it = outcome.iterations[i];
+    table.add_row({std::to_string(i), it.relaxed.empty() ? "-" : it.relaxed,
+                   format_number(it.targets.min_frequency, 4),
+                   it.targets.max_spacing ? format_number(*it.targets.max_spacing * 1000, 4) : "-",
+                   it.targets.max_noise ? format_number(*it.targets.max_noise * 1000, 4) : "-",
+                   it.selection.found ? fixed(it.selection.cost.total, 0) : "none",
+                   it.within_budget ? "yes" : "no"});
+  }
+  out << "Trace\n";
+  table.print(out, "  ");
+  const RelaxationIteration* pick = chosen(outcome);
+  if (outcome.within_budget) {
+    out << "\nChosen rig (" << usd(pick->selection.cost.total) << " <= budget " << usd(budget_) << "): "
+        << describe(pick->selection.rig) << '\n';
+    const RigCoverage& coverage = pick->selection.coverage;
+    out << "  SC complete mean " << percent(coverage.complete.mean) << " %, floor mean "
+        << percent(coverage.floor.mean) << " % (exact path)\n";
+  } else {
+    out << "\nThe policy is exhausted: no rig within " << usd(budget_) << ".\n";
+    if (pick != nullptr) {
+      out << "Cheapest rig found (" << usd(pick->selection.cost.total) << "): " << describe(pick->selection.rig) << '\n';
+    }
+    out << "Binding requirements:\n";
+    if (outcome.binding.empty()) out << "  none alone: the budget is below every rig's cost\n";
+    for (const BindingRequirement& item : outcome.binding) {
+      out << "  " << item.requirement << ": without it the cheapest rig costs "
+          << usd(item.cost_without) << '\n';
+    }
+  }
+  if (!written.empty()) {
+    out << "\nwrote " << written.size() << " files in " << std::filesystem::path(written.front()).parent_path().string()
+        << " (chosen_rig.yaml passes `rigdesign check`)\n";
+  }
+}
+
+std::vector<std::string> SelectReport::write_files(const RelaxationOutcome& outcome,
+                                                   const std::string& folder, bool renders) const {
+  const RelaxationIteration* pick = chosen(outcome);
+  std::vector<std::string> written;
+  if (pick == nullptr) return written;
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) {
+    throw InputError(Diagnostic{{"(command line)", 0, 0}, "--out",
+                                "cannot create folder '" + folder + "': " + error.message(), "a writable folder"});
+  }
+  const std::filesystem::path library =
+      std::filesystem::absolute(space_.library().file).lexically_normal();
+  const std::string library_from_folder =
+      std::filesystem::absolute(library).lexically_relative(std::filesystem::absolute(folder)).string();
+  const std::string rig_file = folder + "/chosen_rig.yaml";
+  write_file_atomically(
+      rig_file, rig_to_yaml(pick->selection.rig, library_from_folder, "requirements_final.yaml",
+                            "Chosen by `rigdesign select` from " + space_.catalog().file + "\n"
+                            "Cost " + fixed(pick->selection.cost.total, 0) + " USD (sensors " +
+                            fixed(pick->selection.cost.sensors, 0) + ", transfer " +
+                            pick->selection.cost.transfer_id + " " + fixed(pick->selection.cost.transfer, 0) +
+                            ", CPU " + pick->selection.cost.cpu_id + " " + fixed(pick->selection.cost.cpu, 0) + ")"));
+  written.push_back(rig_file);
+  const std::string requirements_file = folder + "/requirements_final.yaml";
+  write_file_atomically(requirements_file,
+                        requirements_to_yaml(pick->requirements,
+                                             "Requirements after " + std::to_string(&*pick - &outcome.iterations.front()) +
+                                                 " relaxation step(s) of " + (policy_.file.empty() ? "no policy" : policy_.file)));
+  written.push_back(requirements_file);
+  for (const char* extension : {".png", ".svg"}) {
+    const std::string path = folder + "/pareto" + extension;
+    plot_pareto(pick->selection.search.explored, budget_, pick->selection.cost.total,
+                pick->selection.coverage.complete.mean,
+                space_.catalog().name + ": cost against coverage of the rigs explored", path);
+    written.push_back(path);
+  }
+  if (renders) {
+    const std::string coverage_folder = folder + "/coverage";
+    std::filesystem::create_directories(coverage_folder, error);
+    Rig rig = pick->selection.rig;
+    rig.file = rig_file;
+    const std::vector<std::string> pictures = write_coverage_files(
+        rig, space_.library(), pick->selection.coverage, {0, 45, 90, 180}, coverage_folder, true);
+    written.insert(written.end(), pictures.begin(), pictures.end());
+  }
+  return written;
+}
+
+nlohmann::json SelectReport::to_json(const RelaxationOutcome& outcome,
+                                     const std::vector<std::string>& written) const {
+  nlohmann::json iterations = nlohmann::json::array();
+  for (const RelaxationIteration& it : outcome.iterations) {
+    nlohmann::json item = {{"relaxed", it.relaxed},
+                           {"needs", describe(it.targets)},
+                           {"found", it.selection.found},
+                           {"within_budget", it.within_budget},
+                           {"nodes", it.selection.search.nodes},
+                           {"rigs_evaluated", it.selection.search.evaluations},
+                           {"seconds", it.selection.seconds},
+                           {"rejected_by_exact_path", it.selection.rejected_by_exact_path}};
+    if (it.selection.found) {
+      item["cost"] = {{"total", it.selection.cost.total},
+                      {"sensors", it.selection.cost.sensors},
+                      {"transfer", it.selection.cost.transfer},
+                      {"transfer_id", it.selection.cost.transfer_id},
+                      {"cpu", it.selection.cost.cpu},
+                      {"cpu_id", it.selection.cost.cpu_id}};
+      nlohmann::json mounts = nlohmann::json::array();
+      for (const Mount& mount : it.selection.rig.mounts) {
+        mounts.push_back({{"slot", mount.id}, {"sensor", mount.sensor_id}, {"mode", mount.mode_id}});
+      }
+      item["rig"] = mounts;
+      item["coverage"] = cli::to_json(it.selection.coverage, false);
+    } else {
+      item["reason"] = it.selection.infeasible_reason;
+    }
+    iterations.push_back(item);
+  }
+  nlohmann::json binding = nlohmann::json::array();
+  for (const BindingRequirement& item : outcome.binding) {
+    binding.push_back({{"requirement", item.requirement}, {"cost_without", item.cost_without}});
+  }
+  return {{"budget", budget_},
+          {"within_budget", outcome.within_budget},
+          {"iterations", iterations},
+          {"binding", binding},
+          {"files", written}};
+}
+
+}  // namespace rigdesign::cli

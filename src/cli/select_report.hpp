@@ -1,0 +1,42 @@
+#pragma once
+// What `select` shows and writes: the trace of the relaxation loop, the chosen rig as a rig
+// file with the final requirements beside it, the Pareto plot and the coverage renders.
+#include <nlohmann/json_fwd.hpp>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "rigdesign/select/relaxation.hpp"
+
+namespace rigdesign::cli {
+
+class SelectReport {
+ public:
+  SelectReport(const SelectionSpace& space, const Requirements& requirements,
+               const RelaxationPolicy& policy, double budget);
+
+  void print_header(std::ostream& out) const;
+  void print_iteration(const RelaxationIteration& iteration, std::ostream& out);
+  void print_summary(const RelaxationOutcome& outcome, const std::vector<std::string>& written,
+                     std::ostream& out) const;
+  /// Writes the chosen rig, final requirements, Pareto plot and renders; returns the paths.
+  std::vector<std::string> write_files(const RelaxationOutcome& outcome, const std::string& folder,
+                                       bool renders) const;
+  nlohmann::json to_json(const RelaxationOutcome& outcome,
+                         const std::vector<std::string>& written) const;
+
+ private:
+  const SelectionSpace& space_;
+  const Requirements& requirements_;
+  const RelaxationPolicy& policy_;
+  double budget_;
+  int printed_ = 0;
+};
+
+/// "F >= 10 Hz, R <= 150 mm, N <= 50 mm, L: dark, indoor, SC front >= 75 / 80 % ...".
+std::string describe(const SatisficingTargets& targets);
+
+/// "front: azure_kinect_dk/nfov_binned_15, top: velodyne_vlp16/vlp16_10hz".
+std::string describe(const Rig& rig);
+
+}  // namespace rigdesign::cli

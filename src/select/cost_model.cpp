@@ -1,0 +1,36 @@
+#include "rigdesign/select/cost_model.hpp"
+
+namespace rigdesign {
+
+namespace {
+constexpr double kBitsPerByte = 8.0;
+}  // namespace
+
+const PricedCapacity* cheapest_exceeding(const std::vector<PricedCapacity>& items, double load) {
+  const PricedCapacity* best = nullptr;
+  for (const PricedCapacity& item : items) {
+    if (item.capacity > load && (best == nullptr || item.price < best->price)) best = &item;
+  }
+  return best;
+}
+
+CostBreakdown rig_cost(const RigLoad& load, const std::vector<PricedCapacity>& transfer,
+                       const std::vector<PricedCapacity>& cpus) {
+  CostBreakdown cost;
+  cost.sensors = load.sensor_cost;
+  const PricedCapacity* link = cheapest_exceeding(transfer, load.bandwidth * kBitsPerByte);
+  const PricedCapacity* cpu = cheapest_exceeding(cpus, load.cpu);
+  cost.feasible = link != nullptr && cpu != nullptr;
+  if (link != nullptr) {
+    cost.transfer = link->price;
+    cost.transfer_id = link->id;
+  }
+  if (cpu != nullptr) {
+    cost.cpu = cpu->price;
+    cost.cpu_id = cpu->id;
+  }
+  cost.total = cost.sensors + cost.transfer + cost.cpu;
+  return cost;
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,176 @@
+#include "rigdesign/select/search.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+namespace rigdesign {
+namespace {
+
+bool meets(double share, double threshold) { return share >= threshold - kThresholdSlack; }
+
+class BranchAndBound {
+ public:
+  BranchAndBound(const SearchProblem& problem, const std::vector<std::vector<int>>& excluded,
+                 const std::function<void(long)>& progress)
+      : problem_(problem), excluded_(excluded), progress_(progress) {
+    const std::size_t slots = problem.slots.size();
+    const std::size_t angles = problem.grids.size();
+    // suffix_[k][a]: the union of every option of slots k.. at angle a (the coverage bound).
+    suffix_.assign(slots + 1, {});
+    for (std::size_t a = 0; a < angles; ++a) suffix_[slots].emplace_back(problem.grids[a]);
+    for (std::size_t k = slots; k-- > 0;) {
+      suffix_[k] = suffix_[k + 1];
+      for (const SearchOption& option : problem.slots[k]) {
+        for (std::size_t a = 0; a < angles; ++a) suffix_[k][a] |= option.sections[a];
+      }
+    }
+    // union_[k]: the union of the options chosen for slots before k.
+    union_.assign(slots + 1, suffix_[slots]);
+    // Cheaper options first: good incumbents early make the cost bound bite.
+    order_.resize(slots);
+    for (std::size_t k = 0; k < slots; ++k) {
+      order_[k].resize(problem.slots[k].size());
+      std::iota(order_[k].begin(), order_[k].end(), 0);
+      std::stable_sort(order_[k].begin(), order_[k].end(), [&](int x, int y) {
+        return problem.slots[k][x].price < problem.slots[k][y].price;
+      });
+    }
+    choice_.assign(slots, -1);
+    result_.cost.total = std::numeric_limits<double>::infinity();
+  }
+
+  SearchResult run() {
+    visit(0, RigLoad{}, false);
+    return result_;
+  }
+
+ private:
+  // A rig whose sensors are chosen (the rest nothing): record it, and say whether it meets
+  // every sector threshold.
+  bool evaluate(std::size_t depth, const CostBreakdown& cost) {
+    ++result_.evaluations;
+    const std::vector<SectionRaster>& sections = union_[depth];
+    bool feasible = std::find(excluded_.begin(), excluded_.end(), choice_) == excluded_.end();
+    for (const SearchSector& sector : problem_.sectors) {
+      for (const int a : sector.angles) {
+        if (!feasible) break;
+        feasible = meets(sections[a].complete_share(), sector.min_complete) &&
+                   meets(sections[a].floor_share(), sector.min_floor);
+      }
+    }
+    double mean = 0.0;
+    for (const SectionRaster& section : sections) mean += section.complete_share();
+    const double angles = static_cast<double>(sections.size());
+    result_.explored.push_back({cost.total, sections.empty() ? 0.0 : mean / angles, feasible});
+    return feasible;
+  }
+
+  // The best coverage any completion of this node can reach still meets every threshold.
+  bool may_meet(std::size_t depth) const {
+    for (const SearchSector& sector : problem_.sectors) {
+      for (const int a : sector.angles) {
+        const SectionRaster& chosen = union_[depth][a];
+        const SectionRaster& rest = suffix_[depth][a];
+        if (!meets(chosen.complete_share_with(rest), sector.min_complete) ||
+            !meets(chosen.floor_share_with(rest), sector.min_floor)) {
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+
+  void visit(std::size_t depth, const RigLoad& load, bool just_added) {
+    if (++result_.nodes % 4096 == 0 && progress_) progress_(result_.nodes);
+    const CostBreakdown cost = rig_cost(load, problem_.transfer, problem_.cpus);
+    // No transfer item or CPU carries this load: none carries a larger one either.
+    if (!cost.feasible || cost.total >= result_.cost.total) return;
+    if (just_added && evaluate(depth, cost)) {
+      result_.found = true;
+      result_.cost = cost;
+      result_.choice = choice_;
+      return;
+    }
+    if (depth == problem_.slots.size() || !may_meet(depth)) return;
+    for (const int option_index : order_[depth]) {
+      const SearchOption& option = problem_.slots[depth][option_index];
+      choice_[depth] = option_index;
+      union_[depth + 1] = union_[depth];
+      for (std::size_t a = 0; a < union_[depth + 1].size(); ++a) {
+        union_[depth + 1][a] |= option.sections[a];
+      }
+      RigLoad next = load;
+      next.sensor_cost += option.price;
+      next.bandwidth += option.bandwidth;
+      next.cpu += option.cpu;
+      ++next.sensors;
+      visit(depth + 1, next, true);
+    }
+    choice_[depth] = -1;
+    union_[depth + 1] = union_[depth];
+    visit(depth + 1, load, false);
+  }
+
+  const SearchProblem& problem_;
+  const std::vector<std::vector<int>>& excluded_;
+  const std::function<void(long)>& progress_;
+  std::vector<std::vector<SectionRaster>> suffix_;
+  std::vector<std::vector<SectionRaster>> union_;
+  std::vector<std::vector<int>> order_;
+  std::vector<int> choice_;
+  SearchResult result_;
+};
+
+}  // namespace
+
+SearchResult branch_and_bound(const SearchProblem& problem,
+                              const std::vector<std::vector<int>>& excluded,
+                              const std::function<void(long)>& progress) {
+  return BranchAndBound(problem, excluded, progress).run();
+}
+
+SearchResult brute_force(const SearchProblem& problem) {
+  SearchResult result;
+  result.cost.total = std::numeric_limits<double>::infinity();
+  const std::size_t slots = problem.slots.size();
+  std::vector<int> choice(slots, -1);
+  while (true) {
+    ++result.nodes;
+    RigLoad load;
+    std::vector<SectionRaster> sections;
+    for (const RasterGrid& grid : problem.grids) sections.emplace_back(grid);
+    for (std::size_t k = 0; k < slots; ++k) {
+      if (choice[k] < 0) continue;
+      const SearchOption& option = problem.slots[k][choice[k]];
+      load.sensor_cost += option.price;
+      load.bandwidth += option.bandwidth;
+      load.cpu += option.cpu;
+      ++load.sensors;
+      for (std::size_t a = 0; a < sections.size(); ++a) sections[a] |= option.sections[a];
+    }
+    const CostBreakdown cost = rig_cost(load, problem.transfer, problem.cpus);
+    if (load.sensors > 0 && cost.feasible && cost.total < result.cost.total) {
+      ++result.evaluations;
+      bool feasible = true;
+      for (const SearchSector& sector : problem.sectors) {
+        for (const int a : sector.angles) {
+          feasible = feasible && meets(sections[a].complete_share(), sector.min_complete) &&
+                     meets(sections[a].floor_share(), sector.min_floor);
+        }
+      }
+      if (feasible) {
+        result.found = true;
+        result.cost = cost;
+        result.choice = choice;
+      }
+    }
+    // Next assignment, as a mixed-radix counter where -1 is each slot's first digit.
+    std::size_t k = 0;
+    while (k < slots && ++choice[k] == static_cast<int>(problem.slots[k].size())) choice[k++] = -1;
+    if (k == slots) break;
+  }
+  return result;
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,163 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "support/cli_runner.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign::test;
+
+namespace {
+
+// Two slots on a small robot, three candidate modes, coarse angles: fast enough to run the
+// whole loop, including the binding-requirement analysis, in a test.
+std::string small_catalog() {
+  return "name: Small\nsensor_library: " + source_path("sensors.yaml") + R"(
+body: {radius: 0.3, height: 0.8}
+distance_of_interest: 2.5
+reference_machine: test
+filtering_seconds_per_point: 3.5e-7
+sensors:
+  - {sensor: realsense_d435, modes: [z16_848x480_30]}
+  - {sensor: pmd_pico_flexx, modes: [mode_9_15fps]}
+  - {sensor: rplidar_a2m8, modes: [10hz]}
+slots:
+  - {id: front, pose: {xyz: [0.31, 0, 0.4], rpy_deg: [0, 20, 0]}, allows: [realsense_d435, pmd_pico_flexx]}
+  - {id: bumper, pose: {xyz: [0.31, 0, 0.15]}, allows: [rplidar_a2m8]}
+transfer:
+  - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}
+cpus:
+  - {id: small, cores: 3.0, price_usd: 300}
+  - {id: big, cores: 8.0, price_usd: 800}
+)";
+}
+
+const std::string kSmallRequirements = R"(name: Small app
+body: {radius: 0.3, height: 0.8}
+sectors:
+  - {name: front, from_deg: -10, to_deg: 10, min_complete_coverage: 0.3, min_floor_coverage: 0.5}
+range: {distance: 2.5}
+robot_speed: {max_speed: 1.0, max_travel_between_frames: 0.05}
+lighting: [dark, indoor]
+)";
+
+const std::string kSmallPolicy = R"(name: Small policy
+steps:
+  - {relax: robot_speed.max_speed, to: 0.5}
+  - {relax: sectors.front.min_floor_coverage, to: 0.1}
+)";
+
+struct SmallSetup {
+  TempFolder folder;
+  std::string catalog, requirements, policy;
+  SmallSetup(const std::string& req = kSmallRequirements, const std::string& pol = kSmallPolicy) {
+    catalog = folder.write("catalog.yaml", small_catalog());
+    requirements = folder.write("req.yaml", req);
+    policy = folder.write("policy.yaml", pol);
+  }
+  CliResult select(const std::string& budget) const {
+    return run_cli({"select", "--catalog", catalog, "--requirements", requirements, "--policy",
+                    policy, "--budget", budget, "--step", "10", "--no-renders", "--out",
+                    folder.path() + "/out"});
+  }
+};
+
+}  // namespace
+
+TEST_CASE("select on the bundled catalog relaxes in the policy's order and writes a rig check accepts") {
+  TempFolder folder;
+  const std::string out = folder.path() + "/selection";
+  const CliResult result = run_cli(
+      {"select", "--catalog", source_path("rigs/catalogs/ur_cleaner.yaml"), "--requirements",
+       source_path("rigs/requirements/ur_cleaner.yaml"), "--policy",
+       source_path("rigs/policies/ur_cleaner.yaml"), "--budget", "3000", "--no-renders", "--out", out});
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  // The policy's first two steps, in its order, then a rig within budget.
+  const std::size_t first = result.out.find("#1  relaxed robot_speed.max_speed 1 -> 0.8 m/s");
+  const std::size_t second = result.out.find("#2  relaxed robot_speed.max_speed 0.8 -> 0.6 m/s");
+  CHECK(first != std::string::npos);
+  CHECK(second != std::string::npos);
+  CHECK(first < second);
+  CHECK(result.out.find("#3") == std::string::npos);
+  CHECK(result.out.find("WITHIN BUDGET") != std::string::npos);
+  const CliResult check = run_cli({"check", out + "/chosen_rig.yaml"});
+  INFO(check.out);
+  CHECK(check.exit_code == 0);
+  CHECK(check.out.find("0 fail") != std::string::npos);
+}
+
+TEST_CASE("an exhausted policy exits 1 naming the binding requirements") {
+  SmallSetup setup;
+  const CliResult result = setup.select("10");
+  INFO(result.out);
+  CHECK(result.exit_code == 1);
+  CHECK(result.out.find("The policy is exhausted") != std::string::npos);
+  CHECK(result.out.find("Cheapest rig found") != std::string::npos);
+  CHECK(result.out.find("Binding requirements:") != std::string::npos);
+}
+
+TEST_CASE("requirements no candidate can meet are reported, exit 1") {
+  // 1 mm of noise at 2.5 m: no candidate comes close (the D435's is 22 mm there).
+  SmallSetup setup(kSmallRequirements + "accuracy: {max_noise: 0.001}\n", "name: none\nsteps: []\n");
+  const CliResult result = setup.select("5000");
+  CHECK(result.exit_code == 1);
+  CHECK(result.out.find("no rig: no combination of the catalog's options meets every requirement") !=
+        std::string::npos);
+}
+
+TEST_CASE("select: bad input is exit 2 with the file and line") {
+  SECTION("negative budget") {
+    SmallSetup setup;
+    const CliResult result = setup.select("-5");
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find("--budget") != std::string::npos);
+  }
+  SECTION("missing budget") {
+    SmallSetup setup;
+    CHECK(run_cli({"select", "--catalog", setup.catalog, "--requirements", setup.requirements})
+              .exit_code == 2);
+  }
+  SECTION("a policy step naming an unknown requirement") {
+    SmallSetup setup(kSmallRequirements,
+                     "name: p\nsteps:\n  - {relax: robot_speed.top_speed, to: 0.5}\n");
+    const CliResult result = setup.select("5000");
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find("policy.yaml:3:5: steps.relax: 'robot_speed.top_speed' is not a relaxable") !=
+          std::string::npos);
+  }
+  SECTION("a policy step that tightens") {
+    SmallSetup setup(kSmallRequirements, "name: p\nsteps:\n  - {relax: robot_speed.max_speed, to: 2}\n");
+    const CliResult result = setup.select("5000");
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find("policy.yaml:3:5:") != std::string::npos);
+    CHECK(result.err.find("tightens") != std::string::npos);
+  }
+  SECTION("a value with units where a plain SI number is expected") {
+    SmallSetup setup(kSmallRequirements, "name: p\nsteps:\n  - {relax: robot_speed.max_speed, to: 0.5 m/s}\n");
+    const CliResult result = setup.select("5000");
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find("policy.yaml:3:") != std::string::npos);
+    CHECK(result.err.find("steps[0].to: is '0.5 m/s'") != std::string::npos);
+  }
+  SECTION("an empty catalog") {
+    SmallSetup setup;
+    std::string text = small_catalog();
+    text.replace(text.find("sensors:\n"), text.find("slots:") - text.find("sensors:\n"), "sensors: []\n");
+    setup.folder.write("catalog.yaml", text);
+    const CliResult result = setup.select("5000");
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find("catalog.yaml:") != std::string::npos);
+    CHECK(result.err.find("sensors: is empty") != std::string::npos);
+  }
+  SECTION("a slot that allows no candidate sensor") {
+    SmallSetup setup;
+    std::string text = small_catalog();
+    text.replace(text.find("allows: [rplidar_a2m8]"), 22, "allows: [sick_lms100]");
+    setup.folder.write("catalog.yaml", text);
+    const CliResult result = setup.select("5000");
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find("slots[1].allows") != std::string::npos);
+    CHECK(result.err.find("allows no candidate sensor") != std::string::npos);
+  }
+}
