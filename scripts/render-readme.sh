@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
-# Regenerates renders/ (the pictures the README shows) for the bundled rigs: SC curves,
-# cross-sections at 0, 45, 90 and 180 degrees, and the 3D views. Off-screen; no display needed.
+# Regenerates renders/ (the pictures the README shows): the selection example's Pareto plot
+# and chosen rig, and for the bundled rigs SC curves, cross-sections at 0, 45, 90 and 180
+# degrees and the 3D views. Off-screen; no display needed.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh" >&2
 cmake -S "$root" -B "$root/build/release" -DCMAKE_BUILD_TYPE=Release -DRIGDESIGN_BUILD_TESTS=OFF >/dev/null
 cmake --build "$root/build/release" --target rigdesign -j"$(nproc)" >/dev/null
 cd "$root"
+rm -rf renders/selection
+./build/release/src/rigdesign select --catalog rigs/catalogs/ur_cleaner.yaml \
+  --requirements rigs/requirements/ur_cleaner.yaml --policy rigs/policies/ur_cleaner.yaml \
+  --budget 3000 --out renders/selection --no-renders
 for rig in ur_cleaner elektron delivery_amr; do
   rm -rf "renders/$rig"
   ./build/release/src/rigdesign coverage "rigs/$rig.yaml" --out "renders/$rig" --angles 0,45,90,180
