@@ -9,6 +9,11 @@
 
 namespace rigdesign::cli {
 
+void require_option(bool ok, const std::string& option, const std::string& problem,
+                    const std::string& expected) {
+  if (!ok) throw InputError(Diagnostic{{"(command line)", 0, 0}, option, problem, expected});
+}
+
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"rigdesign: design and verify the sensor rig of an autonomous mobile robot"};
   app.name("rigdesign");

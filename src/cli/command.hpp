@@ -1,6 +1,7 @@
 #pragma once
 #include <functional>
 #include <iosfwd>
+#include <string>
 
 namespace CLI {
 class App;
@@ -13,6 +14,10 @@ struct Command {
   CLI::App* app = nullptr;
   std::function<int(std::ostream& out, std::ostream& err)> run;
 };
+
+/// Throws InputError naming the command-line option unless `ok` (exit code 2).
+void require_option(bool ok, const std::string& option, const std::string& problem,
+                    const std::string& expected);
 
 Command setup_metrics(CLI::App& parent);
 Command setup_check(CLI::App& parent);

@@ -29,11 +29,6 @@ struct CoverageOptions {
   bool no_3d = false;
 };
 
-void require_option(bool ok, const std::string& option, const std::string& problem,
-                    const std::string& expected) {
-  if (!ok) throw InputError(Diagnostic{{"(command line)", 0, 0}, option, problem, expected});
-}
-
 int run_coverage(const CoverageOptions& options, std::ostream& out) {
   require_option(options.step_deg > 0 && options.step_deg <= 45, "--step",
                  "is " + format_number(options.step_deg), "degrees in (0, 45]");

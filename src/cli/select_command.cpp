@@ -36,11 +36,6 @@ struct SelectOptions {
   bool no_renders = false;
 };
 
-void require_option(bool ok, const std::string& option, const std::string& problem,
-                    const std::string& expected) {
-  if (!ok) throw InputError(Diagnostic{{"(command line)", 0, 0}, option, problem, expected});
-}
-
 SensorLibrary load_catalog_library(const Catalog& catalog, const std::string& sensors_path) {
   std::string path = sensors_path;
   if (path.empty() && !catalog.sensor_library.empty()) {
