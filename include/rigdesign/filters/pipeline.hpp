@@ -1,0 +1,53 @@
+#pragma once
+/// Filter pipelines: named stages, each with its own parameters, run in order and timed
+/// (paper 1, section 3, Fig. 3). A pipeline is pure data: presets P1-P4, or YAML.
+#include <string>
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "rigdesign/filters/floor_removal.hpp"
+#include "rigdesign/filters/statistical_outlier.hpp"
+
+namespace rigdesign {
+
+/// A RANSAC plane whose inliers are removed (the dominant plane, whatever its tilt).
+struct RemovePlaneParams {
+  RansacPlaneParams ransac;
+};
+
+using StageParams = std::variant<VoxelGridParams, StatisticalOutlierParams, PassThroughParams,
+                                 RemovePlaneParams, FloorRemoval1Params, FloorRemoval2Params,
+                                 NegativeObstacleParams>;
+
+/// Registered stage names, in StageParams' order: "voxel_grid", "statistical_outlier",
+/// "pass_through", "ransac_plane", "floor_removal_1", "floor_removal_2", "negative_obstacles".
+const std::vector<std::string>& stage_names();
+std::string stage_name(const StageParams& params);
+
+struct Pipeline {
+  std::string name;
+  std::vector<StageParams> stages;
+};
+
+/// Paper 1's four pipelines, read from its text (Fig. 3): noise removal (SOR), size
+/// reduction (voxel grid) and floor removal in different orders, the fourth with floor
+/// removal 2. P1 = SOR, voxel grid, floor removal 1 (noise removal on the raw cloud);
+/// P2 = voxel grid, SOR, floor removal 1; P3 = voxel grid, floor removal 1, SOR (SOR on the
+/// fewest points); P4 = voxel grid, SOR, floor removal 2. Paper defaults in every stage.
+/// Returns nothing for another name.
+std::optional<Pipeline> preset_pipeline(const std::string& name);
+
+struct StageRun {
+  std::string stage;
+  std::size_t points_in = 0;
+  std::size_t points_out = 0;
+  double seconds = 0.0;
+};
+
+/// Runs the stages in order; `runs` receives one entry per stage.
+PointCloud run_pipeline(const Pipeline& pipeline, PointCloud cloud, std::vector<StageRun>* runs = nullptr);
+
+PointCloud run_stage(const StageParams& stage, const PointCloud& cloud);
+
+}  // namespace rigdesign

@@ -1,0 +1,37 @@
+#pragma once
+/// RANSAC plane fit (paper 1: I = 100 iterations, T = 3 cm), as PCL's SACSegmentation with
+/// a plane model: the hypothesis with most inliers, refined by least squares on its inliers,
+/// inliers selected again. Seeded: the same seed gives the same plane.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "rigdesign/model/point_cloud.hpp"
+
+namespace rigdesign {
+
+struct RansacPlaneParams {
+  int iterations = 100;    ///< I
+  double threshold = 0.03; ///< T [m]: inlier distance
+  std::uint64_t seed = 1;
+  /// Only planes whose normal is within this angle of +z count [rad]; unset: any plane.
+  std::optional<double> max_tilt;
+};
+
+struct PlaneFit {
+  bool found = false;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit, z >= 0 when possible
+  double offset = 0.0;                                ///< plane: normal . p + offset = 0
+  std::vector<std::uint32_t> inliers;                 ///< indices into the searched points
+};
+
+/// Fits a plane to `cloud.points[subset[i]]` (all points when `subset` is null); inliers
+/// are indices into the cloud.
+PlaneFit fit_plane_ransac(const PointCloud& cloud, const RansacPlaneParams& params = {},
+                          const std::vector<std::uint32_t>* subset = nullptr);
+
+/// Indices of the cloud's points within `threshold` of the plane.
+std::vector<std::uint32_t> points_near_plane(const PointCloud& cloud, const PlaneFit& plane,
+                                             double threshold);
+
+}  // namespace rigdesign

@@ -1,0 +1,31 @@
+#pragma once
+/// Statistical Outlier Removal with PCL's semantics (paper 1: N = 10 neighbours, M = 1):
+/// each point's mean distance to its N nearest neighbours; points farther than the mean of
+/// those distances plus M sample standard deviations are removed. The neighbour search is a
+/// uniform grid instead of a k-d tree: filtered clouds have a known, even spacing.
+#include <cstdint>
+#include <vector>
+
+#include "rigdesign/model/point_cloud.hpp"
+
+namespace rigdesign {
+
+struct StatisticalOutlierParams {
+  int neighbours = 10;          ///< N; > 0
+  double std_multiplier = 1.0;  ///< M
+  /// [m] grid cell of the neighbour search; 0 picks one from the cloud (about N points per
+  /// occupied cell). Only speed depends on it, never the result.
+  double cell = 0.0;
+};
+
+/// Indices of the points kept, in input order.
+std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,
+                                                       const StatisticalOutlierParams& params = {});
+
+PointCloud statistical_outlier_removal(const PointCloud& cloud,
+                                       const StatisticalOutlierParams& params = {});
+
+/// The cloud's points at `indices`, keeping origin and orientation.
+PointCloud select_points(const PointCloud& cloud, const std::vector<std::uint32_t>& indices);
+
+}  // namespace rigdesign

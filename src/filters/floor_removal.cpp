@@ -1,0 +1,67 @@
+#include "rigdesign/filters/floor_removal.hpp"
+
+#include <algorithm>
+
+#include "rigdesign/filters/statistical_outlier.hpp"
+
+namespace rigdesign {
+namespace {
+
+PointCloud without(const PointCloud& cloud, std::vector<std::uint32_t> removed) {
+  std::sort(removed.begin(), removed.end());
+  PointCloud result;
+  result.origin = cloud.origin;
+  result.orientation = cloud.orientation;
+  result.points.reserve(cloud.size() - std::min(cloud.size(), removed.size()));
+  std::size_t next = 0;
+  for (std::uint32_t i = 0; i < cloud.size(); ++i) {
+    if (next < removed.size() && removed[next] == i) {
+      ++next;
+      continue;
+    }
+    result.points.push_back(cloud.points[i]);
+  }
+  return result;
+}
+
+}  // namespace
+
+PointCloud remove_floor_1(const PointCloud& cloud, const FloorRemoval1Params& params) {
+  const std::vector<std::uint32_t> slice = pass_through_indices(cloud, params.slice);
+  const PlaneFit floor = fit_plane_ransac(cloud, params.ransac, &slice);
+  if (!floor.found) return cloud;
+  return without(cloud, floor.inliers);
+}
+
+PointCloud remove_floor_2(const PointCloud& cloud, const FloorRemoval2Params& params) {
+  VoxelGridParams coarse;
+  coarse.leaf = params.coarse_leaf;
+  const PointCloud sparse = voxel_grid(cloud, coarse);
+  const PlaneFit floor = fit_plane_ransac(sparse, params.ransac);
+  if (!floor.found) return cloud;
+  return without(cloud, points_near_plane(cloud, floor, params.ransac.threshold));
+}
+
+PointCloud mark_negative_obstacles(const PointCloud& cloud, const NegativeObstacleParams& params) {
+  PointCloud result;
+  result.origin = cloud.origin;
+  result.orientation = cloud.orientation;
+  result.points.reserve(cloud.size() + cloud.size() / 8);
+  const double ox = cloud.origin.x(), oy = cloud.origin.y(), oz = cloud.origin.z();
+  std::vector<Point3f> virtual_points;
+  for (const Point3f& p : cloud.points) {
+    if (p.z() >= params.below) {
+      result.points.push_back(p);
+      continue;
+    }
+    result.points.emplace_back(p.x(), p.y(), -p.z());
+    const double s = oz / (oz - p.z());  // where the ray O -> P crosses z = 0
+    virtual_points.emplace_back(static_cast<float>(ox + (p.x() - ox) * s),
+                                static_cast<float>(oy + (p.y() - oy) * s),
+                                static_cast<float>(params.virtual_height));
+  }
+  result.points.insert(result.points.end(), virtual_points.begin(), virtual_points.end());
+  return result;
+}
+
+}  // namespace rigdesign

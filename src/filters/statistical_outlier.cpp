@@ -1,0 +1,60 @@
+#include "rigdesign/filters/statistical_outlier.hpp"
+
+#include <cmath>
+
+#include "filters/neighbour_grid.hpp"
+#include "rigdesign/io/input_error.hpp"
+
+namespace rigdesign {
+
+PointCloud select_points(const PointCloud& cloud, const std::vector<std::uint32_t>& indices) {
+  PointCloud result;
+  result.origin = cloud.origin;
+  result.orientation = cloud.orientation;
+  result.points.reserve(indices.size());
+  for (const std::uint32_t i : indices) result.points.push_back(cloud.points[i]);
+  return result;
+}
+
+std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,
+                                                       const StatisticalOutlierParams& params) {
+  if (params.neighbours <= 0) {
+    throw InputError(Diagnostic{{}, "statistical_outlier.neighbours", "must be > 0", "a neighbour count N > 0"});
+  }
+  std::vector<std::uint32_t> kept;
+  if (cloud.size() < 2) {
+    for (std::uint32_t i = 0; i < cloud.size(); ++i) kept.push_back(i);
+    return kept;
+  }
+  const double cell = params.cell > 0 ? params.cell : filters::estimate_cell(cloud.points, params.neighbours);
+  const filters::NeighbourGrid grid(cloud.points, cell);
+  std::vector<double> mean_distance(cloud.size());
+  std::vector<float> distances;
+  double sum = 0.0;
+  double sum_squares = 0.0;
+  for (std::uint32_t i = 0; i < cloud.size(); ++i) {
+    grid.nearest(i, params.neighbours, distances);
+    double total = 0.0;
+    for (const float d2 : distances) total += std::sqrt(static_cast<double>(d2));
+    mean_distance[i] = total / static_cast<double>(distances.size());
+    sum += mean_distance[i];
+    sum_squares += mean_distance[i] * mean_distance[i];
+  }
+  // Sample standard deviation, as PCL computes it.
+  const double n = static_cast<double>(cloud.size());
+  const double mean = sum / n;
+  const double variance = (sum_squares - sum * sum / n) / (n - 1);
+  const double threshold = mean + params.std_multiplier * std::sqrt(std::max(0.0, variance));
+  kept.reserve(cloud.size());
+  for (std::uint32_t i = 0; i < cloud.size(); ++i) {
+    if (mean_distance[i] <= threshold) kept.push_back(i);
+  }
+  return kept;
+}
+
+PointCloud statistical_outlier_removal(const PointCloud& cloud,
+                                       const StatisticalOutlierParams& params) {
+  return select_points(cloud, statistical_outlier_inliers(cloud, params));
+}
+
+}  // namespace rigdesign
