@@ -1,16 +1,10 @@
 #pragma once
 /// Pass-Through: keeps the points whose coordinate on one axis lies in [min, max]
 /// (paper 1: [A, B] = [-10, 10] cm on z), or outside it when `negative`.
+#include "rigdesign/model/filter_params.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
 namespace rigdesign {
-
-struct PassThroughParams {
-  int axis = 2;          ///< 0 = x, 1 = y, 2 = z
-  double min = -0.10;    ///< [m] A
-  double max = 0.10;     ///< [m] B
-  bool negative = false; ///< keep what is outside instead
-};
 
 PointCloud pass_through(const PointCloud& cloud, const PassThroughParams& params = {});
 

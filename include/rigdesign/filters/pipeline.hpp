@@ -11,25 +11,6 @@
 
 namespace rigdesign {
 
-/// A RANSAC plane whose inliers are removed (the dominant plane, whatever its tilt).
-struct RemovePlaneParams {
-  RansacPlaneParams ransac;
-};
-
-using StageParams = std::variant<VoxelGridParams, StatisticalOutlierParams, PassThroughParams,
-                                 RemovePlaneParams, FloorRemoval1Params, FloorRemoval2Params,
-                                 NegativeObstacleParams>;
-
-/// Registered stage names, in StageParams' order: "voxel_grid", "statistical_outlier",
-/// "pass_through", "ransac_plane", "floor_removal_1", "floor_removal_2", "negative_obstacles".
-const std::vector<std::string>& stage_names();
-std::string stage_name(const StageParams& params);
-
-struct Pipeline {
-  std::string name;
-  std::vector<StageParams> stages;
-};
-
 /// Paper 1's four pipelines, read from its text (Fig. 3): noise removal (SOR), size
 /// reduction (voxel grid) and floor removal in different orders, the fourth with floor
 /// removal 2. P1 = SOR, voxel grid, floor removal 1 (noise removal on the raw cloud);

@@ -6,17 +6,10 @@
 #include <optional>
 #include <vector>
 
+#include "rigdesign/model/filter_params.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
 namespace rigdesign {
-
-struct RansacPlaneParams {
-  int iterations = 100;    ///< I
-  double threshold = 0.03; ///< T [m]: inlier distance
-  std::uint64_t seed = 1;
-  /// Only planes whose normal is within this angle of +z count [rad]; unset: any plane.
-  std::optional<double> max_tilt;
-};
 
 struct PlaneFit {
   bool found = false;

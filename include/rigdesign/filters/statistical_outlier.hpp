@@ -6,17 +6,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "rigdesign/model/filter_params.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
 namespace rigdesign {
-
-struct StatisticalOutlierParams {
-  int neighbours = 10;          ///< N; > 0
-  double std_multiplier = 1.0;  ///< M
-  /// [m] grid cell of the neighbour search; 0 picks one from the cloud (about N points per
-  /// occupied cell). Only speed depends on it, never the result.
-  double cell = 0.0;
-};
 
 /// Indices of the points kept, in input order.
 std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,

@@ -1,0 +1,87 @@
+#pragma once
+/// Parameters of the point-cloud filter stages, with the papers' defaults (DESIGN.md
+/// section 6). Plain data: io loads them from YAML, filters run them.
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace rigdesign {
+
+struct VoxelGridParams {
+  double leaf = 0.03;  ///< [m] voxel edge (paper 1: V1 = 3 cm); > 0
+  /// [m] voxel boundaries lie at grid_offset + k * leaf on each axis. 0 is PCL's alignment,
+  /// which puts the floor plane z = 0 exactly on a boundary, so sensor noise splits floor
+  /// points between two voxel layers (about 16 % more voxels than a half-leaf offset gives).
+  Eigen::Vector3d grid_offset = Eigen::Vector3d::Zero();
+};
+
+struct PassThroughParams {
+  int axis = 2;          ///< 0 = x, 1 = y, 2 = z
+  double min = -0.10;    ///< [m] A
+  double max = 0.10;     ///< [m] B
+  bool negative = false; ///< keep what is outside instead
+};
+
+struct StatisticalOutlierParams {
+  int neighbours = 10;          ///< N; > 0
+  double std_multiplier = 1.0;  ///< M
+  /// [m] grid cell of the neighbour search; 0 picks one from the cloud (about N points per
+  /// occupied cell). Only speed depends on it, never the result.
+  double cell = 0.0;
+};
+
+struct RansacPlaneParams {
+  int iterations = 100;    ///< I
+  double threshold = 0.03; ///< T [m]: inlier distance
+  std::uint64_t seed = 1;
+  /// Only planes whose normal is within this angle of +z count [rad]; unset: any plane.
+  std::optional<double> max_tilt;
+};
+
+/// Floor removal 1: a pass-through slice around the floor, a RANSAC plane on the slice,
+/// its inliers removed from the cloud.
+struct FloorRemoval1Params {
+  PassThroughParams slice;  ///< z in [-10, 10] cm
+  RansacPlaneParams ransac;
+};
+
+/// Floor removal 2: the plane fitted on a copy voxelised at V2 = 30 cm, then every point
+/// within T of it removed. The plane must be near-horizontal (RANSAC ignores hypotheses
+/// tilted more than `ransac.max_tilt`, 15 degrees by default) so a wall cannot win.
+struct FloorRemoval2Params {
+  double coarse_leaf = 0.30;  ///< V2 [m]
+  RansacPlaneParams ransac{100, 0.03, 1, 0.2617993877991494};
+};
+
+/// Paper 2's negative obstacles: a point below `below` (a hole or a step down) is mirrored
+/// to (x, y, -z), and a virtual point is added `virtual_height` above the floor where the ray
+/// from the sensor origin O to the point crosses the floor:
+/// P'' = (o_x + (x - o_x) s, o_y + (y - o_y) s, virtual_height), s = o_z / (o_z - z).
+struct NegativeObstacleParams {
+  double below = -0.02;         ///< [m]
+  double virtual_height = 0.10; ///< [m]
+};
+
+/// A RANSAC plane whose inliers are removed (the dominant plane, whatever its tilt).
+struct RemovePlaneParams {
+  RansacPlaneParams ransac;
+};
+
+using StageParams = std::variant<VoxelGridParams, StatisticalOutlierParams, PassThroughParams,
+                                 RemovePlaneParams, FloorRemoval1Params, FloorRemoval2Params,
+                                 NegativeObstacleParams>;
+
+struct Pipeline {
+  std::string name;
+  std::vector<StageParams> stages;
+};
+
+/// Registered stage names, in StageParams' order: "voxel_grid", "statistical_outlier",
+/// "pass_through", "ransac_plane", "floor_removal_1", "floor_removal_2", "negative_obstacles".
+const std::vector<std::string>& stage_names();
+std::string stage_name(const StageParams& params);
+
+}  // namespace rigdesign
