@@ -23,5 +23,6 @@ Command setup_metrics(CLI::App& parent);
 Command setup_check(CLI::App& parent);
 Command setup_coverage(CLI::App& parent);
 Command setup_select(CLI::App& parent);
+Command setup_filter(CLI::App& parent);
 
 }  // namespace rigdesign::cli
