@@ -6,17 +6,14 @@
 #include <vector>
 
 #include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/triangle_mesh.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
 
 namespace rigdesign {
 
-/// An indexed triangle mesh, coordinates in metres. The meshes built here are closed and
-/// wound counter-clockwise seen from outside, so (b - a) x (c - a) points out of the volume.
-struct TriangleMesh {
-  std::vector<Vec3> vertices;
-  std::vector<std::array<int, 3>> triangles;  ///< indices into `vertices`
-};
+// The meshes built here are closed and wound counter-clockwise seen from outside, so
+// (b - a) x (c - a) points out of the volume.
 
 /// The closed surface of a mode's FOV volume placed on the robot by `T_robot_sensor`: every
 /// point whose direction from the sensor origin is inside the FOV and whose distance from it

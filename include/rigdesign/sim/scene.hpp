@@ -1,0 +1,44 @@
+#pragma once
+/// Synthetic scenes for sensor simulation (DESIGN.md section 6): triangle meshes in a world
+/// frame (REP-103: z up, floor at z = 0), built by seeded generators, with moving parts
+/// posed as functions of time.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/triangle_mesh.hpp"
+
+namespace rigdesign {
+
+struct SceneObject {
+  std::string name;   ///< e.g. "floor", "table_2", "chair_1_leg_3", "cable"
+  TriangleMesh mesh;  ///< world frame
+};
+
+struct MovingObject {
+  std::string name;
+  TriangleMesh mesh;  ///< in the object's own frame
+  std::function<Pose3(double)> T_world_object;  ///< pose at time t [s]
+};
+
+struct Scene {
+  std::string name;
+  std::vector<SceneObject> objects;
+  std::vector<MovingObject> moving;
+  /// Where the robot frame (on the floor under the robot's centre) stands at the start.
+  Pose3 T_world_robot = Pose3::Identity();
+
+  /// Every triangle at time `t` [s], world frame.
+  TriangleMesh at(double t) const;
+};
+
+/// "office", "corridor", "stairs", "wall_following", "cell".
+const std::vector<std::string>& scene_names();
+
+/// Builds a named scene; `seed` places the office's furniture. Throws std::invalid_argument
+/// for an unknown name (the CLI checks names first).
+Scene make_scene(const std::string& name, std::uint64_t seed);
+
+}  // namespace rigdesign
