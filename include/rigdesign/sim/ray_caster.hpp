@@ -1,0 +1,26 @@
+#pragma once
+/// First-hit ray casting against a triangle mesh with a CGAL AABB tree (DESIGN.md
+/// section 6). CGAL stays inside the implementation file.
+#include <memory>
+#include <optional>
+
+#include "rigdesign/model/triangle_mesh.hpp"
+
+namespace rigdesign {
+
+class RayCaster {
+ public:
+  explicit RayCaster(const TriangleMesh& mesh);
+  ~RayCaster();
+  RayCaster(RayCaster&&) noexcept;
+  RayCaster& operator=(RayCaster&&) noexcept;
+
+  /// Distance [m] from `origin` along the unit `direction` to the first triangle hit, if any.
+  std::optional<double> first_hit(const Vec3& origin, const Vec3& direction) const;
+
+ private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
+};
+
+}  // namespace rigdesign

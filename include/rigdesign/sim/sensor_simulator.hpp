@@ -1,0 +1,34 @@
+#pragma once
+/// What one mounted sensor measures in a scene: its own ray pattern cast against the scene,
+/// within its min and max range, with range noise from its sigma(d) and random dropout
+/// (DESIGN.md section 6). Seeded: the same seed gives the same cloud.
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "rigdesign/model/point_cloud.hpp"
+#include "rigdesign/model/sensor.hpp"
+#include "rigdesign/sim/ray_caster.hpp"
+
+namespace rigdesign {
+
+/// Unit ray directions in the sensor frame (x forward): a pinhole pixel grid for pyramid
+/// cameras (pixel centres, evenly spaced in the image plane), rings of a spinning lidar
+/// (one row per vertical step from the lowest beam, one column per horizontal step), one
+/// row for a 2D scanner's fan, a pixel grid clipped to the circle for a cone. Non-repetitive
+/// scanners (Livox) get a grid at their effective step.
+std::vector<Vec3> ray_pattern(const SensorMode& mode);
+
+struct SimulationSettings {
+  double dropout = 0.0;     ///< share of rays that return nothing, in [0, 1)
+  bool add_noise = true;    ///< range noise N(0, sigma(d)^2) along each ray
+  bool sensor_frame = false;  ///< points in the sensor frame (else the world frame)
+};
+
+/// One frame. `T_world_sensor` places the sensor; the cloud's origin and orientation record
+/// the sensor pose in the cloud's frame.
+PointCloud simulate_frame(const RayCaster& scene, const SensorMode& mode,
+                          const std::vector<Vec3>& rays, const Pose3& T_world_sensor,
+                          const SimulationSettings& settings, std::mt19937_64& rng);
+
+}  // namespace rigdesign
