@@ -1,0 +1,211 @@
+// Our filter stages and pipelines against PCL 1.13's on the same clouds, in the same
+// process, single thread: per-stage medians, PCL / ours ratios and output point counts side
+// by side. Built only when libpcl-dev is present (scripts/install-pcl.sh). Run through
+// scripts/bench.sh filters.
+#include <pcl/ModelCoefficients.h>
+#include <pcl/filters/extract_indices.h>
+#include <pcl/filters/passthrough.h>
+#include <pcl/filters/statistical_outlier_removal.h>
+#include <pcl/filters/voxel_grid.h>
+#include <pcl/point_types.h>
+#include <pcl/segmentation/sac_segmentation.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/filters/pipeline.hpp"
+#include "rigdesign/io/cloud_io.hpp"
+#include "rigdesign/model/rotation.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace {
+
+using namespace rigdesign;
+using PclCloud = pcl::PointCloud<pcl::PointXYZ>;
+
+constexpr int kRuns = 15;
+
+double median_seconds(const std::function<std::size_t()>& run, std::size_t& points_out) {
+  std::vector<double> times;
+  for (int i = 0; i < kRuns; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    points_out = run();
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+PclCloud::Ptr to_pcl(const PointCloud& cloud) {
+  PclCloud::Ptr out(new PclCloud);
+  out->reserve(cloud.size());
+  for (const Point3f& p : cloud.points) out->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  return out;
+}
+
+// PCL's versions of paper 1's stages with the same parameters.
+PclCloud::Ptr pcl_voxel(const PclCloud::Ptr& in, float leaf) {
+  PclCloud::Ptr out(new PclCloud);
+  pcl::VoxelGrid<pcl::PointXYZ> filter;
+  filter.setInputCloud(in);
+  filter.setLeafSize(leaf, leaf, leaf);
+  filter.filter(*out);
+  return out;
+}
+
+PclCloud::Ptr pcl_sor(const PclCloud::Ptr& in) {
+  PclCloud::Ptr out(new PclCloud);
+  pcl::StatisticalOutlierRemoval<pcl::PointXYZ> filter;
+  filter.setInputCloud(in);
+  filter.setMeanK(10);
+  filter.setStddevMulThresh(1.0);
+  filter.filter(*out);
+  return out;
+}
+
+PclCloud::Ptr pcl_pass(const PclCloud::Ptr& in, bool negative) {
+  PclCloud::Ptr out(new PclCloud);
+  pcl::PassThrough<pcl::PointXYZ> filter;
+  filter.setInputCloud(in);
+  filter.setFilterFieldName("z");
+  filter.setFilterLimits(-0.10f, 0.10f);
+  filter.setNegative(negative);
+  filter.filter(*out);
+  return out;
+}
+
+pcl::PointIndices::Ptr pcl_plane(const PclCloud::Ptr& in, pcl::ModelCoefficients& coefficients) {
+  pcl::PointIndices::Ptr inliers(new pcl::PointIndices);
+  pcl::SACSegmentation<pcl::PointXYZ> segmentation;
+  segmentation.setOptimizeCoefficients(true);
+  segmentation.setModelType(pcl::SACMODEL_PLANE);
+  segmentation.setMethodType(pcl::SAC_RANSAC);
+  segmentation.setMaxIterations(100);
+  segmentation.setDistanceThreshold(0.03);
+  segmentation.setInputCloud(in);
+  if (!in->empty()) segmentation.segment(*inliers, coefficients);
+  return inliers;
+}
+
+// Floor removal 1 in PCL: slice, RANSAC on the slice, remove the slice's inliers.
+PclCloud::Ptr pcl_floor_1(const PclCloud::Ptr& in) {
+  pcl::PointIndices::Ptr slice(new pcl::PointIndices);
+  for (std::size_t i = 0; i < in->size(); ++i) {
+    if ((*in)[i].z >= -0.10f && (*in)[i].z <= 0.10f) slice->indices.push_back(static_cast<int>(i));
+  }
+  PclCloud::Ptr slice_cloud(new PclCloud(*in, slice->indices));
+  pcl::ModelCoefficients coefficients;
+  const pcl::PointIndices::Ptr plane = pcl_plane(slice_cloud, coefficients);
+  pcl::PointIndices::Ptr removed(new pcl::PointIndices);
+  for (const int i : plane->indices) removed->indices.push_back(slice->indices[static_cast<std::size_t>(i)]);
+  PclCloud::Ptr out(new PclCloud);
+  pcl::ExtractIndices<pcl::PointXYZ> extract;
+  extract.setInputCloud(in);
+  extract.setIndices(removed);
+  extract.setNegative(true);
+  extract.filter(*out);
+  return out;
+}
+
+// Floor removal 2 in PCL: plane on a 30 cm voxel copy, then every point within 3 cm removed.
+PclCloud::Ptr pcl_floor_2(const PclCloud::Ptr& in) {
+  const PclCloud::Ptr coarse = pcl_voxel(in, 0.30f);
+  pcl::ModelCoefficients c;
+  pcl_plane(coarse, c);
+  PclCloud::Ptr out(new PclCloud);
+  if (c.values.size() != 4) return in;
+  for (const auto& p : *in) {
+    if (std::abs(c.values[0] * p.x + c.values[1] * p.y + c.values[2] * p.z + c.values[3]) > 0.03f) out->push_back(p);
+  }
+  return out;
+}
+
+struct Row {
+  std::string name;
+  double ours;
+  double theirs;
+  std::size_t ours_points;
+  std::size_t theirs_points;
+};
+
+void print(const std::string& cloud_name, std::size_t points, const std::vector<Row>& rows) {
+  std::printf("\n%s (%zu points)\n", cloud_name.c_str(), points);
+  std::printf("  %-22s %10s %10s %8s %12s %12s\n", "stage", "ours ms", "PCL ms", "PCL/ours", "ours points", "PCL points");
+  for (const Row& r : rows) {
+    std::printf("  %-22s %10.2f %10.2f %8.2f %12zu %12zu\n", r.name.c_str(), r.ours * 1e3, r.theirs * 1e3,
+                r.theirs / r.ours, r.ours_points, r.theirs_points);
+  }
+}
+
+void compare(const std::string& name, const PointCloud& cloud) {
+  const PclCloud::Ptr input = to_pcl(cloud);
+  std::vector<Row> rows;
+  std::size_t a = 0, b = 0;
+  const PointCloud voxelised = voxel_grid(cloud);
+  const PclCloud::Ptr pcl_voxelised = pcl_voxel(input, 0.03f);
+  double ours = median_seconds([&] { return voxel_grid(cloud).size(); }, a);
+  double theirs = median_seconds([&] { return pcl_voxel(input, 0.03f)->size(); }, b);
+  rows.push_back({"voxel_grid 3 cm", ours, theirs, a, b});
+  ours = median_seconds([&] { return statistical_outlier_removal(voxelised).size(); }, a);
+  theirs = median_seconds([&] { return pcl_sor(pcl_voxelised)->size(); }, b);
+  rows.push_back({"SOR on voxelised", ours, theirs, a, b});
+  ours = median_seconds([&] { return pass_through(cloud).size(); }, a);
+  theirs = median_seconds([&] { return pcl_pass(input, false)->size(); }, b);
+  rows.push_back({"pass_through z", ours, theirs, a, b});
+  ours = median_seconds([&] { return fit_plane_ransac(voxelised).inliers.size(); }, a);
+  theirs = median_seconds([&] { pcl::ModelCoefficients c; return pcl_plane(pcl_voxelised, c)->indices.size(); }, b);
+  rows.push_back({"RANSAC plane (voxelised)", ours, theirs, a, b});
+  ours = median_seconds([&] { return remove_floor_1(voxelised).size(); }, a);
+  theirs = median_seconds([&] { return pcl_floor_1(pcl_voxelised)->size(); }, b);
+  rows.push_back({"floor_removal_1", ours, theirs, a, b});
+  ours = median_seconds([&] { return remove_floor_2(voxelised).size(); }, a);
+  theirs = median_seconds([&] { return pcl_floor_2(pcl_voxelised)->size(); }, b);
+  rows.push_back({"floor_removal_2", ours, theirs, a, b});
+  for (const char* pipeline : {"P2", "P3", "P4"}) {
+    const Pipeline p = *preset_pipeline(pipeline);
+    ours = median_seconds([&] { return run_pipeline(p, cloud).size(); }, a);
+    theirs = median_seconds([&] {
+      const PclCloud::Ptr v = pcl_voxel(input, 0.03f);
+      if (std::string(pipeline) == "P2") return pcl_floor_1(pcl_sor(v))->size();
+      if (std::string(pipeline) == "P3") return pcl_sor(pcl_floor_1(v))->size();
+      return pcl_floor_2(pcl_sor(v))->size();
+    }, b);
+    rows.push_back({std::string("pipeline ") + pipeline, ours, theirs, a, b});
+  }
+  print(name, cloud.size(), rows);
+}
+
+// A real cloud from a camera's optical frame, placed as the UR Cleaner's front camera
+// (0.46 m ahead, 0.75 m up, pitched 25 deg down) so the floor stages have a robot frame.
+PointCloud mounted(const PointCloud& optical) {
+  Pose3 body_from_optical = Pose3::Identity();
+  body_from_optical.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+  const Pose3 T_robot_sensor = pose_from_xyz_rpy(Vec3(0.46, 0, 0.75), Vec3(0, deg_to_rad(25), 0));
+  const Eigen::Isometry3f T = (T_robot_sensor * body_from_optical).cast<float>();
+  PointCloud moved;
+  for (const Point3f& p : optical.points) moved.points.push_back(T * p);
+  moved.origin = T.translation();
+  return moved;
+}
+
+}  // namespace
+
+int main() {
+  const std::string folder = std::string(RIGDESIGN_SOURCE_DIR) + "/../shared/data/real";
+  std::printf("ours vs PCL %s, single thread, %d runs per figure (medians)\n", PCL_VERSION_PRETTY, kRuns);
+  for (const char* file : {"office1.pcd", "five_people.pcd", "table_scene_mug_stereo_textured.pcd",
+                           "kinect_frame_20121214T142255.814212.pcd", "milk_cartoon_all_small_clorox.pcd"}) {
+    const std::string path = folder + "/" + file;
+    if (!std::filesystem::exists(path)) {
+      std::printf("%s: not found, skipped\n", path.c_str());
+      continue;
+    }
+    compare(file, mounted(read_cloud(path)));
+  }
+  return 0;
+}
