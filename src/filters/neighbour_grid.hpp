@@ -14,9 +14,13 @@ class NeighbourGrid {
   /// `cell` > 0 [m].
   NeighbourGrid(const std::vector<Point3f>& points, double cell);
 
-  /// Squared distances to the k nearest other points of point `index`, ascending, written
-  /// to `distances` (fewer when the cloud has fewer points).
-  void nearest(std::uint32_t index, int k, std::vector<float>& distances) const;
+  /// Squared distances to the k nearest other points of the point at position `rank` of the
+  /// grid's cell order, ascending, written to `distances` (fewer when the cloud has fewer
+  /// points). Visiting points in cell order keeps neighbouring cells in cache.
+  void nearest(std::uint32_t rank, int k, std::vector<float>& distances) const;
+
+  /// The input index of the point at position `rank` of the cell order.
+  std::uint32_t index_at(std::uint32_t rank) const { return sorted_[rank]; }
 
   /// Mean number of points in an occupied cell.
   double mean_occupancy() const;
@@ -30,7 +34,8 @@ class NeighbourGrid {
   Eigen::Array3i dims_;
   std::vector<std::uint32_t> cell_start_;  // prefix sums, size cells + 1
   std::vector<std::uint32_t> sorted_;      // point indices grouped by cell
-  std::vector<Eigen::Array3i> point_cell_;
+  std::vector<Point3f> sorted_points_;     // the points in that order, contiguous
+  std::vector<Eigen::Array3i> sorted_cell_;
   std::size_t occupied_ = 0;
 };
 

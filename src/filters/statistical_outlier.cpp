@@ -32,13 +32,14 @@ std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,
   std::vector<float> distances;
   double sum = 0.0;
   double sum_squares = 0.0;
-  for (std::uint32_t i = 0; i < cloud.size(); ++i) {
-    grid.nearest(i, params.neighbours, distances);
+  for (std::uint32_t rank = 0; rank < cloud.size(); ++rank) {  // in the grid's cell order
+    grid.nearest(rank, params.neighbours, distances);
     double total = 0.0;
     for (const float d2 : distances) total += std::sqrt(static_cast<double>(d2));
-    mean_distance[i] = total / static_cast<double>(distances.size());
-    sum += mean_distance[i];
-    sum_squares += mean_distance[i] * mean_distance[i];
+    const double mean = total / static_cast<double>(distances.size());
+    mean_distance[grid.index_at(rank)] = mean;
+    sum += mean;
+    sum_squares += mean * mean;
   }
   // Sample standard deviation, as PCL computes it.
   const double n = static_cast<double>(cloud.size());

@@ -1,5 +1,6 @@
 #include "rigdesign/filters/voxel_grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -16,8 +17,8 @@ constexpr std::int64_t kMaxCells = std::int64_t{1} << kKeyBits;
 
 struct Accumulator {
   std::uint64_t key = 0;
-  double x = 0, y = 0, z = 0;
-  std::uint32_t count = 0;  // 0 marks an empty slot
+  float x = 0, y = 0, z = 0;  // float sums, as PCL accumulates them
+  std::uint32_t count = 0;    // 0 marks an empty slot
 };
 
 std::uint64_t mix(std::uint64_t key) {  // splitmix64 finaliser: spreads packed keys
@@ -58,13 +59,29 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
                                     format_number(static_cast<double>((high - low).maxCoeff()) /
                                                       static_cast<double>(kMaxCells - 2), 3) + " m"});
   }
-  // Open addressing on the packed voxel key: one pass, sums accumulated in place.
+  // Open addressing on the packed voxel key: one pass, sums accumulated in place. The table
+  // starts at twice the voxels the bounding box can hold (if fewer than the points) and
+  // doubles when half full, so a close-range cloud does not clear a table sized by points.
+  const Eigen::Array3d spans = (last - first).cast<double>() + 1.0;
+  const double box_voxels = spans.x() * spans.y() * spans.z();
+  const double expected = std::min(static_cast<double>(cloud.size()), box_voxels);
   std::size_t capacity = 1024;
-  while (capacity < cloud.size() * 2) capacity <<= 1;
+  while (static_cast<double>(capacity) < 2 * expected && capacity < (std::size_t{1} << 24)) capacity <<= 1;
   std::vector<Accumulator> table(capacity);
   std::vector<std::uint32_t> occupied;
-  occupied.reserve(cloud.size() / 2);
-  const std::size_t mask = capacity - 1;
+  std::size_t mask = capacity - 1;
+  const auto grow = [&] {
+    std::vector<Accumulator> bigger(table.size() * 2);
+    const std::size_t bigger_mask = bigger.size() - 1;
+    for (std::uint32_t& slot : occupied) {
+      std::size_t moved = mix(table[slot].key) & bigger_mask;
+      while (bigger[moved].count != 0) moved = (moved + 1) & bigger_mask;
+      bigger[moved] = table[slot];
+      slot = static_cast<std::uint32_t>(moved);
+    }
+    table.swap(bigger);
+    mask = table.size() - 1;
+  };
   for (const Point3f& p : cloud.points) {
     const Eigen::Array3f index = ((p.array() - offset) * inverse).floor() - first;
     const std::uint64_t ix = static_cast<std::uint64_t>(index.x());
@@ -82,13 +99,13 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
     voxel.y += p.y();
     voxel.z += p.z();
     ++voxel.count;
+    if (voxel.count == 1 && occupied.size() * 2 > table.size()) grow();
   }
   result.points.reserve(occupied.size());
   for (const std::uint32_t slot : occupied) {
     const Accumulator& voxel = table[slot];
-    const double n = voxel.count;
-    result.points.emplace_back(static_cast<float>(voxel.x / n), static_cast<float>(voxel.y / n),
-                               static_cast<float>(voxel.z / n));
+    const float n = static_cast<float>(voxel.count);
+    result.points.emplace_back(voxel.x / n, voxel.y / n, voxel.z / n);
   }
   return result;
 }
