@@ -24,5 +24,6 @@ Command setup_check(CLI::App& parent);
 Command setup_coverage(CLI::App& parent);
 Command setup_select(CLI::App& parent);
 Command setup_filter(CLI::App& parent);
+Command setup_simulate(CLI::App& parent);
 
 }  // namespace rigdesign::cli

@@ -7,6 +7,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <ostream>
@@ -18,6 +19,8 @@
 #include "rigdesign/io/cloud_io.hpp"
 #include "rigdesign/io/pipeline_loader.hpp"
 #include "rigdesign/metrics/mount_metrics.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/sim/rig_simulation.hpp"
 #include "text_table.hpp"
 
 namespace rigdesign::cli {
@@ -25,6 +28,9 @@ namespace {
 
 struct FilterOptions {
   std::vector<std::string> clouds;
+  std::string scene;
+  int frames = 20;
+  std::uint64_t seed = 1;
   std::string pipeline = "P4";
   std::string rig;
   std::string mount;
@@ -78,11 +84,73 @@ double peak_memory_mib() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
+// Every mount of the rig in a synthetic scene: its frames through the pipeline, and the
+// filtering load U_f = median time per frame x frame rate (paper 1, eq. 5).
+int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, std::ostream& out) {
+  const RigInputs inputs = load_rig_inputs(options.rig, "", "");
+  const auto& names = scene_names();
+  require_option(std::find(names.begin(), names.end(), options.scene) != names.end(), "--scene",
+                 "unknown scene '" + options.scene + "'", "office, corridor, stairs, wall_following or cell");
+  require_option(options.frames >= 1 && options.frames <= 10000, "--frames", "is out of range", "1 to 10000");
+  const Scene scene = make_scene(options.scene, options.seed);
+  TextTable table;
+  table.add_column("mount", TextTable::Align::left);
+  for (const char* header : {"points/frame", "out/frame", "median ms", "p95 ms", "F Hz", "U_f cores", "s per point"}) {
+    table.add_column(header, TextTable::Align::right);
+  }
+  nlohmann::json report = {{"pipeline", pipeline.name}, {"scene", options.scene}, {"frames", options.frames},
+                           {"mounts", nlohmann::json::array()}};
+  double total_load = 0.0;
+  for (std::size_t i = 0; i < inputs.rig.mounts.size(); ++i) {
+    const Mount& mount = inputs.rig.mounts[i];
+    const SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
+    const std::vector<PointCloud> clouds = simulate_mount(scene, mount, mode, i, options.frames, options.seed);
+    std::vector<double> seconds;
+    std::size_t points = 0, kept = 0;
+    for (const PointCloud& cloud : clouds) {
+      std::vector<StageRun> runs;
+      kept += run_pipeline(pipeline, cloud, &runs).size();
+      points += cloud.size();
+      double total = 0.0;
+      for (const StageRun& run : runs) total += run.seconds;
+      seconds.push_back(total);
+    }
+    const double median = percentile(seconds, 0.5);
+    const double load = median * mode.frequency;
+    const double per_point = points > 0 ? median * static_cast<double>(clouds.size()) / static_cast<double>(points) : 0.0;
+    total_load += load;
+    table.add_row({mount.id, std::to_string(points / clouds.size()), std::to_string(kept / clouds.size()),
+                   fixed(median * 1e3, 2), fixed(percentile(seconds, 0.95) * 1e3, 2), fixed(mode.frequency, 0),
+                   fixed(load, 3), format_number(per_point, 3)});
+    report["mounts"].push_back({{"mount", mount.id}, {"points_per_frame", points / clouds.size()},
+                                {"median_s", median}, {"filtering_load_cores", load},
+                                {"filtering_seconds_per_point", per_point}});
+  }
+  report["total_filtering_load_cores"] = total_load;
+  if (options.json) {
+    out << report.dump(2) << '\n';
+    return kOk;
+  }
+  out << inputs.rig.name << " in the " << options.scene << " scene, pipeline " << pipeline.name << ", "
+      << options.frames << " frames per sensor (single thread, this machine)\n";
+  table.print(out, "  ");
+  out << "  total filtering load U_f = " << fixed(total_load, 3)
+      << " core-equivalents of this machine; `s per point` is what a catalog's "
+         "filtering_seconds_per_point takes\n";
+  return kOk;
+}
+
 int run_filter(const FilterOptions& options, std::ostream& out) {
   require_option(options.repeat >= 1 && options.repeat <= 10000, "--repeat", "is out of range", "1 to 10000 runs");
+  const Pipeline pipeline = pipeline_named(options.pipeline);
+  if (!options.scene.empty()) {
+    require_option(!options.rig.empty() && options.clouds.empty(), "--scene", "needs --rig and no --cloud",
+                   "--rig RIG --scene NAME [--frames N]");
+    return run_filter_on_scene(options, pipeline, out);
+  }
+  require_option(!options.clouds.empty(), "--cloud", "is missing", "--cloud FILE..., or --rig RIG --scene NAME");
   require_option(options.rig.empty() == options.mount.empty(), "--mount",
                  "needs --rig (and --rig needs --mount)", "--rig RIG --mount ID together");
-  const Pipeline pipeline = pipeline_named(options.pipeline);
   std::optional<RigInputs> rig;
   const Mount* mount = nullptr;
   const SensorMode* mode = nullptr;
@@ -178,7 +246,10 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
 Command setup_filter(CLI::App& parent) {
   auto options = std::make_shared<FilterOptions>();
   CLI::App* app = parent.add_subcommand("filter", "Run a point-cloud filter pipeline and time each stage");
-  app->add_option("--cloud", options->clouds, "PCD or PLY clouds")->required();
+  app->add_option("--cloud", options->clouds, "PCD or PLY clouds");
+  app->add_option("--scene", options->scene, "Simulate the --rig's sensors in this scene instead of --cloud");
+  app->add_option("--frames", options->frames, "Simulated frames per sensor with --scene (default 20)");
+  app->add_option("--seed", options->seed, "Seed of the simulated scene and noise (default 1)");
   app->add_option("--pipeline", options->pipeline, "P1, P2, P3, P4 or a pipeline YAML file (default P4)");
   app->add_option("--rig", options->rig, "Rig whose mount recorded the clouds");
   app->add_option("--mount", options->mount, "Mount id in --rig: moves the clouds into the robot frame");

@@ -1,0 +1,21 @@
+#pragma once
+/// A whole rig in a scene: the robot stands at the scene's start pose and every mount
+/// records frames at its own rate; clouds come back in the robot frame (or each sensor's),
+/// with the sensor origin recorded.
+#include <cstdint>
+#include <vector>
+
+#include "rigdesign/model/point_cloud.hpp"
+#include "rigdesign/model/rig.hpp"
+#include "rigdesign/sim/scene.hpp"
+#include "rigdesign/sim/sensor_simulator.hpp"
+
+namespace rigdesign {
+
+/// `frames` clouds of `mount` (mode `mode`), frame k at t = k / frequency. Deterministic
+/// for a seed: each mount draws from its own stream seeded with (seed, mount index).
+std::vector<PointCloud> simulate_mount(const Scene& scene, const Mount& mount, const SensorMode& mode,
+                                       std::size_t mount_index, int frames, std::uint64_t seed,
+                                       const SimulationSettings& settings = {});
+
+}  // namespace rigdesign
