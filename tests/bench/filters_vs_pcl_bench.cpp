@@ -22,6 +22,9 @@
 #include "rigdesign/io/cloud_io.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
+#include "rigdesign/io/rig_loader.hpp"
+#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/sim/rig_simulation.hpp"
 
 namespace {
 
@@ -112,11 +115,22 @@ PclCloud::Ptr pcl_floor_1(const PclCloud::Ptr& in) {
   return out;
 }
 
-// Floor removal 2 in PCL: plane on a 30 cm voxel copy, then every point within 3 cm removed.
+// Floor removal 2 in PCL: a plane within 15 degrees of horizontal on a 30 cm voxel copy (as
+// ours), then every point within 3 cm of it removed.
 PclCloud::Ptr pcl_floor_2(const PclCloud::Ptr& in) {
   const PclCloud::Ptr coarse = pcl_voxel(in, 0.30f);
   pcl::ModelCoefficients c;
-  pcl_plane(coarse, c);
+  pcl::PointIndices inliers;
+  pcl::SACSegmentation<pcl::PointXYZ> segmentation;
+  segmentation.setOptimizeCoefficients(true);
+  segmentation.setModelType(pcl::SACMODEL_PERPENDICULAR_PLANE);
+  segmentation.setAxis(Eigen::Vector3f::UnitZ());
+  segmentation.setEpsAngle(15.0 * M_PI / 180.0);
+  segmentation.setMethodType(pcl::SAC_RANSAC);
+  segmentation.setMaxIterations(100);
+  segmentation.setDistanceThreshold(0.03);
+  segmentation.setInputCloud(coarse);
+  if (!coarse->empty()) segmentation.segment(inliers, c);
   PclCloud::Ptr out(new PclCloud);
   if (c.values.size() != 4) return in;
   for (const auto& p : *in) {
@@ -198,6 +212,14 @@ PointCloud mounted(const PointCloud& optical) {
 int main() {
   const std::string folder = std::string(RIGDESIGN_SOURCE_DIR) + "/../shared/data/real";
   std::printf("ours vs PCL %s, single thread, %d runs per figure (medians)\n", PCL_VERSION_PRETTY, kRuns);
+  {  // A simulated Azure Kinect NFOV unbinned frame of the office, from the UR Cleaner's front.
+    const SensorLibrary library = load_sensor_library(std::string(RIGDESIGN_SOURCE_DIR) + "/sensors.yaml");
+    const Rig rig = load_rig(std::string(RIGDESIGN_SOURCE_DIR) + "/rigs/ur_cleaner.yaml");
+    const Mount& front = rig.mounts.front();
+    const SensorMode& mode = *library.find(front.sensor_id)->find_mode(front.mode_id);
+    const PointCloud frame = simulate_mount(make_scene("office", 1), front, mode, 0, 1, 1).front();
+    compare("simulated Azure Kinect NFOV frame, office scene (robot frame)", frame);
+  }
   for (const char* file : {"office1.pcd", "five_people.pcd", "table_scene_mug_stereo_textured.pcd",
                            "kinect_frame_20121214T142255.814212.pcd", "milk_cartoon_all_small_clorox.pcd"}) {
     const std::string path = folder + "/" + file;
