@@ -94,10 +94,7 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
       }
       case FileKind::catalog: {
         const Catalog catalog = load_catalog(path);
-        const std::string library_path = catalog.sensor_library.empty()
-                                             ? (sensors_path.empty() ? bundled_sensor_library() : sensors_path)
-                                             : resolve_beside(path, catalog.sensor_library);
-        check_catalog_references(catalog, load_sensor_library(library_path)).throw_if_errors();
+        check_catalog_references(catalog, load_catalog_library(catalog, sensors_path)).throw_if_errors();
         report.summary = "catalog '" + catalog.name + "' is valid: " +
                          std::to_string(catalog.slots.size()) + " slots, " +
                          std::to_string(catalog.sensors.size()) + " candidate sensors";

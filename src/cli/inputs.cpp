@@ -69,4 +69,18 @@ RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensor
   return inputs;
 }
 
+SensorLibrary load_catalog_library(const Catalog& catalog, const std::string& sensors_path) {
+  std::string path = sensors_path;
+  if (path.empty() && !catalog.sensor_library.empty()) {
+    path = resolve_beside(catalog.file, catalog.sensor_library);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) {
+      throw InputError(Diagnostic{catalog.sensor_library_where, "sensor_library",
+                                  "names '" + path + "', which does not exist",
+                                  "a path relative to the catalog file"});
+    }
+  }
+  return load_sensor_library(path.empty() ? bundled_sensor_library() : path);
+}
+
 }  // namespace rigdesign::cli

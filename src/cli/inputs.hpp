@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/catalog.hpp"
 #include "rigdesign/model/requirements.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
@@ -23,5 +24,9 @@ struct RigInputs {
 /// Throws InputError with every error found (and the warnings).
 RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensors_path,
                           const std::string& requirements_path);
+
+/// The sensor library a catalog uses: `sensors_path` when not empty, else the catalog's own
+/// `sensor_library` (an error at that field when it does not exist), else the bundled one.
+SensorLibrary load_catalog_library(const Catalog& catalog, const std::string& sensors_path);
 
 }  // namespace rigdesign::cli

@@ -29,12 +29,6 @@ struct MetricsOptions {
 
 std::string yes_no(bool value) { return value ? "yes" : "no"; }
 
-std::string join(const std::vector<std::string>& items) {
-  std::string text;
-  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
-}
-
 std::string marked(double value, int decimals, Basis basis) {
   return fixed(value, decimals) + (basis == Basis::estimate ? "*" : "");
 }

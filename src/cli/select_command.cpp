@@ -13,12 +13,11 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "inputs.hpp"
 #include "select_report.hpp"
 #include "rigdesign/io/catalog_loader.hpp"
 #include "rigdesign/io/policy_loader.hpp"
 #include "rigdesign/io/requirements_loader.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
-#include "rigdesign/io/sensor_library_locator.hpp"
 #include "rigdesign/select/relaxation.hpp"
 
 namespace rigdesign::cli {
@@ -35,20 +34,6 @@ struct SelectOptions {
   bool json = false;
   bool no_renders = false;
 };
-
-SensorLibrary load_catalog_library(const Catalog& catalog, const std::string& sensors_path) {
-  std::string path = sensors_path;
-  if (path.empty() && !catalog.sensor_library.empty()) {
-    path = resolve_beside(catalog.file, catalog.sensor_library);
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error)) {
-      throw InputError(Diagnostic{catalog.sensor_library_where, "sensor_library",
-                                  "names '" + path + "', which does not exist",
-                                  "a path relative to the catalog file"});
-    }
-  }
-  return load_sensor_library(path.empty() ? bundled_sensor_library() : path);
-}
 
 int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.budget > 0, "--budget", "is missing or not positive",

@@ -167,11 +167,7 @@ PointCloud parse_pcd(const std::string& path, std::string_view bytes, CloudReadR
     }
   }
   report.dropped_non_finite = collected.dropped_non_finite;
-  PointCloud cloud;
-  cloud.points = std::move(collected.points);
-  cloud.origin = header.origin;
-  cloud.orientation = header.orientation;
-  return cloud;
+  return std::move(collected).into_cloud(header.origin, header.orientation);
 }
 
 std::string encode_pcd(const PointCloud& cloud, CloudEncoding encoding) {

@@ -139,11 +139,7 @@ PointCloud parse_ply(const std::string& path, std::string_view bytes, CloudReadR
     read_binary_body(path, bytes, header, collected);
   }
   report.dropped_non_finite = collected.dropped_non_finite;
-  PointCloud cloud;
-  cloud.points = std::move(collected.points);
-  cloud.origin = header.origin;
-  cloud.orientation = header.orientation;
-  return cloud;
+  return std::move(collected).into_cloud(header.origin, header.orientation);
 }
 
 std::string encode_ply(const PointCloud& cloud, CloudEncoding encoding) {

@@ -72,4 +72,12 @@ bool collect_points(std::string_view bytes, std::size_t count,
   return true;
 }
 
+PointCloud CollectedPoints::into_cloud(const Point3f& origin, const Eigen::Quaternionf& orientation) && {
+  PointCloud cloud;
+  cloud.points = std::move(points);
+  cloud.origin = origin;
+  cloud.orientation = orientation;
+  return cloud;
+}
+
 }  // namespace rigdesign::io

@@ -28,6 +28,9 @@ struct CollectedPoints {
 
   /// Keeps `point` when all three coordinates are finite, counts it as dropped otherwise.
   void keep_if_finite(const Point3f& point);
+
+  /// The cloud of the kept points with the file's sensor pose.
+  PointCloud into_cloud(const Point3f& origin, const Eigen::Quaternionf& orientation) &&;
 };
 
 /// A double as the nearest float; beyond float's range, an infinity of its sign (which

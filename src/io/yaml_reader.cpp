@@ -1,5 +1,7 @@
 #include "io/yaml_reader.hpp"
 
+#include "rigdesign/model/format_number.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -10,15 +12,6 @@
 
 namespace rigdesign::io {
 namespace {
-
-std::string join(const std::vector<std::string>& names, const std::string& separator) {
-  std::string text;
-  for (const std::string& name : names) {
-    if (!text.empty()) text += separator;
-    text += name;
-  }
-  return text;
-}
 
 std::string describe_kind(const YAML::Node& node) {
   switch (node.Type()) {

@@ -11,12 +11,6 @@ namespace {
 // Body dimensions agree when within this [m]: files round to millimetres.
 constexpr double kBodyTolerance = 1e-3;
 
-std::string join(const std::vector<std::string>& items) {
-  std::string text;
-  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
-}
-
 RequirementResult named(std::string id, std::string title, std::string field, std::string metric,
                         std::string unit, SourceLocation where) {
   RequirementResult result;

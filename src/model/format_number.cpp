@@ -10,4 +10,13 @@ std::string format_number(double value, int digits) {
   return buffer;
 }
 
+std::string join(const std::vector<std::string>& items, const std::string& separator) {
+  std::string text;
+  for (const std::string& item : items) {
+    if (!text.empty()) text += separator;
+    text += item;
+  }
+  return text;
+}
+
 }  // namespace rigdesign
