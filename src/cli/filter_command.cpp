@@ -9,14 +9,18 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <ostream>
+#include <thread>
 
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "rigdesign/filters/pipeline.hpp"
+#include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/cloud_io.hpp"
+#include "rigdesign/io/filtering_loads_io.hpp"
 #include "rigdesign/io/pipeline_loader.hpp"
 #include "rigdesign/metrics/mount_metrics.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -36,6 +40,7 @@ struct FilterOptions {
   std::string mount;
   std::string frame = "optical";
   std::string out;
+  std::string write_loads;
   int repeat = 10;
   bool json = false;
 };
@@ -84,6 +89,41 @@ double peak_memory_mib() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
+std::string describe_machine() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string model = "unknown CPU";
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return std::to_string(std::thread::hardware_concurrency()) + " cores, " + model + ", one thread";
+}
+
+// Two mounts of one sensor (three pico flexx, say) share its entry: the slower per point counts.
+void record_load(FilteringLoads& loads, const FilteringLoad& load) {
+  for (FilteringLoad& existing : loads.sensors) {
+    if (existing.sensor_id == load.sensor_id) {
+      if (load.seconds_per_point > existing.seconds_per_point) existing = load;
+      return;
+    }
+  }
+  loads.sensors.push_back(load);
+}
+
+// Merged into what the file already holds, so loads measured on several rigs collect there.
+void write_loads(const std::string& path, const FilteringLoads& measured, const std::string& rig_file) {
+  std::error_code error;
+  const FilteringLoads previous =
+      std::filesystem::is_regular_file(path, error) ? load_filtering_loads(path) : FilteringLoads{};
+  const std::string comment =
+      "Measured filtering load per delivered point (paper 1, eq. 5: U_f = seconds_per_point x points/s),\n"
+      "written by `rigdesign filter --write-loads` (last: " + rig_file + "). Catalogs read it through\n"
+      "`filtering_loads:`; `rigdesign metrics --filtering-loads` prints U_f from it.";
+  write_file_atomically(path, filtering_loads_to_yaml(merge_filtering_loads(previous, measured), comment));
+}
+
 // Every mount of the rig in a synthetic scene: its frames through the pipeline, and the
 // filtering load U_f = median time per frame x frame rate (paper 1, eq. 5).
 int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, std::ostream& out) {
@@ -101,6 +141,7 @@ int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, 
   nlohmann::json report = {{"pipeline", pipeline.name}, {"scene", options.scene}, {"frames", options.frames},
                            {"mounts", nlohmann::json::array()}};
   double total_load = 0.0;
+  FilteringLoads measured{describe_machine(), pipeline.name, options.scene, options.frames, {}, {}};
   for (std::size_t i = 0; i < inputs.rig.mounts.size(); ++i) {
     const Mount& mount = inputs.rig.mounts[i];
     const SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
@@ -125,7 +166,10 @@ int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, 
     report["mounts"].push_back({{"mount", mount.id}, {"points_per_frame", points / clouds.size()},
                                 {"median_s", median}, {"filtering_load_cores", load},
                                 {"filtering_seconds_per_point", per_point}});
+    record_load(measured, {mount.sensor_id, mount.mode_id, per_point,
+                           static_cast<double>(points) / static_cast<double>(clouds.size()), median, {}});
   }
+  if (!options.write_loads.empty()) write_loads(options.write_loads, measured, inputs.rig.file);
   report["total_filtering_load_cores"] = total_load;
   if (options.json) {
     out << report.dump(2) << '\n';
@@ -137,6 +181,7 @@ int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, 
   out << "  total filtering load U_f = " << fixed(total_load, 3)
       << " core-equivalents of this machine; `s per point` is what a catalog's "
          "filtering_seconds_per_point takes\n";
+  if (!options.write_loads.empty()) out << "  wrote the loads per sensor to " << options.write_loads << '\n';
   return kOk;
 }
 
@@ -149,6 +194,8 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
     return run_filter_on_scene(options, pipeline, out);
   }
   require_option(!options.clouds.empty(), "--cloud", "is missing", "--cloud FILE..., or --rig RIG --scene NAME");
+  require_option(options.write_loads.empty(), "--write-loads", "needs --scene",
+                 "--rig RIG --scene NAME --write-loads FILE: loads are measured on every mount's simulated frames");
   require_option(options.rig.empty() == options.mount.empty(), "--mount",
                  "needs --rig (and --rig needs --mount)", "--rig RIG --mount ID together");
   std::optional<RigInputs> rig;
@@ -257,6 +304,8 @@ Command setup_filter(CLI::App& parent) {
       ->check(CLI::IsMember({"optical", "sensor", "robot"}));
   app->add_option("--repeat", options->repeat, "Runs per cloud for the timing statistics (default 10)");
   app->add_option("--out", options->out, "Write the filtered clouds (binary PCD) here");
+  app->add_option("--write-loads", options->write_loads,
+                  "With --scene: write each sensor's measured load to this file (catalogs read it)");
   app->add_flag("--json", options->json, "Print JSON");
   return {app, [options](std::ostream& out, std::ostream&) { return run_filter(*options, out); }};
 }

@@ -1,15 +1,17 @@
-// `rigdesign metrics RIG [--requirements FILE] [--sensors FILE] [--json]`: per-sensor and
+// `rigdesign metrics RIG [--requirements FILE] [--sensors FILE] [--filtering-loads FILE] [--json]`: per-sensor and
 // resultant F, R, N, L, bandwidth, driver CPU load and sensor cost (paper 1, section 2).
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <memory>
+#include <optional>
 #include <ostream>
 
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "json_report.hpp"
+#include "rigdesign/io/filtering_loads_io.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/metrics/resultant.hpp"
@@ -24,8 +26,44 @@ struct MetricsOptions {
   std::string rig;
   std::string requirements;
   std::string sensors;
+  std::string filtering_loads;
   bool json = false;
 };
+
+// U_f per mount from measured seconds per point (paper 1, eq. 5): load = s/point x points/s.
+struct FilteringLoadRow {
+  std::string mount_id;
+  std::optional<double> cores;  // unset: the sensor was not measured
+};
+
+std::vector<FilteringLoadRow> filtering_load_rows(const ResultantMetrics& metrics, const FilteringLoads& loads) {
+  std::vector<FilteringLoadRow> rows;
+  for (const MountMetrics& mount : metrics.mounts) {
+    const FilteringLoad* load = loads.find(mount.sensor_id);
+    rows.push_back({mount.mount_id, load ? std::optional<double>(load->seconds_per_point * mount.points_per_second)
+                                         : std::nullopt});
+  }
+  return rows;
+}
+
+double total_cores(const std::vector<FilteringLoadRow>& rows) {
+  double total = 0.0;
+  for (const FilteringLoadRow& row : rows) total += row.cores.value_or(0.0);
+  return total;
+}
+
+void print_filtering_load(const FilteringLoads& loads, const std::vector<FilteringLoadRow>& rows,
+                          double driver_cpu, std::ostream& out) {
+  std::vector<std::string> parts, missing;
+  for (const FilteringLoadRow& row : rows) {
+    if (row.cores) parts.push_back(row.mount_id + " " + fixed(*row.cores, 3));
+    else missing.push_back(row.mount_id);
+  }
+  out << "  U_f = " << fixed(total_cores(rows), 3) << " core-equivalents (" << join(parts) << "), measured with "
+      << loads.pipeline << " on " << loads.machine << " (" << loads.file << ")\n";
+  if (!missing.empty()) out << "        not measured: " << join(missing) << '\n';
+  out << "  U   = U_p + U_f = " << fixed(driver_cpu + total_cores(rows), 2) << " core-equivalents\n";
+}
 
 std::string yes_no(bool value) { return value ? "yes" : "no"; }
 
@@ -107,7 +145,7 @@ void print_coverage(const RigCoverage& coverage, std::ostream& out) {
 
 void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
                 const RigCoverage& coverage, const std::vector<RequirementResult>& results,
-                std::ostream& out) {
+                const std::optional<FilteringLoads>& loads, std::ostream& out) {
   const Rig& rig = inputs.rig;
   out << "Rig: " << rig.name << "  (" << rig.file << ", sensors from " << inputs.library.file
       << ")\n";
@@ -128,6 +166,7 @@ void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
       << fixed(metrics.bandwidth * 8 / 1e6, 1) << " Mbit/s)\n";
   out << "  U_p = " << fixed(metrics.driver_cpu, 2) << " core-equivalents of "
       << inputs.library.reference_machine << '\n';
+  if (loads) print_filtering_load(*loads, filtering_load_rows(metrics, *loads), metrics.driver_cpu, out);
   out << "  C_s = " << fixed(metrics.sensor_cost, 0) << " USD\n";
   if (metrics.any_estimate) out << "  * estimate, not a datasheet or measured value\n";
   print_coverage(coverage, out);
@@ -163,8 +202,17 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
   if (inputs.requirements) {
     results = evaluate_requirements(inputs.rig, metrics, *inputs.requirements, &coverage);
   }
+  std::optional<FilteringLoads> loads;
+  if (!options.filtering_loads.empty()) loads = load_filtering_loads(options.filtering_loads);
   if (options.json) {
     nlohmann::json report = to_json(inputs, metrics);
+    if (loads) {
+      const std::vector<FilteringLoadRow> rows = filtering_load_rows(metrics, *loads);
+      nlohmann::json mounts = nlohmann::json::object();
+      for (const FilteringLoadRow& row : rows) mounts[row.mount_id] = row.cores ? nlohmann::json(*row.cores) : nlohmann::json();
+      report["filtering_load"] = {{"file", loads->file}, {"pipeline", loads->pipeline}, {"machine", loads->machine},
+                                  {"mounts_cores", mounts}, {"total_cores", total_cores(rows)}};
+    }
     report["coverage"] = to_json(coverage, false);
     if (inputs.requirements) {
       nlohmann::json list = nlohmann::json::array();
@@ -173,7 +221,7 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
     }
     out << report.dump(2) << '\n';
   } else {
-    print_text(inputs, metrics, coverage, results, out);
+    print_text(inputs, metrics, coverage, results, loads, out);
   }
   return kOk;
 }
@@ -191,6 +239,8 @@ Command setup_metrics(CLI::App& parent) {
   app->add_option("--sensors", options->sensors,
                   "Sensor library (default: the rig's sensor_library, else a sensors.yaml in "
                   "the rig's folder or above, else the bundled one)");
+  app->add_option("--filtering-loads", options->filtering_loads,
+                  "Measured filtering loads (`rigdesign filter --write-loads`): adds U_f per mount");
   app->add_flag("--json", options->json, "Print JSON instead of tables");
   return {app, [options](std::ostream& out, std::ostream&) { return run_metrics(*options, out); }};
 }

@@ -1,7 +1,13 @@
 #pragma once
 // A uniform grid over a cloud, points bucketed by cell (counting sort), for exact k-nearest
-// neighbour queries that search rings of cells outward and stop once no closer point can
-// exist. Private to filters.
+// neighbour queries. Private to filters.
+//
+// Why it beats a k-d tree on filter clouds: points sorted by cell put each row of cells
+// (consecutive x) in one contiguous run, so the 3 x 3 x 3 block around a point is nine runs
+// of structure-of-arrays coordinates whose distances vectorise; a bound carried over from the
+// previous query (neighbours in cell order have alike spacing) keeps the selection to a
+// handful of survivors. Rings of cells further out are searched only when the block cannot
+// prove the answer.
 #include <cstdint>
 #include <vector>
 
@@ -9,15 +15,23 @@
 
 namespace rigdesign::filters {
 
+/// Reusable buffers of one thread's queries, and the bound carried from query to query.
+struct NeighbourScratch {
+  std::vector<float> distances;  ///< squared, every candidate of the current query
+  std::vector<float> nearest;    ///< squared, the answer's k smallest (unordered)
+  float bound = 0.0f;            ///< squared distance: the previous answer's k-th, widened
+};
+
 class NeighbourGrid {
  public:
   /// `cell` > 0 [m].
   NeighbourGrid(const std::vector<Point3f>& points, double cell);
 
-  /// Squared distances to the k nearest other points of the point at position `rank` of the
-  /// grid's cell order, ascending, written to `distances` (fewer when the cloud has fewer
-  /// points). Visiting points in cell order keeps neighbouring cells in cache.
-  void nearest(std::uint32_t rank, int k, std::vector<float>& distances) const;
+  /// The squared distances to the k nearest other points of the point at position `rank` of
+  /// the grid's cell order, unordered, in `scratch.nearest` (fewer when the cloud has fewer
+  /// points). Visiting points in cell order keeps neighbouring cells in cache and the bound
+  /// tight.
+  void nearest(std::uint32_t rank, int k, NeighbourScratch& scratch) const;
 
   /// The input index of the point at position `rank` of the cell order.
   std::uint32_t index_at(std::uint32_t rank) const { return sorted_[rank]; }
@@ -27,14 +41,19 @@ class NeighbourGrid {
 
  private:
   std::size_t cell_of(const Eigen::Array3i& cell) const;
+  /// Appends the squared distances from p to every point ranked [begin, end).
+  void append_distances(const Point3f& p, std::uint32_t begin, std::uint32_t end,
+                        std::vector<float>& out) const;
+  /// How far p is from the nearest face of its own cell.
+  float inset(std::uint32_t rank) const;
+  void nearest_by_rings(std::uint32_t rank, int k, NeighbourScratch& scratch) const;
 
-  const std::vector<Point3f>& points_;
   float cell_;
   Eigen::Array3f low_;
   Eigen::Array3i dims_;
   std::vector<std::uint32_t> cell_start_;  // prefix sums, size cells + 1
   std::vector<std::uint32_t> sorted_;      // point indices grouped by cell
-  std::vector<Point3f> sorted_points_;     // the points in that order, contiguous
+  std::vector<float> x_, y_, z_;           // the points in that order, one array per axis
   std::vector<Eigen::Array3i> sorted_cell_;
   std::size_t occupied_ = 0;
 };

@@ -29,14 +29,14 @@ std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,
   const double cell = params.cell > 0 ? params.cell : filters::estimate_cell(cloud.points, params.neighbours);
   const filters::NeighbourGrid grid(cloud.points, cell);
   std::vector<double> mean_distance(cloud.size());
-  std::vector<float> distances;
+  filters::NeighbourScratch scratch;
   double sum = 0.0;
   double sum_squares = 0.0;
   for (std::uint32_t rank = 0; rank < cloud.size(); ++rank) {  // in the grid's cell order
-    grid.nearest(rank, params.neighbours, distances);
+    grid.nearest(rank, params.neighbours, scratch);
     double total = 0.0;
-    for (const float d2 : distances) total += std::sqrt(static_cast<double>(d2));
-    const double mean = total / static_cast<double>(distances.size());
+    for (const float d2 : scratch.nearest) total += std::sqrt(static_cast<double>(d2));
+    const double mean = total / static_cast<double>(scratch.nearest.size());
     mean_distance[grid.index_at(rank)] = mean;
     sum += mean;
     sum_squares += mean * mean;

@@ -1,11 +1,13 @@
 #include "rigdesign/io/catalog_loader.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <set>
 
 #include "io/field_checks.hpp"
 #include "io/placement_fields.hpp"
 #include "io/yaml_reader.hpp"
+#include "rigdesign/io/filtering_loads_io.hpp"
 
 namespace rigdesign {
 namespace {
@@ -45,6 +47,20 @@ PricedCapacity read_priced(MapReader& reader, const std::string& capacity_key,
   return item;
 }
 
+/// The measured loads file named by `filtering_loads` (relative to the catalog), if any.
+std::optional<FilteringLoads> read_measured_loads(MapReader& top, const std::string& catalog_path) {
+  const std::optional<std::string> name = top.text("filtering_loads", Need::optional);
+  if (!name) return std::nullopt;
+  const std::filesystem::path resolved = std::filesystem::path(catalog_path).parent_path() / *name;
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(resolved, error)) {
+    throw InputError(Diagnostic{top.location("filtering_loads"), top.field("filtering_loads"),
+                                "'" + resolved.string() + "' does not exist",
+                                "a file written by `rigdesign filter --write-loads`, relative to the catalog"});
+  }
+  return load_filtering_loads(resolved.string());
+}
+
 }  // namespace
 
 Catalog load_catalog(const std::string& path) {
@@ -76,6 +92,7 @@ Catalog load_catalog(const std::string& path) {
   catalog.filtering_seconds_per_point =
       io::non_negative(top, "filtering_seconds_per_point", Need::required,
                        "core-seconds of point filtering per delivered point, >= 0");
+  const std::optional<FilteringLoads> measured = read_measured_loads(top, path);
   const std::optional<UrdfPoses> urdf = io::read_urdf(top, path);
 
   std::set<std::string> seen;
@@ -87,6 +104,10 @@ Catalog load_catalog(const std::string& path) {
     if (reader.has("filtering_seconds_per_point")) {
       candidate.filtering_seconds_per_point = io::non_negative(
           reader, "filtering_seconds_per_point", Need::required, "core-seconds per point, >= 0");
+    }
+    const FilteringLoad* load = measured ? measured->find(candidate.sensor_id) : nullptr;
+    if (!candidate.filtering_seconds_per_point && load != nullptr) {
+      candidate.filtering_seconds_per_point = load->seconds_per_point;
     }
     reader.reject_unknown_keys();
     if (!candidate.sensor_id.empty() && !seen.insert(candidate.sensor_id).second) {

@@ -14,7 +14,8 @@ namespace rigdesign {
 struct CandidateSensor {
   std::string sensor_id;
   std::vector<std::string> mode_ids;
-  /// Filtering load U_f per delivered point [core-seconds], overriding the catalog's.
+  /// Filtering load U_f per delivered point [core-seconds], overriding the catalog's: given
+  /// on the candidate, or measured for its sensor in the catalog's `filtering_loads` file.
   std::optional<double> filtering_seconds_per_point;
   SourceLocation where;
 };
@@ -46,7 +47,7 @@ struct Catalog {
   std::vector<MountingSlot> slots;
   std::vector<PricedCapacity> transfer;
   std::vector<PricedCapacity> cpus;
-  /// Filtering load per delivered point [core-seconds] until the filter benchmark measures it.
+  /// Filtering load per delivered point [core-seconds] of sensors no measurement covers.
   double filtering_seconds_per_point = 0.0;
   std::string reference_machine;  ///< what a CPU's core-equivalent means
   std::string file;
