@@ -1,6 +1,7 @@
 #include "rigdesign/filters/floor_removal.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "rigdesign/filters/statistical_outlier.hpp"
 
@@ -24,6 +25,22 @@ PointCloud without(const PointCloud& cloud, std::vector<std::uint32_t> removed) 
   return result;
 }
 
+// One pass that keeps what lies beyond `threshold` of the plane: no index list to build, sort
+// and walk again as `without` needs for a subset's inliers.
+PointCloud far_from_plane(const PointCloud& cloud, const PlaneFit& plane, double threshold) {
+  PointCloud result;
+  result.origin = cloud.origin;
+  result.orientation = cloud.orientation;
+  result.points.reserve(cloud.size());
+  const Eigen::Vector3f normal = plane.normal.cast<float>();
+  const float offset = static_cast<float>(plane.offset);
+  const float limit = static_cast<float>(threshold);
+  for (const Point3f& p : cloud.points) {
+    if (std::abs(normal.dot(p) + offset) > limit) result.points.push_back(p);
+  }
+  return result;
+}
+
 }  // namespace
 
 PointCloud remove_floor_1(const PointCloud& cloud, const FloorRemoval1Params& params) {
@@ -39,7 +56,7 @@ PointCloud remove_floor_2(const PointCloud& cloud, const FloorRemoval2Params& pa
   const PointCloud sparse = voxel_grid(cloud, coarse);
   const PlaneFit floor = fit_plane_ransac(sparse, params.ransac);
   if (!floor.found) return cloud;
-  return without(cloud, points_near_plane(cloud, floor, params.ransac.threshold));
+  return far_from_plane(cloud, floor, params.ransac.threshold);
 }
 
 PointCloud mark_negative_obstacles(const PointCloud& cloud, const NegativeObstacleParams& params) {

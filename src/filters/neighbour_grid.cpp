@@ -77,114 +77,86 @@ double NeighbourGrid::mean_occupancy() const {
   return occupied_ == 0 ? 0.0 : static_cast<double>(sorted_.size()) / static_cast<double>(occupied_);
 }
 
-void NeighbourGrid::append_distances(const Point3f& p, std::uint32_t begin, std::uint32_t end,
-                                     std::vector<float>& out) const {
-  const std::size_t old_size = out.size();
-  out.resize(old_size + (end - begin));
+std::size_t NeighbourGrid::append_distances(const Point3f& p, std::uint32_t begin, std::uint32_t end,
+                                            std::vector<float>& out, std::size_t size) const {
+  if (out.size() < size + (end - begin)) out.resize(2 * (size + (end - begin)));
   const float* __restrict xs = x_.data() + begin;
   const float* __restrict ys = y_.data() + begin;
   const float* __restrict zs = z_.data() + begin;
-  float* __restrict squared = out.data() + old_size;
+  float* __restrict squared = out.data() + size;
   const float px = p.x(), py = p.y(), pz = p.z();
   for (std::uint32_t i = 0; i < end - begin; ++i) {  // vectorised by the compiler
     const float dx = xs[i] - px, dy = ys[i] - py, dz = zs[i] - pz;
     squared[i] = dx * dx + dy * dy + dz * dz;
   }
-}
-
-float NeighbourGrid::inset(std::uint32_t rank) const {
-  const Eigen::Array3f p(x_[rank], y_[rank], z_[rank]);
-  const Eigen::Array3f cell_low = low_ + sorted_cell_[rank].cast<float>() * cell_;
-  return std::min((p - cell_low).minCoeff(), (cell_low + cell_ - p).minCoeff());
+  return size + (end - begin);
 }
 
 void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch) const {
   const Point3f p(x_[rank], y_[rank], z_[rank]);
-  const Eigen::Array3i centre = sorted_cell_[rank];
-  const Eigen::Array3i from = (centre - 1).max(0);
-  const Eigen::Array3i to = (centre + 1).min(dims_ - 1);
+  const Eigen::Array3f position = p.array();
   std::vector<float>& candidates = scratch.distances;
-  candidates.clear();
-  std::size_t self = 0;
-  for (int z = from.z(); z <= to.z(); ++z) {
-    for (int y = from.y(); y <= to.y(); ++y) {  // cells (from.x .. to.x, y, z): one run
-      const std::uint32_t begin = cell_start_[cell_of({from.x(), y, z})];
-      const std::uint32_t end = cell_start_[cell_of({to.x(), y, z}) + 1];
-      if (y == centre.y() && z == centre.z()) self = candidates.size() + (rank - begin);
-      append_distances(p, begin, end, candidates);
-    }
-  }
-  candidates[self] = kInfinity;
-  const std::size_t wanted = static_cast<std::size_t>(k);
-  if (candidates.size() <= wanted) {  // fewer than k others in the block
-    nearest_by_rings(rank, k, scratch);
-    return;
-  }
-  // Every point outside the block is at least one cell plus the inset away.
-  const float reach = cell_ + inset(rank);
-  const float proven = reach * reach;
   std::vector<float>& answer = scratch.nearest;
-  answer.resize(candidates.size());
-  float kth = kInfinity;
-  std::size_t survivors = 0;
-  for (const float d2 : candidates) {  // branch-free compaction below the carried bound
-    answer[survivors] = d2;
-    survivors += d2 < scratch.bound ? 1 : 0;
-  }
-  if (survivors >= wanted) {
-    kth = select_smallest(answer.data(), survivors, wanted);
-  } else {
-    std::copy(candidates.begin(), candidates.end(), answer.begin());
-    kth = select_smallest(answer.data(), answer.size(), wanted);
-  }
-  if (kth > proven) {
-    nearest_by_rings(rank, k, scratch);
-    return;
-  }
-  answer.resize(wanted);
-  scratch.bound = kth * kBoundWidening;
-}
-
-void NeighbourGrid::nearest_by_rings(std::uint32_t rank, int k, NeighbourScratch& scratch) const {
-  std::vector<float>& distances = scratch.nearest;
-  distances.clear();
-  const Point3f p(x_[rank], y_[rank], z_[rank]);
-  const Eigen::Array3i centre = sorted_cell_[rank];
-  const float from_face = inset(rank);
-  const int max_ring = dims_.maxCoeff();
-  const auto consider = [&](std::uint32_t other) {
-    if (other == rank) return;
-    const float d2 = (Point3f(x_[other], y_[other], z_[other]) - p).squaredNorm();
-    if (static_cast<int>(distances.size()) == k) {
-      if (d2 >= distances.back()) return;
-      distances.pop_back();
-    }
-    distances.insert(std::upper_bound(distances.begin(), distances.end(), d2), d2);
-  };
-  for (int ring = 0; ring <= max_ring; ++ring) {
-    const Eigen::Array3i from = (centre - ring).max(0);
-    const Eigen::Array3i to = (centre + ring).min(dims_ - 1);
+  const std::size_t others_in_cloud = sorted_.size() - 1;
+  const std::size_t wanted = std::min(static_cast<std::size_t>(k), others_in_cloud);
+  answer.clear();
+  if (wanted == 0) return;
+  float bound = scratch.bound > 0 ? scratch.bound : cell_ * cell_;
+  for (;;) {
+    // Every point nearer than sqrt(bound) lies in a cell the ball touches: visit those, row by
+    // row, each row trimmed to the ball's chord. The ball is taken a hair larger than the
+    // bound so float rounding in the cell test cannot drop a point the distance test keeps.
+    const float radius = std::sqrt(bound) * (1.0f + 1e-5f) + 1e-7f;
+    // Truncation, not floor(): negative indices clamp to 0 either way, and the upper ends
+    // are never negative (p lies in the grid); floorf is a call on CPUs without SSE 4.1.
+    const Eigen::Array3i from = ((position - radius - low_) / cell_).cast<int>().max(0);
+    const Eigen::Array3i to = ((position + radius - low_) / cell_).cast<int>().min(dims_ - 1);
+    const auto gap = [&](int axis, int index) {  // from p to the cell's slab along one axis
+      const float lower = low_[axis] + static_cast<float>(index) * cell_;
+      return std::max({0.0f, lower - position[axis], position[axis] - (lower + cell_)});
+    };
+    std::size_t size = 0;
+    std::size_t self = std::numeric_limits<std::size_t>::max();
     for (int z = from.z(); z <= to.z(); ++z) {
-      const bool z_face = std::abs(z - centre.z()) == ring;
+      const float z_gap = gap(2, z);
+      const float z_room = radius * radius - z_gap * z_gap;
+      if (z_room < 0) continue;
       for (int y = from.y(); y <= to.y(); ++y) {
-        const bool yz_face = z_face || std::abs(y - centre.y()) == ring;
-        const auto scan = [&](int x) {
-          const std::size_t cell = cell_of({x, y, z});
-          for (std::uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) consider(s);
-        };
-        if (yz_face) {  // on a y or z face of the shell the whole row is new
-          for (int x = from.x(); x <= to.x(); ++x) scan(x);
-          continue;
-        }
-        // Inside the shell only its two x faces are new (when inside the grid).
-        if (centre.x() - ring >= 0) scan(centre.x() - ring);
-        if (ring > 0 && centre.x() + ring < dims_.x()) scan(centre.x() + ring);
+        const float y_gap = gap(1, y);
+        const float room = z_room - y_gap * y_gap;
+        if (room < 0) continue;
+        const float chord = std::sqrt(room);
+        const int x0 = std::max(from.x(), static_cast<int>((p.x() - chord - low_.x()) / cell_));
+        const int x1 = std::min(to.x(), static_cast<int>((p.x() + chord - low_.x()) / cell_));
+        if (x0 > x1) continue;
+        const std::uint32_t begin = cell_start_[cell_of({x0, y, z})];
+        const std::uint32_t end = cell_start_[cell_of({x1, y, z}) + 1];
+        if (rank >= begin && rank < end) self = size + (rank - begin);
+        size = append_distances(p, begin, end, candidates, size);
       }
     }
-    const float reach = static_cast<float>(ring) * cell_ + from_face;
-    if (static_cast<int>(distances.size()) == k && distances.back() <= reach * reach) break;
+    if (self < size) candidates[self] = kInfinity;
+    if (answer.size() < size) answer.resize(size);
+    std::size_t survivors = 0;
+    for (std::size_t i = 0; i < size; ++i) {  // branch-free compaction below the bound
+      answer[survivors] = candidates[i];
+      survivors += candidates[i] < bound ? 1 : 0;
+    }
+    // Index ranges spanning the grid do not mean the ball holds it: rows are trimmed.
+    const Eigen::Array3f high = low_ + dims_.cast<float>() * cell_;
+    const bool whole_grid = radius * radius >= (position - low_).max(high - position).square().sum();
+    if (survivors >= wanted || whole_grid) {
+      if (survivors < wanted) {  // the ball holds the whole grid: every other point counts
+        std::copy(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(size), answer.begin());
+        survivors = size;
+      }
+      const float kth = select_smallest(answer.data(), survivors, wanted);
+      answer.resize(wanted);
+      scratch.bound = kth * kBoundWidening;
+      return;
+    }
+    bound *= 4.0f;  // too few inside: twice the radius
   }
-  if (!distances.empty()) scratch.bound = distances.back() * kBoundWidening;
 }
 
 double estimate_cell(const std::vector<Point3f>& points, int per_cell) {

@@ -3,11 +3,11 @@
 // neighbour queries. Private to filters.
 //
 // Why it beats a k-d tree on filter clouds: points sorted by cell put each row of cells
-// (consecutive x) in one contiguous run, so the 3 x 3 x 3 block around a point is nine runs
-// of structure-of-arrays coordinates whose distances vectorise; a bound carried over from the
-// previous query (neighbours in cell order have alike spacing) keeps the selection to a
-// handful of survivors. Rings of cells further out are searched only when the block cannot
-// prove the answer.
+// (consecutive x) in one contiguous run of structure-of-arrays coordinates whose distances
+// vectorise. A query is a ball search whose radius is carried over from the previous query
+// (neighbours in cell order have alike spacing), widened a little: each row is trimmed to the
+// ball's chord, and if the ball holds k points the k nearest are among them (exact); if not,
+// the radius doubles.
 #include <cstdint>
 #include <vector>
 
@@ -17,7 +17,7 @@ namespace rigdesign::filters {
 
 /// Reusable buffers of one thread's queries, and the bound carried from query to query.
 struct NeighbourScratch {
-  std::vector<float> distances;  ///< squared, every candidate of the current query
+  std::vector<float> distances;  ///< squared, every candidate of the current query (capacity)
   std::vector<float> nearest;    ///< squared, the answer's k smallest (unordered)
   float bound = 0.0f;            ///< squared distance: the previous answer's k-th, widened
 };
@@ -29,8 +29,8 @@ class NeighbourGrid {
 
   /// The squared distances to the k nearest other points of the point at position `rank` of
   /// the grid's cell order, unordered, in `scratch.nearest` (fewer when the cloud has fewer
-  /// points). Visiting points in cell order keeps neighbouring cells in cache and the bound
-  /// tight.
+  /// points). Visiting points in cell order keeps neighbouring cells in cache and the carried
+  /// radius tight.
   void nearest(std::uint32_t rank, int k, NeighbourScratch& scratch) const;
 
   /// The input index of the point at position `rank` of the cell order.
@@ -41,12 +41,10 @@ class NeighbourGrid {
 
  private:
   std::size_t cell_of(const Eigen::Array3i& cell) const;
-  /// Appends the squared distances from p to every point ranked [begin, end).
-  void append_distances(const Point3f& p, std::uint32_t begin, std::uint32_t end,
-                        std::vector<float>& out) const;
-  /// How far p is from the nearest face of its own cell.
-  float inset(std::uint32_t rank) const;
-  void nearest_by_rings(std::uint32_t rank, int k, NeighbourScratch& scratch) const;
+  /// Writes the squared distances from p to every point ranked [begin, end) at out[size...],
+  /// growing `out` when needed; returns the new size.
+  std::size_t append_distances(const Point3f& p, std::uint32_t begin, std::uint32_t end,
+                               std::vector<float>& out, std::size_t size) const;
 
   float cell_;
   Eigen::Array3f low_;

@@ -61,6 +61,15 @@ bool refine(const PointCloud& cloud, const std::vector<std::uint32_t>& inliers, 
   return true;
 }
 
+// RANSAC's stopping rule: after k samples of 3, an all-inlier sample was missed with
+// probability (1 - w^3)^k; k is the smallest count that makes it 1 - confidence.
+double hypotheses_needed(double inlier_share, const RansacPlaneParams& params) {
+  const double all_inliers = inlier_share * inlier_share * inlier_share;
+  if (params.confidence >= 1.0 || all_inliers <= 0.0) return static_cast<double>(params.iterations);
+  if (all_inliers >= 1.0) return 1.0;
+  return std::log(1.0 - params.confidence) / std::log(1.0 - all_inliers);
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> points_near_plane(const PointCloud& cloud, const PlaneFit& plane,
@@ -87,7 +96,9 @@ PlaneFit fit_plane_ransac(const PointCloud& cloud, const RansacPlaneParams& para
   const double min_cos_tilt = params.max_tilt ? std::cos(*params.max_tilt) : -1.0;
   std::size_t best_count = 0;
   Eigen::Vector4f best_plane = Eigen::Vector4f::Zero();
-  for (int iteration = 0; iteration < params.iterations; ++iteration) {
+  double needed = static_cast<double>(params.iterations);
+  for (int iteration = 0; iteration < params.iterations && iteration < needed; ++iteration) {
+    fit.hypotheses = iteration + 1;
     const std::size_t a = pick(rng), b = pick(rng), c = pick(rng);
     const Eigen::Vector3f pa(columns.x[a], columns.y[a], columns.z[a]);
     const Eigen::Vector3f pb(columns.x[b], columns.y[b], columns.z[b]);
@@ -102,6 +113,7 @@ PlaneFit fit_plane_ransac(const PointCloud& cloud, const RansacPlaneParams& para
     if (count > best_count) {
       best_count = count;
       best_plane = plane;
+      needed = hypotheses_needed(static_cast<double>(count) / static_cast<double>(n), params);
     }
   }
   if (best_count < 3) return fit;

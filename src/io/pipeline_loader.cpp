@@ -27,6 +27,10 @@ RansacPlaneParams read_ransac(MapReader& m, RansacPlaneParams params) {
     params.iterations = *iterations;
   }
   read_positive(m, "threshold", params.threshold, "the inlier distance T in metres, > 0");
+  if (const auto confidence = m.number("confidence", Need::optional, "a probability in (0, 1]")) {
+    m.require(*confidence > 0 && *confidence <= 1, "confidence", "is out of range", "a probability in (0, 1]");
+    params.confidence = *confidence;
+  }
   if (const auto seed = m.integer("seed", Need::optional, "a non-negative integer")) {
     m.require(*seed >= 0, "seed", "must be >= 0", "a non-negative integer");
     params.seed = static_cast<std::uint64_t>(*seed);

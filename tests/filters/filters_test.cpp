@@ -29,6 +29,35 @@ std::vector<Point3f> noisy_floor(double size, double spacing, double sigma, std:
   return points;
 }
 
+// SOR's inliers by brute force: PCL's definition (mean distance to the k nearest others,
+// kept when within mean + 1 sample standard deviation), written independently.
+std::vector<std::uint32_t> brute_force_inliers(const std::vector<Point3f>& points, int k) {
+  std::vector<double> mean(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::vector<double> d;
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      if (j != i) d.push_back((points[i] - points[j]).cast<double>().norm());
+    }
+    const std::size_t used = std::min(d.size(), static_cast<std::size_t>(k));
+    std::partial_sort(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(used), d.end());
+    double sum = 0;
+    for (std::size_t n = 0; n < used; ++n) sum += d[n];
+    mean[i] = sum / static_cast<double>(used);
+  }
+  double sum = 0, squares = 0;
+  for (const double m : mean) {
+    sum += m;
+    squares += m * m;
+  }
+  const double n = static_cast<double>(mean.size());
+  const double threshold = sum / n + std::sqrt((squares - sum * sum / n) / (n - 1));
+  std::vector<std::uint32_t> expected;
+  for (std::uint32_t i = 0; i < mean.size(); ++i) {
+    if (mean[i] <= threshold) expected.push_back(i);
+  }
+  return expected;
+}
+
 }  // namespace
 
 TEST_CASE("voxel grid returns each voxel's centroid") {
@@ -72,30 +101,7 @@ TEST_CASE("statistical outlier removal matches a brute-force neighbour search") 
   std::vector<Point3f> points = noisy_floor(1.0, 0.02, 0.002, rng);
   for (int i = 0; i < 40; ++i) points.emplace_back(unit(rng), unit(rng), 0.2f + 0.5f * std::abs(unit(rng)));
   const PointCloud cloud = cloud_of(points);
-  // Brute force: PCL's definition, written independently.
-  const int k = 10;
-  std::vector<double> mean(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    std::vector<double> d;
-    for (std::size_t j = 0; j < points.size(); ++j) {
-      if (j != i) d.push_back((points[i] - points[j]).cast<double>().norm());
-    }
-    std::partial_sort(d.begin(), d.begin() + k, d.end());
-    double sum = 0;
-    for (int n = 0; n < k; ++n) sum += d[n];
-    mean[i] = sum / k;
-  }
-  double sum = 0, squares = 0;
-  for (const double m : mean) {
-    sum += m;
-    squares += m * m;
-  }
-  const double n = static_cast<double>(mean.size());
-  const double threshold = sum / n + std::sqrt((squares - sum * sum / n) / (n - 1));
-  std::vector<std::uint32_t> expected;
-  for (std::uint32_t i = 0; i < mean.size(); ++i) {
-    if (mean[i] <= threshold) expected.push_back(i);
-  }
+  const std::vector<std::uint32_t> expected = brute_force_inliers(points, 10);
   for (const double cell : {0.0, 0.01, 0.05, 0.5}) {  // the cell changes speed, never results
     StatisticalOutlierParams params;
     params.cell = cell;
@@ -106,6 +112,23 @@ TEST_CASE("statistical outlier removal matches a brute-force neighbour search") 
   const std::size_t floor_points = points.size() - 40;
   CHECK(std::count_if(kept.begin(), kept.end(), [&](std::uint32_t i) { return i >= floor_points; }) == 0);
   CHECK(static_cast<double>(kept.size()) >= 0.8 * static_cast<double>(floor_points));
+}
+
+TEST_CASE("statistical outlier removal: duplicates, far loners and fewer points than neighbours") {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<Point3f> points;
+  for (int i = 0; i < 300; ++i) points.emplace_back(unit(rng), unit(rng), 0.1f * unit(rng));
+  for (int i = 0; i < 20; ++i) points.push_back(points[static_cast<std::size_t>(i) * 7]);  // exact duplicates
+  points.emplace_back(40.0f, -30.0f, 5.0f);  // far from everything: the search radius must grow
+  points.emplace_back(40.5f, -30.0f, 5.0f);
+  for (const double cell : {0.0, 0.003, 0.2}) {
+    StatisticalOutlierParams params;
+    params.cell = cell;
+    CHECK(statistical_outlier_inliers(cloud_of(points), params) == brute_force_inliers(points, 10));
+  }
+  const std::vector<Point3f> few = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}, {9, 9, 9}};
+  CHECK(statistical_outlier_inliers(cloud_of(few)) == brute_force_inliers(few, 10));  // k > n - 1
 }
 
 TEST_CASE("RANSAC recovers a known plane within 1 degree with 30 % outliers") {
@@ -120,13 +143,19 @@ TEST_CASE("RANSAC recovers a known plane within 1 degree with 30 % outliers") {
   for (int i = 0; i < 700; ++i) points.push_back(unit(rng) * u + unit(rng) * v + noise(rng) * normal);
   for (int i = 0; i < 300; ++i) points.emplace_back(unit(rng), unit(rng), unit(rng));
   const PointCloud cloud = cloud_of(points);
-  const PlaneFit fit = fit_plane_ransac(cloud, RansacPlaneParams{100, 0.03, 42, {}});
+  const PlaneFit fit = fit_plane_ransac(cloud, RansacPlaneParams{100, 0.03, 42, 0.99, {}});
   REQUIRE(fit.found);
   const double angle = std::acos(std::min(1.0, std::abs(fit.normal.dot(normal.cast<double>()))));
   CHECK(angle < 1.0 * 3.141592653589793 / 180);
   CHECK(fit.inliers.size() >= 690);
   // Deterministic: the same seed, the same plane.
-  CHECK(fit_plane_ransac(cloud, RansacPlaneParams{100, 0.03, 42, {}}).inliers == fit.inliers);
+  CHECK(fit_plane_ransac(cloud, RansacPlaneParams{100, 0.03, 42, 0.99, {}}).inliers == fit.inliers);
+  // Adaptive stop: with ~70 % inliers (some outliers fall within T too), an all-inlier sample
+  // is missed with probability (1 - 0.7^3)^k, below 1 % after k = ln 0.01 / ln(1 - 0.343) = 11;
+  // a higher share found early stops sooner. Confidence 1 tries every hypothesis.
+  CHECK(fit.hypotheses >= 1);
+  CHECK(fit.hypotheses <= 11);
+  CHECK(fit_plane_ransac(cloud, RansacPlaneParams{100, 0.03, 42, 1.0, {}}).hypotheses == 100);
 }
 
 TEST_CASE("floor removal drops the floor and keeps a 5 cm box standing on it") {

@@ -16,6 +16,7 @@ struct PlaneFit {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit, z >= 0 when possible
   double offset = 0.0;                                ///< plane: normal . p + offset = 0
   std::vector<std::uint32_t> inliers;                 ///< indices into the searched points
+  int hypotheses = 0;                                 ///< samples drawn before stopping
 };
 
 /// Fits a plane to `cloud.points[subset[i]]` (all points when `subset` is null); inliers

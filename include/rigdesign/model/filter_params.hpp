@@ -34,9 +34,13 @@ struct StatisticalOutlierParams {
 };
 
 struct RansacPlaneParams {
-  int iterations = 100;    ///< I
+  int iterations = 100;    ///< I: the most hypotheses tried
   double threshold = 0.03; ///< T [m]: inlier distance
   std::uint64_t seed = 1;
+  /// Stop early once k = log(1 - confidence) / log(1 - w^3) hypotheses were tried, w the best
+  /// inlier share so far: the chance that an all-inlier sample was never drawn is below
+  /// 1 - confidence (PCL's RandomSampleConsensus, probability 0.99). 1 tries all `iterations`.
+  double confidence = 0.99;
   /// Only planes whose normal is within this angle of +z count [rad]; unset: any plane.
   std::optional<double> max_tilt;
 };
@@ -53,7 +57,7 @@ struct FloorRemoval1Params {
 /// tilted more than `ransac.max_tilt`, 15 degrees by default) so a wall cannot win.
 struct FloorRemoval2Params {
   double coarse_leaf = 0.30;  ///< V2 [m]
-  RansacPlaneParams ransac{100, 0.03, 1, 0.2617993877991494};
+  RansacPlaneParams ransac{100, 0.03, 1, 0.99, 0.2617993877991494};
 };
 
 /// Paper 2's negative obstacles: a point below `below` (a hole or a step down) is mirrored

@@ -1,0 +1,78 @@
+#pragma once
+/// The layered costmap (DESIGN.md section 7): a rolling window centred on the robot, an
+/// obstacle layer (2D) or voxel layer (3D), the Hit Layer and the inflation layer, combined in
+/// that order into the master grid the planner reads.
+#include <span>
+
+#include "rigdesign/costmap/hit_layer.hpp"
+#include "rigdesign/costmap/inflation_layer.hpp"
+#include "rigdesign/costmap/observation.hpp"
+#include "rigdesign/costmap/obstacle_layer.hpp"
+#include "rigdesign/costmap/rolling_grid.hpp"
+#include "rigdesign/costmap/voxel_layer.hpp"
+#include "rigdesign/model/source_location.hpp"
+
+namespace rigdesign {
+
+enum class ObstacleLayerKind { obstacle, voxel };
+
+struct CostmapParams {
+  double resolution = 0.05;  ///< [m] cell side (nav2 local costmap)
+  double size_x = 10.0;      ///< [m] window along world x
+  double size_y = 10.0;      ///< [m] window along world y
+  /// [m] the footprint's circumscribed radius (RobotBody::radius); the window must hold it.
+  double robot_radius = 0.1;
+  ObstacleLayerKind layer = ObstacleLayerKind::voxel;
+  ObstacleLayerParams obstacle;
+  VoxelLayerParams voxel;
+  bool use_hit_layer = true;
+  HitLayerParams hit;
+  InflationParams inflation;
+};
+
+/// Throws InputError listing every bad field of `params` at `where` (the file entry they came
+/// from, or {"(command line)"}): resolution <= 0, a window smaller than the footprint
+/// (size < 2 robot_radius), an empty z band, hit counts outside 16 bits, and so on. Field
+/// names are `prefix` + the struct's member path ("resolution", "voxel.z_max", "hit.hit_max").
+void check_costmap_params(const CostmapParams& params, const SourceLocation& where,
+                          const std::string& prefix = {});
+
+class Costmap {
+ public:
+  /// Checks the parameters (check_costmap_params with `where`); the window starts centred on
+  /// the world origin, every layer empty (unknown or free as the layer defines).
+  explicit Costmap(const CostmapParams& params,
+                   const SourceLocation& where = SourceLocation{"(command line)"});
+
+  /// One step at `time` [s] with the robot at `T_world_robot`: centre every layer's window on
+  /// the robot (the overlap kept, entering cells reset), clear then mark with every
+  /// observation, project the voxels, apply the Hit Layer (its motion condition from the
+  /// robot's positions and `velocity_command`), copy into the master grid, mark the Hit
+  /// Layer's cells lethal there, and inflate.
+  void update(double time, const Pose3& T_world_robot,
+              std::span<const CloudObservation> observations, bool velocity_command = false);
+
+  const CostmapParams& params() const { return params_; }
+  const GridWindow& window() const { return master_.window(); }
+  /// The grid the planner reads (cost_values.hpp).
+  const CostGrid& master() const { return master_; }
+  /// The obstacle layer's grid, or the voxel layer's column projection: what the Hit Layer sees.
+  const CostGrid& obstacle_grid() const;
+  const ObstacleLayer& obstacle_layer() const { return obstacle_; }
+  const VoxelLayer& voxel_layer() const { return voxel_; }
+  const HitLayer& hit_layer() const { return hit_; }
+  /// Whether the last update's Hit Layer decremented (false while the robot stood still).
+  bool last_update_decremented() const { return decremented_; }
+
+ private:
+  CostmapParams params_;
+  ObstacleLayer obstacle_;
+  VoxelLayer voxel_;
+  CostGrid projection_;
+  HitLayer hit_;
+  InflationLayer inflation_;
+  CostGrid master_;
+  bool decremented_ = false;
+};
+
+}  // namespace rigdesign

@@ -1,0 +1,34 @@
+#pragma once
+/// One sensor's cloud as the costmap layers take it, with that source's nav2-style flags and
+/// ranges (nav2 ObstacleLayer's observation source parameters).
+#include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/point_cloud.hpp"
+
+namespace rigdesign {
+
+/// Per-source settings. Defaults are nav2's except min_obstacle_height (see its comment).
+struct ObservationSource {
+  bool marking = true;              ///< its end points mark obstacles
+  bool clearing = true;             ///< its rays clear the space they cross
+  double obstacle_min_range = 0.0;  ///< [m] end points nearer the sensor origin do not mark
+  double obstacle_max_range = 2.5;  ///< [m] end points farther do not mark
+  double raytrace_min_range = 0.0;  ///< [m] clearing starts this far along each ray
+  double raytrace_max_range = 3.0;  ///< [m] clearing stops this far along each ray
+  /// [m] world z band of points that mark. nav2's default minimum is 0.0 and assumes the
+  /// floor was removed upstream; 5 cm keeps the returns of a floor with centimetre range
+  /// noise out of the grid, while paper 2's negative-obstacle points (10 cm) still mark.
+  double min_obstacle_height = 0.05;
+  double max_obstacle_height = 2.0;
+};
+
+/// A cloud in any frame and the transform to the world; the cloud's `origin` is the sensor
+/// origin in the cloud's frame (PointCloud's VIEWPOINT), where every ray starts.
+struct CloudObservation {
+  const PointCloud* cloud = nullptr;  ///< not owned; must outlive the update call
+  /// Maps cloud-frame points into the world frame: T_world_robot for robot-frame clouds,
+  /// identity for world-frame ones.
+  Pose3 T_world_cloud = Pose3::Identity();
+  ObservationSource source;
+};
+
+}  // namespace rigdesign

@@ -1,0 +1,74 @@
+#include "rigdesign/costmap/costmap.hpp"
+
+#include <cmath>
+
+#include "rigdesign/costmap/cost_values.hpp"
+
+namespace rigdesign {
+namespace {
+
+// Cells per side: the nearest whole number (10 m / 0.05 m = 200), at least one.
+int cells_along(double size, double resolution) {
+  return std::max(1, static_cast<int>(std::lround(size / resolution)));
+}
+
+GridWindow window_of(const CostmapParams& params) {
+  GridWindow window;
+  window.width = cells_along(params.size_x, params.resolution);
+  window.height = cells_along(params.size_y, params.resolution);
+  window.resolution = params.resolution;
+  window.origin_cell = window.origin_centred_on(Vec2::Zero());
+  return window;
+}
+
+// Checks before any layer allocates.
+const CostmapParams& checked(const CostmapParams& params, const SourceLocation& where) {
+  check_costmap_params(params, where);
+  return params;
+}
+
+}  // namespace
+
+Costmap::Costmap(const CostmapParams& params, const SourceLocation& where)
+    : params_(checked(params, where)),
+      inflation_(params.inflation),
+      master_(window_of(params), cost::kUnknown) {
+  const GridWindow& window = master_.window();
+  if (params.layer == ObstacleLayerKind::obstacle) {
+    obstacle_ = ObstacleLayer(window, params.obstacle);
+  } else {
+    voxel_ = VoxelLayer(window, params.voxel);
+    projection_ = CostGrid(window, cost::kUnknown);
+  }
+  hit_ = HitLayer(window, params.hit);
+}
+
+const CostGrid& Costmap::obstacle_grid() const {
+  return params_.layer == ObstacleLayerKind::obstacle ? obstacle_.grid() : projection_;
+}
+
+void Costmap::update(double time, const Pose3& T_world_robot,
+                     std::span<const CloudObservation> observations, bool velocity_command) {
+  const Vec2 robot = T_world_robot.translation().head<2>();
+  const Eigen::Vector2i origin = master_.window().origin_centred_on(robot);
+  master_.move_origin(origin);
+  hit_.move_origin(origin);
+  if (params_.layer == ObstacleLayerKind::obstacle) {
+    obstacle_.move_origin(origin);
+    obstacle_.update(observations);
+  } else {
+    voxel_.move_origin(origin);
+    voxel_.update(observations);
+    voxel_.project(projection_);
+  }
+  const CostGrid& obstacles = obstacle_grid();
+  // nav2 resets the master each cycle and the first layer writes it whole.
+  master_.cells() = obstacles.cells();
+  if (params_.use_hit_layer) {
+    decremented_ = hit_.update(obstacles, time, robot, velocity_command);
+    hit_.mark(master_);
+  }
+  inflation_.apply(master_);
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,92 @@
+#include "rigdesign/costmap/obstacle_layer.hpp"
+
+#include "grid_traversal.hpp"
+#include "rigdesign/costmap/cost_values.hpp"
+
+namespace rigdesign {
+namespace {
+
+using costmap_detail::GridPoint;
+using costmap_detail::GridSize;
+using costmap_detail::GridStride;
+
+bool in_height_band(const Vec3& p_world, const ObservationSource& source) {
+  return p_world.z() >= source.min_obstacle_height && p_world.z() <= source.max_obstacle_height;
+}
+
+struct PlaneFrame {
+  Vec2 corner;
+  double inverse_resolution;
+  GridSize<2> size;
+  GridStride<2> stride;
+
+  explicit PlaneFrame(const GridWindow& w)
+      : corner(w.origin()),
+        inverse_resolution(1.0 / w.resolution),
+        size(w.width, w.height),
+        stride(1, w.width) {}
+  GridPoint<2> to_grid(const Vec3& p_world) const {
+    return (p_world.head<2>() - corner) * inverse_resolution;
+  }
+};
+
+void clear_cloud(const PlaneFrame& frame, std::uint8_t* cells,
+                 const CloudObservation& observation) {
+  const ObservationSource& source = observation.source;
+  const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
+  for (const Point3f& point : observation.cloud->points) {
+    const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
+    if (!in_height_band(p_world, source)) continue;
+    const Vec3 ray = p_world - origin;
+    const double length = ray.norm();
+    if (!(length > source.raytrace_min_range)) continue;
+    const bool cut_short = length > source.raytrace_max_range;
+    GridPoint<2> a = frame.to_grid(origin + ray * (source.raytrace_min_range / length));
+    GridPoint<2> b = frame.to_grid(
+        cut_short ? Vec3(origin + ray * (source.raytrace_max_range / length)) : p_world);
+    bool end_clipped = false;
+    if (!costmap_detail::clip_to_grid<2>(a, b, frame.size, end_clipped)) continue;
+    const bool include_end =
+        cut_short || end_clipped || !costmap_detail::inside_grid<2>(b, frame.size);
+    costmap_detail::walk_cells<2>(a, b, frame.size, frame.stride, include_end,
+                                  [cells](std::ptrdiff_t index) { cells[index] = cost::kFree; });
+  }
+}
+
+void mark_cloud(const PlaneFrame& frame, std::uint8_t* cells, const CloudObservation& observation) {
+  const ObservationSource& source = observation.source;
+  const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
+  const double min_squared = source.obstacle_min_range * source.obstacle_min_range;
+  const double max_squared = source.obstacle_max_range * source.obstacle_max_range;
+  for (const Point3f& point : observation.cloud->points) {
+    const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
+    if (!in_height_band(p_world, source)) continue;
+    const double squared = (p_world - origin).squaredNorm();
+    if (squared < min_squared || squared > max_squared) continue;
+    const GridPoint<2> g = frame.to_grid(p_world);
+    if (!costmap_detail::inside_grid<2>(g, frame.size)) continue;
+    const auto cell = g.array().floor().cast<std::ptrdiff_t>();
+    cells[cell.x() + cell.y() * frame.stride.y()] = cost::kLethal;
+  }
+}
+
+}  // namespace
+
+ObstacleLayer::ObstacleLayer(const GridWindow& window, const ObstacleLayerParams& params)
+    : grid_(window, params.track_unknown_space ? cost::kUnknown : cost::kFree) {}
+
+void ObstacleLayer::update(std::span<const CloudObservation> observations) {
+  const PlaneFrame frame(grid_.window());
+  std::uint8_t* cells = grid_.cells().data();
+  // Every clearing before any marking, as nav2's ObstacleLayer::updateBounds does.
+  for (const CloudObservation& observation : observations) {
+    if (observation.cloud != nullptr && observation.source.clearing)
+      clear_cloud(frame, cells, observation);
+  }
+  for (const CloudObservation& observation : observations) {
+    if (observation.cloud != nullptr && observation.source.marking)
+      mark_cloud(frame, cells, observation);
+  }
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,138 @@
+#include "rigdesign/costmap/voxel_layer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "grid_traversal.hpp"
+#include "rigdesign/costmap/cost_values.hpp"
+
+namespace rigdesign {
+namespace {
+
+using costmap_detail::GridPoint;
+using costmap_detail::GridSize;
+using costmap_detail::GridStride;
+
+constexpr auto kFreeVoxel = static_cast<std::uint8_t>(VoxelState::free);
+constexpr auto kOccupiedVoxel = static_cast<std::uint8_t>(VoxelState::occupied);
+constexpr auto kUnknownVoxel = static_cast<std::uint8_t>(VoxelState::unknown);
+
+// World metres to the grid's cell units: x and y from the window's corner, z from z_min.
+struct GridFrame {
+  Vec3 corner;
+  Vec3 inverse_size;
+  GridSize<3> size;
+  GridStride<3> stride;
+
+  explicit GridFrame(const RollingVoxelGrid& grid) {
+    const GridWindow& w = grid.window();
+    corner = Vec3(w.origin().x(), w.origin().y(), grid.z_min());
+    inverse_size = Vec3(1.0 / w.resolution, 1.0 / w.resolution, 1.0 / grid.z_resolution());
+    size = GridSize<3>(w.width, w.height, grid.layers());
+    // Columns are contiguous: z fastest, then x, then y.
+    stride = GridStride<3>(grid.layers(), static_cast<std::ptrdiff_t>(w.width) * grid.layers(), 1);
+  }
+  GridPoint<3> to_grid(const Vec3& p_world) const {
+    return (p_world - corner).cwiseProduct(inverse_size);
+  }
+};
+
+// Clears the voxels from `start` towards `end` (world), the end voxel too when the ray was cut
+// short of its point (range or window) and so says nothing about it.
+void clear_ray(const GridFrame& frame, std::uint8_t* voxels, const Vec3& start, const Vec3& end,
+               bool cut_short, VoxelUpdateStats& stats) {
+  GridPoint<3> a = frame.to_grid(start);
+  GridPoint<3> b = frame.to_grid(end);
+  bool end_clipped = false;
+  if (!costmap_detail::clip_to_grid<3>(a, b, frame.size, end_clipped)) return;
+  const bool include_end =
+      cut_short || end_clipped || !costmap_detail::inside_grid<3>(b, frame.size);
+  ++stats.rays_cleared;
+  std::size_t visited = 0;
+  costmap_detail::walk_cells<3>(a, b, frame.size, frame.stride, include_end,
+                                [&](std::ptrdiff_t index) {
+                                  voxels[index] = kFreeVoxel;
+                                  ++visited;
+                                });
+  stats.voxels_cleared += visited;
+}
+
+void clear_cloud(const GridFrame& frame, std::uint8_t* voxels, const CloudObservation& observation,
+                 VoxelUpdateStats& stats) {
+  const ObservationSource& source = observation.source;
+  const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
+  for (const Point3f& point : observation.cloud->points) {
+    const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
+    const Vec3 ray = p_world - origin;
+    const double length = ray.norm();
+    if (!(length > source.raytrace_min_range)) continue;
+    const Vec3 start = origin + ray * (source.raytrace_min_range / length);
+    const bool cut_short = length > source.raytrace_max_range;
+    const Vec3 end =
+        cut_short ? Vec3(origin + ray * (source.raytrace_max_range / length)) : p_world;
+    clear_ray(frame, voxels, start, end, cut_short, stats);
+  }
+}
+
+void mark_cloud(const GridFrame& frame, std::uint8_t* voxels, const CloudObservation& observation,
+                VoxelUpdateStats& stats) {
+  const ObservationSource& source = observation.source;
+  const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
+  const double min_squared = source.obstacle_min_range * source.obstacle_min_range;
+  const double max_squared = source.obstacle_max_range * source.obstacle_max_range;
+  for (const Point3f& point : observation.cloud->points) {
+    const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
+    const double squared = (p_world - origin).squaredNorm();
+    if (squared < min_squared || squared > max_squared) continue;
+    if (p_world.z() < source.min_obstacle_height || p_world.z() > source.max_obstacle_height)
+      continue;
+    const GridPoint<3> g = frame.to_grid(p_world);
+    if (!costmap_detail::inside_grid<3>(g, frame.size)) continue;
+    const auto cell = g.array().floor().cast<std::ptrdiff_t>();
+    voxels[cell.x() * frame.stride.x() + cell.y() * frame.stride.y() + cell.z()] = kOccupiedVoxel;
+    ++stats.voxels_marked;
+  }
+}
+
+}  // namespace
+
+VoxelLayer::VoxelLayer(const GridWindow& window, const VoxelLayerParams& params)
+    : params_(params), grid_(window, params.z_min, params.z_max, params.z_resolution) {}
+
+VoxelUpdateStats VoxelLayer::update(std::span<const CloudObservation> observations) {
+  VoxelUpdateStats stats;
+  const GridFrame frame(grid_);
+  std::uint8_t* voxels = grid_.voxels().data();
+  // Every clearing before any marking: no cloud of this update can clear a fresh mark.
+  for (const CloudObservation& observation : observations) {
+    if (observation.cloud == nullptr) continue;
+    stats.points += observation.cloud->size();
+    if (observation.source.clearing) clear_cloud(frame, voxels, observation, stats);
+  }
+  for (const CloudObservation& observation : observations) {
+    if (observation.cloud != nullptr && observation.source.marking)
+      mark_cloud(frame, voxels, observation, stats);
+  }
+  return stats;
+}
+
+void VoxelLayer::project(CostGrid& grid) const {
+  const GridWindow& window = grid_.window();
+  grid.reshape(window);  // every cell is written below
+  const std::uint8_t* column = grid_.voxels().data();
+  const auto layers = static_cast<std::size_t>(grid_.layers());
+  for (std::uint8_t& cell : grid.cells()) {
+    bool occupied = false;
+    int unknown = 0;
+    for (std::size_t z = 0; z < layers; ++z) {
+      occupied |= column[z] == kOccupiedVoxel;
+      unknown += column[z] == kUnknownVoxel;
+    }
+    // Paper 2: occupied if any voxel is, unknown if more than the threshold are unknown.
+    cell = occupied ? cost::kLethal
+                    : (unknown > params_.unknown_threshold ? cost::kUnknown : cost::kFree);
+    column += layers;
+  }
+}
+
+}  // namespace rigdesign
