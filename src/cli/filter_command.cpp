@@ -128,11 +128,8 @@ void write_loads(const std::string& path, const FilteringLoads& measured, const 
 // filtering load U_f = median time per frame x frame rate (paper 1, eq. 5).
 int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, std::ostream& out) {
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
-  const auto& names = scene_names();
-  require_option(std::find(names.begin(), names.end(), options.scene) != names.end(), "--scene",
-                 "unknown scene '" + options.scene + "'", "office, corridor, stairs, wall_following or cell");
   require_option(options.frames >= 1 && options.frames <= 10000, "--frames", "is out of range", "1 to 10000");
-  const Scene scene = make_scene(options.scene, options.seed);
+  const Scene scene = load_scene_option(options.scene, options.seed);
   TextTable table;
   table.add_column("mount", TextTable::Align::left);
   for (const char* header : {"points/frame", "out/frame", "median ms", "p95 ms", "F Hz", "U_f cores", "s per point"}) {

@@ -1,11 +1,14 @@
 #include "inputs.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "rigdesign/geometry/mount_placement.hpp"
 #include "rigdesign/io/requirements_loader.hpp"
 #include "rigdesign/io/rig_loader.hpp"
 #include "rigdesign/io/rig_references.hpp"
+#include "rigdesign/io/scene_file_loader.hpp"
+#include "rigdesign/model/format_number.hpp"
 #include "rigdesign/io/sensor_library_loader.hpp"
 #include "rigdesign/io/sensor_library_locator.hpp"
 
@@ -81,6 +84,36 @@ SensorLibrary load_catalog_library(const Catalog& catalog, const std::string& se
     }
   }
   return load_sensor_library(path.empty() ? bundled_sensor_library() : path);
+}
+
+namespace {
+
+bool names_a_file(const std::string& scene) {
+  const std::string extension = std::filesystem::path(scene).extension().string();
+  return extension == ".yaml" || extension == ".yml" || scene.find('/') != std::string::npos;
+}
+
+}  // namespace
+
+Scene load_scene_option(const std::string& scene, std::uint64_t seed) {
+  if (names_a_file(scene)) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(scene, error)) {
+      throw InputError(Diagnostic{{"(command line)", 0, 0}, "--scene", "'" + scene + "' does not exist",
+                                  "a bundled scene name or a scene file (rigs/README.md)"});
+    }
+    return load_scene_file(scene);
+  }
+  const auto& names = scene_names();
+  if (std::find(names.begin(), names.end(), scene) == names.end()) {
+    throw InputError(Diagnostic{{"(command line)", 0, 0}, "--scene", "unknown scene '" + scene + "'",
+                                join(names) + ", or a scene file (.yaml)"});
+  }
+  return make_scene(scene, seed);
+}
+
+std::string scene_label(const std::string& scene) {
+  return names_a_file(scene) ? std::filesystem::path(scene).stem().string() : scene;
 }
 
 }  // namespace rigdesign::cli

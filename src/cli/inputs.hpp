@@ -1,6 +1,7 @@
 #pragma once
 // Loads what a rig subcommand works on: the rig, the sensor library it refers to and its
 // requirements, reporting every problem of all three at once.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "rigdesign/model/requirements.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
+#include "rigdesign/sim/scene.hpp"
 
 namespace rigdesign::cli {
 
@@ -28,5 +30,13 @@ RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensor
 /// The sensor library a catalog uses: `sensors_path` when not empty, else the catalog's own
 /// `sensor_library` (an error at that field when it does not exist), else the bundled one.
 SensorLibrary load_catalog_library(const Catalog& catalog, const std::string& sensors_path);
+
+/// `--scene`: a bundled generator's name (office, corridor, ...; `seed` places its furniture)
+/// or a scene file (rigs/README.md, a YAML placing mesh files). Throws InputError naming
+/// `--scene` for an unknown name or a missing file, and the file's own findings.
+Scene load_scene_option(const std::string& scene, std::uint64_t seed);
+
+/// A short name for output folders: the generator's name, or the scene file's stem.
+std::string scene_label(const std::string& scene);
 
 }  // namespace rigdesign::cli

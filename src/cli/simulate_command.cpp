@@ -29,19 +29,14 @@ struct SimulateOptions {
 };
 
 int run_simulate(const SimulateOptions& options, std::ostream& out) {
-  const auto& names = scene_names();
-  std::string known;
-  for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
-  require_option(std::find(names.begin(), names.end(), options.scene) != names.end(), "--scene",
-                 "unknown scene '" + options.scene + "'", "one of: " + known);
   require_option(options.frames >= 1 && options.frames <= 100000, "--frames", "is out of range", "1 to 100000");
   require_option(options.dropout >= 0 && options.dropout < 1, "--dropout", "is out of range", "a share in [0, 1)");
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
-  const Scene scene = make_scene(options.scene, options.seed);
+  const Scene scene = load_scene_option(options.scene, options.seed);
   SimulationSettings settings;
   settings.dropout = options.dropout;
   settings.sensor_frame = options.frame == "sensor";
-  const std::string folder = options.out.empty() ? "simulation/" + options.scene : options.out;
+  const std::string folder = options.out.empty() ? "simulation/" + scene_label(options.scene) : options.out;
   const std::string extension = options.format == "ply" ? ".ply" : ".pcd";
   const CloudEncoding encoding = options.format == "pcd-ascii" ? CloudEncoding::ascii : CloudEncoding::binary;
   out << inputs.rig.name << " in the " << options.scene << " scene (seed " << options.seed << "), "
@@ -68,7 +63,7 @@ Command setup_simulate(CLI::App& parent) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* app = parent.add_subcommand("simulate", "Simulate what each mounted sensor records in a synthetic scene");
   app->add_option("rig", options->rig, "Rig file")->required();
-  app->add_option("--scene", options->scene, "office, corridor, stairs, wall_following or cell (default office)");
+  app->add_option("--scene", options->scene, "office, corridor, stairs, wall_following, cell, or a scene file (default office)");
   app->add_option("--frames", options->frames, "Frames per sensor (default 1)");
   app->add_option("--seed", options->seed, "Seed of the scene and the sensor noise (default 1)");
   app->add_option("--out", options->out, "Output folder (default simulation/<scene>)");

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -40,6 +41,28 @@ TEST_CASE("filter measures each sensor's filtering load in a simulated scene") {
   const auto report = nlohmann::json::parse(result.out);
   REQUIRE(report["mounts"].size() == 2);
   CHECK(report["total_filtering_load_cores"].get<double>() > 0.0);
+}
+
+TEST_CASE("simulate takes a scene file: the lab's walls where the room's mesh puts them") {
+  TempFolder folder;
+  const CliResult result = run_cli({"simulate", source_path("rigs/elektron.yaml"), "--scene",
+                                    source_path("rigs/scenes/lab/lab.yaml"), "--frames", "1", "--out", folder.path()});
+  INFO(result.err);
+  REQUIRE(result.exit_code == 0);
+  // The robot starts at (-1.2, -1.0) facing +x in a 6 x 4 m room (walls at x = +-3, y = +-2);
+  // the scanner is 0.27 m ahead of it at 0.2 m. Robot frame: the wall ahead at x = 3 + 1.2,
+  // the wall on the left at y = 2 + 1.0, seen from the scanner's x.
+  const PointCloud scan = read_cloud(folder.path() + "/front_scanner/frame_0.pcd");
+  const auto nearest_to = [&](const Point3f& target) {
+    float best = 1e9f;
+    for (const Point3f& p : scan.points) best = std::min(best, (p - target).norm());
+    return best;
+  };
+  CHECK(nearest_to({4.2f, 0.0f, 0.2f}) < 0.05f);
+  CHECK(nearest_to({0.27f, 3.0f, 0.2f}) < 0.05f);
+  const CliResult missing = run_cli({"simulate", source_path("rigs/elektron.yaml"), "--scene", "nowhere/lab.yaml"});
+  CHECK(missing.exit_code == 2);
+  CHECK(missing.err.find("--scene") != std::string::npos);
 }
 
 TEST_CASE("simulate and filter refuse an unknown scene") {
