@@ -1,25 +1,11 @@
 #include "rigdesign/io/filtering_loads_io.hpp"
 
 #include <set>
-#include <sstream>
 
 #include "io/field_checks.hpp"
 #include "io/yaml_reader.hpp"
-#include "rigdesign/model/format_number.hpp"
 
 namespace rigdesign {
-namespace {
-
-std::string quoted(const std::string& text) {
-  std::string escaped = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') escaped += '\\';
-    escaped += c;
-  }
-  return escaped + "\"";
-}
-
-}  // namespace
 
 FilteringLoads load_filtering_loads(const std::string& path) {
   using io::Need;
@@ -56,25 +42,6 @@ FilteringLoads load_filtering_loads(const std::string& path) {
   top.reject_unknown_keys();
   diagnostics.throw_if_errors();
   return loads;
-}
-
-std::string filtering_loads_to_yaml(const FilteringLoads& loads, const std::string& comment) {
-  std::ostringstream out;
-  std::istringstream lines(comment);
-  for (std::string line; std::getline(lines, line);) out << "# " << line << '\n';
-  out << "machine: " << quoted(loads.machine) << '\n';
-  out << "pipeline: " << quoted(loads.pipeline) << '\n';
-  if (!loads.scene.empty()) out << "scene: " << quoted(loads.scene) << '\n';
-  if (loads.frames > 0) out << "frames: " << loads.frames << '\n';
-  out << "sensors:\n";
-  for (const FilteringLoad& load : loads.sensors) {
-    out << "  - sensor: " << quoted(load.sensor_id) << '\n';
-    if (!load.mode_id.empty()) out << "    mode: " << quoted(load.mode_id) << '\n';
-    out << "    seconds_per_point: " << format_number(load.seconds_per_point, 6) << '\n';
-    out << "    points_per_frame: " << format_number(load.points_per_frame, 8) << '\n';
-    out << "    median_seconds_per_frame: " << format_number(load.median_seconds_per_frame, 6) << '\n';
-  }
-  return out.str();
 }
 
 FilteringLoads merge_filtering_loads(const FilteringLoads& previous, const FilteringLoads& measured) {

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "rigdesign/io/filtering_loads_io.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
@@ -101,6 +102,25 @@ std::string requirements_to_yaml(const Requirements& requirements, const std::st
       out << (i ? ", " : "") << to_string(requirements.lighting[i]);
     }
     out << "]\n";
+  }
+  return out.str();
+}
+
+// Declared in filtering_loads_io.hpp: the loads file is written here with the other YAML.
+std::string filtering_loads_to_yaml(const FilteringLoads& loads, const std::string& comment) {
+  std::ostringstream out;
+  write_comment(out, comment);
+  out << "machine: " << quoted(loads.machine) << '\n';
+  out << "pipeline: " << quoted(loads.pipeline) << '\n';
+  if (!loads.scene.empty()) out << "scene: " << quoted(loads.scene) << '\n';
+  if (loads.frames > 0) out << "frames: " << loads.frames << '\n';
+  out << "sensors:\n";
+  for (const FilteringLoad& load : loads.sensors) {
+    out << "  - sensor: " << quoted(load.sensor_id) << '\n';
+    if (!load.mode_id.empty()) out << "    mode: " << quoted(load.mode_id) << '\n';
+    out << "    seconds_per_point: " << format_number(load.seconds_per_point, 6) << '\n';
+    out << "    points_per_frame: " << format_number(load.points_per_frame, 8) << '\n';
+    out << "    median_seconds_per_frame: " << format_number(load.median_seconds_per_frame, 6) << '\n';
   }
   return out.str();
 }
