@@ -21,7 +21,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   app.set_version_flag("--version", "rigdesign 0.1.0");
   const std::vector<Command> commands = {setup_metrics(app), setup_check(app),
                                          setup_coverage(app), setup_select(app),
-                                         setup_filter(app), setup_simulate(app)};
+                                         setup_filter(app), setup_simulate(app),
+                                         setup_costmap(app)};
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
   try {

@@ -25,5 +25,6 @@ Command setup_coverage(CLI::App& parent);
 Command setup_select(CLI::App& parent);
 Command setup_filter(CLI::App& parent);
 Command setup_simulate(CLI::App& parent);
+Command setup_costmap(CLI::App& parent);
 
 }  // namespace rigdesign::cli

@@ -25,10 +25,14 @@ constexpr double kTableStartX = 3.0;
 constexpr double kTableLength = 1.2;
 constexpr double kLegFrameDepth = 0.3;
 constexpr double kLegSide = 0.04;
-// Foam top [m]: 0.45 m high overall, 8 cm thick, overhanging the legs by 15 cm on the path
-// side only, so its edge is 0.15 m left of the path's centre line.
-constexpr double kTableHeight = 0.45;
-constexpr double kFoamThickness = 0.08;
+// Foam top [m]: 0.39 m high overall, 6 cm thick, overhanging the legs by 15 cm on the path
+// side only, so its edge is 0.15 m left of the path's centre line. Close up only the UR
+// Cleaner's front camera sees the slab (paper 1, Fig. 11): its top at 0.39 m passes under the
+// VLP-16's lowest beam (-15 deg from 1.04 m) within 2.4 m of the lidar, so the lidar meets
+// only its edge, briefly, from farther away; its bottom at 0.33 m stays above the left pico
+// flexx's view.
+constexpr double kTableHeight = 0.39;
+constexpr double kFoamThickness = 0.06;
 constexpr double kFoamOverhang = 0.15;
 
 void add_table(Scene& scene) {

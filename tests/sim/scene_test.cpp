@@ -161,11 +161,11 @@ TEST_CASE("closed solids have outward normals and their true volume") {
       CHECK(signed_volume(object.mesh) > 0);
     }
   }
-  // Boxes of known size: the cell's 0.8 x 0.6 x 1 m plate, the 1.2 x 0.45 x 0.08 m foam.
+  // Boxes of known size: the cell's 0.8 x 0.6 x 1 m plate, the 1.2 x 0.45 x 0.06 m foam.
   CHECK(signed_volume(object_named(make_scene("cell", 0), "plate").mesh) ==
         Approx(0.8 * 0.6 * 1.0));
   CHECK(signed_volume(object_named(make_scene("wall_following", 0), "foam").mesh) ==
-        Approx(1.2 * 0.45 * 0.08));
+        Approx(1.2 * 0.45 * 0.06));
 }
 
 TEST_CASE("office chairs stand on thin legs and a cable hangs to the floor") {

@@ -1,0 +1,42 @@
+#pragma once
+/// One frame of a robot-in-the-loop run (issue 6 item 3), PNG or SVG by extension: the master
+/// grid's costs, the cells only the Hit Layer still holds, the ground truth's outlines in the
+/// body's height band, each sensor's horizontal field of view, the planned path, the driven
+/// trail and the robot's body. North up, world x to the right, equal scale.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rigdesign/costmap/rolling_grid.hpp"
+
+namespace rigdesign {
+
+/// A sensor's horizontal field of view as a wedge on the floor (a disc when it spins).
+struct FovWedge {
+  Vec2 apex = Vec2::Zero();  ///< [m] world
+  double yaw = 0.0;          ///< [rad] optical axis
+  double half_angle = 0.0;   ///< [rad]; >= pi draws a disc
+  double range = 0.0;        ///< [m]
+  std::size_t colour = 0;    ///< index into sensor_colour
+};
+
+struct CostmapFrame {
+  std::string title;
+  const CostGrid* master = nullptr;  ///< the grid to draw (not owned)
+  /// Cells, on the master's window, the Hit Layer keeps lethal while the obstacle grid does
+  /// not see them (row-major; empty for none).
+  std::vector<std::uint8_t> remembered;
+  std::vector<std::vector<Vec2>> obstacles;  ///< ground-truth outlines [m]
+  std::vector<FovWedge> fovs;
+  std::vector<Vec2> path;   ///< planned [m]
+  std::vector<Vec2> trail;  ///< driven so far [m]
+  Vec2 robot = Vec2::Zero();
+  double yaw = 0.0;
+  double robot_radius = 0.0;
+  bool collided = false;  ///< draws the body in red
+};
+
+/// Writes the frame at `pixels_per_cell` pixels per grid cell (at least 1) atomically.
+void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int pixels_per_cell = 4);
+
+}  // namespace rigdesign

@@ -1,0 +1,128 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+
+#include "rigdesign/costmap/map_files.hpp"
+#include "support/cli_runner.hpp"
+#include "support/fixture_files.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign;
+using namespace rigdesign::test;
+
+namespace {
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A PNG's width and height from its IHDR chunk (big-endian, bytes 16-23), after checking the
+// 8-byte signature; {0, 0} when it is not a PNG.
+std::pair<int, int> png_size(const std::string& bytes) {
+  if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return {0, 0};
+  const auto be32 = [&](std::size_t at) {
+    int value = 0;
+    for (std::size_t i = 0; i < 4; ++i) value = value * 256 + static_cast<unsigned char>(bytes[at + i]);
+    return value;
+  };
+  return {be32(16), be32(20)};
+}
+
+}  // namespace
+
+TEST_CASE("costmap CLI: outcome, frames, map files and summary", "[scenario]") {
+  TempFolder folder;
+  const std::string out = folder.path() + "/run";
+  const CliResult result = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario",
+                                    "wall_following", "--frame-every", "20", "--out", out});
+  INFO(result.err);
+  REQUIRE(result.exit_code == 0);
+  CHECK(result.out.find("collision: none") != std::string::npos);
+  CHECK(result.out.find("minimum clearance") != std::string::npos);
+  CHECK(result.out.find("median") != std::string::npos);
+  // 6 m / 0.05 m = 120 cells a side at 4 px per cell, plus the 28 px title band.
+  CHECK(png_size(read_all(out + "/final.png")) == std::pair<int, int>(480, 508));
+  CHECK(png_size(read_all(out + "/frames/frame_0000.png")) == std::pair<int, int>(480, 508));
+  const OccupancyMap map = read_map_files(out + "/master.yaml");
+  CHECK(map.width == 120);
+  CHECK(map.height == 120);
+  CHECK(map.resolution == Approx(0.05));
+  CHECK(read_all(out + "/master.pgm").rfind("P5", 0) == 0);
+  CHECK(read_all(out + "/master.yaml").find("mode: trinary") != std::string::npos);
+  const auto summary = nlohmann::json::parse(read_all(out + "/summary.json"));
+  CHECK(summary["scenario"] == "wall_following");
+  CHECK(summary["layer"] == "obstacle");
+  CHECK(summary["hit_layer"] == true);
+  CHECK(summary["hit"] == 3);
+  CHECK(summary["hit_max"] == 1500);
+  CHECK(summary["collided"] == false);
+  CHECK(summary["collision_time_s"].is_null());
+  CHECK(summary["min_clearance_m"].get<double>() > 0.0);
+  CHECK(summary["min_clearance_m"].get<double>() <= 0.15 + 1e-9);  // the wall at the start
+  CHECK(summary["update_ms"]["p99"].get<double>() >= summary["update_ms"]["median"].get<double>());
+  // Frames every 20 updates: updates 0, 20, 40, 60 of the 75 or so the run takes.
+  CHECK(summary["frames"].get<int>() == static_cast<int>((summary["updates"].get<int>() - 1) / 20 + 1));
+}
+
+TEST_CASE("costmap CLI: without the Hit Layer the run reports the collision; --compare tabulates",
+          "[scenario]") {
+  TempFolder folder;
+  const CliResult single = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario",
+                                    "wall_following", "--no-hit-layer", "--frame-every", "0", "--out",
+                                    folder.path() + "/single"});
+  REQUIRE(single.exit_code == 0);
+  CHECK(single.out.find("collision with foam at t = ") != std::string::npos);
+  const CliResult compare = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario",
+                                     "wall_following", "--compare", "--frame-every", "0", "--out",
+                                     folder.path() + "/compare"});
+  REQUIRE(compare.exit_code == 0);
+  CHECK(compare.out.find("comparison:") != std::string::npos);
+  const auto all = nlohmann::json::parse(read_all(folder.path() + "/compare/comparison.json"));
+  REQUIRE(all.size() == 4);
+  CHECK(all[0]["layer"] == "obstacle");
+  CHECK(all[0]["hit_layer"] == false);
+  CHECK(all[0]["collided"] == true);
+  CHECK(all[1]["collided"] == false);
+  for (const char* variant : {"obstacle_hit", "obstacle_no_hit", "voxel_hit", "voxel_no_hit"}) {
+    CHECK(std::filesystem::exists(folder.path() + "/compare/" + variant + "/summary.json"));
+  }
+}
+
+TEST_CASE("costmap CLI: bad input names the option and exits 2", "[scenario]") {
+  const std::string rig = source_path("rigs/ur_cleaner.yaml");
+  const auto refused = [](const std::vector<std::string>& args, const std::string& option) {
+    const CliResult result = run_cli(args);
+    INFO(result.err);
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find(option) != std::string::npos);
+  };
+  refused({"costmap", "--rig", rig, "--scenario", "moon"}, "--scenario");
+  refused({"costmap", "--rig", rig, "--scenario", "wall_following", "--layer", "octomap"}, "--layer");
+  refused({"costmap", "--rig", rig, "--scenario", "wall_following", "--resolution", "0"}, "--resolution");
+  // The UR Cleaner is 0.9 m across.
+  refused({"costmap", "--rig", rig, "--scenario", "wall_following", "--window", "0.8"}, "--window");
+
+  // A rig whose only sensor looks straight up from above the body cannot mark.
+  TempFolder folder;
+  folder.write("sensors.yaml", kLibrary);
+  const std::string upward = folder.write("rig.yaml", R"(name: Upward
+sensor_library: sensors.yaml
+body: {radius: 0.4, height: 1.0}
+distance_of_interest: 3.0
+mounts:
+  - id: sky
+    sensor: cam
+    mode: m30
+    pose: {xyz: [0.0, 0.0, 1.5], rpy_deg: [0, -90, 0]}
+)");
+  const CliResult result = run_cli({"costmap", "--rig", upward, "--scenario", "wall_following"});
+  INFO(result.err);
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("rig.yaml") != std::string::npos);
+  CHECK(result.err.find("mounts") != std::string::npos);
+  CHECK(result.err.find("no sensor can mark") != std::string::npos);
+}
