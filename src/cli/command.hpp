@@ -26,5 +26,6 @@ Command setup_select(CLI::App& parent);
 Command setup_filter(CLI::App& parent);
 Command setup_simulate(CLI::App& parent);
 Command setup_costmap(CLI::App& parent);
+Command setup_occupancy(CLI::App& parent);
 
 }  // namespace rigdesign::cli

@@ -1,0 +1,266 @@
+// `rigdesign occupancy --rig RIG --scene cell`: paper 3's occupancy evaluation on the dynamic
+// cell (issue 6, item 5). Every configuration of the sweep sees the same simulated frames;
+// scores near the person (paper 3), the whole-cell measures paper 3 lacks, per phase, and the
+// Pareto plot of F2 against ghost area against time per update.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+#include "app.hpp"
+#include "command.hpp"
+#include "inputs.hpp"
+#include "rigdesign/costmap/occupancy_evaluation.hpp"
+#include "rigdesign/costmap/occupancy_sweep.hpp"
+#include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/render/occupancy_pareto.hpp"
+#include "text_table.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+struct OccupancyOptions {
+  std::string rig;
+  std::string scene = "cell";
+  double rate = 5.0;
+  double duration = 96.0;
+  double moving_until = 48.0;
+  std::vector<double> voxels = default_sweep_voxels();
+  std::string persistence = "sweep";
+  int camera_stride = 1;
+  std::uint64_t seed = 1;
+  double robot_radius = 0.3;
+  // [m] 3 sigma of the cell's noisiest lidars (3 cm): lower, and floor returns mark ghosts.
+  double min_height = 0.1;
+  std::string out;
+  bool json = false;
+};
+
+std::vector<PersistenceSetting> persistence_named(const std::string& name) {
+  if (name == "none") return {PersistenceSetting{}};
+  if (name == "paper") return {PersistenceSetting{}, PersistenceSetting{true, 3, 1500}};
+  return default_sweep_persistence();
+}
+
+std::string persistence_label(const VoxelMapperParams& params) {
+  return params.persistence ? "hit " + std::to_string(params.hit.hit) + "/" + std::to_string(params.hit.hit_max)
+                            : "none";
+}
+
+std::string number(double value, int decimals) { return std::isnan(value) ? "-" : fixed(value, decimals); }
+
+void check_options(const OccupancyOptions& options) {
+  require_option(options.rate > 0.0 && options.rate <= 100.0, "--rate", "is out of range", "0 < rate <= 100 Hz");
+  require_option(options.duration > 0.0 && options.duration <= 3600.0, "--duration", "is out of range",
+                 "0 < duration <= 3600 s");
+  require_option(options.moving_until >= 0.0, "--moving-until", "is negative", "a time >= 0 s");
+  require_option(!options.voxels.empty() && std::all_of(options.voxels.begin(), options.voxels.end(),
+                                                        [](double v) { return v >= 0.01 && v <= 1.0; }),
+                 "--voxels", "has a voxel length out of range", "lengths in [0.01, 1] m");
+  require_option(options.camera_stride >= 1 && options.camera_stride <= 64, "--camera-stride", "is out of range",
+                 "1 to 64");
+  require_option(options.min_height >= 0.0 && options.min_height < 1.0, "--min-height", "is out of range",
+                 "0 <= height < 1 m");
+  require_option(options.robot_radius > 0.0 && options.robot_radius < 2.0, "--robot-radius", "is out of range",
+                 "0 < radius < 2 m");
+  const auto& names = scene_names();
+  require_option(std::find(names.begin(), names.end(), options.scene) != names.end(), "--scene",
+                 "unknown scene '" + options.scene + "'", "cell (the scene with a moving person)");
+}
+
+std::string frames_csv(const std::vector<OccupancyRun>& runs) {
+  std::ostringstream csv;
+  csv << "mapper,time_s,robot_moving,points,update_ms,tp,fp,fn,precision,recall,f1,f2,f3,never_seen,"
+         "seen_not_kept,ghost_area_m2,trail_area_m2,trail_length_p90_m,trail_length_oldest_m,master_precision,master_recall,master_f2,"
+         "master_ghost_area_m2\n";
+  for (const OccupancyRun& run : runs) {
+    for (const OccupancyFrame& f : run.frames) {
+      const Scores s = scores_of(f.object);
+      const Scores m = scores_of(f.master);
+      csv << '"' << run.mapper << "\"," << format_number(f.time, 6) << ',' << f.robot_moving << ',' << f.points << ','
+          << format_number(f.update_seconds * 1e3, 4) << ',' << f.object.true_positives << ','
+          << f.object.false_positives << ',' << f.object.false_negatives << ',' << format_number(s.precision, 4) << ','
+          << format_number(s.recall, 4) << ',' << format_number(s.f1, 4) << ',' << format_number(s.f2, 4) << ','
+          << format_number(s.f3, 4) << ',' << f.misses.never_seen << ',' << f.misses.seen_not_kept << ','
+          << format_number(f.ghost_area, 4) << ',' << format_number(f.trail_area, 4) << ','
+          << format_number(f.trail_length, 4) << ',' << format_number(f.trail_length_oldest, 4) << ','
+          << format_number(m.precision, 4) << ','
+          << format_number(m.recall, 4) << ',' << format_number(m.f2, 4) << ','
+          << format_number(f.master_ghost_area, 4) << '\n';
+    }
+  }
+  return csv.str();
+}
+
+nlohmann::json phase_json(const OccupancyPhase& phase) {
+  const auto scores = [](const Scores& s) {
+    const auto value = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
+    return nlohmann::json{{"precision", value(s.precision)}, {"recall", value(s.recall)}, {"f1", value(s.f1)},
+                          {"f2", value(s.f2)}, {"f3", value(s.f3)}};
+  };
+  const auto value = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
+  return {{"frames", phase.frames},
+          {"person", scores(phase.object)},
+          {"master", scores(phase.master)},
+          {"ghost_area_m2", value(phase.ghost_area)},
+          {"ghost_area_max_m2", phase.ghost_area_max},
+          {"trail_length_m", value(phase.trail_length)},
+          {"trail_length_max_m", phase.trail_length_max},
+          {"master_ghost_area_m2", value(phase.master_ghost_area)},
+          {"misses_never_seen", phase.never_seen},
+          {"misses_seen_not_kept", phase.seen_not_kept},
+          {"mark_delay_median_s", value(percentile_of(phase.mark_delays, 0.5))},
+          {"mark_delay_p95_s", value(percentile_of(phase.mark_delays, 0.95))},
+          {"clear_delay_median_s", value(percentile_of(phase.clear_delays, 0.5))},
+          {"clear_delay_p95_s", value(percentile_of(phase.clear_delays, 0.95))},
+          {"marks", phase.mark_delays.size()},
+          {"clears", phase.clear_delays.size()},
+          {"update_ms", value(phase.update_ms)},
+          {"points_per_second", value(phase.points_per_second)}};
+}
+
+void print_tables(const std::vector<OccupancyRun>& runs, const std::vector<VoxelMapperParams>& grid,
+                  std::ostream& out) {
+  TextTable scores;
+  scores.add_column("voxel m", TextTable::Align::right);
+  scores.add_column("persistence", TextTable::Align::left);
+  for (const char* h : {"P", "R", "F1", "F2", "F3", "P mov", "R mov", "F2 mov", "P still", "R still", "F2 still"}) {
+    scores.add_column(h, TextTable::Align::right);
+  }
+  TextTable cell;
+  cell.add_column("voxel m", TextTable::Align::right);
+  cell.add_column("persistence", TextTable::Align::left);
+  for (const char* h : {"ghost mov m2", "ghost still m2", "trail mov m", "trail still m", "mark s", "clear mov s",
+                        "clear still s", "pending", "never seen", "seen lost", "grid F2", "grid ghost m2", "ms/upd",
+                        "Mpts/s"}) {
+    cell.add_column(h, TextTable::Align::right);
+  }
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const OccupancyRun& r = runs[i];
+    const std::string voxel = fixed(grid[i].voxel, 2), label = persistence_label(grid[i]);
+    scores.add_row({voxel, label, number(r.all.object.precision, 3), number(r.all.object.recall, 3),
+                    number(r.all.object.f1, 3), number(r.all.object.f2, 3), number(r.all.object.f3, 3),
+                    number(r.moving.object.precision, 3), number(r.moving.object.recall, 3),
+                    number(r.moving.object.f2, 3), number(r.stationary.object.precision, 3),
+                    number(r.stationary.object.recall, 3), number(r.stationary.object.f2, 3)});
+    const std::size_t misses = r.all.never_seen + r.all.seen_not_kept;
+    const auto share = [&](std::size_t n) {
+      return misses == 0 ? std::string("-") : fixed(100.0 * static_cast<double>(n) / static_cast<double>(misses), 0) + "%";
+    };
+    cell.add_row({voxel, label, number(r.moving.ghost_area, 2), number(r.stationary.ghost_area, 2),
+                  number(r.moving.trail_length_max, 2), number(r.stationary.trail_length_max, 2),
+                  number(percentile_of(r.all.mark_delays, 0.5), 1), number(percentile_of(r.moving.clear_delays, 0.5), 1),
+                  number(percentile_of(r.stationary.clear_delays, 0.5), 1), std::to_string(r.pending_changes),
+                  share(r.all.never_seen), share(r.all.seen_not_kept), number(r.all.master.f2, 3),
+                  number(r.all.master_ghost_area, 2), number(r.all.update_ms, 1),
+                  number(r.all.points_per_second / 1e6, 2)});
+  }
+  out << "Near the person (paper 3's score), mean over frames; mov = robot moving, still = standing\n";
+  scores.print(out, "  ");
+  out << "\nWhole cell: ghost area and trail (mean / max), median delays, misses by cause, planner grid\n";
+  cell.print(out, "  ");
+}
+
+int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
+  check_options(options);
+  const RigInputs inputs = load_rig_inputs(options.rig, "", "");
+  const Scene scene = make_scene(options.scene, options.seed);
+  require_option(!scene.moving.empty(), "--scene", "'" + options.scene + "' has no moving object to score",
+                 "cell (the scene with a moving person)");
+  // The cell's sensors are fixed: the rig's robot frame is the cell (world) frame.
+  std::vector<CellSensor> sensors;
+  for (const Mount& mount : inputs.rig.mounts) {
+    sensors.push_back({mount.id, *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id), mount.T_robot_sensor});
+  }
+  OccupancyEvalParams params;
+  params.rate = options.rate;
+  params.duration = options.duration;
+  params.moving_until = options.moving_until;
+  params.seed = options.seed;
+  params.camera_stride = options.camera_stride;
+  params.robot_radius = options.robot_radius;
+  params.min_height = options.min_height;
+  VoxelMapperParams base;
+  base.robot_radius = options.robot_radius;
+  base.window_size = params.window_size;
+  // The whole cell is in reach: every ray clears and marks to its end, as OctoMap's do.
+  base.source.obstacle_max_range = base.source.raytrace_max_range = 10.0;
+  base.source.min_obstacle_height = options.min_height;
+  const std::vector<PersistenceSetting> persistence = persistence_named(options.persistence);
+  const std::vector<VoxelMapperParams> grid = sweep_grid(options.voxels, persistence, base);
+  const auto owned = make_sweep_mappers(grid, SourceLocation{"(command line)"});
+  std::vector<OccupancyMapper*> mappers;
+  for (const auto& mapper : owned) mappers.push_back(mapper.get());
+  const std::vector<OccupancyRun> runs = evaluate_occupancy(scene, sensors, mappers, params);
+
+  std::vector<ParetoPoint> points;
+  nlohmann::json report = {{"rig", inputs.rig.name}, {"scene", options.scene}, {"rate_hz", options.rate},
+                           {"duration_s", options.duration}, {"moving_until_s", options.moving_until},
+                           {"runs", nlohmann::json::array()}};
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    points.push_back({format_number(grid[i].voxel, 3) + " m, " + persistence_label(grid[i]), runs[i].all.object.f2,
+                      runs[i].all.ghost_area, runs[i].all.update_ms});
+    report["runs"].push_back({{"mapper", runs[i].mapper}, {"voxel_m", grid[i].voxel},
+                              {"persistence", persistence_label(grid[i])}, {"all", phase_json(runs[i].all)},
+                              {"moving", phase_json(runs[i].moving)}, {"stationary", phase_json(runs[i].stationary)},
+                              {"pending_changes", runs[i].pending_changes}, {"missed_marks", runs[i].missed_marks},
+                              {"missed_clears", runs[i].missed_clears}});
+  }
+  if (!options.out.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(options.out, error);
+    const std::filesystem::path folder(options.out);
+    write_file_atomically((folder / "occupancy_frames.csv").string(), frames_csv(runs));
+    write_file_atomically((folder / "occupancy_summary.json").string(), report.dump(2) + "\n");
+    plot_occupancy_pareto(points, "Occupancy sweep on the cell: F2 vs ghost area vs time",
+                          (folder / "occupancy_pareto.png").string());
+  }
+  if (options.json) {
+    out << report.dump(2) << '\n';
+    return kOk;
+  }
+  out << inputs.rig.name << " in the " << options.scene << " scene: " << sensors.size() << " sensors, "
+      << runs.front().frames.size() << " frames at " << format_number(options.rate, 4) << " Hz, robot moving until "
+      << format_number(options.moving_until, 4) << " s\n\n";
+  print_tables(runs, grid, out);
+  out << "\nPareto-optimal (F2 up, ghost area down, ms per update down):";
+  for (const std::size_t i : pareto_front(points)) out << "\n  " << points[i].label;
+  out << '\n';
+  if (!options.out.empty()) {
+    out << "wrote occupancy_frames.csv, occupancy_summary.json and occupancy_pareto.png to " << options.out << '\n';
+  }
+  return kOk;
+}
+
+}  // namespace
+
+Command setup_occupancy(CLI::App& parent) {
+  auto options = std::make_shared<OccupancyOptions>();
+  CLI::App* app = parent.add_subcommand("occupancy", "Score occupancy mapping on the dynamic cell (paper 3)");
+  app->add_option("--rig", options->rig, "Rig of the cell's fixed sensors (its robot frame is the cell frame)")
+      ->required();
+  app->add_option("--scene", options->scene, "Scene with a moving person (default cell)");
+  app->add_option("--rate", options->rate, "Frames per second; every sensor records each frame (default 5)");
+  app->add_option("--duration", options->duration, "Seconds to run (default 96: two laps)");
+  app->add_option("--moving-until", options->moving_until,
+                  "The robot counts as moving before this time [s], standing after (default 48)");
+  app->add_option("--voxels", options->voxels, "Voxel lengths to sweep [m] (default 0.05 0.1 0.15 0.2)");
+  app->add_option("--persistence", options->persistence, "Persistence settings: none, paper or sweep (default)")
+      ->check(CLI::IsMember({"none", "paper", "sweep"}));
+  app->add_option("--camera-stride", options->camera_stride, "Keep every n-th camera pixel row and column (default 1)");
+  app->add_option("--robot-radius", options->robot_radius, "Robot radius for the planner grid's truth [m] (default 0.3)");
+  app->add_option("--min-height", options->min_height,
+                  "Points below this height [m] clear but never mark; truth starts here (default 0.1)");
+  app->add_option("--seed", options->seed, "Seed of the range noise (default 1)");
+  app->add_option("--out", options->out, "Folder for occupancy_frames.csv, occupancy_summary.json, occupancy_pareto.png");
+  app->add_flag("--json", options->json, "Print JSON");
+  return {app, [options](std::ostream& out, std::ostream&) { return run_occupancy(*options, out); }};
+}
+
+}  // namespace rigdesign::cli

@@ -1,0 +1,221 @@
+// Issue 6, item 6: our voxel layer against OctoMap 1.9 (Debian's liboctomap-dev, default
+// probabilities, 0.1 m) on the same simulated frames of paper 3's cell, same process, one
+// thread: paper 3's scores near the person, the whole-cell ghost area and trail, and insertion
+// throughput on the same rays. Built only when liboctomap-dev is present
+// (scripts/install-octomap.sh). Usage: occupancy_vs_octomap_bench [duration_s [rate_hz]].
+#include <octomap/octomap.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "rigdesign/costmap/occupancy_evaluation.hpp"
+#include "rigdesign/costmap/occupancy_sweep.hpp"
+#include "rigdesign/costmap/voxel_layer.hpp"
+#include "rigdesign/io/rig_loader.hpp"
+#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/sim/ray_caster.hpp"
+#include "rigdesign/sim/sensor_simulator.hpp"
+
+namespace {
+
+using namespace rigdesign;
+
+constexpr double kResolution = 0.1;  // [m] paper 3's OctoMap row in DESIGN.md
+constexpr double kMinHeight = 0.1;   // [m] as `rigdesign occupancy`'s default
+constexpr double kZMax = 2.0;        // [m] the scored band
+
+// OctoMap with its defaults (hit 0.7, miss 0.4, clamping 0.12/0.97, threshold 0.5). Points
+// below kMinHeight clear along their rays but do not mark, as octomap_server treats ground
+// points, so both mappers mark exactly the same end points.
+class OctoMapMapper final : public OccupancyMapper {
+ public:
+  std::string name() const override { return "OctoMap 0.1 m (defaults)"; }
+  VoxelLattice lattice() const override { return {kResolution, kResolution, 0.0, kZMax}; }
+
+  void update(double, std::span<const PointCloud> clouds, bool) override {
+    for (const PointCloud& cloud : clouds) {
+      const octomap::point3d origin(cloud.origin.x(), cloud.origin.y(), cloud.origin.z());
+      octomap::Pointcloud marking;
+      octomap::KeySet free_cells, occupied_cells;
+      octomap::KeyRay ray;
+      std::vector<octomap::point3d> ground;
+      for (const Point3f& p : cloud.points) {
+        if (p.z() >= kMinHeight) {
+          marking.push_back(p.x(), p.y(), p.z());
+        } else {
+          ground.emplace_back(p.x(), p.y(), p.z());
+        }
+      }
+      tree_.computeUpdate(marking, origin, free_cells, occupied_cells, -1.0);
+      for (const octomap::point3d& end : ground) {
+        if (!tree_.computeRayKeys(origin, end, ray)) continue;
+        for (const octomap::OcTreeKey& key : ray) free_cells.insert(key);
+      }
+      for (const octomap::OcTreeKey& key : free_cells) {
+        if (occupied_cells.find(key) == occupied_cells.end()) tree_.updateNode(key, false);
+      }
+      for (const octomap::OcTreeKey& key : occupied_cells) tree_.updateNode(key, true);
+    }
+  }
+
+  std::vector<VoxelKey> occupied() const override {
+    std::vector<VoxelKey> keys;
+    for (auto it = tree_.begin_leafs(), end = tree_.end_leafs(); it != end; ++it) {
+      if (!tree_.isNodeOccupied(*it)) continue;
+      // A pruned leaf covers several voxels: expand it into its voxel centres.
+      const double size = it.getSize();
+      const int n = static_cast<int>(std::lround(size / kResolution));
+      const octomap::point3d c = it.getCoordinate();
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+          for (int k = 0; k < n; ++k) {
+            const Vec3 p(c.x() - size / 2 + (i + 0.5) * kResolution, c.y() - size / 2 + (j + 0.5) * kResolution,
+                         c.z() - size / 2 + (k + 0.5) * kResolution);
+            if (p.z() < 0.0 || p.z() >= kZMax) continue;
+            keys.push_back(lattice().key_at(p));
+          }
+        }
+      }
+    }
+    return keys;
+  }
+
+ private:
+  octomap::OcTree tree_{kResolution};
+};
+
+std::string cell(double value, int decimals) {
+  if (std::isnan(value)) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+void print_run(const OccupancyRun& run) {
+  const OccupancyPhase& a = run.all;
+  std::printf("| %-26s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", run.mapper.c_str(),
+              cell(a.object.precision, 3).c_str(), cell(a.object.recall, 3).c_str(), cell(a.object.f1, 3).c_str(),
+              cell(a.object.f2, 3).c_str(), cell(a.object.f3, 3).c_str(), cell(a.ghost_area, 2).c_str(),
+              cell(run.moving.ghost_area, 2).c_str(), cell(run.stationary.ghost_area, 2).c_str(),
+              cell(a.trail_length_max, 2).c_str(), cell(a.update_ms, 1).c_str());
+}
+
+struct Frames {
+  std::vector<std::vector<PointCloud>> clouds;
+  std::size_t points = 0;
+};
+
+// The cell's frames as the evaluation makes them (world frame, sensor origins set).
+Frames simulate(const Scene& scene, const std::vector<CellSensor>& sensors, int count, double rate) {
+  Frames frames;
+  std::mt19937_64 rng(1);
+  for (int k = 0; k < count; ++k) {
+    const RayCaster caster(scene.at(k / rate));
+    std::vector<PointCloud> clouds;
+    for (const CellSensor& sensor : sensors) {
+      clouds.push_back(simulate_frame(caster, sensor.mode, ray_pattern(sensor.mode), sensor.T_world_sensor,
+                                      SimulationSettings{}, rng));
+      frames.points += clouds.back().size();
+    }
+    frames.clouds.push_back(std::move(clouds));
+  }
+  return frames;
+}
+
+// Best of `repeats` whole passes over the frames [s]: the least disturbed by other load.
+template <class Insert>
+double best_seconds(int repeats, Insert insert) {
+  double best = 1e300;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    insert();
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  return best;
+}
+
+void throughput(const Scene& scene, const std::vector<CellSensor>& sensors) {
+  const Frames frames = simulate(scene, sensors, 20, 5.0);
+  const double octomap_s = best_seconds(3, [&] {
+    octomap::OcTree tree(kResolution);
+    for (const auto& clouds : frames.clouds) {
+      for (const PointCloud& cloud : clouds) {
+        octomap::Pointcloud scan;
+        for (const Point3f& p : cloud.points) scan.push_back(p.x(), p.y(), p.z());
+        tree.insertPointCloud(scan, octomap::point3d(cloud.origin.x(), cloud.origin.y(), cloud.origin.z()), -1.0);
+      }
+    }
+  });
+  // The same rays whole: a window holding every ray (8 x 8 m, z 0-3 m, above every sensor),
+  // no range limit, every end point marks.
+  GridWindow window = centred_window(8.0, kResolution);
+  VoxelLayerParams params;
+  params.z_max = 3.0;
+  params.z_resolution = kResolution;
+  ObservationSource source;
+  source.obstacle_max_range = source.raytrace_max_range = 1e9;
+  source.min_obstacle_height = -1e9;
+  source.max_obstacle_height = 1e9;
+  const double ours_s = best_seconds(3, [&] {
+    VoxelLayer layer(window, params);
+    for (const auto& clouds : frames.clouds) {
+      for (const PointCloud& cloud : clouds) layer.insert({&cloud, Pose3::Identity(), source});
+    }
+  });
+  const double points = static_cast<double>(frames.points);
+  std::printf("\nInsertion throughput, %zu frames (%.0f points), 0.1 m, full rays, one thread, best of 3:\n",
+              frames.clouds.size(), points);
+  std::printf("| mapper | s | points/s |\n|---|---|---|\n");
+  std::printf("| OctoMap insertPointCloud | %.3f | %.2f M |\n", octomap_s, points / octomap_s / 1e6);
+  std::printf("| our VoxelLayer::insert | %.3f | %.2f M |\n", ours_s, points / ours_s / 1e6);
+  std::printf("ratio ours / OctoMap: %.1fx (target >= 5x)\n", octomap_s / ours_s);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double duration = argc > 1 ? std::atof(argv[1]) : 96.0;
+  const double rate = argc > 2 ? std::atof(argv[2]) : 5.0;
+  const Rig rig = load_rig(RIGDESIGN_SOURCE_DIR "/rigs/cell.yaml");
+  const SensorLibrary library = load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
+  std::vector<CellSensor> sensors;
+  for (const Mount& mount : rig.mounts) {
+    sensors.push_back({mount.id, *library.find(mount.sensor_id)->find_mode(mount.mode_id), mount.T_robot_sensor});
+  }
+  const Scene scene = make_scene("cell", 1);
+
+  VoxelMapperParams base;
+  base.source.obstacle_max_range = base.source.raytrace_max_range = 10.0;
+  base.source.min_obstacle_height = kMinHeight;
+  const std::vector<double> voxels = {0.05, 0.1, 0.15, 0.2};
+  const std::vector<PersistenceSetting> settings = {{false, 0, 0}};
+  std::vector<VoxelMapperParams> grid = sweep_grid(voxels, settings, base);
+  for (const PersistenceSetting& hit : {PersistenceSetting{true, 3, 30}, PersistenceSetting{true, 3, 1500}}) {
+    const std::vector<PersistenceSetting> one = {hit};
+    const std::vector<double> tenth = {kResolution};
+    for (const VoxelMapperParams& params : sweep_grid(tenth, one, base)) grid.push_back(params);
+  }
+  auto ours = make_sweep_mappers(grid, SourceLocation{"(bench)"});
+  OctoMapMapper octomap_mapper;
+  std::vector<OccupancyMapper*> mappers = {&octomap_mapper};
+  for (const auto& mapper : ours) mappers.push_back(mapper.get());
+  OccupancyEvalParams params;
+  params.duration = duration;
+  params.rate = rate;
+  params.min_height = kMinHeight;
+  const std::vector<OccupancyRun> runs = evaluate_occupancy(scene, sensors, mappers, params);
+
+  std::printf("Cell, %zu frames at %.1f Hz (robot moving until %.0f s), same frames for every mapper\n",
+              runs.front().frames.size(), rate, params.moving_until);
+  std::printf("| mapper | P | R | F1 | F2 | F3 | ghost m2 | ghost mov | ghost still | trail (p90) max m | ms/update |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const OccupancyRun& run : runs) print_run(run);
+  throughput(scene, sensors);
+  return 0;
+}

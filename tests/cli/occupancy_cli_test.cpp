@@ -1,0 +1,55 @@
+// `rigdesign occupancy`: the cell rig, the outputs and bad input (kept to a few coarse frames:
+// CI runs this under ASan).
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign::test;
+
+TEST_CASE("the cell rig loads and passes check", "[occupancy]") {
+  const CliResult result = run_cli({"check", source_path("rigs/cell.yaml")});
+  INFO(result.out << result.err);
+  CHECK(result.exit_code == 0);
+  CHECK(result.out.find("4 mounts") != std::string::npos);
+}
+
+TEST_CASE("occupancy writes its frames, summary and Pareto plot", "[occupancy]") {
+  TempFolder folder;
+  const std::string out = folder.path() + "/occ";
+  const CliResult result =
+      run_cli({"occupancy", "--rig", source_path("rigs/cell.yaml"), "--scene", "cell", "--duration", "0.6",
+               "--rate", "5", "--moving-until", "0.2", "--voxels", "0.2", "--persistence", "paper",
+               "--camera-stride", "4", "--out", out, "--json"});
+  INFO(result.err);
+  REQUIRE(result.exit_code == 0);
+  const auto report = nlohmann::json::parse(result.out);
+  REQUIRE(report["runs"].size() == 2);  // 0.2 m without and with hit 3/1500
+  CHECK(report["runs"][0]["persistence"] == "none");
+  CHECK(report["runs"][1]["persistence"] == "hit 3/1500");
+  CHECK(report["runs"][0]["all"]["frames"] == 3);
+  CHECK(report["runs"][0]["moving"]["frames"] == 1);     // t = 0 only
+  CHECK(report["runs"][0]["stationary"]["frames"] == 2);  // t = 0.2, 0.4
+  for (const char* name : {"occupancy_frames.csv", "occupancy_summary.json", "occupancy_pareto.png"}) {
+    CHECK(std::filesystem::file_size(std::filesystem::path(out) / name) > 0);
+  }
+}
+
+TEST_CASE("occupancy rejects bad input with exit code 2", "[occupancy]") {
+  const std::string rig = source_path("rigs/cell.yaml");
+  const CliResult zero = run_cli({"occupancy", "--rig", rig, "--voxels", "0"});
+  CHECK(zero.exit_code == 2);
+  CHECK(zero.err.find("--voxels") != std::string::npos);
+  const CliResult rate = run_cli({"occupancy", "--rig", rig, "--rate", "-1"});
+  CHECK(rate.exit_code == 2);
+  CHECK(rate.err.find("--rate") != std::string::npos);
+  const CliResult scene = run_cli({"occupancy", "--rig", rig, "--scene", "nowhere"});
+  CHECK(scene.exit_code == 2);
+  CHECK(scene.err.find("--scene") != std::string::npos);
+  const CliResult missing = run_cli({"occupancy", "--rig", "/nonexistent/cell.yaml"});
+  CHECK(missing.exit_code == 2);
+  CHECK(run_cli({"occupancy"}).exit_code == 2);  // --rig is required
+}
