@@ -8,8 +8,12 @@
 namespace rigdesign {
 namespace {
 
-PointCloud without(const PointCloud& cloud, std::vector<std::uint32_t> removed) {
-  std::sort(removed.begin(), removed.end());
+PointCloud without(const PointCloud& cloud, const std::vector<std::uint32_t>& removed) {
+  if (!std::is_sorted(removed.begin(), removed.end())) {  // RANSAC's inliers come sorted
+    std::vector<std::uint32_t> sorted = removed;
+    std::sort(sorted.begin(), sorted.end());
+    return without(cloud, sorted);
+  }
   PointCloud result;
   result.origin = cloud.origin;
   result.orientation = cloud.orientation;

@@ -159,8 +159,8 @@ void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch
   }
 }
 
-double estimate_cell(const std::vector<Point3f>& points, int per_cell) {
-  if (points.size() < 2) return 1.0;
+NeighbourGrid grid_for(const std::vector<Point3f>& points, int per_cell) {
+  if (points.size() < 2) return NeighbourGrid(points, 1.0);
   Eigen::Array3f low = points.front().array();
   Eigen::Array3f high = low;
   for (const Point3f& p : points) {
@@ -168,11 +168,14 @@ double estimate_cell(const std::vector<Point3f>& points, int per_cell) {
     high = high.max(p.array());
   }
   const double diagonal = std::max(1e-6, static_cast<double>((high - low).matrix().norm()));
-  // Points on surfaces: spacing ~ diagonal / sqrt(n); refine once from the real occupancy.
-  double cell = 2.0 * diagonal / std::sqrt(static_cast<double>(points.size()));
-  const double occupancy = NeighbourGrid(points, cell).mean_occupancy();
-  if (occupancy > 0) cell *= std::sqrt(per_cell / occupancy);
-  return std::max(cell, diagonal * 1e-6);
+  // Points on surfaces: spacing ~ diagonal / sqrt(n). The grid built on that guess is kept
+  // when its occupancy is within a factor 2 of the aim, else rebuilt once from it.
+  const double guess = 2.0 * diagonal / std::sqrt(static_cast<double>(points.size()));
+  NeighbourGrid grid(points, guess);
+  const double occupancy = grid.mean_occupancy();
+  if (occupancy >= 0.5 * per_cell && occupancy <= 2.0 * per_cell) return grid;
+  const double refined = occupancy > 0 ? guess * std::sqrt(per_cell / occupancy) : guess;
+  return NeighbourGrid(points, std::max(refined, diagonal * 1e-6));
 }
 
 }  // namespace rigdesign::filters

@@ -56,7 +56,7 @@ class NeighbourGrid {
   std::size_t occupied_ = 0;
 };
 
-/// A cell size giving about `per_cell` points per occupied cell (surfaces assumed).
-double estimate_cell(const std::vector<Point3f>& points, int per_cell);
+/// A grid whose occupied cells hold about `per_cell` points (surfaces assumed).
+NeighbourGrid grid_for(const std::vector<Point3f>& points, int per_cell);
 
 }  // namespace rigdesign::filters

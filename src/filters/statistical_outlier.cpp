@@ -26,8 +26,8 @@ std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,
     for (std::uint32_t i = 0; i < cloud.size(); ++i) kept.push_back(i);
     return kept;
   }
-  const double cell = params.cell > 0 ? params.cell : filters::estimate_cell(cloud.points, params.neighbours);
-  const filters::NeighbourGrid grid(cloud.points, cell);
+  const filters::NeighbourGrid grid = params.cell > 0 ? filters::NeighbourGrid(cloud.points, params.cell)
+                                                      : filters::grid_for(cloud.points, params.neighbours);
   std::vector<double> mean_distance(cloud.size());
   filters::NeighbourScratch scratch;
   double sum = 0.0;

@@ -136,18 +136,23 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
     }
     table.swap(bigger);
   };
-  // Keys first, in a loop of their own, so the table pass can prefetch the slot a few
-  // points ahead: the table is larger than the cache and a miss costs more than the rest.
-  const std::unique_ptr<std::uint64_t[]> keys(new std::uint64_t[cloud.size()]);  // not zeroed
-  for (std::size_t i = 0; i + 1 < cloud.size(); ++i) {
-    keys[i] = voxel_key(four_lanes(cloud.points[i]), offset4, inverse, first4);
-  }
-  const Point3f& back = cloud.points.back();
-  keys[cloud.size() - 1] = voxel_key(Eigen::Array4f(back.x(), back.y(), back.z(), back.x()), offset4, inverse, first4);
-  constexpr std::size_t kPrefetchAhead = 16;
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (i + kPrefetchAhead < cloud.size()) __builtin_prefetch(&table[home(keys[i + kPrefetchAhead])], 1);
-    const std::uint64_t key = keys[i];
+  // A point's key is computed a few points ahead of its turn, in a small ring, so the table
+  // slot it will touch can be prefetched: the table is larger than the cache and a miss costs
+  // more than the rest of the work.
+  constexpr std::size_t kAhead = 16;  // a power of two
+  const std::size_t points = cloud.size();
+  const auto key_at = [&](std::size_t i) {
+    const Point3f& p = cloud.points[i];
+    return voxel_key(i + 1 < points ? four_lanes(p) : Eigen::Array4f(p.x(), p.y(), p.z(), p.x()), offset4, inverse, first4);
+  };
+  std::uint64_t ahead[kAhead];
+  for (std::size_t i = 0; i < std::min(kAhead, points); ++i) ahead[i] = key_at(i);
+  for (std::size_t i = 0; i < points; ++i) {
+    const std::uint64_t key = ahead[i % kAhead];
+    if (i + kAhead < points) {
+      ahead[i % kAhead] = key_at(i + kAhead);
+      __builtin_prefetch(&table[home(ahead[i % kAhead])], 1);
+    }
     const std::size_t mask = table.size() - 1;
     std::size_t slot = home(key);
     while (table[slot].count != 0 && table[slot].key != key) slot = (slot + 1) & mask;
