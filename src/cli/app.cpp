@@ -23,6 +23,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
                                          setup_coverage(app), setup_select(app),
                                          setup_filter(app), setup_simulate(app),
                                          setup_occupancy(app),
+                                         setup_localize(app),
                                          setup_costmap(app)};
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back

@@ -25,7 +25,8 @@ Command setup_coverage(CLI::App& parent);
 Command setup_select(CLI::App& parent);
 Command setup_filter(CLI::App& parent);
 Command setup_simulate(CLI::App& parent);
-Command setup_costmap(CLI::App& parent);
+Command setup_localize(CLI::App& parent);
 Command setup_occupancy(CLI::App& parent);
+Command setup_costmap(CLI::App& parent);
 
 }  // namespace rigdesign::cli

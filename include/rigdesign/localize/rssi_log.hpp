@@ -1,0 +1,44 @@
+#pragma once
+/// A robot's Wi-Fi log: where the robot was and how strongly it heard each emitter (BSSID).
+///
+/// File form (CSV, UTF-8, one reading per line), header first:
+///     t,x,y,z,bssid,rssi
+///     0.0,1.25,-3.0,0.4,aa:bb:cc:dd:ee:ff,-61
+/// t [s], x y z [m] (the robot's antenna in the map frame), rssi [dBm, <= 0]. Columns may
+/// come in any order and extra columns are ignored; blank lines and lines starting with '#'
+/// are skipped. Errors name file:line:column, where column is the 1-based character column
+/// at which the offending field starts, and the field is the column's header name.
+#include <string>
+#include <vector>
+
+#include "rigdesign/model/eigen_types.hpp"
+
+namespace rigdesign {
+
+struct RssiReading {
+  double t = 0.0;       ///< [s]
+  Vec3 position;        ///< robot antenna position [m]
+  int emitter = 0;      ///< index into RssiLog::emitters
+  double rssi_dbm = 0;  ///< [dBm]
+};
+
+struct RssiLog {
+  std::string source;                 ///< file name, for messages and plots
+  std::vector<std::string> emitters;  ///< BSSIDs in order of first appearance
+  std::vector<RssiReading> readings;  ///< in file order
+
+  /// Index of `bssid` in emitters, or -1.
+  int find(const std::string& bssid) const;
+};
+
+/// Parses the CSV text above; `file` names it in errors. Throws InputError on a missing
+/// column, a non-numeric or non-finite number, an RSSI above 0 dBm or a log without readings.
+RssiLog parse_rssi_csv(const std::string& text, const std::string& file);
+
+/// Reads and parses a file (InputError when it cannot be opened).
+RssiLog read_rssi_log(const std::string& path);
+
+/// The CSV form parse_rssi_csv reads (round trip; numbers with enough digits to reproduce).
+std::string to_rssi_csv(const RssiLog& log);
+
+}  // namespace rigdesign

@@ -1,0 +1,32 @@
+#pragma once
+/// Top view of a localisation run (PNG or SVG by extension): the robot's path coloured by the
+/// measured value (RSSI or CO2), walls, estimates with their 2-sigma ellipses, twins, the
+/// truth, gas detections and artifacts. Axes in metres, equal scale.
+#include <string>
+#include <vector>
+
+#include "rigdesign/model/eigen_types.hpp"
+
+namespace rigdesign {
+
+enum class PlotMarkerKind { estimate, alternative, truth, detection, lag_corrected, artifact };
+
+struct PlotMarker {
+  Vec3 position = Vec3::Zero();
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();  ///< [m^2]; drawn as a 2-sigma ellipse
+  std::string label;
+  PlotMarkerKind kind = PlotMarkerKind::estimate;
+};
+
+struct LocalizePlot {
+  std::string title;
+  std::vector<Vec3> path;      ///< reading positions [m]
+  std::vector<double> values;  ///< one per path point (may be empty)
+  std::string value_label;     ///< e.g. "RSSI [dBm]"
+  std::vector<std::pair<Vec2, Vec2>> walls;
+  std::vector<PlotMarker> markers;
+};
+
+void plot_localization(const LocalizePlot& plot, const std::string& path, int width = 1000, int height = 820);
+
+}  // namespace rigdesign

@@ -1,0 +1,39 @@
+#pragma once
+// Splitting log lines into located fields and parsing numbers with file:line:column errors,
+// shared by the RSSI, CO2 and ground-truth readers. Private to src/localize.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "rigdesign/model/source_location.hpp"
+
+namespace rigdesign::localize_detail {
+
+struct Field {
+  std::string text;  ///< trimmed of spaces and tabs
+  int column = 1;    ///< 1-based character column where the field starts
+};
+
+/// A non-blank, non-comment line of a text file with its 1-based number.
+struct Line {
+  std::string text;
+  int number = 0;
+};
+
+/// Lines of `text` without blank lines and '#' comments; CR before LF removed.
+std::vector<Line> content_lines(const std::string& text);
+
+/// Fields separated by `separator` (',' for CSV; ' ' means runs of spaces or tabs).
+std::vector<Field> split_fields(const std::string& line, char separator);
+
+/// The field as a finite number; throws InputError at `where` naming `name` otherwise.
+double parse_number(const Field& field, const SourceLocation& where, const std::string& name);
+
+/// Index of `name` in the header, or throws InputError (line 1) listing what is required.
+std::size_t require_column(const std::vector<Field>& header, const std::string& name,
+                           const std::string& file, int line, const std::string& expected_header);
+
+/// The whole file as a string; InputError (field "file") when it cannot be read.
+std::string read_text_file(const std::string& path);
+
+}  // namespace rigdesign::localize_detail
