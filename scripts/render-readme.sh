@@ -16,3 +16,18 @@ for rig in ur_cleaner elektron delivery_amr; do
   rm -rf "renders/$rig"
   ./build/release/src/rigdesign coverage "rigs/$rig.yaml" --out "renders/$rig" --angles 0,45,90,180
 done
+# Paper 1's Fig. 12: the four costmap variants on the wall-following scenario (final frames).
+rm -rf renders/costmap
+./build/release/src/rigdesign costmap --rig rigs/ur_cleaner.yaml --scenario wall_following --compare \
+  --out renders/costmap
+rm -rf renders/costmap/*/frames
+# Paper 3's cell: the occupancy sweep's Pareto plot and summary.
+rm -rf renders/occupancy
+./build/release/src/rigdesign occupancy --rig rigs/cell.yaml --scene cell --out renders/occupancy
+rm -f renders/occupancy/occupancy_frames.csv
+# Paper 4: a phone around a corner, and the hallway's two mirror hypotheses.
+rm -rf renders/localize
+for scenario in corner hallway; do
+  ./build/release/src/rigdesign localize --scenario "$scenario" --seed 1 --out "renders/localize/$scenario"
+  rm -f renders/localize/"$scenario"/*.svg renders/localize/"$scenario"/*.csv
+done

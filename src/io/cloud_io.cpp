@@ -2,12 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "io/cloud_formats.hpp"
+#include "io/file_bytes.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/input_error.hpp"
 
@@ -30,33 +28,12 @@ CloudFormat format_of(const std::string& path) {
       {path, 0, 0}, field, "is neither a .pcd nor a .ply file", "a path ending in .pcd or .ply"});
 }
 
-std::string read_whole_file(const std::string& path) {
-  const std::string expected = "a readable point cloud file";
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) {
-    throw InputError(Diagnostic{{path, 0, 0}, "file", "is a folder", expected});
-  }
-  std::ifstream stream(path, std::ios::binary | std::ios::ate);
-  if (!stream) {
-    throw InputError(Diagnostic{
-        {path, 0, 0}, "file", std::string("cannot be opened: ") + std::strerror(errno), expected});
-  }
-  // One read of the known size: real clouds are megabytes.
-  std::string bytes(static_cast<std::size_t>(stream.tellg()), '\0');
-  stream.seekg(0);
-  stream.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!stream) {
-    throw InputError(Diagnostic{{path, 0, 0}, "file", "cannot be read to its end", expected});
-  }
-  return bytes;
-}
-
 }  // namespace
 
 PointCloud read_cloud(const std::string& path, CloudReadReport* report) {
   const CloudFormat format = format_of(path);
   if (format == CloudFormat::unknown) throw_unknown_extension(path, "file");
-  const std::string bytes = read_whole_file(path);
+  const std::string bytes = io::read_file_bytes(path, "a readable point cloud file");
   CloudReadReport local_report;
   CloudReadReport& filled = report ? *report : local_report;
   filled = CloudReadReport{};

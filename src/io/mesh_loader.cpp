@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 
+#include "io/file_bytes.hpp"
 #include "io/mesh_formats.hpp"
 #include "rigdesign/io/input_error.hpp"
 
@@ -27,25 +25,6 @@ MeshFormat format_of(const std::string& path) {
   return MeshFormat::unknown;
 }
 
-std::string read_mesh_file(const std::string& path) {
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) {
-    throw InputError(Diagnostic{{path, 0, 0}, "file", "is a folder", kReadable});
-  }
-  std::ifstream stream(path, std::ios::binary | std::ios::ate);
-  if (!stream) {
-    throw InputError(Diagnostic{
-        {path, 0, 0}, "file", std::string("cannot be opened: ") + std::strerror(errno), kReadable});
-  }
-  std::string bytes(static_cast<std::size_t>(stream.tellg()), '\0');
-  stream.seekg(0);
-  stream.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!stream) {
-    throw InputError(Diagnostic{{path, 0, 0}, "file", "cannot be read to its end", kReadable});
-  }
-  return bytes;
-}
-
 }  // namespace
 
 bool has_mesh_extension(const std::string& path) {
@@ -61,7 +40,7 @@ TriangleMesh load_mesh(const std::string& path) {
                                     std::filesystem::path(path).extension().string() + "'",
                                 "a path ending in .ply, .obj or .off"});
   }
-  const std::string bytes = read_mesh_file(path);
+  const std::string bytes = io::read_file_bytes(path, kReadable);
   TriangleMesh mesh = format == MeshFormat::ply   ? io::parse_ply_mesh(path, bytes)
                       : format == MeshFormat::obj ? io::parse_obj_mesh(path, bytes)
                                                   : io::parse_off_mesh(path, bytes);
