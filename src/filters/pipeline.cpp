@@ -46,17 +46,22 @@ PointCloud run_stage(const StageParams& stage, const PointCloud& cloud) {
       stage);
 }
 
-PointCloud run_pipeline(const Pipeline& pipeline, PointCloud cloud, std::vector<StageRun>* runs) {
+PointCloud run_pipeline(const Pipeline& pipeline, const PointCloud& input, std::vector<StageRun>* runs) {
+  // The first stage reads the caller's cloud in place: a sensor frame is megabytes, and
+  // copying it would be paid on every frame.
+  const PointCloud* current = &input;
+  PointCloud cloud;
   for (const StageParams& stage : pipeline.stages) {
     const auto start = std::chrono::steady_clock::now();
-    const std::size_t points_in = cloud.size();
-    cloud = run_stage(stage, cloud);
+    const std::size_t points_in = current->size();
+    cloud = run_stage(stage, *current);
+    current = &cloud;
     if (runs != nullptr) {
       runs->push_back({stage_name(stage), points_in, cloud.size(),
                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
     }
   }
-  return cloud;
+  return current == &input ? input : cloud;
 }
 
 }  // namespace rigdesign

@@ -27,7 +27,7 @@ struct StageRun {
 };
 
 /// Runs the stages in order; `runs` receives one entry per stage.
-PointCloud run_pipeline(const Pipeline& pipeline, PointCloud cloud, std::vector<StageRun>* runs = nullptr);
+PointCloud run_pipeline(const Pipeline& pipeline, const PointCloud& input, std::vector<StageRun>* runs = nullptr);
 
 PointCloud run_stage(const StageParams& stage, const PointCloud& cloud);
 
