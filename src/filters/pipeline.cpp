@@ -1,8 +1,6 @@
 #include "rigdesign/filters/pipeline.hpp"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 
 namespace rigdesign {
 
@@ -53,18 +51,10 @@ PointCloud run_pipeline(const Pipeline& pipeline, const PointCloud& input, std::
   // copying it would be paid on every frame.
   const PointCloud* current = &input;
   PointCloud cloud;
-  double spacing = 0.0;  // [m] the points' spacing once a voxel grid has set it
   for (const StageParams& stage : pipeline.stages) {
     const auto start = std::chrono::steady_clock::now();
     const std::size_t points_in = current->size();
-    StageParams effective = stage;
-    if (auto* sor = std::get_if<StatisticalOutlierParams>(&effective); sor && sor->cell <= 0 && spacing > 0) {
-      // After a voxel grid the spacing is known: a surface leaves about one point per leaf^2,
-      // so cells of leaf * sqrt(N) hold about N points each, and the search need not guess.
-      sor->cell = spacing * std::sqrt(static_cast<double>(std::max(1, sor->neighbours)));
-    }
-    cloud = run_stage(effective, *current);
-    if (const auto* voxel = std::get_if<VoxelGridParams>(&stage)) spacing = voxel->leaf;
+    cloud = run_stage(stage, *current);
     current = &cloud;
     if (runs != nullptr) {
       runs->push_back({stage_name(stage), points_in, cloud.size(),
