@@ -1,7 +1,6 @@
 #include "app.hpp"
 
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 
 #include "command.hpp"
@@ -19,12 +18,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   app.name("rigdesign");
   app.require_subcommand(1);
   app.set_version_flag("--version", "rigdesign 0.1.0");
-  const std::vector<Command> commands = {setup_metrics(app), setup_check(app),
-                                         setup_coverage(app), setup_select(app),
-                                         setup_filter(app), setup_simulate(app),
-                                         setup_occupancy(app),
-                                         setup_localize(app),
-                                         setup_costmap(app)};
+  const std::vector<Command> commands = {
+      setup_metrics(app),   setup_check(app),    setup_coverage(app),
+      setup_select(app),    setup_filter(app),   setup_simulate(app),
+      setup_occupancy(app), setup_localize(app), setup_costmap(app)};
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
   try {

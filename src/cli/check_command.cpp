@@ -2,7 +2,6 @@
 // validates rig, sensor and requirement files for CI and judges rigs against requirements.
 // Exit 0 when all pass, 1 when a requirement fails, 2 when any input is invalid.
 #include <CLI/CLI.hpp>
-
 #include <memory>
 #include <ostream>
 
@@ -53,8 +52,9 @@ int run_check(const CheckOptions& options, std::ostream& out) {
 Command setup_check(CLI::App& parent) {
   auto options = std::make_shared<CheckOptions>();
   CLI::App* app = parent.add_subcommand(
-      "check", "Validate rig, sensor and requirement files and judge rigs against requirements "
-               "(exit 0 pass, 1 a requirement fails, 2 invalid input)");
+      "check",
+      "Validate rig, sensor and requirement files and judge rigs against requirements "
+      "(exit 0 pass, 1 a requirement fails, 2 invalid input)");
   app->add_option("files", options->files, "Rig, sensors.yaml or requirement files")->required();
   app->add_option("--requirements", options->requirements,
                   "Requirements to judge every rig against (default: the file each rig names)");

@@ -3,7 +3,6 @@
 // (issue 6 item 3), prints the outcome and the per-update times, and writes costmap frames
 // (PNG), the final grids as map_server PGM + YAML and a summary JSON.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -69,7 +68,9 @@ std::string joined(const std::vector<std::string>& names) {
   return text;
 }
 
-double milliseconds(double seconds) { return seconds * 1e3; }
+double milliseconds(double seconds) {
+  return seconds * 1e3;
+}
 
 // Each mount's horizontal view on the floor at the robot's pose.
 std::vector<FovWedge> fov_wedges(const Rig& rig, const SensorLibrary& library, const Pose2& pose,
@@ -106,8 +107,9 @@ std::vector<std::uint8_t> remembered_cells(const Costmap& costmap) {
 
 std::string outcome_text(const ScenarioResult& result) {
   if (result.collided) {
-    return "collision with " + result.collision_object + " at t = " + fixed(result.collision_time, 2) +
-           " s (robot at x " + fixed(result.collision_position.x(), 2) + ", y " +
+    return "collision with " + result.collision_object +
+           " at t = " + fixed(result.collision_time, 2) + " s (robot at x " +
+           fixed(result.collision_position.x(), 2) + ", y " +
            fixed(result.collision_position.y(), 2) + " m)";
   }
   return result.reached_goal ? "none; goal reached at t = " + fixed(result.end_time, 2) + " s"
@@ -121,7 +123,8 @@ nlohmann::json summary_json(const CostmapOptions& options, const Rig& rig, const
   const TimeSummary plan = summarize_times(result.planner_seconds);
   nlohmann::json trajectory = nlohmann::json::array();
   for (const TrajectorySample& sample : result.trajectory) {
-    trajectory.push_back({sample.time, sample.pose.position.x(), sample.pose.position.y(), sample.pose.yaw});
+    trajectory.push_back(
+        {sample.time, sample.pose.position.x(), sample.pose.position.y(), sample.pose.yaw});
   }
   nlohmann::json json = {
       {"rig", rig.name},
@@ -136,10 +139,11 @@ nlohmann::json summary_json(const CostmapOptions& options, const Rig& rig, const
       {"update_rate_hz", params.update_rate},
       {"speed_m_per_s", params.follower.speed},
       {"collided", result.collided},
-      {"collision_time_s", result.collided ? nlohmann::json(result.collision_time) : nlohmann::json()},
+      {"collision_time_s",
+       result.collided ? nlohmann::json(result.collision_time) : nlohmann::json()},
       {"collision_object", result.collision_object},
       {"min_clearance_m", std::isfinite(result.min_clearance) ? nlohmann::json(result.min_clearance)
-                                                                : nlohmann::json()},
+                                                              : nlohmann::json()},
       {"min_clearance_time_s", result.min_clearance_time},
       {"min_clearance_object", result.min_clearance_object},
       {"reached_goal", result.reached_goal},
@@ -169,35 +173,40 @@ VariantRun run_variant(const CostmapOptions& options, const RigInputs& inputs,
   std::vector<Vec2> trail;
   const auto outlines_at = [&](double t) {
     std::vector<NamedMesh> meshes;
-    for (const SceneObject& object : scenario.scene.objects) meshes.push_back({object.name, &object.mesh});
+    for (const SceneObject& object : scenario.scene.objects)
+      meshes.push_back({object.name, &object.mesh});
     moved.clear();
-    for (const MovingObject& object : scenario.scene.moving) moved.emplace_back().append(object.mesh, object.T_world_object(t));
-    for (std::size_t i = 0; i < moved.size(); ++i) meshes.push_back({scenario.scene.moving[i].name, &moved[i]});
+    for (const MovingObject& object : scenario.scene.moving)
+      moved.emplace_back().append(object.mesh, object.T_world_object(t));
+    for (std::size_t i = 0; i < moved.size(); ++i)
+      meshes.push_back({scenario.scene.moving[i].name, &moved[i]});
     return FootprintCollisionChecker(meshes, band).outlines();
   };
   const std::vector<std::vector<Vec2>> still_outlines = outlines_at(0.0);
   const std::string title = inputs.rig.name + ", " + options.scenario + ", " + variant.label();
-  run.result = run_scenario(scenario, inputs.rig, inputs.library, params, [&](const ScenarioStep& step) {
-    trail.push_back(step.pose.position);
-    last_master = step.costmap->master();
-    last_obstacles = step.costmap->obstacle_grid();
-    frame.title = title + ", t = " + fixed(step.time, 1) + " s";
-    frame.remembered = remembered_cells(*step.costmap);
-    frame.obstacles = scenario.scene.moving.empty() ? still_outlines : outlines_at(step.time);
-    frame.fovs = fov_wedges(inputs.rig, inputs.library, step.pose, params.source.obstacle_max_range);
-    frame.path = step.path->waypoints_world;
-    frame.trail = trail;
-    frame.robot = step.pose.position;
-    frame.yaw = step.pose.yaw;
-    frame.robot_radius = inputs.rig.body.radius;
-    if (options.frame_every > 0 && step.index % options.frame_every == 0) {
-      frame.master = &last_master;
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%04d.png", step.index);
-      draw_costmap_frame(frame, folder + "/frames/" + name);
-      ++run.frames;
-    }
-  });
+  run.result =
+      run_scenario(scenario, inputs.rig, inputs.library, params, [&](const ScenarioStep& step) {
+        trail.push_back(step.pose.position);
+        last_master = step.costmap->master();
+        last_obstacles = step.costmap->obstacle_grid();
+        frame.title = title + ", t = " + fixed(step.time, 1) + " s";
+        frame.remembered = remembered_cells(*step.costmap);
+        frame.obstacles = scenario.scene.moving.empty() ? still_outlines : outlines_at(step.time);
+        frame.fovs =
+            fov_wedges(inputs.rig, inputs.library, step.pose, params.source.obstacle_max_range);
+        frame.path = step.path->waypoints_world;
+        frame.trail = trail;
+        frame.robot = step.pose.position;
+        frame.yaw = step.pose.yaw;
+        frame.robot_radius = inputs.rig.body.radius;
+        if (options.frame_every > 0 && step.index % options.frame_every == 0) {
+          frame.master = &last_master;
+          char name[32];
+          std::snprintf(name, sizeof name, "frame_%04d.png", step.index);
+          draw_costmap_frame(frame, folder + "/frames/" + name);
+          ++run.frames;
+        }
+      });
   // The last picture shows where the run ended: the collision pose or the goal.
   const TrajectorySample& last = run.result.trajectory.back();
   frame.master = &last_master;
@@ -209,7 +218,8 @@ VariantRun run_variant(const CostmapOptions& options, const RigInputs& inputs,
   draw_costmap_frame(frame, folder + "/final.png");
   write_map_files(to_occupancy_map(last_master), folder + "/master.yaml");
   write_map_files(to_occupancy_map(last_obstacles), folder + "/obstacles.yaml");
-  write_file_atomically(folder + "/summary.json", summary_json(options, inputs.rig, run, params).dump(2) + "\n");
+  write_file_atomically(folder + "/summary.json",
+                        summary_json(options, inputs.rig, run, params).dump(2) + "\n");
   return run;
 }
 
@@ -220,16 +230,18 @@ void print_run(std::ostream& out, const VariantRun& run) {
   out << run.variant.label() << "\n";
   out << "  collision: " << outcome_text(result) << "\n";
   out << "  minimum clearance: "
-      << (std::isfinite(result.min_clearance) ? fixed(result.min_clearance, 3) + " m (" +
-                                                    result.min_clearance_object + ", t = " +
-                                                    fixed(result.min_clearance_time, 2) + " s)"
-                                              : std::string("no obstacle in the body's height band"))
+      << (std::isfinite(result.min_clearance)
+              ? fixed(result.min_clearance, 3) + " m (" + result.min_clearance_object +
+                    ", t = " + fixed(result.min_clearance_time, 2) + " s)"
+              : std::string("no obstacle in the body's height band"))
       << "\n";
   out << "  costmap update: median " << fixed(milliseconds(update.median), 2) << " ms, p99 "
-      << fixed(milliseconds(update.p99), 2) << " ms over " << result.updates << " updates; planner median "
-      << fixed(milliseconds(plan.median), 2) << " ms, p99 " << fixed(milliseconds(plan.p99), 2) << " ms\n";
-  out << "  wrote " << run.folder << "/summary.json, final.png, master.yaml (+ .pgm), obstacles.yaml (+ .pgm), "
-      << run.frames << " frame(s) in frames/\n";
+      << fixed(milliseconds(update.p99), 2) << " ms over " << result.updates
+      << " updates; planner median " << fixed(milliseconds(plan.median), 2) << " ms, p99 "
+      << fixed(milliseconds(plan.p99), 2) << " ms\n";
+  out << "  wrote " << run.folder
+      << "/summary.json, final.png, master.yaml (+ .pgm), obstacles.yaml (+ .pgm), " << run.frames
+      << " frame(s) in frames/\n";
 }
 
 void print_comparison(std::ostream& out, const std::vector<VariantRun>& runs) {
@@ -244,22 +256,25 @@ void print_comparison(std::ostream& out, const std::vector<VariantRun>& runs) {
   for (const VariantRun& run : runs) {
     const ScenarioResult& result = run.result;
     const TimeSummary update = summarize_times(result.update_seconds);
-    table.add_row({run.variant.label(), result.collided ? fixed(result.collision_time, 2) : "none",
-                   result.collided ? result.collision_object : "-",
-                   std::isfinite(result.min_clearance) ? fixed(result.min_clearance, 3) : "-",
-                   result.reached_goal ? "reached at " + fixed(result.end_time, 1) + " s" : "not reached",
-                   fixed(milliseconds(update.median), 2), fixed(milliseconds(update.p99), 2)});
+    table.add_row(
+        {run.variant.label(), result.collided ? fixed(result.collision_time, 2) : "none",
+         result.collided ? result.collision_object : "-",
+         std::isfinite(result.min_clearance) ? fixed(result.min_clearance, 3) : "-",
+         result.reached_goal ? "reached at " + fixed(result.end_time, 1) + " s" : "not reached",
+         fixed(milliseconds(update.median), 2), fixed(milliseconds(update.p99), 2)});
   }
   table.print(out, "  ");
 }
 
 int run_costmap(const CostmapOptions& options, std::ostream& out) {
   const std::vector<std::string>& names = costmap_scenario_names();
-  require_option(std::find(names.begin(), names.end(), options.scenario) != names.end(), "--scenario",
-                 "unknown scenario '" + options.scenario + "'", "one of: " + joined(names));
+  require_option(std::find(names.begin(), names.end(), options.scenario) != names.end(),
+                 "--scenario", "unknown scenario '" + options.scenario + "'",
+                 "one of: " + joined(names));
   require_option(options.layer == "obstacle" || options.layer == "voxel", "--layer",
                  "unknown layer '" + options.layer + "'", "obstacle or voxel");
-  require_option(options.resolution > 0.0, "--resolution", "must be positive", "a cell side > 0 [m]");
+  require_option(options.resolution > 0.0, "--resolution", "must be positive",
+                 "a cell side > 0 [m]");
   require_option(options.window > 0.0, "--window", "must be positive", "a window side > 0 [m]");
   require_option(options.speed > 0.0, "--speed", "must be positive", "a speed > 0 [m/s]");
   require_option(options.update_rate > 0.0 && options.update_rate <= 20.0, "--update-rate",
@@ -268,9 +283,10 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
                  "0 (no frames) or a number of updates");
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, "");
   const double footprint = 2.0 * inputs.rig.body.radius;
-  require_option(options.window >= footprint, "--window",
-                 "is smaller than the robot's footprint (" + format_number(footprint) + " m across)",
-                 "a window side >= " + format_number(footprint) + " m");
+  require_option(
+      options.window >= footprint, "--window",
+      "is smaller than the robot's footprint (" + format_number(footprint) + " m across)",
+      "a window side >= " + format_number(footprint) + " m");
   ScenarioParams params;
   params.costmap.resolution = options.resolution;
   params.costmap.size_x = options.window;
@@ -282,20 +298,21 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
 
   const ScenarioDefinition scenario = make_costmap_scenario(options.scenario, options.seed);
   const std::string folder = options.out.empty() ? "costmap/" + options.scenario : options.out;
-  out << inputs.rig.name << " in scenario " << scenario.name << " (seed " << options.seed << "): "
-      << scenario.description << "\n";
+  out << inputs.rig.name << " in scenario " << scenario.name << " (seed " << options.seed
+      << "): " << scenario.description << "\n";
   out << "  " << format_number(options.resolution) << " m cells, " << format_number(options.window)
       << " m window, " << format_number(options.update_rate) << " Hz updates, "
-      << format_number(options.speed) << " m/s; Hit Layer hit " << params.costmap.hit.hit << ", hit_max "
-      << params.costmap.hit.hit_max << "\n";
+      << format_number(options.speed) << " m/s; Hit Layer hit " << params.costmap.hit.hit
+      << ", hit_max " << params.costmap.hit.hit_max << "\n";
   std::vector<Variant> variants;
   if (options.compare) {
     for (ObstacleLayerKind layer : {ObstacleLayerKind::obstacle, ObstacleLayerKind::voxel}) {
       for (bool hit : {false, true}) variants.push_back({layer, hit});
     }
   } else {
-    variants.push_back({options.layer == "voxel" ? ObstacleLayerKind::voxel : ObstacleLayerKind::obstacle,
-                        !options.no_hit_layer});
+    variants.push_back(
+        {options.layer == "voxel" ? ObstacleLayerKind::voxel : ObstacleLayerKind::obstacle,
+         !options.no_hit_layer});
   }
   std::vector<VariantRun> runs;
   nlohmann::json all = nlohmann::json::array();
@@ -318,8 +335,9 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
 
 Command setup_costmap(CLI::App& parent) {
   auto options = std::make_shared<CostmapOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "costmap", "Drive the rig's robot through a scenario with the costmap, planner and follower in the loop");
+  CLI::App* app = parent.add_subcommand("costmap",
+                                        "Drive the rig's robot through a scenario with the "
+                                        "costmap, planner and follower in the loop");
   app->add_option("--rig", options->rig, "Rig file")->required();
   app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
   app->add_option("--scenario", options->scenario, "wall_following or stationary")->required();
@@ -330,8 +348,10 @@ Command setup_costmap(CLI::App& parent) {
   app->add_option("--resolution", options->resolution, "Cell side [m] (default 0.05)");
   app->add_option("--window", options->window, "Rolling window side [m] (default 6)");
   app->add_option("--speed", options->speed, "Driving speed [m/s] (default 0.4)");
-  app->add_option("--update-rate", options->update_rate, "Sensing, costmap and planning rate [Hz] (default 5)");
-  app->add_option("--frame-every", options->frame_every, "Write a PNG frame every N updates (default 5, 0: none)");
+  app->add_option("--update-rate", options->update_rate,
+                  "Sensing, costmap and planning rate [Hz] (default 5)");
+  app->add_option("--frame-every", options->frame_every,
+                  "Write a PNG frame every N updates (default 5, 0: none)");
   app->add_option("--seed", options->seed, "Seed of the scene and the sensor noise (default 1)");
   app->add_option("--out", options->out, "Output folder (default costmap/<scenario>)");
   return {app, [options](std::ostream& out, std::ostream&) { return run_costmap(*options, out); }};

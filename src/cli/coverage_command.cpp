@@ -2,7 +2,6 @@
 // and polar, PNG and SVG), cross-sections at chosen angles, 3D views of the FOV volumes
 // (OSMesa), and the numbers as CSV and JSON. Runs without a display.
 #include <CLI/CLI.hpp>
-
 #include <filesystem>
 #include <memory>
 #include <ostream>
@@ -37,10 +36,9 @@ int run_coverage(const CoverageOptions& options, std::ostream& out) {
                    "comma-separated degrees, e.g. 0,45,90");
   }
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
-  const std::string folder =
-      options.out.empty()
-          ? "coverage/" + std::filesystem::path(options.rig).stem().string()
-          : options.out;
+  const std::string folder = options.out.empty()
+                                 ? "coverage/" + std::filesystem::path(options.rig).stem().string()
+                                 : options.out;
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   require_option(!error, "--out", "cannot create folder '" + folder + "': " + error.message(),
@@ -66,8 +64,8 @@ int run_coverage(const CoverageOptions& options, std::ostream& out) {
         << format_number(sector.complete.min * 100, 3) << " % (needs "
         << format_number(sector.sector.min_complete_coverage * 100, 3) << "), floor min "
         << format_number(sector.floor.min * 100, 3) << " % (needs "
-        << format_number(sector.sector.min_floor_coverage * 100, 3) << "): "
-        << (sector.pass ? "pass" : "FAIL") << '\n';
+        << format_number(sector.sector.min_floor_coverage * 100, 3)
+        << "): " << (sector.pass ? "pass" : "FAIL") << '\n';
   }
   out << "wrote " << written.size() << " files:\n";
   for (const std::string& file : written) out << "  " << file << '\n';

@@ -6,8 +6,8 @@
 #include "json_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/model/format_number.hpp"
-#include "rigdesign/render/coverage_plots.hpp"
 #include "rigdesign/model/units.hpp"
+#include "rigdesign/render/coverage_plots.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
 #include "rigdesign/render/palette.hpp"
 
@@ -63,7 +63,8 @@ std::vector<std::string> write_coverage_files(const Rig& rig, const SensorLibrar
     draw_section(view, rig.name, path(name + ".svg"));
   }
   if (with_3d) {
-    for (const auto& [viewpoint, name] : views_3d()) render_rig_3d(rig, library, viewpoint, path(name));
+    for (const auto& [viewpoint, name] : views_3d())
+      render_rig_3d(rig, library, viewpoint, path(name));
   }
   write_file_atomically(path("coverage.csv"), coverage_csv(coverage));
   write_file_atomically(path("coverage.json"), to_json(coverage, true).dump(2) + "\n");
@@ -77,8 +78,8 @@ void render_rig_3d(const Rig& rig, const SensorLibrary& library, Viewpoint viewp
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
     const Mount& mount = rig.mounts[i];
     const SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    meshes.push_back({fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest),
-                      sensor_colour(i), 0.35});
+    meshes.push_back(
+        {fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest), sensor_colour(i), 0.35});
   }
   View3dSettings settings;
   settings.viewpoint = viewpoint;

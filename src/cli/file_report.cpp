@@ -9,8 +9,8 @@
 #include "rigdesign/io/catalog_loader.hpp"
 #include "rigdesign/io/policy_loader.hpp"
 #include "rigdesign/io/requirements_loader.hpp"
-#include "rigdesign/io/sensor_library_locator.hpp"
 #include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/sensor_library_locator.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/format_number.hpp"
 
@@ -18,9 +18,9 @@ namespace rigdesign::cli {
 namespace {
 
 std::string rig_summary(const RigInputs& inputs) {
-  std::string text = "rig '" + inputs.rig.name + "' is valid: " +
-                     std::to_string(inputs.rig.mounts.size()) + " mounts, sensors from " +
-                     inputs.library.file;
+  std::string text = "rig '" + inputs.rig.name +
+                     "' is valid: " + std::to_string(inputs.rig.mounts.size()) +
+                     " mounts, sensors from " + inputs.library.file;
   if (inputs.requirements) text += ", requirements from " + inputs.requirements->file;
   return text;
 }
@@ -59,8 +59,9 @@ std::string xml_escape(const std::string& text) {
 }
 
 std::size_t count(const std::vector<RequirementResult>& results, Verdict verdict) {
-  return static_cast<std::size_t>(std::count_if(
-      results.begin(), results.end(), [&](const RequirementResult& r) { return r.verdict == verdict; }));
+  return static_cast<std::size_t>(
+      std::count_if(results.begin(), results.end(),
+                    [&](const RequirementResult& r) { return r.verdict == verdict; }));
 }
 
 }  // namespace
@@ -70,7 +71,9 @@ bool FileReport::invalid() const {
                      [](const Diagnostic& d) { return d.severity == Severity::error; });
 }
 
-bool FileReport::failing() const { return count(results, Verdict::fail) > 0; }
+bool FileReport::failing() const {
+  return count(results, Verdict::fail) > 0;
+}
 
 FileReport check_file(const std::string& path, const std::string& sensors_path,
                       const std::string& requirements_path) {
@@ -94,16 +97,17 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
       }
       case FileKind::catalog: {
         const Catalog catalog = load_catalog(path);
-        check_catalog_references(catalog, load_catalog_library(catalog, sensors_path)).throw_if_errors();
-        report.summary = "catalog '" + catalog.name + "' is valid: " +
-                         std::to_string(catalog.slots.size()) + " slots, " +
+        check_catalog_references(catalog, load_catalog_library(catalog, sensors_path))
+            .throw_if_errors();
+        report.summary = "catalog '" + catalog.name +
+                         "' is valid: " + std::to_string(catalog.slots.size()) + " slots, " +
                          std::to_string(catalog.sensors.size()) + " candidate sensors";
         break;
       }
       case FileKind::policy: {
         const RelaxationPolicy policy = load_policy(path);
-        report.summary = "relaxation policy '" + policy.name + "' is valid: " +
-                         std::to_string(policy.steps.size()) + " steps";
+        report.summary = "relaxation policy '" + policy.name +
+                         "' is valid: " + std::to_string(policy.steps.size()) + " steps";
         break;
       }
       case FileKind::rig: {
@@ -141,8 +145,9 @@ std::string format_text(const std::vector<FileReport>& reports) {
     fail += count(report.results, Verdict::fail);
     skipped += count(report.results, Verdict::not_evaluated);
   }
-  out << "check: " << reports.size() << " file(s), " << invalid << " invalid; requirements: "
-      << pass << " pass, " << fail << " fail, " << skipped << " not evaluated\n";
+  out << "check: " << reports.size() << " file(s), " << invalid
+      << " invalid; requirements: " << pass << " pass, " << fail << " fail, " << skipped
+      << " not evaluated\n";
   return out.str();
 }
 
@@ -150,12 +155,15 @@ std::string format_json(const std::vector<FileReport>& reports, int exit_code) {
   nlohmann::json files = nlohmann::json::array();
   for (const FileReport& report : reports) {
     nlohmann::json diagnostics = nlohmann::json::array();
-    for (const Diagnostic& diagnostic : report.diagnostics) diagnostics.push_back(to_json(diagnostic));
+    for (const Diagnostic& diagnostic : report.diagnostics)
+      diagnostics.push_back(to_json(diagnostic));
     nlohmann::json results = nlohmann::json::array();
     for (const RequirementResult& result : report.results) results.push_back(to_json(result));
     files.push_back({{"file", report.file},
                      {"kind", report.kind ? to_string(*report.kind) : "unknown"},
-                     {"status", report.invalid() ? "invalid" : report.failing() ? "fail" : "pass"},
+                     {"status", report.invalid()   ? "invalid"
+                                : report.failing() ? "fail"
+                                                   : "pass"},
                      {"summary", report.summary},
                      {"diagnostics", diagnostics},
                      {"requirements", results}});
@@ -185,7 +193,8 @@ std::string format_junit(const std::vector<FileReport>& reports) {
     if (report.invalid()) {
       std::string body;
       for (const Diagnostic& d : report.diagnostics) body += d.message() + "\n";
-      const std::string first = report.diagnostics.empty() ? "" : report.diagnostics.front().message();
+      const std::string first =
+          report.diagnostics.empty() ? "" : report.diagnostics.front().message();
       suites << "      <error type=\"invalid input\" message=\"" << xml_escape(first) << "\">"
              << xml_escape(body) << "</error>\n";
     }
@@ -205,7 +214,8 @@ std::string format_junit(const std::vector<FileReport>& reports) {
     for (const Diagnostic& d : report.diagnostics) {
       if (d.severity == Severity::warning) warnings += d.message() + "\n";
     }
-    if (!warnings.empty()) suites << "    <system-out>" << xml_escape(warnings) << "</system-out>\n";
+    if (!warnings.empty())
+      suites << "    <system-out>" << xml_escape(warnings) << "</system-out>\n";
     suites << "  </testsuite>\n";
   }
   std::ostringstream xml;

@@ -2,15 +2,15 @@
 // filter pipeline on point clouds and reports, per stage, the median and p95 time and the
 // points in and out (paper 1, section 3). A cloud recorded in a sensor's optical frame is
 // moved into the robot frame by the mount's pose first, so the floor stages find the floor.
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <sys/resource.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <thread>
 
@@ -55,7 +55,8 @@ struct StageStats {
 
 double percentile(std::vector<double> values, double share) {
   std::sort(values.begin(), values.end());
-  const std::size_t index = static_cast<std::size_t>(std::ceil(share * static_cast<double>(values.size()))) - 1;
+  const std::size_t index =
+      static_cast<std::size_t>(std::ceil(share * static_cast<double>(values.size()))) - 1;
   return values[std::min(index, values.size() - 1)];
 }
 
@@ -63,7 +64,9 @@ Pipeline pipeline_named(const std::string& name) {
   if (const auto preset = preset_pipeline(name)) return *preset;
   std::error_code error;
   if (std::filesystem::is_regular_file(name, error)) return load_pipeline(name);
-  throw InputError(Diagnostic{{"(command line)", 0, 0}, "--pipeline", "'" + name + "' is neither a preset nor a file",
+  throw InputError(Diagnostic{{"(command line)", 0, 0},
+                              "--pipeline",
+                              "'" + name + "' is neither a preset nor a file",
                               "P1, P2, P3, P4 or a pipeline YAML file"});
 }
 
@@ -113,36 +116,46 @@ void record_load(FilteringLoads& loads, const FilteringLoad& load) {
 }
 
 // Merged into what the file already holds, so loads measured on several rigs collect there.
-void write_loads(const std::string& path, const FilteringLoads& measured, const std::string& rig_file) {
+void write_loads(const std::string& path, const FilteringLoads& measured,
+                 const std::string& rig_file) {
   std::error_code error;
   const FilteringLoads previous =
       std::filesystem::is_regular_file(path, error) ? load_filtering_loads(path) : FilteringLoads{};
   const std::string comment =
-      "Measured filtering load per delivered point (paper 1, eq. 5: U_f = seconds_per_point x points/s),\n"
-      "written by `rigdesign filter --write-loads` (last: " + rig_file + "). Catalogs read it through\n"
+      "Measured filtering load per delivered point (paper 1, eq. 5: U_f = seconds_per_point x "
+      "points/s),\n"
+      "written by `rigdesign filter --write-loads` (last: " +
+      rig_file +
+      "). Catalogs read it through\n"
       "`filtering_loads:`; `rigdesign metrics --filtering-loads` prints U_f from it.";
-  write_file_atomically(path, filtering_loads_to_yaml(merge_filtering_loads(previous, measured), comment));
+  write_file_atomically(
+      path, filtering_loads_to_yaml(merge_filtering_loads(previous, measured), comment));
 }
 
 // Every mount of the rig in a synthetic scene: its frames through the pipeline, and the
 // filtering load U_f = median time per frame x frame rate (paper 1, eq. 5).
 int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, std::ostream& out) {
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
-  require_option(options.frames >= 1 && options.frames <= 10000, "--frames", "is out of range", "1 to 10000");
+  require_option(options.frames >= 1 && options.frames <= 10000, "--frames", "is out of range",
+                 "1 to 10000");
   const Scene scene = load_scene_option(options.scene, options.seed);
   TextTable table;
   table.add_column("mount", TextTable::Align::left);
-  for (const char* header : {"points/frame", "out/frame", "median ms", "p95 ms", "F Hz", "U_f cores", "s per point"}) {
+  for (const char* header :
+       {"points/frame", "out/frame", "median ms", "p95 ms", "F Hz", "U_f cores", "s per point"}) {
     table.add_column(header, TextTable::Align::right);
   }
-  nlohmann::json report = {{"pipeline", pipeline.name}, {"scene", options.scene}, {"frames", options.frames},
+  nlohmann::json report = {{"pipeline", pipeline.name},
+                           {"scene", options.scene},
+                           {"frames", options.frames},
                            {"mounts", nlohmann::json::array()}};
   double total_load = 0.0;
   FilteringLoads measured{describe_machine(), pipeline.name, options.scene, options.frames, {}, {}};
   for (std::size_t i = 0; i < inputs.rig.mounts.size(); ++i) {
     const Mount& mount = inputs.rig.mounts[i];
     const SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    const std::vector<PointCloud> clouds = simulate_mount(scene, mount, mode, i, options.frames, options.seed);
+    const std::vector<PointCloud> clouds =
+        simulate_mount(scene, mount, mode, i, options.frames, options.seed);
     std::vector<double> seconds;
     std::size_t points = 0, kept = 0;
     for (const PointCloud& cloud : clouds) {
@@ -155,16 +168,25 @@ int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, 
     }
     const double median = percentile(seconds, 0.5);
     const double load = median * mode.frequency;
-    const double per_point = points > 0 ? median * static_cast<double>(clouds.size()) / static_cast<double>(points) : 0.0;
+    const double per_point =
+        points > 0 ? median * static_cast<double>(clouds.size()) / static_cast<double>(points)
+                   : 0.0;
     total_load += load;
-    table.add_row({mount.id, std::to_string(points / clouds.size()), std::to_string(kept / clouds.size()),
-                   fixed(median * 1e3, 2), fixed(percentile(seconds, 0.95) * 1e3, 2), fixed(mode.frequency, 0),
+    table.add_row({mount.id, std::to_string(points / clouds.size()),
+                   std::to_string(kept / clouds.size()), fixed(median * 1e3, 2),
+                   fixed(percentile(seconds, 0.95) * 1e3, 2), fixed(mode.frequency, 0),
                    fixed(load, 3), format_number(per_point, 3)});
-    report["mounts"].push_back({{"mount", mount.id}, {"points_per_frame", points / clouds.size()},
-                                {"median_s", median}, {"filtering_load_cores", load},
+    report["mounts"].push_back({{"mount", mount.id},
+                                {"points_per_frame", points / clouds.size()},
+                                {"median_s", median},
+                                {"filtering_load_cores", load},
                                 {"filtering_seconds_per_point", per_point}});
-    record_load(measured, {mount.sensor_id, mount.mode_id, per_point,
-                           static_cast<double>(points) / static_cast<double>(clouds.size()), median, {}});
+    record_load(measured, {mount.sensor_id,
+                           mount.mode_id,
+                           per_point,
+                           static_cast<double>(points) / static_cast<double>(clouds.size()),
+                           median,
+                           {}});
   }
   if (!options.write_loads.empty()) write_loads(options.write_loads, measured, inputs.rig.file);
   report["total_filtering_load_cores"] = total_load;
@@ -172,27 +194,31 @@ int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, 
     out << report.dump(2) << '\n';
     return kOk;
   }
-  out << inputs.rig.name << " in the " << options.scene << " scene, pipeline " << pipeline.name << ", "
-      << options.frames << " frames per sensor (single thread, this machine)\n";
+  out << inputs.rig.name << " in the " << options.scene << " scene, pipeline " << pipeline.name
+      << ", " << options.frames << " frames per sensor (single thread, this machine)\n";
   table.print(out, "  ");
   out << "  total filtering load U_f = " << fixed(total_load, 3)
       << " core-equivalents of this machine; `s per point` is what a catalog's "
          "filtering_seconds_per_point takes\n";
-  if (!options.write_loads.empty()) out << "  wrote the loads per sensor to " << options.write_loads << '\n';
+  if (!options.write_loads.empty())
+    out << "  wrote the loads per sensor to " << options.write_loads << '\n';
   return kOk;
 }
 
 int run_filter(const FilterOptions& options, std::ostream& out) {
-  require_option(options.repeat >= 1 && options.repeat <= 10000, "--repeat", "is out of range", "1 to 10000 runs");
+  require_option(options.repeat >= 1 && options.repeat <= 10000, "--repeat", "is out of range",
+                 "1 to 10000 runs");
   const Pipeline pipeline = pipeline_named(options.pipeline);
   if (!options.scene.empty()) {
-    require_option(!options.rig.empty() && options.clouds.empty(), "--scene", "needs --rig and no --cloud",
-                   "--rig RIG --scene NAME [--frames N]");
+    require_option(!options.rig.empty() && options.clouds.empty(), "--scene",
+                   "needs --rig and no --cloud", "--rig RIG --scene NAME [--frames N]");
     return run_filter_on_scene(options, pipeline, out);
   }
-  require_option(!options.clouds.empty(), "--cloud", "is missing", "--cloud FILE..., or --rig RIG --scene NAME");
+  require_option(!options.clouds.empty(), "--cloud", "is missing",
+                 "--cloud FILE..., or --rig RIG --scene NAME");
   require_option(options.write_loads.empty(), "--write-loads", "needs --scene",
-                 "--rig RIG --scene NAME --write-loads FILE: loads are measured on every mount's simulated frames");
+                 "--rig RIG --scene NAME --write-loads FILE: loads are measured on every mount's "
+                 "simulated frames");
   require_option(options.rig.empty() == options.mount.empty(), "--mount",
                  "needs --rig (and --rig needs --mount)", "--rig RIG --mount ID together");
   std::optional<RigInputs> rig;
@@ -203,20 +229,24 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
     for (const Mount& candidate : rig->rig.mounts) {
       if (candidate.id == options.mount) mount = &candidate;
     }
-    require_option(mount != nullptr, "--mount", "'" + options.mount + "' is not a mount of " + options.rig,
+    require_option(mount != nullptr, "--mount",
+                   "'" + options.mount + "' is not a mount of " + options.rig,
                    "a mount id of the rig");
     mode = rig->library.find(mount->sensor_id)->find_mode(mount->mode_id);
   }
-  nlohmann::json report = {{"pipeline", pipeline.name}, {"runs", options.repeat}, {"clouds", nlohmann::json::array()}};
+  nlohmann::json report = {
+      {"pipeline", pipeline.name}, {"runs", options.repeat}, {"clouds", nlohmann::json::array()}};
   for (const std::string& path : options.clouds) {
     CloudReadReport read;
     PointCloud cloud = read_cloud(path, &read);
     if (cloud.empty()) {
-      throw InputError(Diagnostic{{path, 0, 0}, "data", "has no finite point to filter", "a non-empty cloud"});
+      throw InputError(
+          Diagnostic{{path, 0, 0}, "data", "has no finite point to filter", "a non-empty cloud"});
     }
     if (mount != nullptr) {
-      const Pose3 T_robot_cloud =
-          options.frame == "optical" ? mount->T_robot_sensor * body_from_optical() : mount->T_robot_sensor;
+      const Pose3 T_robot_cloud = options.frame == "optical"
+                                      ? mount->T_robot_sensor * body_from_optical()
+                                      : mount->T_robot_sensor;
       cloud = options.frame == "robot" ? cloud : to_robot_frame(cloud, T_robot_cloud);
     }
     std::vector<std::vector<double>> times(pipeline.stages.size());
@@ -236,23 +266,32 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
     nlohmann::json stages = nlohmann::json::array();
     TextTable table;
     table.add_column("stage", TextTable::Align::left);
-    for (const char* header : {"points in", "points out", "median ms", "p95 ms"}) table.add_column(header, TextTable::Align::right);
+    for (const char* header : {"points in", "points out", "median ms", "p95 ms"})
+      table.add_column(header, TextTable::Align::right);
     for (std::size_t s = 0; s < first.size(); ++s) {
       const StageStats stats{first[s].stage, first[s].points_in, first[s].points_out,
                              percentile(times[s], 0.5), percentile(times[s], 0.95)};
       table.add_row({stats.stage, std::to_string(stats.points_in), std::to_string(stats.points_out),
                      fixed(stats.median * 1e3, 2), fixed(stats.p95 * 1e3, 2)});
-      stages.push_back({{"stage", stats.stage}, {"points_in", stats.points_in}, {"points_out", stats.points_out},
-                        {"median_s", stats.median}, {"p95_s", stats.p95}});
+      stages.push_back({{"stage", stats.stage},
+                        {"points_in", stats.points_in},
+                        {"points_out", stats.points_out},
+                        {"median_s", stats.median},
+                        {"p95_s", stats.p95}});
     }
     table.add_row({"total", std::to_string(cloud.size()), std::to_string(result.size()),
                    fixed(total_median * 1e3, 2), fixed(percentile(totals, 0.95) * 1e3, 2)});
-    nlohmann::json item = {{"file", path}, {"format", read.format}, {"points", cloud.size()},
-                           {"dropped_non_finite", read.dropped_non_finite}, {"ignored_fields", read.ignored_fields},
-                           {"stages", stages}, {"total_median_s", total_median}};
+    nlohmann::json item = {{"file", path},
+                           {"format", read.format},
+                           {"points", cloud.size()},
+                           {"dropped_non_finite", read.dropped_non_finite},
+                           {"ignored_fields", read.ignored_fields},
+                           {"stages", stages},
+                           {"total_median_s", total_median}};
     if (!options.json) {
-      out << path << ": " << cloud.size() << " points (" << read.format << ", " << read.dropped_non_finite
-          << " non-finite dropped), pipeline " << pipeline.name << ", " << options.repeat << " runs\n";
+      out << path << ": " << cloud.size() << " points (" << read.format << ", "
+          << read.dropped_non_finite << " non-finite dropped), pipeline " << pipeline.name << ", "
+          << options.repeat << " runs\n";
       table.print(out, "  ");
     }
     if (mode != nullptr) {
@@ -262,14 +301,16 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
       item["filtering_load_cores"] = load;
       item["filtering_seconds_per_point"] = per_point;
       if (!options.json) {
-        out << "  filtering load of " << mount->id << " at " << mode->frequency << " Hz: " << fixed(load, 3)
-            << " core-equivalents of this machine (" << per_point << " s per point: a catalog's "
+        out << "  filtering load of " << mount->id << " at " << mode->frequency
+            << " Hz: " << fixed(load, 3) << " core-equivalents of this machine (" << per_point
+            << " s per point: a catalog's "
             << "filtering_seconds_per_point)\n";
       }
     }
     if (!options.out.empty()) {
       std::filesystem::create_directories(options.out);
-      const std::string written = options.out + "/" + std::filesystem::path(path).stem().string() + "_" + pipeline.name + ".pcd";
+      const std::string written = options.out + "/" + std::filesystem::path(path).stem().string() +
+                                  "_" + pipeline.name + ".pcd";
       write_cloud(written, result, CloudEncoding::binary);
       item["output"] = written;
       if (!options.json) out << "  wrote " << written << '\n';
@@ -289,20 +330,28 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
 
 Command setup_filter(CLI::App& parent) {
   auto options = std::make_shared<FilterOptions>();
-  CLI::App* app = parent.add_subcommand("filter", "Run a point-cloud filter pipeline and time each stage");
+  CLI::App* app =
+      parent.add_subcommand("filter", "Run a point-cloud filter pipeline and time each stage");
   app->add_option("--cloud", options->clouds, "PCD or PLY clouds");
-  app->add_option("--scene", options->scene, "Simulate the --rig's sensors in this scene instead of --cloud");
-  app->add_option("--frames", options->frames, "Simulated frames per sensor with --scene (default 20)");
+  app->add_option("--scene", options->scene,
+                  "Simulate the --rig's sensors in this scene instead of --cloud");
+  app->add_option("--frames", options->frames,
+                  "Simulated frames per sensor with --scene (default 20)");
   app->add_option("--seed", options->seed, "Seed of the simulated scene and noise (default 1)");
-  app->add_option("--pipeline", options->pipeline, "P1, P2, P3, P4 or a pipeline YAML file (default P4)");
+  app->add_option("--pipeline", options->pipeline,
+                  "P1, P2, P3, P4 or a pipeline YAML file (default P4)");
   app->add_option("--rig", options->rig, "Rig whose mount recorded the clouds");
-  app->add_option("--mount", options->mount, "Mount id in --rig: moves the clouds into the robot frame");
-  app->add_option("--frame", options->frame, "Frame the clouds are in (with --mount; default optical)")
+  app->add_option("--mount", options->mount,
+                  "Mount id in --rig: moves the clouds into the robot frame");
+  app->add_option("--frame", options->frame,
+                  "Frame the clouds are in (with --mount; default optical)")
       ->check(CLI::IsMember({"optical", "sensor", "robot"}));
-  app->add_option("--repeat", options->repeat, "Runs per cloud for the timing statistics (default 10)");
+  app->add_option("--repeat", options->repeat,
+                  "Runs per cloud for the timing statistics (default 10)");
   app->add_option("--out", options->out, "Write the filtered clouds (binary PCD) here");
-  app->add_option("--write-loads", options->write_loads,
-                  "With --scene: write each sensor's measured load to this file (catalogs read it)");
+  app->add_option(
+      "--write-loads", options->write_loads,
+      "With --scene: write each sensor's measured load to this file (catalogs read it)");
   app->add_flag("--json", options->json, "Print JSON");
   return {app, [options](std::ostream& out, std::ostream&) { return run_filter(*options, out); }};
 }

@@ -8,9 +8,9 @@
 #include "rigdesign/io/rig_loader.hpp"
 #include "rigdesign/io/rig_references.hpp"
 #include "rigdesign/io/scene_file_loader.hpp"
-#include "rigdesign/model/format_number.hpp"
 #include "rigdesign/io/sensor_library_loader.hpp"
 #include "rigdesign/io/sensor_library_locator.hpp"
+#include "rigdesign/model/format_number.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -99,14 +99,18 @@ Scene load_scene_option(const std::string& scene, std::uint64_t seed) {
   if (names_a_file(scene)) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(scene, error)) {
-      throw InputError(Diagnostic{{"(command line)", 0, 0}, "--scene", "'" + scene + "' does not exist",
+      throw InputError(Diagnostic{{"(command line)", 0, 0},
+                                  "--scene",
+                                  "'" + scene + "' does not exist",
                                   "a bundled scene name or a scene file (rigs/README.md)"});
     }
     return load_scene_file(scene);
   }
   const auto& names = scene_names();
   if (std::find(names.begin(), names.end(), scene) == names.end()) {
-    throw InputError(Diagnostic{{"(command line)", 0, 0}, "--scene", "unknown scene '" + scene + "'",
+    throw InputError(Diagnostic{{"(command line)", 0, 0},
+                                "--scene",
+                                "unknown scene '" + scene + "'",
                                 join(names) + ", or a scene file (.yaml)"});
   }
   return make_scene(scene, seed);

@@ -70,23 +70,24 @@ json to_json(const RigInputs& inputs, const ResultantMetrics& metrics) {
     light[to_string(result.condition)] = {{"immune", result.immune},
                                           {"failing_mounts", result.failing_mounts}};
   }
-  json report = {{"rig", {{"name", inputs.rig.name},
-                          {"file", inputs.rig.file},
-                          {"sensor_library", inputs.library.file},
-                          {"distance_of_interest_m", inputs.rig.distance_of_interest},
-                          {"body", {{"radius_m", inputs.rig.body.radius},
-                                    {"height_m", inputs.rig.body.height}}}}},
-                 {"mounts", mounts},
-                 {"resultant",
-                  {{"F", limiting_json(metrics.frequency, "Hz")},
-                   {"R", limiting_json(metrics.point_spacing, "m")},
-                   {"N", limiting_json(metrics.noise, "m")},
-                   {"L", light},
-                   {"bandwidth_bytes_per_s", metrics.bandwidth},
-                   {"driver_cpu_cores", metrics.driver_cpu},
-                   {"sensor_cost_usd", metrics.sensor_cost},
-                   {"includes_estimates", metrics.any_estimate}}},
-                 {"reference_machine", inputs.library.reference_machine}};
+  json report = {
+      {"rig",
+       {{"name", inputs.rig.name},
+        {"file", inputs.rig.file},
+        {"sensor_library", inputs.library.file},
+        {"distance_of_interest_m", inputs.rig.distance_of_interest},
+        {"body", {{"radius_m", inputs.rig.body.radius}, {"height_m", inputs.rig.body.height}}}}},
+      {"mounts", mounts},
+      {"resultant",
+       {{"F", limiting_json(metrics.frequency, "Hz")},
+        {"R", limiting_json(metrics.point_spacing, "m")},
+        {"N", limiting_json(metrics.noise, "m")},
+        {"L", light},
+        {"bandwidth_bytes_per_s", metrics.bandwidth},
+        {"driver_cpu_cores", metrics.driver_cpu},
+        {"sensor_cost_usd", metrics.sensor_cost},
+        {"includes_estimates", metrics.any_estimate}}},
+      {"reference_machine", inputs.library.reference_machine}};
   json warnings = json::array();
   for (const Diagnostic& warning : inputs.warnings) warnings.push_back(to_json(warning));
   report["warnings"] = warnings;
@@ -120,16 +121,17 @@ json to_json(const RigCoverage& coverage, bool curves) {
                       {"complete", summary_json(loss.complete)},
                       {"floor", summary_json(loss.floor)}});
   }
-  json report = {{"path", coverage.exact ? "exact" : "raster"},
-                 {"distance_m", coverage.distance},
-                 {"height_m", coverage.height},
-                 {"angles", coverage.angles.size()},
-                 {"complete", summary_json(coverage.complete)},
-                 {"floor", summary_json(coverage.floor)},
-                 {"sectors", sectors},
-                 {"n_minus_1", losses},
-                 {"raster_max_abs_error", {{"complete", coverage.raster_error_complete},
-                                           {"floor", coverage.raster_error_floor}}}};
+  json report = {
+      {"path", coverage.exact ? "exact" : "raster"},
+      {"distance_m", coverage.distance},
+      {"height_m", coverage.height},
+      {"angles", coverage.angles.size()},
+      {"complete", summary_json(coverage.complete)},
+      {"floor", summary_json(coverage.floor)},
+      {"sectors", sectors},
+      {"n_minus_1", losses},
+      {"raster_max_abs_error",
+       {{"complete", coverage.raster_error_complete}, {"floor", coverage.raster_error_floor}}}};
   if (!curves) return report;
   json samples = json::array();
   for (const AngleCoverage& angle : coverage.angles) {

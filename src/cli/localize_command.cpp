@@ -3,12 +3,11 @@
 // the KPIs against ground truth, a top-view plot, and `--seeds N --table` for the accuracy
 // study across seeds (docs/localize.md).
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "app.hpp"
@@ -50,30 +49,40 @@ std::string xyz(const Vec3& p, int dimensions = 3) {
   return text + ")";
 }
 
-nlohmann::json to_json(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+nlohmann::json to_json(const Vec3& p) {
+  return {p.x(), p.y(), p.z()};
+}
 
 nlohmann::json to_json(const Hypothesis& h) {
   nlohmann::json covariance = nlohmann::json::array();
-  for (int r = 0; r < 3; ++r) covariance.push_back({h.covariance(r, 0), h.covariance(r, 1), h.covariance(r, 2)});
-  return {{"position", to_json(h.position)}, {"covariance", covariance}, {"rssi_at_1m_dbm", h.rssi_at_1m_dbm},
-          {"exponent", h.exponent}, {"cost", h.cost}};
+  for (int r = 0; r < 3; ++r)
+    covariance.push_back({h.covariance(r, 0), h.covariance(r, 1), h.covariance(r, 2)});
+  return {{"position", to_json(h.position)},
+          {"covariance", covariance},
+          {"rssi_at_1m_dbm", h.rssi_at_1m_dbm},
+          {"exponent", h.exponent},
+          {"cost", h.cost}};
 }
 
-void add_plot_markers(const EmitterEstimate& estimate, const std::optional<Vec3>& truth, LocalizePlot* plot) {
+void add_plot_markers(const EmitterEstimate& estimate, const std::optional<Vec3>& truth,
+                      LocalizePlot* plot) {
   for (std::size_t i = 0; i < estimate.hypotheses.size(); ++i) {
     const Hypothesis& h = estimate.hypotheses[i];
     plot->markers.push_back({h.position, h.covariance.topLeftCorner<2, 2>(),
                              to_string(estimate.method) + (i == 0 ? "" : " twin"),
                              i == 0 ? PlotMarkerKind::estimate : PlotMarkerKind::alternative});
   }
-  const bool drawn = std::any_of(plot->markers.begin(), plot->markers.end(), [&](const PlotMarker& m) {
-    return m.kind == PlotMarkerKind::truth && truth && m.position == *truth;
-  });
-  if (truth && !drawn) plot->markers.push_back({*truth, Eigen::Matrix2d::Zero(), estimate.bssid, PlotMarkerKind::truth});
+  const bool drawn =
+      std::any_of(plot->markers.begin(), plot->markers.end(), [&](const PlotMarker& m) {
+        return m.kind == PlotMarkerKind::truth && truth && m.position == *truth;
+      });
+  if (truth && !drawn)
+    plot->markers.push_back(
+        {*truth, Eigen::Matrix2d::Zero(), estimate.bssid, PlotMarkerKind::truth});
 }
 
-void write_plots(const std::string& folder, const std::string& stem, const LocalizePlot& plot, nlohmann::json* report,
-                 std::ostream& out, bool json) {
+void write_plots(const std::string& folder, const std::string& stem, const LocalizePlot& plot,
+                 nlohmann::json* report, std::ostream& out, bool json) {
   std::filesystem::create_directories(folder);
   for (const char* extension : {".png", ".svg"}) {
     const std::string file = folder + "/" + stem + extension;
@@ -84,47 +93,69 @@ void write_plots(const std::string& folder, const std::string& stem, const Local
 }
 
 // One emitter: estimate, uncertainty, degeneracy, and KPIs when the truth is known.
-nlohmann::json report_emitter(const RssiLog& log, int emitter, LocalizeMethod method, const std::optional<Vec3>& truth,
-                              const LocalizeOptions& options, LocalizePlot* plot, std::ostream& out) {
+nlohmann::json report_emitter(const RssiLog& log, int emitter, LocalizeMethod method,
+                              const std::optional<Vec3>& truth, const LocalizeOptions& options,
+                              LocalizePlot* plot, std::ostream& out) {
   const EmitterEstimate estimate = localize_emitter(log, emitter, method, options.params);
   const GeometryAnalysis& g = estimate.geometry;
-  nlohmann::json item = {{"bssid", estimate.bssid}, {"method", to_string(method)}, {"readings", estimate.readings},
-                         {"used", estimate.used}, {"chunks", estimate.chunks.size()},
-                         {"geometry", {{"dimensions", g.dimensions}, {"z_observable", g.dimensions == 3},
-                                       {"collinear", g.collinear}, {"lateral_spread_m", g.lateral_spread},
-                                       {"height_spread_m", g.height_spread}}},
-                         {"twin", estimate.twin}, {"hypotheses", nlohmann::json::array()}};
+  nlohmann::json item = {{"bssid", estimate.bssid},
+                         {"method", to_string(method)},
+                         {"readings", estimate.readings},
+                         {"used", estimate.used},
+                         {"chunks", estimate.chunks.size()},
+                         {"geometry",
+                          {{"dimensions", g.dimensions},
+                           {"z_observable", g.dimensions == 3},
+                           {"collinear", g.collinear},
+                           {"lateral_spread_m", g.lateral_spread},
+                           {"height_spread_m", g.height_spread}}},
+                         {"twin", estimate.twin},
+                         {"hypotheses", nlohmann::json::array()}};
   for (const Hypothesis& h : estimate.hypotheses) item["hypotheses"].push_back(to_json(h));
   if (method == LocalizeMethod::nls) item["residual_sigma_db"] = estimate.sigma_db;
   if (!options.json) {
-    out << "emitter " << estimate.bssid << " (" << to_string(method) << "): " << estimate.readings << " readings, "
-        << estimate.used << " at or above " << format_number(options.params.path_loss.cutoff_dbm) << " dBm, "
-        << estimate.chunks.size() << " chunks\n";
-    out << "  geometry: " << (g.dimensions == 3 ? "3D" : "2D, z unobservable (height spread " + fixed(g.height_spread, 2) + " m)")
-        << (g.collinear ? ", collinear (lateral spread " + fixed(g.lateral_spread, 2) + " m): mirror image unresolved" : "")
+    out << "emitter " << estimate.bssid << " (" << to_string(method) << "): " << estimate.readings
+        << " readings, " << estimate.used << " at or above "
+        << format_number(options.params.path_loss.cutoff_dbm) << " dBm, " << estimate.chunks.size()
+        << " chunks\n";
+    out << "  geometry: "
+        << (g.dimensions == 3
+                ? "3D"
+                : "2D, z unobservable (height spread " + fixed(g.height_spread, 2) + " m)")
+        << (g.collinear ? ", collinear (lateral spread " + fixed(g.lateral_spread, 2) +
+                              " m): mirror image unresolved"
+                        : "")
         << '\n';
     if (estimate.hypotheses.empty()) out << "  no estimate: too few chunks or a singular system\n";
     for (std::size_t i = 0; i < estimate.hypotheses.size(); ++i) {
       const Hypothesis& h = estimate.hypotheses[i];
-      out << "  " << (i == 0 ? "estimate" : "twin    ") << ' ' << xyz(h.position, g.dimensions) << " m, sigma x "
-          << fixed(std::sqrt(h.covariance(0, 0)), 2) << " y " << fixed(std::sqrt(h.covariance(1, 1)), 2)
-          << (g.dimensions == 3 ? " z " + fixed(std::sqrt(h.covariance(2, 2)), 2) : std::string()) << " m, a "
-          << fixed(h.rssi_at_1m_dbm, 1) << " dBm, n " << fixed(h.exponent, 2) << '\n';
+      out << "  " << (i == 0 ? "estimate" : "twin    ") << ' ' << xyz(h.position, g.dimensions)
+          << " m, sigma x " << fixed(std::sqrt(h.covariance(0, 0)), 2) << " y "
+          << fixed(std::sqrt(h.covariance(1, 1)), 2)
+          << (g.dimensions == 3 ? " z " + fixed(std::sqrt(h.covariance(2, 2)), 2) : std::string())
+          << " m, a " << fixed(h.rssi_at_1m_dbm, 1) << " dBm, n " << fixed(h.exponent, 2) << '\n';
     }
   }
   if (truth) {
-    const EmitterKpis k = evaluate_emitter(log, emitter, *truth, estimate, options.params, options.kpi);
+    const EmitterKpis k =
+        evaluate_emitter(log, emitter, *truth, estimate, options.params, options.kpi);
     item["truth"] = to_json(*truth);
-    item["kpis"] = {{"error_m", k.final_error}, {"nearest_hypothesis_error_m", k.nearest_hypothesis_error},
-                    {"running_smallest_m", k.running.smallest}, {"running_mean_m", k.running.mean},
-                    {"running_rms_m", k.running.rms}, {"detected", k.detected}, {"heard_share", k.heard_share}};
+    item["kpis"] = {{"error_m", k.final_error},
+                    {"nearest_hypothesis_error_m", k.nearest_hypothesis_error},
+                    {"running_smallest_m", k.running.smallest},
+                    {"running_mean_m", k.running.mean},
+                    {"running_rms_m", k.running.rms},
+                    {"detected", k.detected},
+                    {"heard_share", k.heard_share}};
     item["kpis"]["data_amount"] = k.data_amount ? nlohmann::json(*k.data_amount) : nlohmann::json();
     if (!options.json) {
-      out << "  truth " << xyz(*truth, g.dimensions) << ": error " << fixed(k.final_error, 2) << " m (nearest hypothesis "
-          << fixed(k.nearest_hypothesis_error, 2) << " m); running estimate smallest " << fixed(k.running.smallest, 2)
-          << ", mean " << fixed(k.running.mean, 2) << ", RMS " << fixed(k.running.rms, 2) << " m; C = "
-          << (k.data_amount ? std::to_string(*k.data_amount) + " readings" : std::string("never")) << " (within "
-          << format_number(options.kpi.acceptable_error) << " m); " << (k.detected ? "detected" : "not detected") << '\n';
+      out << "  truth " << xyz(*truth, g.dimensions) << ": error " << fixed(k.final_error, 2)
+          << " m (nearest hypothesis " << fixed(k.nearest_hypothesis_error, 2)
+          << " m); running estimate smallest " << fixed(k.running.smallest, 2) << ", mean "
+          << fixed(k.running.mean, 2) << ", RMS " << fixed(k.running.rms, 2) << " m; C = "
+          << (k.data_amount ? std::to_string(*k.data_amount) + " readings" : std::string("never"))
+          << " (within " << format_number(options.kpi.acceptable_error) << " m); "
+          << (k.detected ? "detected" : "not detected") << '\n';
     }
   }
   if (plot) add_plot_markers(estimate, truth, plot);
@@ -134,38 +165,51 @@ nlohmann::json report_emitter(const RssiLog& log, int emitter, LocalizeMethod me
 std::vector<LocalizeMethod> methods_of(const LocalizeOptions& options) {
   if (options.method.empty() && !options.table) return {LocalizeMethod::nls};
   const auto method = parse_localize_method(options.method);
-  require_option(method.has_value() || options.method == "all" || options.method.empty(), "--method",
-                 "unknown method '" + options.method + "'", "wls, nls, map (or all)");
+  require_option(method.has_value() || options.method == "all" || options.method.empty(),
+                 "--method", "unknown method '" + options.method + "'", "wls, nls, map (or all)");
   if (method) return {*method};
   return {LocalizeMethod::wls, LocalizeMethod::nls, LocalizeMethod::map};
 }
 
 int run_table(const LocalizeOptions& options, std::ostream& out) {
-  require_option(options.seeds >= 1 && options.seeds <= 10000, "--seeds", "is out of range", "1 to 10000");
+  require_option(options.seeds >= 1 && options.seeds <= 10000, "--seeds", "is out of range",
+                 "1 to 10000");
   std::vector<std::string> scenarios = {options.scenario};
   if (options.scenario == "all") scenarios = scenario_names();
   const std::vector<LocalizeMethod> methods = methods_of(options);
   TextTable table;
   table.add_column("scenario", TextTable::Align::left);
   table.add_column("method", TextTable::Align::left);
-  for (const char* header : {"runs", "mean m", "median m", "RMSE m", "nearest mean", "nearest median", "C median",
-                             "C reached", "detected %", "twins", "unsolved"}) {
+  for (const char* header :
+       {"runs", "mean m", "median m", "RMSE m", "nearest mean", "nearest median", "C median",
+        "C reached", "detected %", "twins", "unsolved"}) {
     table.add_column(header, TextTable::Align::right);
   }
-  nlohmann::json report = {{"seeds", options.seeds}, {"shadowing_db", options.scenario_params.shadowing_db},
-                           {"tx_offset_db", options.scenario_params.tx_offset_db}, {"rows", nlohmann::json::array()}};
+  nlohmann::json report = {{"seeds", options.seeds},
+                           {"shadowing_db", options.scenario_params.shadowing_db},
+                           {"tx_offset_db", options.scenario_params.tx_offset_db},
+                           {"rows", nlohmann::json::array()}};
   for (const std::string& scenario : scenarios) {
-    for (const AccuracyRow& row : accuracy_table(scenario, options.seeds, options.scenario_params, methods, options.params, options.kpi)) {
-      table.add_row({row.scenario, to_string(row.method), std::to_string(row.runs), fixed(row.final_error.mean, 2),
-                     fixed(row.final_error.median, 2), fixed(row.final_error.rms, 2), fixed(row.nearest_error.mean, 2),
-                     fixed(row.nearest_error.median, 2), fixed(row.median_data_amount, 0), std::to_string(row.reached),
-                     fixed(100.0 * row.detection_share, 0), std::to_string(row.twin_runs), std::to_string(row.unsolved_runs)});
-      report["rows"].push_back({{"scenario", row.scenario}, {"method", to_string(row.method)}, {"runs", row.runs},
-                                {"mean_m", row.final_error.mean}, {"median_m", row.final_error.median},
-                                {"rmse_m", row.final_error.rms}, {"nearest_mean_m", row.nearest_error.mean},
+    for (const AccuracyRow& row : accuracy_table(scenario, options.seeds, options.scenario_params,
+                                                 methods, options.params, options.kpi)) {
+      table.add_row({row.scenario, to_string(row.method), std::to_string(row.runs),
+                     fixed(row.final_error.mean, 2), fixed(row.final_error.median, 2),
+                     fixed(row.final_error.rms, 2), fixed(row.nearest_error.mean, 2),
+                     fixed(row.nearest_error.median, 2), fixed(row.median_data_amount, 0),
+                     std::to_string(row.reached), fixed(100.0 * row.detection_share, 0),
+                     std::to_string(row.twin_runs), std::to_string(row.unsolved_runs)});
+      report["rows"].push_back({{"scenario", row.scenario},
+                                {"method", to_string(row.method)},
+                                {"runs", row.runs},
+                                {"mean_m", row.final_error.mean},
+                                {"median_m", row.final_error.median},
+                                {"rmse_m", row.final_error.rms},
+                                {"nearest_mean_m", row.nearest_error.mean},
                                 {"nearest_median_m", row.nearest_error.median},
-                                {"data_amount_median", row.median_data_amount}, {"data_amount_reached", row.reached},
-                                {"detection_share", row.detection_share}, {"twin_runs", row.twin_runs},
+                                {"data_amount_median", row.median_data_amount},
+                                {"data_amount_reached", row.reached},
+                                {"detection_share", row.detection_share},
+                                {"twin_runs", row.twin_runs},
                                 {"unsolved_runs", row.unsolved_runs}});
     }
   }
@@ -173,62 +217,86 @@ int run_table(const LocalizeOptions& options, std::ostream& out) {
     out << report.dump(2) << '\n';
     return kOk;
   }
-  out << "accuracy over seeds 1.." << options.seeds << ", shadowing " << format_number(options.scenario_params.shadowing_db)
-      << " dB, phone level offset " << format_number(options.scenario_params.tx_offset_db) << " dB; errors of the best "
+  out << "accuracy over seeds 1.." << options.seeds << ", shadowing "
+      << format_number(options.scenario_params.shadowing_db) << " dB, phone level offset "
+      << format_number(options.scenario_params.tx_offset_db) << " dB; errors of the best "
       << "hypothesis (nearest: of the hypothesis nearest the truth); C in readings to reach "
       << format_number(options.kpi.acceptable_error) << " m\n";
   table.print(out, "  ");
   return kOk;
 }
 
-nlohmann::json report_gas(const Co2Log& log, const LocalizeOptions& options, LocalizePlot* plot, std::ostream& out) {
+nlohmann::json report_gas(const Co2Log& log, const LocalizeOptions& options, LocalizePlot* plot,
+                          std::ostream& out) {
   std::vector<Artifact> artifacts;
   if (!options.gas_truth.empty()) artifacts = read_artifacts(options.gas_truth);
-  nlohmann::json report = {{"file", log.source}, {"readings", log.readings.size()}, {"timed", log.timed},
-                           {"lag_s", detection_lag(log, options.gas)}, {"modes", nlohmann::json::array()}};
+  nlohmann::json report = {{"file", log.source},
+                           {"readings", log.readings.size()},
+                           {"timed", log.timed},
+                           {"lag_s", detection_lag(log, options.gas)},
+                           {"modes", nlohmann::json::array()}};
   if (!options.json) {
     out << log.source << ": " << log.readings.size() << " CO2 readings"
-        << (log.timed ? "" : " (untimed: " + format_number(options.gas.sample_period) + " s per reading assumed)")
+        << (log.timed ? ""
+                      : " (untimed: " + format_number(options.gas.sample_period) +
+                            " s per reading assumed)")
         << ", lag correction " << fixed(detection_lag(log, options.gas), 1) << " s\n";
   }
   for (const GasThreshold mode : {GasThreshold::fixed, GasThreshold::relative}) {
-    const std::string name = mode == GasThreshold::fixed ? "fixed " + format_number(options.gas.fixed_threshold_ppm) + " ppm"
-                                                         : "relative (median + " + format_number(options.gas.mad_factor) +
-                                                               " MAD, >= " + format_number(options.gas.min_rise_ppm) + " ppm rise)";
+    const std::string name =
+        mode == GasThreshold::fixed
+            ? "fixed " + format_number(options.gas.fixed_threshold_ppm) + " ppm"
+            : "relative (median + " + format_number(options.gas.mad_factor) +
+                  " MAD, >= " + format_number(options.gas.min_rise_ppm) + " ppm rise)";
     const std::vector<GasDetection> detections = detect_gas(log, mode, options.gas);
     nlohmann::json item = {{"threshold", mode == GasThreshold::fixed ? "fixed" : "relative"},
                            {"detections", nlohmann::json::array()}};
-    if (!options.json) out << "  threshold " << name << ": " << detections.size() << " detection(s)\n";
+    if (!options.json)
+      out << "  threshold " << name << ": " << detections.size() << " detection(s)\n";
     for (const GasDetection& d : detections) {
-      item["detections"].push_back({{"index", d.index}, {"trigger_index", d.trigger_index}, {"position", to_json(d.position)},
-                                    {"lag_corrected", to_json(d.lag_corrected)}, {"ppm", d.ppm},
+      item["detections"].push_back({{"index", d.index},
+                                    {"trigger_index", d.trigger_index},
+                                    {"position", to_json(d.position)},
+                                    {"lag_corrected", to_json(d.lag_corrected)},
+                                    {"ppm", d.ppm},
                                     {"threshold_ppm", d.threshold_ppm}});
       if (!options.json) {
-        out << "    reading " << d.index << " at " << xyz(d.position, 2) << ": " << fixed(d.ppm, 0) << " ppm (threshold "
-            << fixed(d.threshold_ppm, 0) << "), lag-corrected " << xyz(d.lag_corrected, 2) << '\n';
+        out << "    reading " << d.index << " at " << xyz(d.position, 2) << ": " << fixed(d.ppm, 0)
+            << " ppm (threshold " << fixed(d.threshold_ppm, 0) << "), lag-corrected "
+            << xyz(d.lag_corrected, 2) << '\n';
       }
       if (plot && mode == GasThreshold::relative) {
-        plot->markers.push_back({d.position, Eigen::Matrix2d::Zero(), "", PlotMarkerKind::detection});
-        plot->markers.push_back({d.lag_corrected, Eigen::Matrix2d::Zero(), "", PlotMarkerKind::lag_corrected});
+        plot->markers.push_back(
+            {d.position, Eigen::Matrix2d::Zero(), "", PlotMarkerKind::detection});
+        plot->markers.push_back(
+            {d.lag_corrected, Eigen::Matrix2d::Zero(), "", PlotMarkerKind::lag_corrected});
       }
     }
     for (const bool lagged : {false, true}) {
       if (artifacts.empty()) break;
       const GasScore score = score_gas(log, detections, artifacts, lagged);
-      nlohmann::json scored = {{"true_detections", score.true_detections}, {"false_detections", score.false_detections},
+      nlohmann::json scored = {{"true_detections", score.true_detections},
+                               {"false_detections", score.false_detections},
                                {"artifacts", nlohmann::json::array()}};
       if (!options.json) {
-        out << "    " << (lagged ? "lag-corrected" : "as detected") << ": " << score.true_detections << " within 5 m of a gas artifact, "
-            << score.false_detections << " not;";
+        out << "    " << (lagged ? "lag-corrected" : "as detected") << ": " << score.true_detections
+            << " within 5 m of a gas artifact, " << score.false_detections << " not;";
       }
       for (const GasArtifactResult& a : score.artifacts) {
-        scored["artifacts"].push_back({{"id", a.artifact.id}, {"position", to_json(a.artifact.position)},
-                                       {"path_distance_m", a.path_distance},
-                                       {"nearest_detection_m", std::isfinite(a.nearest_detection) ? nlohmann::json(a.nearest_detection) : nlohmann::json()},
-                                       {"found", a.found}});
+        scored["artifacts"].push_back(
+            {{"id", a.artifact.id},
+             {"position", to_json(a.artifact.position)},
+             {"path_distance_m", a.path_distance},
+             {"nearest_detection_m", std::isfinite(a.nearest_detection)
+                                         ? nlohmann::json(a.nearest_detection)
+                                         : nlohmann::json()},
+             {"found", a.found}});
         if (!options.json) {
-          out << " gas " << a.artifact.id << (a.found ? " found" : " missed") << " (path passes " << fixed(a.path_distance, 1)
-              << " m, nearest detection " << (std::isfinite(a.nearest_detection) ? fixed(a.nearest_detection, 1) + " m" : "none") << ")";
+          out << " gas " << a.artifact.id << (a.found ? " found" : " missed") << " (path passes "
+              << fixed(a.path_distance, 1) << " m, nearest detection "
+              << (std::isfinite(a.nearest_detection) ? fixed(a.nearest_detection, 1) + " m"
+                                                     : "none")
+              << ")";
         }
       }
       if (!options.json) out << '\n';
@@ -238,7 +306,9 @@ nlohmann::json report_gas(const Co2Log& log, const LocalizeOptions& options, Loc
   }
   if (plot) {
     for (const Artifact& a : artifacts) {
-      if (a.type == "gas") plot->markers.push_back({a.position, Eigen::Matrix2d::Zero(), "gas " + std::to_string(a.id), PlotMarkerKind::artifact});
+      if (a.type == "gas")
+        plot->markers.push_back({a.position, Eigen::Matrix2d::Zero(), "gas " + std::to_string(a.id),
+                                 PlotMarkerKind::artifact});
     }
   }
   return report;
@@ -248,12 +318,13 @@ int run_scenario(const LocalizeOptions& options, std::ostream& out) {
   ScenarioParams params = options.scenario_params;
   params.seed = options.seed;
   const Scenario scenario = make_scenario(options.scenario, params);
-  nlohmann::json report = {{"scenario", scenario.name}, {"seed", options.seed}, {"description", scenario.description},
-                           {"readings", scenario.log.readings.size()}, {"emitters", nlohmann::json::array()},
-                           {"plots", nlohmann::json::array()}};
+  nlohmann::json report = {
+      {"scenario", scenario.name},           {"seed", options.seed},
+      {"description", scenario.description}, {"readings", scenario.log.readings.size()},
+      {"emitters", nlohmann::json::array()}, {"plots", nlohmann::json::array()}};
   if (!options.json) {
-    out << "scenario " << scenario.name << ", seed " << options.seed << ": " << scenario.description << "; "
-        << scenario.log.readings.size() << " readings\n";
+    out << "scenario " << scenario.name << ", seed " << options.seed << ": " << scenario.description
+        << "; " << scenario.log.readings.size() << " readings\n";
   }
   LocalizePlot plot;
   plot.title = "localize: scenario " + scenario.name + ", seed " + std::to_string(options.seed);
@@ -264,13 +335,15 @@ int run_scenario(const LocalizeOptions& options, std::ostream& out) {
   }
   for (const WallSegment& wall : scenario.walls) plot.walls.emplace_back(wall.a, wall.b);
   for (const LocalizeMethod method : methods_of(options)) {
-    report["emitters"].push_back(report_emitter(scenario.log, 0, method, scenario.truth.front().position, options, &plot, out));
+    report["emitters"].push_back(report_emitter(
+        scenario.log, 0, method, scenario.truth.front().position, options, &plot, out));
   }
   if (!options.out.empty()) {
     const std::string stem = scenario.name + "_seed" + std::to_string(options.seed);
     std::filesystem::create_directories(options.out);
     write_file_atomically(options.out + "/" + stem + "_rssi.csv", to_rssi_csv(scenario.log));
-    write_file_atomically(options.out + "/" + stem + "_truth.csv", to_emitter_truth_csv(scenario.truth));
+    write_file_atomically(options.out + "/" + stem + "_truth.csv",
+                          to_emitter_truth_csv(scenario.truth));
     if (!options.json) out << "  wrote " << options.out + "/" + stem + "_rssi.csv and _truth.csv\n";
     write_plots(options.out, stem, plot, &report, out, options.json);
   }
@@ -299,23 +372,29 @@ int run_logs(const LocalizeOptions& options, std::ostream& out) {
     } else {
       const RssiLog log = parse_rssi_csv(text, path);
       plot.value_label = "RSSI [dBm]";
-      item = {{"file", path}, {"readings", log.readings.size()}, {"emitters", nlohmann::json::array()}};
+      item = {
+          {"file", path}, {"readings", log.readings.size()}, {"emitters", nlohmann::json::array()}};
       for (const RssiReading& r : log.readings) {
         plot.path.push_back(r.position);
         plot.values.push_back(r.rssi_dbm);
       }
-      if (!options.json) out << path << ": " << log.readings.size() << " readings of " << log.emitters.size() << " emitter(s)\n";
+      if (!options.json)
+        out << path << ": " << log.readings.size() << " readings of " << log.emitters.size()
+            << " emitter(s)\n";
       for (std::size_t e = 0; e < log.emitters.size(); ++e) {
         std::optional<Vec3> known;
         for (const EmitterTruth& t : truth) {
           if (t.bssid == log.emitters[e]) known = t.position;
         }
         for (const LocalizeMethod method : methods) {
-          item["emitters"].push_back(report_emitter(log, static_cast<int>(e), method, known, options, &plot, out));
+          item["emitters"].push_back(
+              report_emitter(log, static_cast<int>(e), method, known, options, &plot, out));
         }
       }
     }
-    if (!options.out.empty()) write_plots(options.out, std::filesystem::path(path).stem().string(), plot, &report, out, options.json);
+    if (!options.out.empty())
+      write_plots(options.out, std::filesystem::path(path).stem().string(), plot, &report, out,
+                  options.json);
     report["logs"].push_back(item);
   }
   if (options.json) out << report.dump(2) << '\n';
@@ -323,16 +402,21 @@ int run_logs(const LocalizeOptions& options, std::ostream& out) {
 }
 
 int run_localize(const LocalizeOptions& options, std::ostream& out) {
-  require_option(options.logs.empty() != options.scenario.empty(), "--log", "give either --log FILE... or --scenario NAME",
+  require_option(options.logs.empty() != options.scenario.empty(), "--log",
+                 "give either --log FILE... or --scenario NAME",
                  "--log FILE... or --scenario NAME [--seed S]");
-  require_option(options.params.path_loss.exponent > 0, "--exponent", "must be positive", "a path-loss exponent, e.g. 2.5");
+  require_option(options.params.path_loss.exponent > 0, "--exponent", "must be positive",
+                 "a path-loss exponent, e.g. 2.5");
   if (!options.scenario.empty()) {
-    if (options.scenario != "all") make_scenario(options.scenario, {});  // unknown names fail here, exit 2
+    if (options.scenario != "all")
+      make_scenario(options.scenario, {});  // unknown names fail here, exit 2
     if (options.table) return run_table(options, out);
-    require_option(options.scenario != "all", "--scenario", "'all' needs --table", "a scenario name");
+    require_option(options.scenario != "all", "--scenario", "'all' needs --table",
+                   "a scenario name");
     return run_scenario(options, out);
   }
-  require_option(!options.table, "--table", "needs --scenario", "--scenario NAME --seeds N --table");
+  require_option(!options.table, "--table", "needs --scenario",
+                 "--scenario NAME --seeds N --table");
   return run_logs(options, out);
 }
 
@@ -340,35 +424,55 @@ int run_localize(const LocalizeOptions& options, std::ostream& out) {
 
 Command setup_localize(CLI::App& parent) {
   auto options = std::make_shared<LocalizeOptions>();
-  CLI::App* app = parent.add_subcommand("localize", "Locate Wi-Fi emitters from RSSI logs and gas sources from CO2 logs (paper 4)");
-  app->add_option("--log", options->logs, "RSSI CSV (t,x,y,z,bssid,rssi) or CO2 logs (t,x,y,z,co2_ppm or 'x y co2_ppm')");
-  app->add_option("--scenario", options->scenario, "Synthetic scenario: loop, corner, room, hallway (all with --table)");
+  CLI::App* app = parent.add_subcommand(
+      "localize", "Locate Wi-Fi emitters from RSSI logs and gas sources from CO2 logs (paper 4)");
+  app->add_option("--log", options->logs,
+                  "RSSI CSV (t,x,y,z,bssid,rssi) or CO2 logs (t,x,y,z,co2_ppm or 'x y co2_ppm')");
+  app->add_option("--scenario", options->scenario,
+                  "Synthetic scenario: loop, corner, room, hallway (all with --table)");
   app->add_option("--seed", options->seed, "Seed of the synthetic scenario (default 1)");
   app->add_flag("--table", options->table, "Accuracy table over seeds 1..--seeds, every method");
   app->add_option("--seeds", options->seeds, "Seeds for --table (default 20)");
-  app->add_option("--method", options->method, "wls (paper 4), nls (range fit, default), map (object map), all");
+  app->add_option("--method", options->method,
+                  "wls (paper 4), nls (range fit, default), map (object map), all");
   app->add_option("--truth", options->truth, "Emitter ground truth CSV (bssid,x,y,z) for the KPIs");
-  app->add_option("--gas-truth", options->gas_truth, "SubT ground-truth JSON (gt_*.json) to score gas detections");
-  app->add_option("--rssi-at-1m", options->params.path_loss.rssi_at_1m_dbm, "Assumed RSSI at 1 m [dBm] (default -45)");
-  app->add_option("--exponent", options->params.path_loss.exponent, "Assumed path-loss exponent (default 2.5)");
-  app->add_option("--cutoff", options->params.path_loss.cutoff_dbm, "Drop readings below this [dBm] (default -80)");
-  app->add_flag("--fit-exponent", options->params.fit.estimate_exponent, "nls also fits the path-loss exponent");
-  app->add_option("--huber", options->params.fit.huber_db, "nls Huber threshold [dB] (0: least squares)");
+  app->add_option("--gas-truth", options->gas_truth,
+                  "SubT ground-truth JSON (gt_*.json) to score gas detections");
+  app->add_option("--rssi-at-1m", options->params.path_loss.rssi_at_1m_dbm,
+                  "Assumed RSSI at 1 m [dBm] (default -45)");
+  app->add_option("--exponent", options->params.path_loss.exponent,
+                  "Assumed path-loss exponent (default 2.5)");
+  app->add_option("--cutoff", options->params.path_loss.cutoff_dbm,
+                  "Drop readings below this [dBm] (default -80)");
+  app->add_flag("--fit-exponent", options->params.fit.estimate_exponent,
+                "nls also fits the path-loss exponent");
+  app->add_option("--huber", options->params.fit.huber_db,
+                  "nls Huber threshold [dB] (0: least squares)");
   app->add_option("--level-prior", options->params.fit.level_prior_db,
                   "nls prior sigma on the 1 m level [dB] (default 4; 0: none)");
-  app->add_flag("--cutoff-model", options->params.fit.model_cutoff, "nls: model the cut-off as a truncation (experimental)");
+  app->add_flag("--cutoff-model", options->params.fit.model_cutoff,
+                "nls: model the cut-off as a truncation (experimental)");
   app->add_flag("!--no-correlation", options->params.fit.correlated_shadowing,
                 "nls: treat chunks as independent (no effective-sample weighting)");
-  app->add_option("--acceptable-error", options->kpi.acceptable_error, "Error counted as a detection, for C [m] (default 5)");
-  app->add_option("--shadowing", options->scenario_params.shadowing_db, "Scenario shadowing sigma [dB] (default 6)");
-  app->add_option("--tx-offset", options->scenario_params.tx_offset_db, "Scenario phone level minus the assumed one [dB]");
-  app->add_option("--wall-loss", options->scenario_params.wall_attenuation_db, "Scenario loss per wall [dB] (default 8)");
-  app->add_option("--time-constant", options->gas.time_constant, "CO2 sensor time constant for the lag correction [s]");
-  app->add_option("--sample-period", options->gas.sample_period, "Seconds per reading of an untimed CO2 log (default 1)");
-  app->add_option("--threshold", options->gas.fixed_threshold_ppm, "Fixed CO2 threshold [ppm] (default 1800)");
-  app->add_option("--mad-factor", options->gas.mad_factor, "k of the relative CO2 threshold median + k MAD (default 6)");
+  app->add_option("--acceptable-error", options->kpi.acceptable_error,
+                  "Error counted as a detection, for C [m] (default 5)");
+  app->add_option("--shadowing", options->scenario_params.shadowing_db,
+                  "Scenario shadowing sigma [dB] (default 6)");
+  app->add_option("--tx-offset", options->scenario_params.tx_offset_db,
+                  "Scenario phone level minus the assumed one [dB]");
+  app->add_option("--wall-loss", options->scenario_params.wall_attenuation_db,
+                  "Scenario loss per wall [dB] (default 8)");
+  app->add_option("--time-constant", options->gas.time_constant,
+                  "CO2 sensor time constant for the lag correction [s]");
+  app->add_option("--sample-period", options->gas.sample_period,
+                  "Seconds per reading of an untimed CO2 log (default 1)");
+  app->add_option("--threshold", options->gas.fixed_threshold_ppm,
+                  "Fixed CO2 threshold [ppm] (default 1800)");
+  app->add_option("--mad-factor", options->gas.mad_factor,
+                  "k of the relative CO2 threshold median + k MAD (default 6)");
   app->add_flag("--json", options->json, "Print JSON");
-  app->add_option("--out", options->out, "Write plots (PNG and SVG) and, for a scenario, its log and truth here");
+  app->add_option("--out", options->out,
+                  "Write plots (PNG and SVG) and, for a scenario, its log and truth here");
   return {app, [options](std::ostream& out, std::ostream&) { return run_localize(*options, out); }};
 }
 

@@ -1,9 +1,9 @@
-// `rigdesign metrics RIG [--requirements FILE] [--sensors FILE] [--filtering-loads FILE] [--json]`: per-sensor and
-// resultant F, R, N, L, bandwidth, driver CPU load and sensor cost (paper 1, section 2).
+// `rigdesign metrics RIG [--requirements FILE] [--sensors FILE] [--filtering-loads FILE] [--json]`:
+// per-sensor and resultant F, R, N, L, bandwidth, driver CPU load and sensor cost (paper 1, section
+// 2).
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
 
@@ -36,12 +36,14 @@ struct FilteringLoadRow {
   std::optional<double> cores;  // unset: the sensor was not measured
 };
 
-std::vector<FilteringLoadRow> filtering_load_rows(const ResultantMetrics& metrics, const FilteringLoads& loads) {
+std::vector<FilteringLoadRow> filtering_load_rows(const ResultantMetrics& metrics,
+                                                  const FilteringLoads& loads) {
   std::vector<FilteringLoadRow> rows;
   for (const MountMetrics& mount : metrics.mounts) {
     const FilteringLoad* load = loads.find(mount.sensor_id);
-    rows.push_back({mount.mount_id, load ? std::optional<double>(load->seconds_per_point * mount.points_per_second)
-                                         : std::nullopt});
+    rows.push_back({mount.mount_id,
+                    load ? std::optional<double>(load->seconds_per_point * mount.points_per_second)
+                         : std::nullopt});
   }
   return rows;
 }
@@ -56,16 +58,22 @@ void print_filtering_load(const FilteringLoads& loads, const std::vector<Filteri
                           double driver_cpu, std::ostream& out) {
   std::vector<std::string> parts, missing;
   for (const FilteringLoadRow& row : rows) {
-    if (row.cores) parts.push_back(row.mount_id + " " + fixed(*row.cores, 3));
-    else missing.push_back(row.mount_id);
+    if (row.cores)
+      parts.push_back(row.mount_id + " " + fixed(*row.cores, 3));
+    else
+      missing.push_back(row.mount_id);
   }
-  out << "  U_f = " << fixed(total_cores(rows), 3) << " core-equivalents (" << join(parts) << "), measured with "
-      << loads.pipeline << " on " << loads.machine << " (" << loads.file << ")\n";
+  out << "  U_f = " << fixed(total_cores(rows), 3) << " core-equivalents (" << join(parts)
+      << "), measured with " << loads.pipeline << " on " << loads.machine << " (" << loads.file
+      << ")\n";
   if (!missing.empty()) out << "        not measured: " << join(missing) << '\n';
-  out << "  U   = U_p + U_f = " << fixed(driver_cpu + total_cores(rows), 2) << " core-equivalents\n";
+  out << "  U   = U_p + U_f = " << fixed(driver_cpu + total_cores(rows), 2)
+      << " core-equivalents\n";
 }
 
-std::string yes_no(bool value) { return value ? "yes" : "no"; }
+std::string yes_no(bool value) {
+  return value ? "yes" : "no";
+}
 
 std::string marked(double value, int decimals, Basis basis) {
   return fixed(value, decimals) + (basis == Basis::estimate ? "*" : "");
@@ -83,14 +91,13 @@ void print_mount_table(const ResultantMetrics& metrics, std::ostream& out) {
     table.add_column(header, Align::right);
   }
   for (const MountMetrics& mount : metrics.mounts) {
-    table.add_row({mount.mount_id, mount.sensor_id + " / " + mount.mode_id,
-                   fixed(mount.distance, 2) + (mount.distance_in_range ? "" : "!"),
-                   fixed(mount.frequency, 1), fixed(mount.point_spacing * 1000, 1),
-                   fixed(mount.noise * 1000, 1), yes_no(mount.light.dark),
-                   yes_no(mount.light.indoor), yes_no(mount.light.sunlight),
-                   fixed(mount.bandwidth / 1e6, 2),
-                   marked(mount.driver_cpu, 2, mount.driver_cpu_basis),
-                   marked(mount.price, 0, mount.price_basis)});
+    table.add_row(
+        {mount.mount_id, mount.sensor_id + " / " + mount.mode_id,
+         fixed(mount.distance, 2) + (mount.distance_in_range ? "" : "!"), fixed(mount.frequency, 1),
+         fixed(mount.point_spacing * 1000, 1), fixed(mount.noise * 1000, 1),
+         yes_no(mount.light.dark), yes_no(mount.light.indoor), yes_no(mount.light.sunlight),
+         fixed(mount.bandwidth / 1e6, 2), marked(mount.driver_cpu, 2, mount.driver_cpu_basis),
+         marked(mount.price, 0, mount.price_basis)});
   }
   table.print(out, "  ");
 }
@@ -113,7 +120,9 @@ void print_light(const ResultantMetrics& metrics, const std::optional<Requiremen
   }
 }
 
-std::string percent(double share) { return fixed(share * 100, 1) + " %"; }
+std::string percent(double share) {
+  return fixed(share * 100, 1) + " %";
+}
 
 std::string summary_line(const CoverageSummary& summary) {
   return "min " + percent(summary.min) + " (at " + fixed(rad_to_deg(summary.min_theta), 0) +
@@ -122,9 +131,10 @@ std::string summary_line(const CoverageSummary& summary) {
 }
 
 void print_coverage(const RigCoverage& coverage, std::ostream& out) {
-  out << "\nSpatial coverage (paper 1, section 2.3): rho in [r, " << format_number(coverage.distance)
-      << "] m, z in [0, " << format_number(coverage.height) << "] m, " << coverage.angles.size()
-      << " angles, " << (coverage.exact ? "exact path (CGAL polygons)" : "raster path") << "\n";
+  out << "\nSpatial coverage (paper 1, section 2.3): rho in [r, "
+      << format_number(coverage.distance) << "] m, z in [0, " << format_number(coverage.height)
+      << "] m, " << coverage.angles.size() << " angles, "
+      << (coverage.exact ? "exact path (CGAL polygons)" : "raster path") << "\n";
   out << "  SC complete: " << summary_line(coverage.complete) << '\n';
   out << "  SC floor:    " << summary_line(coverage.floor) << '\n';
   using Align = TextTable::Align;
@@ -149,24 +159,25 @@ void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
   const Rig& rig = inputs.rig;
   out << "Rig: " << rig.name << "  (" << rig.file << ", sensors from " << inputs.library.file
       << ")\n";
-  out << "Body r = " << format_number(rig.body.radius) << " m, h = "
-      << format_number(rig.body.height) << " m; distance of interest d = "
-      << format_number(rig.distance_of_interest) << " m\n\n";
+  out << "Body r = " << format_number(rig.body.radius)
+      << " m, h = " << format_number(rig.body.height)
+      << " m; distance of interest d = " << format_number(rig.distance_of_interest) << " m\n\n";
   print_mount_table(metrics, out);
   out << "\nResultant metrics (paper 1, section 2.3)\n";
-  out << "  F = " << format_number(metrics.frequency.value, 4) << " Hz      slowest: "
-      << join(metrics.frequency.mounts) << '\n';
-  out << "  R = " << fixed(metrics.point_spacing.value * 1000, 1) << " mm   coarsest: "
-      << join(metrics.point_spacing.mounts) << '\n';
-  out << "  N = " << fixed(metrics.noise.value * 1000, 1) << " mm    noisiest: "
-      << join(metrics.noise.mounts) << '\n';
+  out << "  F = " << format_number(metrics.frequency.value, 4)
+      << " Hz      slowest: " << join(metrics.frequency.mounts) << '\n';
+  out << "  R = " << fixed(metrics.point_spacing.value * 1000, 1)
+      << " mm   coarsest: " << join(metrics.point_spacing.mounts) << '\n';
+  out << "  N = " << fixed(metrics.noise.value * 1000, 1)
+      << " mm    noisiest: " << join(metrics.noise.mounts) << '\n';
   print_light(metrics, inputs.requirements, out);
   out << "\nCost model inputs (paper 1, eqs. 1-7)\n";
   out << "  B   = " << fixed(metrics.bandwidth / 1e6, 2) << " MB/s ("
       << fixed(metrics.bandwidth * 8 / 1e6, 1) << " Mbit/s)\n";
   out << "  U_p = " << fixed(metrics.driver_cpu, 2) << " core-equivalents of "
       << inputs.library.reference_machine << '\n';
-  if (loads) print_filtering_load(*loads, filtering_load_rows(metrics, *loads), metrics.driver_cpu, out);
+  if (loads)
+    print_filtering_load(*loads, filtering_load_rows(metrics, *loads), metrics.driver_cpu, out);
   out << "  C_s = " << fixed(metrics.sensor_cost, 0) << " USD\n";
   if (metrics.any_estimate) out << "  * estimate, not a datasheet or measured value\n";
   print_coverage(coverage, out);
@@ -184,7 +195,8 @@ void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
     if (result.actual) {
       const bool in_mm = result.unit == "m" && (result.metric == "R" || result.metric == "N");
       how = result.metric + " = " +
-            (in_mm ? fixed(*result.actual * 1000, 1) + " mm" : format_number(*result.actual, 4) + " " + result.unit) +
+            (in_mm ? fixed(*result.actual * 1000, 1) + " mm"
+                   : format_number(*result.actual, 4) + " " + result.unit) +
             "; " + how;
     }
     table.add_row({result.id, result.title, to_string(result.verdict), how});
@@ -209,9 +221,13 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
     if (loads) {
       const std::vector<FilteringLoadRow> rows = filtering_load_rows(metrics, *loads);
       nlohmann::json mounts = nlohmann::json::object();
-      for (const FilteringLoadRow& row : rows) mounts[row.mount_id] = row.cores ? nlohmann::json(*row.cores) : nlohmann::json();
-      report["filtering_load"] = {{"file", loads->file}, {"pipeline", loads->pipeline}, {"machine", loads->machine},
-                                  {"mounts_cores", mounts}, {"total_cores", total_cores(rows)}};
+      for (const FilteringLoadRow& row : rows)
+        mounts[row.mount_id] = row.cores ? nlohmann::json(*row.cores) : nlohmann::json();
+      report["filtering_load"] = {{"file", loads->file},
+                                  {"pipeline", loads->pipeline},
+                                  {"machine", loads->machine},
+                                  {"mounts_cores", mounts},
+                                  {"total_cores", total_cores(rows)}};
     }
     report["coverage"] = to_json(coverage, false);
     if (inputs.requirements) {
@@ -239,8 +255,9 @@ Command setup_metrics(CLI::App& parent) {
   app->add_option("--sensors", options->sensors,
                   "Sensor library (default: the rig's sensor_library, else a sensors.yaml in "
                   "the rig's folder or above, else the bundled one)");
-  app->add_option("--filtering-loads", options->filtering_loads,
-                  "Measured filtering loads (`rigdesign filter --write-loads`): adds U_f per mount");
+  app->add_option(
+      "--filtering-loads", options->filtering_loads,
+      "Measured filtering loads (`rigdesign filter --write-loads`): adds U_f per mount");
   app->add_flag("--json", options->json, "Print JSON instead of tables");
   return {app, [options](std::ostream& out, std::ostream&) { return run_metrics(*options, out); }};
 }

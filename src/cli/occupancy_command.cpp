@@ -3,12 +3,11 @@
 // scores near the person (paper 3), the whole-cell measures paper 3 lacks, per phase, and the
 // Pareto plot of F2 against ghost area against time per update.
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <sstream>
 
@@ -49,26 +48,31 @@ std::vector<PersistenceSetting> persistence_named(const std::string& name) {
 }
 
 std::string persistence_label(const VoxelMapperParams& params) {
-  return params.persistence ? "hit " + std::to_string(params.hit.hit) + "/" + std::to_string(params.hit.hit_max)
-                            : "none";
+  return params.persistence
+             ? "hit " + std::to_string(params.hit.hit) + "/" + std::to_string(params.hit.hit_max)
+             : "none";
 }
 
-std::string number(double value, int decimals) { return std::isnan(value) ? "-" : fixed(value, decimals); }
+std::string number(double value, int decimals) {
+  return std::isnan(value) ? "-" : fixed(value, decimals);
+}
 
 void check_options(const OccupancyOptions& options) {
-  require_option(options.rate > 0.0 && options.rate <= 100.0, "--rate", "is out of range", "0 < rate <= 100 Hz");
-  require_option(options.duration > 0.0 && options.duration <= 3600.0, "--duration", "is out of range",
-                 "0 < duration <= 3600 s");
+  require_option(options.rate > 0.0 && options.rate <= 100.0, "--rate", "is out of range",
+                 "0 < rate <= 100 Hz");
+  require_option(options.duration > 0.0 && options.duration <= 3600.0, "--duration",
+                 "is out of range", "0 < duration <= 3600 s");
   require_option(options.moving_until >= 0.0, "--moving-until", "is negative", "a time >= 0 s");
-  require_option(!options.voxels.empty() && std::all_of(options.voxels.begin(), options.voxels.end(),
-                                                        [](double v) { return v >= 0.01 && v <= 1.0; }),
-                 "--voxels", "has a voxel length out of range", "lengths in [0.01, 1] m");
-  require_option(options.camera_stride >= 1 && options.camera_stride <= 64, "--camera-stride", "is out of range",
-                 "1 to 64");
-  require_option(options.min_height >= 0.0 && options.min_height < 1.0, "--min-height", "is out of range",
-                 "0 <= height < 1 m");
-  require_option(options.robot_radius > 0.0 && options.robot_radius < 2.0, "--robot-radius", "is out of range",
-                 "0 < radius < 2 m");
+  require_option(
+      !options.voxels.empty() && std::all_of(options.voxels.begin(), options.voxels.end(),
+                                             [](double v) { return v >= 0.01 && v <= 1.0; }),
+      "--voxels", "has a voxel length out of range", "lengths in [0.01, 1] m");
+  require_option(options.camera_stride >= 1 && options.camera_stride <= 64, "--camera-stride",
+                 "is out of range", "1 to 64");
+  require_option(options.min_height >= 0.0 && options.min_height < 1.0, "--min-height",
+                 "is out of range", "0 <= height < 1 m");
+  require_option(options.robot_radius > 0.0 && options.robot_radius < 2.0, "--robot-radius",
+                 "is out of range", "0 < radius < 2 m");
   const auto& names = scene_names();
   require_option(std::find(names.begin(), names.end(), options.scene) != names.end(), "--scene",
                  "unknown scene '" + options.scene + "'", "cell (the scene with a moving person)");
@@ -76,21 +80,24 @@ void check_options(const OccupancyOptions& options) {
 
 std::string frames_csv(const std::vector<OccupancyRun>& runs) {
   std::ostringstream csv;
-  csv << "mapper,time_s,robot_moving,points,update_ms,tp,fp,fn,precision,recall,f1,f2,f3,never_seen,"
-         "seen_not_kept,ghost_area_m2,trail_area_m2,trail_length_p90_m,trail_length_oldest_m,master_precision,master_recall,master_f2,"
+  csv << "mapper,time_s,robot_moving,points,update_ms,tp,fp,fn,precision,recall,f1,f2,f3,never_"
+         "seen,"
+         "seen_not_kept,ghost_area_m2,trail_area_m2,trail_length_p90_m,trail_length_oldest_m,"
+         "master_precision,master_recall,master_f2,"
          "master_ghost_area_m2\n";
   for (const OccupancyRun& run : runs) {
     for (const OccupancyFrame& f : run.frames) {
       const Scores s = scores_of(f.object);
       const Scores m = scores_of(f.master);
-      csv << '"' << run.mapper << "\"," << format_number(f.time, 6) << ',' << f.robot_moving << ',' << f.points << ','
-          << format_number(f.update_seconds * 1e3, 4) << ',' << f.object.true_positives << ','
-          << f.object.false_positives << ',' << f.object.false_negatives << ',' << format_number(s.precision, 4) << ','
-          << format_number(s.recall, 4) << ',' << format_number(s.f1, 4) << ',' << format_number(s.f2, 4) << ','
-          << format_number(s.f3, 4) << ',' << f.misses.never_seen << ',' << f.misses.seen_not_kept << ','
-          << format_number(f.ghost_area, 4) << ',' << format_number(f.trail_area, 4) << ','
-          << format_number(f.trail_length, 4) << ',' << format_number(f.trail_length_oldest, 4) << ','
-          << format_number(m.precision, 4) << ','
+      csv << '"' << run.mapper << "\"," << format_number(f.time, 6) << ',' << f.robot_moving << ','
+          << f.points << ',' << format_number(f.update_seconds * 1e3, 4) << ','
+          << f.object.true_positives << ',' << f.object.false_positives << ','
+          << f.object.false_negatives << ',' << format_number(s.precision, 4) << ','
+          << format_number(s.recall, 4) << ',' << format_number(s.f1, 4) << ','
+          << format_number(s.f2, 4) << ',' << format_number(s.f3, 4) << ',' << f.misses.never_seen
+          << ',' << f.misses.seen_not_kept << ',' << format_number(f.ghost_area, 4) << ','
+          << format_number(f.trail_area, 4) << ',' << format_number(f.trail_length, 4) << ','
+          << format_number(f.trail_length_oldest, 4) << ',' << format_number(m.precision, 4) << ','
           << format_number(m.recall, 4) << ',' << format_number(m.f2, 4) << ','
           << format_number(f.master_ghost_area, 4) << '\n';
     }
@@ -100,9 +107,14 @@ std::string frames_csv(const std::vector<OccupancyRun>& runs) {
 
 nlohmann::json phase_json(const OccupancyPhase& phase) {
   const auto scores = [](const Scores& s) {
-    const auto value = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
-    return nlohmann::json{{"precision", value(s.precision)}, {"recall", value(s.recall)}, {"f1", value(s.f1)},
-                          {"f2", value(s.f2)}, {"f3", value(s.f3)}};
+    const auto value = [](double v) {
+      return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
+    };
+    return nlohmann::json{{"precision", value(s.precision)},
+                          {"recall", value(s.recall)},
+                          {"f1", value(s.f1)},
+                          {"f2", value(s.f2)},
+                          {"f3", value(s.f3)}};
   };
   const auto value = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
   return {{"frames", phase.frames},
@@ -130,40 +142,48 @@ void print_tables(const std::vector<OccupancyRun>& runs, const std::vector<Voxel
   TextTable scores;
   scores.add_column("voxel m", TextTable::Align::right);
   scores.add_column("persistence", TextTable::Align::left);
-  for (const char* h : {"P", "R", "F1", "F2", "F3", "P mov", "R mov", "F2 mov", "P still", "R still", "F2 still"}) {
+  for (const char* h :
+       {"P", "R", "F1", "F2", "F3", "P mov", "R mov", "F2 mov", "P still", "R still", "F2 still"}) {
     scores.add_column(h, TextTable::Align::right);
   }
   TextTable cell;
   cell.add_column("voxel m", TextTable::Align::right);
   cell.add_column("persistence", TextTable::Align::left);
-  for (const char* h : {"ghost mov m2", "ghost still m2", "trail mov m", "trail still m", "mark s", "clear mov s",
-                        "clear still s", "pending", "never seen", "seen lost", "grid F2", "grid ghost m2", "ms/upd",
-                        "Mpts/s"}) {
+  for (const char* h : {"ghost mov m2", "ghost still m2", "trail mov m", "trail still m", "mark s",
+                        "clear mov s", "clear still s", "pending", "never seen", "seen lost",
+                        "grid F2", "grid ghost m2", "ms/upd", "Mpts/s"}) {
     cell.add_column(h, TextTable::Align::right);
   }
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const OccupancyRun& r = runs[i];
     const std::string voxel = fixed(grid[i].voxel, 2), label = persistence_label(grid[i]);
     scores.add_row({voxel, label, number(r.all.object.precision, 3), number(r.all.object.recall, 3),
-                    number(r.all.object.f1, 3), number(r.all.object.f2, 3), number(r.all.object.f3, 3),
-                    number(r.moving.object.precision, 3), number(r.moving.object.recall, 3),
-                    number(r.moving.object.f2, 3), number(r.stationary.object.precision, 3),
-                    number(r.stationary.object.recall, 3), number(r.stationary.object.f2, 3)});
+                    number(r.all.object.f1, 3), number(r.all.object.f2, 3),
+                    number(r.all.object.f3, 3), number(r.moving.object.precision, 3),
+                    number(r.moving.object.recall, 3), number(r.moving.object.f2, 3),
+                    number(r.stationary.object.precision, 3), number(r.stationary.object.recall, 3),
+                    number(r.stationary.object.f2, 3)});
     const std::size_t misses = r.all.never_seen + r.all.seen_not_kept;
     const auto share = [&](std::size_t n) {
-      return misses == 0 ? std::string("-") : fixed(100.0 * static_cast<double>(n) / static_cast<double>(misses), 0) + "%";
+      return misses == 0
+                 ? std::string("-")
+                 : fixed(100.0 * static_cast<double>(n) / static_cast<double>(misses), 0) + "%";
     };
     cell.add_row({voxel, label, number(r.moving.ghost_area, 2), number(r.stationary.ghost_area, 2),
                   number(r.moving.trail_length_max, 2), number(r.stationary.trail_length_max, 2),
-                  number(percentile_of(r.all.mark_delays, 0.5), 1), number(percentile_of(r.moving.clear_delays, 0.5), 1),
-                  number(percentile_of(r.stationary.clear_delays, 0.5), 1), std::to_string(r.pending_changes),
-                  share(r.all.never_seen), share(r.all.seen_not_kept), number(r.all.master.f2, 3),
+                  number(percentile_of(r.all.mark_delays, 0.5), 1),
+                  number(percentile_of(r.moving.clear_delays, 0.5), 1),
+                  number(percentile_of(r.stationary.clear_delays, 0.5), 1),
+                  std::to_string(r.pending_changes), share(r.all.never_seen),
+                  share(r.all.seen_not_kept), number(r.all.master.f2, 3),
                   number(r.all.master_ghost_area, 2), number(r.all.update_ms, 1),
                   number(r.all.points_per_second / 1e6, 2)});
   }
-  out << "Near the person (paper 3's score), mean over frames; mov = robot moving, still = standing\n";
+  out << "Near the person (paper 3's score), mean over frames; mov = robot moving, still = "
+         "standing\n";
   scores.print(out, "  ");
-  out << "\nWhole cell: ghost area and trail (mean / max), median delays, misses by cause, planner grid\n";
+  out << "\nWhole cell: ghost area and trail (mean / max), median delays, misses by cause, planner "
+         "grid\n";
   cell.print(out, "  ");
 }
 
@@ -171,12 +191,14 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
   check_options(options);
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
   const Scene scene = make_scene(options.scene, options.seed);
-  require_option(!scene.moving.empty(), "--scene", "'" + options.scene + "' has no moving object to score",
+  require_option(!scene.moving.empty(), "--scene",
+                 "'" + options.scene + "' has no moving object to score",
                  "cell (the scene with a moving person)");
   // The cell's sensors are fixed: the rig's robot frame is the cell (world) frame.
   std::vector<CellSensor> sensors;
   for (const Mount& mount : inputs.rig.mounts) {
-    sensors.push_back({mount.id, *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id), mount.T_robot_sensor});
+    sensors.push_back({mount.id, *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id),
+                       mount.T_robot_sensor});
   }
   OccupancyEvalParams params;
   params.rate = options.rate;
@@ -200,16 +222,23 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
   const std::vector<OccupancyRun> runs = evaluate_occupancy(scene, sensors, mappers, params);
 
   std::vector<ParetoPoint> points;
-  nlohmann::json report = {{"rig", inputs.rig.name}, {"scene", options.scene}, {"rate_hz", options.rate},
-                           {"duration_s", options.duration}, {"moving_until_s", options.moving_until},
+  nlohmann::json report = {{"rig", inputs.rig.name},
+                           {"scene", options.scene},
+                           {"rate_hz", options.rate},
+                           {"duration_s", options.duration},
+                           {"moving_until_s", options.moving_until},
                            {"runs", nlohmann::json::array()}};
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    points.push_back({format_number(grid[i].voxel, 3) + " m, " + persistence_label(grid[i]), runs[i].all.object.f2,
-                      runs[i].all.ghost_area, runs[i].all.update_ms});
-    report["runs"].push_back({{"mapper", runs[i].mapper}, {"voxel_m", grid[i].voxel},
-                              {"persistence", persistence_label(grid[i])}, {"all", phase_json(runs[i].all)},
-                              {"moving", phase_json(runs[i].moving)}, {"stationary", phase_json(runs[i].stationary)},
-                              {"pending_changes", runs[i].pending_changes}, {"missed_marks", runs[i].missed_marks},
+    points.push_back({format_number(grid[i].voxel, 3) + " m, " + persistence_label(grid[i]),
+                      runs[i].all.object.f2, runs[i].all.ghost_area, runs[i].all.update_ms});
+    report["runs"].push_back({{"mapper", runs[i].mapper},
+                              {"voxel_m", grid[i].voxel},
+                              {"persistence", persistence_label(grid[i])},
+                              {"all", phase_json(runs[i].all)},
+                              {"moving", phase_json(runs[i].moving)},
+                              {"stationary", phase_json(runs[i].stationary)},
+                              {"pending_changes", runs[i].pending_changes},
+                              {"missed_marks", runs[i].missed_marks},
                               {"missed_clears", runs[i].missed_clears}});
   }
   if (!options.out.empty()) {
@@ -225,15 +254,17 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
     out << report.dump(2) << '\n';
     return kOk;
   }
-  out << inputs.rig.name << " in the " << options.scene << " scene: " << sensors.size() << " sensors, "
-      << runs.front().frames.size() << " frames at " << format_number(options.rate, 4) << " Hz, robot moving until "
+  out << inputs.rig.name << " in the " << options.scene << " scene: " << sensors.size()
+      << " sensors, " << runs.front().frames.size() << " frames at "
+      << format_number(options.rate, 4) << " Hz, robot moving until "
       << format_number(options.moving_until, 4) << " s\n\n";
   print_tables(runs, grid, out);
   out << "\nPareto-optimal (F2 up, ghost area down, ms per update down):";
   for (const std::size_t i : pareto_front(points)) out << "\n  " << points[i].label;
   out << '\n';
   if (!options.out.empty()) {
-    out << "wrote occupancy_frames.csv, occupancy_summary.json and occupancy_pareto.png to " << options.out << '\n';
+    out << "wrote occupancy_frames.csv, occupancy_summary.json and occupancy_pareto.png to "
+        << options.out << '\n';
   }
   return kOk;
 }
@@ -242,25 +273,35 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
 
 Command setup_occupancy(CLI::App& parent) {
   auto options = std::make_shared<OccupancyOptions>();
-  CLI::App* app = parent.add_subcommand("occupancy", "Score occupancy mapping on the dynamic cell (paper 3)");
-  app->add_option("--rig", options->rig, "Rig of the cell's fixed sensors (its robot frame is the cell frame)")
+  CLI::App* app =
+      parent.add_subcommand("occupancy", "Score occupancy mapping on the dynamic cell (paper 3)");
+  app->add_option("--rig", options->rig,
+                  "Rig of the cell's fixed sensors (its robot frame is the cell frame)")
       ->required();
   app->add_option("--scene", options->scene, "Scene with a moving person (default cell)");
-  app->add_option("--rate", options->rate, "Frames per second; every sensor records each frame (default 5)");
+  app->add_option("--rate", options->rate,
+                  "Frames per second; every sensor records each frame (default 5)");
   app->add_option("--duration", options->duration, "Seconds to run (default 96: two laps)");
   app->add_option("--moving-until", options->moving_until,
                   "The robot counts as moving before this time [s], standing after (default 48)");
-  app->add_option("--voxels", options->voxels, "Voxel lengths to sweep [m] (default 0.05 0.1 0.15 0.2)");
-  app->add_option("--persistence", options->persistence, "Persistence settings: none, paper or sweep (default)")
+  app->add_option("--voxels", options->voxels,
+                  "Voxel lengths to sweep [m] (default 0.05 0.1 0.15 0.2)");
+  app->add_option("--persistence", options->persistence,
+                  "Persistence settings: none, paper or sweep (default)")
       ->check(CLI::IsMember({"none", "paper", "sweep"}));
-  app->add_option("--camera-stride", options->camera_stride, "Keep every n-th camera pixel row and column (default 1)");
-  app->add_option("--robot-radius", options->robot_radius, "Robot radius for the planner grid's truth [m] (default 0.3)");
-  app->add_option("--min-height", options->min_height,
-                  "Points below this height [m] clear but never mark; truth starts here (default 0.1)");
+  app->add_option("--camera-stride", options->camera_stride,
+                  "Keep every n-th camera pixel row and column (default 1)");
+  app->add_option("--robot-radius", options->robot_radius,
+                  "Robot radius for the planner grid's truth [m] (default 0.3)");
+  app->add_option(
+      "--min-height", options->min_height,
+      "Points below this height [m] clear but never mark; truth starts here (default 0.1)");
   app->add_option("--seed", options->seed, "Seed of the range noise (default 1)");
-  app->add_option("--out", options->out, "Folder for occupancy_frames.csv, occupancy_summary.json, occupancy_pareto.png");
+  app->add_option("--out", options->out,
+                  "Folder for occupancy_frames.csv, occupancy_summary.json, occupancy_pareto.png");
   app->add_flag("--json", options->json, "Print JSON");
-  return {app, [options](std::ostream& out, std::ostream&) { return run_occupancy(*options, out); }};
+  return {app,
+          [options](std::ostream& out, std::ostream&) { return run_occupancy(*options, out); }};
 }
 
 }  // namespace rigdesign::cli

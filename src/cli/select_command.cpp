@@ -2,23 +2,23 @@
 // the cheapest rig of a catalog meeting the requirements (paper 1, section 2, Fig. 1); when
 // it costs more than the budget, relax the requirements in the policy's order, showing
 // every step. Exit 0 with a rig within budget, 1 when the policy runs out, 2 on bad input.
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
-#include "select_report.hpp"
 #include "rigdesign/io/catalog_loader.hpp"
 #include "rigdesign/io/policy_loader.hpp"
 #include "rigdesign/io/requirements_loader.hpp"
 #include "rigdesign/select/relaxation.hpp"
+#include "select_report.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -38,8 +38,8 @@ struct SelectOptions {
 int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.budget > 0, "--budget", "is missing or not positive",
                  "the budget in US dollars, > 0");
-  require_option(options.step_deg > 0 && options.step_deg <= 45, "--step",
-                 "is out of range", "degrees in (0, 45]");
+  require_option(options.step_deg > 0 && options.step_deg <= 45, "--step", "is out of range",
+                 "degrees in (0, 45]");
   const Catalog catalog = load_catalog(options.catalog);
   const SensorLibrary library = load_catalog_library(catalog, options.sensors);
   check_catalog_references(catalog, library).throw_if_errors();
@@ -84,11 +84,14 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
 Command setup_select(CLI::App& parent) {
   auto options = std::make_shared<SelectOptions>();
   CLI::App* app = parent.add_subcommand(
-      "select", "Cheapest rig of a catalog that meets the requirements; relaxes them in the "
-                "policy's order until the rig fits the budget (exit 0 within budget, 1 policy "
-                "exhausted, 2 bad input)");
-  app->add_option("--catalog", options->catalog, "Candidate catalog (rigs/catalogs/*.yaml)")->required();
-  app->add_option("--requirements", options->requirements, "Application requirements R1-R8")->required();
+      "select",
+      "Cheapest rig of a catalog that meets the requirements; relaxes them in the "
+      "policy's order until the rig fits the budget (exit 0 within budget, 1 policy "
+      "exhausted, 2 bad input)");
+  app->add_option("--catalog", options->catalog, "Candidate catalog (rigs/catalogs/*.yaml)")
+      ->required();
+  app->add_option("--requirements", options->requirements, "Application requirements R1-R8")
+      ->required();
   app->add_option("--budget", options->budget, "Budget in US dollars")->required();
   app->add_option("--policy", options->policy,
                   "Relaxation policy: the order in which requirements may be relaxed");
@@ -99,7 +102,9 @@ Command setup_select(CLI::App& parent) {
   app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)");
   app->add_flag("--json", options->json, "Print JSON instead of the trace");
   app->add_flag("--no-renders", options->no_renders, "Skip the chosen rig's coverage pictures");
-  return {app, [options](std::ostream& out, std::ostream& err) { return run_select(*options, out, err); }};
+  return {app, [options](std::ostream& out, std::ostream& err) {
+            return run_select(*options, out, err);
+          }};
 }
 
 }  // namespace rigdesign::cli

@@ -16,8 +16,12 @@
 namespace rigdesign::cli {
 namespace {
 
-std::string usd(double value) { return fixed(value, 0) + " USD"; }
-std::string percent(double share) { return format_number(share * 100, 3); }
+std::string usd(double value) {
+  return fixed(value, 0) + " USD";
+}
+std::string percent(double share) {
+  return format_number(share * 100, 3);
+}
 
 const RelaxationIteration* last_with_rig(const RelaxationOutcome& outcome) {
   for (auto it = outcome.iterations.rbegin(); it != outcome.iterations.rend(); ++it) {
@@ -36,7 +40,8 @@ const RelaxationIteration* chosen(const RelaxationOutcome& outcome) {
 
 std::string describe(const SatisficingTargets& targets) {
   std::string text = "F >= " + format_number(targets.min_frequency, 4) + " Hz";
-  if (targets.max_spacing) text += ", R <= " + format_number(*targets.max_spacing * 1000, 4) + " mm";
+  if (targets.max_spacing)
+    text += ", R <= " + format_number(*targets.max_spacing * 1000, 4) + " mm";
   if (targets.max_noise) text += ", N <= " + format_number(*targets.max_noise * 1000, 4) + " mm";
   if (!targets.lighting.empty()) {
     text += ", L:";
@@ -68,25 +73,31 @@ void SelectReport::print_header(std::ostream& out) const {
       << " slot options\n";
   out << "Requirements: " << requirements_.name << " (" << requirements_.file << ")\n";
   out << "Budget: " << usd(budget_) << "; relaxation policy: "
-      << (policy_.steps.empty() ? std::string("none") : policy_.file + ", " + std::to_string(policy_.steps.size()) + " steps")
+      << (policy_.steps.empty()
+              ? std::string("none")
+              : policy_.file + ", " + std::to_string(policy_.steps.size()) + " steps")
       << "\n\n";
 }
 
 void SelectReport::print_iteration(const RelaxationIteration& iteration, std::ostream& out) {
-  out << "#" << printed_++ << "  " << (iteration.relaxed.empty() ? "initial requirements" : "relaxed " + iteration.relaxed) << '\n';
+  out << "#" << printed_++ << "  "
+      << (iteration.relaxed.empty() ? "initial requirements" : "relaxed " + iteration.relaxed)
+      << '\n';
   out << "    needs: " << describe(iteration.targets) << '\n';
   const Selection& selection = iteration.selection;
   if (!selection.found) {
     out << "    no rig: " << selection.infeasible_reason << '\n';
   } else {
-    out << "    cheapest rig: " << usd(selection.cost.total) << " = sensors " << fixed(selection.cost.sensors, 0)
-        << " + transfer " << fixed(selection.cost.transfer, 0) << " (" << selection.cost.transfer_id
-        << ") + CPU " << fixed(selection.cost.cpu, 0) << " (" << selection.cost.cpu_id << ")  "
+    out << "    cheapest rig: " << usd(selection.cost.total) << " = sensors "
+        << fixed(selection.cost.sensors, 0) << " + transfer " << fixed(selection.cost.transfer, 0)
+        << " (" << selection.cost.transfer_id << ") + CPU " << fixed(selection.cost.cpu, 0) << " ("
+        << selection.cost.cpu_id << ")  "
         << (iteration.within_budget ? "WITHIN BUDGET" : "over budget") << '\n';
     out << "      " << describe(selection.rig) << '\n';
   }
   out << "    search: " << selection.search.nodes << " nodes, " << selection.search.evaluations
-      << " rigs evaluated, " << fixed(selection.seconds, 2) << " s, proven optimal on the raster path";
+      << " rigs evaluated, " << fixed(selection.seconds, 2)
+      << " s, proven optimal on the raster path";
   if (selection.found) {
     out << ", verified on the exact path";
     if (selection.rejected_by_exact_path > 0) {
@@ -120,15 +131,16 @@ void SelectReport::print_summary(const RelaxationOutcome& outcome,
   table.print(out, "  ");
   const RelaxationIteration* pick = chosen(outcome);
   if (outcome.within_budget) {
-    out << "\nChosen rig (" << usd(pick->selection.cost.total) << " <= budget " << usd(budget_) << "): "
-        << describe(pick->selection.rig) << '\n';
+    out << "\nChosen rig (" << usd(pick->selection.cost.total) << " <= budget " << usd(budget_)
+        << "): " << describe(pick->selection.rig) << '\n';
     const RigCoverage& coverage = pick->selection.coverage;
     out << "  SC complete mean " << percent(coverage.complete.mean) << " %, floor mean "
         << percent(coverage.floor.mean) << " % (exact path)\n";
   } else {
     out << "\nThe policy is exhausted: no rig within " << usd(budget_) << ".\n";
     if (pick != nullptr) {
-      out << "Cheapest rig found (" << usd(pick->selection.cost.total) << "): " << describe(pick->selection.rig) << '\n';
+      out << "Cheapest rig found (" << usd(pick->selection.cost.total)
+          << "): " << describe(pick->selection.rig) << '\n';
     }
     out << "Binding requirements:\n";
     if (outcome.binding.empty()) out << "  none alone: the budget is below every rig's cost\n";
@@ -138,7 +150,8 @@ void SelectReport::print_summary(const RelaxationOutcome& outcome,
     }
   }
   if (!written.empty()) {
-    out << "\nwrote " << written.size() << " files in " << std::filesystem::path(written.front()).parent_path().string()
+    out << "\nwrote " << written.size() << " files in "
+        << std::filesystem::path(written.front()).parent_path().string()
         << " (chosen_rig.yaml passes `rigdesign check`)\n";
   }
 }
@@ -151,27 +164,36 @@ std::vector<std::string> SelectReport::write_files(const RelaxationOutcome& outc
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error) {
-    throw InputError(Diagnostic{{"(command line)", 0, 0}, "--out",
-                                "cannot create folder '" + folder + "': " + error.message(), "a writable folder"});
+    throw InputError(Diagnostic{{"(command line)", 0, 0},
+                                "--out",
+                                "cannot create folder '" + folder + "': " + error.message(),
+                                "a writable folder"});
   }
   const std::filesystem::path library =
       std::filesystem::absolute(space_.library().file).lexically_normal();
-  const std::string library_from_folder =
-      std::filesystem::absolute(library).lexically_relative(std::filesystem::absolute(folder)).string();
+  const std::string library_from_folder = std::filesystem::absolute(library)
+                                              .lexically_relative(std::filesystem::absolute(folder))
+                                              .string();
   const std::string rig_file = folder + "/chosen_rig.yaml";
   write_file_atomically(
       rig_file, rig_to_yaml(pick->selection.rig, library_from_folder, "requirements_final.yaml",
-                            "Chosen by `rigdesign select` from " + space_.catalog().file + "\n"
-                            "Cost " + fixed(pick->selection.cost.total, 0) + " USD (sensors " +
-                            fixed(pick->selection.cost.sensors, 0) + ", transfer " +
-                            pick->selection.cost.transfer_id + " " + fixed(pick->selection.cost.transfer, 0) +
-                            ", CPU " + pick->selection.cost.cpu_id + " " + fixed(pick->selection.cost.cpu, 0) + ")"));
+                            "Chosen by `rigdesign select` from " + space_.catalog().file +
+                                "\n"
+                                "Cost " +
+                                fixed(pick->selection.cost.total, 0) + " USD (sensors " +
+                                fixed(pick->selection.cost.sensors, 0) + ", transfer " +
+                                pick->selection.cost.transfer_id + " " +
+                                fixed(pick->selection.cost.transfer, 0) + ", CPU " +
+                                pick->selection.cost.cpu_id + " " +
+                                fixed(pick->selection.cost.cpu, 0) + ")"));
   written.push_back(rig_file);
   const std::string requirements_file = folder + "/requirements_final.yaml";
-  write_file_atomically(requirements_file,
-                        requirements_to_yaml(pick->requirements,
-                                             "Requirements after " + std::to_string(&*pick - &outcome.iterations.front()) +
-                                                 " relaxation step(s) of " + (policy_.file.empty() ? "no policy" : policy_.file)));
+  write_file_atomically(
+      requirements_file,
+      requirements_to_yaml(
+          pick->requirements,
+          "Requirements after " + std::to_string(&*pick - &outcome.iterations.front()) +
+              " relaxation step(s) of " + (policy_.file.empty() ? "no policy" : policy_.file)));
   written.push_back(requirements_file);
   for (const char* extension : {".png", ".svg"}) {
     const std::string path = folder + "/pareto" + extension;
@@ -205,15 +227,14 @@ nlohmann::json SelectReport::to_json(const RelaxationOutcome& outcome,
                            {"seconds", it.selection.seconds},
                            {"rejected_by_exact_path", it.selection.rejected_by_exact_path}};
     if (it.selection.found) {
-      item["cost"] = {{"total", it.selection.cost.total},
-                      {"sensors", it.selection.cost.sensors},
-                      {"transfer", it.selection.cost.transfer},
-                      {"transfer_id", it.selection.cost.transfer_id},
-                      {"cpu", it.selection.cost.cpu},
-                      {"cpu_id", it.selection.cost.cpu_id}};
+      item["cost"] = {
+          {"total", it.selection.cost.total},       {"sensors", it.selection.cost.sensors},
+          {"transfer", it.selection.cost.transfer}, {"transfer_id", it.selection.cost.transfer_id},
+          {"cpu", it.selection.cost.cpu},           {"cpu_id", it.selection.cost.cpu_id}};
       nlohmann::json mounts = nlohmann::json::array();
       for (const Mount& mount : it.selection.rig.mounts) {
-        mounts.push_back({{"slot", mount.id}, {"sensor", mount.sensor_id}, {"mode", mount.mode_id}});
+        mounts.push_back(
+            {{"slot", mount.id}, {"sensor", mount.sensor_id}, {"mode", mount.mode_id}});
       }
       item["rig"] = mounts;
       item["coverage"] = cli::to_json(it.selection.coverage, false);

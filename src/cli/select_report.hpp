@@ -1,8 +1,8 @@
 #pragma once
 // What `select` shows and writes: the trace of the relaxation loop, the chosen rig as a rig
 // file with the final requirements beside it, the Pareto plot and the coverage renders.
-#include <nlohmann/json_fwd.hpp>
 #include <iosfwd>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 

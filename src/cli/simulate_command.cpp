@@ -2,7 +2,6 @@
 // sensor records in a synthetic scene, written as PCD (binary or ascii) or PLY clouds in the
 // robot frame (or each sensor's frame), the sensor origin in the PCD VIEWPOINT.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <filesystem>
 #include <memory>
@@ -29,30 +28,37 @@ struct SimulateOptions {
 };
 
 int run_simulate(const SimulateOptions& options, std::ostream& out) {
-  require_option(options.frames >= 1 && options.frames <= 100000, "--frames", "is out of range", "1 to 100000");
-  require_option(options.dropout >= 0 && options.dropout < 1, "--dropout", "is out of range", "a share in [0, 1)");
+  require_option(options.frames >= 1 && options.frames <= 100000, "--frames", "is out of range",
+                 "1 to 100000");
+  require_option(options.dropout >= 0 && options.dropout < 1, "--dropout", "is out of range",
+                 "a share in [0, 1)");
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
   const Scene scene = load_scene_option(options.scene, options.seed);
   SimulationSettings settings;
   settings.dropout = options.dropout;
   settings.sensor_frame = options.frame == "sensor";
-  const std::string folder = options.out.empty() ? "simulation/" + scene_label(options.scene) : options.out;
+  const std::string folder =
+      options.out.empty() ? "simulation/" + scene_label(options.scene) : options.out;
   const std::string extension = options.format == "ply" ? ".ply" : ".pcd";
-  const CloudEncoding encoding = options.format == "pcd-ascii" ? CloudEncoding::ascii : CloudEncoding::binary;
+  const CloudEncoding encoding =
+      options.format == "pcd-ascii" ? CloudEncoding::ascii : CloudEncoding::binary;
   out << inputs.rig.name << " in the " << options.scene << " scene (seed " << options.seed << "), "
       << options.frames << " frame(s) per sensor, " << options.frame << " frame\n";
   for (std::size_t i = 0; i < inputs.rig.mounts.size(); ++i) {
     const Mount& mount = inputs.rig.mounts[i];
     const SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    const std::vector<PointCloud> clouds = simulate_mount(scene, mount, mode, i, options.frames, options.seed, settings);
+    const std::vector<PointCloud> clouds =
+        simulate_mount(scene, mount, mode, i, options.frames, options.seed, settings);
     std::filesystem::create_directories(folder + "/" + mount.id);
     std::size_t points = 0;
     for (std::size_t k = 0; k < clouds.size(); ++k) {
-      write_cloud(folder + "/" + mount.id + "/frame_" + std::to_string(k) + extension, clouds[k], encoding);
+      write_cloud(folder + "/" + mount.id + "/frame_" + std::to_string(k) + extension, clouds[k],
+                  encoding);
       points += clouds[k].size();
     }
-    out << "  " << mount.id << " (" << mount.sensor_id << "/" << mount.mode_id << "): "
-        << points / clouds.size() << " points per frame -> " << folder << "/" << mount.id << "/\n";
+    out << "  " << mount.id << " (" << mount.sensor_id << "/" << mount.mode_id
+        << "): " << points / clouds.size() << " points per frame -> " << folder << "/" << mount.id
+        << "/\n";
   }
   return kOk;
 }
@@ -61,9 +67,12 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
 
 Command setup_simulate(CLI::App& parent) {
   auto options = std::make_shared<SimulateOptions>();
-  CLI::App* app = parent.add_subcommand("simulate", "Simulate what each mounted sensor records in a synthetic scene");
+  CLI::App* app = parent.add_subcommand(
+      "simulate", "Simulate what each mounted sensor records in a synthetic scene");
   app->add_option("rig", options->rig, "Rig file")->required();
-  app->add_option("--scene", options->scene, "office, corridor, stairs, wall_following, cell, or a scene file (default office)");
+  app->add_option(
+      "--scene", options->scene,
+      "office, corridor, stairs, wall_following, cell, or a scene file (default office)");
   app->add_option("--frames", options->frames, "Frames per sensor (default 1)");
   app->add_option("--seed", options->seed, "Seed of the scene and the sensor noise (default 1)");
   app->add_option("--out", options->out, "Output folder (default simulation/<scene>)");

@@ -46,11 +46,11 @@ TriangleMesh static_scenery(const Scene& scene) {
 struct LatticeTruth {
   VoxelLattice lattice;
   GridWindow window;
-  std::vector<VoxelKey> scenery;        // static, computed once
-  std::vector<VoxelKey> object;         // the moving object now
-  std::vector<VoxelKey> seen;           // voxels holding a point this frame
-  std::vector<std::uint8_t> columns;    // every truth voxel's column
-  std::vector<std::uint8_t> dilated;    // columns dilated by the robot radius
+  std::vector<VoxelKey> scenery;      // static, computed once
+  std::vector<VoxelKey> object;       // the moving object now
+  std::vector<VoxelKey> seen;         // voxels holding a point this frame
+  std::vector<std::uint8_t> columns;  // every truth voxel's column
+  std::vector<std::uint8_t> dilated;  // columns dilated by the robot radius
 };
 
 bool same_lattice(const VoxelLattice& a, const VoxelLattice& b) {
@@ -71,7 +71,8 @@ std::vector<VoxelKey> near_object(const std::vector<VoxelKey>& predicted, const 
   const int reach = static_cast<int>(std::ceil(margin / truth.lattice.resolution - 1e-9));
   std::vector<VoxelKey> near;
   for (const VoxelKey& key : predicted) {
-    if (key.x < x0 - reach || key.x > x1 + reach || key.y < y0 - reach || key.y > y1 + reach) continue;
+    if (key.x < x0 - reach || key.x > x1 + reach || key.y < y0 - reach || key.y > y1 + reach)
+      continue;
     if (std::binary_search(truth.scenery.begin(), truth.scenery.end(), key)) continue;
     near.push_back(key);
   }
@@ -121,11 +122,13 @@ double percentile_of(std::vector<double> values, double p) {
   return values[std::min(index, values.size() - 1)];
 }
 
-std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene, std::span<const CellSensor> sensors,
+std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene,
+                                             std::span<const CellSensor> sensors,
                                              std::span<OccupancyMapper* const> mappers,
                                              const OccupancyEvalParams& params) {
   if (scene.moving.empty()) {
-    throw std::invalid_argument("evaluate_occupancy: the scene '" + scene.name + "' has no moving object");
+    throw std::invalid_argument("evaluate_occupancy: the scene '" + scene.name +
+                                "' has no moving object");
   }
   const MovingObject& object = scene.moving.front();
   std::vector<std::vector<Vec3>> rays;
@@ -142,8 +145,9 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene, std::span<const
   std::vector<std::size_t> truth_of;
   for (OccupancyMapper* mapper : mappers) {
     const VoxelLattice lattice = mapper->lattice();
-    auto found = std::find_if(truths.begin(), truths.end(),
-                              [&](const LatticeTruth& t) { return same_lattice(t.lattice, lattice); });
+    auto found = std::find_if(truths.begin(), truths.end(), [&](const LatticeTruth& t) {
+      return same_lattice(t.lattice, lattice);
+    });
     if (found == truths.end()) {
       LatticeTruth truth;
       truth.lattice = lattice;
@@ -165,7 +169,8 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene, std::span<const
   }
   PathOdometer odometer;
   const SimulationSettings settings{0.0, true, false};
-  const int frames = std::max(1, static_cast<int>(std::floor(params.duration * params.rate + 1e-9)));
+  const int frames =
+      std::max(1, static_cast<int>(std::floor(params.duration * params.rate + 1e-9)));
   std::vector<PointCloud> clouds(sensors.size());
   for (int k = 0; k < frames; ++k) {
     const double t = k / params.rate;
@@ -173,7 +178,8 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene, std::span<const
     const RayCaster caster(scene.at(t));
     std::size_t points = 0;
     for (std::size_t i = 0; i < sensors.size(); ++i) {
-      clouds[i] = simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor, settings, streams[i]);
+      clouds[i] = simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor, settings,
+                                 streams[i]);
       points += clouds[i].size();
     }
     const Pose3 T_world_object = object.T_world_object(t);
@@ -185,8 +191,9 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene, std::span<const
       // Only the object's voxels can be misses, so only marking points inside its x span count.
       truth.seen.clear();
       if (!truth.object.empty()) {
-        const auto [low, high] = std::minmax_element(truth.object.begin(), truth.object.end(),
-                                                     [](const VoxelKey& a, const VoxelKey& b) { return a.x < b.x; });
+        const auto [low, high] =
+            std::minmax_element(truth.object.begin(), truth.object.end(),
+                                [](const VoxelKey& a, const VoxelKey& b) { return a.x < b.x; });
         const int x0 = low->x, x1 = high->x;
         for (const PointCloud& cloud : clouds) {
           for (const Point3f& p : cloud.points) {
@@ -209,26 +216,34 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene, std::span<const
       frame.points = points;
       const auto start = std::chrono::steady_clock::now();
       mappers[m]->update(t, clouds, moving);
-      frame.update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      frame.update_seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const std::vector<VoxelKey> predicted = mappers[m]->occupied();
-      frame.object = compare_voxel_sets(near_object(predicted, truth, params.object_margin), truth.object);
+      frame.object =
+          compare_voxel_sets(near_object(predicted, truth, params.object_margin), truth.object);
       frame.misses = split_misses(predicted, truth.object, truth.seen);
       const std::vector<std::uint8_t> shown = column_mask(predicted, truth.window);
       const TrailFrame trail = tracking[m].trail.record(t, truth.columns, shown);
       frame.ghost_area = trail.ghost_area;
       frame.trail_area = trail.trail_area;
-      frame.trail_length = std::isnan(trail.trail_p90_time) ? 0.0 : odometer.length_since(trail.trail_p90_time);
-      frame.trail_length_oldest =
-          std::isnan(trail.oldest_trail_time) ? 0.0 : odometer.length_since(trail.oldest_trail_time);
+      frame.trail_length =
+          std::isnan(trail.trail_p90_time) ? 0.0 : odometer.length_since(trail.trail_p90_time);
+      frame.trail_length_oldest = std::isnan(trail.oldest_trail_time)
+                                      ? 0.0
+                                      : odometer.length_since(trail.oldest_trail_time);
       ChangeDelays& delays = tracking[m].delays;
       const std::size_t marks_before = delays.mark_delays().size();
       const std::size_t clears_before = delays.clear_delays().size();
       delays.record(t, truth.columns, shown);
       OccupancyPhase& phase = moving ? runs[m].moving : runs[m].stationary;
-      phase.mark_delays.insert(phase.mark_delays.end(), delays.mark_delays().begin() + static_cast<std::ptrdiff_t>(marks_before),
-                               delays.mark_delays().end());
-      phase.clear_delays.insert(phase.clear_delays.end(), delays.clear_delays().begin() + static_cast<std::ptrdiff_t>(clears_before),
-                                delays.clear_delays().end());
+      phase.mark_delays.insert(
+          phase.mark_delays.end(),
+          delays.mark_delays().begin() + static_cast<std::ptrdiff_t>(marks_before),
+          delays.mark_delays().end());
+      phase.clear_delays.insert(
+          phase.clear_delays.end(),
+          delays.clear_delays().begin() + static_cast<std::ptrdiff_t>(clears_before),
+          delays.clear_delays().end());
       const std::vector<std::uint8_t> blocked = mappers[m]->blocked_cells(truth.window);
       frame.has_master = !blocked.empty();
       if (frame.has_master) {
@@ -249,9 +264,11 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene, std::span<const
     finish_phase(run.stationary, stationary);
     finish_phase(run.all, all);
     run.all.mark_delays = run.moving.mark_delays;
-    run.all.mark_delays.insert(run.all.mark_delays.end(), run.stationary.mark_delays.begin(), run.stationary.mark_delays.end());
+    run.all.mark_delays.insert(run.all.mark_delays.end(), run.stationary.mark_delays.begin(),
+                               run.stationary.mark_delays.end());
     run.all.clear_delays = run.moving.clear_delays;
-    run.all.clear_delays.insert(run.all.clear_delays.end(), run.stationary.clear_delays.begin(), run.stationary.clear_delays.end());
+    run.all.clear_delays.insert(run.all.clear_delays.end(), run.stationary.clear_delays.begin(),
+                                run.stationary.clear_delays.end());
     run.pending_changes = tracking[m].delays.pending();
     run.missed_marks = tracking[m].delays.missed_marks();
     run.missed_clears = tracking[m].delays.missed_clears();

@@ -36,7 +36,8 @@ std::vector<VoxelKey> voxelise_surface(const TriangleMesh& mesh, const VoxelLatt
     const int n = std::max(1, static_cast<int>(std::ceil(longest / step)));
     for (int i = 0; i <= n; ++i) {
       for (int j = 0; i + j <= n; ++j) {
-        const Vec3 p = a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
+        const Vec3 p =
+            a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
         if (p.z() < z_low || p.z() >= lattice.z_max) continue;
         keys.push_back(lattice.key_at(p));
       }

@@ -2,7 +2,9 @@
 
 namespace rigdesign {
 
-std::vector<double> default_sweep_voxels() { return {0.05, 0.1, 0.15, 0.2}; }
+std::vector<double> default_sweep_voxels() {
+  return {0.05, 0.1, 0.15, 0.2};
+}
 
 std::vector<PersistenceSetting> default_sweep_persistence() {
   return {{false, 0, 0}, {true, 1, 15}, {true, 3, 1500}, {true, 3, 30}, {true, 10, 1500}};

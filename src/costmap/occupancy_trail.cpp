@@ -33,13 +33,15 @@ TrailFrame TrailTracker::record(double time, std::span<const std::uint8_t> truth
     if (std::isnan(last_occupied_[i])) continue;
     times.push_back(last_occupied_[i]);
   }
-  TrailFrame frame{static_cast<double>(ghosts) * cell_area_, static_cast<double>(times.size()) * cell_area_,
-                   kNever, kNever};
+  TrailFrame frame{static_cast<double>(ghosts) * cell_area_,
+                   static_cast<double>(times.size()) * cell_area_, kNever, kNever};
   if (!times.empty()) {
     frame.oldest_trail_time = *std::min_element(times.begin(), times.end());
     // The 90 % youngest cells: the nearest-rank 10th percentile of the leaving times.
-    const std::size_t rank = static_cast<std::size_t>(std::ceil(0.1 * static_cast<double>(times.size())));
-    const auto nth = times.begin() + static_cast<std::ptrdiff_t>(std::max<std::size_t>(rank, 1) - 1);
+    const std::size_t rank =
+        static_cast<std::size_t>(std::ceil(0.1 * static_cast<double>(times.size())));
+    const auto nth =
+        times.begin() + static_cast<std::ptrdiff_t>(std::max<std::size_t>(rank, 1) - 1);
     std::nth_element(times.begin(), nth, times.end());
     frame.trail_p90_time = *nth;
   }
@@ -47,7 +49,8 @@ TrailFrame TrailTracker::record(double time, std::span<const std::uint8_t> truth
 }
 
 void PathOdometer::record(double time, const Vec2& position) {
-  const double previous = cumulative_.empty() ? 0.0 : cumulative_.back() + (position - last_).norm();
+  const double previous =
+      cumulative_.empty() ? 0.0 : cumulative_.back() + (position - last_).norm();
   times_.push_back(time);
   cumulative_.push_back(previous);
   last_ = position;
@@ -57,7 +60,8 @@ double PathOdometer::length_since(double since) const {
   if (times_.empty()) return 0.0;
   // The last frame at or before `since`; the first when none is.
   const auto after = std::upper_bound(times_.begin(), times_.end(), since);
-  const std::size_t from = after == times_.begin() ? 0 : static_cast<std::size_t>(after - times_.begin()) - 1;
+  const std::size_t from =
+      after == times_.begin() ? 0 : static_cast<std::size_t>(after - times_.begin()) - 1;
   return cumulative_.back() - cumulative_[from];
 }
 

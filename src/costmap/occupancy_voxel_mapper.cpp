@@ -23,7 +23,8 @@ CostmapParams costmap_params_of(const VoxelMapperParams& params) {
   costmap.hit = params.hit;
   // The planner's forbidden zone is the robot's own radius around every obstacle.
   costmap.inflation.inscribed_radius = params.robot_radius;
-  costmap.inflation.inflation_radius = std::max(costmap.inflation.inflation_radius, params.robot_radius);
+  costmap.inflation.inflation_radius =
+      std::max(costmap.inflation.inflation_radius, params.robot_radius);
   return costmap;
 }
 
@@ -37,14 +38,16 @@ class VoxelMapper final : public OccupancyMapper {
   std::string name() const override {
     std::string name = "voxel " + format_number(params_.voxel, 3) + " m";
     if (params_.persistence) {
-      name += ", hit " + std::to_string(params_.hit.hit) + "/" + std::to_string(params_.hit.hit_max);
+      name +=
+          ", hit " + std::to_string(params_.hit.hit) + "/" + std::to_string(params_.hit.hit_max);
     }
     return name;
   }
 
   VoxelLattice lattice() const override {
-    return {params_.voxel, params_.voxel, 0.0, costmap_.voxel_layer().grid().z_min() +
-                                                   costmap_.voxel_layer().grid().layers() * params_.voxel};
+    return {params_.voxel, params_.voxel, 0.0,
+            costmap_.voxel_layer().grid().z_min() +
+                costmap_.voxel_layer().grid().layers() * params_.voxel};
   }
 
   void update(double time, std::span<const PointCloud> clouds_world, bool robot_moving) override {
@@ -81,7 +84,8 @@ class VoxelMapper final : public OccupancyMapper {
     std::vector<std::uint8_t> blocked(window.size(), 0);
     for (int y = 0; y < window.height; ++y) {
       for (int x = 0; x < window.width; ++x) {
-        const Eigen::Vector2i local = window.origin_cell + Eigen::Vector2i(x, y) - master.window().origin_cell;
+        const Eigen::Vector2i local =
+            window.origin_cell + Eigen::Vector2i(x, y) - master.window().origin_cell;
         if (!master.window().contains(local.x(), local.y())) continue;
         const std::uint8_t cost = master.at(local.x(), local.y());
         blocked[window.index(x, y)] = cost == cost::kLethal || cost == cost::kInscribed;
@@ -99,7 +103,9 @@ class VoxelMapper final : public OccupancyMapper {
 
 }  // namespace
 
-std::vector<std::uint8_t> OccupancyMapper::blocked_cells(const GridWindow&) const { return {}; }
+std::vector<std::uint8_t> OccupancyMapper::blocked_cells(const GridWindow&) const {
+  return {};
+}
 
 GridWindow centred_window(double size, double resolution) {
   GridWindow window;

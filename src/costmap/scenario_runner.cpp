@@ -94,8 +94,7 @@ TimeSummary summarize_times(std::vector<double> seconds) {
   if (seconds.empty()) return {};
   std::sort(seconds.begin(), seconds.end());
   const std::size_t n = seconds.size();
-  const double median =
-      n % 2 == 1 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+  const double median = n % 2 == 1 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
   // Nearest rank: the smallest value with at least 99 % of the samples at or below it.
   const auto rank = static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(n)));
   return {median, seconds[std::max<std::size_t>(rank, 1) - 1]};
@@ -128,9 +127,9 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
   const int steps_per_update =
       std::max(1, static_cast<int>(std::lround(params.control_rate / params.update_rate)));
   const double dt = 1.0 / params.control_rate;
-  const double lookahead = std::min(
-      params.goal_lookahead,
-      0.5 * std::min(setup.costmap.size_x, setup.costmap.size_y) - 2 * setup.costmap.resolution);
+  const double lookahead =
+      std::min(params.goal_lookahead, 0.5 * std::min(setup.costmap.size_x, setup.costmap.size_y) -
+                                          2 * setup.costmap.resolution);
 
   ScenarioResult result;
   Pose2 pose = scenario.start;
@@ -144,10 +143,10 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
     const double t = static_cast<double>(k) / params.control_rate;
     result.end_time = t;
     // Ground truth first: the pose reached by the last command.
-    const Clearance clearance = static_scene
-                                    ? still_checker->clearance(pose.position, rig.body.radius)
-                                    : checker_at(scenario.scene, t, band)
-                                          .clearance(pose.position, rig.body.radius);
+    const Clearance clearance =
+        static_scene
+            ? still_checker->clearance(pose.position, rig.body.radius)
+            : checker_at(scenario.scene, t, band).clearance(pose.position, rig.body.radius);
     if (clearance.distance < result.min_clearance) {
       result.min_clearance = clearance.distance;
       result.min_clearance_time = t;
@@ -187,8 +186,9 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
       std::vector<CloudObservation> observations;
       for (std::size_t i = 0; i < setup.mounts.size(); ++i) {
         const scenario_detail::SimulatedMount& mount = setup.mounts[i];
-        clouds[i] = simulate_frame(caster, mount.mode, mount.rays,
-                                   T_world_robot * mount.mount.T_robot_sensor, settings, streams[i]);
+        clouds[i] =
+            simulate_frame(caster, mount.mode, mount.rays,
+                           T_world_robot * mount.mount.T_robot_sensor, settings, streams[i]);
         observations.push_back({&clouds[i], Pose3::Identity(), setup.source});
       }
       const bool velocity_command = !command.is_zero();
@@ -199,7 +199,8 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
       Vec2 goal = pose.position;
       path = PlannedPath{};
       if (!waiting) {
-        const Vec2 leg_start = stop == 0 ? scenario.start.position : scenario.route[stop - 1].position;
+        const Vec2 leg_start =
+            stop == 0 ? scenario.start.position : scenario.route[stop - 1].position;
         const std::optional<Vec2> chosen =
             local_goal(leg_start, scenario.route[stop].position, pose.position, lookahead,
                        params.goal_search_radius, costmap.master(), params.planner);

@@ -31,8 +31,8 @@ Setup make_setup(const Rig& rig, const SensorLibrary& library, const ScenarioPar
   // nav2 asks for an inflation radius above the inscribed one; 0.1 m keeps a cost gradient.
   setup.costmap.inflation.inflation_radius =
       std::max(setup.costmap.inflation.inflation_radius, radius + 0.1);
-  setup.costmap.voxel.z_max = std::max(setup.costmap.voxel.z_min + setup.costmap.voxel.z_resolution,
-                                       rig.body.height);
+  setup.costmap.voxel.z_max =
+      std::max(setup.costmap.voxel.z_min + setup.costmap.voxel.z_resolution, rig.body.height);
   setup.source = params.source;
   setup.source.max_obstacle_height = rig.body.height;
   for (const Mount& mount : rig.mounts) {
@@ -87,13 +87,14 @@ void check_scenario_inputs(const Rig& rig, const SensorLibrary& library,
     const Sensor* sensor = library.find(mount.sensor_id);
     if (!sensor || !sensor->find_mode(mount.mode_id)) {
       findings.error(mount.sensor_where, "mounts." + mount.id,
-                     "names a sensor or mode the sensor library lacks", "a sensor and mode of the library");
+                     "names a sensor or mode the sensor library lacks",
+                     "a sensor and mode of the library");
     }
   }
   const scenario_detail::Setup setup = scenario_detail::make_setup(rig, library, params);
-  const bool any =
-      std::any_of(setup.mounts.begin(), setup.mounts.end(),
-                  [&](const auto& mount) { return scenario_detail::can_mark(mount, setup.source); });
+  const bool any = std::any_of(setup.mounts.begin(), setup.mounts.end(), [&](const auto& mount) {
+    return scenario_detail::can_mark(mount, setup.source);
+  });
   if (!any) {
     findings.error(rig.where, "mounts",
                    "no sensor can mark the costmap: none sees the height band " +

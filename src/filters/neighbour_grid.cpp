@@ -74,11 +74,13 @@ std::size_t NeighbourGrid::cell_of(const Eigen::Array3i& cell) const {
 }
 
 double NeighbourGrid::mean_occupancy() const {
-  return occupied_ == 0 ? 0.0 : static_cast<double>(sorted_.size()) / static_cast<double>(occupied_);
+  return occupied_ == 0 ? 0.0
+                        : static_cast<double>(sorted_.size()) / static_cast<double>(occupied_);
 }
 
-std::size_t NeighbourGrid::append_distances(const Point3f& p, std::uint32_t begin, std::uint32_t end,
-                                            std::vector<float>& out, std::size_t size) const {
+std::size_t NeighbourGrid::append_distances(const Point3f& p, std::uint32_t begin,
+                                            std::uint32_t end, std::vector<float>& out,
+                                            std::size_t size) const {
   if (out.size() < size + (end - begin)) out.resize(2 * (size + (end - begin)));
   const float* __restrict xs = x_.data() + begin;
   const float* __restrict ys = y_.data() + begin;
@@ -144,10 +146,12 @@ void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch
     }
     // Index ranges spanning the grid do not mean the ball holds it: rows are trimmed.
     const Eigen::Array3f high = low_ + dims_.cast<float>() * cell_;
-    const bool whole_grid = radius * radius >= (position - low_).max(high - position).square().sum();
+    const bool whole_grid =
+        radius * radius >= (position - low_).max(high - position).square().sum();
     if (survivors >= wanted || whole_grid) {
       if (survivors < wanted) {  // the ball holds the whole grid: every other point counts
-        std::copy(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(size), answer.begin());
+        std::copy(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(size),
+                  answer.begin());
         survivors = size;
       }
       const float kth = select_smallest(answer.data(), survivors, wanted);

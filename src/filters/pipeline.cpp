@@ -37,8 +37,10 @@ PointCloud run_stage(const StageParams& stage, const PointCloud& cloud) {
           }
           return rest;
         }
-        if constexpr (std::is_same_v<Params, FloorRemoval1Params>) return remove_floor_1(cloud, params);
-        if constexpr (std::is_same_v<Params, FloorRemoval2Params>) return remove_floor_2(cloud, params);
+        if constexpr (std::is_same_v<Params, FloorRemoval1Params>)
+          return remove_floor_1(cloud, params);
+        if constexpr (std::is_same_v<Params, FloorRemoval2Params>)
+          return remove_floor_2(cloud, params);
         if constexpr (std::is_same_v<Params, NegativeObstacleParams>) {
           return mark_negative_obstacles(cloud, params);
         }
@@ -46,7 +48,8 @@ PointCloud run_stage(const StageParams& stage, const PointCloud& cloud) {
       stage);
 }
 
-PointCloud run_pipeline(const Pipeline& pipeline, const PointCloud& input, std::vector<StageRun>* runs) {
+PointCloud run_pipeline(const Pipeline& pipeline, const PointCloud& input,
+                        std::vector<StageRun>* runs) {
   // The first stage reads the caller's cloud in place: a sensor frame is megabytes, and
   // copying it would be paid on every frame.
   const PointCloud* current = &input;
@@ -57,8 +60,9 @@ PointCloud run_pipeline(const Pipeline& pipeline, const PointCloud& input, std::
     cloud = run_stage(stage, *current);
     current = &cloud;
     if (runs != nullptr) {
-      runs->push_back({stage_name(stage), points_in, cloud.size(),
-                       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+      runs->push_back(
+          {stage_name(stage), points_in, cloud.size(),
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
     }
   }
   return current == &input ? input : cloud;

@@ -1,7 +1,6 @@
 #include "rigdesign/filters/ransac_plane.hpp"
 
 #include <Eigen/Eigenvalues>
-
 #include <cmath>
 #include <random>
 
@@ -79,7 +78,8 @@ std::vector<std::uint32_t> points_near_plane(const PointCloud& cloud, const Plan
   const float offset = static_cast<float>(plane.offset);
   const float limit = static_cast<float>(threshold);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (std::abs(normal.dot(cloud.points[i]) + offset) <= limit) near.push_back(static_cast<std::uint32_t>(i));
+    if (std::abs(normal.dot(cloud.points[i]) + offset) <= limit)
+      near.push_back(static_cast<std::uint32_t>(i));
   }
   return near;
 }

@@ -19,15 +19,17 @@ PointCloud select_points(const PointCloud& cloud, const std::vector<std::uint32_
 std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,
                                                        const StatisticalOutlierParams& params) {
   if (params.neighbours <= 0) {
-    throw InputError(Diagnostic{{}, "statistical_outlier.neighbours", "must be > 0", "a neighbour count N > 0"});
+    throw InputError(
+        Diagnostic{{}, "statistical_outlier.neighbours", "must be > 0", "a neighbour count N > 0"});
   }
   std::vector<std::uint32_t> kept;
   if (cloud.size() < 2) {
     for (std::uint32_t i = 0; i < cloud.size(); ++i) kept.push_back(i);
     return kept;
   }
-  const filters::NeighbourGrid grid = params.cell > 0 ? filters::NeighbourGrid(cloud.points, params.cell)
-                                                      : filters::grid_for(cloud.points, params.neighbours);
+  const filters::NeighbourGrid grid = params.cell > 0
+                                          ? filters::NeighbourGrid(cloud.points, params.cell)
+                                          : filters::grid_for(cloud.points, params.neighbours);
   std::vector<double> mean_distance(cloud.size());
   filters::NeighbourScratch scratch;
   double sum = 0.0;

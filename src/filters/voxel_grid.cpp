@@ -28,12 +28,16 @@ struct Accumulator {
 
 /// Spreads packed keys over the table: the high half folded into the low one, then one
 /// multiply by 2^64 / golden ratio; callers take the product's high bits.
-std::uint64_t mix(std::uint64_t key) { return (key ^ (key >> 31)) * 0x9e3779b97f4a7c15ULL; }
+std::uint64_t mix(std::uint64_t key) {
+  return (key ^ (key >> 31)) * 0x9e3779b97f4a7c15ULL;
+}
 
 /// A point's x, y, z and whatever follows it in memory (the next point's x), as four lanes
 /// Eigen vectorises (SSE2, NEON). Never called on a cloud's last point, whose fourth lane
 /// would lie past the end; the fourth lane is ignored.
-Eigen::Array4f four_lanes(const Point3f& p) { return Eigen::Map<const Eigen::Array4f>(p.data()); }
+Eigen::Array4f four_lanes(const Point3f& p) {
+  return Eigen::Map<const Eigen::Array4f>(p.data());
+}
 
 /// Three 21-bit voxel indices, floor((lanes - offset) * inverse) - first, packed in a key.
 /// floor() as truncation plus a correction, in SSE2 where there is SSE2 (floorf needs SSE 4.1
@@ -42,13 +46,15 @@ std::uint64_t voxel_key(const Eigen::Array4f& lanes, const Eigen::Array4f& offse
                         const Eigen::Array4i& first) {
   alignas(16) std::int32_t index[4];
 #if defined(__SSE2__)
-  const __m128 scaled = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(lanes.data()), _mm_loadu_ps(offset.data())),
-                                   _mm_set1_ps(inverse));
+  const __m128 scaled = _mm_mul_ps(
+      _mm_sub_ps(_mm_loadu_ps(lanes.data()), _mm_loadu_ps(offset.data())), _mm_set1_ps(inverse));
   const __m128i truncated = _mm_cvttps_epi32(scaled);
-  const __m128i below = _mm_castps_si128(_mm_cmplt_ps(scaled, _mm_cvtepi32_ps(truncated)));  // -1 or 0
+  const __m128i below =
+      _mm_castps_si128(_mm_cmplt_ps(scaled, _mm_cvtepi32_ps(truncated)));  // -1 or 0
   const __m128i floored = _mm_add_epi32(truncated, below);
-  _mm_store_si128(reinterpret_cast<__m128i*>(index),
-                  _mm_sub_epi32(floored, _mm_loadu_si128(reinterpret_cast<const __m128i*>(first.data()))));
+  _mm_store_si128(
+      reinterpret_cast<__m128i*>(index),
+      _mm_sub_epi32(floored, _mm_loadu_si128(reinterpret_cast<const __m128i*>(first.data()))));
 #else
   const Eigen::Array4f scaled = (lanes - offset) * inverse;
   for (int axis = 0; axis < 3; ++axis) {
@@ -77,7 +83,8 @@ std::pair<Eigen::Array3f, Eigen::Array3f> bounding_box(const std::vector<Point3f
 
 PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
   if (!(params.leaf > 0) || !std::isfinite(params.leaf)) {
-    throw InputError(Diagnostic{{}, "voxel_grid.leaf", "is " + format_number(params.leaf), "a voxel size in metres, > 0"});
+    throw InputError(Diagnostic{
+        {}, "voxel_grid.leaf", "is " + format_number(params.leaf), "a voxel size in metres, > 0"});
   }
   PointCloud result;
   result.origin = cloud.origin;
@@ -93,22 +100,27 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
   const Eigen::Array4f offset4(offset.x(), offset.y(), offset.z(), offset.x());
   const auto scaled = [&](const Eigen::Array4f& lanes) { return (lanes - offset4) * inverse; };
   const Eigen::Array4f lowest = scaled(Eigen::Array4f(low.x(), low.y(), low.z(), low.x())).floor();
-  const Eigen::Array4f highest = scaled(Eigen::Array4f(high.x(), high.y(), high.z(), high.x())).floor();
+  const Eigen::Array4f highest =
+      scaled(Eigen::Array4f(high.x(), high.y(), high.z(), high.x())).floor();
   const Eigen::Array3d first = lowest.head<3>().cast<double>();
   const Eigen::Array3d last = highest.head<3>().cast<double>();
   if (((last - first) >= static_cast<double>(kMaxCells - 1)).any()) {
-    throw InputError(Diagnostic{{}, "voxel_grid.leaf",
+    throw InputError(Diagnostic{{},
+                                "voxel_grid.leaf",
                                 "is too small for the cloud's extent: more than 2^21 voxels "
                                 "along an axis would overflow the voxel index",
                                 "a leaf of at least " +
                                     format_number(static_cast<double>((high - low).maxCoeff()) /
-                                                      static_cast<double>(kMaxCells - 2), 3) + " m"});
+                                                      static_cast<double>(kMaxCells - 2),
+                                                  3) +
+                                    " m"});
   }
   // Indices are taken in 32-bit lanes; a cloud whose indices leave that range (a small leaf
   // millions of metres from the origin) is refused rather than wrapped.
   constexpr double kLaneLimit = 2147483520.0;  // the largest float below 2^31
   if ((first.abs() >= kLaneLimit).any() || (last.abs() >= kLaneLimit).any()) {
-    throw InputError(Diagnostic{{}, "voxel_grid.leaf",
+    throw InputError(Diagnostic{{},
+                                "voxel_grid.leaf",
                                 "puts voxel indices beyond 2^31 (the cloud lies too far from the "
                                 "grid's origin for this leaf)",
                                 "a larger leaf, or a cloud nearer the origin"});
@@ -124,7 +136,9 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
   while (static_cast<double>(std::size_t{1} << bits) < 2 * expected && bits < 24) ++bits;
   std::vector<Accumulator> table(std::size_t{1} << bits);
   std::vector<std::uint32_t> occupied;
-  const auto home = [&](std::uint64_t key) { return static_cast<std::size_t>(mix(key) >> (64 - bits)); };
+  const auto home = [&](std::uint64_t key) {
+    return static_cast<std::size_t>(mix(key) >> (64 - bits));
+  };
   const auto grow = [&] {
     ++bits;
     std::vector<Accumulator> bigger(std::size_t{1} << bits);
@@ -143,7 +157,8 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
   const std::size_t points = cloud.size();
   const auto key_at = [&](std::size_t i) {
     const Point3f& p = cloud.points[i];
-    return voxel_key(i + 1 < points ? four_lanes(p) : Eigen::Array4f(p.x(), p.y(), p.z(), p.x()), offset4, inverse, first4);
+    return voxel_key(i + 1 < points ? four_lanes(p) : Eigen::Array4f(p.x(), p.y(), p.z(), p.x()),
+                     offset4, inverse, first4);
   };
   std::uint64_t ahead[kAhead];
   for (std::size_t i = 0; i < std::min(kAhead, points); ++i) ahead[i] = key_at(i);

@@ -9,7 +9,9 @@ namespace {
 // Sight lines shorter than this inside the body (m) are grazing contacts, not occlusion.
 constexpr double kGrazing = 1e-9;
 
-double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+double cross2(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 
 bool inside_polygon(const std::vector<Vec2>& polygon, const Vec2& p) {
   bool inside = false;
@@ -125,7 +127,7 @@ void BodyOccluder::append_critical_parameters(const Vec3& origin, const Vec3& st
       const Vec2& next = footprint_[(i + 1) % footprint_.size()];
       const Vec2 toward = vertex - o;
       plane_root(Vec3(-toward.y(), toward.x(), 0.0));  // vertical plane through the edge line
-      for (const double z : {0.0, height_}) {           // planes through the face edges
+      for (const double z : {0.0, height_}) {          // planes through the face edges
         const Vec3 p(vertex.x(), vertex.y(), z);
         const Vec3 q(next.x(), next.y(), z);
         plane_root((p - origin).cross(q - origin));

@@ -16,7 +16,8 @@ void append_sphere_roots(const Vec3& c, const Vec3& w, double radius, std::vecto
 }
 
 // Roots of the linear n . (c + t w) = 0.
-void append_plane_root(const Vec3& normal, const Vec3& c, const Vec3& w, std::vector<double>& roots) {
+void append_plane_root(const Vec3& normal, const Vec3& c, const Vec3& w,
+                       std::vector<double>& roots) {
   const double slope = normal.dot(w);
   if (std::abs(slope) > 1e-15) roots.push_back(-normal.dot(c) / slope);
 }
@@ -57,12 +58,14 @@ MountedFov::MountedFov(const SensorMode& mode, const Pose3& T_robot_sensor,
 void MountedFov::bound_azimuths() {
   if (mode_->fov.shape != FovShape::pyramid && mode_->fov.shape != FovShape::cone) return;
   const double far = mode_->max_range;
-  const double tan_h = mode_->fov.shape == FovShape::cone ? std::tan(mode_->fov.horizontal / 2) : tan_half_h_;
+  const double tan_h =
+      mode_->fov.shape == FovShape::cone ? std::tan(mode_->fov.horizontal / 2) : tan_half_h_;
   const double tan_v = mode_->fov.shape == FovShape::cone ? tan_h : tan_half_v_;
   std::vector<Vec2> hull_points = {origin_.head<2>()};
   for (const double sy : {-1.0, 1.0}) {
     for (const double sz : {-1.0, 1.0}) {
-      hull_points.push_back((T_robot_sensor_ * Vec3(far, sy * far * tan_h, sz * far * tan_v)).head<2>());
+      hull_points.push_back(
+          (T_robot_sensor_ * Vec3(far, sy * far * tan_h, sz * far * tan_v)).head<2>());
     }
   }
   // The hull encloses the axis when the points' azimuths leave no gap wider than pi.
@@ -87,8 +90,9 @@ void MountedFov::bound_azimuths() {
 
 bool MountedFov::may_reach_azimuth(double theta) const {
   if (azimuth_span_ >= 2 * std::numbers::pi) return true;
-  const double offset = std::fmod(std::fmod(theta - azimuth_from_, 2 * std::numbers::pi) +
-                                      2 * std::numbers::pi, 2 * std::numbers::pi);
+  const double offset =
+      std::fmod(std::fmod(theta - azimuth_from_, 2 * std::numbers::pi) + 2 * std::numbers::pi,
+                2 * std::numbers::pi);
   return offset <= azimuth_span_ + 1e-9;
 }
 
@@ -111,13 +115,12 @@ bool MountedFov::rays_can_reach(const BodyOccluder& body) const {
       }
       return false;
     case FovShape::cone: {
-      const double axis_to_outward =
-          std::acos(std::clamp((R_robot_sensor * Vec3::UnitX()).dot(outward.normalized()), -1.0, 1.0));
+      const double axis_to_outward = std::acos(
+          std::clamp((R_robot_sensor * Vec3::UnitX()).dot(outward.normalized()), -1.0, 1.0));
       return axis_to_outward + mode_->fov.horizontal / 2 > std::numbers::pi / 2;
     }
     case FovShape::band:
-    case FovShape::planar:
-      return true;
+    case FovShape::planar: return true;
   }
   return true;
 }
@@ -129,8 +132,7 @@ bool MountedFov::in_fov(const Vec3& q) const {
     case FovShape::pyramid:
       return q.x() > 0 && std::abs(q.y()) <= tan_half_h_ * q.x() &&
              std::abs(q.z()) <= tan_half_v_ * q.x();
-    case FovShape::cone:
-      return q.x() >= cos_half_apex_ * distance;
+    case FovShape::cone: return q.x() >= cos_half_apex_ * distance;
     case FovShape::band:
     case FovShape::planar: {
       if (q.z() < sin_elevation_min_ * distance || q.z() > sin_elevation_max_ * distance) {

@@ -37,7 +37,8 @@ class ColumnSampler {
       : fov_(fov), frame_(frame), settings_(s) {}
 
   std::vector<Column> sample() {
-    const int steps = std::max(1, static_cast<int>(std::ceil(frame_.width() / settings_.initial_step)));
+    const int steps =
+        std::max(1, static_cast<int>(std::ceil(frame_.width() / settings_.initial_step)));
     std::vector<Column> columns;
     Column left = at(frame_.r);
     columns.push_back(left);
@@ -57,9 +58,9 @@ class ColumnSampler {
   void refine(const Column& left, const Column& right, std::vector<Column>& out) const {
     if (right.rho - left.rho <= settings_.min_gap) return;
     const Column middle = at(0.5 * (left.rho + right.rho));
-    const bool smooth = same_topology(left.covered, right.covered) &&
-                        same_topology(left.covered, middle.covered) &&
-                        chord_error(left.covered, right.covered, middle.covered) <= settings_.tolerance;
+    const bool smooth =
+        same_topology(left.covered, right.covered) && same_topology(left.covered, middle.covered) &&
+        chord_error(left.covered, right.covered, middle.covered) <= settings_.tolerance;
     if (smooth) return;
     refine(left, middle, out);
     out.push_back(middle);
@@ -89,7 +90,8 @@ void close_strips(const std::vector<Column>& columns, std::size_t first, std::si
     for (std::size_t c = last + 1; c-- > first;) {
       push_distinct(polygon, Vec2(columns[c].rho, columns[c].covered.intervals()[k].second));
     }
-    if (polygon.size() > 2 && (polygon.front() - polygon.back()).norm() <= 1e-12) polygon.pop_back();
+    if (polygon.size() > 2 && (polygon.front() - polygon.back()).norm() <= 1e-12)
+      polygon.pop_back();
     if (polygon.size() >= 3 && signed_area(polygon) > 1e-14) polygons.push_back(std::move(polygon));
   }
 }

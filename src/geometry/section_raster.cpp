@@ -9,7 +9,9 @@ namespace {
 
 constexpr int kWordBits = 64;
 
-std::size_t words_for(std::size_t bits) { return (bits + kWordBits - 1) / kWordBits; }
+std::size_t words_for(std::size_t bits) {
+  return (bits + kWordBits - 1) / kWordBits;
+}
 
 void set_bits(std::vector<std::uint64_t>& words, std::size_t first, std::size_t end) {
   while (first < end) {
@@ -75,9 +77,11 @@ double SectionRaster::floor_share() const {
 
 namespace {
 
-std::size_t union_popcount(const std::vector<std::uint64_t>& a, const std::vector<std::uint64_t>& b) {
+std::size_t union_popcount(const std::vector<std::uint64_t>& a,
+                           const std::vector<std::uint64_t>& b) {
   std::size_t total = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) total += static_cast<std::size_t>(std::popcount(a[i] | b[i]));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    total += static_cast<std::size_t>(std::popcount(a[i] | b[i]));
   return total;
 }
 
@@ -111,11 +115,13 @@ SectionRaster rasterize(const MountedFov& fov, const SectionFrame& frame, const 
   const Vec2 outward(std::cos(frame.theta), std::sin(frame.theta));
   const Vec2 o = fov.origin().head<2>();
   const double along = o.dot(outward);
-  const double reach2 = fov.mode().max_range * fov.mode().max_range - (o.squaredNorm() - along * along);
+  const double reach2 =
+      fov.mode().max_range * fov.mode().max_range - (o.squaredNorm() - along * along);
   if (reach2 < 0) return raster;
   const double rho_near = along - std::sqrt(reach2);
   const double rho_far = along + std::sqrt(reach2);
-  const int first_column = std::max(0, static_cast<int>(std::floor((rho_near - frame.r) / column_width)));
+  const int first_column =
+      std::max(0, static_cast<int>(std::floor((rho_near - frame.r) / column_width)));
   const int end_column =
       std::min(grid.columns, static_cast<int>(std::ceil((rho_far - frame.r) / column_width)) + 1);
   for (int column = first_column; column < end_column; ++column) {

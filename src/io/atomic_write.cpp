@@ -25,7 +25,8 @@ void write_file_atomically(const std::string& path, const std::string& contents)
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::string temporary = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
   const int descriptor = ::mkstemp(temporary.data());
-  if (descriptor < 0) fail(path, std::string("cannot create a file beside it: ") + std::strerror(errno));
+  if (descriptor < 0)
+    fail(path, std::string("cannot create a file beside it: ") + std::strerror(errno));
   ::close(descriptor);
   {
     std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
@@ -37,8 +38,9 @@ void write_file_atomically(const std::string& path, const std::string& contents)
     }
   }
   std::error_code error;
-  fs::permissions(temporary, fs::perms::owner_read | fs::perms::owner_write |
-                                 fs::perms::group_read | fs::perms::others_read,
+  fs::permissions(temporary,
+                  fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                      fs::perms::others_read,
                   error);
   fs::rename(temporary, target, error);
   if (error) {

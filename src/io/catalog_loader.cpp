@@ -54,9 +54,10 @@ std::optional<FilteringLoads> read_measured_loads(MapReader& top, const std::str
   const std::filesystem::path resolved = std::filesystem::path(catalog_path).parent_path() / *name;
   std::error_code error;
   if (!std::filesystem::is_regular_file(resolved, error)) {
-    throw InputError(Diagnostic{top.location("filtering_loads"), top.field("filtering_loads"),
-                                "'" + resolved.string() + "' does not exist",
-                                "a file written by `rigdesign filter --write-loads`, relative to the catalog"});
+    throw InputError(
+        Diagnostic{top.location("filtering_loads"), top.field("filtering_loads"),
+                   "'" + resolved.string() + "' does not exist",
+                   "a file written by `rigdesign filter --write-loads`, relative to the catalog"});
   }
   return load_filtering_loads(resolved.string());
 }
@@ -68,7 +69,9 @@ Catalog load_catalog(const std::string& path) {
   Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1}, "(document)", "is not a map",
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
                                 "a catalog: name, body, distance_of_interest, sensors, slots, "
                                 "transfer, cpus"});
   }
@@ -81,14 +84,16 @@ Catalog load_catalog(const std::string& path) {
   if (auto body = top.map("body", Need::required, "a map with height and radius or footprint")) {
     catalog.body = io::read_body(*body);
   }
-  catalog.distance_of_interest = io::positive(top, "distance_of_interest", Need::required,
-                                              "the distance of interest d in metres, > body radius");
+  catalog.distance_of_interest =
+      io::positive(top, "distance_of_interest", Need::required,
+                   "the distance of interest d in metres, > body radius");
   if (catalog.distance_of_interest > 0 && catalog.body.radius > 0) {
     top.require(catalog.distance_of_interest > catalog.body.radius, "distance_of_interest",
                 "is not beyond the body radius", "d > r");
   }
   catalog.reference_machine =
-      top.text("reference_machine", Need::required, "what a CPU core-equivalent means").value_or("");
+      top.text("reference_machine", Need::required, "what a CPU core-equivalent means")
+          .value_or("");
   catalog.filtering_seconds_per_point =
       io::non_negative(top, "filtering_seconds_per_point", Need::required,
                        "core-seconds of point filtering per delivered point, >= 0");
@@ -124,7 +129,8 @@ Catalog load_catalog(const std::string& path) {
     MountingSlot slot;
     slot.where = reader.location();
     slot.id = reader.text("id", Need::required, "a slot id").value_or("");
-    if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg, or urdf_link")) {
+    if (auto pose =
+            reader.map("pose", Need::required, "a map with xyz and rpy_deg, or urdf_link")) {
       slot.T_robot_sensor = io::read_pose(*pose, urdf);
     }
     slot.allowed_sensors = read_names(reader, "allows", "a non-empty list of candidate sensor ids");
@@ -145,7 +151,8 @@ Catalog load_catalog(const std::string& path) {
     catalog.transfer.push_back(read_priced(reader, "capacity_bps", "bits per second, > 0"));
   }
   for (MapReader& reader : top.maps("cpus", Need::required, "a list of CPUs")) {
-    catalog.cpus.push_back(read_priced(reader, "cores", "core-equivalents of the reference machine, > 0"));
+    catalog.cpus.push_back(
+        read_priced(reader, "cores", "core-equivalents of the reference machine, > 0"));
   }
   top.require(!catalog.transfer.empty() || !top.has("transfer"), "transfer", "is empty",
               "at least one transfer option");

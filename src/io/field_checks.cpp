@@ -31,8 +31,8 @@ double angle_in(MapReader& reader, const std::string& key, double low, double hi
 double elevation(MapReader& reader, const std::string& key, const std::string& expected) {
   const auto value = reader.number(key, Need::required, expected);
   if (!value) return 0.0;
-  reader.require(*value >= -90 && *value <= 90, key,
-                 "is out of range: " + format_number(*value), expected);
+  reader.require(*value >= -90 && *value <= 90, key, "is out of range: " + format_number(*value),
+                 expected);
   return *value;
 }
 

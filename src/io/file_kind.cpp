@@ -13,12 +13,12 @@ FileKind detect_file_kind(const std::string& path) {
     if (root["range"].IsDefined()) return FileKind::requirements;
     if (root["steps"].IsDefined()) return FileKind::policy;
   }
-  throw InputError(Diagnostic{{path, 1, 1},
-                              "(document)",
-                              root.IsMap() ? "is neither a sensor library, a rig nor requirements"
-                                           : "is not a YAML map",
-                              "a map with top-level `sensors` (library), `mounts` (rig), "
-                              "`range` (requirements), `slots` (catalog) or `steps` (policy)"});
+  throw InputError(Diagnostic{
+      {path, 1, 1},
+      "(document)",
+      root.IsMap() ? "is neither a sensor library, a rig nor requirements" : "is not a YAML map",
+      "a map with top-level `sensors` (library), `mounts` (rig), "
+      "`range` (requirements), `slots` (catalog) or `steps` (policy)"});
 }
 
 std::string to_string(FileKind kind) {

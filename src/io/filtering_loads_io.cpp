@@ -13,12 +13,16 @@ FilteringLoads load_filtering_loads(const std::string& path) {
   Diagnostics diagnostics;
   io::MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1}, "(document)", "is not a map",
-                                "a filtering-loads file: machine, pipeline, scene, frames, sensors"});
+    throw InputError(
+        Diagnostic{{path, 1, 1},
+                   "(document)",
+                   "is not a map",
+                   "a filtering-loads file: machine, pipeline, scene, frames, sensors"});
   }
   FilteringLoads loads;
   loads.file = path;
-  loads.machine = top.text("machine", Need::required, "what one core-equivalent means").value_or("");
+  loads.machine =
+      top.text("machine", Need::required, "what one core-equivalent means").value_or("");
   loads.pipeline = top.text("pipeline", Need::required, "the pipeline that was timed").value_or("");
   loads.scene = top.text("scene", Need::optional).value_or("");
   loads.frames = top.integer("frames", Need::optional, "frames per sensor, >= 1").value_or(0);
@@ -28,9 +32,11 @@ FilteringLoads load_filtering_loads(const std::string& path) {
     load.where = reader.location();
     load.sensor_id = reader.text("sensor", Need::required, "a sensor id").value_or("");
     load.mode_id = reader.text("mode", Need::optional).value_or("");
-    load.seconds_per_point = io::non_negative(reader, "seconds_per_point", Need::required,
-                                              "core-seconds of filtering per delivered point, >= 0");
-    load.points_per_frame = io::non_negative(reader, "points_per_frame", Need::optional, "points, >= 0");
+    load.seconds_per_point =
+        io::non_negative(reader, "seconds_per_point", Need::required,
+                         "core-seconds of filtering per delivered point, >= 0");
+    load.points_per_frame =
+        io::non_negative(reader, "points_per_frame", Need::optional, "points, >= 0");
     load.median_seconds_per_frame =
         io::non_negative(reader, "median_seconds_per_frame", Need::optional, "seconds, >= 0");
     reader.reject_unknown_keys();
@@ -44,7 +50,8 @@ FilteringLoads load_filtering_loads(const std::string& path) {
   return loads;
 }
 
-FilteringLoads merge_filtering_loads(const FilteringLoads& previous, const FilteringLoads& measured) {
+FilteringLoads merge_filtering_loads(const FilteringLoads& previous,
+                                     const FilteringLoads& measured) {
   FilteringLoads merged = measured;
   for (const FilteringLoad& old : previous.sensors) {
     if (measured.find(old.sensor_id) == nullptr) merged.sensors.push_back(old);

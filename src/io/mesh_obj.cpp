@@ -51,8 +51,7 @@ class ObjReader {
  private:
   [[noreturn]] void fail(std::string_view line, std::string_view word, const std::string& field,
                          const std::string& problem, const std::string& expected) const {
-    throw_mesh_error(path_, cursor_.line_number(), column_of(line, word), field, problem,
-                     expected);
+    throw_mesh_error(path_, cursor_.line_number(), column_of(line, word), field, problem, expected);
   }
 
   void read_vertex(std::string_view line) {
@@ -80,7 +79,8 @@ class ObjReader {
            kFaceForm + std::string(" (at least 3 corners)"));
     }
     corners_.clear();
-    for (std::size_t i = 1; i < words_.size(); ++i) corners_.push_back(vertex_index(line, words_[i]));
+    for (std::size_t i = 1; i < words_.size(); ++i)
+      corners_.push_back(vertex_index(line, words_[i]));
     append_fan(mesh_, corners_);
   }
 
@@ -112,11 +112,11 @@ class ObjReader {
     const auto count = static_cast<std::int64_t>(mesh_.vertices.size());
     for (const ForwardReference& reference : forward_) {
       if (reference.index >= count) {
-        throw_mesh_error(path_, reference.line, reference.column, "f",
-                         "refers to vertex " + std::to_string(reference.index + 1) +
-                             "; the file has " + std::to_string(count) + " vertices",
-                         "indices 1 ... " + std::to_string(count) + " or -1 ... -" +
-                             std::to_string(count));
+        throw_mesh_error(
+            path_, reference.line, reference.column, "f",
+            "refers to vertex " + std::to_string(reference.index + 1) + "; the file has " +
+                std::to_string(count) + " vertices",
+            "indices 1 ... " + std::to_string(count) + " or -1 ... -" + std::to_string(count));
       }
     }
   }

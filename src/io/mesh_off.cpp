@@ -39,8 +39,7 @@ class OffReader {
  private:
   [[noreturn]] void fail(std::string_view line, std::string_view word, const std::string& field,
                          const std::string& problem, const std::string& expected) const {
-    throw_mesh_error(path_, cursor_.line_number(), column_of(line, word), field, problem,
-                     expected);
+    throw_mesh_error(path_, cursor_.line_number(), column_of(line, word), field, problem, expected);
   }
 
   // The next line with words on it, without its comment; false at the end of the file.
@@ -119,8 +118,8 @@ class OffReader {
     }
     if (words_.size() - 1 < *corners) {
       fail(line_, words_[0], field,
-           "lists " + std::to_string(words_.size() - 1) + " of its " +
-               std::to_string(*corners) + " corners",
+           "lists " + std::to_string(words_.size() - 1) + " of its " + std::to_string(*corners) +
+               " corners",
            kFaceForm);
     }
     corners_.clear();

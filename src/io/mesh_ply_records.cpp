@@ -171,9 +171,8 @@ void BinaryPlyRecords::read(const PlyElement& element, std::size_t index, std::s
   }
 }
 
-void BinaryPlyRecords::fail(const PlyRecord& record, std::size_t offset,
-                            const std::string& field, const std::string& problem,
-                            const std::string& expected) const {
+void BinaryPlyRecords::fail(const PlyRecord& record, std::size_t offset, const std::string& field,
+                            const std::string& problem, const std::string& expected) const {
   throw_mesh_error(path_, 0, 0, field,
                    problem + " (binary record " + std::to_string(record.index) +
                        " of its element, byte offset " + std::to_string(offset) + ")",
@@ -187,12 +186,11 @@ void BinaryPlyRecords::need(std::size_t size, const PlyElement& element, std::si
 
 void BinaryPlyRecords::truncated(const PlyElement& element, std::size_t index,
                                  std::size_t start) const {
-  throw_mesh_error(path_, 0, 0, ply_field(element, index, ""),
-                   "the binary body ends inside " + element.name + " record " +
-                       std::to_string(index) + " (it starts at byte offset " +
-                       std::to_string(start) + ")",
-                   std::to_string(element.count) + " " + element.name +
-                       " records as the header declares");
+  throw_mesh_error(
+      path_, 0, 0, ply_field(element, index, ""),
+      "the binary body ends inside " + element.name + " record " + std::to_string(index) +
+          " (it starts at byte offset " + std::to_string(start) + ")",
+      std::to_string(element.count) + " " + element.name + " records as the header declares");
 }
 
 }  // namespace rigdesign::io

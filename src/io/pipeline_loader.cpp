@@ -17,7 +17,8 @@ void read(MapReader& m, const std::string& key, double& value, const std::string
   if (const auto v = m.number(key, Need::optional, expected)) value = *v;
 }
 
-void read_positive(MapReader& m, const std::string& key, double& value, const std::string& expected) {
+void read_positive(MapReader& m, const std::string& key, double& value,
+                   const std::string& expected) {
   if (m.has(key)) value = io::positive(m, key, Need::required, expected);
 }
 
@@ -28,7 +29,8 @@ RansacPlaneParams read_ransac(MapReader& m, RansacPlaneParams params) {
   }
   read_positive(m, "threshold", params.threshold, "the inlier distance T in metres, > 0");
   if (const auto confidence = m.number("confidence", Need::optional, "a probability in (0, 1]")) {
-    m.require(*confidence > 0 && *confidence <= 1, "confidence", "is out of range", "a probability in (0, 1]");
+    m.require(*confidence > 0 && *confidence <= 1, "confidence", "is out of range",
+              "a probability in (0, 1]");
     params.confidence = *confidence;
   }
   if (const auto seed = m.integer("seed", Need::optional, "a non-negative integer")) {
@@ -45,7 +47,8 @@ RansacPlaneParams read_ransac(MapReader& m, RansacPlaneParams params) {
 
 PassThroughParams read_pass_through(MapReader& m) {
   PassThroughParams params;
-  if (const auto axis = m.choice("axis", Need::optional, {"x", "y", "z"})) params.axis = static_cast<int>(*axis);
+  if (const auto axis = m.choice("axis", Need::optional, {"x", "y", "z"}))
+    params.axis = static_cast<int>(*axis);
   read(m, "min", params.min, "metres");
   read(m, "max", params.max, "metres");
   m.require(params.min <= params.max, "min", "is above max", "min <= max");
@@ -59,7 +62,8 @@ StageParams read_stage(MapReader& m, std::size_t index) {
     case 0: {
       VoxelGridParams params;
       read_positive(m, "leaf", params.leaf, "the voxel size in metres, > 0");
-      if (const auto offset = m.numbers("grid_offset", Need::optional, 3, 3, "[x, y, z] in metres")) {
+      if (const auto offset =
+              m.numbers("grid_offset", Need::optional, 3, 3, "[x, y, z] in metres")) {
         params.grid_offset = Eigen::Vector3d((*offset)[0], (*offset)[1], (*offset)[2]);
       }
       m.reject_unknown_keys();
@@ -81,14 +85,16 @@ StageParams read_stage(MapReader& m, std::size_t index) {
     case 4: {
       FloorRemoval1Params params;
       if (auto slice = m.map("slice", Need::optional)) params.slice = read_pass_through(*slice);
-      if (auto ransac = m.map("ransac", Need::optional)) params.ransac = read_ransac(*ransac, params.ransac);
+      if (auto ransac = m.map("ransac", Need::optional))
+        params.ransac = read_ransac(*ransac, params.ransac);
       m.reject_unknown_keys();
       return params;
     }
     case 5: {
       FloorRemoval2Params params;
       read_positive(m, "coarse_leaf", params.coarse_leaf, "V2 in metres, > 0");
-      if (auto ransac = m.map("ransac", Need::optional)) params.ransac = read_ransac(*ransac, params.ransac);
+      if (auto ransac = m.map("ransac", Need::optional))
+        params.ransac = read_ransac(*ransac, params.ransac);
       m.reject_unknown_keys();
       return params;
     }
@@ -109,20 +115,22 @@ Pipeline load_pipeline(const std::string& path) {
   Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1}, "(document)", "is not a map", "a pipeline: name and stages"});
+    throw InputError(
+        Diagnostic{{path, 1, 1}, "(document)", "is not a map", "a pipeline: name and stages"});
   }
   Pipeline pipeline;
   pipeline.name = top.text("name", Need::required, "the pipeline's name").value_or("");
   const YAML::Node stages = top.node("stages");
   if (!stages.IsSequence() || stages.size() == 0) {
-    top.require(false, "stages", "is not a non-empty list", "a list of stages such as `- voxel_grid: {leaf: 0.03}`");
+    top.require(false, "stages", "is not a non-empty list",
+                "a list of stages such as `- voxel_grid: {leaf: 0.03}`");
   } else {
     for (std::size_t i = 0; i < stages.size(); ++i) {
       const std::string field = "stages[" + std::to_string(i) + "]";
       const YAML::Node stage = stages[i];
       const std::string name = stage.IsMap() && stage.size() == 1 ? stage.begin()->first.Scalar()
-                               : stage.IsScalar()                ? stage.Scalar()
-                                                                 : "";
+                               : stage.IsScalar()                 ? stage.Scalar()
+                                                                  : "";
       const auto& names = stage_names();
       const auto known = std::find(names.begin(), names.end(), name);
       if (known == names.end()) {
@@ -138,7 +146,8 @@ Pipeline load_pipeline(const std::string& path) {
       if (params.IsNull()) params = YAML::Node(YAML::NodeType::Map);
       MapReader reader(params, field + "." + name, path, diagnostics, io::location_of(stage, path));
       if (!reader.valid()) {
-        diagnostics.error(io::location_of(stage, path), field + "." + name, "is not a map of parameters",
+        diagnostics.error(io::location_of(stage, path), field + "." + name,
+                          "is not a map of parameters",
                           "a map such as {leaf: 0.03}, or nothing for the defaults");
         continue;
       }

@@ -30,10 +30,10 @@ std::vector<Vec2> read_footprint(MapReader& body) {
       all_valid = false;
       continue;
     }
-    const auto x = io::sequence_number(vertex[0], field + "[0]", body.file(), expected,
-                                       body.diagnostics());
-    const auto y = io::sequence_number(vertex[1], field + "[1]", body.file(), expected,
-                                       body.diagnostics());
+    const auto x =
+        io::sequence_number(vertex[0], field + "[0]", body.file(), expected, body.diagnostics());
+    const auto y =
+        io::sequence_number(vertex[1], field + "[1]", body.file(), expected, body.diagnostics());
     all_valid = all_valid && x && y;
     footprint.emplace_back(x.value_or(0.0), y.value_or(0.0));
   }
@@ -56,10 +56,12 @@ RobotBody read_body(MapReader& body) {
                has_radius ? "given together with footprint" : "missing",
                "either radius (a cylinder) or footprint (a prism), in metres");
   if (has_radius) {
-    result.radius = io::positive(body, "radius", Need::required, "the body radius r in metres, > 0");
+    result.radius =
+        io::positive(body, "radius", Need::required, "the body radius r in metres, > 0");
   } else if (has_footprint) {
     result.footprint = read_footprint(body);
-    for (const Vec2& vertex : result.footprint) result.radius = std::max(result.radius, vertex.norm());
+    for (const Vec2& vertex : result.footprint)
+      result.radius = std::max(result.radius, vertex.norm());
   }
   body.text("note", Need::optional);
   body.reject_unknown_keys();
@@ -68,7 +70,8 @@ RobotBody read_body(MapReader& body) {
 
 Pose3 read_pose(MapReader& pose, const std::optional<UrdfPoses>& urdf) {
   if (pose.has("urdf_link")) {
-    const std::string link = pose.text("urdf_link", Need::required, "a URDF link name").value_or("");
+    const std::string link =
+        pose.text("urdf_link", Need::required, "a URDF link name").value_or("");
     pose.require(!pose.has("xyz") && !pose.has("rpy_deg"), "urdf_link", "given together with xyz",
                  "either urdf_link or xyz/rpy_deg");
     pose.reject_unknown_keys();

@@ -72,7 +72,8 @@ bool collect_points(std::string_view bytes, std::size_t count,
   return true;
 }
 
-PointCloud CollectedPoints::into_cloud(const Point3f& origin, const Eigen::Quaternionf& orientation) && {
+PointCloud CollectedPoints::into_cloud(const Point3f& origin,
+                                       const Eigen::Quaternionf& orientation) && {
   PointCloud cloud;
   cloud.points = std::move(points);
   cloud.origin = origin;

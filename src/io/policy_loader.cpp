@@ -10,7 +10,9 @@ RelaxationPolicy load_policy(const std::string& path) {
   Diagnostics diagnostics;
   io::MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1}, "(document)", "is not a map",
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
                                 "a relaxation policy: a map with name and steps"});
   }
   RelaxationPolicy policy;
@@ -19,10 +21,12 @@ RelaxationPolicy load_policy(const std::string& path) {
   for (io::MapReader& reader : top.maps("steps", io::Need::required, "a list of steps")) {
     RelaxationStep step;
     step.where = reader.location();
-    step.requirement = reader.text("relax", io::Need::required,
-                                   "a requirement path such as robot_speed.max_speed").value_or("");
+    step.requirement =
+        reader.text("relax", io::Need::required, "a requirement path such as robot_speed.max_speed")
+            .value_or("");
     if (step.requirement == "lighting") {
-      if (const auto drop = reader.choice("drop", io::Need::required, {"dark", "indoor", "sunlight"})) {
+      if (const auto drop =
+              reader.choice("drop", io::Need::required, {"dark", "indoor", "sunlight"})) {
         step.drop = static_cast<LightCondition>(*drop);
       }
     } else {

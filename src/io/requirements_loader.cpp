@@ -79,7 +79,9 @@ Requirements load_requirements(const std::string& path) {
   Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1}, "(document)", "is not a map",
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
                                 "requirements: a map with keys R1-R8 (see rigs/README.md)"});
   }
   Requirements requirements;
@@ -101,8 +103,8 @@ Requirements load_requirements(const std::string& path) {
   }
   if (auto range = top.map("range", Need::required, "a map with distance (R3)")) {  // R3
     requirements.range_where = range->location();
-    requirements.distance =
-        io::positive(*range, "distance", Need::required, "the distance of interest d in metres, > 0");
+    requirements.distance = io::positive(*range, "distance", Need::required,
+                                         "the distance of interest d in metres, > 0");
     if (range->has("min_frequency")) {
       requirements.min_frequency =
           io::positive(*range, "min_frequency", Need::required, "frames per second [Hz], > 0");

@@ -20,7 +20,8 @@ Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf) {
   Mount mount;
   mount.where = reader.location();
   mount.id = reader.text("id", Need::required, "a mount id, unique in the rig").value_or("");
-  mount.sensor_id = reader.text("sensor", Need::required, "a sensor id from sensors.yaml").value_or("");
+  mount.sensor_id =
+      reader.text("sensor", Need::required, "a sensor id from sensors.yaml").value_or("");
   mount.sensor_where = reader.location("sensor");
   mount.mode_id = reader.text("mode", Need::required, "a mode id of that sensor").value_or("");
   mount.mode_where = reader.location("mode");
@@ -29,8 +30,8 @@ Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf) {
     mount.T_robot_sensor = read_pose(*pose, urdf);
   }
   if (reader.has("distance_of_interest")) {
-    mount.distance_of_interest = io::positive(reader, "distance_of_interest", Need::required,
-                                              "metres, > 0");
+    mount.distance_of_interest =
+        io::positive(reader, "distance_of_interest", Need::required, "metres, > 0");
   }
   reader.text("note", Need::optional);
   reader.reject_unknown_keys();
@@ -44,7 +45,9 @@ Rig load_rig(const std::string& path) {
   Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1}, "(document)", "is not a map",
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
                                 "a rig: a map with name, body, distance_of_interest, mounts"});
   }
   Rig rig;

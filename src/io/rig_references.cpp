@@ -24,16 +24,18 @@ Diagnostics check_rig_references(const Rig& rig, const SensorLibrary& library) {
     const Mount& mount = rig.mounts[i];
     const Sensor* sensor = library.find(mount.sensor_id);
     if (sensor == nullptr) {
-      diagnostics.error(mount.sensor_where, mount_field(i, "sensor"),
-                        "unknown sensor '" + mount.sensor_id + "' in " + library.file,
-                        "one of: " + list_ids(library.sensors, [](const Sensor& s) { return s.id; }));
+      diagnostics.error(
+          mount.sensor_where, mount_field(i, "sensor"),
+          "unknown sensor '" + mount.sensor_id + "' in " + library.file,
+          "one of: " + list_ids(library.sensors, [](const Sensor& s) { return s.id; }));
       continue;
     }
     const SensorMode* mode = sensor->find_mode(mount.mode_id);
     if (mode == nullptr) {
-      diagnostics.error(mount.mode_where, mount_field(i, "mode"),
-                        "unknown mode '" + mount.mode_id + "' of sensor '" + sensor->id + "'",
-                        "one of: " + list_ids(sensor->modes, [](const SensorMode& m) { return m.id; }));
+      diagnostics.error(
+          mount.mode_where, mount_field(i, "mode"),
+          "unknown mode '" + mount.mode_id + "' of sensor '" + sensor->id + "'",
+          "one of: " + list_ids(sensor->modes, [](const SensorMode& m) { return m.id; }));
       continue;
     }
     const double distance = rig.distance_for(mount);

@@ -97,8 +97,8 @@ io::WaypointPath read_waypoint_path(MapReader& trajectory) {
   const YAML::Node list = trajectory.node("waypoints");
   trajectory.require(!list.IsSequence() || list.size() > 0, "waypoints", "is empty",
                      "at least one waypoint");
-  for (MapReader& waypoint : trajectory.maps("waypoints", Need::required,
-                                             "a list of {t, xyz, yaw_deg}")) {
+  for (MapReader& waypoint :
+       trajectory.maps("waypoints", Need::required, "a list of {t, xyz, yaw_deg}")) {
     const auto t = waypoint.number("t", Need::required, "seconds, finite");
     const auto xyz = waypoint.numbers("xyz", Need::required, 3, 3, "[x, y, z] in metres, finite");
     const double yaw =
@@ -117,11 +117,11 @@ io::WaypointPath read_waypoint_path(MapReader& trajectory) {
 
 io::EllipsePath read_ellipse_path(MapReader& ellipse) {
   io::EllipsePath path;
-  const auto centre = ellipse.numbers("centre", Need::optional, 2, 2,
-                                      "[x, y] in metres, finite (default [0, 0])");
+  const auto centre =
+      ellipse.numbers("centre", Need::optional, 2, 2, "[x, y] in metres, finite (default [0, 0])");
   if (centre) path.centre = Vec2((*centre)[0], (*centre)[1]);
-  if (const auto axes = ellipse.numbers("semi_axes", Need::required, 2, 2,
-                                        "[a, b] in metres, both > 0")) {
+  if (const auto axes =
+          ellipse.numbers("semi_axes", Need::required, 2, 2, "[a, b] in metres, both > 0")) {
     ellipse.require((*axes)[0] > 0 && (*axes)[1] > 0, "semi_axes", "has a semi-axis <= 0",
                     "[a, b] in metres, both > 0");
     path.semi_axes = Vec2((*axes)[0], (*axes)[1]);
@@ -165,7 +165,9 @@ Scene load_scene_file(const std::string& yaml_path) {
   Diagnostics diagnostics;
   MapReader top(root, "", yaml_path, diagnostics, {yaml_path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{yaml_path, 1, 1}, "(document)", "is not a map",
+    throw InputError(Diagnostic{{yaml_path, 1, 1},
+                                "(document)",
+                                "is not a map",
                                 "a scene: a map with name, robot_start, static, moving"});
   }
   Scene scene;

@@ -13,19 +13,28 @@ namespace {
 using io::MapReader;
 using io::Need;
 
-const std::vector<std::string> kModeKeys = {
-    "id",    "fov",      "range",           "frequency",     "pixels",
-    "angular_resolution_deg", "points_per_frame", "bytes_per_frame", "bytes_per_point",
-    "bytes_per_second", "noise", "light", "driver_cpu", "note"};
+const std::vector<std::string> kModeKeys = {"id",
+                                            "fov",
+                                            "range",
+                                            "frequency",
+                                            "pixels",
+                                            "angular_resolution_deg",
+                                            "points_per_frame",
+                                            "bytes_per_frame",
+                                            "bytes_per_point",
+                                            "bytes_per_second",
+                                            "noise",
+                                            "light",
+                                            "driver_cpu",
+                                            "note"};
 
 const std::vector<std::string> kTechnologyNames = {
-    "tof",      "structured_light", "active_stereo",    "passive_stereo",
-    "lidar_3d_spinning", "lidar_2d", "solid_state_lidar"};
+    "tof",      "structured_light", "active_stereo", "passive_stereo", "lidar_3d_spinning",
+    "lidar_2d", "solid_state_lidar"};
 const std::vector<std::string> kShapeNames = {"pyramid", "cone", "band", "planar"};
 
 // A mode's field comes from the mode itself, else from the sensor's `mode_defaults`.
-MapReader& source_of(const std::string& key, MapReader& mode,
-                     std::optional<MapReader>& defaults) {
+MapReader& source_of(const std::string& key, MapReader& mode, std::optional<MapReader>& defaults) {
   if (mode.has(key) || !defaults || !defaults->has(key)) return mode;
   return *defaults;
 }
@@ -36,10 +45,12 @@ FieldOfView read_fov(MapReader& fov) {
   if (!shape) return result;
   result.shape = static_cast<FovShape>(*shape);
   const std::string full_angle = "a full angle in degrees, in (0, 360]";
-  const std::string lens_angle = "a full angle in degrees, in (0, 180) for a " + kShapeNames[*shape];
+  const std::string lens_angle =
+      "a full angle in degrees, in (0, 180) for a " + kShapeNames[*shape];
   switch (result.shape) {
     case FovShape::pyramid:
-      result.horizontal = deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 180, false, lens_angle));
+      result.horizontal =
+          deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 180, false, lens_angle));
       result.vertical = deg_to_rad(io::angle_in(fov, "vertical_deg", 0, 180, false, lens_angle));
       result.elevation_min = -result.vertical / 2;
       result.elevation_max = result.vertical / 2;
@@ -51,9 +62,10 @@ FieldOfView read_fov(MapReader& fov) {
       result.elevation_max = result.vertical / 2;
       break;
     case FovShape::band: {
-      result.horizontal = fov.has("horizontal_deg")
-                              ? deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle))
-                              : 2 * std::numbers::pi;
+      result.horizontal =
+          fov.has("horizontal_deg")
+              ? deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle))
+              : 2 * std::numbers::pi;
       const std::string elevation = "an elevation in degrees, in [-90, 90]";
       const double low = io::elevation(fov, "elevation_min_deg", elevation);
       const double high = io::elevation(fov, "elevation_max_deg", elevation);
@@ -103,8 +115,9 @@ void read_sampling(SensorMode& mode, MapReader& reader, std::optional<MapReader>
     }
   } else {
     const std::size_t count = planar ? 1 : 2;
-    const std::string expected = planar ? "[horizontal] in degrees, positive (a 2D scanner has one row)"
-                                        : "[horizontal, vertical] in degrees, both positive";
+    const std::string expected =
+        planar ? "[horizontal] in degrees, positive (a 2D scanner has one row)"
+               : "[horizontal, vertical] in degrees, both positive";
     const auto resolution =
         resolution_from.numbers("angular_resolution_deg", Need::required, count, count, expected);
     if (resolution) {
@@ -140,8 +153,8 @@ void read_bytes(SensorMode& mode, MapReader& reader, std::optional<MapReader>& d
   if (frame.has("bytes_per_frame")) {
     mode.bytes_per_frame = io::positive(frame, "bytes_per_frame", Need::required, "bytes, > 0");
   } else if (point.has("bytes_per_point")) {
-    mode.bytes_per_frame =
-        io::positive(point, "bytes_per_point", Need::required, "bytes, > 0") * mode.points_per_frame;
+    mode.bytes_per_frame = io::positive(point, "bytes_per_point", Need::required, "bytes, > 0") *
+                           mode.points_per_frame;
   } else if (mode.frequency > 0) {
     mode.bytes_per_frame =
         io::positive(second, "bytes_per_second", Need::required, "bytes per second, > 0") /
@@ -266,14 +279,16 @@ SensorLibrary load_sensor_library(const std::string& path) {
   Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1}, "(document)", "is not a map",
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
                                 "a map with `reference_machine` and `sensors`"});
   }
   SensorLibrary library;
   library.file = path;
-  library.reference_machine =
-      top.text("reference_machine", Need::required, "the machine a driver core-equivalent refers to")
-          .value_or("");
+  library.reference_machine = top.text("reference_machine", Need::required,
+                                       "the machine a driver core-equivalent refers to")
+                                  .value_or("");
   std::set<std::string> sensor_ids;
   for (MapReader& reader : top.maps("sensors", Need::required, "a list of sensors")) {
     Sensor sensor = read_sensor(reader);

@@ -14,8 +14,10 @@ namespace {
 Pose3 to_pose(const urdf::Pose& pose) {
   Pose3 result = Pose3::Identity();
   result.translation() = Vec3(pose.position.x, pose.position.y, pose.position.z);
-  result.linear() = Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y,
-                                       pose.rotation.z).normalized().toRotationMatrix();
+  result.linear() =
+      Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)
+          .normalized()
+          .toRotationMatrix();
   return result;
 }
 

@@ -1,7 +1,5 @@
 #include "io/yaml_reader.hpp"
 
-#include "rigdesign/model/format_number.hpp"
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -9,6 +7,8 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+
+#include "rigdesign/model/format_number.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -58,8 +58,9 @@ std::string unknown_key_problem(const std::string& key, const std::vector<std::s
 YAML::Node load_yaml_file(const std::string& path) {
   std::ifstream stream(path);
   if (!stream) {
-    throw InputError(Diagnostic{{path, 0, 0}, "file", std::string("cannot be opened: ") +
-                                                          std::strerror(errno),
+    throw InputError(Diagnostic{{path, 0, 0},
+                                "file",
+                                std::string("cannot be opened: ") + std::strerror(errno),
                                 "a readable YAML file"});
   }
   std::stringstream contents;
@@ -81,8 +82,8 @@ SourceLocation location_of(const YAML::Node& node, const std::string& file) {
   return {file, mark.line + 1, mark.column + 1};
 }
 
-MapReader::MapReader(YAML::Node node, std::string path, std::string file,
-                     Diagnostics& diagnostics, SourceLocation named_at)
+MapReader::MapReader(YAML::Node node, std::string path, std::string file, Diagnostics& diagnostics,
+                     SourceLocation named_at)
     : node_(std::move(node)),
       path_(std::move(path)),
       file_(std::move(file)),
@@ -174,8 +175,7 @@ std::optional<bool> MapReader::boolean(const std::string& key, Need need) {
 }
 
 std::optional<std::vector<double>> MapReader::numbers(const std::string& key, Need need,
-                                                      std::size_t min_size,
-                                                      std::size_t max_size,
+                                                      std::size_t min_size, std::size_t max_size,
                                                       const std::string& expected) {
   if (!present(key, need, expected)) return std::nullopt;
   const YAML::Node value = node_[key];
@@ -274,8 +274,7 @@ std::optional<double> sequence_number(const YAML::Node& element, const std::stri
                                       Diagnostics& diagnostics) {
   double parsed = 0.0;
   if (!element.IsScalar() || !YAML::convert<double>::decode(element, parsed)) {
-    diagnostics.error(location_of(element, file), field, "is " + describe_kind(element),
-                      expected);
+    diagnostics.error(location_of(element, file), field, "is " + describe_kind(element), expected);
     return std::nullopt;
   }
   if (!std::isfinite(parsed)) {

@@ -11,7 +11,9 @@ namespace rigdesign {
 namespace {
 
 // Enough digits that a pose read back equals the one written to well under a micrometre.
-std::string number(double value) { return format_number(value, 12); }
+std::string number(double value) {
+  return format_number(value, 12);
+}
 
 void write_comment(std::ostringstream& out, const std::string& comment) {
   std::istringstream lines(comment);
@@ -75,7 +77,8 @@ std::string requirements_to_yaml(const Requirements& requirements, const std::st
   if (!requirements.sectors.empty()) {
     out << "sectors:\n";
     for (const SectorRequirement& sector : requirements.sectors) {
-      out << "  - {name: " << quoted(sector.name) << ", from_deg: " << number(rad_to_deg(sector.from))
+      out << "  - {name: " << quoted(sector.name)
+          << ", from_deg: " << number(rad_to_deg(sector.from))
           << ", to_deg: " << number(rad_to_deg(sector.to))
           << ", min_complete_coverage: " << number(sector.min_complete_coverage)
           << ", min_floor_coverage: " << number(sector.min_floor_coverage) << "}\n";
@@ -95,7 +98,8 @@ std::string requirements_to_yaml(const Requirements& requirements, const std::st
   if (requirements.smallest_obstacle) {
     out << "smallest_obstacle: {size: " << number(*requirements.smallest_obstacle) << "}\n";
   }
-  if (requirements.max_noise) out << "accuracy: {max_noise: " << number(*requirements.max_noise) << "}\n";
+  if (requirements.max_noise)
+    out << "accuracy: {max_noise: " << number(*requirements.max_noise) << "}\n";
   if (!requirements.lighting.empty()) {
     out << "lighting: [";
     for (std::size_t i = 0; i < requirements.lighting.size(); ++i) {
@@ -120,7 +124,8 @@ std::string filtering_loads_to_yaml(const FilteringLoads& loads, const std::stri
     if (!load.mode_id.empty()) out << "    mode: " << quoted(load.mode_id) << '\n';
     out << "    seconds_per_point: " << format_number(load.seconds_per_point, 6) << '\n';
     out << "    points_per_frame: " << format_number(load.points_per_frame, 8) << '\n';
-    out << "    median_seconds_per_frame: " << format_number(load.median_seconds_per_frame, 6) << '\n';
+    out << "    median_seconds_per_frame: " << format_number(load.median_seconds_per_frame, 6)
+        << '\n';
   }
   return out.str();
 }

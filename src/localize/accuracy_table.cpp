@@ -5,7 +5,8 @@
 
 namespace rigdesign {
 
-std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds, ScenarioParams scenario_params,
+std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
+                                        ScenarioParams scenario_params,
                                         const std::vector<LocalizeMethod>& methods,
                                         const LocalizeParams& params, const KpiParams& kpi) {
   struct Collected {
@@ -18,7 +19,8 @@ std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds, 
     const Scenario generated = make_scenario(scenario, scenario_params);
     for (std::size_t m = 0; m < methods.size(); ++m) {
       const EmitterEstimate estimate = localize_emitter(generated.log, 0, methods[m], params);
-      const EmitterKpis kpis = evaluate_emitter(generated.log, 0, generated.truth.front().position, estimate, params, kpi);
+      const EmitterKpis kpis = evaluate_emitter(generated.log, 0, generated.truth.front().position,
+                                                estimate, params, kpi);
       Collected& c = collected[m];
       if (estimate.hypotheses.empty()) {
         ++c.unsolved;

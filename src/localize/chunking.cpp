@@ -28,8 +28,10 @@ double wls_weight(const Chunk& chunk) {
   return std::sqrt(static_cast<double>(chunk.count)) / chunk.mean_range();
 }
 
-std::size_t ChunkAccumulator::add(const Vec3& position, double range, double rssi_dbm, Chunk* previous) {
-  const auto [it, inserted] = index_of_.try_emplace(cell_key(position, params_.size), chunks_.size());
+std::size_t ChunkAccumulator::add(const Vec3& position, double range, double rssi_dbm,
+                                  Chunk* previous) {
+  const auto [it, inserted] =
+      index_of_.try_emplace(cell_key(position, params_.size), chunks_.size());
   if (inserted) chunks_.emplace_back();
   Chunk& chunk = chunks_[it->second];
   if (previous != nullptr) *previous = chunk;
@@ -45,7 +47,8 @@ std::vector<Chunk> chunk_readings(const RssiLog& log, int emitter, const PathLos
   ChunkAccumulator accumulator(params);
   for (const RssiReading& reading : log.readings) {
     if (reading.emitter != emitter || reading.rssi_dbm < path_loss.cutoff_dbm) continue;
-    accumulator.add(reading.position, range_from_rssi(reading.rssi_dbm, path_loss), reading.rssi_dbm);
+    accumulator.add(reading.position, range_from_rssi(reading.rssi_dbm, path_loss),
+                    reading.rssi_dbm);
   }
   return accumulator.chunks();
 }

@@ -11,7 +11,9 @@
 namespace rigdesign::localize_detail {
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t'; }
+bool is_blank(char c) {
+  return c == ' ' || c == '\t';
+}
 
 Field trimmed(const std::string& line, std::size_t begin, std::size_t end) {
   while (begin < end && is_blank(line[begin])) ++begin;
@@ -75,7 +77,8 @@ double parse_number(const Field& field, const SourceLocation& where, const std::
     throw InputError(Diagnostic{where, name, "'" + field.text + "' is not a number", "a number"});
   }
   if (!std::isfinite(value) || errno == ERANGE) {
-    throw InputError(Diagnostic{where, name, "'" + field.text + "' is not finite", "a finite number"});
+    throw InputError(
+        Diagnostic{where, name, "'" + field.text + "' is not finite", "a finite number"});
   }
   return value;
 }
@@ -85,13 +88,17 @@ std::size_t require_column(const std::vector<Field>& header, const std::string& 
   for (std::size_t i = 0; i < header.size(); ++i) {
     if (header[i].text == name) return i;
   }
-  throw InputError(Diagnostic{{file, line, 1}, name, "column is missing from the header",
+  throw InputError(Diagnostic{{file, line, 1},
+                              name,
+                              "column is missing from the header",
                               "a header line naming the columns " + expected_header});
 }
 
 std::string read_text_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(Diagnostic{{path, 0, 0}, "file", "cannot be opened for reading", "a readable file"});
+  if (!in)
+    throw InputError(
+        Diagnostic{{path, 0, 0}, "file", "cannot be opened for reading", "a readable file"});
   std::ostringstream contents;
   contents << in.rdbuf();
   return contents.str();

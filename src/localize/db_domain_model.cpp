@@ -14,11 +14,15 @@ constexpr double kMaxExponent = 8.0;
 
 // Length in the fitted dimensions (x, y when z is unobservable). Written out: GCC 12 warns
 // about Eigen's head(d) with a run-time d on a fixed-size vector.
-double norm_in(const Vec3& v, int d) { return d == 3 ? v.norm() : std::hypot(v.x(), v.y()); }
+double norm_in(const Vec3& v, int d) {
+  return d == 3 ? v.norm() : std::hypot(v.x(), v.y());
+}
 
 }  // namespace
 
-double distance(const Vec3& q, const Vec3& p, int d) { return std::max(norm_in(q - p, d), kMinDistance); }
+double distance(const Vec3& q, const Vec3& p, int d) {
+  return std::max(norm_in(q - p, d), kMinDistance);
+}
 
 namespace {
 
@@ -53,7 +57,8 @@ double robust_cost(double e, double huber) {
 
 // The level (and exponent) minimising the weighted squared residuals for a fixed q: a linear
 // least-squares problem in (a, n), which makes scoring a candidate one pass over the data.
-Solution closed_form(const std::vector<Observation>& observations, const Vec3& q, const Model& model) {
+Solution closed_form(const std::vector<Observation>& observations, const Vec3& q,
+                     const Model& model) {
   double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const Observation& o : observations) {
     const double x = -10.0 * std::log10(distance(q, o.p, model.d));
@@ -79,14 +84,16 @@ Solution closed_form(const std::vector<Observation>& observations, const Vec3& q
     s.n = std::clamp(s.n, kMinExponent, kMaxExponent);
   }
   if (model.fit_level) {
-    s.a = std::clamp((sy - s.n * sx + lambda * model.a0) / (sw + lambda), model.a0 - model.level_bound,
-                     model.a0 + model.level_bound);
-    if (model.fit_exponent && sxx > 0) s.n = std::clamp((sxy - s.a * sx) / sxx, kMinExponent, kMaxExponent);
+    s.a = std::clamp((sy - s.n * sx + lambda * model.a0) / (sw + lambda),
+                     model.a0 - model.level_bound, model.a0 + model.level_bound);
+    if (model.fit_exponent && sxx > 0)
+      s.n = std::clamp((sxy - s.a * sx) / sxx, kMinExponent, kMaxExponent);
   }
   // Sum of w (y - a - n x)^2 expanded into the sums, plus the prior.
   double syy = 0;
   for (const Observation& o : observations) syy += o.w * o.m * o.m;
-  s.cost = std::max(0.0, syy - 2 * s.a * sy - 2 * s.n * sxy + s.a * s.a * sw + 2 * s.a * s.n * sx + s.n * s.n * sxx) +
+  s.cost = std::max(0.0, syy - 2 * s.a * sy - 2 * s.n * sxy + s.a * s.a * sw + 2 * s.a * s.n * sx +
+                             s.n * s.n * sxx) +
            lambda * (s.a - model.a0) * (s.a - model.a0);
   return s;
 }
@@ -94,8 +101,8 @@ Solution closed_form(const std::vector<Observation>& observations, const Vec3& q
 namespace {
 
 // Cost, J^T W J and J^T W e at a parameter point; IRLS weights give the Huber loss.
-double linearise(const std::vector<Observation>& observations, const Model& model, const Solution& s,
-                 Eigen::MatrixXd* jtj, Eigen::VectorXd* jte) {
+double linearise(const std::vector<Observation>& observations, const Model& model,
+                 const Solution& s, Eigen::MatrixXd* jtj, Eigen::VectorXd* jte) {
   const int parameters = model.parameters();
   if (jtj) jtj->setZero(parameters, parameters);
   if (jte) jte->setZero(parameters);
@@ -111,9 +118,11 @@ double linearise(const std::vector<Observation>& observations, const Model& mode
     const double e = o.m - expected.mean;
     cost += o.w * robust_cost(e, model.huber);
     if (!jtj) continue;
-    const double weight = o.w * (model.huber > 0 && std::abs(e) > model.huber ? model.huber / std::abs(e) : 1.0);
+    const double weight =
+        o.w * (model.huber > 0 && std::abs(e) > model.huber ? model.huber / std::abs(e) : 1.0);
     // d mu / d q = -10 n / ln 10 * (q - p) / |q - p|^2, times d f / d mu
-    const double scale = raw > kMinDistance ? -10.0 * s.n / std::numbers::ln10 / (dist * dist) : 0.0;
+    const double scale =
+        raw > kMinDistance ? -10.0 * s.n / std::numbers::ln10 / (dist * dist) : 0.0;
     for (int k = 0; k < model.d; ++k) row(k) = expected.slope * scale * diff(k);
     int next = model.d;
     if (model.fit_level) row(next++) = expected.slope;
@@ -137,7 +146,8 @@ Solution step(const Solution& s, const Eigen::VectorXd& delta, const Model& mode
   for (int k = 0; k < model.d; ++k) next.q(k) += delta(k);
   int index = model.d;
   if (model.fit_level) {
-    next.a = std::clamp(next.a + delta(index++), model.a0 - model.level_bound, model.a0 + model.level_bound);
+    next.a = std::clamp(next.a + delta(index++), model.a0 - model.level_bound,
+                        model.a0 + model.level_bound);
   }
   if (model.fit_exponent) next.n = std::clamp(next.n + delta(index), kMinExponent, kMaxExponent);
   return next;
@@ -145,8 +155,8 @@ Solution step(const Solution& s, const Eigen::VectorXd& delta, const Model& mode
 
 }  // namespace
 
-Solution levenberg_marquardt(const std::vector<Observation>& observations, const Model& model, Solution s,
-                             int max_iterations) {
+Solution levenberg_marquardt(const std::vector<Observation>& observations, const Model& model,
+                             Solution s, int max_iterations) {
   Eigen::MatrixXd jtj;
   Eigen::VectorXd jte;
   s.cost = linearise(observations, model, s, &jtj, &jte);
@@ -175,7 +185,8 @@ Solution levenberg_marquardt(const std::vector<Observation>& observations, const
 
 // Chunks are in the order the robot first visited them, so consecutive residuals are
 // neighbours along the path.
-ResidualStats residual_stats(const std::vector<Observation>& observations, const Model& model, const Solution& s) {
+ResidualStats residual_stats(const std::vector<Observation>& observations, const Model& model,
+                             const Solution& s) {
   std::vector<double> residuals;
   double weighted = 0.0, total = 0.0;
   for (const Observation& o : observations) {

@@ -23,10 +23,10 @@ struct Model {
   double a0 = 0.0;
   double n0 = 2.0;
   double level_bound = 15.0;
-  double prior_weight = 0.0;  // lambda of the prior term lambda (a - a0)^2, in cost units
-  double cutoff = -80.0;        // [dBm]
+  double prior_weight = 0.0;      // lambda of the prior term lambda (a - a0)^2, in cost units
+  double cutoff = -80.0;          // [dBm]
   double truncation_sigma = 0.0;  // shadowing sigma of the truncation model; 0: off
-  double height = 0.0;  // z of a 2D fit
+  double height = 0.0;            // z of a 2D fit
   double huber = 0.0;
   int parameters() const { return d + (fit_level ? 1 : 0) + (fit_exponent ? 1 : 0); }
 };
@@ -49,14 +49,16 @@ double distance(const Vec3& q, const Vec3& p, int d);
 
 // The level (and exponent) minimising the weighted squared residuals for a fixed q: a linear
 // least-squares problem in (a, n), which makes scoring a candidate one pass over the data.
-Solution closed_form(const std::vector<Observation>& observations, const Vec3& q, const Model& model);
+Solution closed_form(const std::vector<Observation>& observations, const Vec3& q,
+                     const Model& model);
 
 /// Levenberg-Marquardt from `s`; the result carries J^T W J for the covariance.
-Solution levenberg_marquardt(const std::vector<Observation>& observations, const Model& model, Solution s,
-                             int max_iterations);
+Solution levenberg_marquardt(const std::vector<Observation>& observations, const Model& model,
+                             Solution s, int max_iterations);
 
 // Chunks are in the order the robot first visited them, so consecutive residuals are
 // neighbours along the path.
-ResidualStats residual_stats(const std::vector<Observation>& observations, const Model& model, const Solution& s);
+ResidualStats residual_stats(const std::vector<Observation>& observations, const Model& model,
+                             const Solution& s);
 
 }  // namespace rigdesign::localize_detail

@@ -14,7 +14,8 @@ std::string to_string(LocalizeMethod method) {
 }
 
 std::optional<LocalizeMethod> parse_localize_method(const std::string& name) {
-  for (const LocalizeMethod method : {LocalizeMethod::wls, LocalizeMethod::nls, LocalizeMethod::map}) {
+  for (const LocalizeMethod method :
+       {LocalizeMethod::wls, LocalizeMethod::nls, LocalizeMethod::map}) {
     if (to_string(method) == name) return method;
   }
   return std::nullopt;
@@ -30,7 +31,8 @@ EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod m
   switch (method) {
     case LocalizeMethod::wls: {
       // Paper 4 as published: one point from the first-sphere linear system.
-      if (const auto solution = wls_multilateration(estimate.chunks, estimate.geometry.dimensions)) {
+      if (const auto solution =
+              wls_multilateration(estimate.chunks, estimate.geometry.dimensions)) {
         Hypothesis h;
         h.position = solution->position;
         h.covariance = solution->covariance;
@@ -41,14 +43,16 @@ EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod m
       break;
     }
     case LocalizeMethod::nls: {
-      const RangeFitResult fit = fit_ranges(estimate.chunks, estimate.geometry, params.path_loss, params.fit);
+      const RangeFitResult fit =
+          fit_ranges(estimate.chunks, estimate.geometry, params.path_loss, params.fit);
       estimate.hypotheses = fit.hypotheses;
       estimate.twin = fit.twin;
       estimate.sigma_db = fit.sigma_db;
       break;
     }
     case LocalizeMethod::map: {
-      ObjectMapResult result = object_map(estimate.chunks, estimate.geometry, params.path_loss, params.map);
+      ObjectMapResult result =
+          object_map(estimate.chunks, estimate.geometry, params.path_loss, params.map);
       estimate.hypotheses.push_back(result.estimate);
       estimate.map = std::move(result.map);
       break;
@@ -59,8 +63,8 @@ EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod m
 
 EmitterEstimate localize_emitter(const RssiLog& log, int emitter, LocalizeMethod method,
                                  const LocalizeParams& params) {
-  EmitterEstimate estimate = estimate_from_chunks(chunk_readings(log, emitter, params.path_loss, params.chunking),
-                                                  method, params);
+  EmitterEstimate estimate = estimate_from_chunks(
+      chunk_readings(log, emitter, params.path_loss, params.chunking), method, params);
   estimate.bssid = log.emitters.at(static_cast<std::size_t>(emitter));
   for (const RssiReading& reading : log.readings) {
     if (reading.emitter != emitter) continue;

@@ -26,7 +26,8 @@ namespace {
 
 // Algebraic (Kasa) circle fit in x, y: x^2 + y^2 = 2 c . p + (r^2 - |c|^2) in least squares,
 // count-weighted. Sets circular when the RMS radial residual is small against the radius.
-void fit_circle(const std::vector<Chunk>& chunks, const GeometryParams& params, GeometryAnalysis* analysis) {
+void fit_circle(const std::vector<Chunk>& chunks, const GeometryParams& params,
+                GeometryAnalysis* analysis) {
   Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
   Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
   for (const Chunk& chunk : chunks) {
@@ -43,11 +44,13 @@ void fit_circle(const std::vector<Chunk>& chunks, const GeometryParams& params, 
   double squares = 0.0, total = 0.0;
   for (const Chunk& chunk : chunks) {
     const double radial = std::hypot(chunk.position().x() - analysis->circle_centre.x(),
-                                     chunk.position().y() - analysis->circle_centre.y()) - analysis->circle_radius;
+                                     chunk.position().y() - analysis->circle_centre.y()) -
+                          analysis->circle_radius;
     squares += chunk.count * radial * radial;
     total += chunk.count;
   }
-  analysis->circular = std::sqrt(squares / total) < params.max_circle_residual * analysis->circle_radius;
+  analysis->circular =
+      std::sqrt(squares / total) < params.max_circle_residual * analysis->circle_radius;
 }
 
 }  // namespace

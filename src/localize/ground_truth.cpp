@@ -22,12 +22,15 @@ SourceLocation location_of(const YAML::Node& node, const std::string& file) {
 
 std::vector<EmitterTruth> parse_emitter_truth(const std::string& text, const std::string& file) {
   const auto lines = localize_detail::content_lines(text);
-  if (lines.empty()) throw InputError(Diagnostic{{file, 0, 0}, "data", "is empty", std::string("a header ") + kHeader});
+  if (lines.empty())
+    throw InputError(
+        Diagnostic{{file, 0, 0}, "data", "is empty", std::string("a header ") + kHeader});
   const auto header = localize_detail::split_fields(lines.front().text, ',');
   const std::array<std::string, 4> names = {"bssid", "x", "y", "z"};
   std::array<std::size_t, 4> index{};
   for (std::size_t i = 0; i < names.size(); ++i) {
-    index[i] = localize_detail::require_column(header, names[i], file, lines.front().number, kHeader);
+    index[i] =
+        localize_detail::require_column(header, names[i], file, lines.front().number, kHeader);
   }
   std::vector<EmitterTruth> truth;
   for (std::size_t l = 1; l < lines.size(); ++l) {
@@ -35,8 +38,11 @@ std::vector<EmitterTruth> parse_emitter_truth(const std::string& text, const std
     EmitterTruth item;
     for (std::size_t i = 0; i < names.size(); ++i) {
       if (index[i] >= fields.size()) {
-        throw InputError(Diagnostic{{file, lines[l].number, static_cast<int>(lines[l].text.size()) + 1}, names[i],
-                                    "is missing", std::string("one field per header column (") + kHeader + ")"});
+        throw InputError(
+            Diagnostic{{file, lines[l].number, static_cast<int>(lines[l].text.size()) + 1},
+                       names[i],
+                       "is missing",
+                       std::string("one field per header column (") + kHeader + ")"});
       }
       const auto& f = fields[index[i]];
       if (i == 0) {
@@ -58,8 +64,9 @@ std::vector<EmitterTruth> read_emitter_truth(const std::string& path) {
 std::string to_emitter_truth_csv(const std::vector<EmitterTruth>& truth) {
   std::string text = std::string(kHeader) + "\n";
   for (const EmitterTruth& item : truth) {
-    text += item.bssid + "," + format_number(item.position.x(), 10) + "," + format_number(item.position.y(), 10) +
-            "," + format_number(item.position.z(), 10) + "\n";
+    text += item.bssid + "," + format_number(item.position.x(), 10) + "," +
+            format_number(item.position.y(), 10) + "," + format_number(item.position.z(), 10) +
+            "\n";
   }
   return text;
 }
@@ -70,11 +77,13 @@ std::vector<Artifact> read_artifacts(const std::string& path) {
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& error) {
-    throw InputError(Diagnostic{{path, error.mark.line + 1, error.mark.column + 1}, "document", error.msg, "JSON"});
+    throw InputError(Diagnostic{
+        {path, error.mark.line + 1, error.mark.column + 1}, "document", error.msg, "JSON"});
   }
   const YAML::Node list = root["artifacts"];
   if (!list || !list.IsSequence()) {
-    throw InputError(Diagnostic{{path, 1, 1}, "artifacts", "is missing or not a list", "{\"artifacts\": [...]}"});
+    throw InputError(Diagnostic{
+        {path, 1, 1}, "artifacts", "is missing or not a list", "{\"artifacts\": [...]}"});
   }
   std::vector<Artifact> artifacts;
   for (std::size_t i = 0; i < list.size(); ++i) {
@@ -84,17 +93,21 @@ std::vector<Artifact> read_artifacts(const std::string& path) {
     const auto scalar = [&](const char* key) {
       const YAML::Node node = item[key];
       if (!node || !node.IsScalar()) {
-        throw InputError(Diagnostic{location_of(item, path), prefix + key, "is missing", "a value"});
+        throw InputError(
+            Diagnostic{location_of(item, path), prefix + key, "is missing", "a value"});
       }
       return node;
     };
     try {
       artifact.id = scalar("id").as<int>();
       artifact.type = scalar("type").as<std::string>();
-      artifact.position = {scalar("x").as<double>(), scalar("y").as<double>(), scalar("z").as<double>()};
+      artifact.position = {scalar("x").as<double>(), scalar("y").as<double>(),
+                           scalar("z").as<double>()};
     } catch (const YAML::BadConversion& error) {
-      throw InputError(Diagnostic{{path, error.mark.line + 1, error.mark.column + 1}, prefix + "x/y/z/id",
-                                  "is not a number", "numbers for id, x, y, z"});
+      throw InputError(Diagnostic{{path, error.mark.line + 1, error.mark.column + 1},
+                                  prefix + "x/y/z/id",
+                                  "is not a number",
+                                  "numbers for id, x, y, z"});
     }
     artifacts.push_back(artifact);
   }

@@ -11,9 +11,11 @@ namespace {
 
 // Errors of the running estimate after each reading (wls: O(1) per reading) or at
 // checkpoints (nls, map: a full solve on the chunks so far).
-std::vector<std::pair<int, double>> running_errors(const RssiLog& log, int emitter, const Vec3& truth,
+std::vector<std::pair<int, double>> running_errors(const RssiLog& log, int emitter,
+                                                   const Vec3& truth,
                                                    const EmitterEstimate& final_estimate,
-                                                   const LocalizeParams& params, const KpiParams& kpi) {
+                                                   const LocalizeParams& params,
+                                                   const KpiParams& kpi) {
   const int dimensions = final_estimate.geometry.dimensions;
   std::vector<std::pair<int, double>> errors;
   if (final_estimate.method == LocalizeMethod::wls) {
@@ -37,13 +39,16 @@ std::vector<std::pair<int, double>> running_errors(const RssiLog& log, int emitt
     if (reading.emitter != emitter) continue;
     ++count;
     if (reading.rssi_dbm >= params.path_loss.cutoff_dbm) {
-      accumulator.add(reading.position, range_from_rssi(reading.rssi_dbm, params.path_loss), reading.rssi_dbm);
+      accumulator.add(reading.position, range_from_rssi(reading.rssi_dbm, params.path_loss),
+                      reading.rssi_dbm);
     }
     if (count * checkpoints < next * total) continue;
     ++next;
-    const EmitterEstimate estimate = estimate_from_chunks(accumulator.chunks(), final_estimate.method, params);
+    const EmitterEstimate estimate =
+        estimate_from_chunks(accumulator.chunks(), final_estimate.method, params);
     if (!estimate.hypotheses.empty()) {
-      errors.emplace_back(count, position_error(estimate.hypotheses.front().position, truth, dimensions));
+      errors.emplace_back(count,
+                          position_error(estimate.hypotheses.front().position, truth, dimensions));
     }
   }
   return errors;
@@ -93,10 +98,12 @@ EmitterKpis evaluate_emitter(const RssiLog& log, int emitter, const Vec3& truth,
   if (final_estimate.hypotheses.empty()) {
     kpis.final_error = kpis.nearest_hypothesis_error = std::numeric_limits<double>::infinity();
   } else {
-    kpis.final_error = position_error(final_estimate.hypotheses.front().position, truth, dimensions);
+    kpis.final_error =
+        position_error(final_estimate.hypotheses.front().position, truth, dimensions);
     kpis.nearest_hypothesis_error = kpis.final_error;
     for (const Hypothesis& h : final_estimate.hypotheses) {
-      kpis.nearest_hypothesis_error = std::min(kpis.nearest_hypothesis_error, position_error(h.position, truth, dimensions));
+      kpis.nearest_hypothesis_error =
+          std::min(kpis.nearest_hypothesis_error, position_error(h.position, truth, dimensions));
     }
   }
   kpis.detected = kpis.final_error <= kpi.acceptable_error;

@@ -44,7 +44,8 @@ Layout corner_layout(const ScenarioParams& p) {
   layout.description = "an L-shaped corridor; the phone is around the corner";
   layout.waypoints = {{-20, 0}, {0, 0}, {0, 20}};
   layout.phone = {-0.8, 10.0};
-  layout.walls = {{{-30, 1.5}, {-1.5, 1.5}, p.wall_attenuation_db}, {{-1.5, 1.5}, {-1.5, 30}, p.wall_attenuation_db}};
+  layout.walls = {{{-30, 1.5}, {-1.5, 1.5}, p.wall_attenuation_db},
+                  {{-1.5, 1.5}, {-1.5, 30}, p.wall_attenuation_db}};
   return layout;
 }
 
@@ -52,12 +53,14 @@ Layout corner_layout(const ScenarioParams& p) {
 // along the room's far side.
 Layout room_layout(const ScenarioParams& p) {
   Layout layout;
-  layout.description = "a closed room beside the corridor; the robot passes its door and turns along its side";
+  layout.description =
+      "a closed room beside the corridor; the robot passes its door and turns along its side";
   layout.waypoints = {{-15, 0}, {10, 0}, {10, 12}};
   layout.phone = {1.0, 5.0};
   const double wall = p.wall_attenuation_db;
-  layout.walls = {{{-3, 2}, {-0.5, 2}, wall}, {{-0.5, 2}, {0.5, 2}, p.door_attenuation_db}, {{0.5, 2}, {3, 2}, wall},
-                  {{3, 2}, {3, 8}, wall},     {{3, 8}, {-3, 8}, wall},                        {{-3, 8}, {-3, 2}, wall}};
+  layout.walls = {{{-3, 2}, {-0.5, 2}, wall}, {{-0.5, 2}, {0.5, 2}, p.door_attenuation_db},
+                  {{0.5, 2}, {3, 2}, wall},   {{3, 2}, {3, 8}, wall},
+                  {{3, 8}, {-3, 8}, wall},    {{-3, 8}, {-3, 2}, wall}};
   return layout;
 }
 
@@ -106,7 +109,9 @@ Scenario make_scenario(const std::string& name, const ScenarioParams& params) {
   } else if (name == "hallway") {
     layout = hallway_layout();
   } else {
-    throw InputError(Diagnostic{{"(command line)", 0, 0}, "--scenario", "unknown scenario '" + name + "'",
+    throw InputError(Diagnostic{{"(command line)", 0, 0},
+                                "--scenario",
+                                "unknown scenario '" + name + "'",
                                 join(scenario_names(), ", ")});
   }
   Scenario scenario;
@@ -117,7 +122,8 @@ Scenario make_scenario(const std::string& name, const ScenarioParams& params) {
   scenario.truth.push_back({kPhoneBssid, phone});
   scenario.log.source = "scenario " + name + " seed " + std::to_string(params.seed);
   scenario.log.emitters.push_back(kPhoneBssid);
-  for (const Vec2& w : layout.waypoints) scenario.path.emplace_back(w.x(), w.y(), params.antenna_height);
+  for (const Vec2& w : layout.waypoints)
+    scenario.path.emplace_back(w.x(), w.y(), params.antenna_height);
 
   std::mt19937_64 random(params.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -134,7 +140,8 @@ Scenario make_scenario(const std::string& name, const ScenarioParams& params) {
       const Vec3 robot = from + (to - from) * (s / length);
       // Gudmundson's model: AR(1) along the travelled distance keeps the marginal sigma.
       shadowing = rho * shadowing + std::sqrt(1 - rho * rho) * params.shadowing_db * normal(random);
-      const double rssi = rssi_at_range((phone - robot).norm(), truth_model) - wall_loss_db(scenario.walls, robot, phone) + shadowing;
+      const double rssi = rssi_at_range((phone - robot).norm(), truth_model) -
+                          wall_loss_db(scenario.walls, robot, phone) + shadowing;
       Vec3 logged = robot;
       logged.x() += params.position_noise * normal(random);
       logged.y() += params.position_noise * normal(random);

@@ -8,7 +8,8 @@ namespace rigdesign {
 LogKind log_kind_of(const std::string& text, const std::string& file) {
   const auto lines = localize_detail::content_lines(text);
   if (lines.empty()) {
-    throw InputError(Diagnostic{{file, 0, 0}, "data", "is empty", "an RSSI log (t,x,y,z,bssid,rssi) or a CO2 log"});
+    throw InputError(Diagnostic{
+        {file, 0, 0}, "data", "is empty", "an RSSI log (t,x,y,z,bssid,rssi) or a CO2 log"});
   }
   const std::string& first = lines.front().text;
   if (first.find(',') == std::string::npos) return LogKind::co2;  // the untimed x y co2_ppm form
@@ -16,11 +17,14 @@ LogKind log_kind_of(const std::string& text, const std::string& file) {
     if (field.text == "rssi" || field.text == "bssid") return LogKind::rssi;
     if (field.text == "co2_ppm") return LogKind::co2;
   }
-  throw InputError(Diagnostic{{file, lines.front().number, 1}, "header",
+  throw InputError(Diagnostic{{file, lines.front().number, 1},
+                              "header",
                               "names neither an rssi nor a co2_ppm column",
                               "t,x,y,z,bssid,rssi or t,x,y,z,co2_ppm, or lines 'x y co2_ppm'"});
 }
 
-std::string read_log_text(const std::string& path) { return localize_detail::read_text_file(path); }
+std::string read_log_text(const std::string& path) {
+  return localize_detail::read_text_file(path);
+}
 
 }  // namespace rigdesign

@@ -17,7 +17,8 @@ class RingProfile {
   explicit RingProfile(double floor) : log_floor_(std::log(floor)) {
     for (int i = 0; i <= kTableSize; ++i) {
       const double x = kCut * i / kTableSize;
-      table_[static_cast<std::size_t>(i)] = std::log(floor + (1 - floor) * std::exp(-x)) - log_floor_;
+      table_[static_cast<std::size_t>(i)] =
+          std::log(floor + (1 - floor) * std::exp(-x)) - log_floor_;
     }
   }
   /// log(mask) - log(floor) at x = (distance off the ring)^2 / (2 sigma^2) < kCut.
@@ -89,7 +90,8 @@ ObjectMapResult object_map(const std::vector<Chunk>& chunks, const GeometryAnaly
     return Vec2(map.origin.x() + (i + 0.5) * map.cell, map.origin.y() + (j + 0.5) * map.cell);
   };
   Hypothesis& estimate = result.estimate;
-  estimate.position << centre(best_index % map.width, best_index / map.width), geometry.centroid.z();
+  estimate.position << centre(best_index % map.width, best_index / map.width),
+      geometry.centroid.z();
   estimate.rssi_at_1m_dbm = path_loss.rssi_at_1m_dbm;
   estimate.exponent = path_loss.exponent;
   estimate.cost = -peak;

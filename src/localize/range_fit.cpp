@@ -20,7 +20,7 @@ using localize_detail::residual_stats;
 using localize_detail::ResidualStats;
 using localize_detail::Solution;
 
-constexpr int kGridStarts = 4;      // best local minima of the grid that seed the search
+constexpr int kGridStarts = 4;       // best local minima of the grid that seed the search
 constexpr double kMinSigma2 = 1e-6;  // [dB^2]
 
 std::vector<Observation> observations_of(const std::vector<Chunk>& chunks) {
@@ -29,7 +29,8 @@ std::vector<Observation> observations_of(const std::vector<Chunk>& chunks) {
   const double mean = total / static_cast<double>(chunks.size());
   std::vector<Observation> observations;
   observations.reserve(chunks.size());
-  for (const Chunk& chunk : chunks) observations.push_back({chunk.position(), chunk.mean_rssi(), chunk.count / mean});
+  for (const Chunk& chunk : chunks)
+    observations.push_back({chunk.position(), chunk.mean_rssi(), chunk.count / mean});
   return observations;
 }
 
@@ -40,7 +41,8 @@ std::vector<Chunk> coarsen(const std::vector<Chunk>& chunks, double size) {
   for (const Chunk& chunk : chunks) {
     const Vec3 p = chunk.position();
     const long long key = (static_cast<long long>(std::floor(p.x() / size)) * 1000003LL +
-                           static_cast<long long>(std::floor(p.y() / size))) * 1000003LL +
+                           static_cast<long long>(std::floor(p.y() / size))) *
+                              1000003LL +
                           static_cast<long long>(std::floor(p.z() / size));
     const auto [it, inserted] = index_of.try_emplace(key, merged.size());
     if (inserted) merged.emplace_back();
@@ -74,7 +76,9 @@ std::vector<Vec3> grid_starts(const std::vector<Observation>& coarse, const Mode
     return c;
   };
   std::vector<double> cost(static_cast<std::size_t>(n * n * nz));
-  const auto at = [&](int i, int j, int k) -> double& { return cost[static_cast<std::size_t>((k * n + j) * n + i)]; };
+  const auto at = [&](int i, int j, int k) -> double& {
+    return cost[static_cast<std::size_t>((k * n + j) * n + i)];
+  };
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) at(i, j, k) = closed_form(coarse, centre(i, j, k), model).cost;
@@ -87,15 +91,18 @@ std::vector<Vec3> grid_starts(const std::vector<Observation>& coarse, const Mode
           for (int dj = -1; dj <= 1 && minimum; ++dj)
             for (int di = -1; di <= 1 && minimum; ++di) {
               const int ii = i + di, jj = j + dj, kk = k + dk;
-              if ((di || dj || dk) && ii >= 0 && jj >= 0 && kk >= 0 && ii < n && jj < n && kk < nz) {
+              if ((di || dj || dk) && ii >= 0 && jj >= 0 && kk >= 0 && ii < n && jj < n &&
+                  kk < nz) {
                 minimum = at(i, j, k) <= at(ii, jj, kk);
               }
             }
         if (minimum) minima.emplace_back(at(i, j, k), centre(i, j, k));
       }
-  std::sort(minima.begin(), minima.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(minima.begin(), minima.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Vec3> starts;
-  for (std::size_t i = 0; i < minima.size() && static_cast<int>(i) < kGridStarts; ++i) starts.push_back(minima[i].second);
+  for (std::size_t i = 0; i < minima.size() && static_cast<int>(i) < kGridStarts; ++i)
+    starts.push_back(minima[i].second);
   return starts;
 }
 
@@ -104,7 +111,8 @@ std::vector<Solution> distinct(const std::vector<Solution>& sorted) {
   constexpr double kSame = 0.5;  // [m]
   std::vector<Solution> kept;
   for (const Solution& s : sorted) {
-    if (std::none_of(kept.begin(), kept.end(), [&](const Solution& k) { return (k.q - s.q).norm() < kSame; })) {
+    if (std::none_of(kept.begin(), kept.end(),
+                     [&](const Solution& k) { return (k.q - s.q).norm() < kSame; })) {
       kept.push_back(s);
     }
   }
@@ -112,13 +120,16 @@ std::vector<Solution> distinct(const std::vector<Solution>& sorted) {
 }
 
 // LM from every start, best first.
-std::vector<Solution> solve_from(const std::vector<Vec3>& starts, const std::vector<Observation>& observations,
-                                 const Model& model, int max_iterations) {
+std::vector<Solution> solve_from(const std::vector<Vec3>& starts,
+                                 const std::vector<Observation>& observations, const Model& model,
+                                 int max_iterations) {
   std::vector<Solution> solutions;
   for (const Vec3& q : starts) {
-    solutions.push_back(levenberg_marquardt(observations, model, closed_form(observations, q, model), max_iterations));
+    solutions.push_back(levenberg_marquardt(observations, model,
+                                            closed_form(observations, q, model), max_iterations));
   }
-  std::sort(solutions.begin(), solutions.end(), [](const Solution& a, const Solution& b) { return a.cost < b.cost; });
+  std::sort(solutions.begin(), solutions.end(),
+            [](const Solution& a, const Solution& b) { return a.cost < b.cost; });
   return solutions;
 }
 
@@ -128,7 +139,8 @@ Hypothesis to_hypothesis(const Solution& s, const Model& model, double sigma2) {
   h.rssi_at_1m_dbm = s.a;
   h.exponent = s.n;
   h.cost = s.cost;
-  const Eigen::MatrixXd covariance = sigma2 * s.information.completeOrthogonalDecomposition().pseudoInverse();
+  const Eigen::MatrixXd covariance =
+      sigma2 * s.information.completeOrthogonalDecomposition().pseudoInverse();
   h.covariance.topLeftCorner(model.d, model.d) = covariance.topLeftCorner(model.d, model.d);
   return h;
 }
@@ -158,7 +170,8 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
   {
     std::vector<double> ranges;
     for (const Chunk& chunk : merged) ranges.push_back(chunk.mean_range());
-    std::nth_element(ranges.begin(), ranges.begin() + static_cast<long>(ranges.size() / 2), ranges.end());
+    std::nth_element(ranges.begin(), ranges.begin() + static_cast<long>(ranges.size() / 2),
+                     ranges.end());
     median_range = ranges[ranges.size() / 2];
   }
   if (const auto linear = wls_multilateration(chunks, model.d, WlsReference::weighted_mean)) {
@@ -167,11 +180,14 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
     starts.push_back(q);
     starts.push_back(geometry.mirror(q));
   }
-  for (const Vec3& q : grid_starts(coarse, model, params, std::max(params.grid_margin, median_range))) starts.push_back(q);
+  for (const Vec3& q :
+       grid_starts(coarse, model, params, std::max(params.grid_margin, median_range)))
+    starts.push_back(q);
 
   // Pass 1 on the merged chunks, as if independent and without prior: finds the minima
   // cheaply; the residuals of all chunks at the best one measure the correlation.
-  const std::vector<Solution> first = distinct(solve_from(starts, coarse, model, params.max_iterations));
+  const std::vector<Solution> first =
+      distinct(solve_from(starts, coarse, model, params.max_iterations));
   std::vector<Observation> weighted = observations;
   model.cutoff = path_loss.cutoff_dbm;
   if (params.correlated_shadowing || params.level_prior_db > 0 || params.model_cutoff) {
@@ -181,7 +197,8 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
       const double share = (1.0 - stats.correlation) / (1.0 + stats.correlation);
       for (Observation& o : weighted) o.w *= share;
     }
-    if (params.level_prior_db > 0) model.prior_weight = stats.variance / (params.level_prior_db * params.level_prior_db);
+    if (params.level_prior_db > 0)
+      model.prior_weight = stats.variance / (params.level_prior_db * params.level_prior_db);
     if (params.model_cutoff) model.truncation_sigma = std::sqrt(stats.variance);
   }
   // Pass 2 from pass 1's minima: they move little when the weights change.
@@ -206,7 +223,8 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
   const double sigma2 = std::max(best.cost / dof, kMinSigma2);
   result.sigma_db = std::sqrt(sigma2);
   result.hypotheses.push_back(to_hypothesis(best, model, sigma2));
-  std::sort(solutions.begin() + 1, solutions.end(), [](const Solution& a, const Solution& b) { return a.cost < b.cost; });
+  std::sort(solutions.begin() + 1, solutions.end(),
+            [](const Solution& a, const Solution& b) { return a.cost < b.cost; });
   for (std::size_t i = 1; i < solutions.size(); ++i) {
     const Solution& other = solutions[i];
     if ((other.q - best.q).norm() < params.min_twin_separation) continue;

@@ -42,15 +42,18 @@ std::optional<WlsSolution> WlsSums::solve(int dimensions, WlsReference reference
     k_ref = p_ref.squaredNorm() - r * r;
   }
   // Normal equations of the rows 2 (p_j - p_ref)^T q = k_j - k_ref, expanded into the sums.
-  const Mat3 H3 = 4.0 * (wpp_ - wp_ * p_ref.transpose() - p_ref * wp_.transpose() + w_ * p_ref * p_ref.transpose());
+  const Mat3 H3 = 4.0 * (wpp_ - wp_ * p_ref.transpose() - p_ref * wp_.transpose() +
+                         w_ * p_ref * p_ref.transpose());
   const Vec3 g3 = 2.0 * (wpk_ - k_ref * wp_ - wk_ * p_ref + k_ref * w_ * p_ref);
   const double bb = wkk_ - 2.0 * k_ref * wk_ + k_ref * k_ref * w_;
   const Eigen::MatrixXd H = H3.topLeftCorner(d, d);
   const Eigen::VectorXd g = g3.topRows(d);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(H);
   const double largest = eigen.eigenvalues().maxCoeff();
-  if (!(largest > 0) || eigen.eigenvalues().minCoeff() < kSingularRatio * largest) return std::nullopt;
-  const Eigen::MatrixXd H_inverse = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
+  if (!(largest > 0) || eigen.eigenvalues().minCoeff() < kSingularRatio * largest)
+    return std::nullopt;
+  const Eigen::MatrixXd H_inverse = eigen.eigenvectors() *
+                                    eigen.eigenvalues().cwiseInverse().asDiagonal() *
                                     eigen.eigenvectors().transpose();
   const Eigen::VectorXd q = H_inverse * g;
   // Residual sum of squares of the weighted rows, for sigma^2 (rows: one per chunk, minus the
@@ -73,7 +76,8 @@ bool IncrementalWls::add(const Vec3& position, double rssi_dbm) {
   if (!sums_) sums_.emplace(position);
   // The chunk's old contribution out, the reading in, the new contribution back: O(1).
   Chunk previous;
-  const std::size_t index = accumulator_.add(position, range_from_rssi(rssi_dbm, path_loss_), rssi_dbm, &previous);
+  const std::size_t index =
+      accumulator_.add(position, range_from_rssi(rssi_dbm, path_loss_), rssi_dbm, &previous);
   if (previous.count > 0) sums_->add(previous, -1.0);
   sums_->add(accumulator_.chunks()[index], 1.0);
   return true;

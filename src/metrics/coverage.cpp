@@ -186,8 +186,8 @@ RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
       remaining[a].complete = united.complete_share();
       remaining[a].floor = united.floor_share();
     }
-    result.without_each.push_back({mounts[lost].mount->id, summarize(remaining, complete),
-                                   summarize(remaining, floor)});
+    result.without_each.push_back(
+        {mounts[lost].mount->id, summarize(remaining, complete), summarize(remaining, floor)});
   }
   return result;
 }

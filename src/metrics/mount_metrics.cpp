@@ -4,10 +4,12 @@
 
 namespace rigdesign {
 
-double ray_spacing(double distance, double angular_step) { return distance * std::tan(angular_step); }
+double ray_spacing(double distance, double angular_step) {
+  return distance * std::tan(angular_step);
+}
 
-MountMetrics compute_mount_metrics(const Mount& mount, const Sensor& sensor,
-                                   const SensorMode& mode, double distance) {
+MountMetrics compute_mount_metrics(const Mount& mount, const Sensor& sensor, const SensorMode& mode,
+                                   double distance) {
   MountMetrics metrics;
   metrics.mount_id = mount.id;
   metrics.sensor_id = sensor.id;

@@ -23,7 +23,9 @@ RequirementResult named(std::string id, std::string title, std::string field, st
   return result;
 }
 
-Verdict verdict(bool pass) { return pass ? Verdict::pass : Verdict::fail; }
+Verdict verdict(bool pass) {
+  return pass ? Verdict::pass : Verdict::fail;
+}
 
 // R3's rate, R4 and R5 each bound F from below; each is reported on its own so the binding
 // one is visible.
@@ -41,20 +43,21 @@ RequirementResult minimum_frequency(RequirementResult result, double required,
 void check_body(const Rig& rig, const Requirements& requirements,
                 std::vector<RequirementResult>& results) {
   if (!requirements.body_radius || !requirements.body_height) return;
-  RequirementResult result =
-      named("R1", "body size", "body", "body", "m", requirements.body_where);
+  RequirementResult result = named("R1", "body size", "body", "body", "m", requirements.body_where);
   result.verdict =
       verdict(std::abs(rig.body.radius - *requirements.body_radius) <= kBodyTolerance &&
               std::abs(rig.body.height - *requirements.body_height) <= kBodyTolerance);
-  result.explanation = "rig body r = " + format_number(rig.body.radius) +
-                       " m, h = " + format_number(rig.body.height) +
-                       " m must match the application's r = " +
-                       format_number(*requirements.body_radius) +
-                       " m, h = " + format_number(*requirements.body_height) + " m";
+  result.explanation =
+      "rig body r = " + format_number(rig.body.radius) +
+      " m, h = " + format_number(rig.body.height) +
+      " m must match the application's r = " + format_number(*requirements.body_radius) +
+      " m, h = " + format_number(*requirements.body_height) + " m";
   results.push_back(std::move(result));
 }
 
-std::string percent(double share) { return format_number(share * 100, 4) + " %"; }
+std::string percent(double share) {
+  return format_number(share * 100, 4) + " %";
+}
 
 void check_sectors(const Requirements& requirements, const RigCoverage* coverage,
                    std::vector<RequirementResult>& results) {
@@ -72,14 +75,14 @@ void check_sectors(const Requirements& requirements, const RigCoverage* coverage
     result.required = sector.min_complete_coverage;
     result.actual = measured.complete.min;
     result.verdict = verdict(measured.pass);
-    result.explanation =
-        "over " + format_number(rad_to_deg(sector.from)) + ".." +
-        format_number(rad_to_deg(sector.to)) + " deg: SC complete min " +
-        percent(measured.complete.min) + " (at " +
-        format_number(rad_to_deg(measured.complete.min_theta), 4) + " deg) >= " +
-        percent(sector.min_complete_coverage) + ", SC floor min " + percent(measured.floor.min) +
-        " (at " + format_number(rad_to_deg(measured.floor.min_theta), 4) + " deg) >= " +
-        percent(sector.min_floor_coverage);
+    result.explanation = "over " + format_number(rad_to_deg(sector.from)) + ".." +
+                         format_number(rad_to_deg(sector.to)) + " deg: SC complete min " +
+                         percent(measured.complete.min) + " (at " +
+                         format_number(rad_to_deg(measured.complete.min_theta), 4) +
+                         " deg) >= " + percent(sector.min_complete_coverage) + ", SC floor min " +
+                         percent(measured.floor.min) + " (at " +
+                         format_number(rad_to_deg(measured.floor.min_theta), 4) +
+                         " deg) >= " + percent(sector.min_floor_coverage);
     results.push_back(std::move(result));
   }
 }
@@ -129,9 +132,10 @@ void check_resolution(const ResultantMetrics& metrics, const Requirements& requi
   result.actual = metrics.point_spacing.value;
   result.verdict = verdict(metrics.point_spacing.value <= *requirements.smallest_obstacle);
   result.limiting_mounts = metrics.point_spacing.mounts;
-  result.explanation = "ray spacing R at the distance of interest must not exceed the smallest "
-                       "obstacle, " +
-                       format_number(*requirements.smallest_obstacle * 1000, 4) + " mm";
+  result.explanation =
+      "ray spacing R at the distance of interest must not exceed the smallest "
+      "obstacle, " +
+      format_number(*requirements.smallest_obstacle * 1000, 4) + " mm";
   results.push_back(std::move(result));
 }
 

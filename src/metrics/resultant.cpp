@@ -14,8 +14,8 @@ constexpr double kTieTolerance = 1e-9;
 Limiting limiting(const std::vector<MountMetrics>& mounts, double MountMetrics::*field,
                   bool smallest) {
   Limiting result;
-  result.value = smallest ? std::numeric_limits<double>::infinity()
-                          : -std::numeric_limits<double>::infinity();
+  result.value =
+      smallest ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
   for (const MountMetrics& mount : mounts) {
     const double value = mount.*field;
     if (smallest ? value < result.value : value > result.value) result.value = value;

@@ -45,10 +45,12 @@ void draw_to_file(const std::string& path, int width, int height,
   } else {
     cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
     paint(surface, draw);
-    const cairo_status_t status = cairo_surface_write_to_png_stream(surface, append_to_string, &bytes);
+    const cairo_status_t status =
+        cairo_surface_write_to_png_stream(surface, append_to_string, &bytes);
     cairo_surface_destroy(surface);
     if (status != CAIRO_STATUS_SUCCESS) {
-      throw std::runtime_error(std::string("PNG encoding failed: ") + cairo_status_to_string(status));
+      throw std::runtime_error(std::string("PNG encoding failed: ") +
+                               cairo_status_to_string(status));
     }
   }
   write_file_atomically(path, bytes);

@@ -10,8 +10,8 @@
 namespace rigdesign {
 namespace {
 
-using render::draw_to_file;
 using render::draw_text;
+using render::draw_to_file;
 using render::set_colour;
 
 constexpr int kTitleHeight = 28;  // [px]
@@ -57,7 +57,8 @@ void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int 
       for (int x = 0; x < window.width; ++x) {
         const bool remembered = !frame.remembered.empty() && frame.remembered[window.index(x, y)];
         set_colour(cairo, remembered ? kRemembered : colour_of(grid.at(x, y)));
-        cairo_rectangle(cairo, x * scale, kTitleHeight + (window.height - 1 - y) * scale, scale, scale);
+        cairo_rectangle(cairo, x * scale, kTitleHeight + (window.height - 1 - y) * scale, scale,
+                        scale);
         cairo_fill(cairo);
       }
     }
@@ -70,7 +71,8 @@ void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int 
       } else {
         // Canvas angles run clockwise (y down), so world angles change sign.
         cairo_move_to(cairo, apex.x(), apex.y());
-        cairo_arc(cairo, apex.x(), apex.y(), radius, -(fov.yaw + fov.half_angle), -(fov.yaw - fov.half_angle));
+        cairo_arc(cairo, apex.x(), apex.y(), radius, -(fov.yaw + fov.half_angle),
+                  -(fov.yaw - fov.half_angle));
         cairo_close_path(cairo);
       }
       cairo_fill(cairo);
@@ -85,7 +87,8 @@ void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int 
       cairo_close_path(cairo);
       cairo_stroke(cairo);
     }
-    const auto polyline = [&](const std::vector<Vec2>& points, const Rgb& colour, double line_width) {
+    const auto polyline = [&](const std::vector<Vec2>& points, const Rgb& colour,
+                              double line_width) {
       if (points.size() < 2) return;
       set_colour(cairo, colour);
       cairo_set_line_width(cairo, line_width);
@@ -97,12 +100,14 @@ void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int 
     polyline(frame.path, kPath, 2.5);
     const Vec2 robot = px(frame.robot);
     set_colour(cairo, frame.collided ? kCollision : kBodyColour, 0.55);
-    cairo_arc(cairo, robot.x(), robot.y(), frame.robot_radius * pixels_per_metre, 0, 2 * std::numbers::pi);
+    cairo_arc(cairo, robot.x(), robot.y(), frame.robot_radius * pixels_per_metre, 0,
+              2 * std::numbers::pi);
     cairo_fill_preserve(cairo);
     set_colour(cairo, kInkColour);
     cairo_set_line_width(cairo, 1.5);
     cairo_stroke(cairo);
-    const Vec2 nose = px(frame.robot + frame.robot_radius * Vec2(std::cos(frame.yaw), std::sin(frame.yaw)));
+    const Vec2 nose =
+        px(frame.robot + frame.robot_radius * Vec2(std::cos(frame.yaw), std::sin(frame.yaw)));
     cairo_move_to(cairo, robot.x(), robot.y());
     cairo_line_to(cairo, nose.x(), nose.y());
     cairo_stroke(cairo);

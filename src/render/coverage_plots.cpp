@@ -153,8 +153,8 @@ void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
     }
     y += 40;
     set_colour(cairo, kInkColour);
-    draw_text(cairo, "complete: min " + format_number(coverage.complete.min * 100, 3) + " %", legend_x,
-              y, 13);
+    draw_text(cairo, "complete: min " + format_number(coverage.complete.min * 100, 3) + " %",
+              legend_x, y, 13);
     draw_text(cairo, "  mean " + format_number(coverage.complete.mean * 100, 3) + " %", legend_x,
               y += 18, 13);
     draw_text(cairo, "floor: min " + format_number(coverage.floor.min * 100, 3) + " %", legend_x,
@@ -173,7 +173,8 @@ void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
     const double radius = size * 0.36;
     // Robot seen from above: theta = 0 (x, forward) up, theta = 90 deg (y, left) to the left.
     const auto at = [&](double theta, double share) {
-      return std::pair{cx - radius * share * std::sin(theta), cy - radius * share * std::cos(theta)};
+      return std::pair{cx - radius * share * std::sin(theta),
+                       cy - radius * share * std::cos(theta)};
     };
     set_colour(cairo, kInkColour);
     draw_text(cairo, title(coverage, rig_name), cx, 32, 19, Anchor::centre, true);
@@ -183,7 +184,8 @@ void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
       cairo_arc(cairo, cx, cy, radius * percent / 100.0, 0, 2 * std::numbers::pi);
       cairo_stroke(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, std::to_string(percent) + " %", cx + 4, cy - radius * percent / 100.0 - 4, 11);
+      draw_text(cairo, std::to_string(percent) + " %", cx + 4, cy - radius * percent / 100.0 - 4,
+                11);
     }
     for (int degrees = 0; degrees < 360; degrees += 45) {
       const auto [x, y] = at(deg_to_rad(degrees), 1.0);
@@ -201,13 +203,15 @@ void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
     const double dash[] = {7.0, 5.0};
     cairo_set_line_width(cairo, 2);
     for (const SectorCoverage& sector : coverage.sectors) {
-      for (const auto& [share, colour] : {std::pair{sector.sector.min_complete_coverage, kCompleteColour},
-                                          std::pair{sector.sector.min_floor_coverage, kFloorColour}}) {
+      for (const auto& [share, colour] :
+           {std::pair{sector.sector.min_complete_coverage, kCompleteColour},
+            std::pair{sector.sector.min_floor_coverage, kFloorColour}}) {
         set_colour(cairo, colour);
         cairo_set_dash(cairo, dash, 2, 0);
         const int segments = 48;
         for (int i = 0; i <= segments; ++i) {
-          const double theta = sector.sector.from + (sector.sector.to - sector.sector.from) * i / segments;
+          const double theta =
+              sector.sector.from + (sector.sector.to - sector.sector.from) * i / segments;
           const auto [x, y] = at(theta, share);
           i == 0 ? cairo_move_to(cairo, x, y) : cairo_line_to(cairo, x, y);
         }

@@ -1,12 +1,12 @@
 #include "rigdesign/render/fov_mesh.hpp"
 
-#include "rigdesign/model/polygon_area.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <numeric>
+
+#include "rigdesign/model/polygon_area.hpp"
 
 namespace rigdesign {
 namespace {

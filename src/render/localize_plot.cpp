@@ -28,7 +28,8 @@ Rgb ramp(double share) {
   const double scaled = share * 3.0;
   const int i = std::min(2, static_cast<int>(scaled));
   const double f = scaled - i;
-  return {stops[i].r + f * (stops[i + 1].r - stops[i].r), stops[i].g + f * (stops[i + 1].g - stops[i].g),
+  return {stops[i].r + f * (stops[i + 1].r - stops[i].r),
+          stops[i].g + f * (stops[i + 1].g - stops[i].g),
           stops[i].b + f * (stops[i + 1].b - stops[i].b)};
 }
 
@@ -58,20 +59,28 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
     for (const PlotMarker& m : plot.markers) extend(m.position.head<2>());
     if (low.x() > high.x()) low = high = Vec2::Zero();
     const Vec2 centre = 0.5 * (low + high);
-    const double span = std::max({high.x() - low.x(), (high.y() - low.y()) * (right - left) / (bottom - top), 1.0}) * 1.1;
+    const double span = std::max({high.x() - low.x(),
+                                  (high.y() - low.y()) * (right - left) / (bottom - top), 1.0}) *
+                        1.1;
     const double scale = (right - left) / span;  // pixels per metre, equal on both axes
     const auto px = [&](const Vec2& p) {
-      return Vec2((left + right) / 2 + (p.x() - centre.x()) * scale, (top + bottom) / 2 - (p.y() - centre.y()) * scale);
+      return Vec2((left + right) / 2 + (p.x() - centre.x()) * scale,
+                  (top + bottom) / 2 - (p.y() - centre.y()) * scale);
     };
     set_colour(cairo, kInkColour);
     draw_text(cairo, plot.title, width / 2.0, 34, 18, Anchor::centre, true);
     // Grid every 1, 2, 5 or 10 ... m, about 8 lines across.
     const double raw = span / 8;
     const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-    const double step = magnitude * (raw / magnitude > 5 ? 10 : raw / magnitude > 2 ? 5 : raw / magnitude > 1 ? 2 : 1);
+    const double step = magnitude * (raw / magnitude > 5   ? 10
+                                     : raw / magnitude > 2 ? 5
+                                     : raw / magnitude > 1 ? 2
+                                                           : 1);
     cairo_set_line_width(cairo, 1);
-    const Vec2 corner_low(centre.x() - span / 2, centre.y() - span * (bottom - top) / (right - left) / 2);
-    const Vec2 corner_high(centre.x() + span / 2, centre.y() + span * (bottom - top) / (right - left) / 2);
+    const Vec2 corner_low(centre.x() - span / 2,
+                          centre.y() - span * (bottom - top) / (right - left) / 2);
+    const Vec2 corner_high(centre.x() + span / 2,
+                           centre.y() + span * (bottom - top) / (right - left) / 2);
     for (double x = std::ceil(corner_low.x() / step) * step; x <= corner_high.x(); x += step) {
       set_colour(cairo, kGridColour);
       cairo_move_to(cairo, px({x, 0}).x(), top);
@@ -104,7 +113,11 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
     }
     for (std::size_t i = 0; i < plot.path.size(); ++i) {
       const Vec2 p = px(plot.path[i].head<2>());
-      set_colour(cairo, plot.values.size() == plot.path.size() ? ramp((plot.values[i] - lowest) / (highest - lowest)) : kInkColour, 0.8);
+      set_colour(cairo,
+                 plot.values.size() == plot.path.size()
+                     ? ramp((plot.values[i] - lowest) / (highest - lowest))
+                     : kInkColour,
+                 0.8);
       cairo_new_sub_path(cairo);
       cairo_arc(cairo, p.x(), p.y(), 2.2, 0, 2 * std::numbers::pi);
       cairo_fill(cairo);
@@ -147,8 +160,10 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
     // Legend and colour bar.
     double ly = top + 10;
     const std::pair<PlotMarkerKind, const char*> entries[] = {
-        {PlotMarkerKind::estimate, "estimate / detection"}, {PlotMarkerKind::alternative, "twin hypothesis"},
-        {PlotMarkerKind::lag_corrected, "lag-corrected"},   {PlotMarkerKind::truth, "truth"}};
+        {PlotMarkerKind::estimate, "estimate / detection"},
+        {PlotMarkerKind::alternative, "twin hypothesis"},
+        {PlotMarkerKind::lag_corrected, "lag-corrected"},
+        {PlotMarkerKind::truth, "truth"}};
     for (const auto& [kind, label] : entries) {
       set_colour(cairo, colour_of(kind));
       cairo_new_sub_path(cairo);

@@ -14,7 +14,9 @@ using render::Anchor;
 using render::draw_text;
 using render::set_colour;
 
-double f2_or_worst(double f2) { return std::isnan(f2) ? -1.0 : f2; }
+double f2_or_worst(double f2) {
+  return std::isnan(f2) ? -1.0 : f2;
+}
 
 // Fast (green) to slow (red) along the log of the time, so decades read evenly.
 Rgb speed_colour(double share) {
@@ -37,8 +39,8 @@ std::vector<std::size_t> pareto_front(const std::vector<ParetoPoint>& points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const ParetoPoint& a = points[i];
     const bool dominated = std::any_of(points.begin(), points.end(), [&](const ParetoPoint& b) {
-      const bool no_worse = f2_or_worst(b.f2) >= f2_or_worst(a.f2) && b.ghost_area <= a.ghost_area &&
-                            b.update_ms <= a.update_ms;
+      const bool no_worse = f2_or_worst(b.f2) >= f2_or_worst(a.f2) &&
+                            b.ghost_area <= a.ghost_area && b.update_ms <= a.update_ms;
       const bool better = f2_or_worst(b.f2) > f2_or_worst(a.f2) || b.ghost_area < a.ghost_area ||
                           b.update_ms < a.update_ms;
       return no_worse && better;
@@ -117,7 +119,8 @@ void plot_occupancy_pareto(const std::vector<ParetoPoint>& points, const std::st
       cairo_arc(cairo, lx + 6, top + 32 + i * 22, 6, 0, 2 * std::numbers::pi);
       cairo_fill(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(ms_low * std::exp(share * log_span), 3), lx + 20, top + 36 + i * 22, 11);
+      draw_text(cairo, format_number(ms_low * std::exp(share * log_span), 3), lx + 20,
+                top + 36 + i * 22, 11);
     }
     cairo_set_line_width(cairo, 2);
     cairo_new_sub_path(cairo);

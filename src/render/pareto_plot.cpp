@@ -47,7 +47,9 @@ void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double
     draw_text(cairo, title, width / 2.0, 34, 19, Anchor::centre, true);
     cairo_set_line_width(cairo, 1);
     const double magnitude = std::pow(10.0, std::floor(std::log10(max_cost / 5)));
-    const double step = magnitude * (max_cost / magnitude > 25 ? 5 : max_cost / magnitude > 10 ? 2 : 1);
+    const double step = magnitude * (max_cost / magnitude > 25   ? 5
+                                     : max_cost / magnitude > 10 ? 2
+                                                                 : 1);
     for (double cost = 0; cost <= max_cost; cost += step) {
       set_colour(cairo, kGridColour);
       cairo_move_to(cairo, x(cost), top);
@@ -62,7 +64,8 @@ void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double
       cairo_line_to(cairo, right, y(percent / 100.0));
       cairo_stroke(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, std::to_string(percent), left - 8, y(percent / 100.0) + 5, 13, Anchor::right);
+      draw_text(cairo, std::to_string(percent), left - 8, y(percent / 100.0) + 5, 13,
+                Anchor::right);
     }
     draw_text(cairo, "rig cost C = C_s + C_t + C_c [USD]", (left + right) / 2, height - 30.0, 14,
               Anchor::centre);
@@ -77,7 +80,8 @@ void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double
       for (const ExploredRig& rig : explored) {
         if (rig.feasible != feasible) continue;
         cairo_new_sub_path(cairo);
-        cairo_arc(cairo, x(rig.cost), y(rig.mean_complete), feasible ? 3.5 : 2.5, 0, 2 * std::numbers::pi);
+        cairo_arc(cairo, x(rig.cost), y(rig.mean_complete), feasible ? 3.5 : 2.5, 0,
+                  2 * std::numbers::pi);
       }
       cairo_fill(cairo);
     }
@@ -103,7 +107,8 @@ void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double
       cairo_arc(cairo, x(chosen_cost), y(chosen_coverage), 8, 0, 2 * std::numbers::pi);
       cairo_set_line_width(cairo, 2.5);
       cairo_stroke(cairo);
-      draw_text(cairo, "chosen", x(chosen_cost) + 11, y(chosen_coverage) - 8, 13, Anchor::left, true);
+      draw_text(cairo, "chosen", x(chosen_cost) + 11, y(chosen_coverage) - 8, 13, Anchor::left,
+                true);
     }
     // Legend.
     double ly = bottom - 70;

@@ -15,7 +15,6 @@ using render::Anchor;
 using render::draw_text;
 using render::set_colour;
 
-
 // Round tick spacing giving about `count` ticks over `span`.
 double tick_step(double span, int count) {
   const double raw = span / count;
@@ -65,9 +64,8 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
   render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
     set_colour(cairo, kInkColour);
     draw_text(cairo,
-              rig_name + ": cross-section at theta = " +
-                  format_number(rad_to_deg(frame.theta), 4) + " deg  (SC complete " +
-                  format_number(view.complete * 100, 3) + " %, floor " +
+              rig_name + ": cross-section at theta = " + format_number(rad_to_deg(frame.theta), 4) +
+                  " deg  (SC complete " + format_number(view.complete * 100, 3) + " %, floor " +
                   format_number(view.floor * 100, 3) + " %)",
               width / 2.0, 34, 19, Anchor::centre, true);
 
@@ -133,7 +131,8 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
     cairo_set_dash(cairo, dash, 2, 0);
     set_colour(cairo, kInkColour);
     cairo_set_line_width(cairo, 1.6);
-    cairo_rectangle(cairo, axes.x(frame.r), axes.y(frame.h), frame.width() * scale, frame.h * scale);
+    cairo_rectangle(cairo, axes.x(frame.r), axes.y(frame.h), frame.width() * scale,
+                    frame.h * scale);
     cairo_stroke(cairo);
     cairo_set_dash(cairo, nullptr, 0, 0);
     draw_text(cairo, "r", axes.x(frame.r), axes.y(frame.h) - 6, 13, Anchor::centre);
@@ -167,7 +166,8 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
       cairo_rectangle(cairo, legend_x, y - 13, 22, 16);
       cairo_fill(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, view.mount_ids[i] + "  " + format_number(area / frame.area() * 100, 3) + " %",
+      draw_text(cairo,
+                view.mount_ids[i] + "  " + format_number(area / frame.area() * 100, 3) + " %",
                 legend_x + 30, y, 13);
     }
     y += 34;

@@ -31,16 +31,20 @@ std::optional<Relaxable> relaxable(const std::string& path) {
   };
   constexpr double kHuge = 1e9;
   if (path == "robot_speed.max_speed") {
-    return Relaxable{motion(&Requirements::robot_speed, &MotionBetweenFrames::speed), "m/s", false, 0, kHuge};
+    return Relaxable{motion(&Requirements::robot_speed, &MotionBetweenFrames::speed), "m/s", false,
+                     0, kHuge};
   }
   if (path == "robot_speed.max_travel_between_frames") {
-    return Relaxable{motion(&Requirements::robot_speed, &MotionBetweenFrames::travel), "m", true, 0, kHuge};
+    return Relaxable{motion(&Requirements::robot_speed, &MotionBetweenFrames::travel), "m", true, 0,
+                     kHuge};
   }
   if (path == "object_dynamics.max_object_speed") {
-    return Relaxable{motion(&Requirements::object_dynamics, &MotionBetweenFrames::speed), "m/s", false, 0, kHuge};
+    return Relaxable{motion(&Requirements::object_dynamics, &MotionBetweenFrames::speed), "m/s",
+                     false, 0, kHuge};
   }
   if (path == "object_dynamics.max_travel_between_frames") {
-    return Relaxable{motion(&Requirements::object_dynamics, &MotionBetweenFrames::travel), "m", true, 0, kHuge};
+    return Relaxable{motion(&Requirements::object_dynamics, &MotionBetweenFrames::travel), "m",
+                     true, 0, kHuge};
   }
   if (path == "range.min_frequency") {
     return Relaxable{optional_number(&Requirements::min_frequency), "Hz", false, 0, kHuge};
@@ -59,13 +63,15 @@ std::optional<Relaxable> relaxable(const std::string& path) {
     const std::size_t dot = path.rfind('.');
     const std::string sector = path.substr(prefix.size(), dot - prefix.size());
     const std::string field = path.substr(dot + 1);
-    if (dot <= prefix.size() || (field != "min_complete_coverage" && field != "min_floor_coverage")) {
+    if (dot <= prefix.size() ||
+        (field != "min_complete_coverage" && field != "min_floor_coverage")) {
       return std::nullopt;
     }
     const bool complete = field == "min_complete_coverage";
     return Relaxable{[sector, complete](Requirements& r) -> double* {
                        for (SectorRequirement& s : r.sectors) {
-                         if (s.name == sector) return complete ? &s.min_complete_coverage : &s.min_floor_coverage;
+                         if (s.name == sector)
+                           return complete ? &s.min_complete_coverage : &s.min_floor_coverage;
                        }
                        return nullptr;
                      },
@@ -74,8 +80,10 @@ std::optional<Relaxable> relaxable(const std::string& path) {
   return std::nullopt;
 }
 
-[[noreturn]] void fail(const RelaxationStep& step, const std::string& problem, const std::string& expected) {
-  throw InputError(Diagnostic{step.where, "steps.relax", "'" + step.requirement + "' " + problem, expected});
+[[noreturn]] void fail(const RelaxationStep& step, const std::string& problem,
+                       const std::string& expected) {
+  throw InputError(
+      Diagnostic{step.where, "steps.relax", "'" + step.requirement + "' " + problem, expected});
 }
 
 const char* kRelaxable =
@@ -102,7 +110,8 @@ Requirements relax(const Requirements& requirements, const RelaxationStep& step)
   if (!step.to) fail(step, "needs `to: <value>`", "the relaxed value in " + target->unit);
   double* value = target->value(relaxed);
   if (value == nullptr) {
-    fail(step, "is not stated in " + requirements.file, "a requirement the requirements file states");
+    fail(step, "is not stated in " + requirements.file,
+         "a requirement the requirements file states");
   }
   if (*step.to <= target->low || *step.to > target->high) {
     if (!(target->unit == "share" && *step.to == 0.0)) {
@@ -112,8 +121,9 @@ Requirements relax(const Requirements& requirements, const RelaxationStep& step)
   }
   const bool looser = target->looser_is_larger ? *step.to > *value : *step.to < *value;
   if (!looser) {
-    fail(step, "would go from " + format_number(*value) + " to " + format_number(*step.to) +
-                   ", which tightens it",
+    fail(step,
+         "would go from " + format_number(*value) + " to " + format_number(*step.to) +
+             ", which tightens it",
          std::string("a value ") + (target->looser_is_larger ? "above " : "below ") +
              format_number(*value) + " " + target->unit);
   }

@@ -15,10 +15,14 @@ std::vector<std::pair<std::string, Requirements>> without_each(const Requirement
     change(copy);
     variants.emplace_back(name, std::move(copy));
   };
-  if (requirements.min_frequency) add("R3 range.min_frequency", [](Requirements& r) { r.min_frequency.reset(); });
-  if (requirements.object_dynamics) add("R4 object_dynamics", [](Requirements& r) { r.object_dynamics.reset(); });
-  if (requirements.robot_speed) add("R5 robot_speed", [](Requirements& r) { r.robot_speed.reset(); });
-  if (requirements.smallest_obstacle) add("R6 smallest_obstacle", [](Requirements& r) { r.smallest_obstacle.reset(); });
+  if (requirements.min_frequency)
+    add("R3 range.min_frequency", [](Requirements& r) { r.min_frequency.reset(); });
+  if (requirements.object_dynamics)
+    add("R4 object_dynamics", [](Requirements& r) { r.object_dynamics.reset(); });
+  if (requirements.robot_speed)
+    add("R5 robot_speed", [](Requirements& r) { r.robot_speed.reset(); });
+  if (requirements.smallest_obstacle)
+    add("R6 smallest_obstacle", [](Requirements& r) { r.smallest_obstacle.reset(); });
   if (requirements.max_noise) add("R7 accuracy", [](Requirements& r) { r.max_noise.reset(); });
   for (const LightCondition condition : requirements.lighting) {
     add("R8 lighting " + to_string(condition), [condition](Requirements& r) {
@@ -44,17 +48,18 @@ std::vector<BindingRequirement> binding_requirements(const SelectionSpace& space
   }
   std::vector<BindingRequirement> binding;
   for (const BindingRequirement& item : all) {
-    if (item.feasible_without && (item.cost_without <= budget || !last.found)) binding.push_back(item);
+    if (item.feasible_without && (item.cost_without <= budget || !last.found))
+      binding.push_back(item);
   }
   if (!binding.empty()) return binding;
   // None alone suffices: those whose removal saves the most.
   std::vector<BindingRequirement> cheaper;
   for (const BindingRequirement& item : all) {
-    if (item.feasible_without && last.found && item.cost_without < last.cost.total) cheaper.push_back(item);
+    if (item.feasible_without && last.found && item.cost_without < last.cost.total)
+      cheaper.push_back(item);
   }
-  std::sort(cheaper.begin(), cheaper.end(), [](const auto& a, const auto& b) {
-    return a.cost_without < b.cost_without;
-  });
+  std::sort(cheaper.begin(), cheaper.end(),
+            [](const auto& a, const auto& b) { return a.cost_without < b.cost_without; });
   return cheaper;
 }
 
@@ -81,8 +86,7 @@ RelaxationOutcome select_within_budget(
     iteration.requirements = current;
     iteration.targets = satisficing_targets(current);
     iteration.selection = select_cheapest(space, current, progress);
-    iteration.within_budget =
-        iteration.selection.found && iteration.selection.cost.total <= budget;
+    iteration.within_budget = iteration.selection.found && iteration.selection.cost.total <= budget;
     if (on_iteration) on_iteration(iteration);
     outcome.iterations.push_back(std::move(iteration));
     if (outcome.iterations.back().within_budget) {
@@ -90,7 +94,8 @@ RelaxationOutcome select_within_budget(
       return outcome;
     }
   }
-  outcome.binding = binding_requirements(space, current, outcome.iterations.back().selection, budget);
+  outcome.binding =
+      binding_requirements(space, current, outcome.iterations.back().selection, budget);
   return outcome;
 }
 

@@ -7,7 +7,9 @@
 namespace rigdesign {
 namespace {
 
-bool meets(double share, double threshold) { return share >= threshold - kThresholdSlack; }
+bool meets(double share, double threshold) {
+  return share >= threshold - kThresholdSlack;
+}
 
 class BranchAndBound {
  public:

@@ -45,8 +45,9 @@ SelectionSpace::SelectionSpace(const Catalog& catalog, const SensorLibrary& libr
   std::vector<SectionFrame> frames;
   for (int a = 0; a < angles; ++a) {
     frames.push_back(section_frame(body, kTwoPi * a / angles, catalog.distance_of_interest));
-    grids_.push_back({std::max(1, static_cast<int>(std::ceil(frames.back().width() / settings.raster_cell))),
-                      std::max(1, static_cast<int>(std::ceil(frames.back().h / settings.raster_cell)))});
+    grids_.push_back(
+        {std::max(1, static_cast<int>(std::ceil(frames.back().width() / settings.raster_cell))),
+         std::max(1, static_cast<int>(std::ceil(frames.back().h / settings.raster_cell)))});
   }
   options_.resize(catalog.slots.size());
   for (std::size_t k = 0; k < catalog.slots.size(); ++k) {
@@ -56,8 +57,8 @@ SelectionSpace::SelectionSpace(const Catalog& catalog, const SensorLibrary& libr
     mount.T_robot_sensor = slot.T_robot_sensor;
     const double distance = slot.distance_of_interest.value_or(catalog.distance_of_interest);
     for (const CandidateSensor& candidate : catalog.sensors) {
-      if (std::find(slot.allowed_sensors.begin(), slot.allowed_sensors.end(), candidate.sensor_id) ==
-          slot.allowed_sensors.end()) {
+      if (std::find(slot.allowed_sensors.begin(), slot.allowed_sensors.end(),
+                    candidate.sensor_id) == slot.allowed_sensors.end()) {
         continue;
       }
       const Sensor* sensor = library.find(candidate.sensor_id);
@@ -68,11 +69,12 @@ SelectionSpace::SelectionSpace(const Catalog& catalog, const SensorLibrary& libr
         option.mode = sensor->find_mode(mode_id);
         option.metrics = compute_mount_metrics(mount, *sensor, *option.mode, distance);
         // U_f: filtering time per point times points per second (paper 1, eq. 5).
-        option.filtering = candidate.filtering_seconds_per_point.value_or(
-                               catalog.filtering_seconds_per_point) *
-                           option.metrics.points_per_second;
+        option.filtering =
+            candidate.filtering_seconds_per_point.value_or(catalog.filtering_seconds_per_point) *
+            option.metrics.points_per_second;
         const MountedFov fov(*option.mode, slot.T_robot_sensor, body);
-        for (int a = 0; a < angles; ++a) option.sections.push_back(rasterize(fov, frames[a], grids_[a]));
+        for (int a = 0; a < angles; ++a)
+          option.sections.push_back(rasterize(fov, frames[a], grids_[a]));
         options_[k].push_back(std::move(option));
       }
     }
@@ -89,8 +91,8 @@ double SelectionSpace::angle(std::size_t index) const {
   return kTwoPi * static_cast<double>(index) / static_cast<double>(grids_.size());
 }
 
-SearchProblem SelectionSpace::problem_for(const SatisficingTargets& targets,
-                                          std::vector<std::vector<const CatalogOption*>>& kept) const {
+SearchProblem SelectionSpace::problem_for(
+    const SatisficingTargets& targets, std::vector<std::vector<const CatalogOption*>>& kept) const {
   SearchProblem problem;
   problem.grids = grids_;
   problem.transfer = catalog_->transfer;
@@ -101,7 +103,8 @@ SearchProblem SelectionSpace::problem_for(const SatisficingTargets& targets,
     for (const CatalogOption& option : options_[k]) {
       if (!meets_alone(option, targets)) continue;
       problem.slots.back().push_back({option.metrics.price, option.metrics.bandwidth,
-                                      option.metrics.driver_cpu + option.filtering, option.sections});
+                                      option.metrics.driver_cpu + option.filtering,
+                                      option.sections});
       kept[k].push_back(&option);
     }
   }
@@ -147,9 +150,9 @@ Selection select_cheapest(const SelectionSpace& space, const Requirements& requi
     return selection;
   }
   if (catalog.distance_of_interest + 1e-9 < targets.distance) {
-    selection.infeasible_reason = "R3: the catalog's distance of interest " +
-                                  format_number(catalog.distance_of_interest) +
-                                  " m is below the required " + format_number(targets.distance) + " m";
+    selection.infeasible_reason =
+        "R3: the catalog's distance of interest " + format_number(catalog.distance_of_interest) +
+        " m is below the required " + format_number(targets.distance) + " m";
     return selection;
   }
   std::vector<std::vector<const CatalogOption*>> kept;
@@ -167,8 +170,9 @@ Selection select_cheapest(const SelectionSpace& space, const Requirements& requi
     }
     selection.rig = space.rig_for(selection.chosen);
     selection.coverage = compute_coverage(selection.rig, space.library(), targets.sectors, exact);
-    const bool verified = std::all_of(selection.coverage.sectors.begin(), selection.coverage.sectors.end(),
-                                      [](const SectorCoverage& sector) { return sector.pass; });
+    const bool verified =
+        std::all_of(selection.coverage.sectors.begin(), selection.coverage.sectors.end(),
+                    [](const SectorCoverage& sector) { return sector.pass; });
     if (verified) {
       selection.found = true;
       selection.cost = selection.search.cost;
@@ -180,7 +184,8 @@ Selection select_cheapest(const SelectionSpace& space, const Requirements& requi
   if (!selection.found && selection.infeasible_reason.empty()) {
     selection.infeasible_reason = "no combination of the catalog's options meets every requirement";
   }
-  selection.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  selection.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return selection;
 }
 

@@ -19,7 +19,9 @@ using Iterator = std::vector<Triangle>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-Kernel::Point_3 point(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+Kernel::Point_3 point(const Vec3& v) {
+  return {v.x(), v.y(), v.z()};
+}
 
 }  // namespace
 
@@ -30,7 +32,8 @@ struct RayCaster::Tree {
 
 RayCaster::RayCaster(const TriangleMesh& mesh) : tree_(std::make_unique<Tree>()) {
   for (const auto& t : mesh.triangles) {
-    const Triangle triangle(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]), point(mesh.vertices[t[2]]));
+    const Triangle triangle(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]),
+                            point(mesh.vertices[t[2]]));
     if (!triangle.is_degenerate()) tree_->triangles.push_back(triangle);
   }
   tree_->tree.insert(tree_->triangles.begin(), tree_->triangles.end());
@@ -44,13 +47,15 @@ RayCaster& RayCaster::operator=(RayCaster&&) noexcept = default;
 
 std::optional<double> RayCaster::first_hit(const Vec3& origin, const Vec3& direction) const {
   if (tree_->triangles.empty()) return std::nullopt;
-  const Kernel::Ray_3 ray(point(origin), Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
+  const Kernel::Ray_3 ray(point(origin),
+                          Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
   const auto hit = tree_->tree.first_intersection(ray);
   if (!hit) return std::nullopt;
   if (const Kernel::Point_3* p = boost::get<Kernel::Point_3>(&hit->first)) {
     return (Vec3(p->x(), p->y(), p->z()) - origin).norm();
   }
-  if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&hit->first)) {  // ray in the triangle's plane
+  if (const Kernel::Segment_3* s =
+          boost::get<Kernel::Segment_3>(&hit->first)) {  // ray in the triangle's plane
     const Vec3 a(s->source().x(), s->source().y(), s->source().z());
     const Vec3 b(s->target().x(), s->target().y(), s->target().z());
     return std::min((a - origin).norm(), (b - origin).norm());

@@ -4,9 +4,9 @@
 
 namespace rigdesign {
 
-std::vector<PointCloud> simulate_mount(const Scene& scene, const Mount& mount, const SensorMode& mode,
-                                       std::size_t mount_index, int frames, std::uint64_t seed,
-                                       const SimulationSettings& settings) {
+std::vector<PointCloud> simulate_mount(const Scene& scene, const Mount& mount,
+                                       const SensorMode& mode, std::size_t mount_index, int frames,
+                                       std::uint64_t seed, const SimulationSettings& settings) {
   std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
                          static_cast<std::uint32_t>(mount_index)};
   std::mt19937_64 rng(sequence);
@@ -21,7 +21,8 @@ std::vector<PointCloud> simulate_mount(const Scene& scene, const Mount& mount, c
     const double t = k / mode.frequency;
     std::optional<RayCaster> moving;
     if (!static_scene) moving.emplace(scene.at(t));
-    PointCloud cloud = simulate_frame(static_scene ? *still : *moving, mode, rays, T_world_sensor, settings, rng);
+    PointCloud cloud =
+        simulate_frame(static_scene ? *still : *moving, mode, rays, T_world_sensor, settings, rng);
     if (!settings.sensor_frame) {  // world frame -> robot frame
       const Eigen::Isometry3f transform = T_robot_world.cast<float>();
       for (Point3f& p : cloud.points) p = transform * p;

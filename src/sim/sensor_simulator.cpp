@@ -6,10 +6,13 @@
 namespace rigdesign {
 namespace {
 
-int steps(double span, double step) { return std::max(1, static_cast<int>(std::lround(span / step))); }
+int steps(double span, double step) {
+  return std::max(1, static_cast<int>(std::lround(span / step)));
+}
 
 // Pixel centres of a pinhole camera: evenly spaced on the image plane x = 1.
-std::vector<Vec3> pinhole_grid(double horizontal, double vertical, int columns, int rows, bool circular) {
+std::vector<Vec3> pinhole_grid(double horizontal, double vertical, int columns, int rows,
+                               bool circular) {
   std::vector<Vec3> rays;
   const double half_width = std::tan(horizontal / 2);
   const double half_height = std::tan(vertical / 2);
@@ -33,9 +36,11 @@ std::vector<Vec3> ray_pattern(const SensorMode& mode) {
   const double step_v = mode.angular_resolution_v.value_or(fov.vertical);
   switch (fov.shape) {
     case FovShape::pyramid:
-      return pinhole_grid(fov.horizontal, fov.vertical, steps(fov.horizontal, step_h), steps(fov.vertical, step_v), false);
+      return pinhole_grid(fov.horizontal, fov.vertical, steps(fov.horizontal, step_h),
+                          steps(fov.vertical, step_v), false);
     case FovShape::cone:
-      return pinhole_grid(fov.horizontal, fov.horizontal, steps(fov.horizontal, step_h), steps(fov.horizontal, step_v), true);
+      return pinhole_grid(fov.horizontal, fov.horizontal, steps(fov.horizontal, step_h),
+                          steps(fov.horizontal, step_v), true);
     case FovShape::band:
     case FovShape::planar: {
       std::vector<Vec3> rays;
@@ -47,10 +52,11 @@ std::vector<Vec3> ray_pattern(const SensorMode& mode) {
         const double elevation = rows == 1 ? 0.5 * (fov.elevation_min + fov.elevation_max)
                                            : fov.elevation_min + fov.vertical * row / (rows - 1);
         for (int column = 0; column < columns; ++column) {
-          const double azimuth = full_circle ? 2 * std::numbers::pi * column / columns - std::numbers::pi
-                                             : -fov.horizontal / 2 + fov.horizontal * column / (columns - 1);
-          rays.emplace_back(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
-                            std::sin(elevation));
+          const double azimuth =
+              full_circle ? 2 * std::numbers::pi * column / columns - std::numbers::pi
+                          : -fov.horizontal / 2 + fov.horizontal * column / (columns - 1);
+          rays.emplace_back(std::cos(elevation) * std::cos(azimuth),
+                            std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
         }
       }
       return rays;
@@ -59,9 +65,9 @@ std::vector<Vec3> ray_pattern(const SensorMode& mode) {
   return {};
 }
 
-PointCloud simulate_frame(const RayCaster& scene, const SensorMode& mode, const std::vector<Vec3>& rays,
-                          const Pose3& T_world_sensor, const SimulationSettings& settings,
-                          std::mt19937_64& rng) {
+PointCloud simulate_frame(const RayCaster& scene, const SensorMode& mode,
+                          const std::vector<Vec3>& rays, const Pose3& T_world_sensor,
+                          const SimulationSettings& settings, std::mt19937_64& rng) {
   PointCloud cloud;
   cloud.points.reserve(rays.size());
   std::uniform_real_distribution<double> unit(0.0, 1.0);

@@ -42,7 +42,8 @@ const UrCleaner& ur_cleaner() {
 }
 
 RasterGrid grid_for(const SectionFrame& frame) {
-  return {static_cast<int>(std::ceil(frame.width() / kCell)), static_cast<int>(std::ceil(frame.h / kCell))};
+  return {static_cast<int>(std::ceil(frame.width() / kCell)),
+          static_cast<int>(std::ceil(frame.h / kCell))};
 }
 
 void BM_ExactSweep(benchmark::State& state) {
@@ -119,9 +120,19 @@ void BM_ComputeCoverageAll(benchmark::State& state) {
 
 BENCHMARK(BM_ExactSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
 BENCHMARK(BM_RasterSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
-BENCHMARK(BM_RasterSweepTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(5)->ReportAggregatesOnly();
-BENCHMARK(BM_PerCandidateCachedRasters)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly();
-BENCHMARK(BM_ComputeCoverageAll)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
+BENCHMARK(BM_RasterSweepTwoThreads)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_PerCandidateCachedRasters)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_ComputeCoverageAll)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();
 
 }  // namespace
 

@@ -20,10 +20,10 @@
 
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/io/cloud_io.hpp"
-#include "rigdesign/model/rotation.hpp"
-#include "rigdesign/model/units.hpp"
 #include "rigdesign/io/rig_loader.hpp"
 #include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/model/rotation.hpp"
+#include "rigdesign/model/units.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
 
 namespace {
@@ -38,7 +38,8 @@ double median_seconds(const std::function<std::size_t()>& run, std::size_t& poin
   for (int i = 0; i < kRuns; ++i) {
     const auto start = std::chrono::steady_clock::now();
     points_out = run();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    times.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   std::sort(times.begin(), times.end());
   return times[times.size() / 2];
@@ -105,7 +106,8 @@ PclCloud::Ptr pcl_floor_1(const PclCloud::Ptr& in) {
   pcl::ModelCoefficients coefficients;
   const pcl::PointIndices::Ptr plane = pcl_plane(slice_cloud, coefficients);
   pcl::PointIndices::Ptr removed(new pcl::PointIndices);
-  for (const int i : plane->indices) removed->indices.push_back(slice->indices[static_cast<std::size_t>(i)]);
+  for (const int i : plane->indices)
+    removed->indices.push_back(slice->indices[static_cast<std::size_t>(i)]);
   PclCloud::Ptr out(new PclCloud);
   pcl::ExtractIndices<pcl::PointXYZ> extract;
   extract.setInputCloud(in);
@@ -134,7 +136,8 @@ PclCloud::Ptr pcl_floor_2(const PclCloud::Ptr& in) {
   PclCloud::Ptr out(new PclCloud);
   if (c.values.size() != 4) return in;
   for (const auto& p : *in) {
-    if (std::abs(c.values[0] * p.x + c.values[1] * p.y + c.values[2] * p.z + c.values[3]) > 0.03f) out->push_back(p);
+    if (std::abs(c.values[0] * p.x + c.values[1] * p.y + c.values[2] * p.z + c.values[3]) > 0.03f)
+      out->push_back(p);
   }
   return out;
 }
@@ -149,10 +152,11 @@ struct Row {
 
 void print(const std::string& cloud_name, std::size_t points, const std::vector<Row>& rows) {
   std::printf("\n%s (%zu points)\n", cloud_name.c_str(), points);
-  std::printf("  %-22s %10s %10s %8s %12s %12s\n", "stage", "ours ms", "PCL ms", "PCL/ours", "ours points", "PCL points");
+  std::printf("  %-22s %10s %10s %8s %12s %12s\n", "stage", "ours ms", "PCL ms", "PCL/ours",
+              "ours points", "PCL points");
   for (const Row& r : rows) {
-    std::printf("  %-22s %10.2f %10.2f %8.2f %12zu %12zu\n", r.name.c_str(), r.ours * 1e3, r.theirs * 1e3,
-                r.theirs / r.ours, r.ours_points, r.theirs_points);
+    std::printf("  %-22s %10.2f %10.2f %8.2f %12zu %12zu\n", r.name.c_str(), r.ours * 1e3,
+                r.theirs * 1e3, r.theirs / r.ours, r.ours_points, r.theirs_points);
   }
 }
 
@@ -172,7 +176,12 @@ void compare(const std::string& name, const PointCloud& cloud) {
   theirs = median_seconds([&] { return pcl_pass(input, false)->size(); }, b);
   rows.push_back({"pass_through z", ours, theirs, a, b});
   ours = median_seconds([&] { return fit_plane_ransac(voxelised).inliers.size(); }, a);
-  theirs = median_seconds([&] { pcl::ModelCoefficients c; return pcl_plane(pcl_voxelised, c)->indices.size(); }, b);
+  theirs = median_seconds(
+      [&] {
+        pcl::ModelCoefficients c;
+        return pcl_plane(pcl_voxelised, c)->indices.size();
+      },
+      b);
   rows.push_back({"RANSAC plane (voxelised)", ours, theirs, a, b});
   ours = median_seconds([&] { return remove_floor_1(voxelised).size(); }, a);
   theirs = median_seconds([&] { return pcl_floor_1(pcl_voxelised)->size(); }, b);
@@ -183,12 +192,14 @@ void compare(const std::string& name, const PointCloud& cloud) {
   for (const char* pipeline : {"P2", "P3", "P4"}) {
     const Pipeline p = *preset_pipeline(pipeline);
     ours = median_seconds([&] { return run_pipeline(p, cloud).size(); }, a);
-    theirs = median_seconds([&] {
-      const PclCloud::Ptr v = pcl_voxel(input, 0.03f);
-      if (std::string(pipeline) == "P2") return pcl_floor_1(pcl_sor(v))->size();
-      if (std::string(pipeline) == "P3") return pcl_sor(pcl_floor_1(v))->size();
-      return pcl_floor_2(pcl_sor(v))->size();
-    }, b);
+    theirs = median_seconds(
+        [&] {
+          const PclCloud::Ptr v = pcl_voxel(input, 0.03f);
+          if (std::string(pipeline) == "P2") return pcl_floor_1(pcl_sor(v))->size();
+          if (std::string(pipeline) == "P3") return pcl_sor(pcl_floor_1(v))->size();
+          return pcl_floor_2(pcl_sor(v))->size();
+        },
+        b);
     rows.push_back({std::string("pipeline ") + pipeline, ours, theirs, a, b});
   }
   print(name, cloud.size(), rows);
@@ -211,17 +222,20 @@ PointCloud mounted(const PointCloud& optical) {
 
 int main() {
   const std::string folder = std::string(RIGDESIGN_SOURCE_DIR) + "/../shared/data/real";
-  std::printf("ours vs PCL %s, single thread, %d runs per figure (medians)\n", PCL_VERSION_PRETTY, kRuns);
+  std::printf("ours vs PCL %s, single thread, %d runs per figure (medians)\n", PCL_VERSION_PRETTY,
+              kRuns);
   {  // A simulated Azure Kinect NFOV unbinned frame of the office, from the UR Cleaner's front.
-    const SensorLibrary library = load_sensor_library(std::string(RIGDESIGN_SOURCE_DIR) + "/sensors.yaml");
+    const SensorLibrary library =
+        load_sensor_library(std::string(RIGDESIGN_SOURCE_DIR) + "/sensors.yaml");
     const Rig rig = load_rig(std::string(RIGDESIGN_SOURCE_DIR) + "/rigs/ur_cleaner.yaml");
     const Mount& front = rig.mounts.front();
     const SensorMode& mode = *library.find(front.sensor_id)->find_mode(front.mode_id);
     const PointCloud frame = simulate_mount(make_scene("office", 1), front, mode, 0, 1, 1).front();
     compare("simulated Azure Kinect NFOV frame, office scene (robot frame)", frame);
   }
-  for (const char* file : {"office1.pcd", "five_people.pcd", "table_scene_mug_stereo_textured.pcd",
-                           "kinect_frame_20121214T142255.814212.pcd", "milk_cartoon_all_small_clorox.pcd"}) {
+  for (const char* file :
+       {"office1.pcd", "five_people.pcd", "table_scene_mug_stereo_textured.pcd",
+        "kinect_frame_20121214T142255.814212.pcd", "milk_cartoon_all_small_clorox.pcd"}) {
     const std::string path = folder + "/" + file;
     if (!std::filesystem::exists(path)) {
       std::printf("%s: not found, skipped\n", path.c_str());

@@ -32,9 +32,9 @@ void BM_WlsUpdatePerReading(benchmark::State& state) {
     }
   }
   state.counters["readings"] = static_cast<double>(log.readings.size());
-  state.counters["per_reading"] = benchmark::Counter(static_cast<double>(log.readings.size()),
-                                                     benchmark::Counter::kIsIterationInvariantRate |
-                                                         benchmark::Counter::kInvert);
+  state.counters["per_reading"] = benchmark::Counter(
+      static_cast<double>(log.readings.size()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void full_solve(benchmark::State& state, LocalizeMethod method) {
@@ -50,9 +50,15 @@ void full_solve(benchmark::State& state, LocalizeMethod method) {
 }
 
 // Chunking plus one solve over the whole log.
-void BM_WlsFullSolve(benchmark::State& state) { full_solve(state, LocalizeMethod::wls); }
-void BM_RangeFitFullSolve(benchmark::State& state) { full_solve(state, LocalizeMethod::nls); }
-void BM_ObjectMapFullSolve(benchmark::State& state) { full_solve(state, LocalizeMethod::map); }
+void BM_WlsFullSolve(benchmark::State& state) {
+  full_solve(state, LocalizeMethod::wls);
+}
+void BM_RangeFitFullSolve(benchmark::State& state) {
+  full_solve(state, LocalizeMethod::nls);
+}
+void BM_ObjectMapFullSolve(benchmark::State& state) {
+  full_solve(state, LocalizeMethod::map);
+}
 
 BENCHMARK(BM_WlsUpdatePerReading)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WlsFullSolve)->Arg(4000)->Arg(16000)->Unit(benchmark::kMillisecond);

@@ -75,7 +75,8 @@ class OctoMapMapper final : public OccupancyMapper {
       for (int i = 0; i < n; ++i) {
         for (int j = 0; j < n; ++j) {
           for (int k = 0; k < n; ++k) {
-            const Vec3 p(c.x() - size / 2 + (i + 0.5) * kResolution, c.y() - size / 2 + (j + 0.5) * kResolution,
+            const Vec3 p(c.x() - size / 2 + (i + 0.5) * kResolution,
+                         c.y() - size / 2 + (j + 0.5) * kResolution,
                          c.z() - size / 2 + (k + 0.5) * kResolution);
             if (p.z() < 0.0 || p.z() >= kZMax) continue;
             keys.push_back(lattice().key_at(p));
@@ -100,8 +101,9 @@ std::string cell(double value, int decimals) {
 void print_run(const OccupancyRun& run) {
   const OccupancyPhase& a = run.all;
   std::printf("| %-26s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", run.mapper.c_str(),
-              cell(a.object.precision, 3).c_str(), cell(a.object.recall, 3).c_str(), cell(a.object.f1, 3).c_str(),
-              cell(a.object.f2, 3).c_str(), cell(a.object.f3, 3).c_str(), cell(a.ghost_area, 2).c_str(),
+              cell(a.object.precision, 3).c_str(), cell(a.object.recall, 3).c_str(),
+              cell(a.object.f1, 3).c_str(), cell(a.object.f2, 3).c_str(),
+              cell(a.object.f3, 3).c_str(), cell(a.ghost_area, 2).c_str(),
               cell(run.moving.ghost_area, 2).c_str(), cell(run.stationary.ghost_area, 2).c_str(),
               cell(a.trail_length_max, 2).c_str(), cell(a.update_ms, 1).c_str());
 }
@@ -112,15 +114,16 @@ struct Frames {
 };
 
 // The cell's frames as the evaluation makes them (world frame, sensor origins set).
-Frames simulate(const Scene& scene, const std::vector<CellSensor>& sensors, int count, double rate) {
+Frames simulate(const Scene& scene, const std::vector<CellSensor>& sensors, int count,
+                double rate) {
   Frames frames;
   std::mt19937_64 rng(1);
   for (int k = 0; k < count; ++k) {
     const RayCaster caster(scene.at(k / rate));
     std::vector<PointCloud> clouds;
     for (const CellSensor& sensor : sensors) {
-      clouds.push_back(simulate_frame(caster, sensor.mode, ray_pattern(sensor.mode), sensor.T_world_sensor,
-                                      SimulationSettings{}, rng));
+      clouds.push_back(simulate_frame(caster, sensor.mode, ray_pattern(sensor.mode),
+                                      sensor.T_world_sensor, SimulationSettings{}, rng));
       frames.points += clouds.back().size();
     }
     frames.clouds.push_back(std::move(clouds));
@@ -135,7 +138,8 @@ double best_seconds(int repeats, Insert insert) {
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     insert();
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    best = std::min(
+        best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   return best;
 }
@@ -148,7 +152,8 @@ void throughput(const Scene& scene, const std::vector<CellSensor>& sensors) {
       for (const PointCloud& cloud : clouds) {
         octomap::Pointcloud scan;
         for (const Point3f& p : cloud.points) scan.push_back(p.x(), p.y(), p.z());
-        tree.insertPointCloud(scan, octomap::point3d(cloud.origin.x(), cloud.origin.y(), cloud.origin.z()), -1.0);
+        tree.insertPointCloud(
+            scan, octomap::point3d(cloud.origin.x(), cloud.origin.y(), cloud.origin.z()), -1.0);
       }
     }
   });
@@ -169,10 +174,13 @@ void throughput(const Scene& scene, const std::vector<CellSensor>& sensors) {
     }
   });
   const double points = static_cast<double>(frames.points);
-  std::printf("\nInsertion throughput, %zu frames (%.0f points), 0.1 m, full rays, one thread, best of 3:\n",
-              frames.clouds.size(), points);
+  std::printf(
+      "\nInsertion throughput, %zu frames (%.0f points), 0.1 m, full rays, one thread, best of "
+      "3:\n",
+      frames.clouds.size(), points);
   std::printf("| mapper | s | points/s |\n|---|---|---|\n");
-  std::printf("| OctoMap insertPointCloud | %.3f | %.2f M |\n", octomap_s, points / octomap_s / 1e6);
+  std::printf("| OctoMap insertPointCloud | %.3f | %.2f M |\n", octomap_s,
+              points / octomap_s / 1e6);
   std::printf("| our VoxelLayer::insert | %.3f | %.2f M |\n", ours_s, points / ours_s / 1e6);
   std::printf("ratio ours / OctoMap: %.1fx (target >= 5x)\n", octomap_s / ours_s);
 }
@@ -186,7 +194,8 @@ int main(int argc, char** argv) {
   const SensorLibrary library = load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
   std::vector<CellSensor> sensors;
   for (const Mount& mount : rig.mounts) {
-    sensors.push_back({mount.id, *library.find(mount.sensor_id)->find_mode(mount.mode_id), mount.T_robot_sensor});
+    sensors.push_back(
+        {mount.id, *library.find(mount.sensor_id)->find_mode(mount.mode_id), mount.T_robot_sensor});
   }
   const Scene scene = make_scene("cell", 1);
 
@@ -196,7 +205,8 @@ int main(int argc, char** argv) {
   const std::vector<double> voxels = {0.05, 0.1, 0.15, 0.2};
   const std::vector<PersistenceSetting> settings = {{false, 0, 0}};
   std::vector<VoxelMapperParams> grid = sweep_grid(voxels, settings, base);
-  for (const PersistenceSetting& hit : {PersistenceSetting{true, 3, 30}, PersistenceSetting{true, 3, 1500}}) {
+  for (const PersistenceSetting& hit :
+       {PersistenceSetting{true, 3, 30}, PersistenceSetting{true, 3, 1500}}) {
     const std::vector<PersistenceSetting> one = {hit};
     const std::vector<double> tenth = {kResolution};
     for (const VoxelMapperParams& params : sweep_grid(tenth, one, base)) grid.push_back(params);
@@ -211,9 +221,12 @@ int main(int argc, char** argv) {
   params.min_height = kMinHeight;
   const std::vector<OccupancyRun> runs = evaluate_occupancy(scene, sensors, mappers, params);
 
-  std::printf("Cell, %zu frames at %.1f Hz (robot moving until %.0f s), same frames for every mapper\n",
-              runs.front().frames.size(), rate, params.moving_until);
-  std::printf("| mapper | P | R | F1 | F2 | F3 | ghost m2 | ghost mov | ghost still | trail (p90) max m | ms/update |\n");
+  std::printf(
+      "Cell, %zu frames at %.1f Hz (robot moving until %.0f s), same frames for every mapper\n",
+      runs.front().frames.size(), rate, params.moving_until);
+  std::printf(
+      "| mapper | P | R | F1 | F2 | F3 | ghost m2 | ghost mov | ghost still | trail (p90) max m | "
+      "ms/update |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const OccupancyRun& run : runs) print_run(run);
   throughput(scene, sensors);

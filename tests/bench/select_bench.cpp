@@ -32,9 +32,9 @@ void report(benchmark::State& state, const SearchResult& result) {
   state.counters["cost_usd"] = result.cost.total;
   state.counters["nodes"] = static_cast<double>(result.nodes);
   state.counters["rigs_evaluated"] = static_cast<double>(result.evaluations);
-  state.counters["per_rig"] = benchmark::Counter(static_cast<double>(result.evaluations),
-                                                 benchmark::Counter::kIsIterationInvariantRate |
-                                                     benchmark::Counter::kInvert);
+  state.counters["per_rig"] = benchmark::Counter(
+      static_cast<double>(result.evaluations),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_RasteriseCatalog(benchmark::State& state) {
@@ -59,9 +59,16 @@ void BM_SelectWithExactVerification(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(select_cheapest(b.space, b.requirements));
 }
 
-BENCHMARK(BM_RasteriseCatalog)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly();
+BENCHMARK(BM_RasteriseCatalog)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
 BENCHMARK(BM_BranchAndBound)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly();
-BENCHMARK(BM_SelectWithExactVerification)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3)->ReportAggregatesOnly();
+BENCHMARK(BM_SelectWithExactVerification)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
 BENCHMARK(BM_BruteForce)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

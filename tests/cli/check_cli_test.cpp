@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -86,7 +85,8 @@ TEST_CASE("check --format junit writes XML that an independent parser reads") {
   CHECK(result.exit_code == 2);
   CHECK(result.out.empty());
   // Python's ElementTree parses the file and recounts failures and errors from the elements.
-  const std::string script = files.folder.write("count.py", R"(import sys, xml.etree.ElementTree as ET
+  const std::string script =
+      files.folder.write("count.py", R"(import sys, xml.etree.ElementTree as ET
 root = ET.parse(sys.argv[1]).getroot()
 assert root.tag == "testsuites", root.tag
 cases = root.findall("./testsuite/testcase")

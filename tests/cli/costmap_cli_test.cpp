@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -26,7 +25,8 @@ std::pair<int, int> png_size(const std::string& bytes) {
   if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return {0, 0};
   const auto be32 = [&](std::size_t at) {
     int value = 0;
-    for (std::size_t i = 0; i < 4; ++i) value = value * 256 + static_cast<unsigned char>(bytes[at + i]);
+    for (std::size_t i = 0; i < 4; ++i)
+      value = value * 256 + static_cast<unsigned char>(bytes[at + i]);
     return value;
   };
   return {be32(16), be32(20)};
@@ -37,8 +37,9 @@ std::pair<int, int> png_size(const std::string& bytes) {
 TEST_CASE("costmap CLI: outcome, frames, map files and summary", "[scenario]") {
   TempFolder folder;
   const std::string out = folder.path() + "/run";
-  const CliResult result = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario",
-                                    "wall_following", "--frame-every", "20", "--out", out});
+  const CliResult result =
+      run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario",
+               "wall_following", "--frame-every", "20", "--out", out});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   CHECK(result.out.find("collision: none") != std::string::npos);
@@ -65,20 +66,21 @@ TEST_CASE("costmap CLI: outcome, frames, map files and summary", "[scenario]") {
   CHECK(summary["min_clearance_m"].get<double>() <= 0.15 + 1e-9);  // the wall at the start
   CHECK(summary["update_ms"]["p99"].get<double>() >= summary["update_ms"]["median"].get<double>());
   // Frames every 20 updates: updates 0, 20, 40, 60 of the 75 or so the run takes.
-  CHECK(summary["frames"].get<int>() == static_cast<int>((summary["updates"].get<int>() - 1) / 20 + 1));
+  CHECK(summary["frames"].get<int>() ==
+        static_cast<int>((summary["updates"].get<int>() - 1) / 20 + 1));
 }
 
 TEST_CASE("costmap CLI: without the Hit Layer the run reports the collision; --compare tabulates",
           "[scenario]") {
   TempFolder folder;
-  const CliResult single = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario",
-                                    "wall_following", "--no-hit-layer", "--frame-every", "0", "--out",
-                                    folder.path() + "/single"});
+  const CliResult single = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"),
+                                    "--scenario", "wall_following", "--no-hit-layer",
+                                    "--frame-every", "0", "--out", folder.path() + "/single"});
   REQUIRE(single.exit_code == 0);
   CHECK(single.out.find("collision with foam at t = ") != std::string::npos);
-  const CliResult compare = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario",
-                                     "wall_following", "--compare", "--frame-every", "0", "--out",
-                                     folder.path() + "/compare"});
+  const CliResult compare = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"),
+                                     "--scenario", "wall_following", "--compare", "--frame-every",
+                                     "0", "--out", folder.path() + "/compare"});
   REQUIRE(compare.exit_code == 0);
   CHECK(compare.out.find("comparison:") != std::string::npos);
   const auto all = nlohmann::json::parse(read_all(folder.path() + "/compare/comparison.json"));
@@ -101,8 +103,10 @@ TEST_CASE("costmap CLI: bad input names the option and exits 2", "[scenario]") {
     CHECK(result.err.find(option) != std::string::npos);
   };
   refused({"costmap", "--rig", rig, "--scenario", "moon"}, "--scenario");
-  refused({"costmap", "--rig", rig, "--scenario", "wall_following", "--layer", "octomap"}, "--layer");
-  refused({"costmap", "--rig", rig, "--scenario", "wall_following", "--resolution", "0"}, "--resolution");
+  refused({"costmap", "--rig", rig, "--scenario", "wall_following", "--layer", "octomap"},
+          "--layer");
+  refused({"costmap", "--rig", rig, "--scenario", "wall_following", "--resolution", "0"},
+          "--resolution");
   // The UR Cleaner is 0.9 m across.
   refused({"costmap", "--rig", rig, "--scenario", "wall_following", "--window", "0.8"}, "--window");
 

@@ -1,6 +1,6 @@
 #include <cairo.h>
-#include <catch2/catch.hpp>
 
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -31,8 +31,8 @@ struct Png {
   std::array<int, 3> at(double x, double y) const {
     const auto* data = cairo_image_surface_get_data(surface);
     const int stride = cairo_image_surface_get_stride(surface);
-    const auto pixel = *reinterpret_cast<const std::uint32_t*>(
-        data + static_cast<int>(y) * stride + static_cast<int>(x) * 4);
+    const auto pixel = *reinterpret_cast<const std::uint32_t*>(data + static_cast<int>(y) * stride +
+                                                               static_cast<int>(x) * 4);
     return {static_cast<int>((pixel >> 16) & 255), static_cast<int>((pixel >> 8) & 255),
             static_cast<int>(pixel & 255)};
   }
@@ -69,9 +69,9 @@ TEST_CASE("coverage writes curves, sections, 3D views, CSV and JSON") {
                                     "--angles", "0,90", "--step", "10"});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
-  for (const char* name : {"sc_cartesian.png", "sc_cartesian.svg", "sc_polar.png", "sc_polar.svg",
-                           "section_0.png", "section_90.svg", "view_isometric.png", "view_top.png",
-                           "coverage.csv", "coverage.json"}) {
+  for (const char* name :
+       {"sc_cartesian.png", "sc_cartesian.svg", "sc_polar.png", "sc_polar.svg", "section_0.png",
+        "section_90.svg", "view_isometric.png", "view_top.png", "coverage.csv", "coverage.json"}) {
     INFO(name);
     CHECK(std::filesystem::file_size(out + "/" + name) > 100);
   }
@@ -106,7 +106,9 @@ TEST_CASE("a cross-section image shows the sensor's colour where it sees and whi
   // (rho 3.1, z 0.6) is inside the wedge: the sensor colour at 45 % over white.
   const Rgb colour = sensor_colour(0);
   const auto seen = image.at(layout.x(3.1), layout.y(0.6));
-  const auto expected = [](double c) { return static_cast<int>(std::lround(255 * (0.55 + 0.45 * c))); };
+  const auto expected = [](double c) {
+    return static_cast<int>(std::lround(255 * (0.55 + 0.45 * c)));
+  };
   CHECK(std::abs(seen[0] - expected(colour.r)) <= 3);
   CHECK(std::abs(seen[1] - expected(colour.g)) <= 3);
   CHECK(std::abs(seen[2] - expected(colour.b)) <= 3);

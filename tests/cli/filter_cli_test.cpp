@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -39,8 +38,9 @@ TEST_CASE("the real clouds filter without error, in the optical frame and in the
     WARN("shared/data/real is absent: skipped");
     return;
   }
-  const CliResult plain = run_cli({"filter", "--cloud", real_cloud("office1.pcd"), real_cloud("five_people.pcd"),
-                                   "--pipeline", "P3", "--repeat", "1", "--json"});
+  const CliResult plain =
+      run_cli({"filter", "--cloud", real_cloud("office1.pcd"), real_cloud("five_people.pcd"),
+               "--pipeline", "P3", "--repeat", "1", "--json"});
   INFO(plain.err);
   REQUIRE(plain.exit_code == 0);
   const auto report = nlohmann::json::parse(plain.out);
@@ -48,9 +48,10 @@ TEST_CASE("the real clouds filter without error, in the optical frame and in the
   CHECK(report["clouds"][0]["points"] == 254456);  // SOURCES.md's finite-point count
   CHECK(report["clouds"][0]["stages"].size() == 3);
   // Mounted as the UR Cleaner's front camera, the same cloud gets a filtering load.
-  const CliResult mounted = run_cli({"filter", "--cloud", real_cloud("table_scene_mug_stereo_textured.pcd"),
-                                     "--rig", source_path("rigs/ur_cleaner.yaml"), "--mount", "front_camera",
-                                     "--pipeline", "P4", "--repeat", "1", "--json"});
+  const CliResult mounted =
+      run_cli({"filter", "--cloud", real_cloud("table_scene_mug_stereo_textured.pcd"), "--rig",
+               source_path("rigs/ur_cleaner.yaml"), "--mount", "front_camera", "--pipeline", "P4",
+               "--repeat", "1", "--json"});
   REQUIRE(mounted.exit_code == 0);
   const auto item = nlohmann::json::parse(mounted.out)["clouds"][0];
   CHECK(item["filtering_load_cores"].get<double>() > 0.0);
@@ -58,13 +59,16 @@ TEST_CASE("the real clouds filter without error, in the optical frame and in the
 
 TEST_CASE("a pipeline file is pure data; an unknown stage is a located error") {
   TempFolder folder;
-  const std::string good = folder.write("good.yaml", "name: mine\nstages:\n  - voxel_grid: {leaf: 0.05}\n"
-                                                     "  - statistical_outlier\n  - floor_removal_2: {ransac: {max_tilt_deg: 10}}\n");
+  const std::string good =
+      folder.write("good.yaml",
+                   "name: mine\nstages:\n  - voxel_grid: {leaf: 0.05}\n"
+                   "  - statistical_outlier\n  - floor_removal_2: {ransac: {max_tilt_deg: 10}}\n");
   const Pipeline pipeline = load_pipeline(good);
   REQUIRE(pipeline.stages.size() == 3);
   CHECK(std::get<VoxelGridParams>(pipeline.stages[0]).leaf == 0.05);
   CHECK(std::get<StatisticalOutlierParams>(pipeline.stages[1]).neighbours == 10);  // paper default
-  const std::string bad = folder.write("bad.yaml", "name: mine\nstages:\n  - voxel_grid: {leaf: 0.05}\n  - smooth: {}\n");
+  const std::string bad = folder.write(
+      "bad.yaml", "name: mine\nstages:\n  - voxel_grid: {leaf: 0.05}\n  - smooth: {}\n");
   const std::string cloud = folder.write("tiny.pcd", kTinyCloud);
   const CliResult result = run_cli({"filter", "--cloud", cloud, "--pipeline", bad});
   CHECK(result.exit_code == 2);
@@ -75,7 +79,8 @@ TEST_CASE("filter: bad input is exit 2") {
   TempFolder folder;
   const std::string cloud = folder.write("tiny.pcd", kTinyCloud);
   SECTION("a voxel size of zero") {
-    const std::string pipeline = folder.write("p.yaml", "name: p\nstages:\n  - voxel_grid: {leaf: 0}\n");
+    const std::string pipeline =
+        folder.write("p.yaml", "name: p\nstages:\n  - voxel_grid: {leaf: 0}\n");
     const CliResult result = run_cli({"filter", "--cloud", cloud, "--pipeline", pipeline});
     CHECK(result.exit_code == 2);
     CHECK(result.err.find("p.yaml:3:") != std::string::npos);
@@ -91,7 +96,8 @@ TEST_CASE("filter: bad input is exit 2") {
   SECTION("a truncated binary cloud") {
     std::string binary = kTinyCloud;
     binary.replace(binary.find("DATA ascii"), 10, "DATA binary");
-    binary = binary.substr(0, binary.find("DATA binary") + 12) + std::string(20, '\0');  // 4 x 12 bytes declared
+    binary = binary.substr(0, binary.find("DATA binary") + 12) +
+             std::string(20, '\0');  // 4 x 12 bytes declared
     const CliResult result = run_cli({"filter", "--cloud", folder.write("cut.pcd", binary)});
     CHECK(result.exit_code == 2);
     CHECK(result.err.find("cut.pcd") != std::string::npos);

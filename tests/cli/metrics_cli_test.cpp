@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -16,7 +15,8 @@ TEST_CASE("metrics --json on the UR Cleaner gives Table 1's values") {
   CHECK(std::abs(resultant["R"]["value"].get<double>() - 0.122) <= 0.001);
   CHECK(resultant["N"]["value"].get<double>() == Approx(0.030));
   CHECK(resultant["R"]["limiting_mounts"] == nlohmann::json::array({"top_lidar"}));
-  // Sensor cost: one Azure Kinect ($399), three pico flexx ($480 each, estimate), one VLP-16 ($4000).
+  // Sensor cost: one Azure Kinect ($399), three pico flexx ($480 each, estimate), one VLP-16
+  // ($4000).
   CHECK(resultant["sensor_cost_usd"].get<double>() == Approx(399 + 3 * 480 + 4000));
   CHECK(report["mounts"].size() == 5);
   for (const auto& requirement : report["requirements"]["results"]) {

@@ -1,7 +1,6 @@
 // `rigdesign occupancy`: the cell rig, the outputs and bad input (kept to a few coarse frames:
 // CI runs this under ASan).
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -20,10 +19,26 @@ TEST_CASE("the cell rig loads and passes check", "[occupancy]") {
 TEST_CASE("occupancy writes its frames, summary and Pareto plot", "[occupancy]") {
   TempFolder folder;
   const std::string out = folder.path() + "/occ";
-  const CliResult result =
-      run_cli({"occupancy", "--rig", source_path("rigs/cell.yaml"), "--scene", "cell", "--duration", "0.6",
-               "--rate", "5", "--moving-until", "0.2", "--voxels", "0.2", "--persistence", "paper",
-               "--camera-stride", "4", "--out", out, "--json"});
+  const CliResult result = run_cli({"occupancy",
+                                    "--rig",
+                                    source_path("rigs/cell.yaml"),
+                                    "--scene",
+                                    "cell",
+                                    "--duration",
+                                    "0.6",
+                                    "--rate",
+                                    "5",
+                                    "--moving-until",
+                                    "0.2",
+                                    "--voxels",
+                                    "0.2",
+                                    "--persistence",
+                                    "paper",
+                                    "--camera-stride",
+                                    "4",
+                                    "--out",
+                                    out,
+                                    "--json"});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   const auto report = nlohmann::json::parse(result.out);
@@ -31,9 +46,10 @@ TEST_CASE("occupancy writes its frames, summary and Pareto plot", "[occupancy]")
   CHECK(report["runs"][0]["persistence"] == "none");
   CHECK(report["runs"][1]["persistence"] == "hit 3/1500");
   CHECK(report["runs"][0]["all"]["frames"] == 3);
-  CHECK(report["runs"][0]["moving"]["frames"] == 1);     // t = 0 only
+  CHECK(report["runs"][0]["moving"]["frames"] == 1);      // t = 0 only
   CHECK(report["runs"][0]["stationary"]["frames"] == 2);  // t = 0.2, 0.4
-  for (const char* name : {"occupancy_frames.csv", "occupancy_summary.json", "occupancy_pareto.png"}) {
+  for (const char* name :
+       {"occupancy_frames.csv", "occupancy_summary.json", "occupancy_pareto.png"}) {
     CHECK(std::filesystem::file_size(std::filesystem::path(out) / name) > 0);
   }
 }

@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 
 #include "support/cli_runner.hpp"
@@ -64,13 +63,15 @@ struct SmallSetup {
 
 }  // namespace
 
-TEST_CASE("select on the bundled catalog relaxes in the policy's order and writes a rig check accepts") {
+TEST_CASE(
+    "select on the bundled catalog relaxes in the policy's order and writes a rig check accepts") {
   TempFolder folder;
   const std::string out = folder.path() + "/selection";
-  const CliResult result = run_cli(
-      {"select", "--catalog", source_path("rigs/catalogs/ur_cleaner.yaml"), "--requirements",
-       source_path("rigs/requirements/ur_cleaner.yaml"), "--policy",
-       source_path("rigs/policies/ur_cleaner.yaml"), "--budget", "3000", "--no-renders", "--out", out});
+  const CliResult result =
+      run_cli({"select", "--catalog", source_path("rigs/catalogs/ur_cleaner.yaml"),
+               "--requirements", source_path("rigs/requirements/ur_cleaner.yaml"), "--policy",
+               source_path("rigs/policies/ur_cleaner.yaml"), "--budget", "3000", "--no-renders",
+               "--out", out});
   INFO(result.out << result.err);
   REQUIRE(result.exit_code == 0);
   // The policy's first two steps, in its order, then a rig within budget.
@@ -99,11 +100,13 @@ TEST_CASE("an exhausted policy exits 1 naming the binding requirements") {
 
 TEST_CASE("requirements no candidate can meet are reported, exit 1") {
   // 1 mm of noise at 2.5 m: no candidate comes close (the D435's is 22 mm there).
-  SmallSetup setup(kSmallRequirements + "accuracy: {max_noise: 0.001}\n", "name: none\nsteps: []\n");
+  SmallSetup setup(kSmallRequirements + "accuracy: {max_noise: 0.001}\n",
+                   "name: none\nsteps: []\n");
   const CliResult result = setup.select("5000");
   CHECK(result.exit_code == 1);
-  CHECK(result.out.find("no rig: no combination of the catalog's options meets every requirement") !=
-        std::string::npos);
+  CHECK(
+      result.out.find("no rig: no combination of the catalog's options meets every requirement") !=
+      std::string::npos);
 }
 
 TEST_CASE("select: bad input is exit 2 with the file and line") {
@@ -123,18 +126,21 @@ TEST_CASE("select: bad input is exit 2 with the file and line") {
                      "name: p\nsteps:\n  - {relax: robot_speed.top_speed, to: 0.5}\n");
     const CliResult result = setup.select("5000");
     CHECK(result.exit_code == 2);
-    CHECK(result.err.find("policy.yaml:3:5: steps.relax: 'robot_speed.top_speed' is not a relaxable") !=
+    CHECK(result.err.find(
+              "policy.yaml:3:5: steps.relax: 'robot_speed.top_speed' is not a relaxable") !=
           std::string::npos);
   }
   SECTION("a policy step that tightens") {
-    SmallSetup setup(kSmallRequirements, "name: p\nsteps:\n  - {relax: robot_speed.max_speed, to: 2}\n");
+    SmallSetup setup(kSmallRequirements,
+                     "name: p\nsteps:\n  - {relax: robot_speed.max_speed, to: 2}\n");
     const CliResult result = setup.select("5000");
     CHECK(result.exit_code == 2);
     CHECK(result.err.find("policy.yaml:3:5:") != std::string::npos);
     CHECK(result.err.find("tightens") != std::string::npos);
   }
   SECTION("a value with units where a plain SI number is expected") {
-    SmallSetup setup(kSmallRequirements, "name: p\nsteps:\n  - {relax: robot_speed.max_speed, to: 0.5 m/s}\n");
+    SmallSetup setup(kSmallRequirements,
+                     "name: p\nsteps:\n  - {relax: robot_speed.max_speed, to: 0.5 m/s}\n");
     const CliResult result = setup.select("5000");
     CHECK(result.exit_code == 2);
     CHECK(result.err.find("policy.yaml:3:") != std::string::npos);
@@ -143,7 +149,8 @@ TEST_CASE("select: bad input is exit 2 with the file and line") {
   SECTION("an empty catalog") {
     SmallSetup setup;
     std::string text = small_catalog();
-    text.replace(text.find("sensors:\n"), text.find("slots:") - text.find("sensors:\n"), "sensors: []\n");
+    text.replace(text.find("sensors:\n"), text.find("slots:") - text.find("sensors:\n"),
+                 "sensors: []\n");
     setup.folder.write("catalog.yaml", text);
     const CliResult result = setup.select("5000");
     CHECK(result.exit_code == 2);

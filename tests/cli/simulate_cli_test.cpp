@@ -1,6 +1,5 @@
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -14,8 +13,8 @@ using namespace rigdesign::test;
 TEST_CASE("simulate writes one cloud per sensor and frame that reads back, the same for a seed") {
   TempFolder folder;
   const auto run = [&](const std::string& out) {
-    return run_cli({"simulate", source_path("rigs/elektron.yaml"), "--scene", "corridor", "--frames", "2",
-                    "--seed", "3", "--out", folder.path() + "/" + out});
+    return run_cli({"simulate", source_path("rigs/elektron.yaml"), "--scene", "corridor",
+                    "--frames", "2", "--seed", "3", "--out", folder.path() + "/" + out});
   };
   REQUIRE(run("a").exit_code == 0);
   REQUIRE(run("b").exit_code == 0);
@@ -34,8 +33,8 @@ TEST_CASE("simulate writes one cloud per sensor and frame that reads back, the s
 }
 
 TEST_CASE("filter measures each sensor's filtering load in a simulated scene") {
-  const CliResult result = run_cli({"filter", "--rig", source_path("rigs/elektron.yaml"), "--scene", "office",
-                                    "--frames", "2", "--pipeline", "P3", "--json"});
+  const CliResult result = run_cli({"filter", "--rig", source_path("rigs/elektron.yaml"), "--scene",
+                                    "office", "--frames", "2", "--pipeline", "P3", "--json"});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   const auto report = nlohmann::json::parse(result.out);
@@ -45,8 +44,9 @@ TEST_CASE("filter measures each sensor's filtering load in a simulated scene") {
 
 TEST_CASE("simulate takes a scene file: the lab's walls where the room's mesh puts them") {
   TempFolder folder;
-  const CliResult result = run_cli({"simulate", source_path("rigs/elektron.yaml"), "--scene",
-                                    source_path("rigs/scenes/lab/lab.yaml"), "--frames", "1", "--out", folder.path()});
+  const CliResult result =
+      run_cli({"simulate", source_path("rigs/elektron.yaml"), "--scene",
+               source_path("rigs/scenes/lab/lab.yaml"), "--frames", "1", "--out", folder.path()});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   // The robot starts at (-1.2, -1.0) facing +x in a 6 x 4 m room (walls at x = +-3, y = +-2);
@@ -60,14 +60,16 @@ TEST_CASE("simulate takes a scene file: the lab's walls where the room's mesh pu
   };
   CHECK(nearest_to({4.2f, 0.0f, 0.2f}) < 0.05f);
   CHECK(nearest_to({0.27f, 3.0f, 0.2f}) < 0.05f);
-  const CliResult missing = run_cli({"simulate", source_path("rigs/elektron.yaml"), "--scene", "nowhere/lab.yaml"});
+  const CliResult missing =
+      run_cli({"simulate", source_path("rigs/elektron.yaml"), "--scene", "nowhere/lab.yaml"});
   CHECK(missing.exit_code == 2);
   CHECK(missing.err.find("--scene") != std::string::npos);
 }
 
 TEST_CASE("simulate and filter refuse an unknown scene") {
   CHECK(run_cli({"simulate", source_path("rigs/elektron.yaml"), "--scene", "moon"}).exit_code == 2);
-  const CliResult result = run_cli({"filter", "--rig", source_path("rigs/elektron.yaml"), "--scene", "moon"});
+  const CliResult result =
+      run_cli({"filter", "--rig", source_path("rigs/elektron.yaml"), "--scene", "moon"});
   CHECK(result.exit_code == 2);
   CHECK(result.err.find("--scene") != std::string::npos);
 }

@@ -1,6 +1,5 @@
 // Issue 6 item 5: the occupancy evaluation's own parts, each against a hand count.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "rigdesign/costmap/occupancy_evaluation.hpp"
@@ -16,7 +15,8 @@ namespace {
 TriangleMesh box(const Vec3& low, const Vec3& high) {
   TriangleMesh mesh;
   for (int i = 0; i < 8; ++i) {
-    mesh.vertices.emplace_back(i & 1 ? high.x() : low.x(), i & 2 ? high.y() : low.y(), i & 4 ? high.z() : low.z());
+    mesh.vertices.emplace_back(i & 1 ? high.x() : low.x(), i & 2 ? high.y() : low.y(),
+                               i & 4 ? high.z() : low.z());
   }
   mesh.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
                     {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 3, 7}, {1, 7, 5}};
@@ -77,8 +77,8 @@ TEST_CASE("the trail behind a moving object and its length along the path", "[oc
   }
   CHECK(frame.ghost_area == Approx(4 * 0.25));  // cells 0, 1, 2 and the stray 4
   CHECK(frame.trail_area == Approx(3 * 0.25));  // the stray is no trail
-  CHECK(frame.oldest_trail_time == 0.0);         // cell 0, left after t = 0
-  CHECK(frame.trail_p90_time == 0.0);            // rank ceil(0.1 x 3) = 1: the oldest of three
+  CHECK(frame.oldest_trail_time == 0.0);        // cell 0, left after t = 0
+  CHECK(frame.trail_p90_time == 0.0);           // rank ceil(0.1 x 3) = 1: the oldest of three
   CHECK(path.length_since(frame.oldest_trail_time) == Approx(3.0));
   CHECK(path.length_since(1.5) == Approx(2.0));  // from the frame at t = 1
   CHECK(path.length_since(-5.0) == Approx(3.0));
@@ -101,7 +101,9 @@ class FixedMapper final : public OccupancyMapper {
  public:
   std::string name() const override { return "fixed"; }
   VoxelLattice lattice() const override { return {0.5, 0.5, 0.0, 2.0}; }
-  void update(double, std::span<const PointCloud>, bool robot_moving) override { flags.push_back(robot_moving); }
+  void update(double, std::span<const PointCloud>, bool robot_moving) override {
+    flags.push_back(robot_moving);
+  }
   std::vector<VoxelKey> occupied() const override { return {{4, 4, 1}}; }
   std::vector<bool> flags;
 };
@@ -109,8 +111,9 @@ class FixedMapper final : public OccupancyMapper {
 Scene sliding_box_scene() {
   Scene scene;
   scene.name = "sliding box";
-  scene.moving.push_back({"box", box({-0.2, -0.2, 0.0}, {0.2, 0.2, 1.0}),
-                          [](double t) { return Pose3(Eigen::Translation3d(-2.0 + 0.5 * t, 0.0, 0.0)); }});
+  scene.moving.push_back({"box", box({-0.2, -0.2, 0.0}, {0.2, 0.2, 1.0}), [](double t) {
+                            return Pose3(Eigen::Translation3d(-2.0 + 0.5 * t, 0.0, 0.0));
+                          }});
   return scene;
 }
 

@@ -46,8 +46,8 @@ ScenarioResult run(const std::string& name, ObstacleLayerKind layer, bool hit_la
   params.costmap.layer = layer;
   params.costmap.use_hit_layer = hit_layer;
   params.costmap.hit.d_threshold = d_threshold;
-  return run_scenario(make_costmap_scenario(name, 1), ur_cleaner().rig, ur_cleaner().library, params,
-                      on_update);
+  return run_scenario(make_costmap_scenario(name, 1), ur_cleaner().rig, ur_cleaner().library,
+                      params, on_update);
 }
 
 // Largest Hit Layer count over the cells whose centres lie in the stationary scenario's
@@ -102,7 +102,8 @@ TEST_CASE("collision check: clearance to a hand-placed box within the body's hei
 TEST_CASE("path follower: pure pursuit command and the unicycle's exact arc", "[scenario]") {
   FollowerParams params;  // 0.4 m/s, 1 rad/s, lookahead 0.6 m
   // Straight ahead: full speed, no turn.
-  VelocityCommand straight = pursue({{0.0, 0.0}, {0.3, 0.0}, {0.6, 0.0}, {0.9, 0.0}}, Pose2{}, params);
+  VelocityCommand straight =
+      pursue({{0.0, 0.0}, {0.3, 0.0}, {0.6, 0.0}, {0.9, 0.0}}, Pose2{}, params);
   CHECK(straight.linear == Approx(0.4));
   CHECK(straight.angular == Approx(0.0).margin(1e-12));
   // Target (0.6, 0.6): 45 degrees left at 0.6 sqrt 2 m, curvature 2 sin 45 / (0.6 sqrt 2) = 5/3.
@@ -194,10 +195,14 @@ TEST_CASE("stationary: the motion condition keeps the cart's cells while the rob
   // With d_threshold = 0 the robot always counts as moving: the updates from 3.0 s to 11.8 s
   // (45 of them) take the count from 45 to 0 while it waits.
   int dropped = -1;
-  run("stationary", ObstacleLayerKind::obstacle, true, [&](const ScenarioStep& step) {
-    if (std::abs(step.time - 5.0) < 1e-9) CHECK(cart_cells(*step.costmap).max_count == kSeen - 11);
-    if (std::abs(step.time - 11.8) < 1e-9) dropped = cart_cells(*step.costmap).max_count;
-  }, 0.0);
+  run(
+      "stationary", ObstacleLayerKind::obstacle, true,
+      [&](const ScenarioStep& step) {
+        if (std::abs(step.time - 5.0) < 1e-9)
+          CHECK(cart_cells(*step.costmap).max_count == kSeen - 11);
+        if (std::abs(step.time - 11.8) < 1e-9) dropped = cart_cells(*step.costmap).max_count;
+      },
+      0.0);
   CHECK(dropped == 0);
 }
 

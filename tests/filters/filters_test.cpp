@@ -1,6 +1,5 @@
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
@@ -65,9 +64,11 @@ TEST_CASE("voxel grid returns each voxel's centroid") {
   // (0.2, 0.3, 0.15); (1.5, 0.2, 0.2) is alone in voxel (1, 0, 0).
   VoxelGridParams params;
   params.leaf = 1.0;
-  PointCloud result = voxel_grid(cloud_of({{0.1f, 0.1f, 0.1f}, {1.5f, 0.2f, 0.2f}, {0.3f, 0.5f, 0.2f}}), params);
+  PointCloud result =
+      voxel_grid(cloud_of({{0.1f, 0.1f, 0.1f}, {1.5f, 0.2f, 0.2f}, {0.3f, 0.5f, 0.2f}}), params);
   REQUIRE(result.size() == 2);
-  std::sort(result.points.begin(), result.points.end(), [](const Point3f& a, const Point3f& b) { return a.x() < b.x(); });
+  std::sort(result.points.begin(), result.points.end(),
+            [](const Point3f& a, const Point3f& b) { return a.x() < b.x(); });
   CHECK(result.points[0].isApprox(Point3f(0.2f, 0.3f, 0.15f), 1e-6f));
   CHECK(result.points[1].isApprox(Point3f(1.5f, 0.2f, 0.2f), 1e-6f));
   // With boundaries at multiples of 1 m, 0.4 and 0.6 share a voxel; shifted by half a leaf
@@ -99,7 +100,8 @@ TEST_CASE("statistical outlier removal matches a brute-force neighbour search") 
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   std::vector<Point3f> points = noisy_floor(1.0, 0.02, 0.002, rng);
-  for (int i = 0; i < 40; ++i) points.emplace_back(unit(rng), unit(rng), 0.2f + 0.5f * std::abs(unit(rng)));
+  for (int i = 0; i < 40; ++i)
+    points.emplace_back(unit(rng), unit(rng), 0.2f + 0.5f * std::abs(unit(rng)));
   const PointCloud cloud = cloud_of(points);
   const std::vector<std::uint32_t> expected = brute_force_inliers(points, 10);
   for (const double cell : {0.0, 0.01, 0.05, 0.5}) {  // the cell changes speed, never results
@@ -110,7 +112,8 @@ TEST_CASE("statistical outlier removal matches a brute-force neighbour search") 
   // Every planted outlier goes; the floor stays.
   const std::vector<std::uint32_t> kept = statistical_outlier_inliers(cloud);
   const std::size_t floor_points = points.size() - 40;
-  CHECK(std::count_if(kept.begin(), kept.end(), [&](std::uint32_t i) { return i >= floor_points; }) == 0);
+  CHECK(std::count_if(kept.begin(), kept.end(),
+                      [&](std::uint32_t i) { return i >= floor_points; }) == 0);
   CHECK(static_cast<double>(kept.size()) >= 0.8 * static_cast<double>(floor_points));
 }
 
@@ -119,7 +122,8 @@ TEST_CASE("statistical outlier removal: duplicates, far loners and fewer points 
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::vector<Point3f> points;
   for (int i = 0; i < 300; ++i) points.emplace_back(unit(rng), unit(rng), 0.1f * unit(rng));
-  for (int i = 0; i < 20; ++i) points.push_back(points[static_cast<std::size_t>(i) * 7]);  // exact duplicates
+  for (int i = 0; i < 20; ++i)
+    points.push_back(points[static_cast<std::size_t>(i) * 7]);  // exact duplicates
   points.emplace_back(40.0f, -30.0f, 5.0f);  // far from everything: the search radius must grow
   points.emplace_back(40.5f, -30.0f, 5.0f);
   for (const double cell : {0.0, 0.003, 0.2}) {
@@ -140,7 +144,8 @@ TEST_CASE("RANSAC recovers a known plane within 1 degree with 30 % outliers") {
   const Eigen::Vector3f u = Eigen::Vector3f::UnitX();
   const Eigen::Vector3f v = normal.cross(u);
   std::vector<Point3f> points;
-  for (int i = 0; i < 700; ++i) points.push_back(unit(rng) * u + unit(rng) * v + noise(rng) * normal);
+  for (int i = 0; i < 700; ++i)
+    points.push_back(unit(rng) * u + unit(rng) * v + noise(rng) * normal);
   for (int i = 0; i < 300; ++i) points.emplace_back(unit(rng), unit(rng), unit(rng));
   const PointCloud cloud = cloud_of(points);
   const PlaneFit fit = fit_plane_ransac(cloud, RansacPlaneParams{100, 0.03, 42, 0.99, {}});
@@ -169,7 +174,8 @@ TEST_CASE("floor removal drops the floor and keeps a 5 cm box standing on it") {
   PointCloud cloud = cloud_of(points);
   cloud.origin = Point3f(0, 0, 0.8f);
   const auto count_box = [](const PointCloud& c) {
-    return std::count_if(c.points.begin(), c.points.end(), [](const Point3f& p) { return p.z() > 0.045f; });
+    return std::count_if(c.points.begin(), c.points.end(),
+                         [](const Point3f& p) { return p.z() > 0.045f; });
   };
   for (int variant = 1; variant <= 2; ++variant) {
     INFO("floor removal " << variant);
@@ -186,7 +192,7 @@ TEST_CASE("negative obstacles: mirrored point and virtual point on the ray to th
   cloud.origin = Point3f(0, 0, 1.0f);
   const PointCloud marked = mark_negative_obstacles(cloud);
   REQUIRE(marked.size() == 3);
-  CHECK(marked.points[0].isApprox(Point3f(2.0f, 0.0f, 0.5f)));   // mirrored
+  CHECK(marked.points[0].isApprox(Point3f(2.0f, 0.0f, 0.5f)));    // mirrored
   CHECK(marked.points[1].isApprox(Point3f(1.0f, 1.0f, -0.01f)));  // above -2 cm: kept as is
   // s = o_z / (o_z - z) = 1 / 1.5: P'' = (2 * 2/3, 0, 0.1).
   CHECK(marked.points[2].isApprox(Point3f(4.0f / 3.0f, 0.0f, 0.1f), 1e-6f));

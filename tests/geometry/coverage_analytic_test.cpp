@@ -1,6 +1,5 @@
 // Spatial coverage against areas computed by hand (paper 1, section 2.3).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "rigdesign/geometry/cross_section.hpp"
@@ -92,7 +91,9 @@ TEST_CASE("a horizontal pyramid on the body's front: a wedge in the forward sect
   SECTION("a 2 m range cap cuts the wedge with a circle around the sensor") {
     // Beyond s*, the strip |y| <= 0.5 (y = z - z0) inside the disk s^2 + y^2 <= 4:
     // integral of sqrt(4 - y^2) - s* over y in [-0.5, 0.5].
-    const auto primitive = [](double y) { return y / 2 * std::sqrt(4 - y * y) + 2 * std::asin(y / 2); };
+    const auto primitive = [](double y) {
+      return y / 2 * std::sqrt(4 - y * y) + 2 * std::asin(y / 2);
+    };
     const double capped = t * s_star * s_star + (primitive(0.5) - primitive(-0.5)) - s_star;
     TestRig capped_rig(pyramid(60, 40, 0.0, 2.0), 0.5, 1.0, 3.5);
     capped_rig.mount({0.5, 0, 0.5}, {0, 0, 0});
@@ -173,7 +174,8 @@ TEST_CASE("a mirror-symmetric rig has SC(theta) = SC(-theta)") {
 
 TEST_CASE("the raster path stays within 0.5 % of the exact path on every bundled rig") {
   const SensorLibrary library = load_sensor_library(test::source_path("sensors.yaml"));
-  for (const char* file : {"rigs/ur_cleaner.yaml", "rigs/elektron.yaml", "rigs/delivery_amr.yaml"}) {
+  for (const char* file :
+       {"rigs/ur_cleaner.yaml", "rigs/elektron.yaml", "rigs/delivery_amr.yaml"}) {
     INFO(file);
     const RigCoverage coverage = compute_coverage(load_rig(test::source_path(file)), library, {});
     CHECK(coverage.raster_error_complete <= 0.005);
@@ -185,14 +187,16 @@ TEST_CASE("azimuth culling never drops a section a sensor sees") {
   // Where the conservative bound says a sensor cannot reach an azimuth, the exact column
   // coverage (which does no culling) must be empty at every rho.
   const SensorLibrary library = load_sensor_library(test::source_path("sensors.yaml"));
-  for (const char* file : {"rigs/ur_cleaner.yaml", "rigs/elektron.yaml", "rigs/delivery_amr.yaml"}) {
+  for (const char* file :
+       {"rigs/ur_cleaner.yaml", "rigs/elektron.yaml", "rigs/delivery_amr.yaml"}) {
     const Rig rig = load_rig(test::source_path(file));
     const BodyOccluder body(rig.body);
     for (const Mount& mount : rig.mounts) {
       const MountedFov fov(*library.find(mount.sensor_id)->find_mode(mount.mode_id),
                            mount.T_robot_sensor, body);
       for (int degrees = 0; degrees < 360; degrees += 2) {
-        const SectionFrame frame = section_frame(body, deg_to_rad(degrees), rig.distance_of_interest);
+        const SectionFrame frame =
+            section_frame(body, deg_to_rad(degrees), rig.distance_of_interest);
         if (fov.may_reach_azimuth(frame.theta)) continue;
         for (double rho = frame.r; rho <= frame.d; rho += 0.05) {
           INFO(file << " " << mount.id << " theta " << degrees << " rho " << rho);

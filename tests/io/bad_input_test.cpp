@@ -12,8 +12,8 @@ namespace {
 
 struct BadCase {
   const char* name;
-  const char* file;         // "sensors.yaml", "rig.yaml" or "req.yaml"
-  std::string from;         // text replaced in the valid fixture
+  const char* file;  // "sensors.yaml", "rig.yaml" or "req.yaml"
+  std::string from;  // text replaced in the valid fixture
   std::string to;
   std::string field;        // field path the message must name
   std::string line_marker;  // text on the line the message must point at
@@ -64,8 +64,8 @@ TEST_CASE("bad input: exit 2 with file:line:col and the field") {
        "id: front\n    sensor: spin"},
       {"empty rig", "rig.yaml", kRig.substr(kRig.find("mounts:")), "mounts: []\n", "mounts",
        "mounts: []"},
-      {"requirement out of range", "req.yaml", "min_floor_coverage: 0.0",
-       "min_floor_coverage: 1.5", "sectors[0].min_floor_coverage", "min_floor_coverage: 1.5"},
+      {"requirement out of range", "req.yaml", "min_floor_coverage: 0.0", "min_floor_coverage: 1.5",
+       "sectors[0].min_floor_coverage", "min_floor_coverage: 1.5"},
       {"negative frequency", "sensors.yaml", "frequency: 30", "frequency: -30",
        "sensors[0].modes[0].frequency", "frequency: -30"},
       {"key given twice", "rig.yaml", "distance_of_interest: 3.0",
@@ -92,9 +92,13 @@ TEST_CASE("bad input: exit 2 with file:line:col and the field") {
   for (const BadCase& bad : cases) {
     DYNAMIC_SECTION(bad.name) {
       TempFolder folder;
-      const std::string library = bad.file == std::string("sensors.yaml") ? replaced(kLibrary, bad.from, bad.to) : kLibrary;
-      const std::string rig_text = bad.file == std::string("rig.yaml") ? replaced(kRig, bad.from, bad.to) : kRig;
-      const std::string requirements = bad.file == std::string("req.yaml") ? replaced(kRequirements, bad.from, bad.to) : kRequirements;
+      const std::string library =
+          bad.file == std::string("sensors.yaml") ? replaced(kLibrary, bad.from, bad.to) : kLibrary;
+      const std::string rig_text =
+          bad.file == std::string("rig.yaml") ? replaced(kRig, bad.from, bad.to) : kRig;
+      const std::string requirements = bad.file == std::string("req.yaml")
+                                           ? replaced(kRequirements, bad.from, bad.to)
+                                           : kRequirements;
       folder.write("sensors.yaml", library);
       folder.write("req.yaml", requirements);
       const std::string rig = folder.write("rig.yaml", rig_text);

@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <set>
 
@@ -49,10 +48,10 @@ TEST_CASE("every bundled rig and requirement file loads and resolves") {
 TEST_CASE("the sensor library holds the sensors the product card asks for") {
   const SensorLibrary library = load_sensor_library(source_path("sensors.yaml"));
   CHECK(library.sensors.size() >= 12);
-  for (const char* id : {"azure_kinect_dk", "pmd_pico_flexx", "velodyne_vlp16", "kinect_v1",
-                         "sick_lms100", "realsense_d435", "realsense_d455", "ouster_os1_64",
-                         "hokuyo_ust_10lx", "livox_mid360", "orbbec_femto_bolt", "zed2",
-                         "rplidar_a2m8"}) {
+  for (const char* id :
+       {"azure_kinect_dk", "pmd_pico_flexx", "velodyne_vlp16", "kinect_v1", "sick_lms100",
+        "realsense_d435", "realsense_d455", "ouster_os1_64", "hokuyo_ust_10lx", "livox_mid360",
+        "orbbec_femto_bolt", "zed2", "rplidar_a2m8"}) {
     INFO(id);
     CHECK(library.find(id) != nullptr);
   }
@@ -64,7 +63,8 @@ TEST_CASE("the sensor library holds the sensors the product card asks for") {
   }
   // Azure Kinect: the four depth modes of its datasheet; VLP-16: 5, 10, 15 and 20 Hz.
   const Sensor& azure = *library.find("azure_kinect_dk");
-  for (const char* mode : {"nfov_unbinned_30", "nfov_binned_30", "wfov_binned_30", "wfov_unbinned_15"}) {
+  for (const char* mode :
+       {"nfov_unbinned_30", "nfov_binned_30", "wfov_binned_30", "wfov_unbinned_15"}) {
     CHECK(azure.find_mode(mode) != nullptr);
   }
   std::set<double> rates;
@@ -95,7 +95,7 @@ sensors:
 )");
   const SensorLibrary library = load_sensor_library(file);
   const SensorMode& grid = library.sensors[0].modes[0];
-  CHECK(grid.angular_resolution_h == Approx(deg_to_rad(0.1)));  // 60 deg / 600 px
+  CHECK(grid.angular_resolution_h == Approx(deg_to_rad(0.1)));   // 60 deg / 600 px
   CHECK(*grid.angular_resolution_v == Approx(deg_to_rad(0.1)));  // 40 deg / 400 px
   CHECK(grid.points_per_frame == 240000);
   CHECK(grid.bytes_per_frame == 480000);

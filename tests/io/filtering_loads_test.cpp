@@ -2,7 +2,6 @@
 // sensor unless the candidate gives its own, and metrics turns s/point into U_f with the
 // datasheet's points per second (paper 1, eq. 5).
 #include <catch2/catch.hpp>
-
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -36,7 +35,12 @@ std::string read_text(const std::string& path) {
 
 TEST_CASE("a filtering-loads file round-trips and merges sensor by sensor", "[filtering_loads]") {
   const TempFolder folder;
-  FilteringLoads loads{"m", "P4", "office", 20, {{"azure_kinect_dk", "nfov_unbinned_30", 3.94e-8, 260468, 0.0102, {}}}, {}};
+  FilteringLoads loads{"m",
+                       "P4",
+                       "office",
+                       20,
+                       {{"azure_kinect_dk", "nfov_unbinned_30", 3.94e-8, 260468, 0.0102, {}}},
+                       {}};
   const std::string path = folder.write("loads.yaml", filtering_loads_to_yaml(loads, "a\nb"));
   const FilteringLoads back = load_filtering_loads(path);
   CHECK(back.machine == "m");
@@ -46,7 +50,8 @@ TEST_CASE("a filtering-loads file round-trips and merges sensor by sensor", "[fi
   CHECK(back.sensors[0].seconds_per_point == Approx(3.94e-8).epsilon(1e-6));
   CHECK(back.sensors[0].points_per_frame == 260468);
 
-  const FilteringLoads newer{"m2", "P2", "corridor", 5, {{"velodyne_vlp16", "", 1e-7, 1, 1, {}}}, {}};
+  const FilteringLoads newer{"m2", "P2", "corridor", 5, {{"velodyne_vlp16", "", 1e-7, 1, 1, {}}},
+                             {}};
   const FilteringLoads merged = merge_filtering_loads(back, newer);
   CHECK(merged.machine == "m2");
   REQUIRE(merged.sensors.size() == 2);
@@ -60,7 +65,8 @@ TEST_CASE("a catalog takes measured loads unless a candidate gives its own", "[f
   catalog.replace(catalog.find("sensor_library: "), 0, "filtering_loads: loads.yaml\n");
   const std::string own = "{sensor: pmd_pico_flexx, modes: [";
   REQUIRE(catalog.find(own) != std::string::npos);
-  catalog.replace(catalog.find(own), own.size(), "{sensor: pmd_pico_flexx, filtering_seconds_per_point: 5.0e-7, modes: [");
+  catalog.replace(catalog.find(own), own.size(),
+                  "{sensor: pmd_pico_flexx, filtering_seconds_per_point: 5.0e-7, modes: [");
   // The catalog names its sensor library and URDF relative to itself.
   const std::string library = "sensor_library: ";
   const std::size_t at = catalog.find(library) + library.size();
@@ -68,8 +74,10 @@ TEST_CASE("a catalog takes measured loads unless a candidate gives its own", "[f
   folder.write("loads.yaml", kLoads);
   const Catalog loaded = load_catalog(folder.write("catalog.yaml", catalog));
   for (const CandidateSensor& candidate : loaded.sensors) {
-    if (candidate.sensor_id == "azure_kinect_dk") CHECK(candidate.filtering_seconds_per_point == 1.0e-8);
-    if (candidate.sensor_id == "pmd_pico_flexx") CHECK(candidate.filtering_seconds_per_point == 5.0e-7);
+    if (candidate.sensor_id == "azure_kinect_dk")
+      CHECK(candidate.filtering_seconds_per_point == 1.0e-8);
+    if (candidate.sensor_id == "pmd_pico_flexx")
+      CHECK(candidate.filtering_seconds_per_point == 5.0e-7);
     if (candidate.sensor_id == "velodyne_vlp16") CHECK_FALSE(candidate.filtering_seconds_per_point);
   }
 
@@ -86,10 +94,12 @@ TEST_CASE("a catalog takes measured loads unless a candidate gives its own", "[f
   }
 }
 
-TEST_CASE("metrics --filtering-loads: U_f = s/point x the datasheet's points per second", "[filtering_loads]") {
+TEST_CASE("metrics --filtering-loads: U_f = s/point x the datasheet's points per second",
+          "[filtering_loads]") {
   const TempFolder folder;
   const std::string loads = folder.write("loads.yaml", kLoads);
-  const CliResult result = run_cli({"metrics", source_path("rigs/ur_cleaner.yaml"), "--filtering-loads", loads, "--json"});
+  const CliResult result = run_cli(
+      {"metrics", source_path("rigs/ur_cleaner.yaml"), "--filtering-loads", loads, "--json"});
   REQUIRE(result.exit_code == 0);
   const nlohmann::json report = nlohmann::json::parse(result.out);
   const nlohmann::json& mounts = report["filtering_load"]["mounts_cores"];
@@ -101,11 +111,13 @@ TEST_CASE("metrics --filtering-loads: U_f = s/point x the datasheet's points per
         Approx(1e-8 * 640 * 576 * 30 + 3 * 2e-8 * 224 * 171 * 15));
 }
 
-TEST_CASE("filter --write-loads records every sensor of the rig; without --scene it is refused", "[filtering_loads]") {
+TEST_CASE("filter --write-loads records every sensor of the rig; without --scene it is refused",
+          "[filtering_loads]") {
   const TempFolder folder;
   const std::string path = folder.path() + "/loads.yaml";
-  const CliResult result = run_cli({"filter", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scene", "corridor",
-                                    "--frames", "2", "--pipeline", "P3", "--write-loads", path, "--json"});
+  const CliResult result =
+      run_cli({"filter", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scene", "corridor",
+               "--frames", "2", "--pipeline", "P3", "--write-loads", path, "--json"});
   REQUIRE(result.exit_code == 0);
   const nlohmann::json report = nlohmann::json::parse(result.out);
   const FilteringLoads loads = load_filtering_loads(path);
@@ -114,7 +126,8 @@ TEST_CASE("filter --write-loads records every sensor of the rig; without --scene
   CHECK(loads.sensors.size() == 3);  // the Azure Kinect, the pico flexx (three mounts), the VLP-16
   for (const nlohmann::json& mount : report["mounts"]) {
     if (mount["mount"] != "front_camera") continue;
-    const double per_point = mount["median_s"].get<double>() / mount["points_per_frame"].get<double>();
+    const double per_point =
+        mount["median_s"].get<double>() / mount["points_per_frame"].get<double>();
     CHECK(loads.find("azure_kinect_dk")->seconds_per_point == Approx(per_point).epsilon(1e-4));
   }
   const CliResult refused = run_cli({"filter", "--cloud", "x.pcd", "--write-loads", path});

@@ -175,8 +175,8 @@ TEST_CASE("a unit cube reads as 12 triangles of area 6 from every format", "[mes
 TEST_CASE("polygons are split into a fan around their first corner", "[mesh_scene]") {
   TempFolder folder;
   // A convex pentagon's corners in order; the fan is (0,1,2), (0,2,3), (0,3,4).
-  const TriangleMesh pentagon = load_mesh(folder.write(
-      "pentagon.obj", "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nf 1 2 3 4 5\n"));
+  const TriangleMesh pentagon = load_mesh(
+      folder.write("pentagon.obj", "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nf 1 2 3 4 5\n"));
   REQUIRE(pentagon.triangles.size() == 3);
   CHECK(pentagon.triangles[0] == std::array<int, 3>{0, 1, 2});
   CHECK(pentagon.triangles[1] == std::array<int, 3>{0, 2, 3});
@@ -276,16 +276,16 @@ TEST_CASE("bad mesh files name the file, line, column and field", "[mesh_scene]"
     const std::size_t at = body + 2 + 8 * 28 + 3 * 20 + 4 + 2 * 4;
     bytes.replace(at, 4, bytes_of(std::uint32_t{42}));
     const std::string message = load_error(folder, "bad.ply", bytes);
-    CHECK(message.find(dir + "bad.ply: face[3].vertex_index: refers to vertex 42; the file has 8") ==
-          0);
+    CHECK(message.find(dir +
+                       "bad.ply: face[3].vertex_index: refers to vertex 42; the file has 8") == 0);
     CHECK(message.find("record 3 of its element, byte offset " + std::to_string(at)) !=
           std::string::npos);
   }
   SECTION("PLY without faces is a cloud, not a mesh") {
-    const std::string message = load_error(
-        folder, "cloud.ply",
-        "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-        "property float z\nend_header\n0 0 0\n");
+    const std::string message =
+        load_error(folder, "cloud.ply",
+                   "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                   "property float z\nend_header\n0 0 0\n");
     CHECK(message.find(dir + "cloud.ply:7:1: element face: the header declares no face element") ==
           0);
   }

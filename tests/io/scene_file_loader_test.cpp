@@ -57,8 +57,8 @@ std::string error_of(const std::function<void()>& load) {
 // A scene file with the cube mesh beside it; `moving` is the body of one moving object.
 std::string scene_with_moving(const TempFolder& folder, const std::string& moving) {
   folder.write("cube.obj", kCubeObj);
-  return folder.write("scene.yaml", "name: test\nmoving:\n  - name: box\n    mesh: cube.obj\n" +
-                                        moving);
+  return folder.write("scene.yaml",
+                      "name: test\nmoving:\n  - name: box\n    mesh: cube.obj\n" + moving);
 }
 
 }  // namespace
@@ -207,21 +207,19 @@ TEST_CASE("bad scene files name the file, line, column and field", "[mesh_scene]
     CHECK(message.find(yaml + ":5:41: moving[0].trajectory.waypoints: is empty") == 0);
   }
   SECTION("a semi-axis that is not positive") {
-    const std::string message =
-        error_with("    ellipse: {semi_axes: [2, 0], period: 10}\n");
+    const std::string message = error_with("    ellipse: {semi_axes: [2, 0], period: 10}\n");
     CHECK(message.find(yaml + ":5:26: moving[0].ellipse.semi_axes: has a semi-axis <= 0") == 0);
   }
   SECTION("a period that is not positive") {
-    const std::string message =
-        error_with("    ellipse: {semi_axes: [2, 1], period: -4}\n");
+    const std::string message = error_with("    ellipse: {semi_axes: [2, 1], period: -4}\n");
     CHECK(message.find(yaml + ":5:42: moving[0].ellipse.period: must be > 0") == 0);
   }
   SECTION("both or neither motion") {
     CHECK(error_with("    scale: 2\n").find(yaml + ":3:5: moving[0].trajectory: missing") == 0);
   }
   SECTION("a mesh file that does not exist") {
-    const std::string path = folder.write(
-        "scene.yaml", "name: t\nstatic:\n  - name: room\n    mesh: rooms/room.obj\n");
+    const std::string path =
+        folder.write("scene.yaml", "name: t\nstatic:\n  - name: room\n    mesh: rooms/room.obj\n");
     const std::string message = error_of([&] { load_scene_file(path); });
     CHECK(message.find(yaml + ":4:11: static[0].mesh: file '") == 0);
     CHECK(message.find("does not exist") != std::string::npos);

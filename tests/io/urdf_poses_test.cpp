@@ -27,15 +27,17 @@ TEST_CASE("URDF problems are located errors") {
   <joint name="j" type="fixed"><parent link="base_footprint"/><child link="cam"/>
     <origin xyz="0.3 0 0.2" rpy="0 0 0"/></joint>
 </robot>)");
-  const std::string head = "name: r\nurdf: {file: robot.urdf}\nbody: {radius: 0.25, height: 0.5}\n"
-                           "distance_of_interest: 2.0\nmounts:\n  - id: m\n    sensor: cam\n"
-                           "    mode: m30\n";
+  const std::string head =
+      "name: r\nurdf: {file: robot.urdf}\nbody: {radius: 0.25, height: 0.5}\n"
+      "distance_of_interest: 2.0\nmounts:\n  - id: m\n    sensor: cam\n"
+      "    mode: m30\n";
   SECTION("an unknown link") {
     const std::string rig = folder.write("rig.yaml", head + "    pose: {urdf_link: camera}\n");
     const CliResult result = run_cli({"check", rig});
     CHECK(result.exit_code == 2);
     CHECK(result.out.find("rig.yaml:9:") != std::string::npos);
-    CHECK(result.out.find("mounts[0].pose.urdf_link: no link 'camera' in the URDF") != std::string::npos);
+    CHECK(result.out.find("mounts[0].pose.urdf_link: no link 'camera' in the URDF") !=
+          std::string::npos);
   }
   SECTION("an unreadable URDF") {
     std::string text = head + "    pose: {urdf_link: cam}\n";
@@ -47,7 +49,8 @@ TEST_CASE("URDF problems are located errors") {
   }
   SECTION("a file that is not URDF") {
     folder.write("robot.urdf", "<robot><link></robot>");
-    const CliResult result = run_cli({"check", folder.write("rig.yaml", head + "    pose: {urdf_link: cam}\n")});
+    const CliResult result =
+        run_cli({"check", folder.write("rig.yaml", head + "    pose: {urdf_link: cam}\n")});
     CHECK(result.exit_code == 2);
     CHECK(result.out.find("is not a valid URDF") != std::string::npos);
   }

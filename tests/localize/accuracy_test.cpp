@@ -10,7 +10,8 @@ using namespace rigdesign;
 // `rigdesign localize --scenario all --seeds 20 --table`, docs/localize.md).
 namespace {
 
-double mean_error(const std::string& scenario, LocalizeMethod method, int seeds, double tx_offset = 0.0) {
+double mean_error(const std::string& scenario, LocalizeMethod method, int seeds,
+                  double tx_offset = 0.0) {
   double sum = 0.0;
   for (int seed = 1; seed <= seeds; ++seed) {
     ScenarioParams params;
@@ -26,14 +27,18 @@ double mean_error(const std::string& scenario, LocalizeMethod method, int seeds,
 
 }  // namespace
 
-TEST_CASE("range fit: at most 0.6x paper 4's mean error on the corner and loop scenarios", "[localize]") {
+TEST_CASE("range fit: at most 0.6x paper 4's mean error on the corner and loop scenarios",
+          "[localize]") {
   for (const char* scenario : {"corner", "loop"}) {
     INFO(scenario);
-    CHECK(mean_error(scenario, LocalizeMethod::nls, 5) <= 0.6 * mean_error(scenario, LocalizeMethod::wls, 5));
+    CHECK(mean_error(scenario, LocalizeMethod::nls, 5) <=
+          0.6 * mean_error(scenario, LocalizeMethod::wls, 5));
   }
 }
 
-TEST_CASE("range fit: on the straight hallway two mirror hypotheses, the nearer within 2.5 m on average", "[localize]") {
+TEST_CASE(
+    "range fit: on the straight hallway two mirror hypotheses, the nearer within 2.5 m on average",
+    "[localize]") {
   double sum = 0.0;
   for (int seed = 1; seed <= 5; ++seed) {
     ScenarioParams params;
@@ -43,13 +48,15 @@ TEST_CASE("range fit: on the straight hallway two mirror hypotheses, the nearer 
     INFO("seed " << seed);
     REQUIRE(estimate.hypotheses.size() == 2);
     double nearest = 1e9;
-    for (const Hypothesis& h : estimate.hypotheses) nearest = std::min(nearest, position_error(h.position, s.truth.front().position, 2));
+    for (const Hypothesis& h : estimate.hypotheses)
+      nearest = std::min(nearest, position_error(h.position, s.truth.front().position, 2));
     sum += nearest;
   }
   CHECK(sum / 5 <= 2.5);
 }
 
-TEST_CASE("range fit: a phone 5 dB weaker than assumed is still found (corner, loop)", "[localize]") {
+TEST_CASE("range fit: a phone 5 dB weaker than assumed is still found (corner, loop)",
+          "[localize]") {
   for (const char* scenario : {"corner", "loop"}) {
     INFO(scenario);
     CHECK(mean_error(scenario, LocalizeMethod::nls, 5, -5.0) < 2.5);

@@ -1,8 +1,7 @@
-#include <catch2/catch.hpp>
-
-#include <filesystem>
-
 #include "rigdesign/localize/gas_detection.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
 
 using namespace rigdesign;
 
@@ -13,7 +12,8 @@ template <typename Ppm>
 Co2Log straight_log(int readings, Ppm ppm) {
   Co2Log log;
   log.source = "test";
-  for (int i = 0; i < readings; ++i) log.readings.push_back({static_cast<double>(i), {static_cast<double>(i), 0, 0}, ppm(i)});
+  for (int i = 0; i < readings; ++i)
+    log.readings.push_back({static_cast<double>(i), {static_cast<double>(i), 0, 0}, ppm(i)});
   return log;
 }
 
@@ -29,10 +29,12 @@ std::string subt(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("CO2: moving average of 5 against 1800 ppm, refined to the strongest reading in the area", "[localize]") {
+TEST_CASE("CO2: moving average of 5 against 1800 ppm, refined to the strongest reading in the area",
+          "[localize]") {
   // Plumes of 3000 ppm at x = 10..16 and 30..36 over 400 ppm. The average of 5 first reaches
   // 1800 at x = 12 ((2 x 400 + 3 x 3000) / 5 = 1960) and 3000 at x = 14.
-  const Co2Log log = straight_log(50, [](int i) { return (i >= 10 && i <= 16) || (i >= 30 && i <= 36) ? 3000.0 : 400.0; });
+  const Co2Log log = straight_log(
+      50, [](int i) { return (i >= 10 && i <= 16) || (i >= 30 && i <= 36) ? 3000.0 : 400.0; });
   GasDetectionParams params;
   const auto refined = detect_gas(log, GasThreshold::fixed, params);
   CHECK(xs(refined) == std::vector<double>{14, 34});
@@ -55,9 +57,12 @@ TEST_CASE("CO2: one detection per 5 m along a long plume", "[localize]") {
   }
 }
 
-TEST_CASE("CO2: a threshold relative to the running baseline finds a weak plume; the lag moves it back", "[localize]") {
+TEST_CASE(
+    "CO2: a threshold relative to the running baseline finds a weak plume; the lag moves it back",
+    "[localize]") {
   // Ambient 489-491 ppm, a plume of 700 ppm at x = 40..45: far below 1800 ppm.
-  const Co2Log log = straight_log(80, [](int i) { return i >= 40 && i <= 45 ? 700.0 : 489.0 + i % 3; });
+  const Co2Log log =
+      straight_log(80, [](int i) { return i >= 40 && i <= 45 ? 700.0 : 489.0 + i % 3; });
   CHECK(detect_gas(log, GasThreshold::fixed).empty());
   GasDetectionParams params;
   const auto detections = detect_gas(log, GasThreshold::relative, params);
@@ -73,7 +78,9 @@ TEST_CASE("CO2: a threshold relative to the running baseline finds a weak plume;
   CHECK(detections[0].lag_corrected.x() == Approx(37.0));
 }
 
-TEST_CASE("CO2 on the DARPA SubT Urban trace: the fixed threshold misses, the relative one finds gas 67", "[localize]") {
+TEST_CASE(
+    "CO2 on the DARPA SubT Urban trace: the fixed threshold misses, the relative one finds gas 67",
+    "[localize]") {
   if (!std::filesystem::exists(subt("gas_data_spot2_urban_beta2.txt"))) {
     WARN("shared/data/real/subt_urban is absent: skipped");
     return;

@@ -1,13 +1,15 @@
-#include <catch2/catch.hpp>
-
-#include <cmath>
-
 #include "rigdesign/localize/kpis.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
 
 using namespace rigdesign;
 
-TEST_CASE("Algorithm 1: C is the first measurement count whose estimate is within the acceptable error", "[localize]") {
-  const std::vector<std::pair<int, double>> sequence = {{10, 12.0}, {20, 6.0}, {30, 4.0}, {40, 7.0}, {50, 3.0}};
+TEST_CASE(
+    "Algorithm 1: C is the first measurement count whose estimate is within the acceptable error",
+    "[localize]") {
+  const std::vector<std::pair<int, double>> sequence = {
+      {10, 12.0}, {20, 6.0}, {30, 4.0}, {40, 7.0}, {50, 3.0}};
   CHECK(data_amount(sequence, 5.0) == 30);
   CHECK(data_amount(sequence, 6.0) == 20);  // within means <=
   CHECK(data_amount(sequence, 2.0) == std::nullopt);

@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -14,7 +13,8 @@ TEST_CASE("localize: bad logs exit 2 naming file:line:column and the column", "[
   CliResult result = run_cli({"localize", "--log", missing});
   CHECK(result.exit_code == 2);
   CHECK(result.err.find(missing + ":1:1: rssi: column is missing") != std::string::npos);
-  const std::string text = folder.write("text.csv", "t,x,y,z,bssid,rssi\n0,0,0,0,a,-50\n0,0,0,0,a,strong\n");
+  const std::string text =
+      folder.write("text.csv", "t,x,y,z,bssid,rssi\n0,0,0,0,a,-50\n0,0,0,0,a,strong\n");
   result = run_cli({"localize", "--log", text});
   CHECK(result.exit_code == 2);
   CHECK(result.err.find(text + ":3:11: rssi: 'strong' is not a number") != std::string::npos);
@@ -31,9 +31,11 @@ TEST_CASE("localize: bad logs exit 2 naming file:line:column and the column", "[
   CHECK(run_cli({"localize", "--scenario", "loop", "--method", "magic"}).exit_code == 2);
 }
 
-TEST_CASE("localize: a scenario written out reads back to the same estimate, with KPIs and plots", "[localize]") {
+TEST_CASE("localize: a scenario written out reads back to the same estimate, with KPIs and plots",
+          "[localize]") {
   TempFolder folder;
-  const CliResult generated = run_cli({"localize", "--scenario", "corner", "--seed", "3", "--json", "--out", folder.path()});
+  const CliResult generated = run_cli(
+      {"localize", "--scenario", "corner", "--seed", "3", "--json", "--out", folder.path()});
   INFO(generated.err);
   REQUIRE(generated.exit_code == 0);
   const auto report = nlohmann::json::parse(generated.out);
@@ -41,18 +43,20 @@ TEST_CASE("localize: a scenario written out reads back to the same estimate, wit
   CHECK(emitter["method"] == "nls");
   CHECK(emitter["kpis"]["error_m"].get<double>() >= 0.0);
   CHECK(emitter["geometry"]["z_observable"] == false);
-  for (const char* file : {"corner_seed3.png", "corner_seed3.svg", "corner_seed3_rssi.csv", "corner_seed3_truth.csv"}) {
+  for (const char* file : {"corner_seed3.png", "corner_seed3.svg", "corner_seed3_rssi.csv",
+                           "corner_seed3_truth.csv"}) {
     CHECK(std::filesystem::exists(folder.path() + "/" + file));
   }
-  const CliResult read = run_cli({"localize", "--log", folder.path() + "/corner_seed3_rssi.csv", "--truth",
-                                  folder.path() + "/corner_seed3_truth.csv", "--json"});
+  const CliResult read = run_cli({"localize", "--log", folder.path() + "/corner_seed3_rssi.csv",
+                                  "--truth", folder.path() + "/corner_seed3_truth.csv", "--json"});
   REQUIRE(read.exit_code == 0);
   const auto again = nlohmann::json::parse(read.out)["logs"][0]["emitters"][0];
   for (int k = 0; k < 2; ++k) {
     CHECK(again["hypotheses"][0]["position"][k].get<double>() ==
           Approx(emitter["hypotheses"][0]["position"][k].get<double>()).margin(1e-4));
   }
-  CHECK(again["kpis"]["error_m"].get<double>() == Approx(emitter["kpis"]["error_m"].get<double>()).margin(1e-4));
+  CHECK(again["kpis"]["error_m"].get<double>() ==
+        Approx(emitter["kpis"]["error_m"].get<double>()).margin(1e-4));
 }
 
 TEST_CASE("localize: the straight hallway is reported with two mirror hypotheses", "[localize]") {
@@ -62,9 +66,11 @@ TEST_CASE("localize: the straight hallway is reported with two mirror hypotheses
   CHECK(result.out.find("twin") != std::string::npos);
 }
 
-TEST_CASE("localize: the bundled example log reads and its phone is found within 5 m", "[localize]") {
-  const CliResult result = run_cli({"localize", "--log", source_path("data/localize/corner_rssi.csv"), "--truth",
-                                    source_path("data/localize/corner_truth.csv"), "--method", "all", "--json"});
+TEST_CASE("localize: the bundled example log reads and its phone is found within 5 m",
+          "[localize]") {
+  const CliResult result =
+      run_cli({"localize", "--log", source_path("data/localize/corner_rssi.csv"), "--truth",
+               source_path("data/localize/corner_truth.csv"), "--method", "all", "--json"});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   const auto emitters = nlohmann::json::parse(result.out)["logs"][0]["emitters"];

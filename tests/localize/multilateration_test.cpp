@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "rigdesign/localize/chunking.hpp"
@@ -13,11 +12,13 @@ using namespace rigdesign;
 namespace {
 
 // Noise-free log: RSSI from the path-loss model at the exact distance to `emitter`.
-RssiLog exact_log(const std::vector<Vec3>& positions, const Vec3& emitter, const PathLossParams& model) {
+RssiLog exact_log(const std::vector<Vec3>& positions, const Vec3& emitter,
+                  const PathLossParams& model) {
   RssiLog log;
   log.emitters = {"e"};
   double t = 0;
-  for (const Vec3& p : positions) log.readings.push_back({t++, p, 0, rssi_at_range((emitter - p).norm(), model)});
+  for (const Vec3& p : positions)
+    log.readings.push_back({t++, p, 0, rssi_at_range((emitter - p).norm(), model)});
   return log;
 }
 
@@ -31,7 +32,8 @@ std::vector<Vec3> l_path() {
 
 }  // namespace
 
-TEST_CASE("path loss: range and RSSI are inverse; the paper's model at hand-computed points", "[localize]") {
+TEST_CASE("path loss: range and RSSI are inverse; the paper's model at hand-computed points",
+          "[localize]") {
   PathLossParams model;  // a = -45 dBm, n = 2.5
   CHECK(rssi_at_range(1.0, model) == Approx(-45.0));
   CHECK(rssi_at_range(10.0, model) == Approx(-70.0));  // -45 - 25 log10(10)
@@ -43,8 +45,8 @@ TEST_CASE("chunks average the readings' distances; weights are sqrt(c) / r", "[l
   PathLossParams model;  // -45 dBm -> 1 m, -70 dBm -> 10 m, -95 dBm -> 100 m (below the cut-off)
   RssiLog log;
   log.emitters = {"a", "b"};
-  log.readings = {{0, {0.01, 0.02, 0.4}, 0, -45.0}, {1, {0.05, 0.06, 0.4}, 0, -70.0},
-                  {2, {0.15, 0.02, 0.4}, 0, -70.0}, {3, {0.16, 0.03, 0.4}, 0, -95.0},
+  log.readings = {{0, {0.01, 0.02, 0.4}, 0, -45.0},  {1, {0.05, 0.06, 0.4}, 0, -70.0},
+                  {2, {0.15, 0.02, 0.4}, 0, -70.0},  {3, {0.16, 0.03, 0.4}, 0, -95.0},
                   {4, {-0.05, 0.02, 0.4}, 0, -70.0}, {5, {0.02, 0.02, 0.4}, 1, -40.0}};
   const std::vector<Chunk> chunks = chunk_readings(log, 0, model);
   REQUIRE(chunks.size() == 3);  // cells [0, 0.1), [0.1, 0.2) and [-0.1, 0) in x
@@ -76,7 +78,8 @@ TEST_CASE("the incremental system equals the batch system after every reading", 
   }
 }
 
-TEST_CASE("noise-free ranges are recovered exactly in 2D by every linear variant and the range fit", "[localize]") {
+TEST_CASE("noise-free ranges are recovered exactly in 2D by every linear variant and the range fit",
+          "[localize]") {
   const Vec3 emitter(-3.0, 4.0, 0.4);  // at the antenna's height: the 2D problem is exact
   PathLossParams model;
   const RssiLog log = exact_log(l_path(), emitter, model);
@@ -90,7 +93,7 @@ TEST_CASE("noise-free ranges are recovered exactly in 2D by every linear variant
     CHECK((solution->position - emitter).norm() < 1e-6);
   }
   RangeFitParams fit;
-  fit.level_prior_db = 0;  // the level is free: the fit must find -45 dBm by itself
+  fit.level_prior_db = 0;        // the level is free: the fit must find -45 dBm by itself
   model.rssi_at_1m_dbm = -40.0;  // assumed 5 dB off
   const RangeFitResult result = fit_ranges(chunks, geometry, model, fit);
   REQUIRE(result.hypotheses.size() == 1);
@@ -133,13 +136,15 @@ TEST_CASE("collinear positions are reported as degenerate, with both mirror imag
   const Vec3 mirror(2.0, -3.0, 0.4);
   const Vec3& a = nls.hypotheses[0].position;
   const Vec3& b = nls.hypotheses[1].position;
-  CHECK(std::min((a - emitter).norm() + (b - mirror).norm(), (a - mirror).norm() + (b - emitter).norm()) < 1e-3);
+  CHECK(std::min((a - emitter).norm() + (b - mirror).norm(),
+                 (a - mirror).norm() + (b - emitter).norm()) < 1e-3);
   // Each hypothesis is well determined on its own: noise-free data leave it sub-centimetre
   // (the residual sigma is floored at 1 mdB).
   CHECK(nls.hypotheses[0].covariance.trace() < 1e-4);
 }
 
-TEST_CASE("geometry: height spread decides 2D or 3D; the mirror reflects across the path", "[localize]") {
+TEST_CASE("geometry: height spread decides 2D or 3D; the mirror reflects across the path",
+          "[localize]") {
   std::vector<Chunk> chunks(2);
   chunks[0].position_sum = {0, 0, 0.4};
   chunks[0].count = 1;

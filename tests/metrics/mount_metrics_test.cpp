@@ -1,6 +1,7 @@
+#include "rigdesign/metrics/mount_metrics.hpp"
+
 #include <catch2/catch.hpp>
 
-#include "rigdesign/metrics/mount_metrics.hpp"
 #include "rigdesign/model/units.hpp"
 
 using namespace rigdesign;

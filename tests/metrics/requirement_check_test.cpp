@@ -1,8 +1,8 @@
-#include <catch2/catch.hpp>
+#include "rigdesign/metrics/requirement_check.hpp"
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 
-#include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/model/units.hpp"
 
 using namespace rigdesign;
@@ -40,7 +40,8 @@ struct Fixture {
   }
 };
 
-const RequirementResult& find(const std::vector<RequirementResult>& results, const std::string& id) {
+const RequirementResult& find(const std::vector<RequirementResult>& results,
+                              const std::string& id) {
   const auto it = std::find_if(results.begin(), results.end(),
                                [&](const RequirementResult& r) { return r.id == id; });
   REQUIRE(it != results.end());
@@ -53,7 +54,7 @@ TEST_CASE("R4 and R5 bound F from below by speed over travel between frames") {
   Fixture fixture;
   Requirements requirements;
   requirements.distance = 3.5;
-  requirements.robot_speed = MotionBetweenFrames{2.0, 0.1, {}};     // needs 20 Hz
+  requirements.robot_speed = MotionBetweenFrames{2.0, 0.1, {}};       // needs 20 Hz
   requirements.object_dynamics = MotionBetweenFrames{1.5, 0.15, {}};  // needs 10 Hz
   const auto results = fixture.judge(requirements);
   const RequirementResult& r5 = find(results, "R5");

@@ -1,6 +1,7 @@
+#include "rigdesign/metrics/resultant.hpp"
+
 #include <catch2/catch.hpp>
 
-#include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/units.hpp"
 
 using namespace rigdesign;

@@ -1,6 +1,5 @@
 // Paper 1, Table 1: the UR Cleaner rig has F = 15 Hz, R = 122 mm, N = 30 mm, L = true.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "rigdesign/io/requirements_loader.hpp"
@@ -28,7 +27,8 @@ TEST_CASE("UR Cleaner reproduces paper 1's Table 1") {
   CHECK(metrics.noise.mounts == std::vector<std::string>{"top_lidar"});
 
   // L = true for the conditions the UR Cleaner requires.
-  const Requirements requirements = load_requirements(source_path("rigs/requirements/ur_cleaner.yaml"));
+  const Requirements requirements =
+      load_requirements(source_path("rigs/requirements/ur_cleaner.yaml"));
   REQUIRE_FALSE(requirements.lighting.empty());
   for (LightCondition condition : requirements.lighting) {
     CHECK(metrics.light_for(condition).immune);

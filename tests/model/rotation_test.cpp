@@ -1,12 +1,15 @@
+#include "rigdesign/model/rotation.hpp"
+
 #include <catch2/catch.hpp>
 
-#include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 
 using namespace rigdesign;
 
 namespace {
-bool near(const Vec3& a, const Vec3& b) { return (a - b).norm() < 1e-12; }
+bool near(const Vec3& a, const Vec3& b) {
+  return (a - b).norm() < 1e-12;
+}
 }  // namespace
 
 TEST_CASE("rpy follows URDF: positive pitch looks down, positive yaw turns left") {
@@ -31,8 +34,8 @@ TEST_CASE("pose_from_xyz_rpy maps sensor-frame points into the robot frame") {
 }
 
 TEST_CASE("rpy_from_rotation inverts rotation_from_rpy") {
-  for (const Vec3& rpy_deg : {Vec3(0, 25, 0), Vec3(0, 20, -90), Vec3(10, -35, 170), Vec3(-5, 0, 180),
-                              Vec3(30, 60, -120)}) {
+  for (const Vec3& rpy_deg : {Vec3(0, 25, 0), Vec3(0, 20, -90), Vec3(10, -35, 170),
+                              Vec3(-5, 0, 180), Vec3(30, 60, -120)}) {
     const Vec3 rpy(deg_to_rad(rpy_deg.x()), deg_to_rad(rpy_deg.y()), deg_to_rad(rpy_deg.z()));
     const Mat3 rotation = rotation_from_rpy(rpy.x(), rpy.y(), rpy.z());
     const Vec3 back = rpy_from_rotation(rotation);

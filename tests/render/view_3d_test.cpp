@@ -1,5 +1,6 @@
-#include <catch2/catch.hpp>
+#include "rigdesign/render/view_3d.hpp"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -11,13 +12,11 @@
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
-#include "rigdesign/render/view_3d.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
-
 
 namespace {
 

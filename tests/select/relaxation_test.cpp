@@ -1,8 +1,9 @@
+#include "rigdesign/select/relaxation.hpp"
+
 #include <catch2/catch.hpp>
 
 #include "rigdesign/io/input_error.hpp"
 #include "rigdesign/select/relax_step.hpp"
-#include "rigdesign/select/relaxation.hpp"
 
 using namespace rigdesign;
 
@@ -57,9 +58,12 @@ TEST_CASE("a step that tightens, names an unknown requirement or leaves the rang
   };
   CHECK(message(step("robot_speed.max_speed", 1.2)).find("tightens") != std::string::npos);
   CHECK(message(step("smallest_obstacle.size", 0.1)).find("tightens") != std::string::npos);
-  CHECK(message(step("robot_speed.top_speed", 0.5)).find("is not a relaxable requirement") != std::string::npos);
-  CHECK(message(step("sectors.front.min_floor_coverage", 0.3)).find("is not stated") != std::string::npos);
-  CHECK(message(step("sectors.back.min_floor_coverage", -0.1)).find("cannot be") != std::string::npos);
+  CHECK(message(step("robot_speed.top_speed", 0.5)).find("is not a relaxable requirement") !=
+        std::string::npos);
+  CHECK(message(step("sectors.front.min_floor_coverage", 0.3)).find("is not stated") !=
+        std::string::npos);
+  CHECK(message(step("sectors.back.min_floor_coverage", -0.1)).find("cannot be") !=
+        std::string::npos);
   CHECK(message(step("robot_speed.max_speed", 0.5)) == "no error");
   CHECK(message(step("robot_speed.max_speed", 1.2)).rfind("policy.yaml:7:5: steps.relax:", 0) == 0);
 }

@@ -1,16 +1,16 @@
-#include <catch2/catch.hpp>
+#include "rigdesign/select/search.hpp"
 
+#include <catch2/catch.hpp>
 #include <random>
 
 #include "rigdesign/select/cost_model.hpp"
-#include "rigdesign/select/search.hpp"
 
 using namespace rigdesign;
 
 TEST_CASE("cost model: the cheapest transfer and CPU whose capacity exceeds the load") {
   const std::vector<PricedCapacity> transfer = {{"onboard", 1.0e9, 0, {}}, {"card", 4.0e9, 80, {}}};
-  const std::vector<PricedCapacity> cpus = {{"small", 2.0, 300, {}}, {"big", 8.0, 900, {}},
-                                            {"mid", 4.0, 500, {}}};
+  const std::vector<PricedCapacity> cpus = {
+      {"small", 2.0, 300, {}}, {"big", 8.0, 900, {}}, {"mid", 4.0, 500, {}}};
   // 100 MB/s = 0.8 Gbit/s fits the onboard link; 2.5 cores need the 4-core CPU.
   CostBreakdown cost = rig_cost({1000.0, 100e6, 2.5, 2}, transfer, cpus);
   CHECK(cost.feasible);

@@ -1,10 +1,10 @@
-#include <catch2/catch.hpp>
+#include "rigdesign/sim/sensor_simulator.hpp"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
-#include "rigdesign/sim/sensor_simulator.hpp"
 
 using namespace rigdesign;
 
@@ -49,7 +49,8 @@ TEST_CASE("a depth camera facing a wall at 2 m returns every pixel at 2 m within
     mean += p.x();
   }
   mean /= static_cast<double>(cloud.size());
-  CHECK(static_cast<double>(within) >= 0.995 * static_cast<double>(cloud.size()));  // Gaussian: 99.73 %
+  CHECK(static_cast<double>(within) >=
+        0.995 * static_cast<double>(cloud.size()));  // Gaussian: 99.73 %
   CHECK(std::abs(mean - 2.0) < 0.002);
   // Without noise, exactly on the wall; dropout removes its share.
   SimulationSettings exact;
@@ -58,7 +59,8 @@ TEST_CASE("a depth camera facing a wall at 2 m returns every pixel at 2 m within
   for (const Point3f& p : clean.points) CHECK(std::abs(p.x() - 2.0f) < 1e-5f);
   SimulationSettings lossy;
   lossy.dropout = 0.25;
-  const double kept = static_cast<double>(simulate_frame(scene, mode, rays, Pose3::Identity(), lossy, rng).size());
+  const double kept =
+      static_cast<double>(simulate_frame(scene, mode, rays, Pose3::Identity(), lossy, rng).size());
   CHECK(std::abs(kept / (64 * 48) - 0.75) < 0.03);
 }
 

@@ -39,11 +39,11 @@ struct VoxelMapperParams {
   /// Hit-style persistence: paper 1's eqs. (8), (9) per voxel (the voxels shown are those with
   /// a positive count) and the Hit Layer on the 2D grid. Off: the voxel layer's own states.
   bool persistence = false;
-  HitLayerParams hit;             ///< paper 1's values by default
-  double window_size = 6.0;       ///< [m] square window centred on the cell (its 6 m floor)
-  double z_max = 2.0;             ///< [m] top of the voxel band (nav2's max_obstacle_height)
-  double robot_radius = 0.3;      ///< [m] inscribed radius of the robot the planner guards
-  ObservationSource source;       ///< per-sensor flags and ranges (same for every sensor)
+  HitLayerParams hit;         ///< paper 1's values by default
+  double window_size = 6.0;   ///< [m] square window centred on the cell (its 6 m floor)
+  double z_max = 2.0;         ///< [m] top of the voxel band (nav2's max_obstacle_height)
+  double robot_radius = 0.3;  ///< [m] inscribed radius of the robot the planner guards
+  ObservationSource source;   ///< per-sensor flags and ranges (same for every sensor)
 };
 
 /// Throws InputError (at `where`, fields prefixed "voxel", "hit.") through

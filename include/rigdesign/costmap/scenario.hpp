@@ -61,8 +61,8 @@ struct ScenarioParams {
   ObservationSource source = scenario_source_defaults();
   PlannerParams planner;
   FollowerParams follower;
-  double update_rate = 5.0;    ///< [Hz] sensing, costmap update and planning
-  double control_rate = 20.0;  ///< [Hz] follower commands and collision checks
+  double update_rate = 5.0;      ///< [Hz] sensing, costmap update and planning
+  double control_rate = 20.0;    ///< [Hz] follower commands and collision checks
   double goal_lookahead = 2.0;   ///< [m] local goal distance along the route (capped by the window)
   double goal_tolerance = 0.15;  ///< [m] a stop counts as reached within this distance
   /// [m] a local goal on a blocked cell moves to the nearest passable cell this close to it.
@@ -85,22 +85,22 @@ struct TrajectorySample {
 
 /// What one costmap update saw and decided, for drawing and tests (valid during the callback).
 struct ScenarioStep {
-  int index = 0;       ///< update number from 0
-  double time = 0.0;   ///< [s]
-  Pose2 pose;          ///< robot pose at the update
+  int index = 0;                  ///< update number from 0
+  double time = 0.0;              ///< [s]
+  Pose2 pose;                     ///< robot pose at the update
   bool velocity_command = false;  ///< the command given to the costmap's motion condition
   bool waiting = false;           ///< the robot stands at a stop
   const Costmap* costmap = nullptr;
-  const PlannedPath* path = nullptr;  ///< the plan of this update (empty while waiting)
-  Vec2 goal = Vec2::Zero();           ///< the local goal planned to [m]
+  const PlannedPath* path = nullptr;   ///< the plan of this update (empty while waiting)
+  Vec2 goal = Vec2::Zero();            ///< the local goal planned to [m]
   std::span<const PointCloud> clouds;  ///< this update's clouds, world frame, one per mount
 };
 
 struct ScenarioResult {
   bool collided = false;
   double collision_time = std::numeric_limits<double>::quiet_NaN();  ///< [s] first contact
-  std::string collision_object;                                       ///< scene object hit
-  Vec2 collision_position = Vec2::Zero();                             ///< robot centre [m]
+  std::string collision_object;                                      ///< scene object hit
+  Vec2 collision_position = Vec2::Zero();                            ///< robot centre [m]
   /// [m] smallest body clearance over the run (negative: penetration at the collision step).
   double min_clearance = std::numeric_limits<double>::infinity();
   double min_clearance_time = 0.0;  ///< [s]
@@ -110,8 +110,8 @@ struct ScenarioResult {
   int updates = 0;
   int planner_failures = 0;  ///< updates whose plan found no path (the robot held still)
   std::vector<TrajectorySample> trajectory;  ///< one sample per costmap update and the last pose
-  std::vector<double> update_seconds;   ///< wall time of each Costmap::update [s]
-  std::vector<double> planner_seconds;  ///< wall time of each plan [s]
+  std::vector<double> update_seconds;        ///< wall time of each Costmap::update [s]
+  std::vector<double> planner_seconds;       ///< wall time of each plan [s]
 };
 
 /// Throws InputError at the rig's `mounts` (file:line:column) when no mount can mark: none

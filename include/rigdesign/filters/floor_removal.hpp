@@ -9,6 +9,7 @@ namespace rigdesign {
 
 PointCloud remove_floor_1(const PointCloud& cloud, const FloorRemoval1Params& params = {});
 PointCloud remove_floor_2(const PointCloud& cloud, const FloorRemoval2Params& params = {});
-PointCloud mark_negative_obstacles(const PointCloud& cloud, const NegativeObstacleParams& params = {});
+PointCloud mark_negative_obstacles(const PointCloud& cloud,
+                                   const NegativeObstacleParams& params = {});
 
 }  // namespace rigdesign

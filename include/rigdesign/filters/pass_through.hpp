@@ -9,6 +9,7 @@ namespace rigdesign {
 PointCloud pass_through(const PointCloud& cloud, const PassThroughParams& params = {});
 
 /// Indices of the points pass_through would keep.
-std::vector<std::uint32_t> pass_through_indices(const PointCloud& cloud, const PassThroughParams& params);
+std::vector<std::uint32_t> pass_through_indices(const PointCloud& cloud,
+                                                const PassThroughParams& params);
 
 }  // namespace rigdesign

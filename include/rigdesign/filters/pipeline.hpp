@@ -1,8 +1,8 @@
 #pragma once
 /// Filter pipelines: named stages, each with its own parameters, run in order and timed
 /// (paper 1, section 3, Fig. 3). A pipeline is pure data: presets P1-P4, or YAML.
-#include <string>
 #include <optional>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -27,7 +27,8 @@ struct StageRun {
 };
 
 /// Runs the stages in order; `runs` receives one entry per stage.
-PointCloud run_pipeline(const Pipeline& pipeline, const PointCloud& input, std::vector<StageRun>* runs = nullptr);
+PointCloud run_pipeline(const Pipeline& pipeline, const PointCloud& input,
+                        std::vector<StageRun>* runs = nullptr);
 
 PointCloud run_stage(const StageParams& stage, const PointCloud& cloud);
 

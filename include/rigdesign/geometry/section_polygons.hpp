@@ -11,9 +11,9 @@
 namespace rigdesign {
 
 struct TessellationSettings {
-  double tolerance = 1e-3;      ///< [m] largest chord error of a curved boundary
-  double initial_step = 0.02;   ///< [m] first column spacing before refinement
-  double min_gap = 1e-4;        ///< [m] narrowest column spacing, at topology changes
+  double tolerance = 1e-3;     ///< [m] largest chord error of a curved boundary
+  double initial_step = 0.02;  ///< [m] first column spacing before refinement
+  double min_gap = 1e-4;       ///< [m] narrowest column spacing, at topology changes
 };
 
 using Polygon2 = std::vector<Vec2>;  ///< counter-clockwise vertices (rho, z)

@@ -15,6 +15,7 @@ std::string filtering_loads_to_yaml(const FilteringLoads& loads, const std::stri
 
 /// `measured` merged over `previous`: sensors measured now replace their earlier entries, the
 /// others are kept (so a file can collect loads from several rigs).
-FilteringLoads merge_filtering_loads(const FilteringLoads& previous, const FilteringLoads& measured);
+FilteringLoads merge_filtering_loads(const FilteringLoads& previous,
+                                     const FilteringLoads& measured);
 
 }  // namespace rigdesign

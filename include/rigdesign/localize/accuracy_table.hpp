@@ -14,8 +14,8 @@ struct AccuracyRow {
   std::string scenario;
   LocalizeMethod method = LocalizeMethod::nls;
   int runs = 0;
-  ErrorStats final_error;    ///< of the best hypothesis, across runs [m]
-  ErrorStats nearest_error;  ///< of the hypothesis nearest the truth, across runs [m]
+  ErrorStats final_error;           ///< of the best hypothesis, across runs [m]
+  ErrorStats nearest_error;         ///< of the hypothesis nearest the truth, across runs [m]
   double median_data_amount = 0.0;  ///< C over the runs that reached the acceptable error
   int reached = 0;                  ///< runs whose running estimate ever got within it
   double detection_share = 0.0;     ///< runs whose final estimate is within it
@@ -24,8 +24,10 @@ struct AccuracyRow {
 };
 
 /// One row per method, seeds 1..`seeds` (the params' seed is replaced).
-std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds, ScenarioParams scenario_params,
+std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
+                                        ScenarioParams scenario_params,
                                         const std::vector<LocalizeMethod>& methods,
-                                        const LocalizeParams& params = {}, const KpiParams& kpi = {});
+                                        const LocalizeParams& params = {},
+                                        const KpiParams& kpi = {});
 
 }  // namespace rigdesign

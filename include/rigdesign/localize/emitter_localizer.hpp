@@ -41,7 +41,7 @@ struct EmitterEstimate {
   /// not solve (too few chunks, or a singular linear system).
   std::vector<Hypothesis> hypotheses;
   bool twin = false;
-  double sigma_db = 0.0;  ///< residual standard deviation per chunk (nls) [dB]
+  double sigma_db = 0.0;         ///< residual standard deviation per chunk (nls) [dB]
   std::optional<ObjectMap> map;  ///< the probability grid (map)
 };
 

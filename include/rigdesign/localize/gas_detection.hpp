@@ -29,7 +29,7 @@ struct GasDetectionParams {
   /// Sensor time constant [s]: an NDIR CO2 sensor reads a step with a first-order lag (an
   /// assumed 5 s; paper 4 does not state its sensor's).
   double time_constant = 5.0;
-  double sample_period = 1.0;         ///< [s] between readings of an untimed log (assumed)
+  double sample_period = 1.0;  ///< [s] between readings of an untimed log (assumed)
 };
 
 struct GasDetection {
@@ -37,8 +37,8 @@ struct GasDetection {
   std::size_t index = 0;          ///< reading reported (the strongest in the area when refining)
   Vec3 position = Vec3::Zero();   ///< robot position at `index` [m]
   Vec3 lag_corrected = Vec3::Zero();  ///< the path position the lag says the air came from [m]
-  double ppm = 0.0;               ///< moving average at `index`
-  double threshold_ppm = 0.0;     ///< threshold in force at the trigger
+  double ppm = 0.0;                   ///< moving average at `index`
+  double threshold_ppm = 0.0;         ///< threshold in force at the trigger
 };
 
 std::vector<GasDetection> detect_gas(const Co2Log& log, GasThreshold threshold,
@@ -50,14 +50,14 @@ double detection_lag(const Co2Log& log, const GasDetectionParams& params);
 
 struct GasArtifactResult {
   Artifact artifact;
-  double path_distance = 0.0;  ///< closest approach of the robot's path [m]
+  double path_distance = 0.0;      ///< closest approach of the robot's path [m]
   double nearest_detection = 0.0;  ///< distance to the nearest detection (infinite if none) [m]
-  bool found = false;          ///< a detection within the scoring radius
+  bool found = false;              ///< a detection within the scoring radius
 };
 
 struct GasScore {
   std::vector<GasArtifactResult> artifacts;  ///< the `gas` artifacts
-  int true_detections = 0;   ///< detections within the radius of a gas artifact
+  int true_detections = 0;                   ///< detections within the radius of a gas artifact
   int false_detections = 0;
 };
 

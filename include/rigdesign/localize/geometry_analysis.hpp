@@ -23,12 +23,12 @@ struct GeometryParams {
 
 struct GeometryAnalysis {
   int chunks = 0;
-  Vec3 centroid = Vec3::Zero();      ///< count-weighted mean chunk position [m]
+  Vec3 centroid = Vec3::Zero();         ///< count-weighted mean chunk position [m]
   Vec3 principal_axis = Vec3::UnitX();  ///< unit direction of largest spread (in x, y when 2D)
-  double along_spread = 0.0;         ///< std along the principal axis [m]
-  double lateral_spread = 0.0;       ///< std across it (in the fitted dimensions) [m]
-  double height_spread = 0.0;        ///< std of the chunk heights [m]
-  int dimensions = 2;                ///< 3 when z is observable, else 2 (x, y)
+  double along_spread = 0.0;            ///< std along the principal axis [m]
+  double lateral_spread = 0.0;          ///< std across it (in the fitted dimensions) [m]
+  double height_spread = 0.0;           ///< std of the chunk heights [m]
+  int dimensions = 2;                   ///< 3 when z is observable, else 2 (x, y)
   bool collinear = false;
   /// The chunks lie near a circle (x, y): with an unknown 1 m level a point and its inverse
   /// in that circle explain the ranges alike (every point of the circle sees them at the
@@ -45,6 +45,7 @@ struct GeometryAnalysis {
 };
 
 /// Needs at least one chunk.
-GeometryAnalysis analyse_geometry(const std::vector<Chunk>& chunks, const GeometryParams& params = {});
+GeometryAnalysis analyse_geometry(const std::vector<Chunk>& chunks,
+                                  const GeometryParams& params = {});
 
 }  // namespace rigdesign

@@ -5,11 +5,11 @@
 namespace rigdesign {
 
 struct Hypothesis {
-  Vec3 position = Vec3::Zero();     ///< [m]; at the robot's mean height when z is unobservable
-  Mat3 covariance = Mat3::Zero();   ///< [m^2]; the z row and column are 0 when z is unobservable
-  double rssi_at_1m_dbm = 0.0;      ///< the 1 m level used or estimated [dBm]
-  double exponent = 0.0;            ///< the path-loss exponent used or estimated
-  double cost = 0.0;                ///< the estimator's objective at the position (lower is better)
+  Vec3 position = Vec3::Zero();    ///< [m]; at the robot's mean height when z is unobservable
+  Mat3 covariance = Mat3::Zero();  ///< [m^2]; the z row and column are 0 when z is unobservable
+  double rssi_at_1m_dbm = 0.0;     ///< the 1 m level used or estimated [dBm]
+  double exponent = 0.0;           ///< the path-loss exponent used or estimated
+  double cost = 0.0;               ///< the estimator's objective at the position (lower is better)
 };
 
 }  // namespace rigdesign

@@ -40,12 +40,12 @@ std::optional<int> data_amount(const std::vector<std::pair<int, double>>& errors
                                double acceptable);
 
 struct EmitterKpis {
-  double final_error = 0.0;   ///< of the best hypothesis at the end of the log [m]
+  double final_error = 0.0;               ///< of the best hypothesis at the end of the log [m]
   double nearest_hypothesis_error = 0.0;  ///< of whichever hypothesis is nearest the truth [m]
-  ErrorStats running;         ///< errors of the running estimate over the log
-  std::optional<int> data_amount;  ///< C, in readings of this emitter
-  bool detected = false;      ///< final_error within the acceptable error
-  double heard_share = 0.0;   ///< readings at or above the cut-off over all its readings
+  ErrorStats running;                     ///< errors of the running estimate over the log
+  std::optional<int> data_amount;         ///< C, in readings of this emitter
+  bool detected = false;                  ///< final_error within the acceptable error
+  double heard_share = 0.0;  ///< readings at or above the cut-off over all its readings
 };
 
 /// KPIs of `method` on emitter `emitter` of `log` with its true position. `final_estimate` is

@@ -1,6 +1,7 @@
 #pragma once
 /// Which log a file holds, told from its first content line: an RSSI CSV (header naming
-/// `rssi` or `bssid`, so a missing rssi column is reported by the RSSI reader), a CO2 CSV (header naming `co2_ppm`) or the untimed `x y co2_ppm` form.
+/// `rssi` or `bssid`, so a missing rssi column is reported by the RSSI reader), a CO2 CSV (header
+/// naming `co2_ppm`) or the untimed `x y co2_ppm` form.
 #include <string>
 
 namespace rigdesign {

@@ -13,13 +13,13 @@
 namespace rigdesign {
 
 struct ObjectMapParams {
-  double cell = 0.5;             ///< grid cell [m]
-  double margin = 15.0;          ///< the grid extends this far beyond the chunks [m]
-  double ring_sigma_min = 0.5;   ///< blur of a ring [m], at least
-  double ring_sigma_share = 0.2; ///< blur as a share of the ring's radius (ranges from RSSI
-                                 ///< err in proportion to the range)
-  double floor = 0.05;           ///< a mask never drops below this, so no ring vetoes a cell
-  int max_cells = 1000000;       ///< the cell grows when the area would need more cells
+  double cell = 0.5;              ///< grid cell [m]
+  double margin = 15.0;           ///< the grid extends this far beyond the chunks [m]
+  double ring_sigma_min = 0.5;    ///< blur of a ring [m], at least
+  double ring_sigma_share = 0.2;  ///< blur as a share of the ring's radius (ranges from RSSI
+                                  ///< err in proportion to the range)
+  double floor = 0.05;            ///< a mask never drops below this, so no ring vetoes a cell
+  int max_cells = 1000000;        ///< the cell grows when the area would need more cells
 };
 
 struct ObjectMap {

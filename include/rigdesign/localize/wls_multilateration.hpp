@@ -19,8 +19,8 @@ namespace rigdesign {
 enum class WlsReference { first_chunk, weighted_mean };
 
 struct WlsSolution {
-  Vec3 position;   ///< [m]; with 2 dimensions z is the chunks' weighted mean height
-  Mat3 covariance; ///< [m^2] sigma^2 (A^T W A)^-1 from the linear residuals; z row/column 0 in 2D
+  Vec3 position;    ///< [m]; with 2 dimensions z is the chunks' weighted mean height
+  Mat3 covariance;  ///< [m^2] sigma^2 (A^T W A)^-1 from the linear residuals; z row/column 0 in 2D
 };
 
 /// Running weighted sums of the linear system. Positions are taken relative to `origin` to

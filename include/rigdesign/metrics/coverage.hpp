@@ -18,7 +18,7 @@ namespace rigdesign {
 
 struct CoverageSettings {
   double step = 0.017453292519943295;  ///< [rad] between sampled azimuths (1 degree)
-  bool exact = true;  ///< SC curves from CGAL polygons (else from the raster)
+  bool exact = true;                   ///< SC curves from CGAL polygons (else from the raster)
   TessellationSettings tessellation;
   double raster_cell = 0.01;  ///< [m] raster cell size along rho and z
 };
@@ -28,18 +28,18 @@ struct CoverageSettings {
 inline constexpr double kFullCoverage = 1.0 - 1e-4;
 
 struct AngleCoverage {
-  double theta = 0.0;      ///< [rad]
-  double r = 0.0;          ///< [m] body radius along theta
-  double complete = 0.0;   ///< SC complete, share in [0, 1]
-  double floor = 0.0;      ///< SC floor
+  double theta = 0.0;     ///< [rad]
+  double r = 0.0;         ///< [m] body radius along theta
+  double complete = 0.0;  ///< SC complete, share in [0, 1]
+  double floor = 0.0;     ///< SC floor
   double complete_raster = 0.0;
   double floor_raster = 0.0;
   double redundancy = 0.0;  ///< share of the cross-section seen by two or more sensors (raster)
-  std::vector<bool> mount_sees;  ///< per mount: sees part of this cross-section
-  int coarsest_mount = -1;       ///< index of the covering mount with the widest ray spacing
-  double coarsest_spacing = 0.0; ///< [m] its spacing at its distance of interest
+  std::vector<bool> mount_sees;   ///< per mount: sees part of this cross-section
+  int coarsest_mount = -1;        ///< index of the covering mount with the widest ray spacing
+  double coarsest_spacing = 0.0;  ///< [m] its spacing at its distance of interest
   int noisiest_mount = -1;
-  double noisiest_noise = 0.0;   ///< [m]
+  double noisiest_noise = 0.0;  ///< [m]
 };
 
 struct CoverageSummary {

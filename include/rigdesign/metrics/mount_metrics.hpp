@@ -17,17 +17,17 @@ struct MountMetrics {
   double noise = 0.0;          ///< N_i [m] = sigma(d_i)
   LightImmunity light;
   double points_per_second = 0.0;
-  double bandwidth = 0.0;      ///< B_i [B/s] = w_i * f_i (paper 1, eq. 2)
-  double driver_cpu = 0.0;     ///< U_p,i [core-equivalents] (paper 1, eq. 5)
+  double bandwidth = 0.0;   ///< B_i [B/s] = w_i * f_i (paper 1, eq. 2)
+  double driver_cpu = 0.0;  ///< U_p,i [core-equivalents] (paper 1, eq. 5)
   Basis driver_cpu_basis = Basis::estimate;
-  double price = 0.0;          ///< [USD]
+  double price = 0.0;  ///< [USD]
   Basis price_basis = Basis::datasheet;
   bool distance_in_range = true;  ///< d_i within [min_range, max_range]
 };
 
 /// Metrics of one mounted sensor at distance `distance` [m].
-MountMetrics compute_mount_metrics(const Mount& mount, const Sensor& sensor,
-                                   const SensorMode& mode, double distance);
+MountMetrics compute_mount_metrics(const Mount& mount, const Sensor& sensor, const SensorMode& mode,
+                                   double distance);
 
 /// Spacing between neighbouring rays at `distance` [m] for an angular step [rad]:
 /// d * tan(step), as paper 1 states it (122 mm for the VLP-16's 2 degrees at 3.5 m).

@@ -18,20 +18,20 @@ struct Limiting {
 
 struct LightResult {
   LightCondition condition = LightCondition::dark;
-  bool immune = true;                        ///< every mount works in this condition
+  bool immune = true;                       ///< every mount works in this condition
   std::vector<std::string> failing_mounts;  ///< mounts that do not
 };
 
 struct ResultantMetrics {
   std::vector<MountMetrics> mounts;
-  Limiting frequency;      ///< F [Hz], the slowest sensor
-  Limiting point_spacing;  ///< R [m], the coarsest spacing at the distance of interest
-  Limiting noise;          ///< N [m], the noisiest sensor at its distance of interest
+  Limiting frequency;                ///< F [Hz], the slowest sensor
+  Limiting point_spacing;            ///< R [m], the coarsest spacing at the distance of interest
+  Limiting noise;                    ///< N [m], the noisiest sensor at its distance of interest
   std::array<LightResult, 3> light;  ///< L, in kLightConditions order
-  double bandwidth = 0.0;   ///< B [B/s]
-  double driver_cpu = 0.0;  ///< U_p [core-equivalents]
-  double sensor_cost = 0.0; ///< C_s [USD]
-  bool any_estimate = false;  ///< some price or driver load is an estimate
+  double bandwidth = 0.0;            ///< B [B/s]
+  double driver_cpu = 0.0;           ///< U_p [core-equivalents]
+  double sensor_cost = 0.0;          ///< C_s [USD]
+  bool any_estimate = false;         ///< some price or driver load is an estimate
 
   const LightResult& light_for(LightCondition condition) const;
 };

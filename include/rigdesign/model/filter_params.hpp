@@ -19,10 +19,10 @@ struct VoxelGridParams {
 };
 
 struct PassThroughParams {
-  int axis = 2;          ///< 0 = x, 1 = y, 2 = z
-  double min = -0.10;    ///< [m] A
-  double max = 0.10;     ///< [m] B
-  bool negative = false; ///< keep what is outside instead
+  int axis = 2;           ///< 0 = x, 1 = y, 2 = z
+  double min = -0.10;     ///< [m] A
+  double max = 0.10;      ///< [m] B
+  bool negative = false;  ///< keep what is outside instead
 };
 
 struct StatisticalOutlierParams {
@@ -34,8 +34,8 @@ struct StatisticalOutlierParams {
 };
 
 struct RansacPlaneParams {
-  int iterations = 100;    ///< I: the most hypotheses tried
-  double threshold = 0.03; ///< T [m]: inlier distance
+  int iterations = 100;     ///< I: the most hypotheses tried
+  double threshold = 0.03;  ///< T [m]: inlier distance
   std::uint64_t seed = 1;
   /// Stop early once k = log(1 - confidence) / log(1 - w^3) hypotheses were tried, w the best
   /// inlier share so far: the chance that an all-inlier sample was never drawn is below
@@ -67,8 +67,8 @@ struct FloorRemoval2Params {
 /// from the sensor origin O to the point crosses the floor:
 /// P'' = (o_x + (x - o_x) s, o_y + (y - o_y) s, virtual_height), s = o_z / (o_z - z).
 struct NegativeObstacleParams {
-  double below = -0.02;         ///< [m]
-  double virtual_height = 0.10; ///< [m]
+  double below = -0.02;          ///< [m]
+  double virtual_height = 0.10;  ///< [m]
 };
 
 /// A RANSAC plane whose inliers are removed (the dominant plane, whatever its tilt).
@@ -76,9 +76,9 @@ struct RemovePlaneParams {
   RansacPlaneParams ransac;
 };
 
-using StageParams = std::variant<VoxelGridParams, StatisticalOutlierParams, PassThroughParams,
-                                 RemovePlaneParams, FloorRemoval1Params, FloorRemoval2Params,
-                                 NegativeObstacleParams>;
+using StageParams =
+    std::variant<VoxelGridParams, StatisticalOutlierParams, PassThroughParams, RemovePlaneParams,
+                 FloorRemoval1Params, FloorRemoval2Params, NegativeObstacleParams>;
 
 struct Pipeline {
   std::string name;

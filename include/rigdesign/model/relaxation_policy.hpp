@@ -12,9 +12,10 @@
 namespace rigdesign {
 
 struct RelaxationStep {
-  std::string requirement;  ///< as written, e.g. "robot_speed.max_speed", "sectors.back.min_floor_coverage"
-  std::optional<double> to;                   ///< the relaxed value (numeric requirements)
-  std::optional<LightCondition> drop;         ///< for `lighting`: the condition no longer required
+  std::string
+      requirement;  ///< as written, e.g. "robot_speed.max_speed", "sectors.back.min_floor_coverage"
+  std::optional<double> to;            ///< the relaxed value (numeric requirements)
+  std::optional<LightCondition> drop;  ///< for `lighting`: the condition no longer required
   SourceLocation where;
 };
 

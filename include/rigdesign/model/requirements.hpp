@@ -14,8 +14,8 @@ namespace rigdesign {
 /// R2: a direction of motion and the spatial coverage it needs.
 struct SectorRequirement {
   std::string name;
-  double from = 0.0;  ///< [rad] azimuth, counter-clockwise from x (forward)
-  double to = 0.0;    ///< [rad] to > from; the sector may wrap past 180 degrees
+  double from = 0.0;                   ///< [rad] azimuth, counter-clockwise from x (forward)
+  double to = 0.0;                     ///< [rad] to > from; the sector may wrap past 180 degrees
   double min_complete_coverage = 0.0;  ///< SC complete, share in [0, 1]
   double min_floor_coverage = 0.0;     ///< SC floor, share in [0, 1]
   SourceLocation where;
@@ -38,7 +38,7 @@ struct Requirements {
   // R2: directions of motion.
   std::vector<SectorRequirement> sectors;
   // R3: range and a rate the application needs regardless of motion.
-  double distance = 0.0;  ///< d [m]
+  double distance = 0.0;                ///< d [m]
   std::optional<double> min_frequency;  ///< [Hz]
   SourceLocation range_where;
   // R4: object dynamics; R5: robot speed.

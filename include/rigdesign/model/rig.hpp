@@ -27,7 +27,7 @@ struct Mount {
   /// Maps sensor-frame points into the robot frame (sensor frame: x along the optical axis).
   Pose3 T_robot_sensor = Pose3::Identity();
   std::optional<double> distance_of_interest;  ///< [m] overrides the rig's for this mount
-  SourceLocation where;         ///< the mount's entry
+  SourceLocation where;                        ///< the mount's entry
   SourceLocation sensor_where;  ///< its `sensor` value, for findings about the reference
   SourceLocation mode_where;    ///< its `mode` value
   SourceLocation pose_where;    ///< its `pose`

@@ -23,8 +23,8 @@ enum class Technology {
 enum class FovShape {
   pyramid,  ///< camera frustum: `horizontal` x `vertical` full angles about the x axis
   cone,     ///< circular: `horizontal` is the full apex angle
-  band,     ///< spinning lidar: azimuth span `horizontal`, elevation in [elevation_min, elevation_max]
-  planar,   ///< 2D scanner: aperture `horizontal`, a wedge `vertical` thick (beam divergence)
+  band,  ///< spinning lidar: azimuth span `horizontal`, elevation in [elevation_min, elevation_max]
+  planar,  ///< 2D scanner: aperture `horizontal`, a wedge `vertical` thick (beam divergence)
 };
 
 /// Field of view in the sensor frame (x forward along the optical axis, y left, z up).
@@ -69,7 +69,9 @@ struct DriverCpuLoad {
   double seconds_per_point = 0.0;  ///< [core-seconds per point]
   Basis basis = Basis::estimate;
   std::string note;
-  double load(double points_per_second) const { return cores + seconds_per_point * points_per_second; }
+  double load(double points_per_second) const {
+    return cores + seconds_per_point * points_per_second;
+  }
 };
 
 struct SensorMode {

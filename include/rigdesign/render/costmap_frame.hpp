@@ -37,6 +37,7 @@ struct CostmapFrame {
 };
 
 /// Writes the frame at `pixels_per_cell` pixels per grid cell (at least 1) atomically.
-void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int pixels_per_cell = 4);
+void draw_costmap_frame(const CostmapFrame& frame, const std::string& path,
+                        int pixels_per_cell = 4);
 
 }  // namespace rigdesign

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "rigdesign/model/eigen_types.hpp"
-#include "rigdesign/model/triangle_mesh.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
+#include "rigdesign/model/triangle_mesh.hpp"
 
 namespace rigdesign {
 

@@ -27,6 +27,7 @@ struct LocalizePlot {
   std::vector<PlotMarker> markers;
 };
 
-void plot_localization(const LocalizePlot& plot, const std::string& path, int width = 1000, int height = 820);
+void plot_localization(const LocalizePlot& plot, const std::string& path, int width = 1000,
+                       int height = 820);
 
 }  // namespace rigdesign

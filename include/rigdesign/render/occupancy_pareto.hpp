@@ -8,10 +8,10 @@
 namespace rigdesign {
 
 struct ParetoPoint {
-  std::string label;         ///< e.g. "0.1 m, hit 3/1500"
-  double f2 = 0.0;           ///< mean F2 near the person
-  double ghost_area = 0.0;   ///< [m^2] mean ghost area
-  double update_ms = 0.0;    ///< [ms] mean time per update
+  std::string label;        ///< e.g. "0.1 m, hit 3/1500"
+  double f2 = 0.0;          ///< mean F2 near the person
+  double ghost_area = 0.0;  ///< [m^2] mean ghost area
+  double update_ms = 0.0;   ///< [ms] mean time per update
 };
 
 /// Indices of the points no other point beats or equals on every measure while beating it on

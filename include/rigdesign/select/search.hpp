@@ -17,9 +17,9 @@
 namespace rigdesign {
 
 struct SearchOption {
-  double price = 0.0;      ///< [USD]
-  double bandwidth = 0.0;  ///< [bytes/s]
-  double cpu = 0.0;        ///< [core-equivalents]
+  double price = 0.0;                   ///< [USD]
+  double bandwidth = 0.0;               ///< [bytes/s]
+  double cpu = 0.0;                     ///< [core-equivalents]
   std::vector<SectionRaster> sections;  ///< one per angle of the problem
 };
 

@@ -17,12 +17,12 @@ namespace rigdesign {
 
 /// The satisficing metrics requirements R1-R8 ask for (DESIGN.md section 5).
 struct SatisficingTargets {
-  double min_frequency = 0.0;             ///< F >= [Hz]: R3's rate, R4 and R5's v / travel
-  std::optional<double> max_spacing;      ///< R <= [m]: R6's smallest obstacle
-  std::optional<double> max_noise;        ///< N <= [m]: R7
-  std::vector<LightCondition> lighting;   ///< L: R8
-  std::vector<SectorRequirement> sectors; ///< SC per sector: R2
-  double distance = 0.0;                  ///< d [m]: R3
+  double min_frequency = 0.0;              ///< F >= [Hz]: R3's rate, R4 and R5's v / travel
+  std::optional<double> max_spacing;       ///< R <= [m]: R6's smallest obstacle
+  std::optional<double> max_noise;         ///< N <= [m]: R7
+  std::vector<LightCondition> lighting;    ///< L: R8
+  std::vector<SectorRequirement> sectors;  ///< SC per sector: R2
+  double distance = 0.0;                   ///< d [m]: R3
 };
 
 SatisficingTargets satisficing_targets(const Requirements& requirements);
@@ -32,8 +32,8 @@ struct CatalogOption {
   std::size_t slot = 0;
   const Sensor* sensor = nullptr;
   const SensorMode* mode = nullptr;
-  MountMetrics metrics;    ///< at the slot's distance of interest
-  double filtering = 0.0;  ///< U_f [core-equivalents]
+  MountMetrics metrics;                 ///< at the slot's distance of interest
+  double filtering = 0.0;               ///< U_f [core-equivalents]
   std::vector<SectionRaster> sections;  ///< per angle of the space
 };
 
@@ -72,9 +72,9 @@ struct Selection {
   Rig rig;
   std::vector<const CatalogOption*> chosen;
   CostBreakdown cost;
-  SearchResult search;            ///< of the last (accepted) search
-  RigCoverage coverage;           ///< the winner on the exact path
-  int rejected_by_exact_path = 0; ///< raster winners the exact path turned down
+  SearchResult search;             ///< of the last (accepted) search
+  RigCoverage coverage;            ///< the winner on the exact path
+  int rejected_by_exact_path = 0;  ///< raster winners the exact path turned down
   double seconds = 0.0;
 };
 

@@ -19,7 +19,7 @@ struct SceneObject {
 
 struct MovingObject {
   std::string name;
-  TriangleMesh mesh;  ///< in the object's own frame
+  TriangleMesh mesh;                            ///< in the object's own frame
   std::function<Pose3(double)> T_world_object;  ///< pose at time t [s]
 };
 

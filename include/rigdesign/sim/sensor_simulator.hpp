@@ -20,8 +20,8 @@ namespace rigdesign {
 std::vector<Vec3> ray_pattern(const SensorMode& mode);
 
 struct SimulationSettings {
-  double dropout = 0.0;     ///< share of rays that return nothing, in [0, 1)
-  bool add_noise = true;    ///< range noise N(0, sigma(d)^2) along each ray
+  double dropout = 0.0;       ///< share of rays that return nothing, in [0, 1)
+  bool add_noise = true;      ///< range noise N(0, sigma(d)^2) along each ray
   bool sensor_frame = false;  ///< points in the sensor frame (else the world frame)
 };
 
