@@ -6,40 +6,29 @@
 #include "rigdesign/costmap/occupancy_ground_truth.hpp"
 #include "rigdesign/costmap/occupancy_sweep.hpp"
 #include "rigdesign/costmap/occupancy_trail.hpp"
+#include "support/box_mesh.hpp"
 
 using namespace rigdesign;
-
-namespace {
-
-// An axis-aligned box [low, high] as 12 triangles.
-TriangleMesh box(const Vec3& low, const Vec3& high) {
-  TriangleMesh mesh;
-  for (int i = 0; i < 8; ++i) {
-    mesh.vertices.emplace_back(i & 1 ? high.x() : low.x(), i & 2 ? high.y() : low.y(),
-                               i & 4 ? high.z() : low.z());
-  }
-  mesh.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                    {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 3, 7}, {1, 7, 5}};
-  return mesh;
-}
-
-}  // namespace
 
 TEST_CASE("the surface voxeliser finds a box's shell of voxels, counted by hand", "[occupancy]") {
   const VoxelLattice lattice{0.1, 0.1, 0.0, 2.0};
   // [0.05, 0.25]^3 spans voxels 0..2 per axis; voxel (1, 1, 1) = [0.1, 0.2]^3 is strictly inside.
-  const auto small = voxelise_surface(box({0.05, 0.05, 0.05}, {0.25, 0.25, 0.25}), lattice, 0.0);
+  const auto small =
+      voxelise_surface(test::box_mesh({0.05, 0.05, 0.05}, {0.25, 0.25, 0.25}), lattice, 0.0);
   CHECK(small.size() == 26u);
   CHECK_FALSE(std::binary_search(small.begin(), small.end(), VoxelKey{1, 1, 1}));
   // [0.05, 0.45]^3: a 5^3 block less its 3^3 interior = 98.
-  CHECK(voxelise_surface(box({0.05, 0.05, 0.05}, {0.45, 0.45, 0.45}), lattice, 0.0).size() == 98u);
+  CHECK(voxelise_surface(test::box_mesh({0.05, 0.05, 0.05}, {0.45, 0.45, 0.45}), lattice, 0.0)
+            .size() == 98u);
   // Only z >= 0.2 m: the top layer of the small box, 3 x 3.
-  const auto top = voxelise_surface(box({0.05, 0.05, 0.05}, {0.25, 0.25, 0.25}), lattice, 0.2);
+  const auto top =
+      voxelise_surface(test::box_mesh({0.05, 0.05, 0.05}, {0.25, 0.25, 0.25}), lattice, 0.2);
   CHECK(top.size() == 9u);
   for (const VoxelKey& key : top) CHECK(key.z == 2);
   // Anisotropic voxels and a z_min: z = floor((z - 0.05) / 0.05) for a box 0.1..0.2 m high.
   const VoxelLattice tall{0.1, 0.05, 0.05, 2.0};
-  const auto layered = voxelise_surface(box({0.01, 0.01, 0.1}, {0.09, 0.09, 0.2}), tall, 0.0);
+  const auto layered =
+      voxelise_surface(test::box_mesh({0.01, 0.01, 0.1}, {0.09, 0.09, 0.2}), tall, 0.0);
   // One column, z from 0.1 (layer 1) to 0.2 (layer 3, holding the top face): layers 1, 2, 3.
   REQUIRE(layered.size() == 3u);
   CHECK(layered.front() == VoxelKey{0, 0, 1});
@@ -111,7 +100,7 @@ class FixedMapper final : public OccupancyMapper {
 Scene sliding_box_scene() {
   Scene scene;
   scene.name = "sliding box";
-  scene.moving.push_back({"box", box({-0.2, -0.2, 0.0}, {0.2, 0.2, 1.0}), [](double t) {
+  scene.moving.push_back({"box", test::box_mesh({-0.2, -0.2, 0.0}, {0.2, 0.2, 1.0}), [](double t) {
                             return Pose3(Eigen::Translation3d(-2.0 + 0.5 * t, 0.0, 0.0));
                           }});
   return scene;

@@ -10,24 +10,13 @@
 #include "rigdesign/io/rig_loader.hpp"
 #include "rigdesign/io/sensor_library_loader.hpp"
 #include "rigdesign/io/sensor_library_locator.hpp"
+#include "support/box_mesh.hpp"
 #include "support/cli_runner.hpp"
 
 using namespace rigdesign;
 using namespace rigdesign::test;
 
 namespace {
-
-// An axis-aligned box as 12 triangles.
-TriangleMesh box(const Vec3& low, const Vec3& high) {
-  TriangleMesh mesh;
-  for (int i = 0; i < 8; ++i) {
-    mesh.vertices.emplace_back(i & 1 ? high.x() : low.x(), i & 2 ? high.y() : low.y(),
-                               i & 4 ? high.z() : low.z());
-  }
-  mesh.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  return mesh;
-}
 
 struct UrCleaner {
   Rig rig = load_rig(source_path("rigs/ur_cleaner.yaml"));
@@ -74,9 +63,10 @@ CartCells cart_cells(const Costmap& costmap) {
 
 TEST_CASE("collision check: clearance to a hand-placed box within the body's height band",
           "[scenario]") {
-  const TriangleMesh block = box({1.0, -0.2, 0.0}, {1.4, 0.2, 0.5});
-  const TriangleMesh shelf = box({-1.4, -0.2, 1.2}, {-1.0, 0.2, 1.5});  // above the 1 m body
-  const TriangleMesh floor = box({-5, -5, -0.1}, {5, 5, 0.0});          // top face at z = 0
+  const TriangleMesh block = test::box_mesh({1.0, -0.2, 0.0}, {1.4, 0.2, 0.5});
+  const TriangleMesh shelf =
+      test::box_mesh({-1.4, -0.2, 1.2}, {-1.0, 0.2, 1.5});                 // above the 1 m body
+  const TriangleMesh floor = test::box_mesh({-5, -5, -0.1}, {5, 5, 0.0});  // top face at z = 0
   const FootprintCollisionChecker checker({{"block", &block}, {"shelf", &shelf}, {"floor", &floor}},
                                           HeightBand{0.02, 1.0});
   // Axis at the origin: the block's near face is 1.0 m away, the body's radius 0.45 m.
@@ -91,7 +81,7 @@ TEST_CASE("collision check: clearance to a hand-placed box within the body's hei
   // 2.0 m away (from x = -1.0 to the block's face at 1.0) counts.
   CHECK(checker.clearance({-1.0, 0.0}, 0.45).distance == Approx(2.0 - 0.45));
   // An overhang inside the band counts even with nothing under it.
-  const TriangleMesh foam = box({0.0, 0.15, 0.37}, {1.2, 0.6, 0.45});
+  const TriangleMesh foam = test::box_mesh({0.0, 0.15, 0.37}, {1.2, 0.6, 0.45});
   const FootprintCollisionChecker overhang({{"foam", &foam}}, HeightBand{0.02, 1.0});
   CHECK(overhang.clearance({0.6, 0.0}, 0.45).distance == Approx(0.15 - 0.45));
   CHECK(overhang.clearance({0.6, -0.4}, 0.45).distance == Approx(0.55 - 0.45));
@@ -124,7 +114,7 @@ TEST_CASE("path follower: pure pursuit command and the unicycle's exact arc", "[
 TEST_CASE("path follower reaches the goal on an empty floor", "[scenario]") {
   ScenarioDefinition scenario;
   scenario.name = "empty";
-  scenario.scene.objects.push_back({"floor", box({-5, -5, -0.1}, {5, 5, 0.0})});
+  scenario.scene.objects.push_back({"floor", test::box_mesh({-5, -5, -0.1}, {5, 5, 0.0})});
   scenario.route = {{Vec2(3.0, 1.0), 0.0}};
   scenario.max_duration = 20.0;
   ScenarioParams params;

@@ -1,0 +1,11 @@
+#pragma once
+// Scene geometry for tests, written apart from the simulator's own primitives so tests do not
+// check the library against itself.
+#include "rigdesign/model/triangle_mesh.hpp"
+
+namespace rigdesign::test {
+
+/// An axis-aligned box [low, high] as 12 triangles, faces wound outwards.
+TriangleMesh box_mesh(const Vec3& low, const Vec3& high);
+
+}  // namespace rigdesign::test
