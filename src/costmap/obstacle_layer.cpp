@@ -10,10 +10,6 @@ using costmap_detail::GridPoint;
 using costmap_detail::GridSize;
 using costmap_detail::GridStride;
 
-bool in_height_band(const Vec3& p_world, const ObservationSource& source) {
-  return p_world.z() >= source.min_obstacle_height && p_world.z() <= source.max_obstacle_height;
-}
-
 struct PlaneFrame {
   Vec2 corner;
   double inverse_resolution;
@@ -36,7 +32,7 @@ void clear_cloud(const PlaneFrame& frame, std::uint8_t* cells,
   const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
   for (const Point3f& point : observation.cloud->points) {
     const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
-    if (!in_height_band(p_world, source)) continue;
+    if (!source.in_height_band(p_world.z())) continue;
     const Vec3 ray = p_world - origin;
     const double length = ray.norm();
     if (!(length > source.raytrace_min_range)) continue;
@@ -56,13 +52,9 @@ void clear_cloud(const PlaneFrame& frame, std::uint8_t* cells,
 void mark_cloud(const PlaneFrame& frame, std::uint8_t* cells, const CloudObservation& observation) {
   const ObservationSource& source = observation.source;
   const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
-  const double min_squared = source.obstacle_min_range * source.obstacle_min_range;
-  const double max_squared = source.obstacle_max_range * source.obstacle_max_range;
   for (const Point3f& point : observation.cloud->points) {
     const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
-    if (!in_height_band(p_world, source)) continue;
-    const double squared = (p_world - origin).squaredNorm();
-    if (squared < min_squared || squared > max_squared) continue;
+    if (!source.marks(p_world, origin)) continue;
     const GridPoint<2> g = frame.to_grid(p_world);
     if (!costmap_detail::inside_grid<2>(g, frame.size)) continue;
     const auto cell = g.array().floor().cast<std::ptrdiff_t>();

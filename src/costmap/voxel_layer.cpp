@@ -78,14 +78,9 @@ void mark_cloud(const GridFrame& frame, std::uint8_t* voxels, const CloudObserva
                 VoxelUpdateStats& stats) {
   const ObservationSource& source = observation.source;
   const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
-  const double min_squared = source.obstacle_min_range * source.obstacle_min_range;
-  const double max_squared = source.obstacle_max_range * source.obstacle_max_range;
   for (const Point3f& point : observation.cloud->points) {
     const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
-    const double squared = (p_world - origin).squaredNorm();
-    if (squared < min_squared || squared > max_squared) continue;
-    if (p_world.z() < source.min_obstacle_height || p_world.z() > source.max_obstacle_height)
-      continue;
+    if (!source.marks(p_world, origin)) continue;
     const GridPoint<3> g = frame.to_grid(p_world);
     if (!costmap_detail::inside_grid<3>(g, frame.size)) continue;
     const auto cell = g.array().floor().cast<std::ptrdiff_t>();

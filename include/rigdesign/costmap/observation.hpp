@@ -19,6 +19,18 @@ struct ObservationSource {
   /// noise out of the grid, while paper 2's negative-obstacle points (10 cm) still mark.
   double min_obstacle_height = 0.05;
   double max_obstacle_height = 2.0;
+
+  /// Whether a world-frame z lies in the [min, max]_obstacle_height band.
+  bool in_height_band(double z_world) const {
+    return z_world >= min_obstacle_height && z_world <= max_obstacle_height;
+  }
+  /// Whether an end point marks: in the height band, and its distance from the sensor origin
+  /// within [obstacle_min_range, obstacle_max_range]. The 2D and 3D layers share this rule.
+  bool marks(const Vec3& p_world, const Vec3& origin_world) const {
+    const double squared = (p_world - origin_world).squaredNorm();
+    return in_height_band(p_world.z()) && squared >= obstacle_min_range * obstacle_min_range &&
+           squared <= obstacle_max_range * obstacle_max_range;
+  }
 };
 
 /// A cloud in any frame and the transform to the world; the cloud's `origin` is the sensor
