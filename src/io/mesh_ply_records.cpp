@@ -1,34 +1,11 @@
 #include "io/mesh_ply_records.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 #include "io/mesh_formats.hpp"
 
 namespace rigdesign::io {
 namespace {
-
-template <typename Value>
-double load(std::string_view bytes, std::size_t at) {
-  Value value;
-  std::memcpy(&value, bytes.data() + at, sizeof value);
-  return static_cast<double>(value);
-}
-
-// Every PLY scalar type fits a double exactly (PLY has no 64-bit integers).
-double load_scalar(std::string_view bytes, std::size_t at, PlyScalar type) {
-  switch (type) {
-    case PlyScalar::int8: return load<std::int8_t>(bytes, at);
-    case PlyScalar::uint8: return load<std::uint8_t>(bytes, at);
-    case PlyScalar::int16: return load<std::int16_t>(bytes, at);
-    case PlyScalar::uint16: return load<std::uint16_t>(bytes, at);
-    case PlyScalar::int32: return load<std::int32_t>(bytes, at);
-    case PlyScalar::uint32: return load<std::uint32_t>(bytes, at);
-    case PlyScalar::float32: return load<float>(bytes, at);
-    case PlyScalar::float64: return load<double>(bytes, at);
-  }
-  return 0.0;
-}
 
 std::size_t column(std::string_view line, std::string_view word) {
   return static_cast<std::size_t>(column_of(line, word));
@@ -146,12 +123,12 @@ void BinaryPlyRecords::read(const PlyElement& element, std::size_t index, std::s
     if (!property.is_list) {
       need(size_of(property.type), element, index, start);
       record.scalar_at[p] = offset_;
-      record.scalars[p] = load_scalar(bytes_, offset_, property.type);
+      record.scalars[p] = read_ply_scalar(bytes_, offset_, property.type);
       offset_ += size_of(property.type);
       continue;
     }
     need(size_of(property.list_count_type), element, index, start);
-    const double length = load_scalar(bytes_, offset_, property.list_count_type);
+    const double length = read_ply_scalar(bytes_, offset_, property.list_count_type);
     if (length < 0) {
       fail(record, offset_, ply_field(element, index, property.name),
            "negative list length " + std::to_string(static_cast<std::int64_t>(length)),
@@ -164,7 +141,7 @@ void BinaryPlyRecords::read(const PlyElement& element, std::size_t index, std::s
     if (items > (bytes_.size() - offset_) / item_size) truncated(element, index, start);
     for (std::size_t i = 0; i < items && p == wanted; ++i) {
       const std::size_t at = offset_ + i * item_size;
-      record.items.push_back(static_cast<std::int64_t>(load_scalar(bytes_, at, property.type)));
+      record.items.push_back(static_cast<std::int64_t>(read_ply_scalar(bytes_, at, property.type)));
       record.item_at.push_back(at);
     }
     offset_ += items * item_size;

@@ -1,6 +1,5 @@
 // PLY bodies (ascii, binary_little_endian) and the PLY writer.
 #include <cstdint>
-#include <cstring>
 
 #include "io/ascii_points.hpp"
 #include "io/cloud_formats.hpp"
@@ -11,28 +10,6 @@
 
 namespace rigdesign::io {
 namespace {
-
-template <typename Integer>
-std::int64_t read_integer(std::string_view bytes, std::size_t at) {
-  Integer value;
-  std::memcpy(&value, bytes.data() + at, sizeof value);
-  return static_cast<std::int64_t>(value);
-}
-
-// A list's length stored as `type` at `at` (the caller checked the bytes are there).
-std::int64_t read_list_length(std::string_view bytes, std::size_t at, PlyScalar type) {
-  switch (type) {
-    case PlyScalar::int8: return read_integer<std::int8_t>(bytes, at);
-    case PlyScalar::uint8: return read_integer<std::uint8_t>(bytes, at);
-    case PlyScalar::int16: return read_integer<std::int16_t>(bytes, at);
-    case PlyScalar::uint16: return read_integer<std::uint16_t>(bytes, at);
-    case PlyScalar::int32: return read_integer<std::int32_t>(bytes, at);
-    case PlyScalar::uint32: return read_integer<std::uint32_t>(bytes, at);
-    case PlyScalar::float32:
-    case PlyScalar::float64: break;  // the header refuses float list lengths
-  }
-  return -1;
-}
 
 [[noreturn]] void throw_truncated(const std::string& path, const PlyElement& element,
                                   std::size_t offset) {
@@ -55,7 +32,9 @@ std::size_t skip_binary_element(const std::string& path, std::string_view bytes,
       std::size_t size = size_of(property.type);
       if (property.is_list) {
         need(size_of(property.list_count_type));
-        const std::int64_t length = read_list_length(bytes, offset, property.list_count_type);
+        // An integer: the header refuses float list lengths.
+        const auto length =
+            static_cast<std::int64_t>(read_ply_scalar(bytes, offset, property.list_count_type));
         if (length < 0) {
           throw_data_error(path, 0,
                            "negative list length in element " + element.name + " at byte offset " +

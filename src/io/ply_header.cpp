@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <utility>
 
@@ -199,6 +200,13 @@ class HeaderParser {
   bool has_format_ = false;
 };
 
+template <typename Value>
+double load(std::string_view bytes, std::size_t at) {
+  Value value;
+  std::memcpy(&value, bytes.data() + at, sizeof value);
+  return static_cast<double>(value);
+}
+
 }  // namespace
 
 std::size_t size_of(PlyScalar type) {
@@ -221,6 +229,20 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view bytes) {
 
 std::string to_string(PlyEncoding encoding) {
   return encoding == PlyEncoding::ascii ? "ascii" : "binary_little_endian";
+}
+
+double read_ply_scalar(std::string_view bytes, std::size_t at, PlyScalar type) {
+  switch (type) {
+    case PlyScalar::int8: return load<std::int8_t>(bytes, at);
+    case PlyScalar::uint8: return load<std::uint8_t>(bytes, at);
+    case PlyScalar::int16: return load<std::int16_t>(bytes, at);
+    case PlyScalar::uint16: return load<std::uint16_t>(bytes, at);
+    case PlyScalar::int32: return load<std::int32_t>(bytes, at);
+    case PlyScalar::uint32: return load<std::uint32_t>(bytes, at);
+    case PlyScalar::float32: return load<float>(bytes, at);
+    case PlyScalar::float64: return load<double>(bytes, at);
+  }
+  return 0.0;
 }
 
 }  // namespace rigdesign::io

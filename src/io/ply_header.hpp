@@ -45,6 +45,10 @@ struct PlyHeader {
 /// Bytes one value of `type` takes in a binary body.
 std::size_t size_of(PlyScalar type);
 
+/// The little-endian binary value of `type` at byte `at` (the caller checked the bytes are
+/// there). Every PLY scalar type fits a double exactly (PLY has no 64-bit integers).
+double read_ply_scalar(std::string_view bytes, std::size_t at, PlyScalar type);
+
 /// Parses the header at the start of `bytes`. Throws InputError at the offending line for a
 /// missing `ply` magic, a missing or unsupported format (binary_big_endian is refused), an
 /// unknown keyword or type, a property outside an element, a missing `end_header`, no
