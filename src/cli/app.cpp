@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "command.hpp"
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::cli {
 

@@ -16,11 +16,11 @@
 #include "inputs.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
-#include "rigdesign/costmap/map_files.hpp"
-#include "rigdesign/costmap/scenario.hpp"
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/maps/map_files.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/render/costmap_frame.hpp"
+#include "rigdesign/scenarios/scenario_runner.hpp"
 #include "text_table.hpp"
 
 namespace rigdesign::cli {

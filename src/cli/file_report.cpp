@@ -6,11 +6,11 @@
 
 #include "inputs.hpp"
 #include "json_report.hpp"
-#include "rigdesign/io/catalog_loader.hpp"
-#include "rigdesign/io/policy_loader.hpp"
-#include "rigdesign/io/requirements_loader.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
-#include "rigdesign/io/sensor_library_locator.hpp"
+#include "rigdesign/io/config/catalog_loader.hpp"
+#include "rigdesign/io/config/policy_loader.hpp"
+#include "rigdesign/io/config/requirements_loader.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
+#include "rigdesign/io/config/sensor_library_locator.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/format_number.hpp"
 

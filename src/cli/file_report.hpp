@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "rigdesign/io/file_kind.hpp"
-#include "rigdesign/io/input_error.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::cli {
 

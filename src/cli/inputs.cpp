@@ -4,12 +4,12 @@
 #include <filesystem>
 
 #include "rigdesign/geometry/mount_placement.hpp"
-#include "rigdesign/io/requirements_loader.hpp"
-#include "rigdesign/io/rig_loader.hpp"
-#include "rigdesign/io/rig_references.hpp"
-#include "rigdesign/io/scene_file_loader.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
-#include "rigdesign/io/sensor_library_locator.hpp"
+#include "rigdesign/io/config/requirements_loader.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
+#include "rigdesign/io/config/rig_references.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
+#include "rigdesign/io/config/sensor_library_locator.hpp"
+#include "rigdesign/io/scene/scene_file_loader.hpp"
 #include "rigdesign/model/format_number.hpp"
 
 namespace rigdesign::cli {

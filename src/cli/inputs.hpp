@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "rigdesign/io/input_error.hpp"
 #include "rigdesign/model/catalog.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/requirements.hpp"
 #include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/scene.hpp"
 #include "rigdesign/model/sensor.hpp"
-#include "rigdesign/sim/scene.hpp"
 
 namespace rigdesign::cli {
 

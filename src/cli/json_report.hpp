@@ -4,10 +4,10 @@
 #include <vector>
 
 #include "inputs.hpp"
-#include "rigdesign/io/input_error.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/metrics/resultant.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::cli {
 

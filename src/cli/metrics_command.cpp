@@ -11,7 +11,7 @@
 #include "command.hpp"
 #include "inputs.hpp"
 #include "json_report.hpp"
-#include "rigdesign/io/filtering_loads_io.hpp"
+#include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/metrics/resultant.hpp"

@@ -14,10 +14,10 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
-#include "rigdesign/costmap/occupancy_evaluation.hpp"
-#include "rigdesign/costmap/occupancy_sweep.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/occupancy/occupancy_evaluation.hpp"
+#include "rigdesign/occupancy/occupancy_sweep.hpp"
 #include "rigdesign/render/occupancy_pareto.hpp"
 #include "text_table.hpp"
 

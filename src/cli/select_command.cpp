@@ -14,9 +14,9 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
-#include "rigdesign/io/catalog_loader.hpp"
-#include "rigdesign/io/policy_loader.hpp"
-#include "rigdesign/io/requirements_loader.hpp"
+#include "rigdesign/io/config/catalog_loader.hpp"
+#include "rigdesign/io/config/policy_loader.hpp"
+#include "rigdesign/io/config/requirements_loader.hpp"
 #include "rigdesign/select/relaxation.hpp"
 #include "select_report.hpp"
 

@@ -8,7 +8,7 @@
 #include "coverage_files.hpp"
 #include "json_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
-#include "rigdesign/io/yaml_writers.hpp"
+#include "rigdesign/io/config/yaml_writers.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/render/pareto_plot.hpp"
 #include "text_table.hpp"

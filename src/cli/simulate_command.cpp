@@ -10,7 +10,7 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
-#include "rigdesign/io/cloud_io.hpp"
+#include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
 
 namespace rigdesign::cli {

@@ -4,8 +4,8 @@
 #include <limits>
 
 #include "rigdesign/costmap/costmap.hpp"
-#include "rigdesign/io/input_error.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "filters/neighbour_grid.hpp"
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign {
 

@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "rigdesign/io/input_error.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign {
 namespace {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io {
 

@@ -4,8 +4,8 @@
 #include <numbers>
 #include <random>
 
-#include "rigdesign/io/input_error.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign {
 namespace {

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <functional>
 
-#include "rigdesign/io/input_error.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign {
 namespace {

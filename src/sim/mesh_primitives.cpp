@@ -1,4 +1,4 @@
-#include "mesh_primitives.hpp"
+#include "rigdesign/sim/mesh_primitives.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "mesh_primitives.hpp"
+#include "rigdesign/sim/mesh_primitives.hpp"
 #include "scene_generators.hpp"
 
 namespace rigdesign::sim {

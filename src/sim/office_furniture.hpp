@@ -4,7 +4,7 @@
 #include <string>
 
 #include "rigdesign/model/eigen_types.hpp"
-#include "rigdesign/sim/scene.hpp"
+#include "rigdesign/model/scene.hpp"
 
 namespace rigdesign::sim {
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "mesh_primitives.hpp"
 #include "office_furniture.hpp"
 #include "rigdesign/model/units.hpp"
+#include "rigdesign/sim/mesh_primitives.hpp"
 #include "scene_generators.hpp"
 
 namespace rigdesign::sim {

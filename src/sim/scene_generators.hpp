@@ -5,7 +5,7 @@
 #include <string>
 #include <utility>
 
-#include "rigdesign/sim/scene.hpp"
+#include "rigdesign/model/scene.hpp"
 
 namespace rigdesign::sim {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh_primitives.hpp"
+#include "rigdesign/sim/mesh_primitives.hpp"
 #include "scene_generators.hpp"
 
 namespace rigdesign::sim {

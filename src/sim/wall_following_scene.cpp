@@ -4,7 +4,7 @@
 // stand clear of the path, the foam reaches into it.
 #include <string>
 
-#include "mesh_primitives.hpp"
+#include "rigdesign/sim/mesh_primitives.hpp"
 #include "scene_generators.hpp"
 
 namespace rigdesign::sim {

@@ -12,8 +12,8 @@
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/costmap.hpp"
 #include "rigdesign/costmap/dijkstra_planner.hpp"
-#include "rigdesign/io/rig_loader.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
 
 namespace {

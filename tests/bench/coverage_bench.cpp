@@ -9,8 +9,8 @@
 
 #include "rigdesign/geometry/section_polygons.hpp"
 #include "rigdesign/geometry/section_raster.hpp"
-#include "rigdesign/io/rig_loader.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 
 namespace {

@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "rigdesign/filters/pipeline.hpp"
-#include "rigdesign/io/cloud_io.hpp"
-#include "rigdesign/io/rig_loader.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/cloud/cloud_io.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"

@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "rigdesign/costmap/occupancy_evaluation.hpp"
-#include "rigdesign/costmap/occupancy_sweep.hpp"
 #include "rigdesign/costmap/voxel_layer.hpp"
-#include "rigdesign/io/rig_loader.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
+#include "rigdesign/occupancy/occupancy_evaluation.hpp"
+#include "rigdesign/occupancy/occupancy_sweep.hpp"
 #include "rigdesign/sim/ray_caster.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 

@@ -4,9 +4,9 @@
 // the time per evaluated rig. Run through scripts/bench.sh select.
 #include <benchmark/benchmark.h>
 
-#include "rigdesign/io/catalog_loader.hpp"
-#include "rigdesign/io/requirements_loader.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/config/catalog_loader.hpp"
+#include "rigdesign/io/config/requirements_loader.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/select/selection.hpp"
 
 namespace {

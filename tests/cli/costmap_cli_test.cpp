@@ -4,7 +4,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
-#include "rigdesign/costmap/map_files.hpp"
+#include "rigdesign/io/maps/map_files.hpp"
 #include "support/cli_runner.hpp"
 #include "support/fixture_files.hpp"
 #include "support/temp_folder.hpp"

@@ -2,8 +2,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "rigdesign/io/input_error.hpp"
-#include "rigdesign/io/pipeline_loader.hpp"
+#include "rigdesign/io/config/pipeline_loader.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 

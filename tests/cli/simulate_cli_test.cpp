@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "rigdesign/io/cloud_io.hpp"
+#include "rigdesign/io/cloud/cloud_io.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "rigdesign/costmap/cost_values.hpp"
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 using namespace rigdesign;
 

@@ -4,7 +4,7 @@
 #include <random>
 
 #include "rigdesign/filters/pipeline.hpp"
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 using namespace rigdesign;
 

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "rigdesign/geometry/cross_section.hpp"
-#include "rigdesign/io/rig_loader.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"

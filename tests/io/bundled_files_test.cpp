@@ -2,11 +2,11 @@
 #include <filesystem>
 #include <set>
 
+#include "rigdesign/io/config/requirements_loader.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
+#include "rigdesign/io/config/rig_references.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/io/file_kind.hpp"
-#include "rigdesign/io/requirements_loader.hpp"
-#include "rigdesign/io/rig_loader.hpp"
-#include "rigdesign/io/rig_references.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
 #include "rigdesign/model/units.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"

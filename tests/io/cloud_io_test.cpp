@@ -1,7 +1,7 @@
 // Point cloud files: round trips through every encoding, hand-built files for the layouts the
 // writer never produces (extra fields, binary_compressed, PLY faces), PCL's real test clouds,
 // and located errors for bad input.
-#include "rigdesign/io/cloud_io.hpp"
+#include "rigdesign/io/cloud/cloud_io.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <limits>
 
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;

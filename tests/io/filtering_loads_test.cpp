@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "rigdesign/io/catalog_loader.hpp"
-#include "rigdesign/io/filtering_loads_io.hpp"
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/io/config/catalog_loader.hpp"
+#include "rigdesign/io/config/filtering_loads_io.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 

@@ -1,14 +1,14 @@
 // Mesh files: a unit cube in every format and layout (ascii and binary PLY written byte by
 // byte here, OBJ with every corner form and negative indices, OFF with comments), checked by
 // triangle count, area and enclosed volume computed here; and located errors for bad input.
-#include "rigdesign/io/mesh_loader.hpp"
+#include "rigdesign/io/mesh/mesh_loader.hpp"
 
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstring>
 #include <functional>
 
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;

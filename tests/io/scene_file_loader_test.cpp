@@ -1,13 +1,13 @@
 // Scene files: placement of static meshes, waypoint and ellipse motion at hand-computed
 // times, the bundled lab, and located errors for bad scene files.
-#include "rigdesign/io/scene_file_loader.hpp"
+#include "rigdesign/io/scene/scene_file_loader.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
 #include <numbers>
 
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 

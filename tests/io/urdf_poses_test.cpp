@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "rigdesign/io/rig_loader.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 

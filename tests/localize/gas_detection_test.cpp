@@ -3,6 +3,9 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
+#include "rigdesign/io/logs/co2_log_reader.hpp"
+#include "rigdesign/io/logs/ground_truth_files.hpp"
+
 using namespace rigdesign;
 
 namespace {

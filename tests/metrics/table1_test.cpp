@@ -2,10 +2,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "rigdesign/io/requirements_loader.hpp"
-#include "rigdesign/io/rig_loader.hpp"
-#include "rigdesign/io/rig_references.hpp"
-#include "rigdesign/io/sensor_library_loader.hpp"
+#include "rigdesign/io/config/requirements_loader.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
+#include "rigdesign/io/config/rig_references.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "support/cli_runner.hpp"

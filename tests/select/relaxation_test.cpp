@@ -2,7 +2,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/select/relax_step.hpp"
 
 using namespace rigdesign;

@@ -1,4 +1,4 @@
-#include "rigdesign/sim/scene.hpp"
+#include "rigdesign/model/scene.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>

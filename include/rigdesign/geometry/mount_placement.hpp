@@ -1,5 +1,5 @@
 #pragma once
-#include "rigdesign/io/input_error.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/rig.hpp"
 
 namespace rigdesign {

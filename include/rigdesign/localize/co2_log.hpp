@@ -25,10 +25,4 @@ struct Co2Log {
   std::vector<Co2Reading> readings;
 };
 
-/// Throws InputError on a missing column, a non-numeric field, a negative concentration or a
-/// log without readings.
-Co2Log parse_co2_log(const std::string& text, const std::string& file);
-
-Co2Log read_co2_log(const std::string& path);
-
 }  // namespace rigdesign

@@ -7,7 +7,7 @@
 
 #include "rigdesign/model/point_cloud.hpp"
 #include "rigdesign/model/rig.hpp"
-#include "rigdesign/sim/scene.hpp"
+#include "rigdesign/model/scene.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
 namespace rigdesign {

@@ -1,0 +1,15 @@
+#pragma once
+/// Reads CO2 logs in both forms described in rigdesign/localize/co2_log.hpp.
+#include <string>
+
+#include "rigdesign/localize/co2_log.hpp"
+
+namespace rigdesign {
+
+/// Throws InputError on a missing column, a non-numeric field, a negative concentration or a
+/// log without readings.
+Co2Log parse_co2_log(const std::string& text, const std::string& file);
+
+Co2Log read_co2_log(const std::string& path);
+
+}  // namespace rigdesign

@@ -1,0 +1,23 @@
+#pragma once
+/// Reads and writes the ground-truth files the KPIs compare against
+/// (rigdesign/localize/ground_truth.hpp).
+#include <string>
+#include <vector>
+
+#include "rigdesign/localize/ground_truth.hpp"
+
+namespace rigdesign {
+
+/// CSV with header `bssid,x,y,z` (columns in any order), one emitter per line. Errors name
+/// file:line:column like the log readers.
+std::vector<EmitterTruth> parse_emitter_truth(const std::string& text, const std::string& file);
+
+std::vector<EmitterTruth> read_emitter_truth(const std::string& path);
+
+std::string to_emitter_truth_csv(const std::vector<EmitterTruth>& truth);
+
+/// Reads the artifact list (JSON, read with the YAML parser, which accepts it); InputError
+/// naming line and column on a missing or mistyped key.
+std::vector<Artifact> read_artifacts(const std::string& path);
+
+}  // namespace rigdesign

@@ -1,0 +1,109 @@
+#pragma once
+/// The robot in the loop (issue 6 item 2; paper 1 section 4, Fig. 12): a rig's sensors are
+/// simulated in a scene at the robot's pose, the costmap takes their clouds, Dijkstra plans
+/// on its master grid towards a goal along a route, a pure-pursuit follower drives the
+/// body, and every control step checks the body against the scene's ground-truth triangles.
+/// Deterministic for a seed.
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rigdesign/costmap/costmap.hpp"
+#include "rigdesign/costmap/dijkstra_planner.hpp"
+#include "rigdesign/costmap/path_follower.hpp"
+#include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/scene.hpp"
+#include "rigdesign/model/sensor.hpp"
+#include "rigdesign/scenarios/scenario_library.hpp"
+
+namespace rigdesign {
+
+struct ScenarioParams {
+  /// robot_radius and the inscribed radius are set from the rig's body; the inflation radius
+  /// is raised to inscribed + 0.1 m when smaller; the voxel band's top to the body's height.
+  CostmapParams costmap = scenario_costmap_defaults();
+  /// Per-mount source settings; max_obstacle_height is set to the body's height (nav2 practice:
+  /// points above the robot neither mark nor clear).
+  ObservationSource source = scenario_source_defaults();
+  PlannerParams planner;
+  FollowerParams follower;
+  double update_rate = 5.0;      ///< [Hz] sensing, costmap update and planning
+  double control_rate = 20.0;    ///< [Hz] follower commands and collision checks
+  double goal_lookahead = 2.0;   ///< [m] local goal distance along the route (capped by the window)
+  double goal_tolerance = 0.15;  ///< [m] a stop counts as reached within this distance
+  /// [m] a local goal on a blocked cell moves to the nearest passable cell this close to it.
+  double goal_search_radius = 1.0;
+  double ground_clearance = 0.02;  ///< [m] bottom of the body's height band (the floor is not hit)
+  /// Every k-th ray along each image axis of cameras (an Azure Kinect frame has 368,640 rays),
+  /// and along each axis of lidar and scanner patterns: the tests' and default runs' speed.
+  /// 1 casts every ray.
+  int camera_decimation = 8;
+  int lidar_decimation = 4;
+  bool add_noise = true;   ///< range noise per sensor model
+  std::uint64_t seed = 1;  ///< sensor noise streams
+};
+
+/// A sampled pose of the run.
+struct TrajectorySample {
+  double time = 0.0;  ///< [s]
+  Pose2 pose;
+};
+
+/// What one costmap update saw and decided, for drawing and tests (valid during the callback).
+struct ScenarioStep {
+  int index = 0;                  ///< update number from 0
+  double time = 0.0;              ///< [s]
+  Pose2 pose;                     ///< robot pose at the update
+  bool velocity_command = false;  ///< the command given to the costmap's motion condition
+  bool waiting = false;           ///< the robot stands at a stop
+  const Costmap* costmap = nullptr;
+  const PlannedPath* path = nullptr;   ///< the plan of this update (empty while waiting)
+  Vec2 goal = Vec2::Zero();            ///< the local goal planned to [m]
+  std::span<const PointCloud> clouds;  ///< this update's clouds, world frame, one per mount
+};
+
+struct ScenarioResult {
+  bool collided = false;
+  double collision_time = std::numeric_limits<double>::quiet_NaN();  ///< [s] first contact
+  std::string collision_object;                                      ///< scene object hit
+  Vec2 collision_position = Vec2::Zero();                            ///< robot centre [m]
+  /// [m] smallest body clearance over the run (negative: penetration at the collision step).
+  double min_clearance = std::numeric_limits<double>::infinity();
+  double min_clearance_time = 0.0;  ///< [s]
+  std::string min_clearance_object;
+  bool reached_goal = false;
+  double end_time = 0.0;  ///< [s] goal, collision or max_duration
+  int updates = 0;
+  int planner_failures = 0;  ///< updates whose plan found no path (the robot held still)
+  std::vector<TrajectorySample> trajectory;  ///< one sample per costmap update and the last pose
+  std::vector<double> update_seconds;        ///< wall time of each Costmap::update [s]
+  std::vector<double> planner_seconds;       ///< wall time of each plan [s]
+};
+
+/// Throws InputError at the rig's `mounts` (file:line:column) when no mount can mark: none
+/// of its rays reaches the costmap's height band within the marking range, or the rig has no
+/// mounts; at the rig's `body` when its radius or height is not positive. Also checks the
+/// costmap parameters (InputError, fields as in check_costmap_params, at `where`).
+void check_scenario_inputs(const Rig& rig, const SensorLibrary& library,
+                           const ScenarioParams& params,
+                           const SourceLocation& where = SourceLocation{"(command line)"});
+
+/// Runs the scenario with `rig`'s sensors (modes from `library`) on a body of the rig's
+/// radius and height. Checks its inputs first (check_scenario_inputs). `on_update` is called
+/// after every costmap update and plan. The run stops at the first collision, at the goal or
+/// at max_duration. Deterministic for params.seed, except the measured times.
+ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
+                            const SensorLibrary& library, const ScenarioParams& params,
+                            const std::function<void(const ScenarioStep&)>& on_update = {});
+
+/// Median and 99th percentile (nearest rank) of durations [s]; zeros when empty.
+struct TimeSummary {
+  double median = 0.0;
+  double p99 = 0.0;
+};
+TimeSummary summarize_times(std::vector<double> seconds);
+
+}  // namespace rigdesign

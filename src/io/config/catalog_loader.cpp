@@ -1,0 +1,213 @@
+#include "rigdesign/io/config/catalog_loader.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "io/config/field_checks.hpp"
+#include "io/config/placement_fields.hpp"
+#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/filtering_loads_io.hpp"
+
+namespace rigdesign {
+namespace {
+
+using io::MapReader;
+using io::Need;
+
+std::vector<std::string> read_names(MapReader& reader, const std::string& key,
+                                    const std::string& expected) {
+  std::vector<std::string> names;
+  const YAML::Node list = reader.node(key);
+  if (!list.IsSequence() || list.size() == 0) {
+    reader.require(false, key, list.IsSequence() ? "is empty" : "is not a list", expected);
+    return names;
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    if (!list[i].IsScalar()) {
+      reader.diagnostics().error(io::location_of(list[i], reader.file()),
+                                 reader.field(key) + "[" + std::to_string(i) + "]", "is not a name",
+                                 expected);
+      continue;
+    }
+    names.push_back(list[i].Scalar());
+  }
+  return names;
+}
+
+PricedCapacity read_priced(MapReader& reader, const std::string& capacity_key,
+                           const std::string& capacity_expected) {
+  PricedCapacity item;
+  item.where = reader.location();
+  item.id = reader.text("id", Need::required, "an id").value_or("");
+  item.capacity = io::positive(reader, capacity_key, Need::required, capacity_expected);
+  item.price = io::non_negative(reader, "price_usd", Need::required, "US dollars, >= 0");
+  reader.text("note", Need::optional);
+  reader.reject_unknown_keys();
+  return item;
+}
+
+/// The measured loads file named by `filtering_loads` (relative to the catalog), if any.
+std::optional<FilteringLoads> read_measured_loads(MapReader& top, const std::string& catalog_path) {
+  const std::optional<std::string> name = top.text("filtering_loads", Need::optional);
+  if (!name) return std::nullopt;
+  const std::filesystem::path resolved = std::filesystem::path(catalog_path).parent_path() / *name;
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(resolved, error)) {
+    throw InputError(
+        Diagnostic{top.location("filtering_loads"), top.field("filtering_loads"),
+                   "'" + resolved.string() + "' does not exist",
+                   "a file written by `rigdesign filter --write-loads`, relative to the catalog"});
+  }
+  return load_filtering_loads(resolved.string());
+}
+
+}  // namespace
+
+Catalog load_catalog(const std::string& path) {
+  const YAML::Node root = io::load_yaml_file(path);
+  Diagnostics diagnostics;
+  MapReader top(root, "", path, diagnostics, {path, 1, 1});
+  if (!top.valid()) {
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
+                                "a catalog: name, body, distance_of_interest, sensors, slots, "
+                                "transfer, cpus"});
+  }
+  Catalog catalog;
+  catalog.file = path;
+  catalog.where = top.location();
+  catalog.name = top.text("name", Need::required, "the catalog's name").value_or("");
+  catalog.sensor_library = top.text("sensor_library", Need::optional).value_or("");
+  catalog.sensor_library_where = top.location("sensor_library");
+  if (auto body = top.map("body", Need::required, "a map with height and radius or footprint")) {
+    catalog.body = io::read_body(*body);
+  }
+  catalog.distance_of_interest =
+      io::positive(top, "distance_of_interest", Need::required,
+                   "the distance of interest d in metres, > body radius");
+  if (catalog.distance_of_interest > 0 && catalog.body.radius > 0) {
+    top.require(catalog.distance_of_interest > catalog.body.radius, "distance_of_interest",
+                "is not beyond the body radius", "d > r");
+  }
+  catalog.reference_machine =
+      top.text("reference_machine", Need::required, "what a CPU core-equivalent means")
+          .value_or("");
+  catalog.filtering_seconds_per_point =
+      io::non_negative(top, "filtering_seconds_per_point", Need::required,
+                       "core-seconds of point filtering per delivered point, >= 0");
+  const std::optional<FilteringLoads> measured = read_measured_loads(top, path);
+  const std::optional<UrdfPoses> urdf = io::read_urdf(top, path);
+
+  std::set<std::string> seen;
+  for (MapReader& reader : top.maps("sensors", Need::required, "a list of candidate sensors")) {
+    CandidateSensor candidate;
+    candidate.where = reader.location();
+    candidate.sensor_id = reader.text("sensor", Need::required, "a sensor id").value_or("");
+    candidate.mode_ids = read_names(reader, "modes", "a non-empty list of mode ids");
+    if (reader.has("filtering_seconds_per_point")) {
+      candidate.filtering_seconds_per_point = io::non_negative(
+          reader, "filtering_seconds_per_point", Need::required, "core-seconds per point, >= 0");
+    }
+    const FilteringLoad* load = measured ? measured->find(candidate.sensor_id) : nullptr;
+    if (!candidate.filtering_seconds_per_point && load != nullptr) {
+      candidate.filtering_seconds_per_point = load->seconds_per_point;
+    }
+    reader.reject_unknown_keys();
+    if (!candidate.sensor_id.empty() && !seen.insert(candidate.sensor_id).second) {
+      reader.require(false, "sensor", "lists '" + candidate.sensor_id + "' twice",
+                     "each candidate sensor once, with all its modes");
+    }
+    catalog.sensors.push_back(std::move(candidate));
+  }
+  top.require(!catalog.sensors.empty() || !top.has("sensors"), "sensors", "is empty",
+              "at least one candidate sensor");
+
+  std::set<std::string> slot_ids;
+  for (MapReader& reader : top.maps("slots", Need::required, "a list of mounting slots")) {
+    MountingSlot slot;
+    slot.where = reader.location();
+    slot.id = reader.text("id", Need::required, "a slot id").value_or("");
+    if (auto pose =
+            reader.map("pose", Need::required, "a map with xyz and rpy_deg, or urdf_link")) {
+      slot.T_robot_sensor = io::read_pose(*pose, urdf);
+    }
+    slot.allowed_sensors = read_names(reader, "allows", "a non-empty list of candidate sensor ids");
+    if (reader.has("distance_of_interest")) {
+      slot.distance_of_interest =
+          io::positive(reader, "distance_of_interest", Need::required, "metres, > 0");
+    }
+    reader.text("note", Need::optional);
+    reader.reject_unknown_keys();
+    if (!slot.id.empty() && !slot_ids.insert(slot.id).second) {
+      reader.require(false, "id", "duplicate slot id '" + slot.id + "'", "unique slot ids");
+    }
+    catalog.slots.push_back(std::move(slot));
+  }
+  top.require(!catalog.slots.empty() || !top.has("slots"), "slots", "is empty",
+              "at least one mounting slot");
+  for (MapReader& reader : top.maps("transfer", Need::required, "a list of transfer hardware")) {
+    catalog.transfer.push_back(read_priced(reader, "capacity_bps", "bits per second, > 0"));
+  }
+  for (MapReader& reader : top.maps("cpus", Need::required, "a list of CPUs")) {
+    catalog.cpus.push_back(
+        read_priced(reader, "cores", "core-equivalents of the reference machine, > 0"));
+  }
+  top.require(!catalog.transfer.empty() || !top.has("transfer"), "transfer", "is empty",
+              "at least one transfer option");
+  top.require(!catalog.cpus.empty() || !top.has("cpus"), "cpus", "is empty", "at least one CPU");
+  top.text("note", Need::optional);
+  top.reject_unknown_keys();
+  diagnostics.throw_if_errors();
+  return catalog;
+}
+
+Diagnostics check_catalog_references(const Catalog& catalog, const SensorLibrary& library) {
+  Diagnostics diagnostics;
+  std::set<std::string> candidates;
+  for (std::size_t i = 0; i < catalog.sensors.size(); ++i) {
+    const CandidateSensor& candidate = catalog.sensors[i];
+    const std::string field = "sensors[" + std::to_string(i) + "]";
+    const Sensor* sensor = library.find(candidate.sensor_id);
+    if (sensor == nullptr) {
+      diagnostics.error(candidate.where, field + ".sensor",
+                        "unknown sensor '" + candidate.sensor_id + "' in " + library.file,
+                        "a sensor id of the library");
+      continue;
+    }
+    candidates.insert(candidate.sensor_id);
+    for (const std::string& mode : candidate.mode_ids) {
+      if (sensor->find_mode(mode) == nullptr) {
+        std::string modes;
+        for (const SensorMode& m : sensor->modes) modes += (modes.empty() ? "" : ", ") + m.id;
+        diagnostics.error(candidate.where, field + ".modes",
+                          "unknown mode '" + mode + "' of sensor '" + sensor->id + "'",
+                          "one of: " + modes);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < catalog.slots.size(); ++i) {
+    const MountingSlot& slot = catalog.slots[i];
+    const std::string field = "slots[" + std::to_string(i) + "].allows";
+    bool allows_any = false;
+    for (const std::string& sensor : slot.allowed_sensors) {
+      if (candidates.count(sensor) != 0) {
+        allows_any = true;
+      } else if (library.find(sensor) != nullptr) {
+        diagnostics.error(slot.where, field, "names '" + sensor + "', which is not a candidate",
+                          "sensor ids listed under the catalog's `sensors`");
+      } else {
+        diagnostics.error(slot.where, field, "names unknown sensor '" + sensor + "'",
+                          "sensor ids listed under the catalog's `sensors`");
+      }
+    }
+    if (!allows_any && !slot.allowed_sensors.empty()) {
+      diagnostics.error(slot.where, field, "slot '" + slot.id + "' allows no candidate sensor",
+                        "at least one candidate sensor id");
+    }
+  }
+  return diagnostics;
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,29 @@
+#pragma once
+// Range-checked reads shared by the loaders: each reads one field and records a finding
+// when it is outside its allowed range. They return a harmless value (0) when the field is
+// absent or invalid so that loading carries on and reports every problem at once.
+#include <optional>
+#include <string>
+
+#include "io/config/yaml_reader.hpp"
+#include "rigdesign/model/sensor.hpp"
+
+namespace rigdesign::io {
+
+/// A number > 0.
+double positive(MapReader& reader, const std::string& key, Need need, const std::string& expected);
+/// A number >= 0.
+double non_negative(MapReader& reader, const std::string& key, Need need,
+                    const std::string& expected);
+/// A number in [low, high] (or (low, high] / (low, high) as `high_inclusive` says; low excluded).
+double angle_in(MapReader& reader, const std::string& key, double low, double high,
+                bool high_inclusive, const std::string& expected);
+/// An elevation angle in degrees in [-90, 90].
+double elevation(MapReader& reader, const std::string& key, const std::string& expected);
+/// A share in [0, 1].
+std::optional<double> share(MapReader& reader, const std::string& key, Need need,
+                            const std::string& expected);
+/// `basis: datasheet | measured | estimate`.
+Basis basis(MapReader& reader, Need need);
+
+}  // namespace rigdesign::io

@@ -1,0 +1,163 @@
+#include "rigdesign/io/config/pipeline_loader.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/config/field_checks.hpp"
+#include "io/config/yaml_reader.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace rigdesign {
+namespace {
+
+using io::MapReader;
+using io::Need;
+
+void read(MapReader& m, const std::string& key, double& value, const std::string& expected) {
+  if (const auto v = m.number(key, Need::optional, expected)) value = *v;
+}
+
+void read_positive(MapReader& m, const std::string& key, double& value,
+                   const std::string& expected) {
+  if (m.has(key)) value = io::positive(m, key, Need::required, expected);
+}
+
+RansacPlaneParams read_ransac(MapReader& m, RansacPlaneParams params) {
+  if (const auto iterations = m.integer("iterations", Need::optional, "an iteration count, > 0")) {
+    m.require(*iterations > 0, "iterations", "must be > 0", "an iteration count, > 0");
+    params.iterations = *iterations;
+  }
+  read_positive(m, "threshold", params.threshold, "the inlier distance T in metres, > 0");
+  if (const auto confidence = m.number("confidence", Need::optional, "a probability in (0, 1]")) {
+    m.require(*confidence > 0 && *confidence <= 1, "confidence", "is out of range",
+              "a probability in (0, 1]");
+    params.confidence = *confidence;
+  }
+  if (const auto seed = m.integer("seed", Need::optional, "a non-negative integer")) {
+    m.require(*seed >= 0, "seed", "must be >= 0", "a non-negative integer");
+    params.seed = static_cast<std::uint64_t>(*seed);
+  }
+  if (const auto tilt = m.number("max_tilt_deg", Need::optional, "degrees in (0, 90]")) {
+    m.require(*tilt > 0 && *tilt <= 90, "max_tilt_deg", "is out of range", "degrees in (0, 90]");
+    params.max_tilt = deg_to_rad(*tilt);
+  }
+  m.reject_unknown_keys();
+  return params;
+}
+
+PassThroughParams read_pass_through(MapReader& m) {
+  PassThroughParams params;
+  if (const auto axis = m.choice("axis", Need::optional, {"x", "y", "z"}))
+    params.axis = static_cast<int>(*axis);
+  read(m, "min", params.min, "metres");
+  read(m, "max", params.max, "metres");
+  m.require(params.min <= params.max, "min", "is above max", "min <= max");
+  if (const auto negative = m.boolean("negative", Need::optional)) params.negative = *negative;
+  m.reject_unknown_keys();
+  return params;
+}
+
+StageParams read_stage(MapReader& m, std::size_t index) {
+  switch (index) {
+    case 0: {
+      VoxelGridParams params;
+      read_positive(m, "leaf", params.leaf, "the voxel size in metres, > 0");
+      if (const auto offset =
+              m.numbers("grid_offset", Need::optional, 3, 3, "[x, y, z] in metres")) {
+        params.grid_offset = Eigen::Vector3d((*offset)[0], (*offset)[1], (*offset)[2]);
+      }
+      m.reject_unknown_keys();
+      return params;
+    }
+    case 1: {
+      StatisticalOutlierParams params;
+      if (const auto k = m.integer("neighbours", Need::optional, "a neighbour count N, > 0")) {
+        m.require(*k > 0, "neighbours", "must be > 0", "a neighbour count N, > 0");
+        params.neighbours = *k;
+      }
+      read(m, "std_multiplier", params.std_multiplier, "M, a number of standard deviations");
+      read_positive(m, "cell", params.cell, "the neighbour grid cell in metres, > 0");
+      m.reject_unknown_keys();
+      return params;
+    }
+    case 2: return read_pass_through(m);
+    case 3: return RemovePlaneParams{read_ransac(m, {})};
+    case 4: {
+      FloorRemoval1Params params;
+      if (auto slice = m.map("slice", Need::optional)) params.slice = read_pass_through(*slice);
+      if (auto ransac = m.map("ransac", Need::optional))
+        params.ransac = read_ransac(*ransac, params.ransac);
+      m.reject_unknown_keys();
+      return params;
+    }
+    case 5: {
+      FloorRemoval2Params params;
+      read_positive(m, "coarse_leaf", params.coarse_leaf, "V2 in metres, > 0");
+      if (auto ransac = m.map("ransac", Need::optional))
+        params.ransac = read_ransac(*ransac, params.ransac);
+      m.reject_unknown_keys();
+      return params;
+    }
+    default: {
+      NegativeObstacleParams params;
+      read(m, "below", params.below, "metres (negative: below the floor)");
+      read(m, "virtual_height", params.virtual_height, "metres");
+      m.reject_unknown_keys();
+      return params;
+    }
+  }
+}
+
+}  // namespace
+
+Pipeline load_pipeline(const std::string& path) {
+  const YAML::Node root = io::load_yaml_file(path);
+  Diagnostics diagnostics;
+  MapReader top(root, "", path, diagnostics, {path, 1, 1});
+  if (!top.valid()) {
+    throw InputError(
+        Diagnostic{{path, 1, 1}, "(document)", "is not a map", "a pipeline: name and stages"});
+  }
+  Pipeline pipeline;
+  pipeline.name = top.text("name", Need::required, "the pipeline's name").value_or("");
+  const YAML::Node stages = top.node("stages");
+  if (!stages.IsSequence() || stages.size() == 0) {
+    top.require(false, "stages", "is not a non-empty list",
+                "a list of stages such as `- voxel_grid: {leaf: 0.03}`");
+  } else {
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+      const std::string field = "stages[" + std::to_string(i) + "]";
+      const YAML::Node stage = stages[i];
+      const std::string name = stage.IsMap() && stage.size() == 1 ? stage.begin()->first.Scalar()
+                               : stage.IsScalar()                 ? stage.Scalar()
+                                                                  : "";
+      const auto& names = stage_names();
+      const auto known = std::find(names.begin(), names.end(), name);
+      if (known == names.end()) {
+        std::string list;
+        for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+        diagnostics.error(io::location_of(stage, path), field,
+                          name.empty() ? "is not a stage" : "unknown stage '" + name + "'",
+                          "a map with one stage name: " + list);
+        continue;
+      }
+      const std::size_t index = static_cast<std::size_t>(known - names.begin());
+      YAML::Node params = stage.IsMap() ? stage.begin()->second : YAML::Node(YAML::NodeType::Map);
+      if (params.IsNull()) params = YAML::Node(YAML::NodeType::Map);
+      MapReader reader(params, field + "." + name, path, diagnostics, io::location_of(stage, path));
+      if (!reader.valid()) {
+        diagnostics.error(io::location_of(stage, path), field + "." + name,
+                          "is not a map of parameters",
+                          "a map such as {leaf: 0.03}, or nothing for the defaults");
+        continue;
+      }
+      pipeline.stages.push_back(read_stage(reader, index));
+    }
+  }
+  top.text("note", Need::optional);
+  top.reject_unknown_keys();
+  diagnostics.throw_if_errors();
+  return pipeline;
+}
+
+}  // namespace rigdesign

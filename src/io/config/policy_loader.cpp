@@ -1,0 +1,47 @@
+#include "rigdesign/io/config/policy_loader.hpp"
+
+#include "io/config/field_checks.hpp"
+#include "io/config/yaml_reader.hpp"
+
+namespace rigdesign {
+
+RelaxationPolicy load_policy(const std::string& path) {
+  const YAML::Node root = io::load_yaml_file(path);
+  Diagnostics diagnostics;
+  io::MapReader top(root, "", path, diagnostics, {path, 1, 1});
+  if (!top.valid()) {
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
+                                "a relaxation policy: a map with name and steps"});
+  }
+  RelaxationPolicy policy;
+  policy.file = path;
+  policy.name = top.text("name", io::Need::required, "the policy's name").value_or("");
+  for (io::MapReader& reader : top.maps("steps", io::Need::required, "a list of steps")) {
+    RelaxationStep step;
+    step.where = reader.location();
+    step.requirement =
+        reader.text("relax", io::Need::required, "a requirement path such as robot_speed.max_speed")
+            .value_or("");
+    if (step.requirement == "lighting") {
+      if (const auto drop =
+              reader.choice("drop", io::Need::required, {"dark", "indoor", "sunlight"})) {
+        step.drop = static_cast<LightCondition>(*drop);
+      }
+    } else {
+      step.to = reader.number("to", io::Need::required,
+                              "the relaxed value as a plain number in SI units (m, m/s, Hz) or a "
+                              "share in [0, 1]");
+    }
+    reader.text("note", io::Need::optional);
+    reader.reject_unknown_keys();
+    policy.steps.push_back(std::move(step));
+  }
+  top.text("note", io::Need::optional);
+  top.reject_unknown_keys();
+  diagnostics.throw_if_errors();
+  return policy;
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,139 @@
+#include "rigdesign/io/config/requirements_loader.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "io/config/field_checks.hpp"
+#include "io/config/yaml_reader.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace rigdesign {
+namespace {
+
+using io::MapReader;
+using io::Need;
+
+SectorRequirement read_sector(MapReader& reader) {
+  SectorRequirement sector;
+  sector.where = reader.location();
+  sector.name = reader.text("name", Need::required, "a sector name such as front").value_or("");
+  const std::string angle = "an azimuth in degrees, counter-clockwise from forward, in [-360, 360]";
+  const auto from = reader.number("from_deg", Need::required, angle);
+  const auto to = reader.number("to_deg", Need::required, angle);
+  if (from && to) {
+    reader.require(*from >= -360 && *from <= 360, "from_deg", "is out of range", angle);
+    reader.require(*to > *from && *to - *from <= 360, "to_deg", "does not follow from_deg",
+                   "from_deg < to_deg <= from_deg + 360");
+    sector.from = deg_to_rad(*from);
+    sector.to = deg_to_rad(*to);
+  }
+  const std::string share = "a share of the cross-section in [0, 1]";
+  sector.min_complete_coverage =
+      io::share(reader, "min_complete_coverage", Need::required, share).value_or(0.0);
+  sector.min_floor_coverage =
+      io::share(reader, "min_floor_coverage", Need::required, share).value_or(0.0);
+  reader.reject_unknown_keys();
+  return sector;
+}
+
+MotionBetweenFrames read_motion(MapReader& reader, const std::string& speed_key) {
+  MotionBetweenFrames motion;
+  motion.where = reader.location();
+  motion.speed = io::positive(reader, speed_key, Need::required, "metres per second, > 0");
+  motion.travel = io::positive(reader, "max_travel_between_frames", Need::required,
+                               "metres moved between two frames, > 0");
+  reader.reject_unknown_keys();
+  return motion;
+}
+
+void read_lighting(MapReader& top, Requirements& requirements) {
+  const std::vector<std::string> names = {"dark", "indoor", "sunlight"};
+  const std::string expected = "a list of conditions from: dark, indoor, sunlight";
+  requirements.lighting_where = top.location("lighting");
+  const YAML::Node list = top.node("lighting");
+  if (!list.IsDefined() || list.IsNull()) return;
+  if (!list.IsSequence()) {
+    top.require(false, "lighting", "is not a list", expected);
+    return;
+  }
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string field = top.field("lighting") + "[" + std::to_string(i) + "]";
+    const std::string value = list[i].IsScalar() ? list[i].Scalar() : "";
+    const auto it = std::find(names.begin(), names.end(), value);
+    if (it == names.end() || !seen.insert(value).second) {
+      top.diagnostics().error(io::location_of(list[i], top.file()), field,
+                              it == names.end() ? "unknown condition '" + value + "'"
+                                                : "condition '" + value + "' given twice",
+                              expected);
+      continue;
+    }
+    requirements.lighting.push_back(static_cast<LightCondition>(it - names.begin()));
+  }
+}
+
+}  // namespace
+
+Requirements load_requirements(const std::string& path) {
+  const YAML::Node root = io::load_yaml_file(path);
+  Diagnostics diagnostics;
+  MapReader top(root, "", path, diagnostics, {path, 1, 1});
+  if (!top.valid()) {
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
+                                "requirements: a map with keys R1-R8 (see rigs/README.md)"});
+  }
+  Requirements requirements;
+  requirements.file = path;
+  requirements.name = top.text("name", Need::required, "the application's name").value_or("");
+  if (auto body = top.map("body", Need::optional)) {  // R1
+    requirements.body_where = body->location();
+    requirements.body_radius = io::positive(*body, "radius", Need::required, "metres, > 0");
+    requirements.body_height = io::positive(*body, "height", Need::required, "metres, > 0");
+    body->reject_unknown_keys();
+  }
+  std::set<std::string> sector_names;
+  for (MapReader& reader : top.maps("sectors", Need::optional)) {  // R2
+    SectorRequirement sector = read_sector(reader);
+    if (!sector.name.empty() && !sector_names.insert(sector.name).second) {
+      reader.require(false, "name", "duplicate sector '" + sector.name + "'", "unique names");
+    }
+    requirements.sectors.push_back(std::move(sector));
+  }
+  if (auto range = top.map("range", Need::required, "a map with distance (R3)")) {  // R3
+    requirements.range_where = range->location();
+    requirements.distance = io::positive(*range, "distance", Need::required,
+                                         "the distance of interest d in metres, > 0");
+    if (range->has("min_frequency")) {
+      requirements.min_frequency =
+          io::positive(*range, "min_frequency", Need::required, "frames per second [Hz], > 0");
+    }
+    range->reject_unknown_keys();
+  }
+  if (auto dynamics = top.map("object_dynamics", Need::optional)) {  // R4
+    requirements.object_dynamics = read_motion(*dynamics, "max_object_speed");
+  }
+  if (auto speed = top.map("robot_speed", Need::optional)) {  // R5
+    requirements.robot_speed = read_motion(*speed, "max_speed");
+  }
+  if (auto obstacle = top.map("smallest_obstacle", Need::optional)) {  // R6
+    requirements.smallest_obstacle_where = obstacle->location();
+    requirements.smallest_obstacle =
+        io::positive(*obstacle, "size", Need::required, "the obstacle's size in metres, > 0");
+    obstacle->reject_unknown_keys();
+  }
+  if (auto accuracy = top.map("accuracy", Need::optional)) {  // R7
+    requirements.accuracy_where = accuracy->location();
+    requirements.max_noise = io::positive(*accuracy, "max_noise", Need::required,
+                                          "one-sigma range noise at d in metres, > 0");
+    accuracy->reject_unknown_keys();
+  }
+  read_lighting(top, requirements);  // R8
+  top.text("note", Need::optional);
+  top.reject_unknown_keys();
+  diagnostics.throw_if_errors();
+  return requirements;
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,87 @@
+#include "rigdesign/io/config/rig_loader.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "io/config/field_checks.hpp"
+#include "io/config/placement_fields.hpp"
+#include "io/config/yaml_reader.hpp"
+
+namespace rigdesign {
+namespace {
+
+using io::MapReader;
+using io::Need;
+using io::read_body;
+using io::read_pose;
+using io::read_urdf;
+
+Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf) {
+  Mount mount;
+  mount.where = reader.location();
+  mount.id = reader.text("id", Need::required, "a mount id, unique in the rig").value_or("");
+  mount.sensor_id =
+      reader.text("sensor", Need::required, "a sensor id from sensors.yaml").value_or("");
+  mount.sensor_where = reader.location("sensor");
+  mount.mode_id = reader.text("mode", Need::required, "a mode id of that sensor").value_or("");
+  mount.mode_where = reader.location("mode");
+  mount.pose_where = reader.location("pose");
+  if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg, or urdf_link")) {
+    mount.T_robot_sensor = read_pose(*pose, urdf);
+  }
+  if (reader.has("distance_of_interest")) {
+    mount.distance_of_interest =
+        io::positive(reader, "distance_of_interest", Need::required, "metres, > 0");
+  }
+  reader.text("note", Need::optional);
+  reader.reject_unknown_keys();
+  return mount;
+}
+
+}  // namespace
+
+Rig load_rig(const std::string& path) {
+  const YAML::Node root = io::load_yaml_file(path);
+  Diagnostics diagnostics;
+  MapReader top(root, "", path, diagnostics, {path, 1, 1});
+  if (!top.valid()) {
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
+                                "a rig: a map with name, body, distance_of_interest, mounts"});
+  }
+  Rig rig;
+  rig.file = path;
+  rig.where = top.location();
+  rig.name = top.text("name", Need::required, "the rig's name").value_or("");
+  rig.sensor_library = top.text("sensor_library", Need::optional).value_or("");
+  rig.sensor_library_where = top.location("sensor_library");
+  rig.requirements = top.text("requirements", Need::optional).value_or("");
+  rig.requirements_where = top.location("requirements");
+  if (auto body = top.map("body", Need::required, "a map with height and radius or footprint")) {
+    rig.body = read_body(*body);
+  }
+  rig.distance_of_interest = io::positive(top, "distance_of_interest", Need::required,
+                                          "the distance of interest d in metres, > body radius");
+  if (rig.distance_of_interest > 0 && rig.body.radius > 0) {
+    top.require(rig.distance_of_interest > rig.body.radius, "distance_of_interest",
+                "is not beyond the body radius", "d > r");
+  }
+  const std::optional<UrdfPoses> urdf = read_urdf(top, path);
+  std::set<std::string> ids;
+  for (MapReader& reader : top.maps("mounts", Need::required, "a list of mounts")) {
+    Mount mount = read_mount(reader, urdf);
+    if (!mount.id.empty() && !ids.insert(mount.id).second) {
+      reader.require(false, "id", "duplicate mount id '" + mount.id + "'", "unique mount ids");
+    }
+    rig.mounts.push_back(std::move(mount));
+  }
+  top.require(!rig.mounts.empty() || !top.has("mounts"), "mounts", "is empty",
+              "at least one mounted sensor");
+  top.text("note", Need::optional);
+  top.reject_unknown_keys();
+  diagnostics.throw_if_errors();
+  return rig;
+}
+
+}  // namespace rigdesign

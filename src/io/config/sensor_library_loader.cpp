@@ -1,0 +1,307 @@
+#include "rigdesign/io/config/sensor_library_loader.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "io/config/field_checks.hpp"
+#include "io/config/yaml_reader.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace rigdesign {
+namespace {
+
+using io::MapReader;
+using io::Need;
+
+const std::vector<std::string> kModeKeys = {"id",
+                                            "fov",
+                                            "range",
+                                            "frequency",
+                                            "pixels",
+                                            "angular_resolution_deg",
+                                            "points_per_frame",
+                                            "bytes_per_frame",
+                                            "bytes_per_point",
+                                            "bytes_per_second",
+                                            "noise",
+                                            "light",
+                                            "driver_cpu",
+                                            "note"};
+
+const std::vector<std::string> kTechnologyNames = {
+    "tof",      "structured_light", "active_stereo", "passive_stereo", "lidar_3d_spinning",
+    "lidar_2d", "solid_state_lidar"};
+const std::vector<std::string> kShapeNames = {"pyramid", "cone", "band", "planar"};
+
+// A mode's field comes from the mode itself, else from the sensor's `mode_defaults`.
+MapReader& source_of(const std::string& key, MapReader& mode, std::optional<MapReader>& defaults) {
+  if (mode.has(key) || !defaults || !defaults->has(key)) return mode;
+  return *defaults;
+}
+
+FieldOfView read_fov(MapReader& fov) {
+  FieldOfView result;
+  const auto shape = fov.choice("shape", Need::required, kShapeNames);
+  if (!shape) return result;
+  result.shape = static_cast<FovShape>(*shape);
+  const std::string full_angle = "a full angle in degrees, in (0, 360]";
+  const std::string lens_angle =
+      "a full angle in degrees, in (0, 180) for a " + kShapeNames[*shape];
+  switch (result.shape) {
+    case FovShape::pyramid:
+      result.horizontal =
+          deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 180, false, lens_angle));
+      result.vertical = deg_to_rad(io::angle_in(fov, "vertical_deg", 0, 180, false, lens_angle));
+      result.elevation_min = -result.vertical / 2;
+      result.elevation_max = result.vertical / 2;
+      break;
+    case FovShape::cone:
+      result.horizontal = deg_to_rad(io::angle_in(fov, "apex_deg", 0, 180, false, lens_angle));
+      result.vertical = result.horizontal;
+      result.elevation_min = -result.vertical / 2;
+      result.elevation_max = result.vertical / 2;
+      break;
+    case FovShape::band: {
+      result.horizontal =
+          fov.has("horizontal_deg")
+              ? deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle))
+              : 2 * std::numbers::pi;
+      const std::string elevation = "an elevation in degrees, in [-90, 90]";
+      const double low = io::elevation(fov, "elevation_min_deg", elevation);
+      const double high = io::elevation(fov, "elevation_max_deg", elevation);
+      fov.require(high > low, "elevation_max_deg", "is not above elevation_min_deg",
+                  "elevation_min_deg < elevation_max_deg");
+      result.elevation_min = deg_to_rad(low);
+      result.elevation_max = deg_to_rad(high);
+      result.vertical = result.elevation_max - result.elevation_min;
+      break;
+    }
+    case FovShape::planar:
+      result.horizontal = deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle));
+      result.vertical =
+          deg_to_rad(io::angle_in(fov, "beam_divergence_deg", 0, 180, false,
+                                  "the beam's full divergence angle in degrees, in (0, 180)"));
+      result.elevation_min = -result.vertical / 2;
+      result.elevation_max = result.vertical / 2;
+      break;
+  }
+  fov.text("note", Need::optional);
+  fov.reject_unknown_keys();
+  return result;
+}
+
+// Angular resolution and points per frame: from a pixel grid, or given for scanners.
+void read_sampling(SensorMode& mode, MapReader& reader, std::optional<MapReader>& defaults) {
+  const bool planar = mode.fov.shape == FovShape::planar;
+  MapReader& pixels_from = source_of("pixels", reader, defaults);
+  MapReader& resolution_from = source_of("angular_resolution_deg", reader, defaults);
+  const bool has_pixels = pixels_from.has("pixels");
+  const bool has_resolution = resolution_from.has("angular_resolution_deg");
+  if (has_pixels && has_resolution) {
+    reader.require(false, "angular_resolution_deg", "given together with pixels",
+                   "either pixels (resolution derived as FOV / pixels) or "
+                   "angular_resolution_deg, not both");
+  }
+  if (has_pixels && !planar) {
+    const auto grid = pixels_from.numbers("pixels", Need::required, 2, 2,
+                                          "[width, height] in pixels, both positive");
+    if (grid && (*grid)[0] >= 1 && (*grid)[1] >= 1) {
+      mode.angular_resolution_h = mode.fov.horizontal / (*grid)[0];
+      mode.angular_resolution_v = mode.fov.vertical / (*grid)[1];
+      mode.points_per_frame = (*grid)[0] * (*grid)[1];
+    } else if (grid) {
+      pixels_from.require(false, "pixels", "has a count below 1",
+                          "[width, height] in pixels, both positive");
+    }
+  } else {
+    const std::size_t count = planar ? 1 : 2;
+    const std::string expected =
+        planar ? "[horizontal] in degrees, positive (a 2D scanner has one row)"
+               : "[horizontal, vertical] in degrees, both positive";
+    const auto resolution =
+        resolution_from.numbers("angular_resolution_deg", Need::required, count, count, expected);
+    if (resolution) {
+      const bool positive = (*resolution)[0] > 0 && (count == 1 || (*resolution)[1] > 0);
+      resolution_from.require(positive, "angular_resolution_deg", "has a value <= 0", expected);
+      mode.angular_resolution_h = deg_to_rad((*resolution)[0]);
+      if (count == 2) mode.angular_resolution_v = deg_to_rad((*resolution)[1]);
+    }
+  }
+  MapReader& points_from = source_of("points_per_frame", reader, defaults);
+  if (has_pixels && !planar) {
+    reader.require(!points_from.has("points_per_frame"), "points_per_frame",
+                   "given together with pixels", "points_per_frame only for scanners");
+    return;
+  }
+  mode.points_per_frame = io::positive(points_from, "points_per_frame", Need::required,
+                                       "a positive number of points per frame");
+}
+
+void read_bytes(SensorMode& mode, MapReader& reader, std::optional<MapReader>& defaults) {
+  const std::vector<std::string> keys = {"bytes_per_frame", "bytes_per_point", "bytes_per_second"};
+  const std::string expected = "exactly one of bytes_per_frame, bytes_per_point, bytes_per_second";
+  int given = 0;
+  for (const std::string& key : keys) given += source_of(key, reader, defaults).has(key) ? 1 : 0;
+  if (given != 1) {
+    reader.require(false, "bytes_per_frame", given == 0 ? "missing" : "data size given twice",
+                   expected);
+    return;
+  }
+  MapReader& frame = source_of("bytes_per_frame", reader, defaults);
+  MapReader& point = source_of("bytes_per_point", reader, defaults);
+  MapReader& second = source_of("bytes_per_second", reader, defaults);
+  if (frame.has("bytes_per_frame")) {
+    mode.bytes_per_frame = io::positive(frame, "bytes_per_frame", Need::required, "bytes, > 0");
+  } else if (point.has("bytes_per_point")) {
+    mode.bytes_per_frame = io::positive(point, "bytes_per_point", Need::required, "bytes, > 0") *
+                           mode.points_per_frame;
+  } else if (mode.frequency > 0) {
+    mode.bytes_per_frame =
+        io::positive(second, "bytes_per_second", Need::required, "bytes per second, > 0") /
+        mode.frequency;
+  }
+}
+
+NoiseModel read_noise(MapReader& noise) {
+  NoiseModel model;
+  const std::string expected = "sigma(d) = a + b*d + c*d^2 with a [m], b [-], c [1/m], each >= 0";
+  model.a = io::non_negative(noise, "a", Need::optional, expected);
+  model.b = io::non_negative(noise, "b", Need::optional, expected);
+  model.c = io::non_negative(noise, "c", Need::optional, expected);
+  noise.require(noise.has("a") || noise.has("b") || noise.has("c"), "a", "no coefficient given",
+                expected);
+  noise.text("basis", Need::optional);
+  noise.text("note", Need::optional);
+  noise.reject_unknown_keys();
+  return model;
+}
+
+LightImmunity read_light(MapReader& light) {
+  LightImmunity immunity;
+  immunity.dark = light.boolean("dark", Need::required).value_or(false);
+  immunity.indoor = light.boolean("indoor", Need::required).value_or(false);
+  immunity.sunlight = light.boolean("sunlight", Need::required).value_or(false);
+  light.text("note", Need::optional);
+  light.reject_unknown_keys();
+  return immunity;
+}
+
+DriverCpuLoad read_driver_cpu(MapReader& cpu) {
+  DriverCpuLoad load;
+  load.cores = io::non_negative(cpu, "cores", Need::required,
+                                "core-equivalents of the reference machine, >= 0");
+  load.seconds_per_point = io::non_negative(cpu, "seconds_per_point", Need::optional,
+                                            "core-seconds per delivered point, >= 0");
+  load.basis = io::basis(cpu, Need::required);
+  load.note = cpu.text("note", Need::optional).value_or("");
+  cpu.reject_unknown_keys();
+  return load;
+}
+
+SensorMode read_mode(MapReader& reader, std::optional<MapReader>& defaults) {
+  SensorMode mode;
+  mode.where = reader.location();
+  mode.id = reader.text("id", Need::required, "a mode id").value_or("");
+  if (auto fov = source_of("fov", reader, defaults).map("fov", Need::required)) {
+    mode.fov = read_fov(*fov);
+  }
+  if (auto range = source_of("range", reader, defaults).map("range", Need::required)) {
+    mode.min_range = io::non_negative(*range, "min", Need::required, "metres, >= 0");
+    mode.max_range = io::positive(*range, "max", Need::required, "metres, > min");
+    range->require(mode.min_range < mode.max_range, "min", "is not below max",
+                   "0 <= min < max, in metres");
+    range->reject_unknown_keys();
+  }
+  mode.frequency = io::positive(source_of("frequency", reader, defaults), "frequency",
+                                Need::required, "frames per second [Hz], > 0");
+  read_sampling(mode, reader, defaults);
+  read_bytes(mode, reader, defaults);
+  if (auto noise = source_of("noise", reader, defaults).map("noise", Need::required)) {
+    mode.noise = read_noise(*noise);
+  }
+  if (auto light = source_of("light", reader, defaults).map("light", Need::required)) {
+    mode.light = read_light(*light);
+  }
+  if (auto cpu = source_of("driver_cpu", reader, defaults).map("driver_cpu", Need::required)) {
+    mode.driver_cpu = read_driver_cpu(*cpu);
+  }
+  source_of("note", reader, defaults).text("note", Need::optional);
+  reader.reject_keys_other_than(kModeKeys);
+  return mode;
+}
+
+Price read_price(MapReader& reader) {
+  Price price;
+  price.usd = io::positive(reader, "usd", Need::required, "US dollars, > 0");
+  const auto year = reader.integer("year", Need::required, "a year such as 2019");
+  reader.require(!year || (*year >= 1990 && *year <= 2100), "year", "is out of range",
+                 "a year in [1990, 2100]");
+  price.year = year.value_or(0);
+  price.basis = io::basis(reader, Need::required);
+  price.source = reader.text("source", Need::required, "where the price comes from").value_or("");
+  reader.reject_unknown_keys();
+  return price;
+}
+
+Sensor read_sensor(MapReader& reader) {
+  Sensor sensor;
+  sensor.where = reader.location();
+  sensor.id = reader.text("id", Need::required, "a sensor id").value_or("");
+  sensor.name = reader.text("name", Need::required, "the product name").value_or("");
+  if (const auto technology = reader.choice("technology", Need::required, kTechnologyNames)) {
+    sensor.technology = static_cast<Technology>(*technology);
+  }
+  sensor.source =
+      reader.text("source", Need::required, "the datasheet document or URL").value_or("");
+  if (auto price = reader.map("price", Need::required)) sensor.price = read_price(*price);
+  reader.text("note", Need::optional);
+  std::optional<MapReader> defaults = reader.map("mode_defaults", Need::optional);
+  if (defaults) defaults->reject_keys_other_than(kModeKeys);
+  std::set<std::string> mode_ids;
+  for (MapReader& mode_reader : reader.maps("modes", Need::required, "a list of modes")) {
+    SensorMode mode = read_mode(mode_reader, defaults);
+    if (!mode.id.empty() && !mode_ids.insert(mode.id).second) {
+      mode_reader.require(false, "id", "duplicate mode id '" + mode.id + "'",
+                          "mode ids unique within a sensor");
+    }
+    sensor.modes.push_back(std::move(mode));
+  }
+  reader.require(!sensor.modes.empty() || !reader.has("modes"), "modes", "is empty",
+                 "at least one mode");
+  reader.reject_unknown_keys();
+  return sensor;
+}
+
+}  // namespace
+
+SensorLibrary load_sensor_library(const std::string& path) {
+  const YAML::Node root = io::load_yaml_file(path);
+  Diagnostics diagnostics;
+  MapReader top(root, "", path, diagnostics, {path, 1, 1});
+  if (!top.valid()) {
+    throw InputError(Diagnostic{{path, 1, 1},
+                                "(document)",
+                                "is not a map",
+                                "a map with `reference_machine` and `sensors`"});
+  }
+  SensorLibrary library;
+  library.file = path;
+  library.reference_machine = top.text("reference_machine", Need::required,
+                                       "the machine a driver core-equivalent refers to")
+                                  .value_or("");
+  std::set<std::string> sensor_ids;
+  for (MapReader& reader : top.maps("sensors", Need::required, "a list of sensors")) {
+    Sensor sensor = read_sensor(reader);
+    if (!sensor.id.empty() && !sensor_ids.insert(sensor.id).second) {
+      reader.require(false, "id", "duplicate sensor id '" + sensor.id + "'", "unique sensor ids");
+    }
+    library.sensors.push_back(std::move(sensor));
+  }
+  top.require(!library.sensors.empty() || !top.has("sensors"), "sensors", "is empty",
+              "at least one sensor");
+  top.reject_unknown_keys();
+  diagnostics.throw_if_errors();
+  return library;
+}
+
+}  // namespace rigdesign

@@ -1,0 +1,133 @@
+#include "rigdesign/io/config/yaml_writers.hpp"
+
+#include <sstream>
+
+#include "rigdesign/io/config/filtering_loads_io.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/rotation.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace rigdesign {
+namespace {
+
+// Enough digits that a pose read back equals the one written to well under a micrometre.
+std::string number(double value) {
+  return format_number(value, 12);
+}
+
+void write_comment(std::ostringstream& out, const std::string& comment) {
+  std::istringstream lines(comment);
+  for (std::string line; std::getline(lines, line);) out << "# " << line << '\n';
+}
+
+std::string quoted(const std::string& text) {
+  std::string escaped = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') escaped += '\\';
+    escaped += c;
+  }
+  return escaped + "\"";
+}
+
+}  // namespace
+
+std::string rig_to_yaml(const Rig& rig, const std::string& sensor_library,
+                        const std::string& requirements, const std::string& comment) {
+  std::ostringstream out;
+  write_comment(out, comment);
+  out << "name: " << quoted(rig.name) << '\n';
+  if (!sensor_library.empty()) out << "sensor_library: " << quoted(sensor_library) << '\n';
+  if (!requirements.empty()) out << "requirements: " << quoted(requirements) << '\n';
+  out << "body:\n  height: " << number(rig.body.height) << '\n';
+  if (rig.body.footprint.empty()) {
+    out << "  radius: " << number(rig.body.radius) << '\n';
+  } else {
+    out << "  footprint: [";
+    for (std::size_t i = 0; i < rig.body.footprint.size(); ++i) {
+      out << (i ? ", " : "") << '[' << number(rig.body.footprint[i].x()) << ", "
+          << number(rig.body.footprint[i].y()) << ']';
+    }
+    out << "]\n";
+  }
+  out << "distance_of_interest: " << number(rig.distance_of_interest) << '\n';
+  out << "mounts:\n";
+  for (const Mount& mount : rig.mounts) {
+    const Vec3 xyz = mount.T_robot_sensor.translation();
+    const Vec3 rpy = rpy_from_rotation(mount.T_robot_sensor.linear());
+    out << "  - id: " << quoted(mount.id) << "\n    sensor: " << quoted(mount.sensor_id)
+        << "\n    mode: " << quoted(mount.mode_id) << "\n    pose: {xyz: [" << number(xyz.x())
+        << ", " << number(xyz.y()) << ", " << number(xyz.z()) << "], rpy_deg: ["
+        << number(rad_to_deg(rpy.x())) << ", " << number(rad_to_deg(rpy.y())) << ", "
+        << number(rad_to_deg(rpy.z())) << "]}\n";
+    if (mount.distance_of_interest) {
+      out << "    distance_of_interest: " << number(*mount.distance_of_interest) << '\n';
+    }
+  }
+  return out.str();
+}
+
+std::string requirements_to_yaml(const Requirements& requirements, const std::string& comment) {
+  std::ostringstream out;
+  write_comment(out, comment);
+  out << "name: " << quoted(requirements.name) << '\n';
+  if (requirements.body_radius && requirements.body_height) {
+    out << "body: {radius: " << number(*requirements.body_radius)
+        << ", height: " << number(*requirements.body_height) << "}\n";
+  }
+  if (!requirements.sectors.empty()) {
+    out << "sectors:\n";
+    for (const SectorRequirement& sector : requirements.sectors) {
+      out << "  - {name: " << quoted(sector.name)
+          << ", from_deg: " << number(rad_to_deg(sector.from))
+          << ", to_deg: " << number(rad_to_deg(sector.to))
+          << ", min_complete_coverage: " << number(sector.min_complete_coverage)
+          << ", min_floor_coverage: " << number(sector.min_floor_coverage) << "}\n";
+    }
+  }
+  out << "range: {distance: " << number(requirements.distance);
+  if (requirements.min_frequency) out << ", min_frequency: " << number(*requirements.min_frequency);
+  out << "}\n";
+  if (requirements.object_dynamics) {
+    out << "object_dynamics: {max_object_speed: " << number(requirements.object_dynamics->speed)
+        << ", max_travel_between_frames: " << number(requirements.object_dynamics->travel) << "}\n";
+  }
+  if (requirements.robot_speed) {
+    out << "robot_speed: {max_speed: " << number(requirements.robot_speed->speed)
+        << ", max_travel_between_frames: " << number(requirements.robot_speed->travel) << "}\n";
+  }
+  if (requirements.smallest_obstacle) {
+    out << "smallest_obstacle: {size: " << number(*requirements.smallest_obstacle) << "}\n";
+  }
+  if (requirements.max_noise)
+    out << "accuracy: {max_noise: " << number(*requirements.max_noise) << "}\n";
+  if (!requirements.lighting.empty()) {
+    out << "lighting: [";
+    for (std::size_t i = 0; i < requirements.lighting.size(); ++i) {
+      out << (i ? ", " : "") << to_string(requirements.lighting[i]);
+    }
+    out << "]\n";
+  }
+  return out.str();
+}
+
+// Declared in filtering_loads_io.hpp: the loads file is written here with the other YAML.
+std::string filtering_loads_to_yaml(const FilteringLoads& loads, const std::string& comment) {
+  std::ostringstream out;
+  write_comment(out, comment);
+  out << "machine: " << quoted(loads.machine) << '\n';
+  out << "pipeline: " << quoted(loads.pipeline) << '\n';
+  if (!loads.scene.empty()) out << "scene: " << quoted(loads.scene) << '\n';
+  if (loads.frames > 0) out << "frames: " << loads.frames << '\n';
+  out << "sensors:\n";
+  for (const FilteringLoad& load : loads.sensors) {
+    out << "  - sensor: " << quoted(load.sensor_id) << '\n';
+    if (!load.mode_id.empty()) out << "    mode: " << quoted(load.mode_id) << '\n';
+    out << "    seconds_per_point: " << format_number(load.seconds_per_point, 6) << '\n';
+    out << "    points_per_frame: " << format_number(load.points_per_frame, 8) << '\n';
+    out << "    median_seconds_per_frame: " << format_number(load.median_seconds_per_frame, 6)
+        << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace rigdesign

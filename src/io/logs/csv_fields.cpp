@@ -1,0 +1,107 @@
+#include "io/logs/csv_fields.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "rigdesign/model/input_error.hpp"
+
+namespace rigdesign::localize_detail {
+namespace {
+
+bool is_blank(char c) {
+  return c == ' ' || c == '\t';
+}
+
+Field trimmed(const std::string& line, std::size_t begin, std::size_t end) {
+  while (begin < end && is_blank(line[begin])) ++begin;
+  while (end > begin && is_blank(line[end - 1])) --end;
+  return {line.substr(begin, end - begin), static_cast<int>(begin) + 1};
+}
+
+}  // namespace
+
+std::vector<Line> content_lines(const std::string& text) {
+  std::vector<Line> lines;
+  std::size_t begin = 0;
+  int number = 0;
+  while (begin <= text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    ++number;
+    std::string line = text.substr(begin, end - begin);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::size_t first = line.find_first_not_of(" \t");
+    if (first != std::string::npos && line[first] != '#') lines.push_back({line, number});
+    if (end == text.size()) break;
+    begin = end + 1;
+  }
+  return lines;
+}
+
+std::vector<Field> split_fields(const std::string& line, char separator) {
+  std::vector<Field> fields;
+  if (separator == ' ') {
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && is_blank(line[i])) ++i;
+      if (i == line.size()) break;
+      const std::size_t start = i;
+      while (i < line.size() && !is_blank(line[i])) ++i;
+      fields.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+    }
+    return fields;
+  }
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t end = line.find(separator, begin);
+    if (end == std::string::npos) {
+      fields.push_back(trimmed(line, begin, line.size()));
+      return fields;
+    }
+    fields.push_back(trimmed(line, begin, end));
+    begin = end + 1;
+  }
+}
+
+double parse_number(const Field& field, const SourceLocation& where, const std::string& name) {
+  if (field.text.empty()) {
+    throw InputError(Diagnostic{where, name, "is empty", "a number"});
+  }
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(field.text.c_str(), &end);
+  if (end != field.text.c_str() + field.text.size()) {
+    throw InputError(Diagnostic{where, name, "'" + field.text + "' is not a number", "a number"});
+  }
+  if (!std::isfinite(value) || errno == ERANGE) {
+    throw InputError(
+        Diagnostic{where, name, "'" + field.text + "' is not finite", "a finite number"});
+  }
+  return value;
+}
+
+std::size_t require_column(const std::vector<Field>& header, const std::string& name,
+                           const std::string& file, int line, const std::string& expected_header) {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i].text == name) return i;
+  }
+  throw InputError(Diagnostic{{file, line, 1},
+                              name,
+                              "column is missing from the header",
+                              "a header line naming the columns " + expected_header});
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(
+        Diagnostic{{path, 0, 0}, "file", "cannot be opened for reading", "a readable file"});
+  std::ostringstream contents;
+  contents << in.rdbuf();
+  return contents.str();
+}
+
+}  // namespace rigdesign::localize_detail

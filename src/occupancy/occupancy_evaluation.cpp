@@ -1,0 +1,279 @@
+// Issue 6, item 5: every mapper on the same simulated frames of the cell, scored per frame
+// near the person (paper 3) and over the whole window (ghosts, trail, delays, planner grid).
+#include "rigdesign/occupancy/occupancy_evaluation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <random>
+#include <stdexcept>
+
+#include "rigdesign/occupancy/occupancy_trail.hpp"
+#include "rigdesign/sim/ray_caster.hpp"
+#include "rigdesign/sim/sensor_simulator.hpp"
+
+namespace rigdesign {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A camera's mode with every `stride`-th pixel row and column: a lower-resolution mode.
+SensorMode decimated(SensorMode mode, int stride) {
+  const bool camera = mode.fov.shape == FovShape::pyramid || mode.fov.shape == FovShape::cone;
+  if (!camera || stride <= 1) return mode;
+  mode.angular_resolution_h *= stride;
+  if (mode.angular_resolution_v) *mode.angular_resolution_v *= stride;
+  mode.points_per_frame /= static_cast<double>(stride * stride);
+  return mode;
+}
+
+std::mt19937_64 stream_for(std::uint64_t seed, std::size_t sensor) {
+  // As simulate_mount: (seed, sensor index), so each sensor's noise is its own.
+  std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                         static_cast<std::uint32_t>(sensor)};
+  return std::mt19937_64(sequence);
+}
+
+TriangleMesh static_scenery(const Scene& scene) {
+  TriangleMesh mesh;
+  for (const SceneObject& object : scene.objects) mesh.append(object.mesh);
+  return mesh;
+}
+
+// What every mapper on one lattice is scored against at one frame.
+struct LatticeTruth {
+  VoxelLattice lattice;
+  GridWindow window;
+  std::vector<VoxelKey> scenery;      // static, computed once
+  std::vector<VoxelKey> object;       // the moving object now
+  std::vector<VoxelKey> seen;         // voxels holding a point this frame
+  std::vector<std::uint8_t> columns;  // every truth voxel's column
+  std::vector<std::uint8_t> dilated;  // columns dilated by the robot radius
+};
+
+bool same_lattice(const VoxelLattice& a, const VoxelLattice& b) {
+  return a.resolution == b.resolution && a.z_resolution == b.z_resolution && a.z_min == b.z_min &&
+         a.z_max == b.z_max;
+}
+
+// Paper 3's neighbourhood: predicted voxels within the margin of the object's box in x and y,
+// static scenery left out (the plate is not the person's false positive).
+std::vector<VoxelKey> near_object(const std::vector<VoxelKey>& predicted, const LatticeTruth& truth,
+                                  double margin) {
+  if (truth.object.empty()) return {};
+  int x0 = truth.object.front().x, x1 = x0, y0 = truth.object.front().y, y1 = y0;
+  for (const VoxelKey& key : truth.object) {
+    x0 = std::min(x0, key.x), x1 = std::max(x1, key.x);
+    y0 = std::min(y0, key.y), y1 = std::max(y1, key.y);
+  }
+  const int reach = static_cast<int>(std::ceil(margin / truth.lattice.resolution - 1e-9));
+  std::vector<VoxelKey> near;
+  for (const VoxelKey& key : predicted) {
+    if (key.x < x0 - reach || key.x > x1 + reach || key.y < y0 - reach || key.y > y1 + reach)
+      continue;
+    if (std::binary_search(truth.scenery.begin(), truth.scenery.end(), key)) continue;
+    near.push_back(key);
+  }
+  return near;
+}
+
+// Per mapper: the running state of its whole-window measures.
+struct Tracking {
+  TrailTracker trail;
+  ChangeDelays delays;
+};
+
+void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*>& frames) {
+  phase.frames = frames.size();
+  std::vector<Scores> object, master;
+  double seconds = 0.0, points = 0.0;
+  for (const OccupancyFrame* frame : frames) {
+    object.push_back(scores_of(frame->object));
+    if (frame->has_master) master.push_back(scores_of(frame->master));
+    phase.ghost_area += frame->ghost_area;
+    phase.ghost_area_max = std::max(phase.ghost_area_max, frame->ghost_area);
+    phase.trail_length += frame->trail_length;
+    phase.trail_length_max = std::max(phase.trail_length_max, frame->trail_length);
+    phase.master_ghost_area += frame->master_ghost_area;
+    phase.never_seen += frame->misses.never_seen;
+    phase.seen_not_kept += frame->misses.seen_not_kept;
+    seconds += frame->update_seconds;
+    points += static_cast<double>(frame->points);
+  }
+  const double n = frames.empty() ? kNaN : static_cast<double>(frames.size());
+  phase.object = mean_scores(object);
+  phase.master = master.empty() ? Scores{kNaN, kNaN, kNaN, kNaN, kNaN} : mean_scores(master);
+  phase.ghost_area /= n;
+  phase.trail_length /= n;
+  phase.master_ghost_area /= n;
+  phase.update_ms = seconds / n * 1e3;
+  phase.points_per_second = seconds > 0.0 ? points / seconds : kNaN;
+}
+
+}  // namespace
+
+double percentile_of(std::vector<double> values, double p) {
+  if (values.empty()) return kNaN;
+  std::sort(values.begin(), values.end());
+  const double rank = std::ceil(p * static_cast<double>(values.size()));
+  const std::size_t index = static_cast<std::size_t>(std::max(1.0, rank)) - 1;
+  return values[std::min(index, values.size() - 1)];
+}
+
+std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene,
+                                             std::span<const CellSensor> sensors,
+                                             std::span<OccupancyMapper* const> mappers,
+                                             const OccupancyEvalParams& params) {
+  if (scene.moving.empty()) {
+    throw std::invalid_argument("evaluate_occupancy: the scene '" + scene.name +
+                                "' has no moving object");
+  }
+  const MovingObject& object = scene.moving.front();
+  std::vector<std::vector<Vec3>> rays;
+  std::vector<SensorMode> modes;
+  std::vector<std::mt19937_64> streams;
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    modes.push_back(decimated(sensors[i].mode, params.camera_stride));
+    rays.push_back(ray_pattern(modes.back()));
+    streams.push_back(stream_for(params.seed, i));
+  }
+  // One truth per distinct lattice; mappers share it.
+  const TriangleMesh scenery = static_scenery(scene);
+  std::vector<LatticeTruth> truths;
+  std::vector<std::size_t> truth_of;
+  for (OccupancyMapper* mapper : mappers) {
+    const VoxelLattice lattice = mapper->lattice();
+    auto found = std::find_if(truths.begin(), truths.end(), [&](const LatticeTruth& t) {
+      return same_lattice(t.lattice, lattice);
+    });
+    if (found == truths.end()) {
+      LatticeTruth truth;
+      truth.lattice = lattice;
+      truth.window = centred_window(params.window_size, lattice.resolution);
+      truth.scenery = voxelise_surface(scenery, lattice, params.min_height);
+      truths.push_back(std::move(truth));
+      found = truths.end() - 1;
+    }
+    truth_of.push_back(static_cast<std::size_t>(found - truths.begin()));
+  }
+  std::vector<OccupancyRun> runs(mappers.size());
+  std::vector<Tracking> tracking;
+  for (std::size_t m = 0; m < mappers.size(); ++m) {
+    runs[m].mapper = mappers[m]->name();
+    runs[m].resolution = truths[truth_of[m]].lattice.resolution;
+    const GridWindow& window = truths[truth_of[m]].window;
+    tracking.push_back({TrailTracker(window.size(), window.resolution * window.resolution),
+                        ChangeDelays(window.size())});
+  }
+  PathOdometer odometer;
+  const SimulationSettings settings{0.0, true, false};
+  const int frames =
+      std::max(1, static_cast<int>(std::floor(params.duration * params.rate + 1e-9)));
+  std::vector<PointCloud> clouds(sensors.size());
+  for (int k = 0; k < frames; ++k) {
+    const double t = k / params.rate;
+    const bool moving = t < params.moving_until;
+    const RayCaster caster(scene.at(t));
+    std::size_t points = 0;
+    for (std::size_t i = 0; i < sensors.size(); ++i) {
+      clouds[i] = simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor, settings,
+                                 streams[i]);
+      points += clouds[i].size();
+    }
+    const Pose3 T_world_object = object.T_world_object(t);
+    odometer.record(t, T_world_object.translation().head<2>());
+    TriangleMesh object_now;
+    object_now.append(object.mesh, T_world_object);
+    for (LatticeTruth& truth : truths) {
+      truth.object = voxelise_surface(object_now, truth.lattice, params.min_height);
+      // Only the object's voxels can be misses, so only marking points inside its x span count.
+      truth.seen.clear();
+      if (!truth.object.empty()) {
+        const auto [low, high] =
+            std::minmax_element(truth.object.begin(), truth.object.end(),
+                                [](const VoxelKey& a, const VoxelKey& b) { return a.x < b.x; });
+        const int x0 = low->x, x1 = high->x;
+        for (const PointCloud& cloud : clouds) {
+          for (const Point3f& p : cloud.points) {
+            if (p.z() < params.min_height) continue;  // below the band: clears, never marks
+            const VoxelKey key = truth.lattice.key_at(p.cast<double>());
+            if (key.x >= x0 && key.x <= x1) truth.seen.push_back(key);
+          }
+        }
+      }
+      std::vector<VoxelKey> all = truth.scenery;
+      all.insert(all.end(), truth.object.begin(), truth.object.end());
+      truth.columns = column_mask(all, truth.window);
+      truth.dilated = dilate_mask(truth.columns, truth.window, params.robot_radius);
+    }
+    for (std::size_t m = 0; m < mappers.size(); ++m) {
+      const LatticeTruth& truth = truths[truth_of[m]];
+      OccupancyFrame frame;
+      frame.time = t;
+      frame.robot_moving = moving;
+      frame.points = points;
+      const auto start = std::chrono::steady_clock::now();
+      mappers[m]->update(t, clouds, moving);
+      frame.update_seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const std::vector<VoxelKey> predicted = mappers[m]->occupied();
+      frame.object =
+          compare_voxel_sets(near_object(predicted, truth, params.object_margin), truth.object);
+      frame.misses = split_misses(predicted, truth.object, truth.seen);
+      const std::vector<std::uint8_t> shown = column_mask(predicted, truth.window);
+      const TrailFrame trail = tracking[m].trail.record(t, truth.columns, shown);
+      frame.ghost_area = trail.ghost_area;
+      frame.trail_area = trail.trail_area;
+      frame.trail_length =
+          std::isnan(trail.trail_p90_time) ? 0.0 : odometer.length_since(trail.trail_p90_time);
+      frame.trail_length_oldest = std::isnan(trail.oldest_trail_time)
+                                      ? 0.0
+                                      : odometer.length_since(trail.oldest_trail_time);
+      ChangeDelays& delays = tracking[m].delays;
+      const std::size_t marks_before = delays.mark_delays().size();
+      const std::size_t clears_before = delays.clear_delays().size();
+      delays.record(t, truth.columns, shown);
+      OccupancyPhase& phase = moving ? runs[m].moving : runs[m].stationary;
+      phase.mark_delays.insert(
+          phase.mark_delays.end(),
+          delays.mark_delays().begin() + static_cast<std::ptrdiff_t>(marks_before),
+          delays.mark_delays().end());
+      phase.clear_delays.insert(
+          phase.clear_delays.end(),
+          delays.clear_delays().begin() + static_cast<std::ptrdiff_t>(clears_before),
+          delays.clear_delays().end());
+      const std::vector<std::uint8_t> blocked = mappers[m]->blocked_cells(truth.window);
+      frame.has_master = !blocked.empty();
+      if (frame.has_master) {
+        frame.master = compare_masks(blocked, truth.dilated);
+        frame.master_ghost_area = ghost_area(blocked, truth.dilated, truth.window.resolution);
+      }
+      runs[m].frames.push_back(frame);
+    }
+  }
+  for (std::size_t m = 0; m < mappers.size(); ++m) {
+    OccupancyRun& run = runs[m];
+    std::vector<const OccupancyFrame*> moving, stationary, all;
+    for (const OccupancyFrame& frame : run.frames) {
+      (frame.robot_moving ? moving : stationary).push_back(&frame);
+      all.push_back(&frame);
+    }
+    finish_phase(run.moving, moving);
+    finish_phase(run.stationary, stationary);
+    finish_phase(run.all, all);
+    run.all.mark_delays = run.moving.mark_delays;
+    run.all.mark_delays.insert(run.all.mark_delays.end(), run.stationary.mark_delays.begin(),
+                               run.stationary.mark_delays.end());
+    run.all.clear_delays = run.moving.clear_delays;
+    run.all.clear_delays.insert(run.all.clear_delays.end(), run.stationary.clear_delays.begin(),
+                                run.stationary.clear_delays.end());
+    run.pending_changes = tracking[m].delays.pending();
+    run.missed_marks = tracking[m].delays.missed_marks();
+    run.missed_clears = tracking[m].delays.missed_clears();
+  }
+  return runs;
+}
+
+}  // namespace rigdesign
