@@ -10,7 +10,8 @@ namespace rigdesign::cli {
 
 void require_option(bool ok, const std::string& option, const std::string& problem,
                     const std::string& expected) {
-  if (!ok) throw InputError(Diagnostic{{"(command line)", 0, 0}, option, problem, expected});
+  if (!ok)
+    throw model::InputError(model::Diagnostic{{"(command line)", 0, 0}, option, problem, expected});
 }
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -34,8 +35,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     for (const Command& command : commands) {
       if (command.app->parsed()) return command.run(out, err);
     }
-  } catch (const InputError& error) {
-    for (const Diagnostic& diagnostic : error.diagnostics()) err << diagnostic.message() << '\n';
+  } catch (const model::InputError& error) {
+    for (const model::Diagnostic& diagnostic : error.diagnostics())
+      err << diagnostic.message() << '\n';
     return kBadInput;
   }
   return kBadInput;

@@ -42,7 +42,7 @@ int run_check(const CheckOptions& options, std::ostream& out) {
   if (options.output.empty()) {
     out << text;
   } else {
-    write_file_atomically(options.output, text);
+    io::write_file_atomically(options.output, text);
   }
   return exit_code;
 }

@@ -43,21 +43,21 @@ struct CostmapOptions {
 };
 
 struct Variant {
-  ObstacleLayerKind layer = ObstacleLayerKind::obstacle;
+  costmap::ObstacleLayerKind layer = costmap::ObstacleLayerKind::obstacle;
   bool hit_layer = true;
   std::string name() const {
-    return std::string(layer == ObstacleLayerKind::obstacle ? "obstacle" : "voxel") +
+    return std::string(layer == costmap::ObstacleLayerKind::obstacle ? "obstacle" : "voxel") +
            (hit_layer ? "_hit" : "_no_hit");
   }
   std::string label() const {
-    return std::string(layer == ObstacleLayerKind::obstacle ? "obstacle" : "voxel") +
+    return std::string(layer == costmap::ObstacleLayerKind::obstacle ? "obstacle" : "voxel") +
            (hit_layer ? " + Hit Layer" : ", no Hit Layer");
   }
 };
 
 struct VariantRun {
   Variant variant;
-  ScenarioResult result;
+  scenarios::ScenarioResult result;
   std::string folder;
   int frames = 0;
 };
@@ -73,16 +73,16 @@ double milliseconds(double seconds) {
 }
 
 // Each mount's horizontal view on the floor at the robot's pose.
-std::vector<FovWedge> fov_wedges(const Rig& rig, const SensorLibrary& library, const Pose2& pose,
-                                 double marking_range) {
-  std::vector<FovWedge> wedges;
+std::vector<render::FovWedge> fov_wedges(const model::Rig& rig, const model::SensorLibrary& library,
+                                         const costmap::Pose2& pose, double marking_range) {
+  std::vector<render::FovWedge> wedges;
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
-    const Mount& mount = rig.mounts[i];
-    const SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    const Vec3 axis = mount.T_robot_sensor.linear().col(0);
-    const Vec2 offset = mount.T_robot_sensor.translation().head<2>();
+    const model::Mount& mount = rig.mounts[i];
+    const model::SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
+    const model::Vec3 axis = mount.T_robot_sensor.linear().col(0);
+    const model::Vec2 offset = mount.T_robot_sensor.translation().head<2>();
     const Eigen::Rotation2Dd R_world_robot(pose.yaw);
-    FovWedge wedge;
+    render::FovWedge wedge;
     wedge.apex = pose.position + R_world_robot * offset;
     wedge.yaw = pose.yaw + std::atan2(axis.y(), axis.x());
     wedge.half_angle = mode.fov.horizontal / 2;
@@ -94,18 +94,18 @@ std::vector<FovWedge> fov_wedges(const Rig& rig, const SensorLibrary& library, c
 }
 
 // Cells the Hit Layer holds that the obstacle grid does not see occupied now.
-std::vector<std::uint8_t> remembered_cells(const Costmap& costmap) {
+std::vector<std::uint8_t> remembered_cells(const costmap::Costmap& costmap) {
   if (!costmap.params().use_hit_layer) return {};
   const auto& counts = costmap.hit_layer().counts().cells();
   const auto& observed = costmap.obstacle_grid().cells();
   std::vector<std::uint8_t> remembered(counts.size(), 0);
   for (std::size_t i = 0; i < counts.size(); ++i) {
-    remembered[i] = counts[i] > 0 && observed[i] != cost::kLethal;
+    remembered[i] = counts[i] > 0 && observed[i] != costmap::cost::kLethal;
   }
   return remembered;
 }
 
-std::string outcome_text(const ScenarioResult& result) {
+std::string outcome_text(const scenarios::ScenarioResult& result) {
   if (result.collided) {
     return "collision with " + result.collision_object +
            " at t = " + fixed(result.collision_time, 2) + " s (robot at x " +
@@ -116,13 +116,13 @@ std::string outcome_text(const ScenarioResult& result) {
                              : "none; goal not reached by t = " + fixed(result.end_time, 2) + " s";
 }
 
-nlohmann::json summary_json(const CostmapOptions& options, const Rig& rig, const VariantRun& run,
-                            const ScenarioParams& params) {
-  const ScenarioResult& result = run.result;
-  const TimeSummary update = summarize_times(result.update_seconds);
-  const TimeSummary plan = summarize_times(result.planner_seconds);
+nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig,
+                            const VariantRun& run, const scenarios::ScenarioParams& params) {
+  const scenarios::ScenarioResult& result = run.result;
+  const scenarios::TimeSummary update = scenarios::summarize_times(result.update_seconds);
+  const scenarios::TimeSummary plan = scenarios::summarize_times(result.planner_seconds);
   nlohmann::json trajectory = nlohmann::json::array();
-  for (const TrajectorySample& sample : result.trajectory) {
+  for (const scenarios::TrajectorySample& sample : result.trajectory) {
     trajectory.push_back(
         {sample.time, sample.pose.position.x(), sample.pose.position.y(), sample.pose.yaw});
   }
@@ -130,7 +130,7 @@ nlohmann::json summary_json(const CostmapOptions& options, const Rig& rig, const
       {"rig", rig.name},
       {"scenario", options.scenario},
       {"seed", options.seed},
-      {"layer", run.variant.layer == ObstacleLayerKind::obstacle ? "obstacle" : "voxel"},
+      {"layer", run.variant.layer == costmap::ObstacleLayerKind::obstacle ? "obstacle" : "voxel"},
       {"hit_layer", run.variant.hit_layer},
       {"hit", params.costmap.hit.hit},
       {"hit_max", params.costmap.hit.hit_max},
@@ -159,33 +159,33 @@ nlohmann::json summary_json(const CostmapOptions& options, const Rig& rig, const
 }
 
 VariantRun run_variant(const CostmapOptions& options, const RigInputs& inputs,
-                       const ScenarioDefinition& scenario, const Variant& variant,
-                       const std::string& folder, ScenarioParams params) {
+                       const scenarios::ScenarioDefinition& scenario, const Variant& variant,
+                       const std::string& folder, scenarios::ScenarioParams params) {
   params.costmap.layer = variant.layer;
   params.costmap.use_hit_layer = variant.hit_layer;
   VariantRun run{variant, {}, folder, 0};
   std::filesystem::create_directories(folder + "/frames");
-  const HeightBand band{params.ground_clearance, inputs.rig.body.height};
-  std::vector<TriangleMesh> moved;
-  CostGrid last_master;
-  CostGrid last_obstacles;
-  CostmapFrame frame;
-  std::vector<Vec2> trail;
+  const costmap::HeightBand band{params.ground_clearance, inputs.rig.body.height};
+  std::vector<model::TriangleMesh> moved;
+  costmap::CostGrid last_master;
+  costmap::CostGrid last_obstacles;
+  render::CostmapFrame frame;
+  std::vector<model::Vec2> trail;
   const auto outlines_at = [&](double t) {
-    std::vector<NamedMesh> meshes;
-    for (const SceneObject& object : scenario.scene.objects)
+    std::vector<costmap::NamedMesh> meshes;
+    for (const model::SceneObject& object : scenario.scene.objects)
       meshes.push_back({object.name, &object.mesh});
     moved.clear();
-    for (const MovingObject& object : scenario.scene.moving)
+    for (const model::MovingObject& object : scenario.scene.moving)
       moved.emplace_back().append(object.mesh, object.T_world_object(t));
     for (std::size_t i = 0; i < moved.size(); ++i)
       meshes.push_back({scenario.scene.moving[i].name, &moved[i]});
-    return FootprintCollisionChecker(meshes, band).outlines();
+    return costmap::FootprintCollisionChecker(meshes, band).outlines();
   };
-  const std::vector<std::vector<Vec2>> still_outlines = outlines_at(0.0);
+  const std::vector<std::vector<model::Vec2>> still_outlines = outlines_at(0.0);
   const std::string title = inputs.rig.name + ", " + options.scenario + ", " + variant.label();
-  run.result =
-      run_scenario(scenario, inputs.rig, inputs.library, params, [&](const ScenarioStep& step) {
+  run.result = scenarios::run_scenario(
+      scenario, inputs.rig, inputs.library, params, [&](const scenarios::ScenarioStep& step) {
         trail.push_back(step.pose.position);
         last_master = step.costmap->master();
         last_obstacles = step.costmap->obstacle_grid();
@@ -203,30 +203,30 @@ VariantRun run_variant(const CostmapOptions& options, const RigInputs& inputs,
           frame.master = &last_master;
           char name[32];
           std::snprintf(name, sizeof name, "frame_%04d.png", step.index);
-          draw_costmap_frame(frame, folder + "/frames/" + name);
+          render::draw_costmap_frame(frame, folder + "/frames/" + name);
           ++run.frames;
         }
       });
   // The last picture shows where the run ended: the collision pose or the goal.
-  const TrajectorySample& last = run.result.trajectory.back();
+  const scenarios::TrajectorySample& last = run.result.trajectory.back();
   frame.master = &last_master;
   frame.robot = run.result.collided ? run.result.collision_position : last.pose.position;
   frame.yaw = last.pose.yaw;
   frame.collided = run.result.collided;
   frame.trail.push_back(frame.robot);
   frame.title = title + ": " + (run.result.collided ? "collision" : "no collision");
-  draw_costmap_frame(frame, folder + "/final.png");
-  write_map_files(to_occupancy_map(last_master), folder + "/master.yaml");
-  write_map_files(to_occupancy_map(last_obstacles), folder + "/obstacles.yaml");
-  write_file_atomically(folder + "/summary.json",
-                        summary_json(options, inputs.rig, run, params).dump(2) + "\n");
+  render::draw_costmap_frame(frame, folder + "/final.png");
+  io::write_map_files(io::to_occupancy_map(last_master), folder + "/master.yaml");
+  io::write_map_files(io::to_occupancy_map(last_obstacles), folder + "/obstacles.yaml");
+  io::write_file_atomically(folder + "/summary.json",
+                            summary_json(options, inputs.rig, run, params).dump(2) + "\n");
   return run;
 }
 
 void print_run(std::ostream& out, const VariantRun& run) {
-  const ScenarioResult& result = run.result;
-  const TimeSummary update = summarize_times(result.update_seconds);
-  const TimeSummary plan = summarize_times(result.planner_seconds);
+  const scenarios::ScenarioResult& result = run.result;
+  const scenarios::TimeSummary update = scenarios::summarize_times(result.update_seconds);
+  const scenarios::TimeSummary plan = scenarios::summarize_times(result.planner_seconds);
   out << run.variant.label() << "\n";
   out << "  collision: " << outcome_text(result) << "\n";
   out << "  minimum clearance: "
@@ -254,8 +254,8 @@ void print_comparison(std::ostream& out, const std::vector<VariantRun>& runs) {
   table.add_column("update median [ms]", TextTable::Align::right);
   table.add_column("update p99 [ms]", TextTable::Align::right);
   for (const VariantRun& run : runs) {
-    const ScenarioResult& result = run.result;
-    const TimeSummary update = summarize_times(result.update_seconds);
+    const scenarios::ScenarioResult& result = run.result;
+    const scenarios::TimeSummary update = scenarios::summarize_times(result.update_seconds);
     table.add_row(
         {run.variant.label(), result.collided ? fixed(result.collision_time, 2) : "none",
          result.collided ? result.collision_object : "-",
@@ -267,7 +267,7 @@ void print_comparison(std::ostream& out, const std::vector<VariantRun>& runs) {
 }
 
 int run_costmap(const CostmapOptions& options, std::ostream& out) {
-  const std::vector<std::string>& names = costmap_scenario_names();
+  const std::vector<std::string>& names = scenarios::costmap_scenario_names();
   require_option(std::find(names.begin(), names.end(), options.scenario) != names.end(),
                  "--scenario", "unknown scenario '" + options.scenario + "'",
                  "one of: " + joined(names));
@@ -285,34 +285,37 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
   const double footprint = 2.0 * inputs.rig.body.radius;
   require_option(
       options.window >= footprint, "--window",
-      "is smaller than the robot's footprint (" + format_number(footprint) + " m across)",
-      "a window side >= " + format_number(footprint) + " m");
-  ScenarioParams params;
+      "is smaller than the robot's footprint (" + model::format_number(footprint) + " m across)",
+      "a window side >= " + model::format_number(footprint) + " m");
+  scenarios::ScenarioParams params;
   params.costmap.resolution = options.resolution;
   params.costmap.size_x = options.window;
   params.costmap.size_y = options.window;
   params.follower.speed = options.speed;
   params.update_rate = options.update_rate;
   params.seed = options.seed;
-  check_scenario_inputs(inputs.rig, inputs.library, params);
+  scenarios::check_scenario_inputs(inputs.rig, inputs.library, params);
 
-  const ScenarioDefinition scenario = make_costmap_scenario(options.scenario, options.seed);
+  const scenarios::ScenarioDefinition scenario =
+      scenarios::make_costmap_scenario(options.scenario, options.seed);
   const std::string folder = options.out.empty() ? "costmap/" + options.scenario : options.out;
   out << inputs.rig.name << " in scenario " << scenario.name << " (seed " << options.seed
       << "): " << scenario.description << "\n";
-  out << "  " << format_number(options.resolution) << " m cells, " << format_number(options.window)
-      << " m window, " << format_number(options.update_rate) << " Hz updates, "
-      << format_number(options.speed) << " m/s; Hit Layer hit " << params.costmap.hit.hit
+  out << "  " << model::format_number(options.resolution) << " m cells, "
+      << model::format_number(options.window) << " m window, "
+      << model::format_number(options.update_rate) << " Hz updates, "
+      << model::format_number(options.speed) << " m/s; Hit Layer hit " << params.costmap.hit.hit
       << ", hit_max " << params.costmap.hit.hit_max << "\n";
   std::vector<Variant> variants;
   if (options.compare) {
-    for (ObstacleLayerKind layer : {ObstacleLayerKind::obstacle, ObstacleLayerKind::voxel}) {
+    for (costmap::ObstacleLayerKind layer :
+         {costmap::ObstacleLayerKind::obstacle, costmap::ObstacleLayerKind::voxel}) {
       for (bool hit : {false, true}) variants.push_back({layer, hit});
     }
   } else {
-    variants.push_back(
-        {options.layer == "voxel" ? ObstacleLayerKind::voxel : ObstacleLayerKind::obstacle,
-         !options.no_hit_layer});
+    variants.push_back({options.layer == "voxel" ? costmap::ObstacleLayerKind::voxel
+                                                 : costmap::ObstacleLayerKind::obstacle,
+                        !options.no_hit_layer});
   }
   std::vector<VariantRun> runs;
   nlohmann::json all = nlohmann::json::array();
@@ -325,7 +328,7 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
   if (options.compare) {
     out << "comparison:\n";
     print_comparison(out, runs);
-    write_file_atomically(folder + "/comparison.json", all.dump(2) + "\n");
+    io::write_file_atomically(folder + "/comparison.json", all.dump(2) + "\n");
     out << "  wrote " << folder << "/comparison.json\n";
   }
   return kOk;

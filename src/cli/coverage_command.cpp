@@ -30,7 +30,7 @@ struct CoverageOptions {
 
 int run_coverage(const CoverageOptions& options, std::ostream& out) {
   require_option(options.step_deg > 0 && options.step_deg <= 45, "--step",
-                 "is " + format_number(options.step_deg), "degrees in (0, 45]");
+                 "is " + model::format_number(options.step_deg), "degrees in (0, 45]");
   for (const double angle : options.angles_deg) {
     require_option(std::isfinite(angle), "--angles", "has a value that is not a number",
                    "comma-separated degrees, e.g. 0,45,90");
@@ -44,27 +44,29 @@ int run_coverage(const CoverageOptions& options, std::ostream& out) {
   require_option(!error, "--out", "cannot create folder '" + folder + "': " + error.message(),
                  "a writable folder");
 
-  CoverageSettings settings;
-  settings.step = deg_to_rad(options.step_deg);
+  metrics::CoverageSettings settings;
+  settings.step = model::deg_to_rad(options.step_deg);
   settings.exact = !options.raster;
-  const std::vector<SectorRequirement> sectors =
-      inputs.requirements ? inputs.requirements->sectors : std::vector<SectorRequirement>{};
-  const RigCoverage coverage = compute_coverage(inputs.rig, inputs.library, sectors, settings);
+  const std::vector<model::SectorRequirement> sectors =
+      inputs.requirements ? inputs.requirements->sectors : std::vector<model::SectorRequirement>{};
+  const metrics::RigCoverage coverage =
+      metrics::compute_coverage(inputs.rig, inputs.library, sectors, settings);
 
   const std::vector<std::string> written = write_coverage_files(
       inputs.rig, inputs.library, coverage, options.angles_deg, folder, !options.no_3d);
 
-  out << inputs.rig.name << ": SC complete min " << format_number(coverage.complete.min * 100, 3)
-      << " %, mean " << format_number(coverage.complete.mean * 100, 3) << " %; SC floor min "
-      << format_number(coverage.floor.min * 100, 3) << " %, mean "
-      << format_number(coverage.floor.mean * 100, 3) << " % (" << coverage.angles.size()
+  out << inputs.rig.name << ": SC complete min "
+      << model::format_number(coverage.complete.min * 100, 3) << " %, mean "
+      << model::format_number(coverage.complete.mean * 100, 3) << " %; SC floor min "
+      << model::format_number(coverage.floor.min * 100, 3) << " %, mean "
+      << model::format_number(coverage.floor.mean * 100, 3) << " % (" << coverage.angles.size()
       << " angles, " << (coverage.exact ? "exact path" : "raster path") << ")\n";
-  for (const SectorCoverage& sector : coverage.sectors) {
+  for (const metrics::SectorCoverage& sector : coverage.sectors) {
     out << "  sector " << sector.sector.name << ": complete min "
-        << format_number(sector.complete.min * 100, 3) << " % (needs "
-        << format_number(sector.sector.min_complete_coverage * 100, 3) << "), floor min "
-        << format_number(sector.floor.min * 100, 3) << " % (needs "
-        << format_number(sector.sector.min_floor_coverage * 100, 3)
+        << model::format_number(sector.complete.min * 100, 3) << " % (needs "
+        << model::format_number(sector.sector.min_complete_coverage * 100, 3) << "), floor min "
+        << model::format_number(sector.floor.min * 100, 3) << " % (needs "
+        << model::format_number(sector.sector.min_floor_coverage * 100, 3)
         << "): " << (sector.pass ? "pass" : "FAIL") << '\n';
   }
   out << "wrote " << written.size() << " files:\n";

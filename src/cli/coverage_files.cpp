@@ -13,20 +13,22 @@
 
 namespace rigdesign::cli {
 
-std::string coverage_csv(const RigCoverage& coverage) {
+std::string coverage_csv(const metrics::RigCoverage& coverage) {
   std::ostringstream csv;
   csv << "theta_deg,r_m,sc_complete,sc_floor,sc_complete_raster,sc_floor_raster,redundancy,"
          "coarsest_mount,coarsest_spacing_m,noisiest_mount,noisiest_noise_m,seen_by\n";
-  for (const AngleCoverage& angle : coverage.angles) {
-    csv << format_number(rad_to_deg(angle.theta), 8) << ',' << format_number(angle.r, 8) << ','
-        << format_number(angle.complete, 8) << ',' << format_number(angle.floor, 8) << ','
-        << format_number(angle.complete_raster, 8) << ',' << format_number(angle.floor_raster, 8)
-        << ',' << format_number(angle.redundancy, 8) << ',';
+  for (const metrics::AngleCoverage& angle : coverage.angles) {
+    csv << model::format_number(model::rad_to_deg(angle.theta), 8) << ','
+        << model::format_number(angle.r, 8) << ',' << model::format_number(angle.complete, 8) << ','
+        << model::format_number(angle.floor, 8) << ','
+        << model::format_number(angle.complete_raster, 8) << ','
+        << model::format_number(angle.floor_raster, 8) << ','
+        << model::format_number(angle.redundancy, 8) << ',';
     if (angle.coarsest_mount >= 0) {
       csv << coverage.mount_ids[angle.coarsest_mount] << ','
-          << format_number(angle.coarsest_spacing, 8) << ','
+          << model::format_number(angle.coarsest_spacing, 8) << ','
           << coverage.mount_ids[angle.noisiest_mount] << ','
-          << format_number(angle.noisiest_noise, 8) << ',';
+          << model::format_number(angle.noisiest_noise, 8) << ',';
     } else {
       csv << ",,,,";
     }
@@ -39,12 +41,14 @@ std::string coverage_csv(const RigCoverage& coverage) {
   return csv.str();
 }
 
-std::vector<std::pair<Viewpoint, std::string>> views_3d() {
-  return {{Viewpoint::isometric, "view_isometric.png"}, {Viewpoint::top, "view_top.png"}};
+std::vector<std::pair<render::Viewpoint, std::string>> views_3d() {
+  return {{render::Viewpoint::isometric, "view_isometric.png"},
+          {render::Viewpoint::top, "view_top.png"}};
 }
 
-std::vector<std::string> write_coverage_files(const Rig& rig, const SensorLibrary& library,
-                                              const RigCoverage& coverage,
+std::vector<std::string> write_coverage_files(const model::Rig& rig,
+                                              const model::SensorLibrary& library,
+                                              const metrics::RigCoverage& coverage,
                                               const std::vector<double>& angles_deg,
                                               const std::string& folder, bool with_3d) {
   std::vector<std::string> written;
@@ -53,38 +57,39 @@ std::vector<std::string> write_coverage_files(const Rig& rig, const SensorLibrar
     return written.back();
   };
   for (const char* extension : {".png", ".svg"}) {
-    plot_sc_cartesian(coverage, rig.name, path(std::string("sc_cartesian") + extension));
-    plot_sc_polar(coverage, rig.name, path(std::string("sc_polar") + extension));
+    render::plot_sc_cartesian(coverage, rig.name, path(std::string("sc_cartesian") + extension));
+    render::plot_sc_polar(coverage, rig.name, path(std::string("sc_polar") + extension));
   }
   for (const double degrees : angles_deg) {
-    const SectionView view = section_view(rig, library, deg_to_rad(degrees));
-    const std::string name = "section_" + format_number(degrees, 6);
-    draw_section(view, rig.name, path(name + ".png"));
-    draw_section(view, rig.name, path(name + ".svg"));
+    const metrics::SectionView view =
+        metrics::section_view(rig, library, model::deg_to_rad(degrees));
+    const std::string name = "section_" + model::format_number(degrees, 6);
+    render::draw_section(view, rig.name, path(name + ".png"));
+    render::draw_section(view, rig.name, path(name + ".svg"));
   }
   if (with_3d) {
     for (const auto& [viewpoint, name] : views_3d())
       render_rig_3d(rig, library, viewpoint, path(name));
   }
-  write_file_atomically(path("coverage.csv"), coverage_csv(coverage));
-  write_file_atomically(path("coverage.json"), to_json(coverage, true).dump(2) + "\n");
+  io::write_file_atomically(path("coverage.csv"), coverage_csv(coverage));
+  io::write_file_atomically(path("coverage.json"), to_json(coverage, true).dump(2) + "\n");
   return written;
 }
 
-void render_rig_3d(const Rig& rig, const SensorLibrary& library, Viewpoint viewpoint,
-                   const std::string& path) {
-  std::vector<ColouredMesh> meshes;
-  meshes.push_back({body_mesh(rig.body), kBodyColour, 1.0});
+void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,
+                   render::Viewpoint viewpoint, const std::string& path) {
+  std::vector<render::ColouredMesh> meshes;
+  meshes.push_back({render::body_mesh(rig.body), render::kBodyColour, 1.0});
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
-    const Mount& mount = rig.mounts[i];
-    const SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    meshes.push_back(
-        {fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest), sensor_colour(i), 0.35});
+    const model::Mount& mount = rig.mounts[i];
+    const model::SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
+    meshes.push_back({render::fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest),
+                      render::sensor_colour(i), 0.35});
   }
-  View3dSettings settings;
+  render::View3dSettings settings;
   settings.viewpoint = viewpoint;
   settings.extent = 0.0;  // fit the FOV volumes, which reach past d from off-centre mounts
-  render_view_3d(meshes, settings, path);
+  render::render_view_3d(meshes, settings, path);
 }
 
 }  // namespace rigdesign::cli

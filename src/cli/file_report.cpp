@@ -25,11 +25,11 @@ std::string rig_summary(const RigInputs& inputs) {
   return text;
 }
 
-std::string result_line(const RequirementResult& result) {
+std::string result_line(const metrics::RequirementResult& result) {
   std::string text = to_string(result.where) + ": " + result.field + ": " +
                      to_string(result.verdict) + ": " + result.id + " " + result.title;
   if (result.actual) {
-    text += ": " + result.metric + " = " + format_number(*result.actual, 4) +
+    text += ": " + result.metric + " = " + model::format_number(*result.actual, 4) +
             (result.unit.empty() ? "" : " " + result.unit);
   }
   text += "; " + result.explanation;
@@ -58,21 +58,23 @@ std::string xml_escape(const std::string& text) {
   return escaped;
 }
 
-std::size_t count(const std::vector<RequirementResult>& results, Verdict verdict) {
+std::size_t count(const std::vector<metrics::RequirementResult>& results,
+                  metrics::Verdict verdict) {
   return static_cast<std::size_t>(
       std::count_if(results.begin(), results.end(),
-                    [&](const RequirementResult& r) { return r.verdict == verdict; }));
+                    [&](const metrics::RequirementResult& r) { return r.verdict == verdict; }));
 }
 
 }  // namespace
 
 bool FileReport::invalid() const {
-  return std::any_of(diagnostics.begin(), diagnostics.end(),
-                     [](const Diagnostic& d) { return d.severity == Severity::error; });
+  return std::any_of(diagnostics.begin(), diagnostics.end(), [](const model::Diagnostic& d) {
+    return d.severity == model::Severity::error;
+  });
 }
 
 bool FileReport::failing() const {
-  return count(results, Verdict::fail) > 0;
+  return count(results, metrics::Verdict::fail) > 0;
 }
 
 FileReport check_file(const std::string& path, const std::string& sensors_path,
@@ -80,53 +82,55 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
   FileReport report;
   report.file = path;
   try {
-    report.kind = detect_file_kind(path);
+    report.kind = io::detect_file_kind(path);
     switch (*report.kind) {
-      case FileKind::sensor_library: {
-        const SensorLibrary library = load_sensor_library(path);
+      case io::FileKind::sensor_library: {
+        const model::SensorLibrary library = io::load_sensor_library(path);
         std::size_t modes = 0;
-        for (const Sensor& sensor : library.sensors) modes += sensor.modes.size();
+        for (const model::Sensor& sensor : library.sensors) modes += sensor.modes.size();
         report.summary = "sensor library is valid: " + std::to_string(library.sensors.size()) +
                          " sensors, " + std::to_string(modes) + " modes";
         break;
       }
-      case FileKind::requirements: {
-        const Requirements requirements = load_requirements(path);
+      case io::FileKind::requirements: {
+        const model::Requirements requirements = io::load_requirements(path);
         report.summary = "requirements '" + requirements.name + "' are valid";
         break;
       }
-      case FileKind::catalog: {
-        const Catalog catalog = load_catalog(path);
-        check_catalog_references(catalog, load_catalog_library(catalog, sensors_path))
+      case io::FileKind::catalog: {
+        const model::Catalog catalog = io::load_catalog(path);
+        io::check_catalog_references(catalog, load_catalog_library(catalog, sensors_path))
             .throw_if_errors();
         report.summary = "catalog '" + catalog.name +
                          "' is valid: " + std::to_string(catalog.slots.size()) + " slots, " +
                          std::to_string(catalog.sensors.size()) + " candidate sensors";
         break;
       }
-      case FileKind::policy: {
-        const RelaxationPolicy policy = load_policy(path);
+      case io::FileKind::policy: {
+        const model::RelaxationPolicy policy = io::load_policy(path);
         report.summary = "relaxation policy '" + policy.name +
                          "' is valid: " + std::to_string(policy.steps.size()) + " steps";
         break;
       }
-      case FileKind::rig: {
+      case io::FileKind::rig: {
         const RigInputs inputs = load_rig_inputs(path, sensors_path, requirements_path);
         report.summary = rig_summary(inputs);
         report.diagnostics = inputs.warnings;
         if (inputs.requirements) {
-          const ResultantMetrics metrics = compute_resultant(inputs.rig, inputs.library);
-          std::optional<RigCoverage> coverage;
+          const metrics::ResultantMetrics metrics =
+              metrics::compute_resultant(inputs.rig, inputs.library);
+          std::optional<metrics::RigCoverage> coverage;
           if (!inputs.requirements->sectors.empty()) {
-            coverage = compute_coverage(inputs.rig, inputs.library, inputs.requirements->sectors);
+            coverage =
+                metrics::compute_coverage(inputs.rig, inputs.library, inputs.requirements->sectors);
           }
-          report.results = evaluate_requirements(inputs.rig, metrics, *inputs.requirements,
-                                                 coverage ? &*coverage : nullptr);
+          report.results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements,
+                                                          coverage ? &*coverage : nullptr);
         }
         break;
       }
     }
-  } catch (const InputError& error) {
+  } catch (const model::InputError& error) {
     report.diagnostics = error.diagnostics();
     report.summary = "invalid";
   }
@@ -138,12 +142,14 @@ std::string format_text(const std::vector<FileReport>& reports) {
   std::size_t invalid = 0, pass = 0, fail = 0, skipped = 0;
   for (const FileReport& report : reports) {
     if (!report.invalid()) out << report.file << ": " << report.summary << '\n';
-    for (const Diagnostic& diagnostic : report.diagnostics) out << diagnostic.message() << '\n';
-    for (const RequirementResult& result : report.results) out << result_line(result) << '\n';
+    for (const model::Diagnostic& diagnostic : report.diagnostics)
+      out << diagnostic.message() << '\n';
+    for (const metrics::RequirementResult& result : report.results)
+      out << result_line(result) << '\n';
     invalid += report.invalid() ? 1 : 0;
-    pass += count(report.results, Verdict::pass);
-    fail += count(report.results, Verdict::fail);
-    skipped += count(report.results, Verdict::not_evaluated);
+    pass += count(report.results, metrics::Verdict::pass);
+    fail += count(report.results, metrics::Verdict::fail);
+    skipped += count(report.results, metrics::Verdict::not_evaluated);
   }
   out << "check: " << reports.size() << " file(s), " << invalid
       << " invalid; requirements: " << pass << " pass, " << fail << " fail, " << skipped
@@ -155,10 +161,11 @@ std::string format_json(const std::vector<FileReport>& reports, int exit_code) {
   nlohmann::json files = nlohmann::json::array();
   for (const FileReport& report : reports) {
     nlohmann::json diagnostics = nlohmann::json::array();
-    for (const Diagnostic& diagnostic : report.diagnostics)
+    for (const model::Diagnostic& diagnostic : report.diagnostics)
       diagnostics.push_back(to_json(diagnostic));
     nlohmann::json results = nlohmann::json::array();
-    for (const RequirementResult& result : report.results) results.push_back(to_json(result));
+    for (const metrics::RequirementResult& result : report.results)
+      results.push_back(to_json(result));
     files.push_back({{"file", report.file},
                      {"kind", report.kind ? to_string(*report.kind) : "unknown"},
                      {"status", report.invalid()   ? "invalid"
@@ -178,8 +185,8 @@ std::string format_junit(const std::vector<FileReport>& reports) {
   std::size_t all_tests = 0, all_failures = 0, all_errors = 0, all_skipped = 0;
   for (const FileReport& report : reports) {
     const std::size_t tests = 1 + report.results.size();
-    const std::size_t failures = count(report.results, Verdict::fail);
-    const std::size_t skipped = count(report.results, Verdict::not_evaluated);
+    const std::size_t failures = count(report.results, metrics::Verdict::fail);
+    const std::size_t skipped = count(report.results, metrics::Verdict::not_evaluated);
     const std::size_t errors = report.invalid() ? 1 : 0;
     all_tests += tests;
     all_failures += failures;
@@ -192,27 +199,27 @@ std::string format_junit(const std::vector<FileReport>& reports) {
            << xml_escape(report.kind ? to_string(*report.kind) : "file") << "\">\n";
     if (report.invalid()) {
       std::string body;
-      for (const Diagnostic& d : report.diagnostics) body += d.message() + "\n";
+      for (const model::Diagnostic& d : report.diagnostics) body += d.message() + "\n";
       const std::string first =
           report.diagnostics.empty() ? "" : report.diagnostics.front().message();
       suites << "      <error type=\"invalid input\" message=\"" << xml_escape(first) << "\">"
              << xml_escape(body) << "</error>\n";
     }
     suites << "    </testcase>\n";
-    for (const RequirementResult& result : report.results) {
+    for (const metrics::RequirementResult& result : report.results) {
       suites << "    <testcase classname=\"" << name << "\" name=\""
              << xml_escape(result.id + " " + result.title) << "\">\n";
-      if (result.verdict == Verdict::fail) {
+      if (result.verdict == metrics::Verdict::fail) {
         suites << "      <failure type=\"requirement\" message=\""
                << xml_escape(result_line(result)) << "\"/>\n";
-      } else if (result.verdict == Verdict::not_evaluated) {
+      } else if (result.verdict == metrics::Verdict::not_evaluated) {
         suites << "      <skipped message=\"" << xml_escape(result.explanation) << "\"/>\n";
       }
       suites << "    </testcase>\n";
     }
     std::string warnings;
-    for (const Diagnostic& d : report.diagnostics) {
-      if (d.severity == Severity::warning) warnings += d.message() + "\n";
+    for (const model::Diagnostic& d : report.diagnostics) {
+      if (d.severity == model::Severity::warning) warnings += d.message() + "\n";
     }
     if (!warnings.empty())
       suites << "    <system-out>" << xml_escape(warnings) << "</system-out>\n";

@@ -13,10 +13,10 @@ namespace rigdesign::cli {
 
 struct FileReport {
   std::string file;
-  std::optional<FileKind> kind;
+  std::optional<io::FileKind> kind;
   std::string summary;  ///< one line on what was checked
-  std::vector<Diagnostic> diagnostics;
-  std::vector<RequirementResult> results;
+  std::vector<model::Diagnostic> diagnostics;
+  std::vector<metrics::RequirementResult> results;
 
   bool invalid() const;
   bool failing() const;

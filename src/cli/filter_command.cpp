@@ -60,28 +60,29 @@ double percentile(std::vector<double> values, double share) {
   return values[std::min(index, values.size() - 1)];
 }
 
-Pipeline pipeline_named(const std::string& name) {
-  if (const auto preset = preset_pipeline(name)) return *preset;
+model::Pipeline pipeline_named(const std::string& name) {
+  if (const auto preset = filters::preset_pipeline(name)) return *preset;
   std::error_code error;
-  if (std::filesystem::is_regular_file(name, error)) return load_pipeline(name);
-  throw InputError(Diagnostic{{"(command line)", 0, 0},
-                              "--pipeline",
-                              "'" + name + "' is neither a preset nor a file",
-                              "P1, P2, P3, P4 or a pipeline YAML file"});
+  if (std::filesystem::is_regular_file(name, error)) return io::load_pipeline(name);
+  throw model::InputError(model::Diagnostic{{"(command line)", 0, 0},
+                                            "--pipeline",
+                                            "'" + name + "' is neither a preset nor a file",
+                                            "P1, P2, P3, P4 or a pipeline YAML file"});
 }
 
 // Optical frame (x right, y down, z forward) to the sensor body frame (x forward, y left, z up).
-Pose3 body_from_optical() {
-  Pose3 pose = Pose3::Identity();
+model::Pose3 body_from_optical() {
+  model::Pose3 pose = model::Pose3::Identity();
   pose.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
   return pose;
 }
 
-PointCloud to_robot_frame(const PointCloud& cloud, const Pose3& T_robot_cloud) {
-  PointCloud moved;
+model::PointCloud to_robot_frame(const model::PointCloud& cloud,
+                                 const model::Pose3& T_robot_cloud) {
+  model::PointCloud moved;
   moved.points.reserve(cloud.size());
   const Eigen::Isometry3f transform = T_robot_cloud.cast<float>();
-  for (const Point3f& p : cloud.points) moved.points.push_back(transform * p);
+  for (const model::Point3f& p : cloud.points) moved.points.push_back(transform * p);
   moved.origin = T_robot_cloud.translation().cast<float>();
   return moved;
 }
@@ -105,8 +106,8 @@ std::string describe_machine() {
 }
 
 // Two mounts of one sensor (three pico flexx, say) share its entry: the slower per point counts.
-void record_load(FilteringLoads& loads, const FilteringLoad& load) {
-  for (FilteringLoad& existing : loads.sensors) {
+void record_load(model::FilteringLoads& loads, const model::FilteringLoad& load) {
+  for (model::FilteringLoad& existing : loads.sensors) {
     if (existing.sensor_id == load.sensor_id) {
       if (load.seconds_per_point > existing.seconds_per_point) existing = load;
       return;
@@ -116,11 +117,12 @@ void record_load(FilteringLoads& loads, const FilteringLoad& load) {
 }
 
 // Merged into what the file already holds, so loads measured on several rigs collect there.
-void write_loads(const std::string& path, const FilteringLoads& measured,
+void write_loads(const std::string& path, const model::FilteringLoads& measured,
                  const std::string& rig_file) {
   std::error_code error;
-  const FilteringLoads previous =
-      std::filesystem::is_regular_file(path, error) ? load_filtering_loads(path) : FilteringLoads{};
+  const model::FilteringLoads previous = std::filesystem::is_regular_file(path, error)
+                                             ? io::load_filtering_loads(path)
+                                             : model::FilteringLoads{};
   const std::string comment =
       "Measured filtering load per delivered point (paper 1, eq. 5: U_f = seconds_per_point x "
       "points/s),\n"
@@ -128,17 +130,18 @@ void write_loads(const std::string& path, const FilteringLoads& measured,
       rig_file +
       "). Catalogs read it through\n"
       "`filtering_loads:`; `rigdesign metrics --filtering-loads` prints U_f from it.";
-  write_file_atomically(
-      path, filtering_loads_to_yaml(merge_filtering_loads(previous, measured), comment));
+  io::write_file_atomically(
+      path, io::filtering_loads_to_yaml(io::merge_filtering_loads(previous, measured), comment));
 }
 
 // Every mount of the rig in a synthetic scene: its frames through the pipeline, and the
 // filtering load U_f = median time per frame x frame rate (paper 1, eq. 5).
-int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, std::ostream& out) {
+int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pipeline,
+                        std::ostream& out) {
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
   require_option(options.frames >= 1 && options.frames <= 10000, "--frames", "is out of range",
                  "1 to 10000");
-  const Scene scene = load_scene_option(options.scene, options.seed);
+  const model::Scene scene = load_scene_option(options.scene, options.seed);
   TextTable table;
   table.add_column("mount", TextTable::Align::left);
   for (const char* header :
@@ -150,20 +153,21 @@ int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, 
                            {"frames", options.frames},
                            {"mounts", nlohmann::json::array()}};
   double total_load = 0.0;
-  FilteringLoads measured{describe_machine(), pipeline.name, options.scene, options.frames, {}, {}};
+  model::FilteringLoads measured{
+      describe_machine(), pipeline.name, options.scene, options.frames, {}, {}};
   for (std::size_t i = 0; i < inputs.rig.mounts.size(); ++i) {
-    const Mount& mount = inputs.rig.mounts[i];
-    const SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    const std::vector<PointCloud> clouds =
-        simulate_mount(scene, mount, mode, i, options.frames, options.seed);
+    const model::Mount& mount = inputs.rig.mounts[i];
+    const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
+    const std::vector<model::PointCloud> clouds =
+        sim::simulate_mount(scene, mount, mode, i, options.frames, options.seed);
     std::vector<double> seconds;
     std::size_t points = 0, kept = 0;
-    for (const PointCloud& cloud : clouds) {
-      std::vector<StageRun> runs;
-      kept += run_pipeline(pipeline, cloud, &runs).size();
+    for (const model::PointCloud& cloud : clouds) {
+      std::vector<filters::StageRun> runs;
+      kept += filters::run_pipeline(pipeline, cloud, &runs).size();
       points += cloud.size();
       double total = 0.0;
-      for (const StageRun& run : runs) total += run.seconds;
+      for (const filters::StageRun& run : runs) total += run.seconds;
       seconds.push_back(total);
     }
     const double median = percentile(seconds, 0.5);
@@ -175,7 +179,7 @@ int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, 
     table.add_row({mount.id, std::to_string(points / clouds.size()),
                    std::to_string(kept / clouds.size()), fixed(median * 1e3, 2),
                    fixed(percentile(seconds, 0.95) * 1e3, 2), fixed(mode.frequency, 0),
-                   fixed(load, 3), format_number(per_point, 3)});
+                   fixed(load, 3), model::format_number(per_point, 3)});
     report["mounts"].push_back({{"mount", mount.id},
                                 {"points_per_frame", points / clouds.size()},
                                 {"median_s", median},
@@ -208,7 +212,7 @@ int run_filter_on_scene(const FilterOptions& options, const Pipeline& pipeline, 
 int run_filter(const FilterOptions& options, std::ostream& out) {
   require_option(options.repeat >= 1 && options.repeat <= 10000, "--repeat", "is out of range",
                  "1 to 10000 runs");
-  const Pipeline pipeline = pipeline_named(options.pipeline);
+  const model::Pipeline pipeline = pipeline_named(options.pipeline);
   if (!options.scene.empty()) {
     require_option(!options.rig.empty() && options.clouds.empty(), "--scene",
                    "needs --rig and no --cloud", "--rig RIG --scene NAME [--frames N]");
@@ -222,11 +226,11 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
   require_option(options.rig.empty() == options.mount.empty(), "--mount",
                  "needs --rig (and --rig needs --mount)", "--rig RIG --mount ID together");
   std::optional<RigInputs> rig;
-  const Mount* mount = nullptr;
-  const SensorMode* mode = nullptr;
+  const model::Mount* mount = nullptr;
+  const model::SensorMode* mode = nullptr;
   if (!options.rig.empty()) {
     rig = load_rig_inputs(options.rig, "", "");
-    for (const Mount& candidate : rig->rig.mounts) {
+    for (const model::Mount& candidate : rig->rig.mounts) {
       if (candidate.id == options.mount) mount = &candidate;
     }
     require_option(mount != nullptr, "--mount",
@@ -237,24 +241,24 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
   nlohmann::json report = {
       {"pipeline", pipeline.name}, {"runs", options.repeat}, {"clouds", nlohmann::json::array()}};
   for (const std::string& path : options.clouds) {
-    CloudReadReport read;
-    PointCloud cloud = read_cloud(path, &read);
+    io::CloudReadReport read;
+    model::PointCloud cloud = io::read_cloud(path, &read);
     if (cloud.empty()) {
-      throw InputError(
-          Diagnostic{{path, 0, 0}, "data", "has no finite point to filter", "a non-empty cloud"});
+      throw model::InputError(model::Diagnostic{
+          {path, 0, 0}, "data", "has no finite point to filter", "a non-empty cloud"});
     }
     if (mount != nullptr) {
-      const Pose3 T_robot_cloud = options.frame == "optical"
-                                      ? mount->T_robot_sensor * body_from_optical()
-                                      : mount->T_robot_sensor;
+      const model::Pose3 T_robot_cloud = options.frame == "optical"
+                                             ? mount->T_robot_sensor * body_from_optical()
+                                             : mount->T_robot_sensor;
       cloud = options.frame == "robot" ? cloud : to_robot_frame(cloud, T_robot_cloud);
     }
     std::vector<std::vector<double>> times(pipeline.stages.size());
-    std::vector<StageRun> first;
-    PointCloud result;
+    std::vector<filters::StageRun> first;
+    model::PointCloud result;
     for (int run = 0; run < options.repeat; ++run) {
-      std::vector<StageRun> runs;
-      result = run_pipeline(pipeline, cloud, &runs);
+      std::vector<filters::StageRun> runs;
+      result = filters::run_pipeline(pipeline, cloud, &runs);
       for (std::size_t s = 0; s < runs.size(); ++s) times[s].push_back(runs[s].seconds);
       if (run == 0) first = runs;
     }
@@ -311,7 +315,7 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
       std::filesystem::create_directories(options.out);
       const std::string written = options.out + "/" + std::filesystem::path(path).stem().string() +
                                   "_" + pipeline.name + ".pcd";
-      write_cloud(written, result, CloudEncoding::binary);
+      io::write_cloud(written, result, io::CloudEncoding::binary);
       item["output"] = written;
       if (!options.json) out << "  wrote " << written << '\n';
     }

@@ -16,10 +16,10 @@
 namespace rigdesign::cli {
 
 struct RigInputs {
-  Rig rig;
-  SensorLibrary library;
-  std::optional<Requirements> requirements;
-  std::vector<Diagnostic> warnings;
+  model::Rig rig;
+  model::SensorLibrary library;
+  std::optional<model::Requirements> requirements;
+  std::vector<model::Diagnostic> warnings;
 };
 
 /// `sensors_path` and `requirements_path` override what the rig file names when not empty.
@@ -29,12 +29,13 @@ RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensor
 
 /// The sensor library a catalog uses: `sensors_path` when not empty, else the catalog's own
 /// `sensor_library` (an error at that field when it does not exist), else the bundled one.
-SensorLibrary load_catalog_library(const Catalog& catalog, const std::string& sensors_path);
+model::SensorLibrary load_catalog_library(const model::Catalog& catalog,
+                                          const std::string& sensors_path);
 
 /// `--scene`: a bundled generator's name (office, corridor, ...; `seed` places its furniture)
 /// or a scene file (rigs/README.md, a YAML placing mesh files). Throws InputError naming
 /// `--scene` for an unknown name or a missing file, and the file's own findings.
-Scene load_scene_option(const std::string& scene, std::uint64_t seed);
+model::Scene load_scene_option(const std::string& scene, std::uint64_t seed);
 
 /// A short name for output folders: the generator's name, or the scene file's stem.
 std::string scene_label(const std::string& scene);

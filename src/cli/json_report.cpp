@@ -6,18 +6,18 @@ namespace rigdesign::cli {
 
 using nlohmann::json;
 
-json to_json(const Diagnostic& diagnostic) {
+json to_json(const model::Diagnostic& diagnostic) {
   return {{"file", diagnostic.where.file},
           {"line", diagnostic.where.line},
           {"column", diagnostic.where.column},
           {"field", diagnostic.field},
-          {"severity", diagnostic.severity == Severity::error ? "error" : "warning"},
+          {"severity", diagnostic.severity == model::Severity::error ? "error" : "warning"},
           {"problem", diagnostic.problem},
           {"expected", diagnostic.expected},
           {"message", diagnostic.message()}};
 }
 
-json to_json(const RequirementResult& result) {
+json to_json(const metrics::RequirementResult& result) {
   json item = {{"id", result.id},
                {"title", result.title},
                {"metric", result.metric},
@@ -36,19 +36,19 @@ json to_json(const RequirementResult& result) {
 
 namespace {
 
-json limiting_json(const Limiting& limiting, const char* unit) {
+json limiting_json(const metrics::Limiting& limiting, const char* unit) {
   return {{"value", limiting.value}, {"unit", unit}, {"limiting_mounts", limiting.mounts}};
 }
 
-json light_json(const LightImmunity& light) {
+json light_json(const model::LightImmunity& light) {
   return {{"dark", light.dark}, {"indoor", light.indoor}, {"sunlight", light.sunlight}};
 }
 
 }  // namespace
 
-json to_json(const RigInputs& inputs, const ResultantMetrics& metrics) {
+json to_json(const RigInputs& inputs, const metrics::ResultantMetrics& metrics) {
   json mounts = json::array();
-  for (const MountMetrics& mount : metrics.mounts) {
+  for (const metrics::MountMetrics& mount : metrics.mounts) {
     mounts.push_back({{"id", mount.mount_id},
                       {"sensor", mount.sensor_id},
                       {"mode", mount.mode_id},
@@ -66,7 +66,7 @@ json to_json(const RigInputs& inputs, const ResultantMetrics& metrics) {
                       {"price_basis", to_string(mount.price_basis)}});
   }
   json light = json::object();
-  for (const LightResult& result : metrics.light) {
+  for (const metrics::LightResult& result : metrics.light) {
     light[to_string(result.condition)] = {{"immune", result.immune},
                                           {"failing_mounts", result.failing_mounts}};
   }
@@ -89,14 +89,14 @@ json to_json(const RigInputs& inputs, const ResultantMetrics& metrics) {
         {"includes_estimates", metrics.any_estimate}}},
       {"reference_machine", inputs.library.reference_machine}};
   json warnings = json::array();
-  for (const Diagnostic& warning : inputs.warnings) warnings.push_back(to_json(warning));
+  for (const model::Diagnostic& warning : inputs.warnings) warnings.push_back(to_json(warning));
   report["warnings"] = warnings;
   return report;
 }
 
 namespace {
 
-json summary_json(const CoverageSummary& summary) {
+json summary_json(const metrics::CoverageSummary& summary) {
   return {{"min", summary.min},
           {"min_theta_deg", summary.min_theta * 180 / 3.141592653589793},
           {"mean", summary.mean},
@@ -105,9 +105,9 @@ json summary_json(const CoverageSummary& summary) {
 
 }  // namespace
 
-json to_json(const RigCoverage& coverage, bool curves) {
+json to_json(const metrics::RigCoverage& coverage, bool curves) {
   json sectors = json::array();
-  for (const SectorCoverage& sector : coverage.sectors) {
+  for (const metrics::SectorCoverage& sector : coverage.sectors) {
     sectors.push_back({{"name", sector.sector.name},
                        {"complete", summary_json(sector.complete)},
                        {"floor", summary_json(sector.floor)},
@@ -116,7 +116,7 @@ json to_json(const RigCoverage& coverage, bool curves) {
                        {"pass", sector.pass}});
   }
   json losses = json::array();
-  for (const MountLoss& loss : coverage.without_each) {
+  for (const metrics::MountLoss& loss : coverage.without_each) {
     losses.push_back({{"without", loss.mount_id},
                       {"complete", summary_json(loss.complete)},
                       {"floor", summary_json(loss.floor)}});
@@ -134,7 +134,7 @@ json to_json(const RigCoverage& coverage, bool curves) {
        {{"complete", coverage.raster_error_complete}, {"floor", coverage.raster_error_floor}}}};
   if (!curves) return report;
   json samples = json::array();
-  for (const AngleCoverage& angle : coverage.angles) {
+  for (const metrics::AngleCoverage& angle : coverage.angles) {
     json item = {{"theta_deg", angle.theta * 180 / 3.141592653589793},
                  {"r_m", angle.r},
                  {"complete", angle.complete},

@@ -11,10 +11,10 @@
 
 namespace rigdesign::cli {
 
-nlohmann::json to_json(const Diagnostic& diagnostic);
-nlohmann::json to_json(const RequirementResult& result);
-nlohmann::json to_json(const RigInputs& inputs, const ResultantMetrics& metrics);
+nlohmann::json to_json(const model::Diagnostic& diagnostic);
+nlohmann::json to_json(const metrics::RequirementResult& result);
+nlohmann::json to_json(const RigInputs& inputs, const metrics::ResultantMetrics& metrics);
 /// SC summaries, sectors and the N-1 table; with `curves`, every angle's values too.
-nlohmann::json to_json(const RigCoverage& coverage, bool curves);
+nlohmann::json to_json(const metrics::RigCoverage& coverage, bool curves);
 
 }  // namespace rigdesign::cli

@@ -38,25 +38,25 @@ struct LocalizeOptions {
   std::string method;  // empty: nls for one run, every method for --table
   std::string truth;
   std::string gas_truth;
-  LocalizeParams params;
-  ScenarioParams scenario_params;
-  KpiParams kpi;
-  GasDetectionParams gas;
+  localize::LocalizeParams params;
+  localize::ScenarioParams scenario_params;
+  localize::KpiParams kpi;
+  localize::GasDetectionParams gas;
   bool json = false;
   std::string out;
 };
 
-std::string xyz(const Vec3& p, int dimensions = 3) {
+std::string xyz(const model::Vec3& p, int dimensions = 3) {
   std::string text = "(" + fixed(p.x(), 2) + ", " + fixed(p.y(), 2);
   if (dimensions == 3) text += ", " + fixed(p.z(), 2);
   return text + ")";
 }
 
-nlohmann::json to_json(const Vec3& p) {
+nlohmann::json to_json(const model::Vec3& p) {
   return {p.x(), p.y(), p.z()};
 }
 
-nlohmann::json to_json(const Hypothesis& h) {
+nlohmann::json to_json(const localize::Hypothesis& h) {
   nlohmann::json covariance = nlohmann::json::array();
   for (int r = 0; r < 3; ++r)
     covariance.push_back({h.covariance(r, 0), h.covariance(r, 1), h.covariance(r, 2)});
@@ -67,40 +67,45 @@ nlohmann::json to_json(const Hypothesis& h) {
           {"cost", h.cost}};
 }
 
-void add_plot_markers(const EmitterEstimate& estimate, const std::optional<Vec3>& truth,
-                      LocalizePlot* plot) {
+void add_plot_markers(const localize::EmitterEstimate& estimate,
+                      const std::optional<model::Vec3>& truth, render::LocalizePlot* plot) {
   for (std::size_t i = 0; i < estimate.hypotheses.size(); ++i) {
-    const Hypothesis& h = estimate.hypotheses[i];
-    plot->markers.push_back({h.position, h.covariance.topLeftCorner<2, 2>(),
-                             to_string(estimate.method) + (i == 0 ? "" : " twin"),
-                             i == 0 ? PlotMarkerKind::estimate : PlotMarkerKind::alternative});
+    const localize::Hypothesis& h = estimate.hypotheses[i];
+    plot->markers.push_back(
+        {h.position, h.covariance.topLeftCorner<2, 2>(),
+         to_string(estimate.method) + (i == 0 ? "" : " twin"),
+         i == 0 ? render::PlotMarkerKind::estimate : render::PlotMarkerKind::alternative});
   }
   const bool drawn =
-      std::any_of(plot->markers.begin(), plot->markers.end(), [&](const PlotMarker& m) {
-        return m.kind == PlotMarkerKind::truth && truth && m.position == *truth;
+      std::any_of(plot->markers.begin(), plot->markers.end(), [&](const render::PlotMarker& m) {
+        return m.kind == render::PlotMarkerKind::truth && truth && m.position == *truth;
       });
   if (truth && !drawn)
     plot->markers.push_back(
-        {*truth, Eigen::Matrix2d::Zero(), estimate.bssid, PlotMarkerKind::truth});
+        {*truth, Eigen::Matrix2d::Zero(), estimate.bssid, render::PlotMarkerKind::truth});
 }
 
-void write_plots(const std::string& folder, const std::string& stem, const LocalizePlot& plot,
-                 nlohmann::json* report, std::ostream& out, bool json) {
+void write_plots(const std::string& folder, const std::string& stem,
+                 const render::LocalizePlot& plot, nlohmann::json* report, std::ostream& out,
+                 bool json) {
   std::filesystem::create_directories(folder);
   for (const char* extension : {".png", ".svg"}) {
     const std::string file = folder + "/" + stem + extension;
-    plot_localization(plot, file);
+    render::plot_localization(plot, file);
     (*report)["plots"].push_back(file);
     if (!json) out << "  wrote " << file << '\n';
   }
 }
 
 // One emitter: estimate, uncertainty, degeneracy, and KPIs when the truth is known.
-nlohmann::json report_emitter(const RssiLog& log, int emitter, LocalizeMethod method,
-                              const std::optional<Vec3>& truth, const LocalizeOptions& options,
-                              LocalizePlot* plot, std::ostream& out) {
-  const EmitterEstimate estimate = localize_emitter(log, emitter, method, options.params);
-  const GeometryAnalysis& g = estimate.geometry;
+nlohmann::json report_emitter(const localize::RssiLog& log, int emitter,
+                              localize::LocalizeMethod method,
+                              const std::optional<model::Vec3>& truth,
+                              const LocalizeOptions& options, render::LocalizePlot* plot,
+                              std::ostream& out) {
+  const localize::EmitterEstimate estimate =
+      localize::localize_emitter(log, emitter, method, options.params);
+  const localize::GeometryAnalysis& g = estimate.geometry;
   nlohmann::json item = {{"bssid", estimate.bssid},
                          {"method", to_string(method)},
                          {"readings", estimate.readings},
@@ -114,13 +119,14 @@ nlohmann::json report_emitter(const RssiLog& log, int emitter, LocalizeMethod me
                            {"height_spread_m", g.height_spread}}},
                          {"twin", estimate.twin},
                          {"hypotheses", nlohmann::json::array()}};
-  for (const Hypothesis& h : estimate.hypotheses) item["hypotheses"].push_back(to_json(h));
-  if (method == LocalizeMethod::nls) item["residual_sigma_db"] = estimate.sigma_db;
+  for (const localize::Hypothesis& h : estimate.hypotheses)
+    item["hypotheses"].push_back(to_json(h));
+  if (method == localize::LocalizeMethod::nls) item["residual_sigma_db"] = estimate.sigma_db;
   if (!options.json) {
     out << "emitter " << estimate.bssid << " (" << to_string(method) << "): " << estimate.readings
         << " readings, " << estimate.used << " at or above "
-        << format_number(options.params.path_loss.cutoff_dbm) << " dBm, " << estimate.chunks.size()
-        << " chunks\n";
+        << model::format_number(options.params.path_loss.cutoff_dbm) << " dBm, "
+        << estimate.chunks.size() << " chunks\n";
     out << "  geometry: "
         << (g.dimensions == 3
                 ? "3D"
@@ -131,7 +137,7 @@ nlohmann::json report_emitter(const RssiLog& log, int emitter, LocalizeMethod me
         << '\n';
     if (estimate.hypotheses.empty()) out << "  no estimate: too few chunks or a singular system\n";
     for (std::size_t i = 0; i < estimate.hypotheses.size(); ++i) {
-      const Hypothesis& h = estimate.hypotheses[i];
+      const localize::Hypothesis& h = estimate.hypotheses[i];
       out << "  " << (i == 0 ? "estimate" : "twin    ") << ' ' << xyz(h.position, g.dimensions)
           << " m, sigma x " << fixed(std::sqrt(h.covariance(0, 0)), 2) << " y "
           << fixed(std::sqrt(h.covariance(1, 1)), 2)
@@ -140,8 +146,8 @@ nlohmann::json report_emitter(const RssiLog& log, int emitter, LocalizeMethod me
     }
   }
   if (truth) {
-    const EmitterKpis k =
-        evaluate_emitter(log, emitter, *truth, estimate, options.params, options.kpi);
+    const localize::EmitterKpis k =
+        localize::evaluate_emitter(log, emitter, *truth, estimate, options.params, options.kpi);
     item["truth"] = to_json(*truth);
     item["kpis"] = {{"error_m", k.final_error},
                     {"nearest_hypothesis_error_m", k.nearest_hypothesis_error},
@@ -157,7 +163,7 @@ nlohmann::json report_emitter(const RssiLog& log, int emitter, LocalizeMethod me
           << " m); running estimate smallest " << fixed(k.running.smallest, 2) << ", mean "
           << fixed(k.running.mean, 2) << ", RMS " << fixed(k.running.rms, 2) << " m; C = "
           << (k.data_amount ? std::to_string(*k.data_amount) + " readings" : std::string("never"))
-          << " (within " << format_number(options.kpi.acceptable_error) << " m); "
+          << " (within " << model::format_number(options.kpi.acceptable_error) << " m); "
           << (k.detected ? "detected" : "not detected") << '\n';
     }
   }
@@ -165,21 +171,22 @@ nlohmann::json report_emitter(const RssiLog& log, int emitter, LocalizeMethod me
   return item;
 }
 
-std::vector<LocalizeMethod> methods_of(const LocalizeOptions& options) {
-  if (options.method.empty() && !options.table) return {LocalizeMethod::nls};
-  const auto method = parse_localize_method(options.method);
+std::vector<localize::LocalizeMethod> methods_of(const LocalizeOptions& options) {
+  if (options.method.empty() && !options.table) return {localize::LocalizeMethod::nls};
+  const auto method = localize::parse_localize_method(options.method);
   require_option(method.has_value() || options.method == "all" || options.method.empty(),
                  "--method", "unknown method '" + options.method + "'", "wls, nls, map (or all)");
   if (method) return {*method};
-  return {LocalizeMethod::wls, LocalizeMethod::nls, LocalizeMethod::map};
+  return {localize::LocalizeMethod::wls, localize::LocalizeMethod::nls,
+          localize::LocalizeMethod::map};
 }
 
 int run_table(const LocalizeOptions& options, std::ostream& out) {
   require_option(options.seeds >= 1 && options.seeds <= 10000, "--seeds", "is out of range",
                  "1 to 10000");
   std::vector<std::string> scenarios = {options.scenario};
-  if (options.scenario == "all") scenarios = scenario_names();
-  const std::vector<LocalizeMethod> methods = methods_of(options);
+  if (options.scenario == "all") scenarios = localize::scenario_names();
+  const std::vector<localize::LocalizeMethod> methods = methods_of(options);
   TextTable table;
   table.add_column("scenario", TextTable::Align::left);
   table.add_column("method", TextTable::Align::left);
@@ -193,8 +200,9 @@ int run_table(const LocalizeOptions& options, std::ostream& out) {
                            {"tx_offset_db", options.scenario_params.tx_offset_db},
                            {"rows", nlohmann::json::array()}};
   for (const std::string& scenario : scenarios) {
-    for (const AccuracyRow& row : accuracy_table(scenario, options.seeds, options.scenario_params,
-                                                 methods, options.params, options.kpi)) {
+    for (const localize::AccuracyRow& row :
+         localize::accuracy_table(scenario, options.seeds, options.scenario_params, methods,
+                                  options.params, options.kpi)) {
       table.add_row({row.scenario, to_string(row.method), std::to_string(row.runs),
                      fixed(row.final_error.mean, 2), fixed(row.final_error.median, 2),
                      fixed(row.final_error.rms, 2), fixed(row.nearest_error.mean, 2),
@@ -221,42 +229,45 @@ int run_table(const LocalizeOptions& options, std::ostream& out) {
     return kOk;
   }
   out << "accuracy over seeds 1.." << options.seeds << ", shadowing "
-      << format_number(options.scenario_params.shadowing_db) << " dB, phone level offset "
-      << format_number(options.scenario_params.tx_offset_db) << " dB; errors of the best "
+      << model::format_number(options.scenario_params.shadowing_db) << " dB, phone level offset "
+      << model::format_number(options.scenario_params.tx_offset_db) << " dB; errors of the best "
       << "hypothesis (nearest: of the hypothesis nearest the truth); C in readings to reach "
-      << format_number(options.kpi.acceptable_error) << " m\n";
+      << model::format_number(options.kpi.acceptable_error) << " m\n";
   table.print(out, "  ");
   return kOk;
 }
 
-nlohmann::json report_gas(const Co2Log& log, const LocalizeOptions& options, LocalizePlot* plot,
-                          std::ostream& out) {
-  std::vector<Artifact> artifacts;
-  if (!options.gas_truth.empty()) artifacts = read_artifacts(options.gas_truth);
+nlohmann::json report_gas(const localize::Co2Log& log, const LocalizeOptions& options,
+                          render::LocalizePlot* plot, std::ostream& out) {
+  std::vector<localize::Artifact> artifacts;
+  if (!options.gas_truth.empty()) artifacts = io::read_artifacts(options.gas_truth);
   nlohmann::json report = {{"file", log.source},
                            {"readings", log.readings.size()},
                            {"timed", log.timed},
-                           {"lag_s", detection_lag(log, options.gas)},
+                           {"lag_s", localize::detection_lag(log, options.gas)},
                            {"modes", nlohmann::json::array()}};
   if (!options.json) {
     out << log.source << ": " << log.readings.size() << " CO2 readings"
         << (log.timed ? ""
-                      : " (untimed: " + format_number(options.gas.sample_period) +
+                      : " (untimed: " + model::format_number(options.gas.sample_period) +
                             " s per reading assumed)")
-        << ", lag correction " << fixed(detection_lag(log, options.gas), 1) << " s\n";
+        << ", lag correction " << fixed(localize::detection_lag(log, options.gas), 1) << " s\n";
   }
-  for (const GasThreshold mode : {GasThreshold::fixed, GasThreshold::relative}) {
+  for (const localize::GasThreshold mode :
+       {localize::GasThreshold::fixed, localize::GasThreshold::relative}) {
     const std::string name =
-        mode == GasThreshold::fixed
-            ? "fixed " + format_number(options.gas.fixed_threshold_ppm) + " ppm"
-            : "relative (median + " + format_number(options.gas.mad_factor) +
-                  " MAD, >= " + format_number(options.gas.min_rise_ppm) + " ppm rise)";
-    const std::vector<GasDetection> detections = detect_gas(log, mode, options.gas);
-    nlohmann::json item = {{"threshold", mode == GasThreshold::fixed ? "fixed" : "relative"},
-                           {"detections", nlohmann::json::array()}};
+        mode == localize::GasThreshold::fixed
+            ? "fixed " + model::format_number(options.gas.fixed_threshold_ppm) + " ppm"
+            : "relative (median + " + model::format_number(options.gas.mad_factor) +
+                  " MAD, >= " + model::format_number(options.gas.min_rise_ppm) + " ppm rise)";
+    const std::vector<localize::GasDetection> detections =
+        localize::detect_gas(log, mode, options.gas);
+    nlohmann::json item = {
+        {"threshold", mode == localize::GasThreshold::fixed ? "fixed" : "relative"},
+        {"detections", nlohmann::json::array()}};
     if (!options.json)
       out << "  threshold " << name << ": " << detections.size() << " detection(s)\n";
-    for (const GasDetection& d : detections) {
+    for (const localize::GasDetection& d : detections) {
       item["detections"].push_back({{"index", d.index},
                                     {"trigger_index", d.trigger_index},
                                     {"position", to_json(d.position)},
@@ -268,16 +279,16 @@ nlohmann::json report_gas(const Co2Log& log, const LocalizeOptions& options, Loc
             << " ppm (threshold " << fixed(d.threshold_ppm, 0) << "), lag-corrected "
             << xyz(d.lag_corrected, 2) << '\n';
       }
-      if (plot && mode == GasThreshold::relative) {
+      if (plot && mode == localize::GasThreshold::relative) {
         plot->markers.push_back(
-            {d.position, Eigen::Matrix2d::Zero(), "", PlotMarkerKind::detection});
+            {d.position, Eigen::Matrix2d::Zero(), "", render::PlotMarkerKind::detection});
         plot->markers.push_back(
-            {d.lag_corrected, Eigen::Matrix2d::Zero(), "", PlotMarkerKind::lag_corrected});
+            {d.lag_corrected, Eigen::Matrix2d::Zero(), "", render::PlotMarkerKind::lag_corrected});
       }
     }
     for (const bool lagged : {false, true}) {
       if (artifacts.empty()) break;
-      const GasScore score = score_gas(log, detections, artifacts, lagged);
+      const localize::GasScore score = localize::score_gas(log, detections, artifacts, lagged);
       nlohmann::json scored = {{"true_detections", score.true_detections},
                                {"false_detections", score.false_detections},
                                {"artifacts", nlohmann::json::array()}};
@@ -285,7 +296,7 @@ nlohmann::json report_gas(const Co2Log& log, const LocalizeOptions& options, Loc
         out << "    " << (lagged ? "lag-corrected" : "as detected") << ": " << score.true_detections
             << " within 5 m of a gas artifact, " << score.false_detections << " not;";
       }
-      for (const GasArtifactResult& a : score.artifacts) {
+      for (const localize::GasArtifactResult& a : score.artifacts) {
         scored["artifacts"].push_back(
             {{"id", a.artifact.id},
              {"position", to_json(a.artifact.position)},
@@ -308,19 +319,19 @@ nlohmann::json report_gas(const Co2Log& log, const LocalizeOptions& options, Loc
     report["modes"].push_back(item);
   }
   if (plot) {
-    for (const Artifact& a : artifacts) {
+    for (const localize::Artifact& a : artifacts) {
       if (a.type == "gas")
         plot->markers.push_back({a.position, Eigen::Matrix2d::Zero(), "gas " + std::to_string(a.id),
-                                 PlotMarkerKind::artifact});
+                                 render::PlotMarkerKind::artifact});
     }
   }
   return report;
 }
 
 int run_scenario(const LocalizeOptions& options, std::ostream& out) {
-  ScenarioParams params = options.scenario_params;
+  localize::ScenarioParams params = options.scenario_params;
   params.seed = options.seed;
-  const Scenario scenario = make_scenario(options.scenario, params);
+  const localize::Scenario scenario = localize::make_scenario(options.scenario, params);
   nlohmann::json report = {
       {"scenario", scenario.name},           {"seed", options.seed},
       {"description", scenario.description}, {"readings", scenario.log.readings.size()},
@@ -329,24 +340,25 @@ int run_scenario(const LocalizeOptions& options, std::ostream& out) {
     out << "scenario " << scenario.name << ", seed " << options.seed << ": " << scenario.description
         << "; " << scenario.log.readings.size() << " readings\n";
   }
-  LocalizePlot plot;
+  render::LocalizePlot plot;
   plot.title = "localize: scenario " + scenario.name + ", seed " + std::to_string(options.seed);
   plot.value_label = "RSSI [dBm]";
-  for (const RssiReading& r : scenario.log.readings) {
+  for (const localize::RssiReading& r : scenario.log.readings) {
     plot.path.push_back(r.position);
     plot.values.push_back(r.rssi_dbm);
   }
-  for (const WallSegment& wall : scenario.walls) plot.walls.emplace_back(wall.a, wall.b);
-  for (const LocalizeMethod method : methods_of(options)) {
+  for (const localize::WallSegment& wall : scenario.walls) plot.walls.emplace_back(wall.a, wall.b);
+  for (const localize::LocalizeMethod method : methods_of(options)) {
     report["emitters"].push_back(report_emitter(
         scenario.log, 0, method, scenario.truth.front().position, options, &plot, out));
   }
   if (!options.out.empty()) {
     const std::string stem = scenario.name + "_seed" + std::to_string(options.seed);
     std::filesystem::create_directories(options.out);
-    write_file_atomically(options.out + "/" + stem + "_rssi.csv", to_rssi_csv(scenario.log));
-    write_file_atomically(options.out + "/" + stem + "_truth.csv",
-                          to_emitter_truth_csv(scenario.truth));
+    io::write_file_atomically(options.out + "/" + stem + "_rssi.csv",
+                              io::to_rssi_csv(scenario.log));
+    io::write_file_atomically(options.out + "/" + stem + "_truth.csv",
+                              io::to_emitter_truth_csv(scenario.truth));
     if (!options.json) out << "  wrote " << options.out + "/" + stem + "_rssi.csv and _truth.csv\n";
     write_plots(options.out, stem, plot, &report, out, options.json);
   }
@@ -355,29 +367,29 @@ int run_scenario(const LocalizeOptions& options, std::ostream& out) {
 }
 
 int run_logs(const LocalizeOptions& options, std::ostream& out) {
-  std::vector<EmitterTruth> truth;
-  if (!options.truth.empty()) truth = read_emitter_truth(options.truth);
-  const std::vector<LocalizeMethod> methods = methods_of(options);
+  std::vector<localize::EmitterTruth> truth;
+  if (!options.truth.empty()) truth = io::read_emitter_truth(options.truth);
+  const std::vector<localize::LocalizeMethod> methods = methods_of(options);
   nlohmann::json report = {{"logs", nlohmann::json::array()}, {"plots", nlohmann::json::array()}};
   for (const std::string& path : options.logs) {
-    const std::string text = read_log_text(path);
-    LocalizePlot plot;
+    const std::string text = io::read_log_text(path);
+    render::LocalizePlot plot;
     plot.title = "localize: " + std::filesystem::path(path).filename().string();
     nlohmann::json item;
-    if (log_kind_of(text, path) == LogKind::co2) {
-      const Co2Log log = parse_co2_log(text, path);
+    if (io::log_kind_of(text, path) == io::LogKind::co2) {
+      const localize::Co2Log log = io::parse_co2_log(text, path);
       plot.value_label = "CO2 [ppm]";
-      for (const Co2Reading& r : log.readings) {
+      for (const localize::Co2Reading& r : log.readings) {
         plot.path.push_back(r.position);
         plot.values.push_back(r.ppm);
       }
       item = report_gas(log, options, &plot, out);
     } else {
-      const RssiLog log = parse_rssi_csv(text, path);
+      const localize::RssiLog log = io::parse_rssi_csv(text, path);
       plot.value_label = "RSSI [dBm]";
       item = {
           {"file", path}, {"readings", log.readings.size()}, {"emitters", nlohmann::json::array()}};
-      for (const RssiReading& r : log.readings) {
+      for (const localize::RssiReading& r : log.readings) {
         plot.path.push_back(r.position);
         plot.values.push_back(r.rssi_dbm);
       }
@@ -385,11 +397,11 @@ int run_logs(const LocalizeOptions& options, std::ostream& out) {
         out << path << ": " << log.readings.size() << " readings of " << log.emitters.size()
             << " emitter(s)\n";
       for (std::size_t e = 0; e < log.emitters.size(); ++e) {
-        std::optional<Vec3> known;
-        for (const EmitterTruth& t : truth) {
+        std::optional<model::Vec3> known;
+        for (const localize::EmitterTruth& t : truth) {
           if (t.bssid == log.emitters[e]) known = t.position;
         }
-        for (const LocalizeMethod method : methods) {
+        for (const localize::LocalizeMethod method : methods) {
           item["emitters"].push_back(
               report_emitter(log, static_cast<int>(e), method, known, options, &plot, out));
         }
@@ -412,7 +424,7 @@ int run_localize(const LocalizeOptions& options, std::ostream& out) {
                  "a path-loss exponent, e.g. 2.5");
   if (!options.scenario.empty()) {
     if (options.scenario != "all")
-      make_scenario(options.scenario, {});  // unknown names fail here, exit 2
+      localize::make_scenario(options.scenario, {});  // unknown names fail here, exit 2
     if (options.table) return run_table(options, out);
     require_option(options.scenario != "all", "--scenario", "'all' needs --table",
                    "a scenario name");

@@ -36,11 +36,11 @@ struct FilteringLoadRow {
   std::optional<double> cores;  // unset: the sensor was not measured
 };
 
-std::vector<FilteringLoadRow> filtering_load_rows(const ResultantMetrics& metrics,
-                                                  const FilteringLoads& loads) {
+std::vector<FilteringLoadRow> filtering_load_rows(const metrics::ResultantMetrics& metrics,
+                                                  const model::FilteringLoads& loads) {
   std::vector<FilteringLoadRow> rows;
-  for (const MountMetrics& mount : metrics.mounts) {
-    const FilteringLoad* load = loads.find(mount.sensor_id);
+  for (const metrics::MountMetrics& mount : metrics.mounts) {
+    const model::FilteringLoad* load = loads.find(mount.sensor_id);
     rows.push_back({mount.mount_id,
                     load ? std::optional<double>(load->seconds_per_point * mount.points_per_second)
                          : std::nullopt});
@@ -54,8 +54,9 @@ double total_cores(const std::vector<FilteringLoadRow>& rows) {
   return total;
 }
 
-void print_filtering_load(const FilteringLoads& loads, const std::vector<FilteringLoadRow>& rows,
-                          double driver_cpu, std::ostream& out) {
+void print_filtering_load(const model::FilteringLoads& loads,
+                          const std::vector<FilteringLoadRow>& rows, double driver_cpu,
+                          std::ostream& out) {
   std::vector<std::string> parts, missing;
   for (const FilteringLoadRow& row : rows) {
     if (row.cores)
@@ -63,10 +64,10 @@ void print_filtering_load(const FilteringLoads& loads, const std::vector<Filteri
     else
       missing.push_back(row.mount_id);
   }
-  out << "  U_f = " << fixed(total_cores(rows), 3) << " core-equivalents (" << join(parts)
+  out << "  U_f = " << fixed(total_cores(rows), 3) << " core-equivalents (" << model::join(parts)
       << "), measured with " << loads.pipeline << " on " << loads.machine << " (" << loads.file
       << ")\n";
-  if (!missing.empty()) out << "        not measured: " << join(missing) << '\n';
+  if (!missing.empty()) out << "        not measured: " << model::join(missing) << '\n';
   out << "  U   = U_p + U_f = " << fixed(driver_cpu + total_cores(rows), 2)
       << " core-equivalents\n";
 }
@@ -75,11 +76,11 @@ std::string yes_no(bool value) {
   return value ? "yes" : "no";
 }
 
-std::string marked(double value, int decimals, Basis basis) {
-  return fixed(value, decimals) + (basis == Basis::estimate ? "*" : "");
+std::string marked(double value, int decimals, model::Basis basis) {
+  return fixed(value, decimals) + (basis == model::Basis::estimate ? "*" : "");
 }
 
-void print_mount_table(const ResultantMetrics& metrics, std::ostream& out) {
+void print_mount_table(const metrics::ResultantMetrics& metrics, std::ostream& out) {
   using Align = TextTable::Align;
   TextTable table;
   for (const char* header : {"mount", "sensor / mode"}) table.add_column(header, Align::left);
@@ -90,7 +91,7 @@ void print_mount_table(const ResultantMetrics& metrics, std::ostream& out) {
   for (const char* header : {"B [MB/s]", "U_p [cores]", "price [USD]"}) {
     table.add_column(header, Align::right);
   }
-  for (const MountMetrics& mount : metrics.mounts) {
+  for (const metrics::MountMetrics& mount : metrics.mounts) {
     table.add_row(
         {mount.mount_id, mount.sensor_id + " / " + mount.mode_id,
          fixed(mount.distance, 2) + (mount.distance_in_range ? "" : "!"), fixed(mount.frequency, 1),
@@ -102,20 +103,20 @@ void print_mount_table(const ResultantMetrics& metrics, std::ostream& out) {
   table.print(out, "  ");
 }
 
-void print_light(const ResultantMetrics& metrics, const std::optional<Requirements>& requirements,
-                 std::ostream& out) {
+void print_light(const metrics::ResultantMetrics& metrics,
+                 const std::optional<model::Requirements>& requirements, std::ostream& out) {
   if (requirements && !requirements->lighting.empty()) {
     bool all = true;
     std::vector<std::string> names;
-    for (LightCondition condition : requirements->lighting) {
+    for (model::LightCondition condition : requirements->lighting) {
       all = all && metrics.light_for(condition).immune;
       names.push_back(to_string(condition));
     }
-    out << "  L = " << (all ? "true" : "false") << "  (required: " << join(names) << ")\n";
+    out << "  L = " << (all ? "true" : "false") << "  (required: " << model::join(names) << ")\n";
   }
-  for (const LightResult& light : metrics.light) {
+  for (const metrics::LightResult& light : metrics.light) {
     out << "      " << to_string(light.condition) << ": "
-        << (light.immune ? "every sensor works" : "fails for " + join(light.failing_mounts))
+        << (light.immune ? "every sensor works" : "fails for " + model::join(light.failing_mounts))
         << '\n';
   }
 }
@@ -124,16 +125,16 @@ std::string percent(double share) {
   return fixed(share * 100, 1) + " %";
 }
 
-std::string summary_line(const CoverageSummary& summary) {
-  return "min " + percent(summary.min) + " (at " + fixed(rad_to_deg(summary.min_theta), 0) +
+std::string summary_line(const metrics::CoverageSummary& summary) {
+  return "min " + percent(summary.min) + " (at " + fixed(model::rad_to_deg(summary.min_theta), 0) +
          " deg), mean " + percent(summary.mean) + ", 100 % at " + percent(summary.full_share) +
          " of angles";
 }
 
-void print_coverage(const RigCoverage& coverage, std::ostream& out) {
+void print_coverage(const metrics::RigCoverage& coverage, std::ostream& out) {
   out << "\nSpatial coverage (paper 1, section 2.3): rho in [r, "
-      << format_number(coverage.distance) << "] m, z in [0, " << format_number(coverage.height)
-      << "] m, " << coverage.angles.size() << " angles, "
+      << model::format_number(coverage.distance) << "] m, z in [0, "
+      << model::format_number(coverage.height) << "] m, " << coverage.angles.size() << " angles, "
       << (coverage.exact ? "exact path (CGAL polygons)" : "raster path") << "\n";
   out << "  SC complete: " << summary_line(coverage.complete) << '\n';
   out << "  SC floor:    " << summary_line(coverage.floor) << '\n';
@@ -145,7 +146,7 @@ void print_coverage(const RigCoverage& coverage, std::ostream& out) {
   }
   table.add_row({"(all sensors)", percent(coverage.complete.min), percent(coverage.complete.mean),
                  percent(coverage.floor.min), percent(coverage.floor.mean)});
-  for (const MountLoss& loss : coverage.without_each) {
+  for (const metrics::MountLoss& loss : coverage.without_each) {
     table.add_row({loss.mount_id, percent(loss.complete.min), percent(loss.complete.mean),
                    percent(loss.floor.min), percent(loss.floor.mean)});
   }
@@ -153,23 +154,25 @@ void print_coverage(const RigCoverage& coverage, std::ostream& out) {
   table.print(out, "    ");
 }
 
-void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
-                const RigCoverage& coverage, const std::vector<RequirementResult>& results,
-                const std::optional<FilteringLoads>& loads, std::ostream& out) {
-  const Rig& rig = inputs.rig;
+void print_text(const RigInputs& inputs, const metrics::ResultantMetrics& metrics,
+                const metrics::RigCoverage& coverage,
+                const std::vector<metrics::RequirementResult>& results,
+                const std::optional<model::FilteringLoads>& loads, std::ostream& out) {
+  const model::Rig& rig = inputs.rig;
   out << "Rig: " << rig.name << "  (" << rig.file << ", sensors from " << inputs.library.file
       << ")\n";
-  out << "Body r = " << format_number(rig.body.radius)
-      << " m, h = " << format_number(rig.body.height)
-      << " m; distance of interest d = " << format_number(rig.distance_of_interest) << " m\n\n";
+  out << "Body r = " << model::format_number(rig.body.radius)
+      << " m, h = " << model::format_number(rig.body.height)
+      << " m; distance of interest d = " << model::format_number(rig.distance_of_interest)
+      << " m\n\n";
   print_mount_table(metrics, out);
   out << "\nResultant metrics (paper 1, section 2.3)\n";
-  out << "  F = " << format_number(metrics.frequency.value, 4)
-      << " Hz      slowest: " << join(metrics.frequency.mounts) << '\n';
+  out << "  F = " << model::format_number(metrics.frequency.value, 4)
+      << " Hz      slowest: " << model::join(metrics.frequency.mounts) << '\n';
   out << "  R = " << fixed(metrics.point_spacing.value * 1000, 1)
-      << " mm   coarsest: " << join(metrics.point_spacing.mounts) << '\n';
+      << " mm   coarsest: " << model::join(metrics.point_spacing.mounts) << '\n';
   out << "  N = " << fixed(metrics.noise.value * 1000, 1)
-      << " mm    noisiest: " << join(metrics.noise.mounts) << '\n';
+      << " mm    noisiest: " << model::join(metrics.noise.mounts) << '\n';
   print_light(metrics, inputs.requirements, out);
   out << "\nCost model inputs (paper 1, eqs. 1-7)\n";
   out << "  B   = " << fixed(metrics.bandwidth / 1e6, 2) << " MB/s ("
@@ -181,7 +184,7 @@ void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
   out << "  C_s = " << fixed(metrics.sensor_cost, 0) << " USD\n";
   if (metrics.any_estimate) out << "  * estimate, not a datasheet or measured value\n";
   print_coverage(coverage, out);
-  for (const Diagnostic& warning : inputs.warnings) out << warning.message() << '\n';
+  for (const model::Diagnostic& warning : inputs.warnings) out << warning.message() << '\n';
   if (results.empty()) return;
   out << "\nRequirements (" << inputs.requirements->file << ")\n";
   using Align = TextTable::Align;
@@ -190,13 +193,13 @@ void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
   table.add_column("title", Align::left);
   table.add_column("verdict", Align::left);
   table.add_column("how", Align::left);
-  for (const RequirementResult& result : results) {
+  for (const metrics::RequirementResult& result : results) {
     std::string how = result.explanation;
     if (result.actual) {
       const bool in_mm = result.unit == "m" && (result.metric == "R" || result.metric == "N");
       how = result.metric + " = " +
             (in_mm ? fixed(*result.actual * 1000, 1) + " mm"
-                   : format_number(*result.actual, 4) + " " + result.unit) +
+                   : model::format_number(*result.actual, 4) + " " + result.unit) +
             "; " + how;
     }
     table.add_row({result.id, result.title, to_string(result.verdict), how});
@@ -206,16 +209,17 @@ void print_text(const RigInputs& inputs, const ResultantMetrics& metrics,
 
 int run_metrics(const MetricsOptions& options, std::ostream& out) {
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
-  const ResultantMetrics metrics = compute_resultant(inputs.rig, inputs.library);
-  const std::vector<SectorRequirement> sectors =
-      inputs.requirements ? inputs.requirements->sectors : std::vector<SectorRequirement>{};
-  const RigCoverage coverage = compute_coverage(inputs.rig, inputs.library, sectors);
-  std::vector<RequirementResult> results;
+  const metrics::ResultantMetrics metrics = metrics::compute_resultant(inputs.rig, inputs.library);
+  const std::vector<model::SectorRequirement> sectors =
+      inputs.requirements ? inputs.requirements->sectors : std::vector<model::SectorRequirement>{};
+  const metrics::RigCoverage coverage =
+      metrics::compute_coverage(inputs.rig, inputs.library, sectors);
+  std::vector<metrics::RequirementResult> results;
   if (inputs.requirements) {
-    results = evaluate_requirements(inputs.rig, metrics, *inputs.requirements, &coverage);
+    results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements, &coverage);
   }
-  std::optional<FilteringLoads> loads;
-  if (!options.filtering_loads.empty()) loads = load_filtering_loads(options.filtering_loads);
+  std::optional<model::FilteringLoads> loads;
+  if (!options.filtering_loads.empty()) loads = io::load_filtering_loads(options.filtering_loads);
   if (options.json) {
     nlohmann::json report = to_json(inputs, metrics);
     if (loads) {
@@ -232,7 +236,7 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
     report["coverage"] = to_json(coverage, false);
     if (inputs.requirements) {
       nlohmann::json list = nlohmann::json::array();
-      for (const RequirementResult& result : results) list.push_back(to_json(result));
+      for (const metrics::RequirementResult& result : results) list.push_back(to_json(result));
       report["requirements"] = {{"file", inputs.requirements->file}, {"results", list}};
     }
     out << report.dump(2) << '\n';

@@ -19,6 +19,7 @@
 #include "rigdesign/occupancy/occupancy_evaluation.hpp"
 #include "rigdesign/occupancy/occupancy_sweep.hpp"
 #include "rigdesign/render/occupancy_pareto.hpp"
+#include "rigdesign/sim/scene_library.hpp"
 #include "text_table.hpp"
 
 namespace rigdesign::cli {
@@ -30,7 +31,7 @@ struct OccupancyOptions {
   double rate = 5.0;
   double duration = 96.0;
   double moving_until = 48.0;
-  std::vector<double> voxels = default_sweep_voxels();
+  std::vector<double> voxels = occupancy::default_sweep_voxels();
   std::string persistence = "sweep";
   int camera_stride = 1;
   std::uint64_t seed = 1;
@@ -41,13 +42,14 @@ struct OccupancyOptions {
   bool json = false;
 };
 
-std::vector<PersistenceSetting> persistence_named(const std::string& name) {
-  if (name == "none") return {PersistenceSetting{}};
-  if (name == "paper") return {PersistenceSetting{}, PersistenceSetting{true, 3, 1500}};
-  return default_sweep_persistence();
+std::vector<occupancy::PersistenceSetting> persistence_named(const std::string& name) {
+  if (name == "none") return {occupancy::PersistenceSetting{}};
+  if (name == "paper")
+    return {occupancy::PersistenceSetting{}, occupancy::PersistenceSetting{true, 3, 1500}};
+  return occupancy::default_sweep_persistence();
 }
 
-std::string persistence_label(const VoxelMapperParams& params) {
+std::string persistence_label(const occupancy::VoxelMapperParams& params) {
   return params.persistence
              ? "hit " + std::to_string(params.hit.hit) + "/" + std::to_string(params.hit.hit_max)
              : "none";
@@ -73,40 +75,42 @@ void check_options(const OccupancyOptions& options) {
                  "is out of range", "0 <= height < 1 m");
   require_option(options.robot_radius > 0.0 && options.robot_radius < 2.0, "--robot-radius",
                  "is out of range", "0 < radius < 2 m");
-  const auto& names = scene_names();
+  const auto& names = sim::scene_names();
   require_option(std::find(names.begin(), names.end(), options.scene) != names.end(), "--scene",
                  "unknown scene '" + options.scene + "'", "cell (the scene with a moving person)");
 }
 
-std::string frames_csv(const std::vector<OccupancyRun>& runs) {
+std::string frames_csv(const std::vector<occupancy::OccupancyRun>& runs) {
   std::ostringstream csv;
   csv << "mapper,time_s,robot_moving,points,update_ms,tp,fp,fn,precision,recall,f1,f2,f3,never_"
          "seen,"
          "seen_not_kept,ghost_area_m2,trail_area_m2,trail_length_p90_m,trail_length_oldest_m,"
          "master_precision,master_recall,master_f2,"
          "master_ghost_area_m2\n";
-  for (const OccupancyRun& run : runs) {
-    for (const OccupancyFrame& f : run.frames) {
-      const Scores s = scores_of(f.object);
-      const Scores m = scores_of(f.master);
-      csv << '"' << run.mapper << "\"," << format_number(f.time, 6) << ',' << f.robot_moving << ','
-          << f.points << ',' << format_number(f.update_seconds * 1e3, 4) << ','
+  for (const occupancy::OccupancyRun& run : runs) {
+    for (const occupancy::OccupancyFrame& f : run.frames) {
+      const occupancy::Scores s = occupancy::scores_of(f.object);
+      const occupancy::Scores m = occupancy::scores_of(f.master);
+      csv << '"' << run.mapper << "\"," << model::format_number(f.time, 6) << ',' << f.robot_moving
+          << ',' << f.points << ',' << model::format_number(f.update_seconds * 1e3, 4) << ','
           << f.object.true_positives << ',' << f.object.false_positives << ','
-          << f.object.false_negatives << ',' << format_number(s.precision, 4) << ','
-          << format_number(s.recall, 4) << ',' << format_number(s.f1, 4) << ','
-          << format_number(s.f2, 4) << ',' << format_number(s.f3, 4) << ',' << f.misses.never_seen
-          << ',' << f.misses.seen_not_kept << ',' << format_number(f.ghost_area, 4) << ','
-          << format_number(f.trail_area, 4) << ',' << format_number(f.trail_length, 4) << ','
-          << format_number(f.trail_length_oldest, 4) << ',' << format_number(m.precision, 4) << ','
-          << format_number(m.recall, 4) << ',' << format_number(m.f2, 4) << ','
-          << format_number(f.master_ghost_area, 4) << '\n';
+          << f.object.false_negatives << ',' << model::format_number(s.precision, 4) << ','
+          << model::format_number(s.recall, 4) << ',' << model::format_number(s.f1, 4) << ','
+          << model::format_number(s.f2, 4) << ',' << model::format_number(s.f3, 4) << ','
+          << f.misses.never_seen << ',' << f.misses.seen_not_kept << ','
+          << model::format_number(f.ghost_area, 4) << ',' << model::format_number(f.trail_area, 4)
+          << ',' << model::format_number(f.trail_length, 4) << ','
+          << model::format_number(f.trail_length_oldest, 4) << ','
+          << model::format_number(m.precision, 4) << ',' << model::format_number(m.recall, 4) << ','
+          << model::format_number(m.f2, 4) << ',' << model::format_number(f.master_ghost_area, 4)
+          << '\n';
     }
   }
   return csv.str();
 }
 
-nlohmann::json phase_json(const OccupancyPhase& phase) {
-  const auto scores = [](const Scores& s) {
+nlohmann::json phase_json(const occupancy::OccupancyPhase& phase) {
+  const auto scores = [](const occupancy::Scores& s) {
     const auto value = [](double v) {
       return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
     };
@@ -127,18 +131,18 @@ nlohmann::json phase_json(const OccupancyPhase& phase) {
           {"master_ghost_area_m2", value(phase.master_ghost_area)},
           {"misses_never_seen", phase.never_seen},
           {"misses_seen_not_kept", phase.seen_not_kept},
-          {"mark_delay_median_s", value(percentile_of(phase.mark_delays, 0.5))},
-          {"mark_delay_p95_s", value(percentile_of(phase.mark_delays, 0.95))},
-          {"clear_delay_median_s", value(percentile_of(phase.clear_delays, 0.5))},
-          {"clear_delay_p95_s", value(percentile_of(phase.clear_delays, 0.95))},
+          {"mark_delay_median_s", value(occupancy::percentile_of(phase.mark_delays, 0.5))},
+          {"mark_delay_p95_s", value(occupancy::percentile_of(phase.mark_delays, 0.95))},
+          {"clear_delay_median_s", value(occupancy::percentile_of(phase.clear_delays, 0.5))},
+          {"clear_delay_p95_s", value(occupancy::percentile_of(phase.clear_delays, 0.95))},
           {"marks", phase.mark_delays.size()},
           {"clears", phase.clear_delays.size()},
           {"update_ms", value(phase.update_ms)},
           {"points_per_second", value(phase.points_per_second)}};
 }
 
-void print_tables(const std::vector<OccupancyRun>& runs, const std::vector<VoxelMapperParams>& grid,
-                  std::ostream& out) {
+void print_tables(const std::vector<occupancy::OccupancyRun>& runs,
+                  const std::vector<occupancy::VoxelMapperParams>& grid, std::ostream& out) {
   TextTable scores;
   scores.add_column("voxel m", TextTable::Align::right);
   scores.add_column("persistence", TextTable::Align::left);
@@ -155,7 +159,7 @@ void print_tables(const std::vector<OccupancyRun>& runs, const std::vector<Voxel
     cell.add_column(h, TextTable::Align::right);
   }
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const OccupancyRun& r = runs[i];
+    const occupancy::OccupancyRun& r = runs[i];
     const std::string voxel = fixed(grid[i].voxel, 2), label = persistence_label(grid[i]);
     scores.add_row({voxel, label, number(r.all.object.precision, 3), number(r.all.object.recall, 3),
                     number(r.all.object.f1, 3), number(r.all.object.f2, 3),
@@ -171,9 +175,9 @@ void print_tables(const std::vector<OccupancyRun>& runs, const std::vector<Voxel
     };
     cell.add_row({voxel, label, number(r.moving.ghost_area, 2), number(r.stationary.ghost_area, 2),
                   number(r.moving.trail_length_max, 2), number(r.stationary.trail_length_max, 2),
-                  number(percentile_of(r.all.mark_delays, 0.5), 1),
-                  number(percentile_of(r.moving.clear_delays, 0.5), 1),
-                  number(percentile_of(r.stationary.clear_delays, 0.5), 1),
+                  number(occupancy::percentile_of(r.all.mark_delays, 0.5), 1),
+                  number(occupancy::percentile_of(r.moving.clear_delays, 0.5), 1),
+                  number(occupancy::percentile_of(r.stationary.clear_delays, 0.5), 1),
                   std::to_string(r.pending_changes), share(r.all.never_seen),
                   share(r.all.seen_not_kept), number(r.all.master.f2, 3),
                   number(r.all.master_ghost_area, 2), number(r.all.update_ms, 1),
@@ -190,17 +194,17 @@ void print_tables(const std::vector<OccupancyRun>& runs, const std::vector<Voxel
 int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
   check_options(options);
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
-  const Scene scene = make_scene(options.scene, options.seed);
+  const model::Scene scene = sim::make_scene(options.scene, options.seed);
   require_option(!scene.moving.empty(), "--scene",
                  "'" + options.scene + "' has no moving object to score",
                  "cell (the scene with a moving person)");
   // The cell's sensors are fixed: the rig's robot frame is the cell (world) frame.
-  std::vector<CellSensor> sensors;
-  for (const Mount& mount : inputs.rig.mounts) {
+  std::vector<occupancy::CellSensor> sensors;
+  for (const model::Mount& mount : inputs.rig.mounts) {
     sensors.push_back({mount.id, *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id),
                        mount.T_robot_sensor});
   }
-  OccupancyEvalParams params;
+  occupancy::OccupancyEvalParams params;
   params.rate = options.rate;
   params.duration = options.duration;
   params.moving_until = options.moving_until;
@@ -208,20 +212,23 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
   params.camera_stride = options.camera_stride;
   params.robot_radius = options.robot_radius;
   params.min_height = options.min_height;
-  VoxelMapperParams base;
+  occupancy::VoxelMapperParams base;
   base.robot_radius = options.robot_radius;
   base.window_size = params.window_size;
   // The whole cell is in reach: every ray clears and marks to its end, as OctoMap's do.
   base.source.obstacle_max_range = base.source.raytrace_max_range = 10.0;
   base.source.min_obstacle_height = options.min_height;
-  const std::vector<PersistenceSetting> persistence = persistence_named(options.persistence);
-  const std::vector<VoxelMapperParams> grid = sweep_grid(options.voxels, persistence, base);
-  const auto owned = make_sweep_mappers(grid, SourceLocation{"(command line)"});
-  std::vector<OccupancyMapper*> mappers;
+  const std::vector<occupancy::PersistenceSetting> persistence =
+      persistence_named(options.persistence);
+  const std::vector<occupancy::VoxelMapperParams> grid =
+      occupancy::sweep_grid(options.voxels, persistence, base);
+  const auto owned = occupancy::make_sweep_mappers(grid, model::SourceLocation{"(command line)"});
+  std::vector<occupancy::OccupancyMapper*> mappers;
   for (const auto& mapper : owned) mappers.push_back(mapper.get());
-  const std::vector<OccupancyRun> runs = evaluate_occupancy(scene, sensors, mappers, params);
+  const std::vector<occupancy::OccupancyRun> runs =
+      occupancy::evaluate_occupancy(scene, sensors, mappers, params);
 
-  std::vector<ParetoPoint> points;
+  std::vector<render::ParetoPoint> points;
   nlohmann::json report = {{"rig", inputs.rig.name},
                            {"scene", options.scene},
                            {"rate_hz", options.rate},
@@ -229,7 +236,7 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
                            {"moving_until_s", options.moving_until},
                            {"runs", nlohmann::json::array()}};
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    points.push_back({format_number(grid[i].voxel, 3) + " m, " + persistence_label(grid[i]),
+    points.push_back({model::format_number(grid[i].voxel, 3) + " m, " + persistence_label(grid[i]),
                       runs[i].all.object.f2, runs[i].all.ghost_area, runs[i].all.update_ms});
     report["runs"].push_back({{"mapper", runs[i].mapper},
                               {"voxel_m", grid[i].voxel},
@@ -245,10 +252,10 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
     std::error_code error;
     std::filesystem::create_directories(options.out, error);
     const std::filesystem::path folder(options.out);
-    write_file_atomically((folder / "occupancy_frames.csv").string(), frames_csv(runs));
-    write_file_atomically((folder / "occupancy_summary.json").string(), report.dump(2) + "\n");
-    plot_occupancy_pareto(points, "Occupancy sweep on the cell: F2 vs ghost area vs time",
-                          (folder / "occupancy_pareto.png").string());
+    io::write_file_atomically((folder / "occupancy_frames.csv").string(), frames_csv(runs));
+    io::write_file_atomically((folder / "occupancy_summary.json").string(), report.dump(2) + "\n");
+    render::plot_occupancy_pareto(points, "Occupancy sweep on the cell: F2 vs ghost area vs time",
+                                  (folder / "occupancy_pareto.png").string());
   }
   if (options.json) {
     out << report.dump(2) << '\n';
@@ -256,11 +263,11 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
   }
   out << inputs.rig.name << " in the " << options.scene << " scene: " << sensors.size()
       << " sensors, " << runs.front().frames.size() << " frames at "
-      << format_number(options.rate, 4) << " Hz, robot moving until "
-      << format_number(options.moving_until, 4) << " s\n\n";
+      << model::format_number(options.rate, 4) << " Hz, robot moving until "
+      << model::format_number(options.moving_until, 4) << " s\n\n";
   print_tables(runs, grid, out);
   out << "\nPareto-optimal (F2 up, ghost area down, ms per update down):";
-  for (const std::size_t i : pareto_front(points)) out << "\n  " << points[i].label;
+  for (const std::size_t i : render::pareto_front(points)) out << "\n  " << points[i].label;
   out << '\n';
   if (!options.out.empty()) {
     out << "wrote occupancy_frames.csv, occupancy_summary.json and occupancy_pareto.png to "

@@ -40,29 +40,29 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
                  "the budget in US dollars, > 0");
   require_option(options.step_deg > 0 && options.step_deg <= 45, "--step", "is out of range",
                  "degrees in (0, 45]");
-  const Catalog catalog = load_catalog(options.catalog);
-  const SensorLibrary library = load_catalog_library(catalog, options.sensors);
-  check_catalog_references(catalog, library).throw_if_errors();
-  const Requirements requirements = load_requirements(options.requirements);
-  RelaxationPolicy policy;
+  const model::Catalog catalog = io::load_catalog(options.catalog);
+  const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
+  io::check_catalog_references(catalog, library).throw_if_errors();
+  const model::Requirements requirements = io::load_requirements(options.requirements);
+  model::RelaxationPolicy policy;
   if (!options.policy.empty()) {
-    policy = load_policy(options.policy);
-    check_policy(requirements, policy);  // a wrong step fails before any search
+    policy = io::load_policy(options.policy);
+    select::check_policy(requirements, policy);  // a wrong step fails before any search
   }
 
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
-  CoverageSettings settings;
+  metrics::CoverageSettings settings;
   settings.step = options.step_deg * 3.141592653589793 / 180.0;
   if (terminal) err << "rasterising every slot option at " << options.step_deg << " deg steps...\n";
-  const SelectionSpace space(catalog, library, settings);
+  const select::SelectionSpace space(catalog, library, settings);
   const auto progress = [&](long nodes) {
     if (terminal) err << "\r  search: " << nodes << " nodes" << std::flush;
   };
   SelectReport report(space, requirements, policy, options.budget);
   if (!options.json) report.print_header(out);
-  const RelaxationOutcome outcome = select_within_budget(
+  const select::RelaxationOutcome outcome = select::select_within_budget(
       space, requirements, policy, options.budget,
-      [&](const RelaxationIteration& iteration) {
+      [&](const select::RelaxationIteration& iteration) {
         if (terminal) err << "\r" << std::string(40, ' ') << "\r";
         if (!options.json) report.print_iteration(iteration, out);
       },

@@ -20,10 +20,10 @@ std::string usd(double value) {
   return fixed(value, 0) + " USD";
 }
 std::string percent(double share) {
-  return format_number(share * 100, 3);
+  return model::format_number(share * 100, 3);
 }
 
-const RelaxationIteration* last_with_rig(const RelaxationOutcome& outcome) {
+const select::RelaxationIteration* last_with_rig(const select::RelaxationOutcome& outcome) {
   for (auto it = outcome.iterations.rbegin(); it != outcome.iterations.rend(); ++it) {
     if (it->selection.found) return &*it;
   }
@@ -31,43 +31,46 @@ const RelaxationIteration* last_with_rig(const RelaxationOutcome& outcome) {
 }
 
 // The rig to write: the first within budget, else the cheapest of the last iteration found.
-const RelaxationIteration* chosen(const RelaxationOutcome& outcome) {
+const select::RelaxationIteration* chosen(const select::RelaxationOutcome& outcome) {
   if (outcome.within_budget) return &outcome.iterations.back();
   return last_with_rig(outcome);
 }
 
 }  // namespace
 
-std::string describe(const SatisficingTargets& targets) {
-  std::string text = "F >= " + format_number(targets.min_frequency, 4) + " Hz";
+std::string describe(const select::SatisficingTargets& targets) {
+  std::string text = "F >= " + model::format_number(targets.min_frequency, 4) + " Hz";
   if (targets.max_spacing)
-    text += ", R <= " + format_number(*targets.max_spacing * 1000, 4) + " mm";
-  if (targets.max_noise) text += ", N <= " + format_number(*targets.max_noise * 1000, 4) + " mm";
+    text += ", R <= " + model::format_number(*targets.max_spacing * 1000, 4) + " mm";
+  if (targets.max_noise)
+    text += ", N <= " + model::format_number(*targets.max_noise * 1000, 4) + " mm";
   if (!targets.lighting.empty()) {
     text += ", L:";
-    for (const LightCondition condition : targets.lighting) text += " " + to_string(condition);
+    for (const model::LightCondition condition : targets.lighting)
+      text += " " + to_string(condition);
   }
-  for (const SectorRequirement& sector : targets.sectors) {
+  for (const model::SectorRequirement& sector : targets.sectors) {
     text += ", SC " + sector.name + " >= " + percent(sector.min_complete_coverage) + "/" +
             percent(sector.min_floor_coverage) + " %";
   }
   return text;
 }
 
-std::string describe(const Rig& rig) {
+std::string describe(const model::Rig& rig) {
   std::string text;
-  for (const Mount& mount : rig.mounts) {
+  for (const model::Mount& mount : rig.mounts) {
     text += (text.empty() ? "" : ", ") + mount.id + ": " + mount.sensor_id + "/" + mount.mode_id;
   }
   return text;
 }
 
-SelectReport::SelectReport(const SelectionSpace& space, const Requirements& requirements,
-                           const RelaxationPolicy& policy, double budget)
+SelectReport::SelectReport(const select::SelectionSpace& space,
+                           const model::Requirements& requirements,
+                           const model::RelaxationPolicy& policy, double budget)
     : space_(space), requirements_(requirements), policy_(policy), budget_(budget) {}
 
 void SelectReport::print_header(std::ostream& out) const {
-  const Catalog& catalog = space_.catalog();
+  const model::Catalog& catalog = space_.catalog();
   out << "Catalog: " << catalog.name << " (" << catalog.file << "): " << catalog.slots.size()
       << " slots, " << catalog.sensors.size() << " candidate sensors, " << space_.option_count()
       << " slot options\n";
@@ -79,12 +82,13 @@ void SelectReport::print_header(std::ostream& out) const {
       << "\n\n";
 }
 
-void SelectReport::print_iteration(const RelaxationIteration& iteration, std::ostream& out) {
+void SelectReport::print_iteration(const select::RelaxationIteration& iteration,
+                                   std::ostream& out) {
   out << "#" << printed_++ << "  "
       << (iteration.relaxed.empty() ? "initial requirements" : "relaxed " + iteration.relaxed)
       << '\n';
   out << "    needs: " << describe(iteration.targets) << '\n';
-  const Selection& selection = iteration.selection;
+  const select::Selection& selection = iteration.selection;
   if (!selection.found) {
     out << "    no rig: " << selection.infeasible_reason << '\n';
   } else {
@@ -107,7 +111,7 @@ void SelectReport::print_iteration(const RelaxationIteration& iteration, std::os
   out << "\n\n";
 }
 
-void SelectReport::print_summary(const RelaxationOutcome& outcome,
+void SelectReport::print_summary(const select::RelaxationOutcome& outcome,
                                  const std::vector<std::string>& written, std::ostream& out) const {
   using Align = TextTable::Align;
   TextTable table;
@@ -119,21 +123,22 @@ void SelectReport::print_summary(const RelaxationOutcome& outcome,
   table.add_column("cost USD", Align::right);
   table.add_column("within budget", Align::left);
   for (std::size_t i = 0; i < outcome.iterations.size(); ++i) {
-    const RelaxationIteration& it = outcome.iterations[i];
-    table.add_row({std::to_string(i), it.relaxed.empty() ? "-" : it.relaxed,
-                   format_number(it.targets.min_frequency, 4),
-                   it.targets.max_spacing ? format_number(*it.targets.max_spacing * 1000, 4) : "-",
-                   it.targets.max_noise ? format_number(*it.targets.max_noise * 1000, 4) : "-",
-                   it.selection.found ? fixed(it.selection.cost.total, 0) : "none",
-                   it.within_budget ? "yes" : "no"});
+    const select::RelaxationIteration& it = outcome.iterations[i];
+    table.add_row(
+        {std::to_string(i), it.relaxed.empty() ? "-" : it.relaxed,
+         model::format_number(it.targets.min_frequency, 4),
+         it.targets.max_spacing ? model::format_number(*it.targets.max_spacing * 1000, 4) : "-",
+         it.targets.max_noise ? model::format_number(*it.targets.max_noise * 1000, 4) : "-",
+         it.selection.found ? fixed(it.selection.cost.total, 0) : "none",
+         it.within_budget ? "yes" : "no"});
   }
   out << "Trace\n";
   table.print(out, "  ");
-  const RelaxationIteration* pick = chosen(outcome);
+  const select::RelaxationIteration* pick = chosen(outcome);
   if (outcome.within_budget) {
     out << "\nChosen rig (" << usd(pick->selection.cost.total) << " <= budget " << usd(budget_)
         << "): " << describe(pick->selection.rig) << '\n';
-    const RigCoverage& coverage = pick->selection.coverage;
+    const metrics::RigCoverage& coverage = pick->selection.coverage;
     out << "  SC complete mean " << percent(coverage.complete.mean) << " %, floor mean "
         << percent(coverage.floor.mean) << " % (exact path)\n";
   } else {
@@ -144,7 +149,7 @@ void SelectReport::print_summary(const RelaxationOutcome& outcome,
     }
     out << "Binding requirements:\n";
     if (outcome.binding.empty()) out << "  none alone: the budget is below every rig's cost\n";
-    for (const BindingRequirement& item : outcome.binding) {
+    for (const select::BindingRequirement& item : outcome.binding) {
       out << "  " << item.requirement << ": without it the cheapest rig costs "
           << usd(item.cost_without) << '\n';
     }
@@ -156,18 +161,19 @@ void SelectReport::print_summary(const RelaxationOutcome& outcome,
   }
 }
 
-std::vector<std::string> SelectReport::write_files(const RelaxationOutcome& outcome,
+std::vector<std::string> SelectReport::write_files(const select::RelaxationOutcome& outcome,
                                                    const std::string& folder, bool renders) const {
-  const RelaxationIteration* pick = chosen(outcome);
+  const select::RelaxationIteration* pick = chosen(outcome);
   std::vector<std::string> written;
   if (pick == nullptr) return written;
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error) {
-    throw InputError(Diagnostic{{"(command line)", 0, 0},
-                                "--out",
-                                "cannot create folder '" + folder + "': " + error.message(),
-                                "a writable folder"});
+    throw model::InputError(
+        model::Diagnostic{{"(command line)", 0, 0},
+                          "--out",
+                          "cannot create folder '" + folder + "': " + error.message(),
+                          "a writable folder"});
   }
   const std::filesystem::path library =
       std::filesystem::absolute(space_.library().file).lexically_normal();
@@ -175,37 +181,38 @@ std::vector<std::string> SelectReport::write_files(const RelaxationOutcome& outc
                                               .lexically_relative(std::filesystem::absolute(folder))
                                               .string();
   const std::string rig_file = folder + "/chosen_rig.yaml";
-  write_file_atomically(
-      rig_file, rig_to_yaml(pick->selection.rig, library_from_folder, "requirements_final.yaml",
-                            "Chosen by `rigdesign select` from " + space_.catalog().file +
-                                "\n"
-                                "Cost " +
-                                fixed(pick->selection.cost.total, 0) + " USD (sensors " +
-                                fixed(pick->selection.cost.sensors, 0) + ", transfer " +
-                                pick->selection.cost.transfer_id + " " +
-                                fixed(pick->selection.cost.transfer, 0) + ", CPU " +
-                                pick->selection.cost.cpu_id + " " +
-                                fixed(pick->selection.cost.cpu, 0) + ")"));
+  io::write_file_atomically(
+      rig_file, io::rig_to_yaml(pick->selection.rig, library_from_folder, "requirements_final.yaml",
+                                "Chosen by `rigdesign select` from " + space_.catalog().file +
+                                    "\n"
+                                    "Cost " +
+                                    fixed(pick->selection.cost.total, 0) + " USD (sensors " +
+                                    fixed(pick->selection.cost.sensors, 0) + ", transfer " +
+                                    pick->selection.cost.transfer_id + " " +
+                                    fixed(pick->selection.cost.transfer, 0) + ", CPU " +
+                                    pick->selection.cost.cpu_id + " " +
+                                    fixed(pick->selection.cost.cpu, 0) + ")"));
   written.push_back(rig_file);
   const std::string requirements_file = folder + "/requirements_final.yaml";
-  write_file_atomically(
+  io::write_file_atomically(
       requirements_file,
-      requirements_to_yaml(
+      io::requirements_to_yaml(
           pick->requirements,
           "Requirements after " + std::to_string(&*pick - &outcome.iterations.front()) +
               " relaxation step(s) of " + (policy_.file.empty() ? "no policy" : policy_.file)));
   written.push_back(requirements_file);
   for (const char* extension : {".png", ".svg"}) {
     const std::string path = folder + "/pareto" + extension;
-    plot_pareto(pick->selection.search.explored, budget_, pick->selection.cost.total,
-                pick->selection.coverage.complete.mean,
-                space_.catalog().name + ": cost against coverage of the rigs explored", path);
+    render::plot_pareto(pick->selection.search.explored, budget_, pick->selection.cost.total,
+                        pick->selection.coverage.complete.mean,
+                        space_.catalog().name + ": cost against coverage of the rigs explored",
+                        path);
     written.push_back(path);
   }
   if (renders) {
     const std::string coverage_folder = folder + "/coverage";
     std::filesystem::create_directories(coverage_folder, error);
-    Rig rig = pick->selection.rig;
+    model::Rig rig = pick->selection.rig;
     rig.file = rig_file;
     const std::vector<std::string> pictures = write_coverage_files(
         rig, space_.library(), pick->selection.coverage, {0, 45, 90, 180}, coverage_folder, true);
@@ -214,10 +221,10 @@ std::vector<std::string> SelectReport::write_files(const RelaxationOutcome& outc
   return written;
 }
 
-nlohmann::json SelectReport::to_json(const RelaxationOutcome& outcome,
+nlohmann::json SelectReport::to_json(const select::RelaxationOutcome& outcome,
                                      const std::vector<std::string>& written) const {
   nlohmann::json iterations = nlohmann::json::array();
-  for (const RelaxationIteration& it : outcome.iterations) {
+  for (const select::RelaxationIteration& it : outcome.iterations) {
     nlohmann::json item = {{"relaxed", it.relaxed},
                            {"needs", describe(it.targets)},
                            {"found", it.selection.found},
@@ -232,7 +239,7 @@ nlohmann::json SelectReport::to_json(const RelaxationOutcome& outcome,
           {"transfer", it.selection.cost.transfer}, {"transfer_id", it.selection.cost.transfer_id},
           {"cpu", it.selection.cost.cpu},           {"cpu_id", it.selection.cost.cpu_id}};
       nlohmann::json mounts = nlohmann::json::array();
-      for (const Mount& mount : it.selection.rig.mounts) {
+      for (const model::Mount& mount : it.selection.rig.mounts) {
         mounts.push_back(
             {{"slot", mount.id}, {"sensor", mount.sensor_id}, {"mode", mount.mode_id}});
       }
@@ -244,7 +251,7 @@ nlohmann::json SelectReport::to_json(const RelaxationOutcome& outcome,
     iterations.push_back(item);
   }
   nlohmann::json binding = nlohmann::json::array();
-  for (const BindingRequirement& item : outcome.binding) {
+  for (const select::BindingRequirement& item : outcome.binding) {
     binding.push_back({{"requirement", item.requirement}, {"cost_without", item.cost_without}});
   }
   return {{"budget", budget_},

@@ -12,31 +12,31 @@ namespace rigdesign::cli {
 
 class SelectReport {
  public:
-  SelectReport(const SelectionSpace& space, const Requirements& requirements,
-               const RelaxationPolicy& policy, double budget);
+  SelectReport(const select::SelectionSpace& space, const model::Requirements& requirements,
+               const model::RelaxationPolicy& policy, double budget);
 
   void print_header(std::ostream& out) const;
-  void print_iteration(const RelaxationIteration& iteration, std::ostream& out);
-  void print_summary(const RelaxationOutcome& outcome, const std::vector<std::string>& written,
-                     std::ostream& out) const;
+  void print_iteration(const select::RelaxationIteration& iteration, std::ostream& out);
+  void print_summary(const select::RelaxationOutcome& outcome,
+                     const std::vector<std::string>& written, std::ostream& out) const;
   /// Writes the chosen rig, final requirements, Pareto plot and renders; returns the paths.
-  std::vector<std::string> write_files(const RelaxationOutcome& outcome, const std::string& folder,
-                                       bool renders) const;
-  nlohmann::json to_json(const RelaxationOutcome& outcome,
+  std::vector<std::string> write_files(const select::RelaxationOutcome& outcome,
+                                       const std::string& folder, bool renders) const;
+  nlohmann::json to_json(const select::RelaxationOutcome& outcome,
                          const std::vector<std::string>& written) const;
 
  private:
-  const SelectionSpace& space_;
-  const Requirements& requirements_;
-  const RelaxationPolicy& policy_;
+  const select::SelectionSpace& space_;
+  const model::Requirements& requirements_;
+  const model::RelaxationPolicy& policy_;
   double budget_;
   int printed_ = 0;
 };
 
 /// "F >= 10 Hz, R <= 150 mm, N <= 50 mm, L: dark, indoor, SC front >= 75 / 80 % ...".
-std::string describe(const SatisficingTargets& targets);
+std::string describe(const select::SatisficingTargets& targets);
 
 /// "front: azure_kinect_dk/nfov_binned_15, top: velodyne_vlp16/vlp16_10hz".
-std::string describe(const Rig& rig);
+std::string describe(const model::Rig& rig);
 
 }  // namespace rigdesign::cli

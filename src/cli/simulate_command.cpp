@@ -33,27 +33,27 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
   require_option(options.dropout >= 0 && options.dropout < 1, "--dropout", "is out of range",
                  "a share in [0, 1)");
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
-  const Scene scene = load_scene_option(options.scene, options.seed);
-  SimulationSettings settings;
+  const model::Scene scene = load_scene_option(options.scene, options.seed);
+  sim::SimulationSettings settings;
   settings.dropout = options.dropout;
   settings.sensor_frame = options.frame == "sensor";
   const std::string folder =
       options.out.empty() ? "simulation/" + scene_label(options.scene) : options.out;
   const std::string extension = options.format == "ply" ? ".ply" : ".pcd";
-  const CloudEncoding encoding =
-      options.format == "pcd-ascii" ? CloudEncoding::ascii : CloudEncoding::binary;
+  const io::CloudEncoding encoding =
+      options.format == "pcd-ascii" ? io::CloudEncoding::ascii : io::CloudEncoding::binary;
   out << inputs.rig.name << " in the " << options.scene << " scene (seed " << options.seed << "), "
       << options.frames << " frame(s) per sensor, " << options.frame << " frame\n";
   for (std::size_t i = 0; i < inputs.rig.mounts.size(); ++i) {
-    const Mount& mount = inputs.rig.mounts[i];
-    const SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    const std::vector<PointCloud> clouds =
-        simulate_mount(scene, mount, mode, i, options.frames, options.seed, settings);
+    const model::Mount& mount = inputs.rig.mounts[i];
+    const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
+    const std::vector<model::PointCloud> clouds =
+        sim::simulate_mount(scene, mount, mode, i, options.frames, options.seed, settings);
     std::filesystem::create_directories(folder + "/" + mount.id);
     std::size_t points = 0;
     for (std::size_t k = 0; k < clouds.size(); ++k) {
-      write_cloud(folder + "/" + mount.id + "/frame_" + std::to_string(k) + extension, clouds[k],
-                  encoding);
+      io::write_cloud(folder + "/" + mount.id + "/frame_" + std::to_string(k) + extension,
+                      clouds[k], encoding);
       points += clouds[k].size();
     }
     out << "  " << mount.id << " (" << mount.sensor_id << "/" << mount.mode_id

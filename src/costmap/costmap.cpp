@@ -4,7 +4,7 @@
 
 #include "rigdesign/costmap/cost_values.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 namespace {
 
 // Cells per side: the nearest whole number (10 m / 0.05 m = 200), at least one.
@@ -17,19 +17,19 @@ GridWindow window_of(const CostmapParams& params) {
   window.width = cells_along(params.size_x, params.resolution);
   window.height = cells_along(params.size_y, params.resolution);
   window.resolution = params.resolution;
-  window.origin_cell = window.origin_centred_on(Vec2::Zero());
+  window.origin_cell = window.origin_centred_on(model::Vec2::Zero());
   return window;
 }
 
 // Checks before any layer allocates.
-const CostmapParams& checked(const CostmapParams& params, const SourceLocation& where) {
+const CostmapParams& checked(const CostmapParams& params, const model::SourceLocation& where) {
   check_costmap_params(params, where);
   return params;
 }
 
 }  // namespace
 
-Costmap::Costmap(const CostmapParams& params, const SourceLocation& where)
+Costmap::Costmap(const CostmapParams& params, const model::SourceLocation& where)
     : params_(checked(params, where)),
       inflation_(params.inflation),
       master_(window_of(params), cost::kUnknown) {
@@ -47,9 +47,9 @@ const CostGrid& Costmap::obstacle_grid() const {
   return params_.layer == ObstacleLayerKind::obstacle ? obstacle_.grid() : projection_;
 }
 
-void Costmap::update(double time, const Pose3& T_world_robot,
+void Costmap::update(double time, const model::Pose3& T_world_robot,
                      std::span<const CloudObservation> observations, bool velocity_command) {
-  const Vec2 robot = T_world_robot.translation().head<2>();
+  const model::Vec2 robot = T_world_robot.translation().head<2>();
   const Eigen::Vector2i origin = master_.window().origin_centred_on(robot);
   master_.move_origin(origin);
   hit_.move_origin(origin);
@@ -71,4 +71,4 @@ void Costmap::update(double time, const Pose3& T_world_robot,
   inflation_.apply(master_);
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

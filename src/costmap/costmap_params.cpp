@@ -7,7 +7,7 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 namespace {
 
 // Cells per window axis: 2^15 keeps cell indices, counts and allocations sane (a 1 km window
@@ -17,12 +17,13 @@ constexpr double kMaxCellsPerAxis = 32768.0;
 constexpr double kMaxVoxels = 2147483648.0;
 
 struct Checker {
-  const SourceLocation& where;
+  const model::SourceLocation& where;
   const std::string& prefix;
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
 
   void require(bool ok, const std::string& field, double value, const std::string& expected) {
-    if (!ok) diagnostics.error(where, prefix + field, "is " + format_number(value), expected);
+    if (!ok)
+      diagnostics.error(where, prefix + field, "is " + model::format_number(value), expected);
   }
 };
 
@@ -45,13 +46,13 @@ void check_window(Checker& c, const CostmapParams& p) {
     } else if (size < footprint) {
       c.diagnostics.error(
           c.where, c.prefix + name,
-          "is " + format_number(size) + " m, smaller than the robot's footprint (" +
-              format_number(footprint) + " m across)",
-          "a window side of at least 2 x robot_radius = " + format_number(footprint) + " m");
+          "is " + model::format_number(size) + " m, smaller than the robot's footprint (" +
+              model::format_number(footprint) + " m across)",
+          "a window side of at least 2 x robot_radius = " + model::format_number(footprint) + " m");
     } else if (finite_positive(p.resolution)) {
       c.require(size / p.resolution <= kMaxCellsPerAxis, name, size,
-                "at most " + format_number(kMaxCellsPerAxis, 7) + " cells of " +
-                    format_number(p.resolution) + " m");
+                "at most " + model::format_number(kMaxCellsPerAxis, 7) + " cells of " +
+                    model::format_number(p.resolution) + " m");
     }
   }
 }
@@ -60,7 +61,7 @@ void check_voxel(Checker& c, const CostmapParams& p) {
   const VoxelLayerParams& v = p.voxel;
   c.require(std::isfinite(v.z_min), "voxel.z_min", v.z_min, "a height in metres");
   c.require(std::isfinite(v.z_max) && v.z_max > v.z_min, "voxel.z_max", v.z_max,
-            "a height in metres above voxel.z_min (" + format_number(v.z_min) + ")");
+            "a height in metres above voxel.z_min (" + model::format_number(v.z_min) + ")");
   c.require(finite_positive(v.z_resolution), "voxel.z_resolution", v.z_resolution,
             "a voxel height in metres, > 0");
   c.require(v.unknown_threshold >= 0, "voxel.unknown_threshold", v.unknown_threshold,
@@ -69,8 +70,9 @@ void check_voxel(Checker& c, const CostmapParams& p) {
       finite_positive(v.z_resolution) && v.z_max > v.z_min) {
     const double voxels = std::ceil(p.size_x / p.resolution) * std::ceil(p.size_y / p.resolution) *
                           std::ceil((v.z_max - v.z_min) / v.z_resolution);
-    c.require(voxels <= kMaxVoxels, "voxel.z_resolution", v.z_resolution,
-              "a window of at most 2^31 voxels (this one has " + format_number(voxels, 3) + ")");
+    c.require(
+        voxels <= kMaxVoxels, "voxel.z_resolution", v.z_resolution,
+        "a window of at most 2^31 voxels (this one has " + model::format_number(voxels, 3) + ")");
   }
 }
 
@@ -91,14 +93,14 @@ void check_inflation(Checker& c, const InflationParams& f) {
   c.require(std::isfinite(f.inflation_radius) && f.inflation_radius >= f.inscribed_radius,
             "inflation.inflation_radius", f.inflation_radius,
             "a radius in metres, >= inflation.inscribed_radius (" +
-                format_number(f.inscribed_radius) + ")");
+                model::format_number(f.inscribed_radius) + ")");
   c.require(finite_non_negative(f.cost_scaling_factor), "inflation.cost_scaling_factor",
             f.cost_scaling_factor, "a decay rate in 1/m, >= 0");
 }
 
 }  // namespace
 
-void check_costmap_params(const CostmapParams& params, const SourceLocation& where,
+void check_costmap_params(const CostmapParams& params, const model::SourceLocation& where,
                           const std::string& prefix) {
   Checker checker{where, prefix, {}};
   check_window(checker, params);
@@ -108,4 +110,4 @@ void check_costmap_params(const CostmapParams& params, const SourceLocation& whe
   checker.diagnostics.throw_if_errors();
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -10,7 +10,7 @@
 
 #include "rigdesign/costmap/cost_values.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 namespace {
 
 constexpr double kUnreached = std::numeric_limits<double>::infinity();
@@ -49,8 +49,8 @@ constexpr Neighbour kNeighbours[8] = {
 
 }  // namespace
 
-PlannedPath plan_dijkstra(const CostGrid& master, const Vec2& start_world, const Vec2& goal_world,
-                          const PlannerParams& params) {
+PlannedPath plan_dijkstra(const CostGrid& master, const model::Vec2& start_world,
+                          const model::Vec2& goal_world, const PlannerParams& params) {
   PlannedPath path;
   const GridWindow& window = master.window();
   const auto start = window.cell_of(start_world);
@@ -117,4 +117,4 @@ PlannedPath plan_dijkstra(const CostGrid& master, const Vec2& start_world, const
   return path;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

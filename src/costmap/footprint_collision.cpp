@@ -3,16 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 namespace {
 
 // Sutherland-Hodgman against one horizontal plane: keeps the part with sign * (z - level) >= 0.
-std::vector<Vec3> clip_by_height(const std::vector<Vec3>& polygon, double level, double sign) {
-  std::vector<Vec3> kept;
+std::vector<model::Vec3> clip_by_height(const std::vector<model::Vec3>& polygon, double level,
+                                        double sign) {
+  std::vector<model::Vec3> kept;
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3& a = polygon[i];
-    const Vec3& b = polygon[(i + 1) % n];
+    const model::Vec3& a = polygon[i];
+    const model::Vec3& b = polygon[(i + 1) % n];
     const double da = sign * (a.z() - level);
     const double db = sign * (b.z() - level);
     if (da >= 0) kept.push_back(a);
@@ -21,21 +22,21 @@ std::vector<Vec3> clip_by_height(const std::vector<Vec3>& polygon, double level,
   return kept;
 }
 
-double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
+double distance_to_segment(const model::Vec2& p, const model::Vec2& a, const model::Vec2& b) {
+  const model::Vec2 ab = b - a;
   const double length_squared = ab.squaredNorm();
   const double t =
       length_squared > 0 ? std::clamp((p - a).dot(ab) / length_squared, 0.0, 1.0) : 0.0;
   return (a + t * ab - p).norm();
 }
 
-double cross(const Vec2& a, const Vec2& b) {
+double cross(const model::Vec2& a, const model::Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
 }  // namespace
 
-double distance_to_convex_polygon(const Vec2& p, const std::vector<Vec2>& polygon) {
+double distance_to_convex_polygon(const model::Vec2& p, const std::vector<model::Vec2>& polygon) {
   if (polygon.empty()) return std::numeric_limits<double>::infinity();
   if (polygon.size() == 1) return (p - polygon.front()).norm();
   const std::size_t n = polygon.size();
@@ -44,8 +45,8 @@ double distance_to_convex_polygon(const Vec2& p, const std::vector<Vec2>& polygo
   bool all_right = true;
   double nearest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2& a = polygon[i];
-    const Vec2& b = polygon[(i + 1) % n];
+    const model::Vec2& a = polygon[i];
+    const model::Vec2& b = polygon[(i + 1) % n];
     area2 += cross(a, b);
     const double side = cross(b - a, p - a);
     all_left = all_left && side >= 0;
@@ -61,16 +62,16 @@ FootprintCollisionChecker::FootprintCollisionChecker(const std::vector<NamedMesh
   for (const NamedMesh& named : meshes) {
     const int object = static_cast<int>(names_.size());
     names_.push_back(named.name);
-    const TriangleMesh& mesh = *named.mesh;
+    const model::TriangleMesh& mesh = *named.mesh;
     for (const auto& triangle : mesh.triangles) {
-      std::vector<Vec3> polygon = {mesh.vertices[static_cast<std::size_t>(triangle[0])],
-                                   mesh.vertices[static_cast<std::size_t>(triangle[1])],
-                                   mesh.vertices[static_cast<std::size_t>(triangle[2])]};
+      std::vector<model::Vec3> polygon = {mesh.vertices[static_cast<std::size_t>(triangle[0])],
+                                          mesh.vertices[static_cast<std::size_t>(triangle[1])],
+                                          mesh.vertices[static_cast<std::size_t>(triangle[2])]};
       polygon = clip_by_height(clip_by_height(polygon, band.bottom, 1.0), band.top, -1.0);
       if (polygon.empty()) continue;
       Piece piece;
       piece.object = object;
-      for (const Vec3& v : polygon) {
+      for (const model::Vec3& v : polygon) {
         piece.polygon.push_back(v.head<2>());
         piece.bounds.extend(v.head<2>());
       }
@@ -79,7 +80,8 @@ FootprintCollisionChecker::FootprintCollisionChecker(const std::vector<NamedMesh
   }
 }
 
-Clearance FootprintCollisionChecker::clearance(const Vec2& centre_world, double radius) const {
+Clearance FootprintCollisionChecker::clearance(const model::Vec2& centre_world,
+                                               double radius) const {
   Clearance best;
   double nearest = std::numeric_limits<double>::infinity();
   for (const Piece& piece : pieces_) {
@@ -95,11 +97,11 @@ Clearance FootprintCollisionChecker::clearance(const Vec2& centre_world, double 
   return best;
 }
 
-std::vector<std::vector<Vec2>> FootprintCollisionChecker::outlines() const {
-  std::vector<std::vector<Vec2>> outlines;
+std::vector<std::vector<model::Vec2>> FootprintCollisionChecker::outlines() const {
+  std::vector<std::vector<model::Vec2>> outlines;
   outlines.reserve(pieces_.size());
   for (const Piece& piece : pieces_) outlines.push_back(piece.polygon);
   return outlines;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -9,7 +9,7 @@
 #include <cstddef>
 #include <limits>
 
-namespace rigdesign::costmap_detail {
+namespace rigdesign::costmap::detail {
 
 template <int Dim>
 using GridPoint = Eigen::Matrix<double, Dim, 1>;
@@ -132,4 +132,4 @@ inline void walk_cells(const GridPoint<Dim>& a, const GridPoint<Dim>& b, const G
   if (include_end) visit(index);
 }
 
-}  // namespace rigdesign::costmap_detail
+}  // namespace rigdesign::costmap::detail

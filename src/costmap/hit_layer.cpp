@@ -5,7 +5,7 @@
 
 #include "rigdesign/costmap/cost_values.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 void apply_hit_equations(std::span<const std::uint8_t> observed, std::span<std::uint16_t> counts,
                          const HitLayerParams& params, bool decrement, std::uint8_t occupied) {
@@ -25,7 +25,7 @@ void apply_hit_equations(std::span<const std::uint8_t> observed, std::span<std::
   }
 }
 
-void MotionMonitor::record(double time, const Vec2& position_world) {
+void MotionMonitor::record(double time, const model::Vec2& position_world) {
   samples_.push_back({time, position_world});
   // Keep the samples of the last d_duration seconds (and the newest, whatever its age).
   while (samples_.size() > 1 && samples_.front().time < time - params_.d_duration)
@@ -35,7 +35,7 @@ void MotionMonitor::record(double time, const Vec2& position_world) {
 bool MotionMonitor::moving(bool velocity_command) const {
   if (velocity_command) return true;
   if (samples_.empty()) return false;
-  const Vec2& now = samples_.back().position;
+  const model::Vec2& now = samples_.back().position;
   return std::any_of(samples_.begin(), samples_.end(), [&](const Sample& sample) {
     return (sample.position - now).norm() >= params_.d_threshold;
   });
@@ -44,7 +44,7 @@ bool MotionMonitor::moving(bool velocity_command) const {
 HitLayer::HitLayer(const GridWindow& window, const HitLayerParams& params)
     : params_(params), motion_(params), counts_(window, 0) {}
 
-bool HitLayer::update(const CostGrid& obstacles, double time, const Vec2& robot_world,
+bool HitLayer::update(const CostGrid& obstacles, double time, const model::Vec2& robot_world,
                       bool velocity_command) {
   if (obstacles.window().origin_cell != counts_.window().origin_cell) {
     throw std::invalid_argument("HitLayer::update: the obstacle grid is on another window");
@@ -65,4 +65,4 @@ void HitLayer::mark(CostGrid& master) const {
   }
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -6,7 +6,7 @@
 
 #include "rigdesign/costmap/cost_values.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 namespace {
 
 // "No source": far beyond any squared distance in a window (and exact in a double), so the
@@ -119,4 +119,4 @@ void InflationLayer::apply(CostGrid& master) {
   }
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -3,15 +3,15 @@
 #include "grid_traversal.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 namespace {
 
-using costmap_detail::GridPoint;
-using costmap_detail::GridSize;
-using costmap_detail::GridStride;
+using detail::GridPoint;
+using detail::GridSize;
+using detail::GridStride;
 
 struct PlaneFrame {
-  Vec2 corner;
+  model::Vec2 corner;
   double inverse_resolution;
   GridSize<2> size;
   GridStride<2> stride;
@@ -21,7 +21,7 @@ struct PlaneFrame {
         inverse_resolution(1.0 / w.resolution),
         size(w.width, w.height),
         stride(1, w.width) {}
-  GridPoint<2> to_grid(const Vec3& p_world) const {
+  GridPoint<2> to_grid(const model::Vec3& p_world) const {
     return (p_world.head<2>() - corner) * inverse_resolution;
   }
 };
@@ -29,34 +29,33 @@ struct PlaneFrame {
 void clear_cloud(const PlaneFrame& frame, std::uint8_t* cells,
                  const CloudObservation& observation) {
   const ObservationSource& source = observation.source;
-  const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
-  for (const Point3f& point : observation.cloud->points) {
-    const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
+  const model::Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
+  for (const model::Point3f& point : observation.cloud->points) {
+    const model::Vec3 p_world = observation.T_world_cloud * point.cast<double>();
     if (!source.in_height_band(p_world.z())) continue;
-    const Vec3 ray = p_world - origin;
+    const model::Vec3 ray = p_world - origin;
     const double length = ray.norm();
     if (!(length > source.raytrace_min_range)) continue;
     const bool cut_short = length > source.raytrace_max_range;
     GridPoint<2> a = frame.to_grid(origin + ray * (source.raytrace_min_range / length));
     GridPoint<2> b = frame.to_grid(
-        cut_short ? Vec3(origin + ray * (source.raytrace_max_range / length)) : p_world);
+        cut_short ? model::Vec3(origin + ray * (source.raytrace_max_range / length)) : p_world);
     bool end_clipped = false;
-    if (!costmap_detail::clip_to_grid<2>(a, b, frame.size, end_clipped)) continue;
-    const bool include_end =
-        cut_short || end_clipped || !costmap_detail::inside_grid<2>(b, frame.size);
-    costmap_detail::walk_cells<2>(a, b, frame.size, frame.stride, include_end,
-                                  [cells](std::ptrdiff_t index) { cells[index] = cost::kFree; });
+    if (!detail::clip_to_grid<2>(a, b, frame.size, end_clipped)) continue;
+    const bool include_end = cut_short || end_clipped || !detail::inside_grid<2>(b, frame.size);
+    detail::walk_cells<2>(a, b, frame.size, frame.stride, include_end,
+                          [cells](std::ptrdiff_t index) { cells[index] = cost::kFree; });
   }
 }
 
 void mark_cloud(const PlaneFrame& frame, std::uint8_t* cells, const CloudObservation& observation) {
   const ObservationSource& source = observation.source;
-  const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
-  for (const Point3f& point : observation.cloud->points) {
-    const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
+  const model::Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
+  for (const model::Point3f& point : observation.cloud->points) {
+    const model::Vec3 p_world = observation.T_world_cloud * point.cast<double>();
     if (!source.marks(p_world, origin)) continue;
     const GridPoint<2> g = frame.to_grid(p_world);
-    if (!costmap_detail::inside_grid<2>(g, frame.size)) continue;
+    if (!detail::inside_grid<2>(g, frame.size)) continue;
     const auto cell = g.array().floor().cast<std::ptrdiff_t>();
     cells[cell.x() + cell.y() * frame.stride.y()] = cost::kLethal;
   }
@@ -81,4 +80,4 @@ void ObstacleLayer::update(std::span<const CloudObservation> observations) {
   }
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
-VelocityCommand pursue(const std::vector<Vec2>& path_world, const Pose2& pose,
+VelocityCommand pursue(const std::vector<model::Vec2>& path_world, const Pose2& pose,
                        const FollowerParams& params) {
   if (path_world.empty()) return {};
   std::size_t nearest = 0;
@@ -23,7 +23,7 @@ VelocityCommand pursue(const std::vector<Vec2>& path_world, const Pose2& pose,
       break;
     }
   }
-  const Vec2 offset = path_world[target] - pose.position;
+  const model::Vec2 offset = path_world[target] - pose.position;
   const double distance = offset.norm();
   if (distance < 1e-9) return {};
   const double alpha =
@@ -46,14 +46,14 @@ Pose2 integrate_unicycle(const Pose2& pose, const VelocityCommand& command, doub
   Pose2 next = pose;
   const double turn = command.angular * dt;
   if (std::abs(turn) < 1e-9) {
-    next.position += command.linear * dt * Vec2(std::cos(pose.yaw), std::sin(pose.yaw));
+    next.position += command.linear * dt * model::Vec2(std::cos(pose.yaw), std::sin(pose.yaw));
   } else {
     const double radius = command.linear / command.angular;
-    next.position += radius * Vec2(std::sin(pose.yaw + turn) - std::sin(pose.yaw),
-                                   -std::cos(pose.yaw + turn) + std::cos(pose.yaw));
+    next.position += radius * model::Vec2(std::sin(pose.yaw + turn) - std::sin(pose.yaw),
+                                          -std::cos(pose.yaw + turn) + std::cos(pose.yaw));
   }
   next.yaw = std::remainder(pose.yaw + turn, 2.0 * std::numbers::pi);
   return next;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

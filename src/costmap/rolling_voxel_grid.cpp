@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 namespace {
 
 // A band that is a whole number of layers up to rounding (2.0 / 0.1 = 19.999...) must not
@@ -34,7 +34,7 @@ void RollingVoxelGrid::reset() {
   std::fill(voxels_.begin(), voxels_.end(), kUnknown);
 }
 
-VoxelKey RollingVoxelGrid::key_at(const Vec3& p_world) const {
+VoxelKey RollingVoxelGrid::key_at(const model::Vec3& p_world) const {
   const Eigen::Vector2i cell = window_.lattice_of(p_world.head<2>());
   return {cell.x(), cell.y(), static_cast<int>(std::floor((p_world.z() - z_min_) / z_resolution_))};
 }
@@ -54,4 +54,4 @@ std::vector<VoxelKey> RollingVoxelGrid::keys_in_state(VoxelState state) const {
   return keys;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

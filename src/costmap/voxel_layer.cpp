@@ -6,12 +6,12 @@
 #include "grid_traversal.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 namespace {
 
-using costmap_detail::GridPoint;
-using costmap_detail::GridSize;
-using costmap_detail::GridStride;
+using detail::GridPoint;
+using detail::GridSize;
+using detail::GridStride;
 
 constexpr auto kFreeVoxel = static_cast<std::uint8_t>(VoxelState::free);
 constexpr auto kOccupiedVoxel = static_cast<std::uint8_t>(VoxelState::occupied);
@@ -19,57 +19,55 @@ constexpr auto kUnknownVoxel = static_cast<std::uint8_t>(VoxelState::unknown);
 
 // World metres to the grid's cell units: x and y from the window's corner, z from z_min.
 struct GridFrame {
-  Vec3 corner;
-  Vec3 inverse_size;
+  model::Vec3 corner;
+  model::Vec3 inverse_size;
   GridSize<3> size;
   GridStride<3> stride;
 
   explicit GridFrame(const RollingVoxelGrid& grid) {
     const GridWindow& w = grid.window();
-    corner = Vec3(w.origin().x(), w.origin().y(), grid.z_min());
-    inverse_size = Vec3(1.0 / w.resolution, 1.0 / w.resolution, 1.0 / grid.z_resolution());
+    corner = model::Vec3(w.origin().x(), w.origin().y(), grid.z_min());
+    inverse_size = model::Vec3(1.0 / w.resolution, 1.0 / w.resolution, 1.0 / grid.z_resolution());
     size = GridSize<3>(w.width, w.height, grid.layers());
     // Columns are contiguous: z fastest, then x, then y.
     stride = GridStride<3>(grid.layers(), static_cast<std::ptrdiff_t>(w.width) * grid.layers(), 1);
   }
-  GridPoint<3> to_grid(const Vec3& p_world) const {
+  GridPoint<3> to_grid(const model::Vec3& p_world) const {
     return (p_world - corner).cwiseProduct(inverse_size);
   }
 };
 
 // Clears the voxels from `start` towards `end` (world), the end voxel too when the ray was cut
 // short of its point (range or window) and so says nothing about it.
-void clear_ray(const GridFrame& frame, std::uint8_t* voxels, const Vec3& start, const Vec3& end,
-               bool cut_short, VoxelUpdateStats& stats) {
+void clear_ray(const GridFrame& frame, std::uint8_t* voxels, const model::Vec3& start,
+               const model::Vec3& end, bool cut_short, VoxelUpdateStats& stats) {
   GridPoint<3> a = frame.to_grid(start);
   GridPoint<3> b = frame.to_grid(end);
   bool end_clipped = false;
-  if (!costmap_detail::clip_to_grid<3>(a, b, frame.size, end_clipped)) return;
-  const bool include_end =
-      cut_short || end_clipped || !costmap_detail::inside_grid<3>(b, frame.size);
+  if (!detail::clip_to_grid<3>(a, b, frame.size, end_clipped)) return;
+  const bool include_end = cut_short || end_clipped || !detail::inside_grid<3>(b, frame.size);
   ++stats.rays_cleared;
   std::size_t visited = 0;
-  costmap_detail::walk_cells<3>(a, b, frame.size, frame.stride, include_end,
-                                [&](std::ptrdiff_t index) {
-                                  voxels[index] = kFreeVoxel;
-                                  ++visited;
-                                });
+  detail::walk_cells<3>(a, b, frame.size, frame.stride, include_end, [&](std::ptrdiff_t index) {
+    voxels[index] = kFreeVoxel;
+    ++visited;
+  });
   stats.voxels_cleared += visited;
 }
 
 void clear_cloud(const GridFrame& frame, std::uint8_t* voxels, const CloudObservation& observation,
                  VoxelUpdateStats& stats) {
   const ObservationSource& source = observation.source;
-  const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
-  for (const Point3f& point : observation.cloud->points) {
-    const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
-    const Vec3 ray = p_world - origin;
+  const model::Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
+  for (const model::Point3f& point : observation.cloud->points) {
+    const model::Vec3 p_world = observation.T_world_cloud * point.cast<double>();
+    const model::Vec3 ray = p_world - origin;
     const double length = ray.norm();
     if (!(length > source.raytrace_min_range)) continue;
-    const Vec3 start = origin + ray * (source.raytrace_min_range / length);
+    const model::Vec3 start = origin + ray * (source.raytrace_min_range / length);
     const bool cut_short = length > source.raytrace_max_range;
-    const Vec3 end =
-        cut_short ? Vec3(origin + ray * (source.raytrace_max_range / length)) : p_world;
+    const model::Vec3 end =
+        cut_short ? model::Vec3(origin + ray * (source.raytrace_max_range / length)) : p_world;
     clear_ray(frame, voxels, start, end, cut_short, stats);
   }
 }
@@ -77,12 +75,12 @@ void clear_cloud(const GridFrame& frame, std::uint8_t* voxels, const CloudObserv
 void mark_cloud(const GridFrame& frame, std::uint8_t* voxels, const CloudObservation& observation,
                 VoxelUpdateStats& stats) {
   const ObservationSource& source = observation.source;
-  const Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
-  for (const Point3f& point : observation.cloud->points) {
-    const Vec3 p_world = observation.T_world_cloud * point.cast<double>();
+  const model::Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
+  for (const model::Point3f& point : observation.cloud->points) {
+    const model::Vec3 p_world = observation.T_world_cloud * point.cast<double>();
     if (!source.marks(p_world, origin)) continue;
     const GridPoint<3> g = frame.to_grid(p_world);
-    if (!costmap_detail::inside_grid<3>(g, frame.size)) continue;
+    if (!detail::inside_grid<3>(g, frame.size)) continue;
     const auto cell = g.array().floor().cast<std::ptrdiff_t>();
     voxels[cell.x() * frame.stride.x() + cell.y() * frame.stride.y() + cell.z()] = kOccupiedVoxel;
     ++stats.voxels_marked;
@@ -130,4 +128,4 @@ void VoxelLayer::project(CostGrid& grid) const {
   }
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -5,16 +5,17 @@
 
 #include "rigdesign/filters/statistical_outlier.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 namespace {
 
-PointCloud without(const PointCloud& cloud, const std::vector<std::uint32_t>& removed) {
+model::PointCloud without(const model::PointCloud& cloud,
+                          const std::vector<std::uint32_t>& removed) {
   if (!std::is_sorted(removed.begin(), removed.end())) {  // RANSAC's inliers come sorted
     std::vector<std::uint32_t> sorted = removed;
     std::sort(sorted.begin(), sorted.end());
     return without(cloud, sorted);
   }
-  PointCloud result;
+  model::PointCloud result;
   result.origin = cloud.origin;
   result.orientation = cloud.orientation;
   result.points.reserve(cloud.size() - std::min(cloud.size(), removed.size()));
@@ -31,15 +32,16 @@ PointCloud without(const PointCloud& cloud, const std::vector<std::uint32_t>& re
 
 // One pass that keeps what lies beyond `threshold` of the plane: no index list to build, sort
 // and walk again as `without` needs for a subset's inliers.
-PointCloud far_from_plane(const PointCloud& cloud, const PlaneFit& plane, double threshold) {
-  PointCloud result;
+model::PointCloud far_from_plane(const model::PointCloud& cloud, const PlaneFit& plane,
+                                 double threshold) {
+  model::PointCloud result;
   result.origin = cloud.origin;
   result.orientation = cloud.orientation;
   result.points.reserve(cloud.size());
   const Eigen::Vector3f normal = plane.normal.cast<float>();
   const float offset = static_cast<float>(plane.offset);
   const float limit = static_cast<float>(threshold);
-  for (const Point3f& p : cloud.points) {
+  for (const model::Point3f& p : cloud.points) {
     if (std::abs(normal.dot(p) + offset) > limit) result.points.push_back(p);
   }
   return result;
@@ -47,30 +49,33 @@ PointCloud far_from_plane(const PointCloud& cloud, const PlaneFit& plane, double
 
 }  // namespace
 
-PointCloud remove_floor_1(const PointCloud& cloud, const FloorRemoval1Params& params) {
+model::PointCloud remove_floor_1(const model::PointCloud& cloud,
+                                 const model::FloorRemoval1Params& params) {
   const std::vector<std::uint32_t> slice = pass_through_indices(cloud, params.slice);
   const PlaneFit floor = fit_plane_ransac(cloud, params.ransac, &slice);
   if (!floor.found) return cloud;
   return without(cloud, floor.inliers);
 }
 
-PointCloud remove_floor_2(const PointCloud& cloud, const FloorRemoval2Params& params) {
-  VoxelGridParams coarse;
+model::PointCloud remove_floor_2(const model::PointCloud& cloud,
+                                 const model::FloorRemoval2Params& params) {
+  model::VoxelGridParams coarse;
   coarse.leaf = params.coarse_leaf;
-  const PointCloud sparse = voxel_grid(cloud, coarse);
+  const model::PointCloud sparse = voxel_grid(cloud, coarse);
   const PlaneFit floor = fit_plane_ransac(sparse, params.ransac);
   if (!floor.found) return cloud;
   return far_from_plane(cloud, floor, params.ransac.threshold);
 }
 
-PointCloud mark_negative_obstacles(const PointCloud& cloud, const NegativeObstacleParams& params) {
-  PointCloud result;
+model::PointCloud mark_negative_obstacles(const model::PointCloud& cloud,
+                                          const model::NegativeObstacleParams& params) {
+  model::PointCloud result;
   result.origin = cloud.origin;
   result.orientation = cloud.orientation;
   result.points.reserve(cloud.size() + cloud.size() / 8);
   const double ox = cloud.origin.x(), oy = cloud.origin.y(), oz = cloud.origin.z();
-  std::vector<Point3f> virtual_points;
-  for (const Point3f& p : cloud.points) {
+  std::vector<model::Point3f> virtual_points;
+  for (const model::Point3f& p : cloud.points) {
     if (p.z() >= params.below) {
       result.points.push_back(p);
       continue;
@@ -85,4 +90,4 @@ PointCloud mark_negative_obstacles(const PointCloud& cloud, const NegativeObstac
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

@@ -23,11 +23,11 @@ float select_smallest(float* values, std::size_t n, std::size_t k) {
 
 }  // namespace
 
-NeighbourGrid::NeighbourGrid(const std::vector<Point3f>& points, double cell)
+NeighbourGrid::NeighbourGrid(const std::vector<model::Point3f>& points, double cell)
     : cell_(static_cast<float>(cell)) {
   low_ = Eigen::Array3f::Constant(kInfinity);
   Eigen::Array3f high = -low_;
-  for (const Point3f& p : points) {
+  for (const model::Point3f& p : points) {
     low_ = low_.min(p.array());
     high = high.max(p.array());
   }
@@ -61,7 +61,7 @@ NeighbourGrid::NeighbourGrid(const std::vector<Point3f>& points, double cell)
   z_.resize(points.size());
   sorted_cell_.resize(points.size());
   for (std::size_t rank = 0; rank < points.size(); ++rank) {
-    const Point3f& p = points[sorted_[rank]];
+    const model::Point3f& p = points[sorted_[rank]];
     x_[rank] = p.x();
     y_[rank] = p.y();
     z_[rank] = p.z();
@@ -78,7 +78,7 @@ double NeighbourGrid::mean_occupancy() const {
                         : static_cast<double>(sorted_.size()) / static_cast<double>(occupied_);
 }
 
-std::size_t NeighbourGrid::append_distances(const Point3f& p, std::uint32_t begin,
+std::size_t NeighbourGrid::append_distances(const model::Point3f& p, std::uint32_t begin,
                                             std::uint32_t end, std::vector<float>& out,
                                             std::size_t size) const {
   if (out.size() < size + (end - begin)) out.resize(2 * (size + (end - begin)));
@@ -95,7 +95,7 @@ std::size_t NeighbourGrid::append_distances(const Point3f& p, std::uint32_t begi
 }
 
 void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch) const {
-  const Point3f p(x_[rank], y_[rank], z_[rank]);
+  const model::Point3f p(x_[rank], y_[rank], z_[rank]);
   const Eigen::Array3f position = p.array();
   std::vector<float>& candidates = scratch.distances;
   std::vector<float>& answer = scratch.nearest;
@@ -163,11 +163,11 @@ void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch
   }
 }
 
-NeighbourGrid grid_for(const std::vector<Point3f>& points, int per_cell) {
+NeighbourGrid grid_for(const std::vector<model::Point3f>& points, int per_cell) {
   if (points.size() < 2) return NeighbourGrid(points, 1.0);
   Eigen::Array3f low = points.front().array();
   Eigen::Array3f high = low;
-  for (const Point3f& p : points) {
+  for (const model::Point3f& p : points) {
     low = low.min(p.array());
     high = high.max(p.array());
   }

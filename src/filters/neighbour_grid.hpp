@@ -25,7 +25,7 @@ struct NeighbourScratch {
 class NeighbourGrid {
  public:
   /// `cell` > 0 [m].
-  NeighbourGrid(const std::vector<Point3f>& points, double cell);
+  NeighbourGrid(const std::vector<model::Point3f>& points, double cell);
 
   /// The squared distances to the k nearest other points of the point at position `rank` of
   /// the grid's cell order, unordered, in `scratch.nearest` (fewer when the cloud has fewer
@@ -43,7 +43,7 @@ class NeighbourGrid {
   std::size_t cell_of(const Eigen::Array3i& cell) const;
   /// Writes the squared distances from p to every point ranked [begin, end) at out[size...],
   /// growing `out` when needed; returns the new size.
-  std::size_t append_distances(const Point3f& p, std::uint32_t begin, std::uint32_t end,
+  std::size_t append_distances(const model::Point3f& p, std::uint32_t begin, std::uint32_t end,
                                std::vector<float>& out, std::size_t size) const;
 
   float cell_;
@@ -57,6 +57,6 @@ class NeighbourGrid {
 };
 
 /// A grid whose occupied cells hold about `per_cell` points (surfaces assumed).
-NeighbourGrid grid_for(const std::vector<Point3f>& points, int per_cell);
+NeighbourGrid grid_for(const std::vector<model::Point3f>& points, int per_cell);
 
 }  // namespace rigdesign::filters

@@ -1,9 +1,9 @@
 #include "rigdesign/filters/pass_through.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 
-std::vector<std::uint32_t> pass_through_indices(const PointCloud& cloud,
-                                                const PassThroughParams& params) {
+std::vector<std::uint32_t> pass_through_indices(const model::PointCloud& cloud,
+                                                const model::PassThroughParams& params) {
   std::vector<std::uint32_t> kept;
   kept.reserve(cloud.size());
   const float low = static_cast<float>(params.min);
@@ -16,18 +16,19 @@ std::vector<std::uint32_t> pass_through_indices(const PointCloud& cloud,
   return kept;
 }
 
-PointCloud pass_through(const PointCloud& cloud, const PassThroughParams& params) {
-  PointCloud result;
+model::PointCloud pass_through(const model::PointCloud& cloud,
+                               const model::PassThroughParams& params) {
+  model::PointCloud result;
   result.origin = cloud.origin;
   result.orientation = cloud.orientation;
   const float low = static_cast<float>(params.min);
   const float high = static_cast<float>(params.max);
   result.points.reserve(cloud.size());
-  for (const Point3f& p : cloud.points) {
+  for (const model::Point3f& p : cloud.points) {
     const bool inside = p[params.axis] >= low && p[params.axis] <= high;
     if (inside != params.negative) result.points.push_back(p);
   }
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-namespace rigdesign {
+namespace rigdesign::filters {
 namespace {
 
 // Points copied into separate x, y, z arrays so the inlier count vectorises.
@@ -13,7 +13,7 @@ struct Columns {
   std::vector<std::uint32_t> index;
 };
 
-Columns gather(const PointCloud& cloud, const std::vector<std::uint32_t>* subset) {
+Columns gather(const model::PointCloud& cloud, const std::vector<std::uint32_t>* subset) {
   Columns columns;
   const std::size_t n = subset ? subset->size() : cloud.size();
   columns.x.resize(n);
@@ -22,7 +22,7 @@ Columns gather(const PointCloud& cloud, const std::vector<std::uint32_t>* subset
   columns.index.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t source = subset ? (*subset)[i] : static_cast<std::uint32_t>(i);
-    const Point3f& p = cloud.points[source];
+    const model::Point3f& p = cloud.points[source];
     columns.x[i] = p.x();
     columns.y[i] = p.y();
     columns.z[i] = p.z();
@@ -42,7 +42,8 @@ std::size_t count_inliers(const Columns& c, const Eigen::Vector4f& plane, float 
 }
 
 // Least-squares plane through points: the centroid and the covariance's smallest eigenvector.
-bool refine(const PointCloud& cloud, const std::vector<std::uint32_t>& inliers, PlaneFit& fit) {
+bool refine(const model::PointCloud& cloud, const std::vector<std::uint32_t>& inliers,
+            PlaneFit& fit) {
   if (inliers.size() < 3) return false;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const std::uint32_t i : inliers) centroid += cloud.points[i].cast<double>();
@@ -62,7 +63,7 @@ bool refine(const PointCloud& cloud, const std::vector<std::uint32_t>& inliers, 
 
 // RANSAC's stopping rule: after k samples of 3, an all-inlier sample was missed with
 // probability (1 - w^3)^k; k is the smallest count that makes it 1 - confidence.
-double hypotheses_needed(double inlier_share, const RansacPlaneParams& params) {
+double hypotheses_needed(double inlier_share, const model::RansacPlaneParams& params) {
   const double all_inliers = inlier_share * inlier_share * inlier_share;
   if (params.confidence >= 1.0 || all_inliers <= 0.0) return static_cast<double>(params.iterations);
   if (all_inliers >= 1.0) return 1.0;
@@ -71,7 +72,7 @@ double hypotheses_needed(double inlier_share, const RansacPlaneParams& params) {
 
 }  // namespace
 
-std::vector<std::uint32_t> points_near_plane(const PointCloud& cloud, const PlaneFit& plane,
+std::vector<std::uint32_t> points_near_plane(const model::PointCloud& cloud, const PlaneFit& plane,
                                              double threshold) {
   std::vector<std::uint32_t> near;
   const Eigen::Vector3f normal = plane.normal.cast<float>();
@@ -84,7 +85,7 @@ std::vector<std::uint32_t> points_near_plane(const PointCloud& cloud, const Plan
   return near;
 }
 
-PlaneFit fit_plane_ransac(const PointCloud& cloud, const RansacPlaneParams& params,
+PlaneFit fit_plane_ransac(const model::PointCloud& cloud, const model::RansacPlaneParams& params,
                           const std::vector<std::uint32_t>* subset) {
   PlaneFit fit;
   const Columns columns = gather(cloud, subset);
@@ -140,4 +141,4 @@ PlaneFit fit_plane_ransac(const PointCloud& cloud, const RansacPlaneParams& para
   return fit;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

@@ -5,10 +5,11 @@
 #include "filters/neighbour_grid.hpp"
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 
-PointCloud select_points(const PointCloud& cloud, const std::vector<std::uint32_t>& indices) {
-  PointCloud result;
+model::PointCloud select_points(const model::PointCloud& cloud,
+                                const std::vector<std::uint32_t>& indices) {
+  model::PointCloud result;
   result.origin = cloud.origin;
   result.orientation = cloud.orientation;
   result.points.reserve(indices.size());
@@ -16,11 +17,11 @@ PointCloud select_points(const PointCloud& cloud, const std::vector<std::uint32_
   return result;
 }
 
-std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,
-                                                       const StatisticalOutlierParams& params) {
+std::vector<std::uint32_t> statistical_outlier_inliers(
+    const model::PointCloud& cloud, const model::StatisticalOutlierParams& params) {
   if (params.neighbours <= 0) {
-    throw InputError(
-        Diagnostic{{}, "statistical_outlier.neighbours", "must be > 0", "a neighbour count N > 0"});
+    throw model::InputError(model::Diagnostic{
+        {}, "statistical_outlier.neighbours", "must be > 0", "a neighbour count N > 0"});
   }
   std::vector<std::uint32_t> kept;
   if (cloud.size() < 2) {
@@ -55,9 +56,9 @@ std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,
   return kept;
 }
 
-PointCloud statistical_outlier_removal(const PointCloud& cloud,
-                                       const StatisticalOutlierParams& params) {
+model::PointCloud statistical_outlier_removal(const model::PointCloud& cloud,
+                                              const model::StatisticalOutlierParams& params) {
   return select_points(cloud, statistical_outlier_inliers(cloud, params));
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

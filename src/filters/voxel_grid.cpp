@@ -14,7 +14,7 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 namespace {
 
 constexpr int kKeyBits = 21;  // three axes packed in 63 bits
@@ -35,7 +35,7 @@ std::uint64_t mix(std::uint64_t key) {
 /// A point's x, y, z and whatever follows it in memory (the next point's x), as four lanes
 /// Eigen vectorises (SSE2, NEON). Never called on a cloud's last point, whose fourth lane
 /// would lie past the end; the fourth lane is ignored.
-Eigen::Array4f four_lanes(const Point3f& p) {
+Eigen::Array4f four_lanes(const model::Point3f& p) {
   return Eigen::Map<const Eigen::Array4f>(p.data());
 }
 
@@ -67,7 +67,7 @@ std::uint64_t voxel_key(const Eigen::Array4f& lanes, const Eigen::Array4f& offse
 }
 
 /// Lowest and highest coordinate per axis.
-std::pair<Eigen::Array3f, Eigen::Array3f> bounding_box(const std::vector<Point3f>& points) {
+std::pair<Eigen::Array3f, Eigen::Array3f> bounding_box(const std::vector<model::Point3f>& points) {
   Eigen::Array4f low = Eigen::Array4f::Constant(std::numeric_limits<float>::infinity());
   Eigen::Array4f high = -low;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
@@ -81,12 +81,14 @@ std::pair<Eigen::Array3f, Eigen::Array3f> bounding_box(const std::vector<Point3f
 
 }  // namespace
 
-PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
+model::PointCloud voxel_grid(const model::PointCloud& cloud, const model::VoxelGridParams& params) {
   if (!(params.leaf > 0) || !std::isfinite(params.leaf)) {
-    throw InputError(Diagnostic{
-        {}, "voxel_grid.leaf", "is " + format_number(params.leaf), "a voxel size in metres, > 0"});
+    throw model::InputError(model::Diagnostic{{},
+                                              "voxel_grid.leaf",
+                                              "is " + model::format_number(params.leaf),
+                                              "a voxel size in metres, > 0"});
   }
-  PointCloud result;
+  model::PointCloud result;
   result.origin = cloud.origin;
   result.orientation = cloud.orientation;
   if (cloud.empty()) return result;
@@ -105,25 +107,27 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
   const Eigen::Array3d first = lowest.head<3>().cast<double>();
   const Eigen::Array3d last = highest.head<3>().cast<double>();
   if (((last - first) >= static_cast<double>(kMaxCells - 1)).any()) {
-    throw InputError(Diagnostic{{},
-                                "voxel_grid.leaf",
-                                "is too small for the cloud's extent: more than 2^21 voxels "
-                                "along an axis would overflow the voxel index",
-                                "a leaf of at least " +
-                                    format_number(static_cast<double>((high - low).maxCoeff()) /
-                                                      static_cast<double>(kMaxCells - 2),
-                                                  3) +
-                                    " m"});
+    throw model::InputError(model::Diagnostic{
+        {},
+        "voxel_grid.leaf",
+        "is too small for the cloud's extent: more than 2^21 voxels "
+        "along an axis would overflow the voxel index",
+        "a leaf of at least " +
+            model::format_number(
+                static_cast<double>((high - low).maxCoeff()) / static_cast<double>(kMaxCells - 2),
+                3) +
+            " m"});
   }
   // Indices are taken in 32-bit lanes; a cloud whose indices leave that range (a small leaf
   // millions of metres from the origin) is refused rather than wrapped.
   constexpr double kLaneLimit = 2147483520.0;  // the largest float below 2^31
   if ((first.abs() >= kLaneLimit).any() || (last.abs() >= kLaneLimit).any()) {
-    throw InputError(Diagnostic{{},
-                                "voxel_grid.leaf",
-                                "puts voxel indices beyond 2^31 (the cloud lies too far from the "
-                                "grid's origin for this leaf)",
-                                "a larger leaf, or a cloud nearer the origin"});
+    throw model::InputError(
+        model::Diagnostic{{},
+                          "voxel_grid.leaf",
+                          "puts voxel indices beyond 2^31 (the cloud lies too far from the "
+                          "grid's origin for this leaf)",
+                          "a larger leaf, or a cloud nearer the origin"});
   }
   const Eigen::Array4i first4 = lowest.cast<int>();
   // Open addressing on the packed voxel key, sums accumulated in place. The table starts at
@@ -156,7 +160,7 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
   constexpr std::size_t kAhead = 16;  // a power of two
   const std::size_t points = cloud.size();
   const auto key_at = [&](std::size_t i) {
-    const Point3f& p = cloud.points[i];
+    const model::Point3f& p = cloud.points[i];
     return voxel_key(i + 1 < points ? four_lanes(p) : Eigen::Array4f(p.x(), p.y(), p.z(), p.x()),
                      offset4, inverse, first4);
   };
@@ -176,7 +180,7 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
       voxel.key = key;
       occupied.push_back(static_cast<std::uint32_t>(slot));
     }
-    const Point3f& p = cloud.points[i];
+    const model::Point3f& p = cloud.points[i];
     voxel.x += p.x();
     voxel.y += p.y();
     voxel.z += p.z();
@@ -192,4 +196,4 @@ PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params) {
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

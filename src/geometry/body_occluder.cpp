@@ -3,21 +3,21 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 namespace {
 
 // Sight lines shorter than this inside the body (m) are grazing contacts, not occlusion.
 constexpr double kGrazing = 1e-9;
 
-double cross2(const Vec2& a, const Vec2& b) {
+double cross2(const model::Vec2& a, const model::Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
-bool inside_polygon(const std::vector<Vec2>& polygon, const Vec2& p) {
+bool inside_polygon(const std::vector<model::Vec2>& polygon, const model::Vec2& p) {
   bool inside = false;
   for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Vec2& a = polygon[i];
-    const Vec2& b = polygon[j];
+    const model::Vec2& a = polygon[i];
+    const model::Vec2& b = polygon[j];
     if ((a.y() > p.y()) != (b.y() > p.y()) &&
         p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
       inside = !inside;
@@ -27,12 +27,12 @@ bool inside_polygon(const std::vector<Vec2>& polygon, const Vec2& p) {
 }
 
 // Parameters s in [0, 1] where the 2D segment a + s (b - a) crosses the polygon's edges.
-void edge_crossings(const std::vector<Vec2>& polygon, const Vec2& a, const Vec2& b,
-                    std::vector<double>& crossings) {
-  const Vec2 d = b - a;
+void edge_crossings(const std::vector<model::Vec2>& polygon, const model::Vec2& a,
+                    const model::Vec2& b, std::vector<double>& crossings) {
+  const model::Vec2 d = b - a;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Vec2& p = polygon[i];
-    const Vec2 e = polygon[(i + 1) % polygon.size()] - p;
+    const model::Vec2& p = polygon[i];
+    const model::Vec2 e = polygon[(i + 1) % polygon.size()] - p;
     const double denominator = cross2(d, e);
     if (std::abs(denominator) < 1e-15) continue;
     const double s = cross2(p - a, e) / denominator;
@@ -43,8 +43,8 @@ void edge_crossings(const std::vector<Vec2>& polygon, const Vec2& a, const Vec2&
 
 // Longest stretch of s in (0, 1) where the segment is inside the body's horizontal
 // cross-section and also within [low, high] (the slab 0 < z < h mapped to s).
-bool overlaps_inside(const std::vector<Vec2>& polygon, const Vec2& a, const Vec2& b, double low,
-                     double high) {
+bool overlaps_inside(const std::vector<model::Vec2>& polygon, const model::Vec2& a,
+                     const model::Vec2& b, double low, double high) {
   std::vector<double> cuts = {0.0, 1.0};
   edge_crossings(polygon, a, b, cuts);
   std::sort(cuts.begin(), cuts.end());
@@ -79,11 +79,11 @@ void append_quadratic_roots(double a, double b, double c, std::vector<double>& r
   }
 }
 
-BodyOccluder::BodyOccluder(const RobotBody& body)
+BodyOccluder::BodyOccluder(const model::RobotBody& body)
     : radius_(body.radius), height_(body.height), footprint_(body.footprint) {}
 
-bool BodyOccluder::blocks(const Vec3& origin, const Vec3& point) const {
-  const Vec3 d = point - origin;
+bool BodyOccluder::blocks(const model::Vec3& origin, const model::Vec3& point) const {
+  const model::Vec3 d = point - origin;
   // Slab 0 < z < h along s in (0, 1).
   double low = 0.0;
   double high = 1.0;
@@ -96,10 +96,10 @@ bool BodyOccluder::blocks(const Vec3& origin, const Vec3& point) const {
     high = std::min(high, std::max(s0, s1));
   }
   if (high - low <= kGrazing) return false;
-  const Vec2 a = origin.head<2>();
-  const Vec2 b = point.head<2>();
+  const model::Vec2 a = origin.head<2>();
+  const model::Vec2 b = point.head<2>();
   if (!footprint_.empty()) return overlaps_inside(footprint_, a, b, low, high);
-  const Vec2 dxy = b - a;
+  const model::Vec2 dxy = b - a;
   const double qa = dxy.squaredNorm();
   const double qb = 2 * a.dot(dxy);
   const double qc = a.squaredNorm() - radius_ * radius_;
@@ -112,24 +112,26 @@ bool BodyOccluder::blocks(const Vec3& origin, const Vec3& point) const {
   return std::min(high, leave) - std::max(low, enter) > kGrazing;
 }
 
-void BodyOccluder::append_critical_parameters(const Vec3& origin, const Vec3& start,
-                                              const Vec3& direction,
+void BodyOccluder::append_critical_parameters(const model::Vec3& origin, const model::Vec3& start,
+                                              const model::Vec3& direction,
                                               std::vector<double>& parameters) const {
-  const Vec3 e = start - origin;  // sight vector at t = 0; it grows by `direction` per unit t
-  const auto plane_root = [&](const Vec3& normal) {
+  const model::Vec3 e =
+      start - origin;  // sight vector at t = 0; it grows by `direction` per unit t
+  const auto plane_root = [&](const model::Vec3& normal) {
     const double slope = normal.dot(direction);
     if (std::abs(slope) > 1e-15) parameters.push_back(-normal.dot(e) / slope);
   };
-  const Vec2 o = origin.head<2>();
+  const model::Vec2 o = origin.head<2>();
   if (!footprint_.empty()) {
     for (std::size_t i = 0; i < footprint_.size(); ++i) {
-      const Vec2& vertex = footprint_[i];
-      const Vec2& next = footprint_[(i + 1) % footprint_.size()];
-      const Vec2 toward = vertex - o;
-      plane_root(Vec3(-toward.y(), toward.x(), 0.0));  // vertical plane through the edge line
+      const model::Vec2& vertex = footprint_[i];
+      const model::Vec2& next = footprint_[(i + 1) % footprint_.size()];
+      const model::Vec2 toward = vertex - o;
+      plane_root(
+          model::Vec3(-toward.y(), toward.x(), 0.0));  // vertical plane through the edge line
       for (const double z : {0.0, height_}) {          // planes through the face edges
-        const Vec3 p(vertex.x(), vertex.y(), z);
-        const Vec3 q(next.x(), next.y(), z);
+        const model::Vec3 p(vertex.x(), vertex.y(), z);
+        const model::Vec3 q(next.x(), next.y(), z);
         plane_root((p - origin).cross(q - origin));
       }
     }
@@ -137,21 +139,21 @@ void BodyOccluder::append_critical_parameters(const Vec3& origin, const Vec3& st
   }
   const double distance = o.norm();
   if (distance > radius_) {  // vertical tangent planes of the side
-    const Vec2 unit = o / distance;
-    const Vec2 across(-unit.y(), unit.x());
+    const model::Vec2 unit = o / distance;
+    const model::Vec2 across(-unit.y(), unit.x());
     const double along = radius_ * radius_ / distance;
     const double aside = radius_ * std::sqrt(distance * distance - radius_ * radius_) / distance;
     for (const double sign : {-1.0, 1.0}) {
-      const Vec2 toward = unit * along + sign * aside * across - o;
-      plane_root(Vec3(-toward.y(), toward.x(), 0.0));
+      const model::Vec2 toward = unit * along + sign * aside * across - o;
+      plane_root(model::Vec3(-toward.y(), toward.x(), 0.0));
     }
   }
   // Cones from the origin through the top and bottom rims: sight q meets the plane z = z_rim
   // at o + k q_xy / q_z (k = z_rim - o_z), on the rim when |o q_z + k q_xy|^2 = r^2 q_z^2.
   for (const double rim : {0.0, height_}) {
     const double k = rim - origin.z();
-    const Vec2 f0 = o * e.z() + k * e.head<2>();
-    const Vec2 f1 = o * direction.z() + k * direction.head<2>();
+    const model::Vec2 f0 = o * e.z() + k * e.head<2>();
+    const model::Vec2 f1 = o * direction.z() + k * direction.head<2>();
     const double r2 = radius_ * radius_;
     append_quadratic_roots(f1.squaredNorm() - r2 * direction.z() * direction.z(),
                            2 * f0.dot(f1) - 2 * r2 * e.z() * direction.z(),
@@ -159,15 +161,15 @@ void BodyOccluder::append_critical_parameters(const Vec3& origin, const Vec3& st
   }
 }
 
-bool BodyOccluder::contains(const Vec3& point) const {
+bool BodyOccluder::contains(const model::Vec3& point) const {
   constexpr double kSurface = 1e-9;
   if (point.z() <= kSurface || point.z() >= height_ - kSurface) return false;
   if (!footprint_.empty()) {
     if (!inside_polygon(footprint_, point.head<2>())) return false;
     // On an edge counts as outside: a sensor may sit flush on the body.
     for (std::size_t i = 0; i < footprint_.size(); ++i) {
-      const Vec2& a = footprint_[i];
-      const Vec2 e = footprint_[(i + 1) % footprint_.size()] - a;
+      const model::Vec2& a = footprint_[i];
+      const model::Vec2 e = footprint_[(i + 1) % footprint_.size()] - a;
       const double s = std::clamp((point.head<2>() - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
       if ((a + s * e - point.head<2>()).norm() <= kSurface) return false;
     }
@@ -178,11 +180,11 @@ bool BodyOccluder::contains(const Vec3& point) const {
 
 double BodyOccluder::radius_at(double theta) const {
   if (footprint_.empty()) return radius_;
-  const Vec2 far = Vec2(std::cos(theta), std::sin(theta)) * (2 * radius_ + 1.0);
+  const model::Vec2 far = model::Vec2(std::cos(theta), std::sin(theta)) * (2 * radius_ + 1.0);
   std::vector<double> crossings;
-  edge_crossings(footprint_, Vec2::Zero(), far, crossings);
+  edge_crossings(footprint_, model::Vec2::Zero(), far, crossings);
   if (crossings.empty()) return 0.0;
   return *std::max_element(crossings.begin(), crossings.end()) * far.norm();
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

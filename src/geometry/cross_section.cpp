@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 
-Vec3 SectionFrame::point(double rho, double z) const {
+model::Vec3 SectionFrame::point(double rho, double z) const {
   return {rho * std::cos(theta), rho * std::sin(theta), z};
 }
 
@@ -13,12 +13,12 @@ SectionFrame section_frame(const BodyOccluder& body, double theta, double distan
 }
 
 IntervalSet column_coverage(const MountedFov& fov, const SectionFrame& frame, double rho) {
-  return fov.covered_along(frame.point(rho, 0.0), Vec3::UnitZ(), 0.0, frame.h);
+  return fov.covered_along(frame.point(rho, 0.0), model::Vec3::UnitZ(), 0.0, frame.h);
 }
 
 IntervalSet floor_coverage(const MountedFov& fov, const SectionFrame& frame) {
-  const Vec3 outward(std::cos(frame.theta), std::sin(frame.theta), 0.0);
-  return fov.covered_along(Vec3::Zero(), outward, frame.r, frame.d);
+  const model::Vec3 outward(std::cos(frame.theta), std::sin(frame.theta), 0.0);
+  return fov.covered_along(model::Vec3::Zero(), outward, frame.r, frame.d);
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 
 void IntervalSet::append(double low, double high) {
   if (high < low) return;
@@ -33,4 +33,4 @@ IntervalSet IntervalSet::united(const IntervalSet& other) const {
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

@@ -4,27 +4,28 @@
 #include <cmath>
 #include <numbers>
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 namespace {
 
 // Pieces of a line shorter than this [m or line parameter] are not tested on their own.
 constexpr double kPiece = 1e-12;
 
 // Roots of the quadratic |c + t w|^2 - radius^2 = 0.
-void append_sphere_roots(const Vec3& c, const Vec3& w, double radius, std::vector<double>& roots) {
+void append_sphere_roots(const model::Vec3& c, const model::Vec3& w, double radius,
+                         std::vector<double>& roots) {
   append_quadratic_roots(w.squaredNorm(), 2 * c.dot(w), c.squaredNorm() - radius * radius, roots);
 }
 
 // Roots of the linear n . (c + t w) = 0.
-void append_plane_root(const Vec3& normal, const Vec3& c, const Vec3& w,
+void append_plane_root(const model::Vec3& normal, const model::Vec3& c, const model::Vec3& w,
                        std::vector<double>& roots) {
   const double slope = normal.dot(w);
   if (std::abs(slope) > 1e-15) roots.push_back(-normal.dot(c) / slope);
 }
 
 // Roots where the angle between c + t w and `axis` equals acos(sigma): (k.q)^2 = sigma^2 |q|^2.
-void append_cone_roots(const Vec3& axis, double sigma, const Vec3& c, const Vec3& w,
-                       std::vector<double>& roots) {
+void append_cone_roots(const model::Vec3& axis, double sigma, const model::Vec3& c,
+                       const model::Vec3& w, std::vector<double>& roots) {
   const double kc = axis.dot(c);
   const double kw = axis.dot(w);
   const double s2 = sigma * sigma;
@@ -34,14 +35,14 @@ void append_cone_roots(const Vec3& axis, double sigma, const Vec3& c, const Vec3
 
 }  // namespace
 
-MountedFov::MountedFov(const SensorMode& mode, const Pose3& T_robot_sensor,
+MountedFov::MountedFov(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
                        const BodyOccluder& body)
     : mode_(&mode),
       T_robot_sensor_(T_robot_sensor),
       R_sensor_robot_(T_robot_sensor.linear().transpose()),
       origin_(T_robot_sensor.translation()),
       body_(&body) {
-  const FieldOfView& fov = mode.fov;
+  const model::FieldOfView& fov = mode.fov;
   tan_half_h_ = std::tan(fov.horizontal / 2);
   tan_half_v_ = std::tan(fov.vertical / 2);
   cos_half_apex_ = std::cos(fov.horizontal / 2);
@@ -56,21 +57,22 @@ MountedFov::MountedFov(const SensorMode& mode, const Pose3& T_robot_sensor,
 // corner rays at x = max range (|q| <= max implies q_x <= max). Seen from above, that hull
 // spans the azimuths of its five points unless it encloses the robot's vertical axis.
 void MountedFov::bound_azimuths() {
-  if (mode_->fov.shape != FovShape::pyramid && mode_->fov.shape != FovShape::cone) return;
+  if (mode_->fov.shape != model::FovShape::pyramid && mode_->fov.shape != model::FovShape::cone)
+    return;
   const double far = mode_->max_range;
   const double tan_h =
-      mode_->fov.shape == FovShape::cone ? std::tan(mode_->fov.horizontal / 2) : tan_half_h_;
-  const double tan_v = mode_->fov.shape == FovShape::cone ? tan_h : tan_half_v_;
-  std::vector<Vec2> hull_points = {origin_.head<2>()};
+      mode_->fov.shape == model::FovShape::cone ? std::tan(mode_->fov.horizontal / 2) : tan_half_h_;
+  const double tan_v = mode_->fov.shape == model::FovShape::cone ? tan_h : tan_half_v_;
+  std::vector<model::Vec2> hull_points = {origin_.head<2>()};
   for (const double sy : {-1.0, 1.0}) {
     for (const double sz : {-1.0, 1.0}) {
       hull_points.push_back(
-          (T_robot_sensor_ * Vec3(far, sy * far * tan_h, sz * far * tan_v)).head<2>());
+          (T_robot_sensor_ * model::Vec3(far, sy * far * tan_h, sz * far * tan_v)).head<2>());
     }
   }
   // The hull encloses the axis when the points' azimuths leave no gap wider than pi.
   std::vector<double> azimuths;
-  for (const Vec2& p : hull_points) {
+  for (const model::Vec2& p : hull_points) {
     if (p.norm() < 1e-12) return;  // a point on the axis: every azimuth
     azimuths.push_back(std::atan2(p.y(), p.x()));
   }
@@ -101,40 +103,41 @@ bool MountedFov::may_reach_azimuth(double theta) const {
 // combinations of its four corner rays, so checking the corners covers them all; a cone's
 // directions stay within its half-angle of the axis.
 bool MountedFov::rays_can_reach(const BodyOccluder& body) const {
-  const Vec2 o = origin_.head<2>();
+  const model::Vec2 o = origin_.head<2>();
   if (!body.is_cylinder() || o.norm() < body.radius()) return true;
-  const Vec3 outward(o.x(), o.y(), 0.0);
-  const Mat3& R_robot_sensor = T_robot_sensor_.linear();
+  const model::Vec3 outward(o.x(), o.y(), 0.0);
+  const model::Mat3& R_robot_sensor = T_robot_sensor_.linear();
   switch (mode_->fov.shape) {
-    case FovShape::pyramid:
+    case model::FovShape::pyramid:
       for (const double sy : {-1.0, 1.0}) {
         for (const double sz : {-1.0, 1.0}) {
-          const Vec3 corner = R_robot_sensor * Vec3(1.0, sy * tan_half_h_, sz * tan_half_v_);
+          const model::Vec3 corner =
+              R_robot_sensor * model::Vec3(1.0, sy * tan_half_h_, sz * tan_half_v_);
           if (corner.dot(outward) < 0) return true;
         }
       }
       return false;
-    case FovShape::cone: {
+    case model::FovShape::cone: {
       const double axis_to_outward = std::acos(
-          std::clamp((R_robot_sensor * Vec3::UnitX()).dot(outward.normalized()), -1.0, 1.0));
+          std::clamp((R_robot_sensor * model::Vec3::UnitX()).dot(outward.normalized()), -1.0, 1.0));
       return axis_to_outward + mode_->fov.horizontal / 2 > std::numbers::pi / 2;
     }
-    case FovShape::band:
-    case FovShape::planar: return true;
+    case model::FovShape::band:
+    case model::FovShape::planar: return true;
   }
   return true;
 }
 
-bool MountedFov::in_fov(const Vec3& q) const {
+bool MountedFov::in_fov(const model::Vec3& q) const {
   const double distance = q.norm();
   if (distance < mode_->min_range || distance > mode_->max_range || distance == 0.0) return false;
   switch (mode_->fov.shape) {
-    case FovShape::pyramid:
+    case model::FovShape::pyramid:
       return q.x() > 0 && std::abs(q.y()) <= tan_half_h_ * q.x() &&
              std::abs(q.z()) <= tan_half_v_ * q.x();
-    case FovShape::cone: return q.x() >= cos_half_apex_ * distance;
-    case FovShape::band:
-    case FovShape::planar: {
+    case model::FovShape::cone: return q.x() >= cos_half_apex_ * distance;
+    case model::FovShape::band:
+    case model::FovShape::planar: {
       if (q.z() < sin_elevation_min_ * distance || q.z() > sin_elevation_max_ * distance) {
         return false;
       }
@@ -145,46 +148,47 @@ bool MountedFov::in_fov(const Vec3& q) const {
   return false;
 }
 
-bool MountedFov::sees(const Vec3& p_robot) const {
+bool MountedFov::sees(const model::Vec3& p_robot) const {
   return in_fov(R_sensor_robot_ * (p_robot - origin_)) &&
          !(may_be_occluded_ && body_->blocks(origin_, p_robot));
 }
 
-void MountedFov::append_fov_roots(const Vec3& c, const Vec3& w, std::vector<double>& roots) const {
+void MountedFov::append_fov_roots(const model::Vec3& c, const model::Vec3& w,
+                                  std::vector<double>& roots) const {
   append_sphere_roots(c, w, mode_->min_range, roots);
   append_sphere_roots(c, w, mode_->max_range, roots);
   switch (mode_->fov.shape) {
-    case FovShape::pyramid:
-      append_plane_root(Vec3(1, 0, 0), c, w, roots);
+    case model::FovShape::pyramid:
+      append_plane_root(model::Vec3(1, 0, 0), c, w, roots);
       for (const double sign : {-1.0, 1.0}) {
-        append_plane_root(Vec3(tan_half_h_, sign, 0), c, w, roots);
-        append_plane_root(Vec3(tan_half_v_, 0, sign), c, w, roots);
+        append_plane_root(model::Vec3(tan_half_h_, sign, 0), c, w, roots);
+        append_plane_root(model::Vec3(tan_half_v_, 0, sign), c, w, roots);
       }
       break;
-    case FovShape::cone:
-      append_cone_roots(Vec3::UnitX(), cos_half_apex_, c, w, roots);
-      append_plane_root(Vec3::UnitX(), c, w, roots);
+    case model::FovShape::cone:
+      append_cone_roots(model::Vec3::UnitX(), cos_half_apex_, c, w, roots);
+      append_plane_root(model::Vec3::UnitX(), c, w, roots);
       break;
-    case FovShape::band:
-    case FovShape::planar:
+    case model::FovShape::band:
+    case model::FovShape::planar:
       // Elevation limits are cones about the sensor's z axis; their sign flips at q_z = 0.
-      append_cone_roots(Vec3::UnitZ(), sin_elevation_min_, c, w, roots);
-      append_cone_roots(Vec3::UnitZ(), sin_elevation_max_, c, w, roots);
-      append_plane_root(Vec3::UnitZ(), c, w, roots);
+      append_cone_roots(model::Vec3::UnitZ(), sin_elevation_min_, c, w, roots);
+      append_cone_roots(model::Vec3::UnitZ(), sin_elevation_max_, c, w, roots);
+      append_plane_root(model::Vec3::UnitZ(), c, w, roots);
       if (half_span_ < std::numbers::pi) {  // azimuth limits: half-planes through the z axis
-        append_plane_root(Vec3(-std::sin(half_span_), std::cos(half_span_), 0), c, w, roots);
-        append_plane_root(Vec3(std::sin(half_span_), std::cos(half_span_), 0), c, w, roots);
-        append_plane_root(Vec3::UnitX(), c, w, roots);
-        append_plane_root(Vec3::UnitY(), c, w, roots);
+        append_plane_root(model::Vec3(-std::sin(half_span_), std::cos(half_span_), 0), c, w, roots);
+        append_plane_root(model::Vec3(std::sin(half_span_), std::cos(half_span_), 0), c, w, roots);
+        append_plane_root(model::Vec3::UnitX(), c, w, roots);
+        append_plane_root(model::Vec3::UnitY(), c, w, roots);
       }
       break;
   }
 }
 
-IntervalSet MountedFov::covered_along(const Vec3& start, const Vec3& direction, double t_min,
-                                      double t_max) const {
-  const Vec3 c = R_sensor_robot_ * (start - origin_);
-  const Vec3 w = R_sensor_robot_ * direction;
+IntervalSet MountedFov::covered_along(const model::Vec3& start, const model::Vec3& direction,
+                                      double t_min, double t_max) const {
+  const model::Vec3 c = R_sensor_robot_ * (start - origin_);
+  const model::Vec3 w = R_sensor_robot_ * direction;
   thread_local std::vector<double> cuts;  // reused: this runs once per raster column
   cuts.clear();
   cuts.push_back(t_min);
@@ -207,4 +211,4 @@ IntervalSet MountedFov::covered_along(const Vec3& start, const Vec3& direction, 
   return covered;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

@@ -6,7 +6,7 @@
 
 #include "rigdesign/model/polygon_area.hpp"
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 namespace {
 
 struct Column {
@@ -72,7 +72,7 @@ class ColumnSampler {
   const TessellationSettings& settings_;
 };
 
-void push_distinct(Polygon2& polygon, const Vec2& vertex) {
+void push_distinct(Polygon2& polygon, const model::Vec2& vertex) {
   if (polygon.empty() || (polygon.back() - vertex).norm() > 1e-12) polygon.push_back(vertex);
 }
 
@@ -85,14 +85,15 @@ void close_strips(const std::vector<Column>& columns, std::size_t first, std::si
   for (std::size_t k = 0; k < strips; ++k) {
     Polygon2 polygon;
     for (std::size_t c = first; c <= last; ++c) {
-      push_distinct(polygon, Vec2(columns[c].rho, columns[c].covered.intervals()[k].first));
+      push_distinct(polygon, model::Vec2(columns[c].rho, columns[c].covered.intervals()[k].first));
     }
     for (std::size_t c = last + 1; c-- > first;) {
-      push_distinct(polygon, Vec2(columns[c].rho, columns[c].covered.intervals()[k].second));
+      push_distinct(polygon, model::Vec2(columns[c].rho, columns[c].covered.intervals()[k].second));
     }
     if (polygon.size() > 2 && (polygon.front() - polygon.back()).norm() <= 1e-12)
       polygon.pop_back();
-    if (polygon.size() >= 3 && signed_area(polygon) > 1e-14) polygons.push_back(std::move(polygon));
+    if (polygon.size() >= 3 && model::signed_area(polygon) > 1e-14)
+      polygons.push_back(std::move(polygon));
   }
 }
 
@@ -114,4 +115,4 @@ std::vector<Polygon2> section_polygons(const MountedFov& fov, const SectionFrame
   return polygons;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

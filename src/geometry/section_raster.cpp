@@ -4,7 +4,7 @@
 #include <bit>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 namespace {
 
 constexpr int kWordBits = 64;
@@ -112,8 +112,8 @@ SectionRaster rasterize(const MountedFov& fov, const SectionFrame& frame, const 
   const double row_height = frame.h / grid.rows;
   // Columns whose horizontal distance from the sensor exceeds its max range see nothing:
   // |rho * e_theta - o|^2 <= max^2 bounds rho to [rho_near, rho_far].
-  const Vec2 outward(std::cos(frame.theta), std::sin(frame.theta));
-  const Vec2 o = fov.origin().head<2>();
+  const model::Vec2 outward(std::cos(frame.theta), std::sin(frame.theta));
+  const model::Vec2 o = fov.origin().head<2>();
   const double along = o.dot(outward);
   const double reach2 =
       fov.mode().max_range * fov.mode().max_range - (o.squaredNorm() - along * along);
@@ -141,4 +141,4 @@ SectionRaster rasterize(const MountedFov& fov, const SectionFrame& frame, const 
   return raster;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

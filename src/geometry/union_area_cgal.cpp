@@ -6,7 +6,7 @@
 
 #include "rigdesign/geometry/section_polygons.hpp"
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
@@ -16,7 +16,8 @@ using CgalPolygonSet = CGAL::Polygon_set_2<Kernel>;
 
 CgalPolygon to_cgal(const Polygon2& polygon) {
   CgalPolygon result;
-  for (const Vec2& vertex : polygon) result.push_back(Kernel::Point_2(vertex.x(), vertex.y()));
+  for (const model::Vec2& vertex : polygon)
+    result.push_back(Kernel::Point_2(vertex.x(), vertex.y()));
   if (result.is_clockwise_oriented()) result.reverse_orientation();
   return result;
 }
@@ -41,4 +42,4 @@ double union_area(const std::vector<std::vector<Polygon2>>& per_sensor) {
   return CGAL::to_double(area);
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

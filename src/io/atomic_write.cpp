@@ -10,11 +10,11 @@
 
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& problem) {
-  throw InputError(Diagnostic{{path, 0, 0}, "output", problem, "a writable path"});
+  throw model::InputError(model::Diagnostic{{path, 0, 0}, "output", problem, "a writable path"});
 }
 
 }  // namespace
@@ -49,4 +49,4 @@ void write_file_atomically(const std::string& path, const std::string& contents)
   }
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -2,7 +2,7 @@
 
 #include "io/config/yaml_reader.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 FileKind detect_file_kind(const std::string& path) {
   const YAML::Node root = io::load_yaml_file(path);
@@ -13,7 +13,7 @@ FileKind detect_file_kind(const std::string& path) {
     if (root["range"].IsDefined()) return FileKind::requirements;
     if (root["steps"].IsDefined()) return FileKind::policy;
   }
-  throw InputError(Diagnostic{
+  throw model::InputError(model::Diagnostic{
       {path, 1, 1},
       "(document)",
       root.IsMap() ? "is neither a sensor library, a rig nor requirements" : "is not a YAML map",
@@ -32,4 +32,4 @@ std::string to_string(FileKind kind) {
   return "?";
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
                                         ScenarioParams scenario_params,
@@ -52,4 +52,4 @@ std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
   return rows;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

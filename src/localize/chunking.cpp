@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::localize {
 namespace {
 
 constexpr int kKeyBits = 21;  // three signed cell indices packed in 63 bits
 constexpr std::int64_t kKeyOffset = std::int64_t{1} << (kKeyBits - 1);
 constexpr std::uint64_t kKeyMask = (std::uint64_t{1} << kKeyBits) - 1;
 
-std::uint64_t cell_key(const Vec3& position, double size) {
+std::uint64_t cell_key(const model::Vec3& position, double size) {
   std::uint64_t key = 0;
   for (int axis = 0; axis < 3; ++axis) {
     // Cells wrap around beyond +-100 km at 10 cm: far outside any robot's log. The clamp keeps
@@ -28,7 +28,7 @@ double wls_weight(const Chunk& chunk) {
   return std::sqrt(static_cast<double>(chunk.count)) / chunk.mean_range();
 }
 
-std::size_t ChunkAccumulator::add(const Vec3& position, double range, double rssi_dbm,
+std::size_t ChunkAccumulator::add(const model::Vec3& position, double range, double rssi_dbm,
                                   Chunk* previous) {
   const auto [it, inserted] =
       index_of_.try_emplace(cell_key(position, params_.size), chunks_.size());
@@ -53,4 +53,4 @@ std::vector<Chunk> chunk_readings(const RssiLog& log, int emitter, const PathLos
   return accumulator.chunks();
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace rigdesign::localize_detail {
+namespace rigdesign::localize::detail {
 namespace {
 
 constexpr double kMinDistance = 0.01;  // [m] keeps log10 finite on a chunk's own position
@@ -14,13 +14,13 @@ constexpr double kMaxExponent = 8.0;
 
 // Length in the fitted dimensions (x, y when z is unobservable). Written out: GCC 12 warns
 // about Eigen's head(d) with a run-time d on a fixed-size vector.
-double norm_in(const Vec3& v, int d) {
+double norm_in(const model::Vec3& v, int d) {
   return d == 3 ? v.norm() : std::hypot(v.x(), v.y());
 }
 
 }  // namespace
 
-double distance(const Vec3& q, const Vec3& p, int d) {
+double distance(const model::Vec3& q, const model::Vec3& p, int d) {
   return std::max(norm_in(q - p, d), kMinDistance);
 }
 
@@ -57,7 +57,7 @@ double robust_cost(double e, double huber) {
 
 // The level (and exponent) minimising the weighted squared residuals for a fixed q: a linear
 // least-squares problem in (a, n), which makes scoring a candidate one pass over the data.
-Solution closed_form(const std::vector<Observation>& observations, const Vec3& q,
+Solution closed_form(const std::vector<Observation>& observations, const model::Vec3& q,
                      const Model& model) {
   double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const Observation& o : observations) {
@@ -109,7 +109,7 @@ double linearise(const std::vector<Observation>& observations, const Model& mode
   Eigen::VectorXd row(parameters);
   double cost = 0.0;
   for (const Observation& o : observations) {
-    const Vec3 diff = s.q - o.p;
+    const model::Vec3 diff = s.q - o.p;
     const double raw = norm_in(diff, model.d);
     const double dist = std::max(raw, kMinDistance);
     const double log_d = std::log10(dist);
@@ -206,4 +206,4 @@ ResidualStats residual_stats(const std::vector<Observation>& observations, const
   return stats;
 }
 
-}  // namespace rigdesign::localize_detail
+}  // namespace rigdesign::localize::detail

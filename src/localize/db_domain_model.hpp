@@ -8,10 +8,10 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign::localize_detail {
+namespace rigdesign::localize::detail {
 
 struct Observation {
-  Vec3 p;
+  model::Vec3 p;
   double m = 0.0;  // mean RSSI [dBm]
   double w = 0.0;  // chunk count over the mean count
 };
@@ -32,7 +32,7 @@ struct Model {
 };
 
 struct Solution {
-  Vec3 q = Vec3::Zero();
+  model::Vec3 q = model::Vec3::Zero();
   double a = 0.0;
   double n = 0.0;
   double cost = 0.0;
@@ -45,11 +45,11 @@ struct ResidualStats {
 };
 
 /// Distance in the model's dimensions, at least 1 cm.
-double distance(const Vec3& q, const Vec3& p, int d);
+double distance(const model::Vec3& q, const model::Vec3& p, int d);
 
 // The level (and exponent) minimising the weighted squared residuals for a fixed q: a linear
 // least-squares problem in (a, n), which makes scoring a candidate one pass over the data.
-Solution closed_form(const std::vector<Observation>& observations, const Vec3& q,
+Solution closed_form(const std::vector<Observation>& observations, const model::Vec3& q,
                      const Model& model);
 
 /// Levenberg-Marquardt from `s`; the result carries J^T W J for the covariance.
@@ -61,4 +61,4 @@ Solution levenberg_marquardt(const std::vector<Observation>& observations, const
 ResidualStats residual_stats(const std::vector<Observation>& observations, const Model& model,
                              const Solution& s);
 
-}  // namespace rigdesign::localize_detail
+}  // namespace rigdesign::localize::detail

@@ -2,7 +2,7 @@
 
 #include "rigdesign/localize/wls_multilateration.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 std::string to_string(LocalizeMethod method) {
   switch (method) {
@@ -74,4 +74,4 @@ EmitterEstimate localize_emitter(const RssiLog& log, int emitter, LocalizeMethod
   return estimate;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <limits>
 
-namespace rigdesign {
+namespace rigdesign::localize {
 namespace {
 
 constexpr double kMadToSigma = 1.4826;  // MAD of a normal distribution times this is sigma
 
-double horizontal(const Vec3& a, const Vec3& b) {
+double horizontal(const model::Vec3& a, const model::Vec3& b) {
   return std::hypot(a.x() - b.x(), a.y() - b.y());
 }
 
@@ -40,8 +40,8 @@ double relative_threshold(const Co2Log& log, std::size_t i, const GasDetectionPa
 }
 
 // The position on the path `lag` seconds before reading i, interpolated between readings.
-Vec3 position_before(const Co2Log& log, std::size_t i, double lag,
-                     const GasDetectionParams& params) {
+model::Vec3 position_before(const Co2Log& log, std::size_t i, double lag,
+                            const GasDetectionParams& params) {
   const double target = time_of(log, i, params) - lag;
   std::size_t k = i;
   while (k > 0 && time_of(log, k - 1, params) > target) --k;
@@ -84,7 +84,7 @@ std::vector<GasDetection> detect_gas(const Co2Log& log, GasThreshold threshold,
     if (i >= width) sum -= log.readings[i - width].ppm;
     if (i + 1 < width) continue;  // the moving average needs its window full
     const double average = sum / static_cast<double>(width);
-    const Vec3& here = log.readings[i].position;
+    const model::Vec3& here = log.readings[i].position;
     if (active) {
       if (horizontal(here, log.readings[current.trigger_index].position) <= params.spacing) {
         if (params.refine_strongest && average > current.ppm) {
@@ -142,4 +142,4 @@ GasScore score_gas(const Co2Log& log, const std::vector<GasDetection>& detection
   return score;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

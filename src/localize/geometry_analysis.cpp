@@ -4,20 +4,20 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
-Vec3 GeometryAnalysis::mirror(const Vec3& point) const {
-  const Vec3 offset = point - centroid;
-  Vec3 image = centroid + 2.0 * offset.dot(principal_axis) * principal_axis - offset;
+model::Vec3 GeometryAnalysis::mirror(const model::Vec3& point) const {
+  const model::Vec3 offset = point - centroid;
+  model::Vec3 image = centroid + 2.0 * offset.dot(principal_axis) * principal_axis - offset;
   if (dimensions == 2) image.z() = point.z();
   return image;
 }
 
-Vec3 GeometryAnalysis::inverse(const Vec3& point) const {
-  Vec3 offset = point - circle_centre;
+model::Vec3 GeometryAnalysis::inverse(const model::Vec3& point) const {
+  model::Vec3 offset = point - circle_centre;
   offset.z() = 0.0;
   const double squared = std::max(offset.squaredNorm(), 1e-12);
-  Vec3 image = circle_centre + circle_radius * circle_radius / squared * offset;
+  model::Vec3 image = circle_centre + circle_radius * circle_radius / squared * offset;
   image.z() = point.z();
   return image;
 }
@@ -31,7 +31,7 @@ void fit_circle(const std::vector<Chunk>& chunks, const GeometryParams& params,
   Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
   Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
   for (const Chunk& chunk : chunks) {
-    const Vec3 p = chunk.position() - analysis->centroid;  // centred for conditioning
+    const model::Vec3 p = chunk.position() - analysis->centroid;  // centred for conditioning
     const Eigen::Vector3d row(2 * p.x(), 2 * p.y(), 1.0);
     normal += chunk.count * row * row.transpose();
     rhs += chunk.count * row * (p.x() * p.x() + p.y() * p.y());
@@ -39,7 +39,7 @@ void fit_circle(const std::vector<Chunk>& chunks, const GeometryParams& params,
   const Eigen::Vector3d solution = normal.ldlt().solve(rhs);
   const double r2 = solution(2) + solution(0) * solution(0) + solution(1) * solution(1);
   if (!solution.allFinite() || !(r2 > 0)) return;
-  analysis->circle_centre = analysis->centroid + Vec3(solution(0), solution(1), 0.0);
+  analysis->circle_centre = analysis->centroid + model::Vec3(solution(0), solution(1), 0.0);
   analysis->circle_radius = std::sqrt(r2);
   double squares = 0.0, total = 0.0;
   for (const Chunk& chunk : chunks) {
@@ -65,9 +65,9 @@ GeometryAnalysis analyse_geometry(const std::vector<Chunk>& chunks, const Geomet
   }
   if (total <= 0) return analysis;
   analysis.centroid /= total;
-  Mat3 scatter = Mat3::Zero();
+  model::Mat3 scatter = model::Mat3::Zero();
   for (const Chunk& chunk : chunks) {
-    const Vec3 offset = chunk.position() - analysis.centroid;
+    const model::Vec3 offset = chunk.position() - analysis.centroid;
     scatter += chunk.count * offset * offset.transpose();
   }
   scatter /= total;
@@ -79,11 +79,11 @@ GeometryAnalysis analyse_geometry(const std::vector<Chunk>& chunks, const Geomet
   const auto values = eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   analysis.along_spread = values(d - 1);
   analysis.lateral_spread = values(d - 2);
-  analysis.principal_axis = Vec3::Zero();
+  analysis.principal_axis = model::Vec3::Zero();
   for (int k = 0; k < d; ++k) analysis.principal_axis(k) = eigen.eigenvectors()(k, d - 1);
   analysis.collinear = analysis.lateral_spread < params.min_lateral_spread;
   if (!analysis.collinear && chunks.size() >= 3) fit_circle(chunks, params, &analysis);
   return analysis;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -6,13 +6,13 @@
 
 #include "rigdesign/localize/wls_multilateration.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 namespace {
 
 // Errors of the running estimate after each reading (wls: O(1) per reading) or at
 // checkpoints (nls, map: a full solve on the chunks so far).
 std::vector<std::pair<int, double>> running_errors(const RssiLog& log, int emitter,
-                                                   const Vec3& truth,
+                                                   const model::Vec3& truth,
                                                    const EmitterEstimate& final_estimate,
                                                    const LocalizeParams& params,
                                                    const KpiParams& kpi) {
@@ -74,8 +74,8 @@ ErrorStats error_stats(std::vector<double> errors) {
   return stats;
 }
 
-double position_error(const Vec3& estimate, const Vec3& truth, int dimensions) {
-  const Vec3 offset = estimate - truth;
+double position_error(const model::Vec3& estimate, const model::Vec3& truth, int dimensions) {
+  const model::Vec3 offset = estimate - truth;
   return dimensions == 3 ? offset.norm() : std::hypot(offset.x(), offset.y());
 }
 
@@ -87,7 +87,7 @@ std::optional<int> data_amount(const std::vector<std::pair<int, double>>& errors
   return std::nullopt;
 }
 
-EmitterKpis evaluate_emitter(const RssiLog& log, int emitter, const Vec3& truth,
+EmitterKpis evaluate_emitter(const RssiLog& log, int emitter, const model::Vec3& truth,
                              const EmitterEstimate& final_estimate, const LocalizeParams& params,
                              const KpiParams& kpi) {
   EmitterKpis kpis;
@@ -115,4 +115,4 @@ EmitterKpis evaluate_emitter(const RssiLog& log, int emitter, const Vec3& truth,
   return kpis;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -7,15 +7,15 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 namespace {
 
 constexpr const char* kPhoneBssid = "02:00:00:00:00:01";  // a locally administered address
 
 struct Layout {
   std::string description;
-  std::vector<Vec2> waypoints;
-  Vec2 phone;
+  std::vector<model::Vec2> waypoints;
+  model::Vec2 phone;
   std::vector<WallSegment> walls;
 };
 
@@ -23,16 +23,16 @@ struct Layout {
 Layout loop_layout() {
   Layout layout;
   layout.description = "circle the phone at 12 m outdoors, then approach it to 5 m";
-  const Vec2 centre(0, 0);
+  const model::Vec2 centre(0, 0);
   layout.phone = {1.0, -0.8};
   constexpr double kRadius = 12.0;
   constexpr int kSegments = 120;
   for (int i = 0; i <= kSegments; ++i) {
     const double angle = 2 * std::numbers::pi * i / kSegments;
-    layout.waypoints.push_back(centre + kRadius * Vec2(std::cos(angle), std::sin(angle)));
+    layout.waypoints.push_back(centre + kRadius * model::Vec2(std::cos(angle), std::sin(angle)));
   }
-  const Vec2 start = layout.waypoints.back();
-  const Vec2 towards = (layout.phone - start).normalized();
+  const model::Vec2 start = layout.waypoints.back();
+  const model::Vec2 towards = (layout.phone - start).normalized();
   layout.waypoints.push_back(layout.phone - 5.0 * towards);
   return layout;
 }
@@ -73,9 +73,12 @@ Layout hallway_layout() {
   return layout;
 }
 
-bool segments_cross(const Vec2& p, const Vec2& p2, const Vec2& q, const Vec2& q2) {
-  const auto cross = [](const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); };
-  const Vec2 r = p2 - p, s = q2 - q;
+bool segments_cross(const model::Vec2& p, const model::Vec2& p2, const model::Vec2& q,
+                    const model::Vec2& q2) {
+  const auto cross = [](const model::Vec2& a, const model::Vec2& b) {
+    return a.x() * b.y() - a.y() * b.x();
+  };
+  const model::Vec2 r = p2 - p, s = q2 - q;
   const double denominator = cross(r, s);
   if (std::abs(denominator) < 1e-12) return false;  // parallel: grazing a wall costs nothing
   const double t = cross(q - p, s) / denominator;
@@ -90,7 +93,8 @@ const std::vector<std::string>& scenario_names() {
   return names;
 }
 
-double wall_loss_db(const std::vector<WallSegment>& walls, const Vec3& from, const Vec3& to) {
+double wall_loss_db(const std::vector<WallSegment>& walls, const model::Vec3& from,
+                    const model::Vec3& to) {
   double loss = 0.0;
   for (const WallSegment& wall : walls) {
     if (segments_cross(from.head<2>(), to.head<2>(), wall.a, wall.b)) loss += wall.attenuation_db;
@@ -109,20 +113,20 @@ Scenario make_scenario(const std::string& name, const ScenarioParams& params) {
   } else if (name == "hallway") {
     layout = hallway_layout();
   } else {
-    throw InputError(Diagnostic{{"(command line)", 0, 0},
-                                "--scenario",
-                                "unknown scenario '" + name + "'",
-                                join(scenario_names(), ", ")});
+    throw model::InputError(model::Diagnostic{{"(command line)", 0, 0},
+                                              "--scenario",
+                                              "unknown scenario '" + name + "'",
+                                              model::join(scenario_names(), ", ")});
   }
   Scenario scenario;
   scenario.name = name;
   scenario.description = layout.description;
   if (params.wall_attenuation_db > 0) scenario.walls = layout.walls;
-  const Vec3 phone(layout.phone.x(), layout.phone.y(), params.emitter_height);
+  const model::Vec3 phone(layout.phone.x(), layout.phone.y(), params.emitter_height);
   scenario.truth.push_back({kPhoneBssid, phone});
   scenario.log.source = "scenario " + name + " seed " + std::to_string(params.seed);
   scenario.log.emitters.push_back(kPhoneBssid);
-  for (const Vec2& w : layout.waypoints)
+  for (const model::Vec2& w : layout.waypoints)
     scenario.path.emplace_back(w.x(), w.y(), params.antenna_height);
 
   std::mt19937_64 random(params.seed);
@@ -134,15 +138,15 @@ Scenario make_scenario(const std::string& name, const ScenarioParams& params) {
   const double rho = std::exp(-spacing / params.decorrelation_distance);
   double t = 0.0;
   for (std::size_t leg = 0; leg + 1 < scenario.path.size(); ++leg) {
-    const Vec3 from = scenario.path[leg], to = scenario.path[leg + 1];
+    const model::Vec3 from = scenario.path[leg], to = scenario.path[leg + 1];
     const double length = (to - from).norm();
     for (double s = 0.0; s < length; s += spacing) {
-      const Vec3 robot = from + (to - from) * (s / length);
+      const model::Vec3 robot = from + (to - from) * (s / length);
       // Gudmundson's model: AR(1) along the travelled distance keeps the marginal sigma.
       shadowing = rho * shadowing + std::sqrt(1 - rho * rho) * params.shadowing_db * normal(random);
       const double rssi = rssi_at_range((phone - robot).norm(), truth_model) -
                           wall_loss_db(scenario.walls, robot, phone) + shadowing;
-      Vec3 logged = robot;
+      model::Vec3 logged = robot;
       logged.x() += params.position_noise * normal(random);
       logged.y() += params.position_noise * normal(random);
       if (rssi >= params.sensitivity_dbm) {
@@ -155,4 +159,4 @@ Scenario make_scenario(const std::string& name, const ScenarioParams& params) {
   return scenario;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::localize {
 namespace {
 
 // A ring's Gaussian profile is cut where it has fallen to e^-8 (4 sigma): beyond, the mask
@@ -41,7 +41,7 @@ ObjectMapResult object_map(const std::vector<Chunk>& chunks, const GeometryAnaly
                            const PathLossParams& path_loss, const ObjectMapParams& params) {
   ObjectMapResult result;
   if (chunks.empty()) return result;
-  Vec2 low = Vec2::Constant(1e300), high = Vec2::Constant(-1e300);
+  model::Vec2 low = model::Vec2::Constant(1e300), high = model::Vec2::Constant(-1e300);
   for (const Chunk& chunk : chunks) {
     low = low.cwiseMin(chunk.position().head<2>());
     high = high.cwiseMax(chunk.position().head<2>());
@@ -50,7 +50,7 @@ ObjectMapResult object_map(const std::vector<Chunk>& chunks, const GeometryAnaly
   high.array() += params.margin;
   ObjectMap& map = result.map;
   map.cell = params.cell;
-  const Vec2 extent = high - low;
+  const model::Vec2 extent = high - low;
   if (extent.x() * extent.y() / (map.cell * map.cell) > params.max_cells) {
     map.cell = std::sqrt(extent.x() * extent.y() / params.max_cells);
   }
@@ -62,7 +62,7 @@ ObjectMapResult object_map(const std::vector<Chunk>& chunks, const GeometryAnaly
   // the cells within 4 sigma of a ring get its excess over the floor.
   const RingProfile profile(params.floor);
   for (const Chunk& chunk : chunks) {
-    const Vec2 p = chunk.position().head<2>();
+    const model::Vec2 p = chunk.position().head<2>();
     const double r = chunk.mean_range();
     const double sigma = std::max(params.ring_sigma_min, params.ring_sigma_share * r);
     const double inverse = 1.0 / (2 * sigma * sigma);
@@ -87,7 +87,8 @@ ObjectMapResult object_map(const std::vector<Chunk>& chunks, const GeometryAnaly
   const double peak = *best;
   const auto best_index = static_cast<int>(best - map.log_probability.begin());
   const auto centre = [&](int i, int j) {
-    return Vec2(map.origin.x() + (i + 0.5) * map.cell, map.origin.y() + (j + 0.5) * map.cell);
+    return model::Vec2(map.origin.x() + (i + 0.5) * map.cell,
+                       map.origin.y() + (j + 0.5) * map.cell);
   };
   Hypothesis& estimate = result.estimate;
   estimate.position << centre(best_index % map.width, best_index / map.width),
@@ -103,7 +104,7 @@ ObjectMapResult object_map(const std::vector<Chunk>& chunks, const GeometryAnaly
     for (int i = 0; i < map.width; ++i, ++index) {
       const double p = std::exp(map.log_probability[index] - peak);
       if (p < 1e-12) continue;
-      const Vec2 offset = centre(i, j) - estimate.position.head<2>();
+      const model::Vec2 offset = centre(i, j) - estimate.position.head<2>();
       total += p;
       second += p * offset * offset.transpose();
     }
@@ -112,4 +113,4 @@ ObjectMapResult object_map(const std::vector<Chunk>& chunks, const GeometryAnaly
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -9,16 +9,16 @@
 #include "db_domain_model.hpp"
 #include "rigdesign/localize/wls_multilateration.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 namespace {
 
-using localize_detail::closed_form;
-using localize_detail::levenberg_marquardt;
-using localize_detail::Model;
-using localize_detail::Observation;
-using localize_detail::residual_stats;
-using localize_detail::ResidualStats;
-using localize_detail::Solution;
+using detail::closed_form;
+using detail::levenberg_marquardt;
+using detail::Model;
+using detail::Observation;
+using detail::residual_stats;
+using detail::ResidualStats;
+using detail::Solution;
 
 constexpr int kGridStarts = 4;       // best local minima of the grid that seed the search
 constexpr double kMinSigma2 = 1e-6;  // [dB^2]
@@ -39,7 +39,7 @@ std::vector<Chunk> coarsen(const std::vector<Chunk>& chunks, double size) {
   std::unordered_map<long long, std::size_t> index_of;
   std::vector<Chunk> merged;
   for (const Chunk& chunk : chunks) {
-    const Vec3 p = chunk.position();
+    const model::Vec3 p = chunk.position();
     const long long key = (static_cast<long long>(std::floor(p.x() / size)) * 1000003LL +
                            static_cast<long long>(std::floor(p.y() / size))) *
                               1000003LL +
@@ -56,9 +56,9 @@ std::vector<Chunk> coarsen(const std::vector<Chunk>& chunks, double size) {
 }
 
 // Local minima of the closed-form cost on a regular grid around the chunks, best first.
-std::vector<Vec3> grid_starts(const std::vector<Observation>& coarse, const Model& model,
-                              const RangeFitParams& params, double margin) {
-  Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
+std::vector<model::Vec3> grid_starts(const std::vector<Observation>& coarse, const Model& model,
+                                     const RangeFitParams& params, double margin) {
+  model::Vec3 low = model::Vec3::Constant(1e300), high = model::Vec3::Constant(-1e300);
   for (const Observation& o : coarse) {
     low = low.cwiseMin(o.p);
     high = high.cwiseMax(o.p);
@@ -69,9 +69,9 @@ std::vector<Vec3> grid_starts(const std::vector<Observation>& coarse, const Mode
     low(k) -= margin;
     high(k) += margin;
   }
-  const Vec3 cell = (high - low) / n;
+  const model::Vec3 cell = (high - low) / n;
   const auto centre = [&](int i, int j, int k) {
-    Vec3 c(low.x() + (i + 0.5) * cell.x(), low.y() + (j + 0.5) * cell.y(), model.height);
+    model::Vec3 c(low.x() + (i + 0.5) * cell.x(), low.y() + (j + 0.5) * cell.y(), model.height);
     if (model.d == 3) c.z() = low.z() + (k + 0.5) * cell.z();
     return c;
   };
@@ -82,7 +82,7 @@ std::vector<Vec3> grid_starts(const std::vector<Observation>& coarse, const Mode
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) at(i, j, k) = closed_form(coarse, centre(i, j, k), model).cost;
-  std::vector<std::pair<double, Vec3>> minima;
+  std::vector<std::pair<double, model::Vec3>> minima;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
@@ -100,7 +100,7 @@ std::vector<Vec3> grid_starts(const std::vector<Observation>& coarse, const Mode
       }
   std::sort(minima.begin(), minima.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<Vec3> starts;
+  std::vector<model::Vec3> starts;
   for (std::size_t i = 0; i < minima.size() && static_cast<int>(i) < kGridStarts; ++i)
     starts.push_back(minima[i].second);
   return starts;
@@ -120,11 +120,11 @@ std::vector<Solution> distinct(const std::vector<Solution>& sorted) {
 }
 
 // LM from every start, best first.
-std::vector<Solution> solve_from(const std::vector<Vec3>& starts,
+std::vector<Solution> solve_from(const std::vector<model::Vec3>& starts,
                                  const std::vector<Observation>& observations, const Model& model,
                                  int max_iterations) {
   std::vector<Solution> solutions;
-  for (const Vec3& q : starts) {
+  for (const model::Vec3& q : starts) {
     solutions.push_back(levenberg_marquardt(observations, model,
                                             closed_form(observations, q, model), max_iterations));
   }
@@ -165,7 +165,7 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
   const std::vector<Chunk> merged = coarsen(chunks, params.coarse_chunk);
   const std::vector<Observation> coarse = observations_of(merged);
 
-  std::vector<Vec3> starts;
+  std::vector<model::Vec3> starts;
   double median_range = 0.0;
   {
     std::vector<double> ranges;
@@ -175,12 +175,12 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
     median_range = ranges[ranges.size() / 2];
   }
   if (const auto linear = wls_multilateration(chunks, model.d, WlsReference::weighted_mean)) {
-    Vec3 q = linear->position;
+    model::Vec3 q = linear->position;
     if (model.d == 2) q.z() = model.height;
     starts.push_back(q);
     starts.push_back(geometry.mirror(q));
   }
-  for (const Vec3& q :
+  for (const model::Vec3& q :
        grid_starts(coarse, model, params, std::max(params.grid_margin, median_range)))
     starts.push_back(q);
 
@@ -202,7 +202,7 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
     if (params.model_cutoff) model.truncation_sigma = std::sqrt(stats.variance);
   }
   // Pass 2 from pass 1's minima: they move little when the weights change.
-  std::vector<Vec3> refined;
+  std::vector<model::Vec3> refined;
   for (const Solution& s : first) refined.push_back(s.q);
   // On a circle the best point's inverse is the twin of an unknown level: search it too.
   if (geometry.circular && model.fit_level) refined.push_back(geometry.inverse(first.front().q));
@@ -237,4 +237,4 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

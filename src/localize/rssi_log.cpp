@@ -1,6 +1,6 @@
 #include "rigdesign/localize/rssi_log.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 int RssiLog::find(const std::string& bssid) const {
   for (std::size_t i = 0; i < emitters.size(); ++i) {
@@ -9,4 +9,4 @@ int RssiLog::find(const std::string& bssid) const {
   return -1;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

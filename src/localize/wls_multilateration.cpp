@@ -3,7 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::localize {
 namespace {
 
 // A system whose smallest eigenvalue is below this share of its largest is singular: the
@@ -14,7 +14,7 @@ constexpr double kSingularRatio = 1e-12;
 
 void WlsSums::add(const Chunk& chunk, double sign) {
   const double w = sign * wls_weight(chunk);
-  const Vec3 p = chunk.position() - origin_;
+  const model::Vec3 p = chunk.position() - origin_;
   const double r = chunk.mean_range();
   const double k = p.squaredNorm() - r * r;
   w_ += w;
@@ -31,7 +31,7 @@ std::optional<WlsSolution> WlsSums::solve(int dimensions, WlsReference reference
                                           const Chunk* first_chunk) const {
   const int d = dimensions;
   if (chunks_ < d + 1 || !(w_ > 0)) return std::nullopt;
-  Vec3 p_ref;
+  model::Vec3 p_ref;
   double k_ref = 0.0;
   if (reference == WlsReference::weighted_mean || first_chunk == nullptr) {
     p_ref = wp_ / w_;
@@ -42,9 +42,9 @@ std::optional<WlsSolution> WlsSums::solve(int dimensions, WlsReference reference
     k_ref = p_ref.squaredNorm() - r * r;
   }
   // Normal equations of the rows 2 (p_j - p_ref)^T q = k_j - k_ref, expanded into the sums.
-  const Mat3 H3 = 4.0 * (wpp_ - wp_ * p_ref.transpose() - p_ref * wp_.transpose() +
-                         w_ * p_ref * p_ref.transpose());
-  const Vec3 g3 = 2.0 * (wpk_ - k_ref * wp_ - wk_ * p_ref + k_ref * w_ * p_ref);
+  const model::Mat3 H3 = 4.0 * (wpp_ - wp_ * p_ref.transpose() - p_ref * wp_.transpose() +
+                                w_ * p_ref * p_ref.transpose());
+  const model::Vec3 g3 = 2.0 * (wpk_ - k_ref * wp_ - wk_ * p_ref + k_ref * w_ * p_ref);
   const double bb = wkk_ - 2.0 * k_ref * wk_ + k_ref * k_ref * w_;
   const Eigen::MatrixXd H = H3.topLeftCorner(d, d);
   const Eigen::VectorXd g = g3.topRows(d);
@@ -65,13 +65,13 @@ std::optional<WlsSolution> WlsSums::solve(int dimensions, WlsReference reference
   solution.position = origin_;
   for (int k = 0; k < d; ++k) solution.position(k) += q(k);
   if (d == 2) solution.position.z() = origin_.z() + wz_ / w_;
-  solution.covariance = Mat3::Zero();
+  solution.covariance = model::Mat3::Zero();
   solution.covariance.topLeftCorner(d, d) = sigma2 * H_inverse;
   if (!solution.position.allFinite()) return std::nullopt;
   return solution;
 }
 
-bool IncrementalWls::add(const Vec3& position, double rssi_dbm) {
+bool IncrementalWls::add(const model::Vec3& position, double rssi_dbm) {
   if (rssi_dbm < path_loss_.cutoff_dbm) return false;
   if (!sums_) sums_.emplace(position);
   // The chunk's old contribution out, the reading in, the new contribution back: O(1).
@@ -96,4 +96,4 @@ std::optional<WlsSolution> wls_multilateration(const std::vector<Chunk>& chunks,
   return sums.solve(dimensions, reference, &chunks.front());
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

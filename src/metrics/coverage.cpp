@@ -9,48 +9,49 @@
 #include "rigdesign/geometry/cross_section.hpp"
 #include "rigdesign/metrics/mount_metrics.hpp"
 
-namespace rigdesign {
+namespace rigdesign::metrics {
 namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
 struct PlacedMount {
-  const Mount* mount;
-  const SensorMode* mode;
-  MountedFov fov;
+  const model::Mount* mount;
+  const model::SensorMode* mode;
+  geometry::MountedFov fov;
   double spacing;  // R_i at the mount's distance of interest
   double noise;    // N_i
 };
 
-std::vector<PlacedMount> place_mounts(const Rig& rig, const SensorLibrary& library,
-                                      const BodyOccluder& body) {
+std::vector<PlacedMount> place_mounts(const model::Rig& rig, const model::SensorLibrary& library,
+                                      const geometry::BodyOccluder& body) {
   std::vector<PlacedMount> placed;
-  for (const Mount& mount : rig.mounts) {
-    const Sensor* sensor = library.find(mount.sensor_id);
-    const SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
+  for (const model::Mount& mount : rig.mounts) {
+    const model::Sensor* sensor = library.find(mount.sensor_id);
+    const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
     if (mode == nullptr) throw std::logic_error("compute_coverage: unresolved mount " + mount.id);
     const double distance = rig.distance_for(mount);
-    placed.push_back({&mount, mode, MountedFov(*mode, mount.T_robot_sensor, body),
+    placed.push_back({&mount, mode, geometry::MountedFov(*mode, mount.T_robot_sensor, body),
                       ray_spacing(distance, mode->worst_angular_resolution()),
                       mode->noise.sigma(distance)});
   }
   return placed;
 }
 
-RasterGrid grid_for(const SectionFrame& frame, double cell) {
+geometry::RasterGrid grid_for(const geometry::SectionFrame& frame, double cell) {
   return {std::max(1, static_cast<int>(std::ceil(frame.width() / cell))),
           std::max(1, static_cast<int>(std::ceil(frame.h / cell)))};
 }
 
-double floor_share(const std::vector<IntervalSet>& floors, const SectionFrame& frame) {
-  IntervalSet united;
-  for (const IntervalSet& floor : floors) united = united.united(floor);
+double floor_share(const std::vector<geometry::IntervalSet>& floors,
+                   const geometry::SectionFrame& frame) {
+  geometry::IntervalSet united;
+  for (const geometry::IntervalSet& floor : floors) united = united.united(floor);
   return united.length() / frame.width();
 }
 
 template <typename Value>
 CoverageSummary summarize(const std::vector<AngleCoverage>& angles, Value value,
-                          const SectorRequirement* sector = nullptr) {
+                          const model::SectorRequirement* sector = nullptr) {
   CoverageSummary summary;
   summary.min = std::numeric_limits<double>::infinity();
   int count = 0;
@@ -89,32 +90,32 @@ void limiting_mounts(const std::vector<PlacedMount>& mounts, AngleCoverage& angl
 
 }  // namespace
 
-SectionView section_view(const Rig& rig, const SensorLibrary& library, double theta,
-                         const TessellationSettings& tessellation) {
-  const BodyOccluder body(rig.body);
+SectionView section_view(const model::Rig& rig, const model::SensorLibrary& library, double theta,
+                         const geometry::TessellationSettings& tessellation) {
+  const geometry::BodyOccluder body(rig.body);
   const std::vector<PlacedMount> mounts = place_mounts(rig, library, body);
   SectionView view;
-  view.frame = section_frame(body, theta, rig.distance_of_interest);
+  view.frame = geometry::section_frame(body, theta, rig.distance_of_interest);
   for (const PlacedMount& mount : mounts) {
     view.mount_ids.push_back(mount.mount->id);
-    view.polygons.push_back(section_polygons(mount.fov, view.frame, tessellation));
-    view.floors.push_back(floor_coverage(mount.fov, view.frame));
+    view.polygons.push_back(geometry::section_polygons(mount.fov, view.frame, tessellation));
+    view.floors.push_back(geometry::floor_coverage(mount.fov, view.frame));
     view.origins.push_back(mount.fov.origin());
   }
-  view.complete = union_area(view.polygons) / view.frame.area();
+  view.complete = geometry::union_area(view.polygons) / view.frame.area();
   view.floor = floor_share(view.floors, view.frame);
   return view;
 }
 
-bool in_sector(const SectorRequirement& sector, double theta) {
+bool in_sector(const model::SectorRequirement& sector, double theta) {
   const double offset = std::fmod(std::fmod(theta - sector.from, kTwoPi) + kTwoPi, kTwoPi);
   return offset <= sector.to - sector.from + 1e-12;
 }
 
-RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
-                             const std::vector<SectorRequirement>& sectors,
+RigCoverage compute_coverage(const model::Rig& rig, const model::SensorLibrary& library,
+                             const std::vector<model::SectorRequirement>& sectors,
                              const CoverageSettings& settings) {
-  const BodyOccluder body(rig.body);
+  const geometry::BodyOccluder body(rig.body);
   const std::vector<PlacedMount> mounts = place_mounts(rig, library, body);
   RigCoverage result;
   result.exact = settings.exact;
@@ -124,26 +125,27 @@ RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
 
   const int steps = std::max(1, static_cast<int>(std::lround(kTwoPi / settings.step)));
   // Per angle, each mount's raster: kept for the N-1 table.
-  std::vector<std::vector<SectionRaster>> rasters(mounts.size());
+  std::vector<std::vector<geometry::SectionRaster>> rasters(mounts.size());
   for (int step = 0; step < steps; ++step) {
     AngleCoverage angle;
     angle.theta = kTwoPi * step / steps;
-    const SectionFrame frame = section_frame(body, angle.theta, rig.distance_of_interest);
+    const geometry::SectionFrame frame =
+        geometry::section_frame(body, angle.theta, rig.distance_of_interest);
     angle.r = frame.r;
-    const RasterGrid grid = grid_for(frame, settings.raster_cell);
-    SectionRaster seen_once(grid);
-    SectionRaster seen_twice(grid);
-    std::vector<IntervalSet> floors;
-    std::vector<std::vector<Polygon2>> polygons;
+    const geometry::RasterGrid grid = grid_for(frame, settings.raster_cell);
+    geometry::SectionRaster seen_once(grid);
+    geometry::SectionRaster seen_twice(grid);
+    std::vector<geometry::IntervalSet> floors;
+    std::vector<std::vector<geometry::Polygon2>> polygons;
     for (std::size_t i = 0; i < mounts.size(); ++i) {
-      SectionRaster raster = rasterize(mounts[i].fov, frame, grid);
-      SectionRaster overlap = raster;
+      geometry::SectionRaster raster = geometry::rasterize(mounts[i].fov, frame, grid);
+      geometry::SectionRaster overlap = raster;
       overlap &= seen_once;
       seen_twice |= overlap;
       seen_once |= raster;
-      floors.push_back(floor_coverage(mounts[i].fov, frame));
+      floors.push_back(geometry::floor_coverage(mounts[i].fov, frame));
       if (settings.exact) {
-        polygons.push_back(section_polygons(mounts[i].fov, frame, settings.tessellation));
+        polygons.push_back(geometry::section_polygons(mounts[i].fov, frame, settings.tessellation));
       }
       angle.mount_sees.push_back(settings.exact ? !polygons.back().empty() : raster.any());
       rasters[i].push_back(std::move(raster));
@@ -151,7 +153,8 @@ RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
     angle.complete_raster = seen_once.complete_share();
     angle.floor_raster = seen_once.floor_share();
     angle.redundancy = seen_twice.complete_share();
-    angle.complete = settings.exact ? union_area(polygons) / frame.area() : angle.complete_raster;
+    angle.complete =
+        settings.exact ? geometry::union_area(polygons) / frame.area() : angle.complete_raster;
     angle.floor = settings.exact ? floor_share(floors, frame) : angle.floor_raster;
     result.raster_error_complete =
         std::max(result.raster_error_complete, std::abs(angle.complete - angle.complete_raster));
@@ -165,7 +168,7 @@ RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
   const auto floor = [](const AngleCoverage& a) { return a.floor; };
   result.complete = summarize(result.angles, complete);
   result.floor = summarize(result.angles, floor);
-  for (const SectorRequirement& sector : sectors) {
+  for (const model::SectorRequirement& sector : sectors) {
     SectorCoverage coverage{sector, summarize(result.angles, complete, &sector),
                             summarize(result.angles, floor, &sector)};
     // Compared with the tolerance that counts a section as fully covered.
@@ -178,7 +181,7 @@ RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
   for (std::size_t lost = 0; lost < mounts.size(); ++lost) {
     std::vector<AngleCoverage> remaining(result.angles.size());
     for (std::size_t a = 0; a < result.angles.size(); ++a) {
-      SectionRaster united(rasters[0][a].grid());
+      geometry::SectionRaster united(rasters[0][a].grid());
       for (std::size_t i = 0; i < mounts.size(); ++i) {
         if (i != lost) united |= rasters[i][a];
       }
@@ -192,4 +195,4 @@ RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::metrics

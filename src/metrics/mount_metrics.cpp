@@ -2,14 +2,14 @@
 
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::metrics {
 
 double ray_spacing(double distance, double angular_step) {
   return distance * std::tan(angular_step);
 }
 
-MountMetrics compute_mount_metrics(const Mount& mount, const Sensor& sensor, const SensorMode& mode,
-                                   double distance) {
+MountMetrics compute_mount_metrics(const model::Mount& mount, const model::Sensor& sensor,
+                                   const model::SensorMode& mode, double distance) {
   MountMetrics metrics;
   metrics.mount_id = mount.id;
   metrics.sensor_id = sensor.id;
@@ -29,4 +29,4 @@ MountMetrics compute_mount_metrics(const Mount& mount, const Sensor& sensor, con
   return metrics;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::metrics

@@ -5,14 +5,14 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
-namespace rigdesign {
+namespace rigdesign::metrics {
 namespace {
 
 // Body dimensions agree when within this [m]: files round to millimetres.
 constexpr double kBodyTolerance = 1e-3;
 
 RequirementResult named(std::string id, std::string title, std::string field, std::string metric,
-                        std::string unit, SourceLocation where) {
+                        std::string unit, model::SourceLocation where) {
   RequirementResult result;
   result.id = std::move(id);
   result.title = std::move(title);
@@ -36,11 +36,11 @@ RequirementResult minimum_frequency(RequirementResult result, double required,
   result.actual = metrics.frequency.value;
   result.verdict = verdict(metrics.frequency.value >= required);
   result.limiting_mounts = metrics.frequency.mounts;
-  result.explanation = "F >= " + derivation + " = " + format_number(required, 4) + " Hz";
+  result.explanation = "F >= " + derivation + " = " + model::format_number(required, 4) + " Hz";
   return result;
 }
 
-void check_body(const Rig& rig, const Requirements& requirements,
+void check_body(const model::Rig& rig, const model::Requirements& requirements,
                 std::vector<RequirementResult>& results) {
   if (!requirements.body_radius || !requirements.body_height) return;
   RequirementResult result = named("R1", "body size", "body", "body", "m", requirements.body_where);
@@ -48,21 +48,21 @@ void check_body(const Rig& rig, const Requirements& requirements,
       verdict(std::abs(rig.body.radius - *requirements.body_radius) <= kBodyTolerance &&
               std::abs(rig.body.height - *requirements.body_height) <= kBodyTolerance);
   result.explanation =
-      "rig body r = " + format_number(rig.body.radius) +
-      " m, h = " + format_number(rig.body.height) +
-      " m must match the application's r = " + format_number(*requirements.body_radius) +
-      " m, h = " + format_number(*requirements.body_height) + " m";
+      "rig body r = " + model::format_number(rig.body.radius) +
+      " m, h = " + model::format_number(rig.body.height) +
+      " m must match the application's r = " + model::format_number(*requirements.body_radius) +
+      " m, h = " + model::format_number(*requirements.body_height) + " m";
   results.push_back(std::move(result));
 }
 
 std::string percent(double share) {
-  return format_number(share * 100, 4) + " %";
+  return model::format_number(share * 100, 4) + " %";
 }
 
-void check_sectors(const Requirements& requirements, const RigCoverage* coverage,
+void check_sectors(const model::Requirements& requirements, const RigCoverage* coverage,
                    std::vector<RequirementResult>& results) {
   for (std::size_t i = 0; i < requirements.sectors.size(); ++i) {
-    const SectorRequirement& sector = requirements.sectors[i];
+    const model::SectorRequirement& sector = requirements.sectors[i];
     RequirementResult result = named("R2", "direction of motion: " + sector.name,
                                      "sectors." + sector.name, "SC", "", sector.where);
     if (coverage == nullptr || i >= coverage->sectors.size()) {
@@ -75,19 +75,19 @@ void check_sectors(const Requirements& requirements, const RigCoverage* coverage
     result.required = sector.min_complete_coverage;
     result.actual = measured.complete.min;
     result.verdict = verdict(measured.pass);
-    result.explanation = "over " + format_number(rad_to_deg(sector.from)) + ".." +
-                         format_number(rad_to_deg(sector.to)) + " deg: SC complete min " +
-                         percent(measured.complete.min) + " (at " +
-                         format_number(rad_to_deg(measured.complete.min_theta), 4) +
+    result.explanation = "over " + model::format_number(model::rad_to_deg(sector.from)) + ".." +
+                         model::format_number(model::rad_to_deg(sector.to)) +
+                         " deg: SC complete min " + percent(measured.complete.min) + " (at " +
+                         model::format_number(model::rad_to_deg(measured.complete.min_theta), 4) +
                          " deg) >= " + percent(sector.min_complete_coverage) + ", SC floor min " +
                          percent(measured.floor.min) + " (at " +
-                         format_number(rad_to_deg(measured.floor.min_theta), 4) +
+                         model::format_number(model::rad_to_deg(measured.floor.min_theta), 4) +
                          " deg) >= " + percent(sector.min_floor_coverage);
     results.push_back(std::move(result));
   }
 }
 
-void check_range(const Rig& rig, const Requirements& requirements,
+void check_range(const model::Rig& rig, const model::Requirements& requirements,
                  std::vector<RequirementResult>& results) {
   RequirementResult result =
       named("R3", "range", "range.distance", "d", "m", requirements.range_where);
@@ -95,11 +95,11 @@ void check_range(const Rig& rig, const Requirements& requirements,
   result.actual = rig.distance_of_interest;
   result.verdict = verdict(rig.distance_of_interest + 1e-9 >= requirements.distance);
   result.explanation = "the rig's distance of interest must reach the application's d = " +
-                       format_number(requirements.distance) + " m";
+                       model::format_number(requirements.distance) + " m";
   results.push_back(std::move(result));
 }
 
-void check_frequency(const ResultantMetrics& metrics, const Requirements& requirements,
+void check_frequency(const ResultantMetrics& metrics, const model::Requirements& requirements,
                      std::vector<RequirementResult>& results) {
   if (requirements.min_frequency) {
     results.push_back(minimum_frequency(
@@ -110,20 +110,21 @@ void check_frequency(const ResultantMetrics& metrics, const Requirements& requir
     results.push_back(minimum_frequency(
         named("R4", "object dynamics", "object_dynamics", "F", "Hz", dynamics->where),
         dynamics->min_frequency(),
-        "v_object / travel = " + format_number(dynamics->speed) + " / " +
-            format_number(dynamics->travel),
+        "v_object / travel = " + model::format_number(dynamics->speed) + " / " +
+            model::format_number(dynamics->travel),
         metrics));
   }
   if (const auto& speed = requirements.robot_speed) {
     results.push_back(minimum_frequency(
         named("R5", "robot speed", "robot_speed", "F", "Hz", speed->where), speed->min_frequency(),
-        "v / travel = " + format_number(speed->speed) + " / " + format_number(speed->travel),
+        "v / travel = " + model::format_number(speed->speed) + " / " +
+            model::format_number(speed->travel),
         metrics));
   }
 }
 
 // R6: a ray spacing no wider than the obstacle guarantees a ray hits it at distance d.
-void check_resolution(const ResultantMetrics& metrics, const Requirements& requirements,
+void check_resolution(const ResultantMetrics& metrics, const model::Requirements& requirements,
                       std::vector<RequirementResult>& results) {
   if (!requirements.smallest_obstacle) return;
   RequirementResult result = named("R6", "smallest obstacle", "smallest_obstacle.size", "R", "m",
@@ -135,11 +136,11 @@ void check_resolution(const ResultantMetrics& metrics, const Requirements& requi
   result.explanation =
       "ray spacing R at the distance of interest must not exceed the smallest "
       "obstacle, " +
-      format_number(*requirements.smallest_obstacle * 1000, 4) + " mm";
+      model::format_number(*requirements.smallest_obstacle * 1000, 4) + " mm";
   results.push_back(std::move(result));
 }
 
-void check_noise(const ResultantMetrics& metrics, const Requirements& requirements,
+void check_noise(const ResultantMetrics& metrics, const model::Requirements& requirements,
                  std::vector<RequirementResult>& results) {
   if (!requirements.max_noise) return;
   RequirementResult result =
@@ -149,36 +150,36 @@ void check_noise(const ResultantMetrics& metrics, const Requirements& requiremen
   result.verdict = verdict(metrics.noise.value <= *requirements.max_noise);
   result.limiting_mounts = metrics.noise.mounts;
   result.explanation = "range noise N (one sigma) at the distance of interest must not exceed " +
-                       format_number(*requirements.max_noise * 1000, 4) + " mm";
+                       model::format_number(*requirements.max_noise * 1000, 4) + " mm";
   results.push_back(std::move(result));
 }
 
-void check_lighting(const ResultantMetrics& metrics, const Requirements& requirements,
+void check_lighting(const ResultantMetrics& metrics, const model::Requirements& requirements,
                     std::vector<RequirementResult>& results) {
   if (requirements.lighting.empty()) return;
   RequirementResult result =
       named("R8", "lighting", "lighting", "L", "", requirements.lighting_where);
   std::vector<std::string> names;
   std::vector<std::string> failures;
-  for (LightCondition condition : requirements.lighting) {
+  for (model::LightCondition condition : requirements.lighting) {
     names.push_back(to_string(condition));
     const LightResult& light = metrics.light_for(condition);
     if (light.immune) continue;
-    failures.push_back(to_string(condition) + ": " + join(light.failing_mounts));
+    failures.push_back(to_string(condition) + ": " + model::join(light.failing_mounts));
     result.limiting_mounts.insert(result.limiting_mounts.end(), light.failing_mounts.begin(),
                                   light.failing_mounts.end());
   }
   result.verdict = verdict(failures.empty());
-  result.explanation = "every sensor must work in: " + join(names);
-  if (!failures.empty()) result.explanation += "; not immune: " + join(failures);
+  result.explanation = "every sensor must work in: " + model::join(names);
+  if (!failures.empty()) result.explanation += "; not immune: " + model::join(failures);
   results.push_back(std::move(result));
 }
 
 }  // namespace
 
-std::vector<RequirementResult> evaluate_requirements(const Rig& rig,
+std::vector<RequirementResult> evaluate_requirements(const model::Rig& rig,
                                                      const ResultantMetrics& metrics,
-                                                     const Requirements& requirements,
+                                                     const model::Requirements& requirements,
                                                      const RigCoverage* coverage) {
   std::vector<RequirementResult> results;
   check_body(rig, requirements, results);
@@ -200,4 +201,4 @@ std::string to_string(Verdict verdict) {
   return "?";
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::metrics

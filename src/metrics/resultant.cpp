@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace rigdesign {
+namespace rigdesign::metrics {
 namespace {
 
 // Values within this relative distance count as tied, so every limiting mount is named.
@@ -31,15 +31,15 @@ Limiting limiting(const std::vector<MountMetrics>& mounts, double MountMetrics::
 
 }  // namespace
 
-const LightResult& ResultantMetrics::light_for(LightCondition condition) const {
+const LightResult& ResultantMetrics::light_for(model::LightCondition condition) const {
   return light[static_cast<std::size_t>(condition)];
 }
 
-ResultantMetrics compute_resultant(const Rig& rig, const SensorLibrary& library) {
+ResultantMetrics compute_resultant(const model::Rig& rig, const model::SensorLibrary& library) {
   ResultantMetrics result;
-  for (const Mount& mount : rig.mounts) {
-    const Sensor* sensor = library.find(mount.sensor_id);
-    const SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
+  for (const model::Mount& mount : rig.mounts) {
+    const model::Sensor* sensor = library.find(mount.sensor_id);
+    const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
     if (mode == nullptr) {
       throw std::logic_error("compute_resultant: unresolved mount '" + mount.id + "'");
     }
@@ -50,9 +50,9 @@ ResultantMetrics compute_resultant(const Rig& rig, const SensorLibrary& library)
   result.frequency = limiting(result.mounts, &MountMetrics::frequency, true);
   result.point_spacing = limiting(result.mounts, &MountMetrics::point_spacing, false);
   result.noise = limiting(result.mounts, &MountMetrics::noise, false);
-  for (std::size_t i = 0; i < kLightConditions.size(); ++i) {
+  for (std::size_t i = 0; i < model::kLightConditions.size(); ++i) {
     LightResult& light = result.light[i];
-    light.condition = kLightConditions[i];
+    light.condition = model::kLightConditions[i];
     for (const MountMetrics& mount : result.mounts) {
       if (!mount.light.immune_to(light.condition)) light.failing_mounts.push_back(mount.mount_id);
     }
@@ -62,10 +62,10 @@ ResultantMetrics compute_resultant(const Rig& rig, const SensorLibrary& library)
     result.bandwidth += mount.bandwidth;
     result.driver_cpu += mount.driver_cpu;
     result.sensor_cost += mount.price;
-    result.any_estimate = result.any_estimate || mount.price_basis == Basis::estimate ||
-                          mount.driver_cpu_basis == Basis::estimate;
+    result.any_estimate = result.any_estimate || mount.price_basis == model::Basis::estimate ||
+                          mount.driver_cpu_basis == model::Basis::estimate;
   }
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::metrics

@@ -1,6 +1,6 @@
 #include "rigdesign/model/filter_params.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 const std::vector<std::string>& stage_names() {
   static const std::vector<std::string> names = {
@@ -13,4 +13,4 @@ std::string stage_name(const StageParams& params) {
   return stage_names()[params.index()];
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -1,6 +1,6 @@
 #include "rigdesign/model/filtering_loads.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 const FilteringLoad* FilteringLoads::find(const std::string& sensor_id) const {
   for (const FilteringLoad& load : sensors) {
@@ -9,4 +9,4 @@ const FilteringLoad* FilteringLoads::find(const std::string& sensor_id) const {
   return nullptr;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 std::string format_number(double value, int digits) {
   char buffer[64];
@@ -19,4 +19,4 @@ std::string join(const std::vector<std::string>& items, const std::string& separ
   return text;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace rigdesign {
+namespace rigdesign::model {
 namespace {
 
 std::string join_messages(const std::vector<Diagnostic>& diagnostics) {
@@ -51,4 +51,4 @@ void Diagnostics::throw_if_errors() const {
   if (has_errors()) throw InputError(items_);
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -1,6 +1,6 @@
 #include "rigdesign/model/polygon_area.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 double signed_area(const std::vector<Vec2>& polygon) {
   double twice_area = 0.0;
@@ -12,4 +12,4 @@ double signed_area(const std::vector<Vec2>& polygon) {
   return twice_area / 2;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

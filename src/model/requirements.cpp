@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 double Requirements::required_frequency() const {
   double frequency = min_frequency.value_or(0.0);
@@ -11,4 +11,4 @@ double Requirements::required_frequency() const {
   return frequency;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 Mat3 rotation_from_rpy(double roll, double pitch, double yaw) {
   const Eigen::AngleAxisd about_x(roll, Vec3::UnitX());
@@ -31,4 +31,4 @@ Pose3 pose_from_xyz_rpy(const Vec3& xyz, const Vec3& rpy) {
   return pose;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

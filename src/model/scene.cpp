@@ -1,6 +1,6 @@
 #include "rigdesign/model/scene.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 TriangleMesh Scene::at(double t) const {
   TriangleMesh all;
@@ -9,4 +9,4 @@ TriangleMesh Scene::at(double t) const {
   return all;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

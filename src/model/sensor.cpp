@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 bool LightImmunity::immune_to(LightCondition condition) const {
   switch (condition) {
@@ -74,4 +74,4 @@ std::string to_string(Basis basis) {
   return "?";
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

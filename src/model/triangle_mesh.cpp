@@ -1,6 +1,6 @@
 #include "rigdesign/model/triangle_mesh.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 void TriangleMesh::append(const TriangleMesh& other, const Pose3& T) {
   const int base = static_cast<int>(vertices.size());
@@ -10,4 +10,4 @@ void TriangleMesh::append(const TriangleMesh& other, const Pose3& T) {
   }
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

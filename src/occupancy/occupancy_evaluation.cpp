@@ -14,14 +14,15 @@
 #include "rigdesign/sim/ray_caster.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A camera's mode with every `stride`-th pixel row and column: a lower-resolution mode.
-SensorMode decimated(SensorMode mode, int stride) {
-  const bool camera = mode.fov.shape == FovShape::pyramid || mode.fov.shape == FovShape::cone;
+model::SensorMode decimated(model::SensorMode mode, int stride) {
+  const bool camera =
+      mode.fov.shape == model::FovShape::pyramid || mode.fov.shape == model::FovShape::cone;
   if (!camera || stride <= 1) return mode;
   mode.angular_resolution_h *= stride;
   if (mode.angular_resolution_v) *mode.angular_resolution_v *= stride;
@@ -36,21 +37,21 @@ std::mt19937_64 stream_for(std::uint64_t seed, std::size_t sensor) {
   return std::mt19937_64(sequence);
 }
 
-TriangleMesh static_scenery(const Scene& scene) {
-  TriangleMesh mesh;
-  for (const SceneObject& object : scene.objects) mesh.append(object.mesh);
+model::TriangleMesh static_scenery(const model::Scene& scene) {
+  model::TriangleMesh mesh;
+  for (const model::SceneObject& object : scene.objects) mesh.append(object.mesh);
   return mesh;
 }
 
 // What every mapper on one lattice is scored against at one frame.
 struct LatticeTruth {
   VoxelLattice lattice;
-  GridWindow window;
-  std::vector<VoxelKey> scenery;      // static, computed once
-  std::vector<VoxelKey> object;       // the moving object now
-  std::vector<VoxelKey> seen;         // voxels holding a point this frame
-  std::vector<std::uint8_t> columns;  // every truth voxel's column
-  std::vector<std::uint8_t> dilated;  // columns dilated by the robot radius
+  costmap::GridWindow window;
+  std::vector<costmap::VoxelKey> scenery;  // static, computed once
+  std::vector<costmap::VoxelKey> object;   // the moving object now
+  std::vector<costmap::VoxelKey> seen;     // voxels holding a point this frame
+  std::vector<std::uint8_t> columns;       // every truth voxel's column
+  std::vector<std::uint8_t> dilated;       // columns dilated by the robot radius
 };
 
 bool same_lattice(const VoxelLattice& a, const VoxelLattice& b) {
@@ -60,17 +61,17 @@ bool same_lattice(const VoxelLattice& a, const VoxelLattice& b) {
 
 // Paper 3's neighbourhood: predicted voxels within the margin of the object's box in x and y,
 // static scenery left out (the plate is not the person's false positive).
-std::vector<VoxelKey> near_object(const std::vector<VoxelKey>& predicted, const LatticeTruth& truth,
-                                  double margin) {
+std::vector<costmap::VoxelKey> near_object(const std::vector<costmap::VoxelKey>& predicted,
+                                           const LatticeTruth& truth, double margin) {
   if (truth.object.empty()) return {};
   int x0 = truth.object.front().x, x1 = x0, y0 = truth.object.front().y, y1 = y0;
-  for (const VoxelKey& key : truth.object) {
+  for (const costmap::VoxelKey& key : truth.object) {
     x0 = std::min(x0, key.x), x1 = std::max(x1, key.x);
     y0 = std::min(y0, key.y), y1 = std::max(y1, key.y);
   }
   const int reach = static_cast<int>(std::ceil(margin / truth.lattice.resolution - 1e-9));
-  std::vector<VoxelKey> near;
-  for (const VoxelKey& key : predicted) {
+  std::vector<costmap::VoxelKey> near;
+  for (const costmap::VoxelKey& key : predicted) {
     if (key.x < x0 - reach || key.x > x1 + reach || key.y < y0 - reach || key.y > y1 + reach)
       continue;
     if (std::binary_search(truth.scenery.begin(), truth.scenery.end(), key)) continue;
@@ -122,7 +123,7 @@ double percentile_of(std::vector<double> values, double p) {
   return values[std::min(index, values.size() - 1)];
 }
 
-std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene,
+std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                                              std::span<const CellSensor> sensors,
                                              std::span<OccupancyMapper* const> mappers,
                                              const OccupancyEvalParams& params) {
@@ -130,17 +131,17 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene,
     throw std::invalid_argument("evaluate_occupancy: the scene '" + scene.name +
                                 "' has no moving object");
   }
-  const MovingObject& object = scene.moving.front();
-  std::vector<std::vector<Vec3>> rays;
-  std::vector<SensorMode> modes;
+  const model::MovingObject& object = scene.moving.front();
+  std::vector<std::vector<model::Vec3>> rays;
+  std::vector<model::SensorMode> modes;
   std::vector<std::mt19937_64> streams;
   for (std::size_t i = 0; i < sensors.size(); ++i) {
     modes.push_back(decimated(sensors[i].mode, params.camera_stride));
-    rays.push_back(ray_pattern(modes.back()));
+    rays.push_back(sim::ray_pattern(modes.back()));
     streams.push_back(stream_for(params.seed, i));
   }
   // One truth per distinct lattice; mappers share it.
-  const TriangleMesh scenery = static_scenery(scene);
+  const model::TriangleMesh scenery = static_scenery(scene);
   std::vector<LatticeTruth> truths;
   std::vector<std::size_t> truth_of;
   for (OccupancyMapper* mapper : mappers) {
@@ -163,47 +164,47 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene,
   for (std::size_t m = 0; m < mappers.size(); ++m) {
     runs[m].mapper = mappers[m]->name();
     runs[m].resolution = truths[truth_of[m]].lattice.resolution;
-    const GridWindow& window = truths[truth_of[m]].window;
+    const costmap::GridWindow& window = truths[truth_of[m]].window;
     tracking.push_back({TrailTracker(window.size(), window.resolution * window.resolution),
                         ChangeDelays(window.size())});
   }
   PathOdometer odometer;
-  const SimulationSettings settings{0.0, true, false};
+  const sim::SimulationSettings settings{0.0, true, false};
   const int frames =
       std::max(1, static_cast<int>(std::floor(params.duration * params.rate + 1e-9)));
-  std::vector<PointCloud> clouds(sensors.size());
+  std::vector<model::PointCloud> clouds(sensors.size());
   for (int k = 0; k < frames; ++k) {
     const double t = k / params.rate;
     const bool moving = t < params.moving_until;
-    const RayCaster caster(scene.at(t));
+    const sim::RayCaster caster(scene.at(t));
     std::size_t points = 0;
     for (std::size_t i = 0; i < sensors.size(); ++i) {
-      clouds[i] = simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor, settings,
-                                 streams[i]);
+      clouds[i] = sim::simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor,
+                                      settings, streams[i]);
       points += clouds[i].size();
     }
-    const Pose3 T_world_object = object.T_world_object(t);
+    const model::Pose3 T_world_object = object.T_world_object(t);
     odometer.record(t, T_world_object.translation().head<2>());
-    TriangleMesh object_now;
+    model::TriangleMesh object_now;
     object_now.append(object.mesh, T_world_object);
     for (LatticeTruth& truth : truths) {
       truth.object = voxelise_surface(object_now, truth.lattice, params.min_height);
       // Only the object's voxels can be misses, so only marking points inside its x span count.
       truth.seen.clear();
       if (!truth.object.empty()) {
-        const auto [low, high] =
-            std::minmax_element(truth.object.begin(), truth.object.end(),
-                                [](const VoxelKey& a, const VoxelKey& b) { return a.x < b.x; });
+        const auto [low, high] = std::minmax_element(
+            truth.object.begin(), truth.object.end(),
+            [](const costmap::VoxelKey& a, const costmap::VoxelKey& b) { return a.x < b.x; });
         const int x0 = low->x, x1 = high->x;
-        for (const PointCloud& cloud : clouds) {
-          for (const Point3f& p : cloud.points) {
+        for (const model::PointCloud& cloud : clouds) {
+          for (const model::Point3f& p : cloud.points) {
             if (p.z() < params.min_height) continue;  // below the band: clears, never marks
-            const VoxelKey key = truth.lattice.key_at(p.cast<double>());
+            const costmap::VoxelKey key = truth.lattice.key_at(p.cast<double>());
             if (key.x >= x0 && key.x <= x1) truth.seen.push_back(key);
           }
         }
       }
-      std::vector<VoxelKey> all = truth.scenery;
+      std::vector<costmap::VoxelKey> all = truth.scenery;
       all.insert(all.end(), truth.object.begin(), truth.object.end());
       truth.columns = column_mask(all, truth.window);
       truth.dilated = dilate_mask(truth.columns, truth.window, params.robot_radius);
@@ -218,7 +219,7 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene,
       mappers[m]->update(t, clouds, moving);
       frame.update_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const std::vector<VoxelKey> predicted = mappers[m]->occupied();
+      const std::vector<costmap::VoxelKey> predicted = mappers[m]->occupied();
       frame.object =
           compare_voxel_sets(near_object(predicted, truth, params.object_margin), truth.object);
       frame.misses = split_misses(predicted, truth.object, truth.seen);
@@ -276,4 +277,4 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene,
   return runs;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

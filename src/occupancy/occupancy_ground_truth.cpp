@@ -3,40 +3,40 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 namespace {
 
 // Samples per voxel side along a triangle's edges: four keeps the sampling gap at a quarter
 // voxel, well under the spacing of the sensors' end points at the cell's distances.
 constexpr double kSamplesPerVoxel = 4.0;
 
-void sort_unique(std::vector<VoxelKey>& keys) {
+void sort_unique(std::vector<costmap::VoxelKey>& keys) {
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 }
 
 }  // namespace
 
-VoxelKey VoxelLattice::key_at(const Vec3& p_world) const {
+costmap::VoxelKey VoxelLattice::key_at(const model::Vec3& p_world) const {
   return {static_cast<int>(std::floor(p_world.x() / resolution)),
           static_cast<int>(std::floor(p_world.y() / resolution)),
           static_cast<int>(std::floor((p_world.z() - z_min) / z_resolution))};
 }
 
-std::vector<VoxelKey> voxelise_surface(const TriangleMesh& mesh, const VoxelLattice& lattice,
-                                       double z_low) {
+std::vector<costmap::VoxelKey> voxelise_surface(const model::TriangleMesh& mesh,
+                                                const VoxelLattice& lattice, double z_low) {
   const double step = std::min(lattice.resolution, lattice.z_resolution) / kSamplesPerVoxel;
-  std::vector<VoxelKey> keys;
+  std::vector<costmap::VoxelKey> keys;
   for (const auto& triangle : mesh.triangles) {
-    const Vec3& a = mesh.vertices[static_cast<std::size_t>(triangle[0])];
-    const Vec3& b = mesh.vertices[static_cast<std::size_t>(triangle[1])];
-    const Vec3& c = mesh.vertices[static_cast<std::size_t>(triangle[2])];
+    const model::Vec3& a = mesh.vertices[static_cast<std::size_t>(triangle[0])];
+    const model::Vec3& b = mesh.vertices[static_cast<std::size_t>(triangle[1])];
+    const model::Vec3& c = mesh.vertices[static_cast<std::size_t>(triangle[2])];
     const double longest = std::max({(b - a).norm(), (c - a).norm(), (c - b).norm()});
     // n divisions per edge: neighbouring samples lie at most longest / n <= step apart.
     const int n = std::max(1, static_cast<int>(std::ceil(longest / step)));
     for (int i = 0; i <= n; ++i) {
       for (int j = 0; i + j <= n; ++j) {
-        const Vec3 p =
+        const model::Vec3 p =
             a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
         if (p.z() < z_low || p.z() >= lattice.z_max) continue;
         keys.push_back(lattice.key_at(p));
@@ -47,9 +47,10 @@ std::vector<VoxelKey> voxelise_surface(const TriangleMesh& mesh, const VoxelLatt
   return keys;
 }
 
-std::vector<std::uint8_t> column_mask(std::span<const VoxelKey> keys, const GridWindow& window) {
+std::vector<std::uint8_t> column_mask(std::span<const costmap::VoxelKey> keys,
+                                      const costmap::GridWindow& window) {
   std::vector<std::uint8_t> mask(window.size(), 0);
-  for (const VoxelKey& key : keys) {
+  for (const costmap::VoxelKey& key : keys) {
     const int x = key.x - window.origin_cell.x();
     const int y = key.y - window.origin_cell.y();
     if (window.contains(x, y)) mask[window.index(x, y)] = 1;
@@ -57,8 +58,8 @@ std::vector<std::uint8_t> column_mask(std::span<const VoxelKey> keys, const Grid
   return mask;
 }
 
-std::vector<std::uint8_t> dilate_mask(std::span<const std::uint8_t> mask, const GridWindow& window,
-                                      double radius) {
+std::vector<std::uint8_t> dilate_mask(std::span<const std::uint8_t> mask,
+                                      const costmap::GridWindow& window, double radius) {
   std::vector<std::uint8_t> dilated(mask.begin(), mask.end());
   const int reach = static_cast<int>(std::floor(radius / window.resolution));
   const double limit = (radius / window.resolution) * (radius / window.resolution);
@@ -76,4 +77,4 @@ std::vector<std::uint8_t> dilate_mask(std::span<const std::uint8_t> mask, const 
   return dilated;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

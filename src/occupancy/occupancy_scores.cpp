@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 namespace {
 
 constexpr double kUndefined = std::numeric_limits<double>::quiet_NaN();
@@ -15,7 +15,7 @@ double ratio(std::size_t numerator, std::size_t denominator) {
                           : static_cast<double>(numerator) / static_cast<double>(denominator);
 }
 
-void sort_unique(std::vector<VoxelKey>& keys) {
+void sort_unique(std::vector<costmap::VoxelKey>& keys) {
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 }
@@ -65,10 +65,11 @@ Scores mean_scores(std::span<const Scores> frames) {
           mean_skipping_nan(frames, &Scores::f3)};
 }
 
-ConfusionCounts compare_voxel_sets(std::vector<VoxelKey> predicted, std::vector<VoxelKey> truth) {
+ConfusionCounts compare_voxel_sets(std::vector<costmap::VoxelKey> predicted,
+                                   std::vector<costmap::VoxelKey> truth) {
   sort_unique(predicted);
   sort_unique(truth);
-  std::vector<VoxelKey> common;
+  std::vector<costmap::VoxelKey> common;
   std::set_intersection(predicted.begin(), predicted.end(), truth.begin(), truth.end(),
                         std::back_inserter(common));
   return {common.size(), predicted.size() - common.size(), truth.size() - common.size()};
@@ -88,15 +89,15 @@ ConfusionCounts compare_masks(std::span<const std::uint8_t> predicted,
   return counts;
 }
 
-MissCauses split_misses(std::vector<VoxelKey> predicted, std::vector<VoxelKey> truth,
-                        std::vector<VoxelKey> seen) {
+MissCauses split_misses(std::vector<costmap::VoxelKey> predicted,
+                        std::vector<costmap::VoxelKey> truth, std::vector<costmap::VoxelKey> seen) {
   sort_unique(predicted);
   sort_unique(truth);
   sort_unique(seen);
-  std::vector<VoxelKey> missed;
+  std::vector<costmap::VoxelKey> missed;
   std::set_difference(truth.begin(), truth.end(), predicted.begin(), predicted.end(),
                       std::back_inserter(missed));
-  std::vector<VoxelKey> missed_seen;
+  std::vector<costmap::VoxelKey> missed_seen;
   std::set_intersection(missed.begin(), missed.end(), seen.begin(), seen.end(),
                         std::back_inserter(missed_seen));
   return {missed.size() - missed_seen.size(), missed_seen.size()};
@@ -139,4 +140,4 @@ std::size_t ChangeDelays::pending() const {
       std::count_if(since_.begin(), since_.end(), [](double t) { return !std::isnan(t); }));
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

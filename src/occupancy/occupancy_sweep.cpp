@@ -1,6 +1,6 @@
 #include "rigdesign/occupancy/occupancy_sweep.hpp"
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 
 std::vector<double> default_sweep_voxels() {
   return {0.05, 0.1, 0.15, 0.2};
@@ -30,10 +30,10 @@ std::vector<VoxelMapperParams> sweep_grid(std::span<const double> voxels,
 }
 
 std::vector<std::unique_ptr<OccupancyMapper>> make_sweep_mappers(
-    std::span<const VoxelMapperParams> grid, const SourceLocation& where) {
+    std::span<const VoxelMapperParams> grid, const model::SourceLocation& where) {
   std::vector<std::unique_ptr<OccupancyMapper>> mappers;
   for (const VoxelMapperParams& params : grid) mappers.push_back(make_voxel_mapper(params, where));
   return mappers;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

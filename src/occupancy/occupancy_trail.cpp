@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 namespace {
 
 constexpr double kNever = std::numeric_limits<double>::quiet_NaN();
@@ -48,7 +48,7 @@ TrailFrame TrailTracker::record(double time, std::span<const std::uint8_t> truth
   return frame;
 }
 
-void PathOdometer::record(double time, const Vec2& position) {
+void PathOdometer::record(double time, const model::Vec2& position) {
   const double previous =
       cumulative_.empty() ? 0.0 : cumulative_.back() + (position - last_).norm();
   times_.push_back(time);
@@ -65,4 +65,4 @@ double PathOdometer::length_since(double since) const {
   return cumulative_.back() - cumulative_[from];
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

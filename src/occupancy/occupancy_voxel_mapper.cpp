@@ -8,15 +8,15 @@
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/model/format_number.hpp"
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 namespace {
 
-CostmapParams costmap_params_of(const VoxelMapperParams& params) {
-  CostmapParams costmap;
+costmap::CostmapParams costmap_params_of(const VoxelMapperParams& params) {
+  costmap::CostmapParams costmap;
   costmap.resolution = params.voxel;
   costmap.size_x = costmap.size_y = params.window_size;
   costmap.robot_radius = params.robot_radius;
-  costmap.layer = ObstacleLayerKind::voxel;
+  costmap.layer = costmap::ObstacleLayerKind::voxel;
   costmap.voxel.z_min = 0.0;
   costmap.voxel.z_max = params.z_max;
   costmap.voxel.z_resolution = params.voxel;
@@ -31,13 +31,13 @@ CostmapParams costmap_params_of(const VoxelMapperParams& params) {
 
 class VoxelMapper final : public OccupancyMapper {
  public:
-  VoxelMapper(const VoxelMapperParams& params, const SourceLocation& where)
+  VoxelMapper(const VoxelMapperParams& params, const model::SourceLocation& where)
       : params_(params), costmap_(costmap_params_of(params), where) {
     if (params.persistence) counts_.assign(costmap_.voxel_layer().grid().voxels().size(), 0);
   }
 
   std::string name() const override {
-    std::string name = "voxel " + format_number(params_.voxel, 3) + " m";
+    std::string name = "voxel " + model::format_number(params_.voxel, 3) + " m";
     if (params_.persistence) {
       name +=
           ", hit " + std::to_string(params_.hit.hit) + "/" + std::to_string(params_.hit.hit_max);
@@ -51,25 +51,26 @@ class VoxelMapper final : public OccupancyMapper {
                 costmap_.voxel_layer().grid().layers() * params_.voxel};
   }
 
-  void update(double time, std::span<const PointCloud> clouds_world, bool robot_moving) override {
+  void update(double time, std::span<const model::PointCloud> clouds_world,
+              bool robot_moving) override {
     observations_.clear();
-    for (const PointCloud& cloud : clouds_world) {
-      observations_.push_back({&cloud, Pose3::Identity(), params_.source});
+    for (const model::PointCloud& cloud : clouds_world) {
+      observations_.push_back({&cloud, model::Pose3::Identity(), params_.source});
     }
-    costmap_.update(time, Pose3::Identity(), observations_, robot_moving);
+    costmap_.update(time, model::Pose3::Identity(), observations_, robot_moving);
     if (params_.persistence) {
       // Paper 1, eqs. (8) and (9) per voxel, decrementing exactly when the 2D Hit Layer did.
-      apply_hit_equations(costmap_.voxel_layer().grid().voxels(), counts_, params_.hit,
-                          costmap_.last_update_decremented(),
-                          static_cast<std::uint8_t>(VoxelState::occupied));
+      costmap::apply_hit_equations(costmap_.voxel_layer().grid().voxels(), counts_, params_.hit,
+                                   costmap_.last_update_decremented(),
+                                   static_cast<std::uint8_t>(costmap::VoxelState::occupied));
     }
   }
 
-  std::vector<VoxelKey> occupied() const override {
-    const RollingVoxelGrid& grid = costmap_.voxel_layer().grid();
-    if (!params_.persistence) return grid.keys_in_state(VoxelState::occupied);
-    std::vector<VoxelKey> keys;
-    const GridWindow& window = grid.window();
+  std::vector<costmap::VoxelKey> occupied() const override {
+    const costmap::RollingVoxelGrid& grid = costmap_.voxel_layer().grid();
+    if (!params_.persistence) return grid.keys_in_state(costmap::VoxelState::occupied);
+    std::vector<costmap::VoxelKey> keys;
+    const costmap::GridWindow& window = grid.window();
     for (int y = 0; y < window.height; ++y) {
       for (int x = 0; x < window.width; ++x) {
         for (int z = 0; z < grid.layers(); ++z) {
@@ -80,8 +81,8 @@ class VoxelMapper final : public OccupancyMapper {
     return keys;
   }
 
-  std::vector<std::uint8_t> blocked_cells(const GridWindow& window) const override {
-    const CostGrid& master = costmap_.master();
+  std::vector<std::uint8_t> blocked_cells(const costmap::GridWindow& window) const override {
+    const costmap::CostGrid& master = costmap_.master();
     std::vector<std::uint8_t> blocked(window.size(), 0);
     for (int y = 0; y < window.height; ++y) {
       for (int x = 0; x < window.width; ++x) {
@@ -89,7 +90,8 @@ class VoxelMapper final : public OccupancyMapper {
             window.origin_cell + Eigen::Vector2i(x, y) - master.window().origin_cell;
         if (!master.window().contains(local.x(), local.y())) continue;
         const std::uint8_t cost = master.at(local.x(), local.y());
-        blocked[window.index(x, y)] = cost == cost::kLethal || cost == cost::kInscribed;
+        blocked[window.index(x, y)] =
+            cost == costmap::cost::kLethal || cost == costmap::cost::kInscribed;
       }
     }
     return blocked;
@@ -97,28 +99,28 @@ class VoxelMapper final : public OccupancyMapper {
 
  private:
   VoxelMapperParams params_;
-  Costmap costmap_;
+  costmap::Costmap costmap_;
   std::vector<std::uint16_t> counts_;
-  std::vector<CloudObservation> observations_;
+  std::vector<costmap::CloudObservation> observations_;
 };
 
 }  // namespace
 
-std::vector<std::uint8_t> OccupancyMapper::blocked_cells(const GridWindow&) const {
+std::vector<std::uint8_t> OccupancyMapper::blocked_cells(const costmap::GridWindow&) const {
   return {};
 }
 
-GridWindow centred_window(double size, double resolution) {
-  GridWindow window;
+costmap::GridWindow centred_window(double size, double resolution) {
+  costmap::GridWindow window;
   window.width = window.height = std::max(1, static_cast<int>(std::lround(size / resolution)));
   window.resolution = resolution;
-  window.origin_cell = window.origin_centred_on(Vec2::Zero());
+  window.origin_cell = window.origin_centred_on(model::Vec2::Zero());
   return window;
 }
 
 std::unique_ptr<OccupancyMapper> make_voxel_mapper(const VoxelMapperParams& params,
-                                                   const SourceLocation& where) {
+                                                   const model::SourceLocation& where) {
   return std::make_unique<VoxelMapper>(params, where);
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

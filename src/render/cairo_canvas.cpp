@@ -53,7 +53,7 @@ void draw_to_file(const std::string& path, int width, int height,
                                cairo_status_to_string(status));
     }
   }
-  write_file_atomically(path, bytes);
+  io::write_file_atomically(path, bytes);
 }
 
 void set_colour(cairo_t* cairo, const Rgb& colour, double alpha) {

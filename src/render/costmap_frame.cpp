@@ -7,7 +7,7 @@
 #include "cairo_canvas.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 namespace {
 
 using render::draw_text;
@@ -30,27 +30,28 @@ Rgb inflated(std::uint8_t cost) {
 }
 
 Rgb colour_of(std::uint8_t cost) {
-  if (cost == cost::kFree) return {1.0, 1.0, 1.0};
-  if (cost == cost::kUnknown) return kUnknown;
-  if (cost == cost::kLethal) return kLethal;
-  if (cost == cost::kInscribed) return kInscribed;
+  if (cost == costmap::cost::kFree) return {1.0, 1.0, 1.0};
+  if (cost == costmap::cost::kUnknown) return kUnknown;
+  if (cost == costmap::cost::kLethal) return kLethal;
+  if (cost == costmap::cost::kInscribed) return kInscribed;
   return inflated(cost);
 }
 
 }  // namespace
 
 void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int pixels_per_cell) {
-  const CostGrid& grid = *frame.master;
-  const GridWindow& window = grid.window();
+  const costmap::CostGrid& grid = *frame.master;
+  const costmap::GridWindow& window = grid.window();
   const int scale = std::max(1, pixels_per_cell);
   const int width = window.width * scale;
   const int height = window.height * scale + kTitleHeight;
   const double pixels_per_metre = scale / window.resolution;
-  const Vec2 origin = window.origin();
+  const model::Vec2 origin = window.origin();
   // World metres to canvas pixels: x right, y up (the grid's top row is its largest y).
-  const auto px = [&](const Vec2& p) {
-    return Vec2((p.x() - origin.x()) * pixels_per_metre,
-                kTitleHeight + window.height * scale - (p.y() - origin.y()) * pixels_per_metre);
+  const auto px = [&](const model::Vec2& p) {
+    return model::Vec2(
+        (p.x() - origin.x()) * pixels_per_metre,
+        kTitleHeight + window.height * scale - (p.y() - origin.y()) * pixels_per_metre);
   };
   draw_to_file(path, width, height, [&](cairo_t* cairo) {
     for (int y = 0; y < window.height; ++y) {
@@ -63,7 +64,7 @@ void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int 
       }
     }
     for (const FovWedge& fov : frame.fovs) {
-      const Vec2 apex = px(fov.apex);
+      const model::Vec2 apex = px(fov.apex);
       const double radius = fov.range * pixels_per_metre;
       set_colour(cairo, sensor_colour(fov.colour), 0.15);
       if (fov.half_angle >= std::numbers::pi) {
@@ -79,26 +80,26 @@ void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int 
     }
     cairo_set_line_width(cairo, 1.0);
     set_colour(cairo, kInkColour, 0.8);
-    for (const std::vector<Vec2>& outline : frame.obstacles) {
+    for (const std::vector<model::Vec2>& outline : frame.obstacles) {
       if (outline.empty()) continue;
-      const Vec2 first = px(outline.front());
+      const model::Vec2 first = px(outline.front());
       cairo_move_to(cairo, first.x(), first.y());
-      for (const Vec2& p : outline) cairo_line_to(cairo, px(p).x(), px(p).y());
+      for (const model::Vec2& p : outline) cairo_line_to(cairo, px(p).x(), px(p).y());
       cairo_close_path(cairo);
       cairo_stroke(cairo);
     }
-    const auto polyline = [&](const std::vector<Vec2>& points, const Rgb& colour,
+    const auto polyline = [&](const std::vector<model::Vec2>& points, const Rgb& colour,
                               double line_width) {
       if (points.size() < 2) return;
       set_colour(cairo, colour);
       cairo_set_line_width(cairo, line_width);
       cairo_move_to(cairo, px(points.front()).x(), px(points.front()).y());
-      for (const Vec2& p : points) cairo_line_to(cairo, px(p).x(), px(p).y());
+      for (const model::Vec2& p : points) cairo_line_to(cairo, px(p).x(), px(p).y());
       cairo_stroke(cairo);
     };
     polyline(frame.trail, kTrail, 2.0);
     polyline(frame.path, kPath, 2.5);
-    const Vec2 robot = px(frame.robot);
+    const model::Vec2 robot = px(frame.robot);
     set_colour(cairo, frame.collided ? kCollision : kBodyColour, 0.55);
     cairo_arc(cairo, robot.x(), robot.y(), frame.robot_radius * pixels_per_metre, 0,
               2 * std::numbers::pi);
@@ -106,8 +107,8 @@ void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int 
     set_colour(cairo, kInkColour);
     cairo_set_line_width(cairo, 1.5);
     cairo_stroke(cairo);
-    const Vec2 nose =
-        px(frame.robot + frame.robot_radius * Vec2(std::cos(frame.yaw), std::sin(frame.yaw)));
+    const model::Vec2 nose = px(
+        frame.robot + frame.robot_radius * model::Vec2(std::cos(frame.yaw), std::sin(frame.yaw)));
     cairo_move_to(cairo, robot.x(), robot.y());
     cairo_line_to(cairo, nose.x(), nose.y());
     cairo_stroke(cairo);
@@ -116,4 +117,4 @@ void draw_costmap_frame(const CostmapFrame& frame, const std::string& path, int 
   });
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

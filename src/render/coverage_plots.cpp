@@ -7,7 +7,7 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 namespace {
 
 using render::Anchor;
@@ -16,16 +16,16 @@ using render::set_colour;
 
 constexpr Rgb kRedundancy{0.45, 0.45, 0.45};
 
-std::string title(const RigCoverage& coverage, const std::string& rig_name) {
-  return rig_name + ": spatial coverage, d = " + format_number(coverage.distance) +
-         " m, h = " + format_number(coverage.height) + " m";
+std::string title(const metrics::RigCoverage& coverage, const std::string& rig_name) {
+  return rig_name + ": spatial coverage, d = " + model::format_number(coverage.distance) +
+         " m, h = " + model::format_number(coverage.height) + " m";
 }
 
 // A sector as one or two [from, to] degree ranges inside [0, 360].
-std::vector<std::pair<double, double>> sector_ranges_deg(const SectorRequirement& sector) {
-  double from = std::fmod(rad_to_deg(sector.from), 360.0);
+std::vector<std::pair<double, double>> sector_ranges_deg(const model::SectorRequirement& sector) {
+  double from = std::fmod(model::rad_to_deg(sector.from), 360.0);
   if (from < 0) from += 360.0;
-  const double to = from + rad_to_deg(sector.to - sector.from);
+  const double to = from + model::rad_to_deg(sector.to - sector.from);
   if (to <= 360.0) return {{from, to}};
   return {{from, 360.0}, {0.0, to - 360.0}};
 }
@@ -36,11 +36,11 @@ struct CartesianAxes {
   double y(double share) const { return top + height * (1.0 - share); }
 };
 
-void draw_curve(cairo_t* cairo, const RigCoverage& coverage, const CartesianAxes& axes,
-                double AngleCoverage::*field) {
+void draw_curve(cairo_t* cairo, const metrics::RigCoverage& coverage, const CartesianAxes& axes,
+                double metrics::AngleCoverage::*field) {
   bool first = true;
-  for (const AngleCoverage& angle : coverage.angles) {
-    const double x = axes.x(rad_to_deg(angle.theta));
+  for (const metrics::AngleCoverage& angle : coverage.angles) {
+    const double x = axes.x(model::rad_to_deg(angle.theta));
     const double y = axes.y(angle.*field);
     first ? cairo_move_to(cairo, x, y) : cairo_line_to(cairo, x, y);
     first = false;
@@ -67,7 +67,7 @@ void legend_line(cairo_t* cairo, double x, double y, const Rgb& colour, bool das
 
 }  // namespace
 
-void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
+void plot_sc_cartesian(const metrics::RigCoverage& coverage, const std::string& rig_name,
                        const std::string& path, int width, int height) {
   render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
     const CartesianAxes axes{80, 60, width - 80.0 - 260.0, height - 60.0 - 80.0};
@@ -102,7 +102,7 @@ void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
 
     // Requirement thresholds: dashed lines over each sector's angles, labelled above.
     const double dash[] = {7.0, 5.0};
-    for (const SectorCoverage& sector : coverage.sectors) {
+    for (const metrics::SectorCoverage& sector : coverage.sectors) {
       for (const auto& [from, to] : sector_ranges_deg(sector.sector)) {
         set_colour(cairo, sector.pass ? Rgb{0.0, 0.55, 0.25} : Rgb{0.8, 0.1, 0.1}, 0.08);
         cairo_rectangle(cairo, axes.x(from), axes.top, axes.x(to) - axes.x(from), axes.height);
@@ -129,13 +129,13 @@ void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
     const double dotted[] = {3.0, 3.0};
     cairo_set_dash(cairo, dotted, 2, 0);
     set_colour(cairo, kRedundancy);
-    draw_curve(cairo, coverage, axes, &AngleCoverage::redundancy);
+    draw_curve(cairo, coverage, axes, &metrics::AngleCoverage::redundancy);
     cairo_set_dash(cairo, nullptr, 0, 0);
     cairo_set_line_width(cairo, 2.5);
     set_colour(cairo, kFloorColour);
-    draw_curve(cairo, coverage, axes, &AngleCoverage::floor);
+    draw_curve(cairo, coverage, axes, &metrics::AngleCoverage::floor);
     set_colour(cairo, kCompleteColour);
-    draw_curve(cairo, coverage, axes, &AngleCoverage::complete);
+    draw_curve(cairo, coverage, axes, &metrics::AngleCoverage::complete);
 
     set_colour(cairo, kInkColour);
     cairo_set_line_width(cairo, 1.2);
@@ -153,19 +153,19 @@ void plot_sc_cartesian(const RigCoverage& coverage, const std::string& rig_name,
     }
     y += 40;
     set_colour(cairo, kInkColour);
-    draw_text(cairo, "complete: min " + format_number(coverage.complete.min * 100, 3) + " %",
+    draw_text(cairo, "complete: min " + model::format_number(coverage.complete.min * 100, 3) + " %",
               legend_x, y, 13);
-    draw_text(cairo, "  mean " + format_number(coverage.complete.mean * 100, 3) + " %", legend_x,
-              y += 18, 13);
-    draw_text(cairo, "floor: min " + format_number(coverage.floor.min * 100, 3) + " %", legend_x,
-              y += 22, 13);
-    draw_text(cairo, "  mean " + format_number(coverage.floor.mean * 100, 3) + " %", legend_x,
-              y += 18, 13);
+    draw_text(cairo, "  mean " + model::format_number(coverage.complete.mean * 100, 3) + " %",
+              legend_x, y += 18, 13);
+    draw_text(cairo, "floor: min " + model::format_number(coverage.floor.min * 100, 3) + " %",
+              legend_x, y += 22, 13);
+    draw_text(cairo, "  mean " + model::format_number(coverage.floor.mean * 100, 3) + " %",
+              legend_x, y += 18, 13);
     draw_text(cairo, coverage.exact ? "exact path (CGAL)" : "raster path", legend_x, y += 28, 12);
   });
 }
 
-void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
+void plot_sc_polar(const metrics::RigCoverage& coverage, const std::string& rig_name,
                    const std::string& path, int size) {
   render::draw_to_file(path, size, size + 90, [&](cairo_t* cairo) {
     const double cx = size / 2.0;
@@ -188,12 +188,12 @@ void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
                 11);
     }
     for (int degrees = 0; degrees < 360; degrees += 45) {
-      const auto [x, y] = at(deg_to_rad(degrees), 1.0);
+      const auto [x, y] = at(model::deg_to_rad(degrees), 1.0);
       set_colour(cairo, kGridColour);
       cairo_move_to(cairo, cx, cy);
       cairo_line_to(cairo, x, y);
       cairo_stroke(cairo);
-      const auto [lx, ly] = at(deg_to_rad(degrees), 1.12);
+      const auto [lx, ly] = at(model::deg_to_rad(degrees), 1.12);
       set_colour(cairo, kInkColour);
       draw_text(cairo, std::to_string(degrees), lx, ly + 5, 13, Anchor::centre);
     }
@@ -202,7 +202,7 @@ void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
 
     const double dash[] = {7.0, 5.0};
     cairo_set_line_width(cairo, 2);
-    for (const SectorCoverage& sector : coverage.sectors) {
+    for (const metrics::SectorCoverage& sector : coverage.sectors) {
       for (const auto& [share, colour] :
            {std::pair{sector.sector.min_complete_coverage, kCompleteColour},
             std::pair{sector.sector.min_floor_coverage, kFloorColour}}) {
@@ -224,8 +224,9 @@ void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
     }
 
     cairo_set_line_join(cairo, CAIRO_LINE_JOIN_ROUND);
-    for (const auto& [field, colour] : {std::pair{&AngleCoverage::floor, kFloorColour},
-                                        std::pair{&AngleCoverage::complete, kCompleteColour}}) {
+    for (const auto& [field, colour] :
+         {std::pair{&metrics::AngleCoverage::floor, kFloorColour},
+          std::pair{&metrics::AngleCoverage::complete, kCompleteColour}}) {
       set_colour(cairo, colour);
       cairo_set_line_width(cairo, 2.5);
       for (std::size_t i = 0; i < coverage.angles.size(); ++i) {
@@ -245,4 +246,4 @@ void plot_sc_polar(const RigCoverage& coverage, const std::string& rig_name,
   });
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

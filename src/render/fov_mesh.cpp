@@ -8,7 +8,7 @@
 
 #include "rigdesign/model/polygon_area.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -25,7 +25,7 @@ constexpr int kCylinderSides = 64;
 // the sensor frame, sampled on a grid. The map is oriented so that (d/du) x (d/dv) points out
 // through the far cap, which makes counter-clockwise grid quads outward-facing there.
 struct AngleGrid {
-  FovShape shape = FovShape::pyramid;
+  model::FovShape shape = model::FovShape::pyramid;
   double u_min = 0.0;
   double u_max = 0.0;
   double v_min = 0.0;
@@ -50,16 +50,16 @@ struct AngleGrid {
 // Unit direction in the sensor frame for the grid angles of each shape:
 // pyramid u = atan(y/x), v = atan(z/x); cone u = roll about x, v = angle from +x;
 // band and planar u = azimuth atan2(y, x), v = elevation asin(z).
-Vec3 direction(FovShape shape, double u, double v) {
+model::Vec3 direction(model::FovShape shape, double u, double v) {
   switch (shape) {
-    case FovShape::pyramid: return Vec3(1.0, std::tan(u), std::tan(v)).normalized();
-    case FovShape::cone:
-      return Vec3(std::cos(v), std::sin(v) * std::sin(u), std::sin(v) * std::cos(u));
-    case FovShape::band:
-    case FovShape::planar:
-      return Vec3(std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v));
+    case model::FovShape::pyramid: return model::Vec3(1.0, std::tan(u), std::tan(v)).normalized();
+    case model::FovShape::cone:
+      return model::Vec3(std::cos(v), std::sin(v) * std::sin(u), std::sin(v) * std::cos(u));
+    case model::FovShape::band:
+    case model::FovShape::planar:
+      return model::Vec3(std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v));
   }
-  return Vec3::UnitX();
+  return model::Vec3::UnitX();
 }
 
 int segments_for(double span, double wider_span) {
@@ -67,17 +67,17 @@ int segments_for(double span, double wider_span) {
   return std::max(1, static_cast<int>(std::ceil(kSegmentsOnWiderAngle * share - kAngleTolerance)));
 }
 
-AngleGrid angle_grid(const FieldOfView& fov) {
+AngleGrid angle_grid(const model::FieldOfView& fov) {
   AngleGrid grid;
   grid.shape = fov.shape;
   switch (fov.shape) {
-    case FovShape::pyramid:
+    case model::FovShape::pyramid:
       grid.u_max = fov.horizontal / 2;
       grid.v_max = fov.vertical / 2;
       grid.u_min = -grid.u_max;
       grid.v_min = -grid.v_max;
       break;
-    case FovShape::cone:
+    case model::FovShape::cone:
       grid.u_min = -kPi;
       grid.u_max = kPi;
       grid.wraps_u = true;
@@ -85,8 +85,8 @@ AngleGrid angle_grid(const FieldOfView& fov) {
       grid.pole_at_v_min = true;  // the optical axis
       grid.pole_at_v_max = grid.v_max >= kPi - kAngleTolerance;
       break;
-    case FovShape::band:
-    case FovShape::planar: {
+    case model::FovShape::band:
+    case model::FovShape::planar: {
       const double half_span = std::min(fov.horizontal / 2, kPi);
       grid.u_min = -half_span;
       grid.u_max = half_span;
@@ -114,10 +114,10 @@ AngleGrid angle_grid(const FieldOfView& fov) {
 // them are dropped, so the surface is closed and every edge is used once each way.
 class ShellBuilder {
  public:
-  ShellBuilder(const AngleGrid& grid, const Pose3& T_robot_sensor)
+  ShellBuilder(const AngleGrid& grid, const model::Pose3& T_robot_sensor)
       : grid_(grid), T_robot_sensor_(T_robot_sensor) {}
 
-  TriangleMesh build(double near_radius, double far_radius) {
+  model::TriangleMesh build(double near_radius, double far_radius) {
     const Layer outer = add_layer(far_radius);
     const Layer inner = add_layer(near_radius);
     add_caps(outer, inner);
@@ -145,7 +145,7 @@ class ShellBuilder {
     }
     for (int j = 0; j <= grid_.rows; ++j) {
       for (int i = 0; i < grid_.vertices_in_row(j); ++i) {
-        const Vec3 q_sensor = radius * direction(grid_.shape, grid_.u(i), grid_.v(j));
+        const model::Vec3 q_sensor = radius * direction(grid_.shape, grid_.u(i), grid_.v(j));
         mesh_.vertices.push_back(T_robot_sensor_ * q_sensor);
       }
     }
@@ -198,23 +198,25 @@ class ShellBuilder {
   }
 
   AngleGrid grid_;
-  Pose3 T_robot_sensor_;
-  TriangleMesh mesh_;
+  model::Pose3 T_robot_sensor_;
+  model::TriangleMesh mesh_;
 };
 
 // Twice the signed area of triangle a-b-c: positive when it turns left (counter-clockwise).
-double turn(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const Vec2 ab = b - a;
-  const Vec2 ac = c - a;
+double turn(const model::Vec2& a, const model::Vec2& b, const model::Vec2& c) {
+  const model::Vec2 ab = b - a;
+  const model::Vec2 ac = c - a;
   return ab.x() * ac.y() - ab.y() * ac.x();
 }
 
 // A point on the border counts as inside, so an ear never swallows a vertex touching it.
-bool inside_or_on(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
+bool inside_or_on(const model::Vec2& p, const model::Vec2& a, const model::Vec2& b,
+                  const model::Vec2& c) {
   return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
 }
 
-bool is_ear(const std::vector<Vec2>& polygon, const std::vector<int>& remaining, std::size_t k) {
+bool is_ear(const std::vector<model::Vec2>& polygon, const std::vector<int>& remaining,
+            std::size_t k) {
   const std::size_t count = remaining.size();
   const int prev = remaining[(k + count - 1) % count];
   const int here = remaining[k];
@@ -230,7 +232,7 @@ bool is_ear(const std::vector<Vec2>& polygon, const std::vector<int>& remaining,
 // When no ear is left, what remains is straight runs, where dropping the straightest vertex
 // loses no area, or a self-intersecting outline, which has no proper triangulation; dropping
 // its straightest vertex still ends the loop and draws something.
-std::size_t straightest_corner(const std::vector<Vec2>& polygon,
+std::size_t straightest_corner(const std::vector<model::Vec2>& polygon,
                                const std::vector<int>& remaining) {
   const std::size_t count = remaining.size();
   std::size_t best = 0;
@@ -248,7 +250,7 @@ std::size_t straightest_corner(const std::vector<Vec2>& polygon,
 
 // Ear clipping of a simple counter-clockwise polygon (any convexity): repeatedly cut off a
 // convex corner whose triangle holds no other vertex. Returns triangles of polygon indices.
-std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
+std::vector<std::array<int, 3>> triangulate(const std::vector<model::Vec2>& polygon) {
   std::vector<int> remaining(polygon.size());
   std::iota(remaining.begin(), remaining.end(), 0);
   std::vector<std::array<int, 3>> triangles;
@@ -270,13 +272,13 @@ std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
   return triangles;
 }
 
-std::vector<Vec2> counter_clockwise_outline(const RobotBody& body) {
+std::vector<model::Vec2> counter_clockwise_outline(const model::RobotBody& body) {
   if (!body.footprint.empty()) {
-    std::vector<Vec2> outline = body.footprint;
-    if (signed_area(outline) < 0) std::reverse(outline.begin(), outline.end());
+    std::vector<model::Vec2> outline = body.footprint;
+    if (model::signed_area(outline) < 0) std::reverse(outline.begin(), outline.end());
     return outline;
   }
-  std::vector<Vec2> circle;
+  std::vector<model::Vec2> circle;
   circle.reserve(kCylinderSides);
   for (int i = 0; i < kCylinderSides; ++i) {
     const double angle = 2 * kPi * i / kCylinderSides;
@@ -287,7 +289,8 @@ std::vector<Vec2> counter_clockwise_outline(const RobotBody& body) {
 
 }  // namespace
 
-TriangleMesh fov_mesh(const SensorMode& mode, const Pose3& T_robot_sensor, double truncate_at) {
+model::TriangleMesh fov_mesh(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
+                             double truncate_at) {
   const double near_radius = std::max(0.0, mode.min_range);
   const double far_radius = std::min(mode.max_range, truncate_at);
   if (!(far_radius > near_radius)) return {};
@@ -295,14 +298,14 @@ TriangleMesh fov_mesh(const SensorMode& mode, const Pose3& T_robot_sensor, doubl
   return ShellBuilder(grid, T_robot_sensor).build(near_radius, far_radius);
 }
 
-TriangleMesh body_mesh(const RobotBody& body) {
-  const std::vector<Vec2> outline = counter_clockwise_outline(body);
+model::TriangleMesh body_mesh(const model::RobotBody& body) {
+  const std::vector<model::Vec2> outline = counter_clockwise_outline(body);
   const int count = static_cast<int>(outline.size());
-  TriangleMesh mesh;
+  model::TriangleMesh mesh;
   if (count < 3) return mesh;
   // Vertices 0..count-1 on the floor, count..2*count-1 on the top, in outline order.
   for (const double z : {0.0, body.height}) {
-    for (const Vec2& corner : outline) mesh.vertices.emplace_back(corner.x(), corner.y(), z);
+    for (const model::Vec2& corner : outline) mesh.vertices.emplace_back(corner.x(), corner.y(), z);
   }
   for (const auto& [a, b, c] : triangulate(outline)) {
     mesh.triangles.push_back({count + a, count + b, count + c});  // top faces up
@@ -317,4 +320,4 @@ TriangleMesh body_mesh(const RobotBody& body) {
   return mesh;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

@@ -8,7 +8,7 @@
 #include "cairo_canvas.hpp"
 #include "rigdesign/model/format_number.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 namespace {
 
 using render::Anchor;
@@ -50,22 +50,22 @@ Rgb colour_of(PlotMarkerKind kind) {
 void plot_localization(const LocalizePlot& plot, const std::string& path, int width, int height) {
   render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
     const double left = 70, top = 60, right = width - 150.0, bottom = height - 60.0;
-    Vec2 low = Vec2::Constant(1e300), high = Vec2::Constant(-1e300);
-    const auto extend = [&](const Vec2& p) {
+    model::Vec2 low = model::Vec2::Constant(1e300), high = model::Vec2::Constant(-1e300);
+    const auto extend = [&](const model::Vec2& p) {
       low = low.cwiseMin(p);
       high = high.cwiseMax(p);
     };
-    for (const Vec3& p : plot.path) extend(p.head<2>());
+    for (const model::Vec3& p : plot.path) extend(p.head<2>());
     for (const PlotMarker& m : plot.markers) extend(m.position.head<2>());
-    if (low.x() > high.x()) low = high = Vec2::Zero();
-    const Vec2 centre = 0.5 * (low + high);
+    if (low.x() > high.x()) low = high = model::Vec2::Zero();
+    const model::Vec2 centre = 0.5 * (low + high);
     const double span = std::max({high.x() - low.x(),
                                   (high.y() - low.y()) * (right - left) / (bottom - top), 1.0}) *
                         1.1;
     const double scale = (right - left) / span;  // pixels per metre, equal on both axes
-    const auto px = [&](const Vec2& p) {
-      return Vec2((left + right) / 2 + (p.x() - centre.x()) * scale,
-                  (top + bottom) / 2 - (p.y() - centre.y()) * scale);
+    const auto px = [&](const model::Vec2& p) {
+      return model::Vec2((left + right) / 2 + (p.x() - centre.x()) * scale,
+                         (top + bottom) / 2 - (p.y() - centre.y()) * scale);
     };
     set_colour(cairo, kInkColour);
     draw_text(cairo, plot.title, width / 2.0, 34, 18, Anchor::centre, true);
@@ -77,17 +77,17 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
                                      : raw / magnitude > 1 ? 2
                                                            : 1);
     cairo_set_line_width(cairo, 1);
-    const Vec2 corner_low(centre.x() - span / 2,
-                          centre.y() - span * (bottom - top) / (right - left) / 2);
-    const Vec2 corner_high(centre.x() + span / 2,
-                           centre.y() + span * (bottom - top) / (right - left) / 2);
+    const model::Vec2 corner_low(centre.x() - span / 2,
+                                 centre.y() - span * (bottom - top) / (right - left) / 2);
+    const model::Vec2 corner_high(centre.x() + span / 2,
+                                  centre.y() + span * (bottom - top) / (right - left) / 2);
     for (double x = std::ceil(corner_low.x() / step) * step; x <= corner_high.x(); x += step) {
       set_colour(cairo, kGridColour);
       cairo_move_to(cairo, px({x, 0}).x(), top);
       cairo_line_to(cairo, px({x, 0}).x(), bottom);
       cairo_stroke(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(x, 6), px({x, 0}).x(), bottom + 18, 12, Anchor::centre);
+      draw_text(cairo, model::format_number(x, 6), px({x, 0}).x(), bottom + 18, 12, Anchor::centre);
     }
     for (double y = std::ceil(corner_low.y() / step) * step; y <= corner_high.y(); y += step) {
       set_colour(cairo, kGridColour);
@@ -95,7 +95,7 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       cairo_line_to(cairo, right, px({0, y}).y());
       cairo_stroke(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(y, 6), left - 6, px({0, y}).y() + 4, 12, Anchor::right);
+      draw_text(cairo, model::format_number(y, 6), left - 6, px({0, y}).y() + 4, 12, Anchor::right);
     }
     draw_text(cairo, "x [m]", (left + right) / 2, height - 18.0, 13, Anchor::centre);
     draw_text(cairo, "y [m]", 20, top - 10, 13, Anchor::left);
@@ -112,7 +112,7 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       highest = std::max(lowest + 1e-9, *std::max_element(plot.values.begin(), plot.values.end()));
     }
     for (std::size_t i = 0; i < plot.path.size(); ++i) {
-      const Vec2 p = px(plot.path[i].head<2>());
+      const model::Vec2 p = px(plot.path[i].head<2>());
       set_colour(cairo,
                  plot.values.size() == plot.path.size()
                      ? ramp((plot.values[i] - lowest) / (highest - lowest))
@@ -123,7 +123,7 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       cairo_fill(cairo);
     }
     for (const PlotMarker& marker : plot.markers) {
-      const Vec2 p = px(marker.position.head<2>());
+      const model::Vec2 p = px(marker.position.head<2>());
       set_colour(cairo, colour_of(marker.kind));
       cairo_set_line_width(cairo, 2);
       if (marker.covariance.trace() > 0) {  // the 2-sigma ellipse
@@ -182,10 +182,10 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
         cairo_fill(cairo);
       }
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(highest, 4), right + 40, ly + 18, 11);
-      draw_text(cairo, format_number(lowest, 4), right + 40, ly + 210, 11);
+      draw_text(cairo, model::format_number(highest, 4), right + 40, ly + 18, 11);
+      draw_text(cairo, model::format_number(lowest, 4), right + 40, ly + 210, 11);
     }
   });
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

@@ -7,7 +7,7 @@
 #include "cairo_canvas.hpp"
 #include "rigdesign/model/format_number.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 namespace {
 
 using render::Anchor;
@@ -76,7 +76,7 @@ void plot_occupancy_pareto(const std::vector<ParetoPoint>& points, const std::st
       cairo_line_to(cairo, px(x, 0).first, bottom);
       cairo_stroke(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(x, 4), px(x, 0).first, bottom + 18, 12, Anchor::centre);
+      draw_text(cairo, model::format_number(x, 4), px(x, 0).first, bottom + 18, 12, Anchor::centre);
     }
     for (int i = 0; i <= 10; ++i) {
       const double f2 = i / 10.0;
@@ -85,7 +85,8 @@ void plot_occupancy_pareto(const std::vector<ParetoPoint>& points, const std::st
       cairo_line_to(cairo, right, px(0, f2).second);
       cairo_stroke(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(f2, 2), left - 8, px(0, f2).second + 4, 12, Anchor::right);
+      draw_text(cairo, model::format_number(f2, 2), left - 8, px(0, f2).second + 4, 12,
+                Anchor::right);
     }
     draw_text(cairo, "mean ghost area over the cell [m^2] (lower is better)", (left + right) / 2,
               height - 28.0, 13, Anchor::centre);
@@ -119,7 +120,7 @@ void plot_occupancy_pareto(const std::vector<ParetoPoint>& points, const std::st
       cairo_arc(cairo, lx + 6, top + 32 + i * 22, 6, 0, 2 * std::numbers::pi);
       cairo_fill(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(ms_low * std::exp(share * log_span), 3), lx + 20,
+      draw_text(cairo, model::format_number(ms_low * std::exp(share * log_span), 3), lx + 20,
                 top + 36 + i * 22, 11);
     }
     cairo_set_line_width(cairo, 2);
@@ -130,4 +131,4 @@ void plot_occupancy_pareto(const std::vector<ParetoPoint>& points, const std::st
   });
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

@@ -1,6 +1,6 @@
 #include "rigdesign/render/palette.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 
 Rgb sensor_colour(std::size_t index) {
   // Okabe-Ito colour-blind-safe palette (without black), then repeated.
@@ -16,4 +16,4 @@ Rgb sensor_colour(std::size_t index) {
   return kPalette[index % kPalette.size()];
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

@@ -7,7 +7,7 @@
 #include "cairo_canvas.hpp"
 #include "rigdesign/model/format_number.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 namespace {
 
 using render::Anchor;
@@ -20,25 +20,26 @@ constexpr Rgb kChosen{0.85, 0.1, 0.1};
 
 }  // namespace
 
-std::vector<ExploredRig> pareto_front(const std::vector<ExploredRig>& explored) {
-  std::vector<ExploredRig> sorted = explored;
-  std::sort(sorted.begin(), sorted.end(), [](const ExploredRig& a, const ExploredRig& b) {
-    return a.cost < b.cost || (a.cost == b.cost && a.mean_complete > b.mean_complete);
-  });
-  std::vector<ExploredRig> front;
-  for (const ExploredRig& rig : sorted) {
+std::vector<select::ExploredRig> pareto_front(const std::vector<select::ExploredRig>& explored) {
+  std::vector<select::ExploredRig> sorted = explored;
+  std::sort(sorted.begin(), sorted.end(),
+            [](const select::ExploredRig& a, const select::ExploredRig& b) {
+              return a.cost < b.cost || (a.cost == b.cost && a.mean_complete > b.mean_complete);
+            });
+  std::vector<select::ExploredRig> front;
+  for (const select::ExploredRig& rig : sorted) {
     if (front.empty() || rig.mean_complete > front.back().mean_complete) front.push_back(rig);
   }
   return front;
 }
 
-void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double chosen_cost,
-                 double chosen_coverage, const std::string& title, const std::string& path,
-                 int width, int height) {
+void plot_pareto(const std::vector<select::ExploredRig>& explored, double budget,
+                 double chosen_cost, double chosen_coverage, const std::string& title,
+                 const std::string& path, int width, int height) {
   render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
     const double left = 90, top = 60, right = width - 40.0, bottom = height - 80.0;
     double max_cost = std::max(budget, chosen_cost);
-    for (const ExploredRig& rig : explored) max_cost = std::max(max_cost, rig.cost);
+    for (const select::ExploredRig& rig : explored) max_cost = std::max(max_cost, rig.cost);
     max_cost = max_cost > 0 ? max_cost * 1.05 : 1.0;
     const auto x = [&](double cost) { return left + (right - left) * cost / max_cost; };
     const auto y = [&](double share) { return bottom - (bottom - top) * share; };
@@ -56,7 +57,7 @@ void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double
       cairo_line_to(cairo, x(cost), bottom);
       cairo_stroke(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(cost, 6), x(cost), bottom + 20, 13, Anchor::centre);
+      draw_text(cairo, model::format_number(cost, 6), x(cost), bottom + 20, 13, Anchor::centre);
     }
     for (int percent = 0; percent <= 100; percent += 20) {
       set_colour(cairo, kGridColour);
@@ -77,7 +78,7 @@ void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double
 
     for (const bool feasible : {false, true}) {  // rigs meeting the requirements on top
       set_colour(cairo, feasible ? kFeasible : kInfeasible, feasible ? 0.8 : 0.5);
-      for (const ExploredRig& rig : explored) {
+      for (const select::ExploredRig& rig : explored) {
         if (rig.feasible != feasible) continue;
         cairo_new_sub_path(cairo);
         cairo_arc(cairo, x(rig.cost), y(rig.mean_complete), feasible ? 3.5 : 2.5, 0,
@@ -85,7 +86,7 @@ void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double
       }
       cairo_fill(cairo);
     }
-    const std::vector<ExploredRig> front = pareto_front(explored);
+    const std::vector<select::ExploredRig> front = pareto_front(explored);
     set_colour(cairo, kInkColour);
     cairo_set_line_width(cairo, 1.8);
     for (std::size_t i = 0; i < front.size(); ++i) {
@@ -101,7 +102,7 @@ void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double
     cairo_line_to(cairo, x(budget), bottom);
     cairo_stroke(cairo);
     cairo_set_dash(cairo, nullptr, 0, 0);
-    draw_text(cairo, "budget " + format_number(budget, 6), x(budget) + 6, top + 16, 13);
+    draw_text(cairo, "budget " + model::format_number(budget, 6), x(budget) + 6, top + 16, 13);
     if (chosen_cost > 0) {
       cairo_new_sub_path(cairo);
       cairo_arc(cairo, x(chosen_cost), y(chosen_coverage), 8, 0, 2 * std::numbers::pi);
@@ -130,4 +131,4 @@ void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double
   });
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

@@ -7,7 +7,7 @@
 
 #include "rigdesign/io/atomic_write.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 namespace {
 
 cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
@@ -42,7 +42,7 @@ void write_png_rgba(const std::string& path, int width, int height,
   if (status != CAIRO_STATUS_SUCCESS) {
     throw std::runtime_error(std::string("PNG encoding failed: ") + cairo_status_to_string(status));
   }
-  write_file_atomically(path, png);
+  io::write_file_atomically(path, png);
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

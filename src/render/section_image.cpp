@@ -8,7 +8,7 @@
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/coverage_plots.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 namespace {
 
 using render::Anchor;
@@ -32,7 +32,7 @@ constexpr double kPlotTop = 70;
 constexpr double kLegendWidth = 250;
 constexpr double kAxisMargin = 70;
 
-SectionLayout section_layout(const SectionFrame& frame, std::size_t sensors, int width,
+SectionLayout section_layout(const geometry::SectionFrame& frame, std::size_t sensors, int width,
                              int max_height) {
   // The canvas is as tall as the section needs at equal scales (and tall enough for the
   // legend), but no taller than max_height.
@@ -51,9 +51,9 @@ SectionLayout section_layout(const SectionFrame& frame, std::size_t sensors, int
   return layout;
 }
 
-void draw_section(const SectionView& view, const std::string& rig_name, const std::string& path,
-                  int width, int max_height) {
-  const SectionFrame& frame = view.frame;
+void draw_section(const metrics::SectionView& view, const std::string& rig_name,
+                  const std::string& path, int width, int max_height) {
+  const geometry::SectionFrame& frame = view.frame;
   const SectionLayout axes = section_layout(frame, view.polygons.size(), width, max_height);
   const double rho_max = frame.d * 1.04;
   const double z_max = frame.h * 1.12;
@@ -64,9 +64,10 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
   render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
     set_colour(cairo, kInkColour);
     draw_text(cairo,
-              rig_name + ": cross-section at theta = " + format_number(rad_to_deg(frame.theta), 4) +
-                  " deg  (SC complete " + format_number(view.complete * 100, 3) + " %, floor " +
-                  format_number(view.floor * 100, 3) + " %)",
+              rig_name + ": cross-section at theta = " +
+                  model::format_number(model::rad_to_deg(frame.theta), 4) + " deg  (SC complete " +
+                  model::format_number(view.complete * 100, 3) + " %, floor " +
+                  model::format_number(view.floor * 100, 3) + " %)",
               width / 2.0, 34, 19, Anchor::centre, true);
 
     // Grid and ticks in metres.
@@ -79,7 +80,8 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
       cairo_line_to(cairo, axes.x(rho), axes.y(z_max));
       cairo_stroke(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(rho, 3), axes.x(rho), axes.y(0) + 20, 13, Anchor::centre);
+      draw_text(cairo, model::format_number(rho, 3), axes.x(rho), axes.y(0) + 20, 13,
+                Anchor::centre);
     }
     for (double z = 0; z <= z_max + 1e-9; z += z_step) {
       set_colour(cairo, kGridColour);
@@ -87,7 +89,7 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
       cairo_line_to(cairo, axes.x(rho_max), axes.y(z));
       cairo_stroke(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo, format_number(z, 3), axes.x(0) - 8, axes.y(z) + 5, 13, Anchor::right);
+      draw_text(cairo, model::format_number(z, 3), axes.x(0) - 8, axes.y(z) + 5, 13, Anchor::right);
     }
     draw_text(cairo, "rho: distance from the robot's vertical axis [m]", axes.x(rho_max / 2),
               height - 22.0, 14, Anchor::centre);
@@ -105,7 +107,7 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
     draw_text(cairo, "body", axes.x(frame.r / 2), axes.y(frame.h / 2), 13, Anchor::centre);
     // One path per sensor: its strips fill as one region, without seams between them.
     for (std::size_t i = 0; i < view.polygons.size(); ++i) {
-      for (const Polygon2& polygon : view.polygons[i]) {
+      for (const geometry::Polygon2& polygon : view.polygons[i]) {
         for (std::size_t k = 0; k < polygon.size(); ++k) {
           const double x = axes.x(polygon[k].x());
           const double y = axes.y(polygon[k].y());
@@ -117,8 +119,8 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
       cairo_fill(cairo);
     }
     // Covered floor: a thick line under the frame.
-    IntervalSet floor;
-    for (const IntervalSet& mount_floor : view.floors) floor = floor.united(mount_floor);
+    geometry::IntervalSet floor;
+    for (const geometry::IntervalSet& mount_floor : view.floors) floor = floor.united(mount_floor);
     set_colour(cairo, kFloorColour);
     cairo_set_line_width(cairo, 5);
     for (const auto& [low, high] : floor.intervals()) {
@@ -139,9 +141,9 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
     draw_text(cairo, "d", axes.x(frame.d), axes.y(frame.h) - 6, 13, Anchor::centre);
 
     // Sensors mounted near this half-plane: their origin, projected.
-    const Vec2 outward(std::cos(frame.theta), std::sin(frame.theta));
+    const model::Vec2 outward(std::cos(frame.theta), std::sin(frame.theta));
     for (std::size_t i = 0; i < view.origins.size(); ++i) {
-      const Vec2 horizontal = view.origins[i].head<2>();
+      const model::Vec2 horizontal = view.origins[i].head<2>();
       const double along = horizontal.dot(outward);
       const double aside = std::abs(horizontal.x() * outward.y() - horizontal.y() * outward.x());
       if (along < -1e-9 || aside > 0.05 + 0.1 * along) continue;
@@ -160,15 +162,17 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
     draw_text(cairo, "sensor (share seen here)", legend_x, y, 14, Anchor::left, true);
     for (std::size_t i = 0; i < view.polygons.size(); ++i) {
       double area = 0.0;
-      for (const Polygon2& polygon : view.polygons[i]) area += signed_area(polygon);
+      for (const geometry::Polygon2& polygon : view.polygons[i])
+        area += model::signed_area(polygon);
       y += 26;
       set_colour(cairo, sensor_colour(i), 0.6);
       cairo_rectangle(cairo, legend_x, y - 13, 22, 16);
       cairo_fill(cairo);
       set_colour(cairo, kInkColour);
-      draw_text(cairo,
-                view.mount_ids[i] + "  " + format_number(area / frame.area() * 100, 3) + " %",
-                legend_x + 30, y, 13);
+      draw_text(
+          cairo,
+          view.mount_ids[i] + "  " + model::format_number(area / frame.area() * 100, 3) + " %",
+          legend_x + 30, y, 13);
     }
     y += 34;
     set_colour(cairo, kFloorColour);
@@ -188,4 +192,4 @@ void draw_section(const SectionView& view, const std::string& rig_name, const st
   });
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

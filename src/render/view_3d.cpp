@@ -12,7 +12,7 @@
 
 #include "rigdesign/render/png_writer.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 namespace {
 
 // Each output pixel averages a kSupersample x kSupersample block of rendered pixels: cheap
@@ -81,15 +81,15 @@ class OffscreenContext {
 // z toward the viewer; the clip box is [-half_width, half_width] x [-half_height,
 // half_height] x [-depth, depth].
 struct Camera {
-  Mat3 R_eye_robot = Mat3::Identity();
-  Vec3 centre_eye = Vec3::Zero();
+  model::Mat3 R_eye_robot = model::Mat3::Identity();
+  model::Vec3 centre_eye = model::Vec3::Zero();
   double half_width = 1.0;   // [m]
   double half_height = 1.0;  // [m]
   double depth = 1.0;        // [m]
 };
 
-Mat3 view_rotation(Viewpoint viewpoint) {
-  Mat3 R_eye_robot;
+model::Mat3 view_rotation(Viewpoint viewpoint) {
+  model::Mat3 R_eye_robot;
   if (viewpoint == Viewpoint::top) {
     // Seen from above, REP-103: forward (+x) up the image, left (+y) to the left.
     R_eye_robot << 0, -1, 0,  //
@@ -97,11 +97,11 @@ Mat3 view_rotation(Viewpoint viewpoint) {
         0, 0, 1;
     return R_eye_robot;
   }
-  const Vec3 toward_viewer(std::cos(kIsoElevation) * std::cos(kIsoAzimuth),
-                           std::cos(kIsoElevation) * std::sin(kIsoAzimuth),
-                           std::sin(kIsoElevation));
-  const Vec3 right = Vec3::UnitZ().cross(toward_viewer).normalized();
-  const Vec3 up = toward_viewer.cross(right);
+  const model::Vec3 toward_viewer(std::cos(kIsoElevation) * std::cos(kIsoAzimuth),
+                                  std::cos(kIsoElevation) * std::sin(kIsoAzimuth),
+                                  std::sin(kIsoElevation));
+  const model::Vec3 right = model::Vec3::UnitZ().cross(toward_viewer).normalized();
+  const model::Vec3 up = toward_viewer.cross(right);
   R_eye_robot.row(0) = right.transpose();
   R_eye_robot.row(1) = up.transpose();
   R_eye_robot.row(2) = toward_viewer.transpose();
@@ -110,10 +110,10 @@ Mat3 view_rotation(Viewpoint viewpoint) {
 
 // Everything the picture must hold besides the floor: the meshes and the axis arrows.
 Eigen::AlignedBox3d content_box(const std::vector<ColouredMesh>& meshes) {
-  Eigen::AlignedBox3d content(Vec3::Zero());
-  content.extend(Vec3::Constant(kAxisLength));
+  Eigen::AlignedBox3d content(model::Vec3::Zero());
+  content.extend(model::Vec3::Constant(kAxisLength));
   for (const ColouredMesh& coloured : meshes) {
-    for (const Vec3& vertex : coloured.mesh.vertices) content.extend(vertex);
+    for (const model::Vec3& vertex : coloured.mesh.vertices) content.extend(vertex);
   }
   return content;
 }
@@ -129,8 +129,8 @@ double floor_half_width(const Eigen::AlignedBox3d& content, double extent) {
 
 // The box (robot frame) the picture frames: the floor square, as tall as the content.
 Eigen::AlignedBox3d framed_box(const Eigen::AlignedBox3d& content, double floor_half) {
-  return Eigen::AlignedBox3d(Vec3(-floor_half, -floor_half, content.min().z()),
-                             Vec3(floor_half, floor_half, content.max().z()));
+  return Eigen::AlignedBox3d(model::Vec3(-floor_half, -floor_half, content.min().z()),
+                             model::Vec3(floor_half, floor_half, content.max().z()));
 }
 
 Camera frame_camera(const std::vector<ColouredMesh>& meshes, const View3dSettings& settings,
@@ -142,7 +142,7 @@ Camera frame_camera(const std::vector<ColouredMesh>& meshes, const View3dSetting
   double half_width = 0.0;
   double half_height = 0.0;
   for (int corner = 0; corner < 8; ++corner) {
-    const Vec3 offset =
+    const model::Vec3 offset =
         camera.R_eye_robot * box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)) -
         camera.centre_eye;
     half_width = std::max(half_width, std::abs(offset.x()));
@@ -156,11 +156,11 @@ Camera frame_camera(const std::vector<ColouredMesh>& meshes, const View3dSetting
   camera.half_height = camera.half_width / aspect;
 
   double depth = 0.0;
-  const auto reach_depth = [&](const Vec3& p_robot) {
+  const auto reach_depth = [&](const model::Vec3& p_robot) {
     depth = std::max(depth, std::abs((camera.R_eye_robot * p_robot - camera.centre_eye).z()));
   };
   for (const ColouredMesh& coloured : meshes) {
-    for (const Vec3& vertex : coloured.mesh.vertices) reach_depth(vertex);
+    for (const model::Vec3& vertex : coloured.mesh.vertices) reach_depth(vertex);
   }
   for (int corner = 0; corner < 8; ++corner) {
     reach_depth(box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
@@ -219,11 +219,11 @@ void draw_floor_grid(double grid_half) {
 }
 
 // Sends one triangle with its face normal (flat shading); degenerate ones are skipped.
-void emit_triangle(const TriangleMesh& mesh, const std::array<int, 3>& triangle) {
-  const Vec3& a = mesh.vertices[triangle[0]];
-  const Vec3& b = mesh.vertices[triangle[1]];
-  const Vec3& c = mesh.vertices[triangle[2]];
-  const Vec3 normal = (b - a).cross(c - a);
+void emit_triangle(const model::TriangleMesh& mesh, const std::array<int, 3>& triangle) {
+  const model::Vec3& a = mesh.vertices[triangle[0]];
+  const model::Vec3& b = mesh.vertices[triangle[1]];
+  const model::Vec3& c = mesh.vertices[triangle[2]];
+  const model::Vec3 normal = (b - a).cross(c - a);
   const double length = normal.norm();
   if (!(length > 0)) return;
   glNormal3d(normal.x() / length, normal.y() / length, normal.z() / length);
@@ -249,18 +249,18 @@ void draw_opaque(const std::vector<ColouredMesh>& meshes) {
 
 // Translucent triangles of every mesh, farthest first, blended without writing depth: the
 // painter's order makes overlapping volumes composite correctly in most views.
-void draw_translucent(const std::vector<ColouredMesh>& meshes, const Mat3& R_eye_robot) {
+void draw_translucent(const std::vector<ColouredMesh>& meshes, const model::Mat3& R_eye_robot) {
   struct Queued {
     double depth;  // eye z of the centroid [m]; smaller is farther
     const ColouredMesh* coloured;
     std::array<int, 3> triangle;
   };
   std::vector<Queued> queue;
-  const Vec3 toward_viewer = R_eye_robot.row(2).transpose();
+  const model::Vec3 toward_viewer = R_eye_robot.row(2).transpose();
   for (const ColouredMesh& coloured : meshes) {
     if (is_opaque(coloured) || coloured.opacity <= 0) continue;
     for (const auto& triangle : coloured.mesh.triangles) {
-      const Vec3 centroid =
+      const model::Vec3 centroid =
           (coloured.mesh.vertices[triangle[0]] + coloured.mesh.vertices[triangle[1]] +
            coloured.mesh.vertices[triangle[2]]) /
           3;
@@ -290,25 +290,25 @@ void draw_axes() {
   glDisable(GL_DEPTH_TEST);
   glLineWidth(kAxisLineWidth * kSupersample);
   for (int axis = 0; axis < 3; ++axis) {
-    const Vec3 along = Vec3::Unit(axis);
-    const Vec3 across_1 = Vec3::Unit((axis + 1) % 3);
-    const Vec3 across_2 = Vec3::Unit((axis + 2) % 3);
+    const model::Vec3 along = model::Vec3::Unit(axis);
+    const model::Vec3 across_1 = model::Vec3::Unit((axis + 1) % 3);
+    const model::Vec3 across_2 = model::Vec3::Unit((axis + 2) % 3);
     const Rgb& colour = kAxisColours[axis];
     glColor3d(colour.r, colour.g, colour.b);
-    const Vec3 head_base = (kAxisLength - kArrowHeadLength) * along;
-    const Vec3 tip = kAxisLength * along;
+    const model::Vec3 head_base = (kAxisLength - kArrowHeadLength) * along;
+    const model::Vec3 tip = kAxisLength * along;
     glBegin(GL_LINES);
     glVertex3d(0, 0, 0);
     glVertex3d(head_base.x(), head_base.y(), head_base.z());
     glEnd();
     // The head's cone and its base disc: between them they cover its outline from any side.
-    for (const Vec3& centre : {tip, head_base}) {
+    for (const model::Vec3& centre : {tip, head_base}) {
       glBegin(GL_TRIANGLE_FAN);
       glVertex3d(centre.x(), centre.y(), centre.z());
       for (int side = 0; side <= kArrowHeadSides; ++side) {
         const double angle = 2 * std::numbers::pi * side / kArrowHeadSides;
-        const Vec3 rim = head_base + kArrowHeadRadius *
-                                         (std::cos(angle) * across_1 + std::sin(angle) * across_2);
+        const model::Vec3 rim = head_base + kArrowHeadRadius * (std::cos(angle) * across_1 +
+                                                                std::sin(angle) * across_2);
         glVertex3d(rim.x(), rim.y(), rim.z());
       }
       glEnd();
@@ -375,4 +375,4 @@ void render_view_3d(const std::vector<ColouredMesh>& meshes, const View3dSetting
                  render_view_3d_pixels(meshes, settings));
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

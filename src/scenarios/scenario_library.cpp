@@ -4,8 +4,9 @@
 #include <stdexcept>
 
 #include "rigdesign/sim/mesh_primitives.hpp"
+#include "rigdesign/sim/scene_library.hpp"
 
-namespace rigdesign {
+namespace rigdesign::scenarios {
 namespace {
 
 // Wall following (paper 1 Fig. 12): the robot starts at the scene's start pose, 0.6 m from
@@ -18,16 +19,16 @@ constexpr double kWallFollowingMaxDuration = 40.0;  // [s] 15 s of driving at 0.
 // until it is taken away at kCartGoneAt; the robot waits at its start until kWaitUntil and
 // then drives the wall-following route. The cart's cells leave the obstacle layer (the lidar
 // sees the wall behind them) but the Hit Layer keeps them while the robot stands still.
-const Vec3 kCartLow(1.3, 0.05, 0.0);
-const Vec3 kCartHigh(1.7, 0.45, 0.7);
+const model::Vec3 kCartLow(1.3, 0.05, 0.0);
+const model::Vec3 kCartHigh(1.7, 0.45, 0.7);
 constexpr double kCartGoneAt = 2.9;  // [s] between the updates at 2.8 s and 3.0 s (5 Hz)
 constexpr double kWaitUntil = 12.0;  // [s] more than d_duration (10 s) after the cart left
 constexpr double kStationaryMaxDuration = 45.0;
 
-Pose2 start_of(const Scene& scene) {
-  Pose2 start;
+costmap::Pose2 start_of(const model::Scene& scene) {
+  costmap::Pose2 start;
   start.position = scene.T_world_robot.translation().head<2>();
-  const Vec3 forward = scene.T_world_robot.linear().col(0);
+  const model::Vec3 forward = scene.T_world_robot.linear().col(0);
   start.yaw = std::atan2(forward.y(), forward.x());
   return start;
 }
@@ -37,9 +38,9 @@ ScenarioDefinition wall_following(std::uint64_t seed) {
   scenario.name = "wall_following";
   scenario.description =
       "drive 6 m along the wall past a table whose foam top (0.37-0.45 m) overhangs the lane";
-  scenario.scene = make_scene("wall_following", seed);
+  scenario.scene = sim::make_scene("wall_following", seed);
   scenario.start = start_of(scenario.scene);
-  scenario.route = {{Vec2(kWallFollowingGoalX, scenario.start.position.y()), 0.0}};
+  scenario.route = {{model::Vec2(kWallFollowingGoalX, scenario.start.position.y()), 0.0}};
   scenario.max_duration = kWallFollowingMaxDuration;
   return scenario;
 }
@@ -48,12 +49,13 @@ ScenarioDefinition stationary(std::uint64_t seed) {
   ScenarioDefinition scenario = wall_following(seed);
   scenario.name = "stationary";
   scenario.description = "wait 12 s while a cart 1.3 m ahead is taken away at 2.9 s, then drive";
-  MovingObject cart;
+  model::MovingObject cart;
   cart.name = "cart";
   cart.mesh = sim::aligned_box(kCartLow, kCartHigh);
   // Taken away: moved far below the floor, where no ray and no body reaches.
   cart.T_world_object = [](double t) {
-    return t < kCartGoneAt ? Pose3::Identity() : Pose3(Eigen::Translation3d(0.0, 0.0, -100.0));
+    return t < kCartGoneAt ? model::Pose3::Identity()
+                           : model::Pose3(Eigen::Translation3d(0.0, 0.0, -100.0));
   };
   scenario.scene.moving.push_back(std::move(cart));
   scenario.route.insert(scenario.route.begin(), RouteStop{scenario.start.position, kWaitUntil});
@@ -74,18 +76,18 @@ ScenarioDefinition make_costmap_scenario(const std::string& name, std::uint64_t 
   throw std::invalid_argument("unknown costmap scenario '" + name + "'");
 }
 
-CostmapParams scenario_costmap_defaults() {
-  CostmapParams params;
+costmap::CostmapParams scenario_costmap_defaults() {
+  costmap::CostmapParams params;
   params.size_x = 6.0;
   params.size_y = 6.0;
-  params.layer = ObstacleLayerKind::obstacle;
+  params.layer = costmap::ObstacleLayerKind::obstacle;
   return params;
 }
 
-ObservationSource scenario_source_defaults() {
-  ObservationSource source;
+costmap::ObservationSource scenario_source_defaults() {
+  costmap::ObservationSource source;
   source.min_obstacle_height = 0.10;
   return source;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::scenarios

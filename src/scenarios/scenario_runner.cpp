@@ -13,7 +13,7 @@
 #include "rigdesign/sim/sensor_simulator.hpp"
 #include "scenarios/scenario_setup.hpp"
 
-namespace rigdesign {
+namespace rigdesign::scenarios {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -23,13 +23,14 @@ double seconds_since(Clock::time_point start) {
 }
 
 // The scene's objects at time t with their names; `storage` keeps moved copies alive.
-std::vector<NamedMesh> named_meshes_at(const Scene& scene, double t,
-                                       std::vector<TriangleMesh>& storage) {
-  std::vector<NamedMesh> meshes;
-  for (const SceneObject& object : scene.objects) meshes.push_back({object.name, &object.mesh});
+std::vector<costmap::NamedMesh> named_meshes_at(const model::Scene& scene, double t,
+                                                std::vector<model::TriangleMesh>& storage) {
+  std::vector<costmap::NamedMesh> meshes;
+  for (const model::SceneObject& object : scene.objects)
+    meshes.push_back({object.name, &object.mesh});
   storage.clear();
   storage.reserve(scene.moving.size());
-  for (const MovingObject& object : scene.moving) {
+  for (const model::MovingObject& object : scene.moving) {
     storage.emplace_back().append(object.mesh, object.T_world_object(t));
   }
   for (std::size_t i = 0; i < scene.moving.size(); ++i) {
@@ -38,27 +39,30 @@ std::vector<NamedMesh> named_meshes_at(const Scene& scene, double t,
   return meshes;
 }
 
-FootprintCollisionChecker checker_at(const Scene& scene, double t, const HeightBand& band) {
-  std::vector<TriangleMesh> storage;
-  return FootprintCollisionChecker(named_meshes_at(scene, t, storage), band);
+costmap::FootprintCollisionChecker checker_at(const model::Scene& scene, double t,
+                                              const costmap::HeightBand& band) {
+  std::vector<model::TriangleMesh> storage;
+  return costmap::FootprintCollisionChecker(named_meshes_at(scene, t, storage), band);
 }
 
-bool passable(std::uint8_t cost, const PlannerParams& planner) {
-  return cost < cost::kInscribed || (cost == cost::kUnknown && planner.allow_unknown);
+bool passable(std::uint8_t cost, const costmap::PlannerParams& planner) {
+  return cost < costmap::cost::kInscribed ||
+         (cost == costmap::cost::kUnknown && planner.allow_unknown);
 }
 
 // The passable cell nearest `target` within `radius` [m] (ties to the lower cell index).
-std::optional<Vec2> nearest_passable(const CostGrid& master, const Vec2& target, double radius,
-                                     const PlannerParams& planner) {
-  const GridWindow& window = master.window();
+std::optional<model::Vec2> nearest_passable(const costmap::CostGrid& master,
+                                            const model::Vec2& target, double radius,
+                                            const costmap::PlannerParams& planner) {
+  const costmap::GridWindow& window = master.window();
   const Eigen::Vector2i centre = window.lattice_of(target) - window.origin_cell;
   const int reach = static_cast<int>(std::ceil(radius / window.resolution));
-  std::optional<Vec2> best;
+  std::optional<model::Vec2> best;
   double best_distance = radius;
   for (int y = centre.y() - reach; y <= centre.y() + reach; ++y) {
     for (int x = centre.x() - reach; x <= centre.x() + reach; ++x) {
       if (!window.contains(x, y) || !passable(master.at(x, y), planner)) continue;
-      const Vec2 cell = window.centre_of(x, y);
+      const model::Vec2 cell = window.centre_of(x, y);
       const double distance = (cell - target).norm();
       if (distance < best_distance || (!best && distance <= best_distance)) {
         best = cell;
@@ -73,16 +77,17 @@ std::optional<Vec2> nearest_passable(const CostGrid& master, const Vec2& target,
 // current leg, or the passable cell nearest it within `search_radius` (nav2's goal tolerance
 // idea); moved on along the leg while none is found; none when the rest of the leg inside the
 // window offers none.
-std::optional<Vec2> local_goal(const Vec2& leg_start, const Vec2& leg_end, const Vec2& robot,
-                               double lookahead, double search_radius, const CostGrid& master,
-                               const PlannerParams& planner) {
-  const Vec2 leg = leg_end - leg_start;
+std::optional<model::Vec2> local_goal(const model::Vec2& leg_start, const model::Vec2& leg_end,
+                                      const model::Vec2& robot, double lookahead,
+                                      double search_radius, const costmap::CostGrid& master,
+                                      const costmap::PlannerParams& planner) {
+  const model::Vec2 leg = leg_end - leg_start;
   const double length = leg.norm();
-  const Vec2 along = length > 0 ? Vec2(leg / length) : Vec2::UnitX();
+  const model::Vec2 along = length > 0 ? model::Vec2(leg / length) : model::Vec2::UnitX();
   const double progress = std::clamp((robot - leg_start).dot(along), 0.0, length);
   const double step = master.window().resolution;
   for (double s = std::min(length, progress + lookahead);; s = std::min(length, s + step)) {
-    const Vec2 target = leg_start + s * along;
+    const model::Vec2 target = leg_start + s * along;
     if (!master.window().cell_of(target)) return std::nullopt;
     if (const auto goal = nearest_passable(master, target, search_radius, planner)) return goal;
     if (s >= length) return std::nullopt;
@@ -101,16 +106,16 @@ TimeSummary summarize_times(std::vector<double> seconds) {
   return {median, seconds[std::max<std::size_t>(rank, 1) - 1]};
 }
 
-ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
-                            const SensorLibrary& library, const ScenarioParams& params,
+ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig& rig,
+                            const model::SensorLibrary& library, const ScenarioParams& params,
                             const std::function<void(const ScenarioStep&)>& on_update) {
   check_scenario_inputs(rig, library, params);
-  const scenario_detail::Setup setup = scenario_detail::make_setup(rig, library, params);
-  Costmap costmap(setup.costmap);
-  const HeightBand band{params.ground_clearance, rig.body.height};
+  const detail::Setup setup = detail::make_setup(rig, library, params);
+  costmap::Costmap costmap(setup.costmap);
+  const costmap::HeightBand band{params.ground_clearance, rig.body.height};
   const bool static_scene = scenario.scene.moving.empty();
-  std::optional<RayCaster> still_caster;
-  std::optional<FootprintCollisionChecker> still_checker;
+  std::optional<sim::RayCaster> still_caster;
+  std::optional<costmap::FootprintCollisionChecker> still_checker;
   if (static_scene) {
     still_caster.emplace(scenario.scene.at(0.0));
     still_checker.emplace(checker_at(scenario.scene, 0.0, band));
@@ -122,7 +127,7 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
                            static_cast<std::uint32_t>(i)};
     streams.emplace_back(sequence);
   }
-  SimulationSettings settings;
+  sim::SimulationSettings settings;
   settings.add_noise = params.add_noise;
 
   const int steps_per_update =
@@ -133,18 +138,18 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
                                           2 * setup.costmap.resolution);
 
   ScenarioResult result;
-  Pose2 pose = scenario.start;
+  costmap::Pose2 pose = scenario.start;
   std::size_t stop = 0;
   bool waiting = false;
   double wait_until = 0.0;
-  VelocityCommand command;
-  PlannedPath path;
-  std::vector<PointCloud> clouds(setup.mounts.size());
+  costmap::VelocityCommand command;
+  costmap::PlannedPath path;
+  std::vector<model::PointCloud> clouds(setup.mounts.size());
   for (long k = 0;; ++k) {
     const double t = static_cast<double>(k) / params.control_rate;
     result.end_time = t;
     // Ground truth first: the pose reached by the last command.
-    const Clearance clearance =
+    const costmap::Clearance clearance =
         static_scene
             ? still_checker->clearance(pose.position, rig.body.radius)
             : checker_at(scenario.scene, t, band).clearance(pose.position, rig.body.radius);
@@ -180,35 +185,35 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
     if (t > scenario.max_duration) break;
 
     if (k % steps_per_update == 0) {
-      const Pose3 T_world_robot = scenario_detail::to_pose3(pose);
-      std::optional<RayCaster> moving_caster;
+      const model::Pose3 T_world_robot = detail::to_pose3(pose);
+      std::optional<sim::RayCaster> moving_caster;
       if (!static_scene) moving_caster.emplace(scenario.scene.at(t));
-      const RayCaster& caster = static_scene ? *still_caster : *moving_caster;
-      std::vector<CloudObservation> observations;
+      const sim::RayCaster& caster = static_scene ? *still_caster : *moving_caster;
+      std::vector<costmap::CloudObservation> observations;
       for (std::size_t i = 0; i < setup.mounts.size(); ++i) {
-        const scenario_detail::SimulatedMount& mount = setup.mounts[i];
+        const detail::SimulatedMount& mount = setup.mounts[i];
         clouds[i] =
-            simulate_frame(caster, mount.mode, mount.rays,
-                           T_world_robot * mount.mount.T_robot_sensor, settings, streams[i]);
-        observations.push_back({&clouds[i], Pose3::Identity(), setup.source});
+            sim::simulate_frame(caster, mount.mode, mount.rays,
+                                T_world_robot * mount.mount.T_robot_sensor, settings, streams[i]);
+        observations.push_back({&clouds[i], model::Pose3::Identity(), setup.source});
       }
       const bool velocity_command = !command.is_zero();
       const Clock::time_point update_start = Clock::now();
       costmap.update(t, T_world_robot, observations, velocity_command);
       result.update_seconds.push_back(seconds_since(update_start));
 
-      Vec2 goal = pose.position;
-      path = PlannedPath{};
+      model::Vec2 goal = pose.position;
+      path = costmap::PlannedPath{};
       if (!waiting) {
-        const Vec2 leg_start =
+        const model::Vec2 leg_start =
             stop == 0 ? scenario.start.position : scenario.route[stop - 1].position;
-        const std::optional<Vec2> chosen =
+        const std::optional<model::Vec2> chosen =
             local_goal(leg_start, scenario.route[stop].position, pose.position, lookahead,
                        params.goal_search_radius, costmap.master(), params.planner);
         if (chosen) {
           goal = *chosen;
           const Clock::time_point plan_start = Clock::now();
-          path = plan_dijkstra(costmap.master(), pose.position, goal, params.planner);
+          path = costmap::plan_dijkstra(costmap.master(), pose.position, goal, params.planner);
           result.planner_seconds.push_back(seconds_since(plan_start));
         }
         if (!path.found) ++result.planner_failures;  // no goal or no path: hold still
@@ -229,12 +234,12 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
       }
       ++result.updates;
     }
-    command = waiting || !path.found ? VelocityCommand{}
-                                     : pursue(path.waypoints_world, pose, params.follower);
-    pose = integrate_unicycle(pose, command, dt);
+    command = waiting || !path.found ? costmap::VelocityCommand{}
+                                     : costmap::pursue(path.waypoints_world, pose, params.follower);
+    pose = costmap::integrate_unicycle(pose, command, dt);
   }
   result.trajectory.push_back({result.end_time, pose});
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::scenarios

@@ -7,13 +7,14 @@
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
-namespace rigdesign::scenario_detail {
+namespace rigdesign::scenarios::detail {
 namespace {
 
 // Cameras lose rays along both image axes; lidars only along the scan (horizontally), since
 // dropping rings would drop the lowest beam, which decides what a lidar sees low down.
-SensorMode decimated(SensorMode mode, const ScenarioParams& params) {
-  const bool camera = mode.fov.shape == FovShape::pyramid || mode.fov.shape == FovShape::cone;
+model::SensorMode decimated(model::SensorMode mode, const ScenarioParams& params) {
+  const bool camera =
+      mode.fov.shape == model::FovShape::pyramid || mode.fov.shape == model::FovShape::cone;
   const double factor = std::max(1, camera ? params.camera_decimation : params.lidar_decimation);
   mode.angular_resolution_h *= factor;
   if (camera && mode.angular_resolution_v) *mode.angular_resolution_v *= factor;
@@ -22,7 +23,8 @@ SensorMode decimated(SensorMode mode, const ScenarioParams& params) {
 
 }  // namespace
 
-Setup make_setup(const Rig& rig, const SensorLibrary& library, const ScenarioParams& params) {
+Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
+                 const ScenarioParams& params) {
   Setup setup;
   setup.costmap = params.costmap;
   const double radius = rig.body.radius;
@@ -35,31 +37,31 @@ Setup make_setup(const Rig& rig, const SensorLibrary& library, const ScenarioPar
       std::max(setup.costmap.voxel.z_min + setup.costmap.voxel.z_resolution, rig.body.height);
   setup.source = params.source;
   setup.source.max_obstacle_height = rig.body.height;
-  for (const Mount& mount : rig.mounts) {
-    const Sensor* sensor = library.find(mount.sensor_id);
-    const SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
+  for (const model::Mount& mount : rig.mounts) {
+    const model::Sensor* sensor = library.find(mount.sensor_id);
+    const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
     if (!mode) continue;
     SimulatedMount simulated{mount, decimated(*mode, params), {}};
-    simulated.rays = ray_pattern(simulated.mode);
+    simulated.rays = sim::ray_pattern(simulated.mode);
     setup.mounts.push_back(std::move(simulated));
   }
   return setup;
 }
 
-Pose3 to_pose3(const Pose2& pose) {
-  Pose3 T_world_robot = Pose3::Identity();
-  T_world_robot.translate(Vec3(pose.position.x(), pose.position.y(), 0.0));
-  T_world_robot.rotate(Eigen::AngleAxisd(pose.yaw, Vec3::UnitZ()));
+model::Pose3 to_pose3(const costmap::Pose2& pose) {
+  model::Pose3 T_world_robot = model::Pose3::Identity();
+  T_world_robot.translate(model::Vec3(pose.position.x(), pose.position.y(), 0.0));
+  T_world_robot.rotate(Eigen::AngleAxisd(pose.yaw, model::Vec3::UnitZ()));
   return T_world_robot;
 }
 
-bool can_mark(const SimulatedMount& mount, const ObservationSource& source) {
+bool can_mark(const SimulatedMount& mount, const costmap::ObservationSource& source) {
   const double near = std::max(mount.mode.min_range, source.obstacle_min_range);
   const double far = std::min(mount.mode.max_range, source.obstacle_max_range);
   if (near > far) return false;
-  const Vec3 origin = mount.mount.T_robot_sensor.translation();
-  const Mat3 R_robot_sensor = mount.mount.T_robot_sensor.linear();
-  return std::any_of(mount.rays.begin(), mount.rays.end(), [&](const Vec3& ray) {
+  const model::Vec3 origin = mount.mount.T_robot_sensor.translation();
+  const model::Mat3 R_robot_sensor = mount.mount.T_robot_sensor.linear();
+  return std::any_of(mount.rays.begin(), mount.rays.end(), [&](const model::Vec3& ray) {
     const double dz = (R_robot_sensor * ray).z();
     const double z_near = origin.z() + dz * near;
     const double z_far = origin.z() + dz * far;
@@ -68,13 +70,13 @@ bool can_mark(const SimulatedMount& mount, const ObservationSource& source) {
   });
 }
 
-}  // namespace rigdesign::scenario_detail
+}  // namespace rigdesign::scenarios::detail
 
-namespace rigdesign {
+namespace rigdesign::scenarios {
 
-void check_scenario_inputs(const Rig& rig, const SensorLibrary& library,
-                           const ScenarioParams& params, const SourceLocation& where) {
-  Diagnostics findings;
+void check_scenario_inputs(const model::Rig& rig, const model::SensorLibrary& library,
+                           const ScenarioParams& params, const model::SourceLocation& where) {
+  model::Diagnostics findings;
   if (!(rig.body.radius > 0.0) || !(rig.body.height > 0.0)) {
     findings.error(rig.where, "body", "needs a positive radius and height for the collision check",
                    "body: {radius: > 0, height: > 0} [m]");
@@ -83,28 +85,28 @@ void check_scenario_inputs(const Rig& rig, const SensorLibrary& library,
     findings.error(where, "update_rate", "must be positive and at most control_rate",
                    "0 < update_rate <= control_rate [Hz]");
   }
-  for (const Mount& mount : rig.mounts) {
-    const Sensor* sensor = library.find(mount.sensor_id);
+  for (const model::Mount& mount : rig.mounts) {
+    const model::Sensor* sensor = library.find(mount.sensor_id);
     if (!sensor || !sensor->find_mode(mount.mode_id)) {
       findings.error(mount.sensor_where, "mounts." + mount.id,
                      "names a sensor or mode the sensor library lacks",
                      "a sensor and mode of the library");
     }
   }
-  const scenario_detail::Setup setup = scenario_detail::make_setup(rig, library, params);
+  const detail::Setup setup = detail::make_setup(rig, library, params);
   const bool any = std::any_of(setup.mounts.begin(), setup.mounts.end(), [&](const auto& mount) {
-    return scenario_detail::can_mark(mount, setup.source);
+    return detail::can_mark(mount, setup.source);
   });
   if (!any) {
     findings.error(rig.where, "mounts",
                    "no sensor can mark the costmap: none sees the height band " +
-                       format_number(setup.source.min_obstacle_height) + " to " +
-                       format_number(setup.source.max_obstacle_height) + " m within " +
-                       format_number(setup.source.obstacle_max_range) + " m",
+                       model::format_number(setup.source.min_obstacle_height) + " to " +
+                       model::format_number(setup.source.max_obstacle_height) + " m within " +
+                       model::format_number(setup.source.obstacle_max_range) + " m",
                    "at least one mount whose rays reach obstacles the body could hit");
   }
   findings.throw_if_errors();
-  check_costmap_params(setup.costmap, where);
+  costmap::check_costmap_params(setup.costmap, where);
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::scenarios

@@ -5,29 +5,30 @@
 
 #include "rigdesign/scenarios/scenario_runner.hpp"
 
-namespace rigdesign::scenario_detail {
+namespace rigdesign::scenarios::detail {
 
 struct SimulatedMount {
-  Mount mount;
-  SensorMode mode;         ///< the mount's mode with the decimated angular steps
-  std::vector<Vec3> rays;  ///< ray_pattern(mode), sensor frame
+  model::Mount mount;
+  model::SensorMode mode;         ///< the mount's mode with the decimated angular steps
+  std::vector<model::Vec3> rays;  ///< ray_pattern(mode), sensor frame
 };
 
 struct Setup {
-  CostmapParams costmap;
-  ObservationSource source;
+  costmap::CostmapParams costmap;
+  costmap::ObservationSource source;
   std::vector<SimulatedMount> mounts;
 };
 
 /// Fits the parameters to the rig's body (see ScenarioParams) and builds the ray patterns.
 /// Mounts whose sensor or mode the library lacks are skipped (check_scenario_inputs reports them).
-Setup make_setup(const Rig& rig, const SensorLibrary& library, const ScenarioParams& params);
+Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
+                 const ScenarioParams& params);
 
 /// The robot frame on the floor at a planar pose.
-Pose3 to_pose3(const Pose2& pose);
+model::Pose3 to_pose3(const costmap::Pose2& pose);
 
 /// Whether any ray of `mount`, with the robot at the origin, reaches the source's height band
 /// within the range where its end points would mark.
-bool can_mark(const SimulatedMount& mount, const ObservationSource& source);
+bool can_mark(const SimulatedMount& mount, const costmap::ObservationSource& source);
 
-}  // namespace rigdesign::scenario_detail
+}  // namespace rigdesign::scenarios::detail

@@ -1,25 +1,26 @@
 #include "rigdesign/select/cost_model.hpp"
 
-namespace rigdesign {
+namespace rigdesign::select {
 
 namespace {
 constexpr double kBitsPerByte = 8.0;
 }  // namespace
 
-const PricedCapacity* cheapest_exceeding(const std::vector<PricedCapacity>& items, double load) {
-  const PricedCapacity* best = nullptr;
-  for (const PricedCapacity& item : items) {
+const model::PricedCapacity* cheapest_exceeding(const std::vector<model::PricedCapacity>& items,
+                                                double load) {
+  const model::PricedCapacity* best = nullptr;
+  for (const model::PricedCapacity& item : items) {
     if (item.capacity > load && (best == nullptr || item.price < best->price)) best = &item;
   }
   return best;
 }
 
-CostBreakdown rig_cost(const RigLoad& load, const std::vector<PricedCapacity>& transfer,
-                       const std::vector<PricedCapacity>& cpus) {
+CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
+                       const std::vector<model::PricedCapacity>& cpus) {
   CostBreakdown cost;
   cost.sensors = load.sensor_cost;
-  const PricedCapacity* link = cheapest_exceeding(transfer, load.bandwidth * kBitsPerByte);
-  const PricedCapacity* cpu = cheapest_exceeding(cpus, load.cpu);
+  const model::PricedCapacity* link = cheapest_exceeding(transfer, load.bandwidth * kBitsPerByte);
+  const model::PricedCapacity* cpu = cheapest_exceeding(cpus, load.cpu);
   cost.feasible = link != nullptr && cpu != nullptr;
   if (link != nullptr) {
     cost.transfer = link->price;
@@ -33,4 +34,4 @@ CostBreakdown rig_cost(const RigLoad& load, const std::vector<PricedCapacity>& t
   return cost;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

@@ -6,13 +6,13 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::select {
 namespace {
 
 // A relaxable number: where it lives in the requirements, its unit, which way is looser
 // and its allowed range.
 struct Relaxable {
-  std::function<double*(Requirements&)> value;  // nullptr when the requirements omit it
+  std::function<double*(model::Requirements&)> value;  // nullptr when the requirements omit it
   std::string unit;
   bool looser_is_larger;
   double low;
@@ -20,43 +20,46 @@ struct Relaxable {
 };
 
 std::optional<Relaxable> relaxable(const std::string& path) {
-  const auto motion = [](std::optional<MotionBetweenFrames> Requirements::*member,
-                         double MotionBetweenFrames::*field) {
-    return [member, field](Requirements& r) -> double* {
+  const auto motion = [](std::optional<model::MotionBetweenFrames> model::Requirements::*member,
+                         double model::MotionBetweenFrames::*field) {
+    return [member, field](model::Requirements& r) -> double* {
       return (r.*member) ? &((*(r.*member)).*field) : nullptr;
     };
   };
-  const auto optional_number = [](std::optional<double> Requirements::*field) {
-    return [field](Requirements& r) -> double* { return (r.*field) ? &*(r.*field) : nullptr; };
+  const auto optional_number = [](std::optional<double> model::Requirements::*field) {
+    return
+        [field](model::Requirements& r) -> double* { return (r.*field) ? &*(r.*field) : nullptr; };
   };
   constexpr double kHuge = 1e9;
   if (path == "robot_speed.max_speed") {
-    return Relaxable{motion(&Requirements::robot_speed, &MotionBetweenFrames::speed), "m/s", false,
-                     0, kHuge};
+    return Relaxable{motion(&model::Requirements::robot_speed, &model::MotionBetweenFrames::speed),
+                     "m/s", false, 0, kHuge};
   }
   if (path == "robot_speed.max_travel_between_frames") {
-    return Relaxable{motion(&Requirements::robot_speed, &MotionBetweenFrames::travel), "m", true, 0,
-                     kHuge};
+    return Relaxable{motion(&model::Requirements::robot_speed, &model::MotionBetweenFrames::travel),
+                     "m", true, 0, kHuge};
   }
   if (path == "object_dynamics.max_object_speed") {
-    return Relaxable{motion(&Requirements::object_dynamics, &MotionBetweenFrames::speed), "m/s",
-                     false, 0, kHuge};
+    return Relaxable{
+        motion(&model::Requirements::object_dynamics, &model::MotionBetweenFrames::speed), "m/s",
+        false, 0, kHuge};
   }
   if (path == "object_dynamics.max_travel_between_frames") {
-    return Relaxable{motion(&Requirements::object_dynamics, &MotionBetweenFrames::travel), "m",
-                     true, 0, kHuge};
+    return Relaxable{
+        motion(&model::Requirements::object_dynamics, &model::MotionBetweenFrames::travel), "m",
+        true, 0, kHuge};
   }
   if (path == "range.min_frequency") {
-    return Relaxable{optional_number(&Requirements::min_frequency), "Hz", false, 0, kHuge};
+    return Relaxable{optional_number(&model::Requirements::min_frequency), "Hz", false, 0, kHuge};
   }
   if (path == "range.distance") {
-    return Relaxable{[](Requirements& r) { return &r.distance; }, "m", false, 0, kHuge};
+    return Relaxable{[](model::Requirements& r) { return &r.distance; }, "m", false, 0, kHuge};
   }
   if (path == "smallest_obstacle.size") {
-    return Relaxable{optional_number(&Requirements::smallest_obstacle), "m", true, 0, kHuge};
+    return Relaxable{optional_number(&model::Requirements::smallest_obstacle), "m", true, 0, kHuge};
   }
   if (path == "accuracy.max_noise") {
-    return Relaxable{optional_number(&Requirements::max_noise), "m", true, 0, kHuge};
+    return Relaxable{optional_number(&model::Requirements::max_noise), "m", true, 0, kHuge};
   }
   const std::string prefix = "sectors.";
   if (path.rfind(prefix, 0) == 0) {
@@ -68,8 +71,8 @@ std::optional<Relaxable> relaxable(const std::string& path) {
       return std::nullopt;
     }
     const bool complete = field == "min_complete_coverage";
-    return Relaxable{[sector, complete](Requirements& r) -> double* {
-                       for (SectorRequirement& s : r.sectors) {
+    return Relaxable{[sector, complete](model::Requirements& r) -> double* {
+                       for (model::SectorRequirement& s : r.sectors) {
                          if (s.name == sector)
                            return complete ? &s.min_complete_coverage : &s.min_floor_coverage;
                        }
@@ -80,10 +83,10 @@ std::optional<Relaxable> relaxable(const std::string& path) {
   return std::nullopt;
 }
 
-[[noreturn]] void fail(const RelaxationStep& step, const std::string& problem,
+[[noreturn]] void fail(const model::RelaxationStep& step, const std::string& problem,
                        const std::string& expected) {
-  throw InputError(
-      Diagnostic{step.where, "steps.relax", "'" + step.requirement + "' " + problem, expected});
+  throw model::InputError(model::Diagnostic{step.where, "steps.relax",
+                                            "'" + step.requirement + "' " + problem, expected});
 }
 
 const char* kRelaxable =
@@ -94,8 +97,9 @@ const char* kRelaxable =
 
 }  // namespace
 
-Requirements relax(const Requirements& requirements, const RelaxationStep& step) {
-  Requirements relaxed = requirements;
+model::Requirements relax(const model::Requirements& requirements,
+                          const model::RelaxationStep& step) {
+  model::Requirements relaxed = requirements;
   if (step.requirement == "lighting") {
     if (!step.drop) fail(step, "needs `drop: <condition>`", "drop: dark, indoor or sunlight");
     const auto it = std::find(relaxed.lighting.begin(), relaxed.lighting.end(), *step.drop);
@@ -115,30 +119,30 @@ Requirements relax(const Requirements& requirements, const RelaxationStep& step)
   }
   if (*step.to <= target->low || *step.to > target->high) {
     if (!(target->unit == "share" && *step.to == 0.0)) {
-      fail(step, "cannot be " + format_number(*step.to),
+      fail(step, "cannot be " + model::format_number(*step.to),
            target->unit == "share" ? "a share in [0, 1]" : "a positive number in " + target->unit);
     }
   }
   const bool looser = target->looser_is_larger ? *step.to > *value : *step.to < *value;
   if (!looser) {
     fail(step,
-         "would go from " + format_number(*value) + " to " + format_number(*step.to) +
+         "would go from " + model::format_number(*value) + " to " + model::format_number(*step.to) +
              ", which tightens it",
          std::string("a value ") + (target->looser_is_larger ? "above " : "below ") +
-             format_number(*value) + " " + target->unit);
+             model::format_number(*value) + " " + target->unit);
   }
   *value = *step.to;
   return relaxed;
 }
 
-std::string describe(const Requirements& before, const RelaxationStep& step) {
+std::string describe(const model::Requirements& before, const model::RelaxationStep& step) {
   if (step.requirement == "lighting") return "lighting: drop " + to_string(*step.drop);
-  Requirements copy = before;
+  model::Requirements copy = before;
   const std::optional<Relaxable> target = relaxable(step.requirement);
   const double* value = target ? target->value(copy) : nullptr;
   const std::string unit = target && target->unit != "share" ? " " + target->unit : "";
-  return step.requirement + " " + (value ? format_number(*value) : "?") + " -> " +
-         format_number(*step.to) + unit;
+  return step.requirement + " " + (value ? model::format_number(*value) : "?") + " -> " +
+         model::format_number(*step.to) + unit;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

@@ -4,42 +4,45 @@
 
 #include "rigdesign/select/relax_step.hpp"
 
-namespace rigdesign {
+namespace rigdesign::select {
 namespace {
 
 // Each requirement the final requirements state, and the requirements without it.
-std::vector<std::pair<std::string, Requirements>> without_each(const Requirements& requirements) {
-  std::vector<std::pair<std::string, Requirements>> variants;
+std::vector<std::pair<std::string, model::Requirements>> without_each(
+    const model::Requirements& requirements) {
+  std::vector<std::pair<std::string, model::Requirements>> variants;
   const auto add = [&](const std::string& name, auto change) {
-    Requirements copy = requirements;
+    model::Requirements copy = requirements;
     change(copy);
     variants.emplace_back(name, std::move(copy));
   };
   if (requirements.min_frequency)
-    add("R3 range.min_frequency", [](Requirements& r) { r.min_frequency.reset(); });
+    add("R3 range.min_frequency", [](model::Requirements& r) { r.min_frequency.reset(); });
   if (requirements.object_dynamics)
-    add("R4 object_dynamics", [](Requirements& r) { r.object_dynamics.reset(); });
+    add("R4 object_dynamics", [](model::Requirements& r) { r.object_dynamics.reset(); });
   if (requirements.robot_speed)
-    add("R5 robot_speed", [](Requirements& r) { r.robot_speed.reset(); });
+    add("R5 robot_speed", [](model::Requirements& r) { r.robot_speed.reset(); });
   if (requirements.smallest_obstacle)
-    add("R6 smallest_obstacle", [](Requirements& r) { r.smallest_obstacle.reset(); });
-  if (requirements.max_noise) add("R7 accuracy", [](Requirements& r) { r.max_noise.reset(); });
-  for (const LightCondition condition : requirements.lighting) {
-    add("R8 lighting " + to_string(condition), [condition](Requirements& r) {
+    add("R6 smallest_obstacle", [](model::Requirements& r) { r.smallest_obstacle.reset(); });
+  if (requirements.max_noise)
+    add("R7 accuracy", [](model::Requirements& r) { r.max_noise.reset(); });
+  for (const model::LightCondition condition : requirements.lighting) {
+    add("R8 lighting " + to_string(condition), [condition](model::Requirements& r) {
       r.lighting.erase(std::find(r.lighting.begin(), r.lighting.end(), condition));
     });
   }
-  for (const SectorRequirement& sector : requirements.sectors) {
-    add("R2 sectors." + sector.name, [name = sector.name](Requirements& r) {
-      r.sectors.erase(std::find_if(r.sectors.begin(), r.sectors.end(),
-                                   [&](const SectorRequirement& s) { return s.name == name; }));
+  for (const model::SectorRequirement& sector : requirements.sectors) {
+    add("R2 sectors." + sector.name, [name = sector.name](model::Requirements& r) {
+      r.sectors.erase(
+          std::find_if(r.sectors.begin(), r.sectors.end(),
+                       [&](const model::SectorRequirement& s) { return s.name == name; }));
     });
   }
   return variants;
 }
 
 std::vector<BindingRequirement> binding_requirements(const SelectionSpace& space,
-                                                     const Requirements& requirements,
+                                                     const model::Requirements& requirements,
                                                      const Selection& last, double budget) {
   std::vector<BindingRequirement> all;
   for (const auto& [name, relaxed] : without_each(requirements)) {
@@ -65,18 +68,20 @@ std::vector<BindingRequirement> binding_requirements(const SelectionSpace& space
 
 }  // namespace
 
-Requirements check_policy(const Requirements& requirements, const RelaxationPolicy& policy) {
-  Requirements current = requirements;
-  for (const RelaxationStep& step : policy.steps) current = relax(current, step);
+model::Requirements check_policy(const model::Requirements& requirements,
+                                 const model::RelaxationPolicy& policy) {
+  model::Requirements current = requirements;
+  for (const model::RelaxationStep& step : policy.steps) current = relax(current, step);
   return current;
 }
 
 RelaxationOutcome select_within_budget(
-    const SelectionSpace& space, const Requirements& requirements, const RelaxationPolicy& policy,
-    double budget, const std::function<void(const RelaxationIteration&)>& on_iteration,
+    const SelectionSpace& space, const model::Requirements& requirements,
+    const model::RelaxationPolicy& policy, double budget,
+    const std::function<void(const RelaxationIteration&)>& on_iteration,
     const std::function<void(long)>& progress) {
   RelaxationOutcome outcome;
-  Requirements current = requirements;
+  model::Requirements current = requirements;
   for (std::size_t i = 0; i <= policy.steps.size(); ++i) {
     RelaxationIteration iteration;
     if (i > 0) {
@@ -99,4 +104,4 @@ RelaxationOutcome select_within_budget(
   return outcome;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

@@ -4,7 +4,7 @@
 #include <limits>
 #include <numeric>
 
-namespace rigdesign {
+namespace rigdesign::select {
 namespace {
 
 bool meets(double share, double threshold) {
@@ -52,7 +52,7 @@ class BranchAndBound {
   // every sector threshold.
   bool evaluate(std::size_t depth, const CostBreakdown& cost) {
     ++result_.evaluations;
-    const std::vector<SectionRaster>& sections = union_[depth];
+    const std::vector<geometry::SectionRaster>& sections = union_[depth];
     bool feasible = std::find(excluded_.begin(), excluded_.end(), choice_) == excluded_.end();
     for (const SearchSector& sector : problem_.sectors) {
       for (const int a : sector.angles) {
@@ -62,7 +62,7 @@ class BranchAndBound {
       }
     }
     double mean = 0.0;
-    for (const SectionRaster& section : sections) mean += section.complete_share();
+    for (const geometry::SectionRaster& section : sections) mean += section.complete_share();
     const double angles = static_cast<double>(sections.size());
     result_.explored.push_back({cost.total, sections.empty() ? 0.0 : mean / angles, feasible});
     return feasible;
@@ -72,8 +72,8 @@ class BranchAndBound {
   bool may_meet(std::size_t depth) const {
     for (const SearchSector& sector : problem_.sectors) {
       for (const int a : sector.angles) {
-        const SectionRaster& chosen = union_[depth][a];
-        const SectionRaster& rest = suffix_[depth][a];
+        const geometry::SectionRaster& chosen = union_[depth][a];
+        const geometry::SectionRaster& rest = suffix_[depth][a];
         if (!meets(chosen.complete_share_with(rest), sector.min_complete) ||
             !meets(chosen.floor_share_with(rest), sector.min_floor)) {
           return false;
@@ -117,8 +117,8 @@ class BranchAndBound {
   const SearchProblem& problem_;
   const std::vector<std::vector<int>>& excluded_;
   const std::function<void(long)>& progress_;
-  std::vector<std::vector<SectionRaster>> suffix_;
-  std::vector<std::vector<SectionRaster>> union_;
+  std::vector<std::vector<geometry::SectionRaster>> suffix_;
+  std::vector<std::vector<geometry::SectionRaster>> union_;
   std::vector<std::vector<int>> order_;
   std::vector<int> choice_;
   SearchResult result_;
@@ -140,8 +140,8 @@ SearchResult brute_force(const SearchProblem& problem) {
   while (true) {
     ++result.nodes;
     RigLoad load;
-    std::vector<SectionRaster> sections;
-    for (const RasterGrid& grid : problem.grids) sections.emplace_back(grid);
+    std::vector<geometry::SectionRaster> sections;
+    for (const geometry::RasterGrid& grid : problem.grids) sections.emplace_back(grid);
     for (std::size_t k = 0; k < slots; ++k) {
       if (choice[k] < 0) continue;
       const SearchOption& option = problem.slots[k][choice[k]];
@@ -175,4 +175,4 @@ SearchResult brute_force(const SearchProblem& problem) {
   return result;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

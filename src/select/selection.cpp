@@ -7,18 +7,18 @@
 #include "rigdesign/geometry/cross_section.hpp"
 #include "rigdesign/model/format_number.hpp"
 
-namespace rigdesign {
+namespace rigdesign::select {
 namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr int kMaxExactRejections = 50;
 
 bool meets_alone(const CatalogOption& option, const SatisficingTargets& targets) {
-  const MountMetrics& m = option.metrics;
+  const metrics::MountMetrics& m = option.metrics;
   if (m.frequency < targets.min_frequency) return false;
   if (targets.max_spacing && m.point_spacing > *targets.max_spacing) return false;
   if (targets.max_noise && m.noise > *targets.max_noise) return false;
-  for (const LightCondition condition : targets.lighting) {
+  for (const model::LightCondition condition : targets.lighting) {
     if (!m.light.immune_to(condition)) return false;
   }
   return true;
@@ -26,7 +26,7 @@ bool meets_alone(const CatalogOption& option, const SatisficingTargets& targets)
 
 }  // namespace
 
-SatisficingTargets satisficing_targets(const Requirements& requirements) {
+SatisficingTargets satisficing_targets(const model::Requirements& requirements) {
   SatisficingTargets targets;
   targets.min_frequency = requirements.required_frequency();
   targets.max_spacing = requirements.smallest_obstacle;
@@ -37,44 +37,45 @@ SatisficingTargets satisficing_targets(const Requirements& requirements) {
   return targets;
 }
 
-SelectionSpace::SelectionSpace(const Catalog& catalog, const SensorLibrary& library,
-                               const CoverageSettings& settings)
+SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::SensorLibrary& library,
+                               const metrics::CoverageSettings& settings)
     : catalog_(&catalog), library_(&library), settings_(settings) {
-  const BodyOccluder body(catalog.body);
+  const geometry::BodyOccluder body(catalog.body);
   const int angles = std::max(1, static_cast<int>(std::lround(kTwoPi / settings.step)));
-  std::vector<SectionFrame> frames;
+  std::vector<geometry::SectionFrame> frames;
   for (int a = 0; a < angles; ++a) {
-    frames.push_back(section_frame(body, kTwoPi * a / angles, catalog.distance_of_interest));
+    frames.push_back(
+        geometry::section_frame(body, kTwoPi * a / angles, catalog.distance_of_interest));
     grids_.push_back(
         {std::max(1, static_cast<int>(std::ceil(frames.back().width() / settings.raster_cell))),
          std::max(1, static_cast<int>(std::ceil(frames.back().h / settings.raster_cell)))});
   }
   options_.resize(catalog.slots.size());
   for (std::size_t k = 0; k < catalog.slots.size(); ++k) {
-    const MountingSlot& slot = catalog.slots[k];
-    Mount mount;
+    const model::MountingSlot& slot = catalog.slots[k];
+    model::Mount mount;
     mount.id = slot.id;
     mount.T_robot_sensor = slot.T_robot_sensor;
     const double distance = slot.distance_of_interest.value_or(catalog.distance_of_interest);
-    for (const CandidateSensor& candidate : catalog.sensors) {
+    for (const model::CandidateSensor& candidate : catalog.sensors) {
       if (std::find(slot.allowed_sensors.begin(), slot.allowed_sensors.end(),
                     candidate.sensor_id) == slot.allowed_sensors.end()) {
         continue;
       }
-      const Sensor* sensor = library.find(candidate.sensor_id);
+      const model::Sensor* sensor = library.find(candidate.sensor_id);
       for (const std::string& mode_id : candidate.mode_ids) {
         CatalogOption option;
         option.slot = k;
         option.sensor = sensor;
         option.mode = sensor->find_mode(mode_id);
-        option.metrics = compute_mount_metrics(mount, *sensor, *option.mode, distance);
+        option.metrics = metrics::compute_mount_metrics(mount, *sensor, *option.mode, distance);
         // U_f: filtering time per point times points per second (paper 1, eq. 5).
         option.filtering =
             candidate.filtering_seconds_per_point.value_or(catalog.filtering_seconds_per_point) *
             option.metrics.points_per_second;
-        const MountedFov fov(*option.mode, slot.T_robot_sensor, body);
+        const geometry::MountedFov fov(*option.mode, slot.T_robot_sensor, body);
         for (int a = 0; a < angles; ++a)
-          option.sections.push_back(rasterize(fov, frames[a], grids_[a]));
+          option.sections.push_back(geometry::rasterize(fov, frames[a], grids_[a]));
         options_[k].push_back(std::move(option));
       }
     }
@@ -108,25 +109,25 @@ SearchProblem SelectionSpace::problem_for(
       kept[k].push_back(&option);
     }
   }
-  for (const SectorRequirement& sector : targets.sectors) {
+  for (const model::SectorRequirement& sector : targets.sectors) {
     SearchSector searched{{}, sector.min_complete_coverage, sector.min_floor_coverage};
     for (std::size_t a = 0; a < grids_.size(); ++a) {
-      if (in_sector(sector, angle(a))) searched.angles.push_back(static_cast<int>(a));
+      if (metrics::in_sector(sector, angle(a))) searched.angles.push_back(static_cast<int>(a));
     }
     problem.sectors.push_back(std::move(searched));
   }
   return problem;
 }
 
-Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chosen) const {
-  Rig rig;
+model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chosen) const {
+  model::Rig rig;
   rig.name = catalog_->name + " (selected)";
   rig.body = catalog_->body;
   rig.distance_of_interest = catalog_->distance_of_interest;
   rig.file = catalog_->file;
   for (const CatalogOption* option : chosen) {
-    const MountingSlot& slot = catalog_->slots[option->slot];
-    Mount mount;
+    const model::MountingSlot& slot = catalog_->slots[option->slot];
+    model::Mount mount;
     mount.id = slot.id;
     mount.sensor_id = option->sensor->id;
     mount.mode_id = option->mode->id;
@@ -137,11 +138,11 @@ Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chosen) con
   return rig;
 }
 
-Selection select_cheapest(const SelectionSpace& space, const Requirements& requirements,
+Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
                           const std::function<void(long)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   Selection selection;
-  const Catalog& catalog = space.catalog();
+  const model::Catalog& catalog = space.catalog();
   const SatisficingTargets targets = satisficing_targets(requirements);
   if (requirements.body_radius &&
       (std::abs(*requirements.body_radius - catalog.body.radius) > 1e-3 ||
@@ -150,15 +151,16 @@ Selection select_cheapest(const SelectionSpace& space, const Requirements& requi
     return selection;
   }
   if (catalog.distance_of_interest + 1e-9 < targets.distance) {
-    selection.infeasible_reason =
-        "R3: the catalog's distance of interest " + format_number(catalog.distance_of_interest) +
-        " m is below the required " + format_number(targets.distance) + " m";
+    selection.infeasible_reason = "R3: the catalog's distance of interest " +
+                                  model::format_number(catalog.distance_of_interest) +
+                                  " m is below the required " +
+                                  model::format_number(targets.distance) + " m";
     return selection;
   }
   std::vector<std::vector<const CatalogOption*>> kept;
   const SearchProblem problem = space.problem_for(targets, kept);
   std::vector<std::vector<int>> excluded;
-  CoverageSettings exact = space.settings();
+  metrics::CoverageSettings exact = space.settings();
   exact.exact = true;
   while (true) {
     selection.search = branch_and_bound(problem, excluded, progress);
@@ -169,10 +171,11 @@ Selection select_cheapest(const SelectionSpace& space, const Requirements& requi
       if (index >= 0) selection.chosen.push_back(kept[k][index]);
     }
     selection.rig = space.rig_for(selection.chosen);
-    selection.coverage = compute_coverage(selection.rig, space.library(), targets.sectors, exact);
+    selection.coverage =
+        metrics::compute_coverage(selection.rig, space.library(), targets.sectors, exact);
     const bool verified =
         std::all_of(selection.coverage.sectors.begin(), selection.coverage.sectors.end(),
-                    [](const SectorCoverage& sector) { return sector.pass; });
+                    [](const metrics::SectorCoverage& sector) { return sector.pass; });
     if (verified) {
       selection.found = true;
       selection.cost = selection.search.cost;
@@ -189,4 +192,4 @@ Selection select_cheapest(const SelectionSpace& space, const Requirements& requi
   return selection;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

@@ -17,7 +17,7 @@ constexpr double kCellHalfSide = 2.0;
 constexpr double kFloorMargin = 1.0;
 
 // Plate [m], paper 3.
-const Vec3 kPlateSize(0.8, 0.6, 1.0);
+const model::Vec3 kPlateSize(0.8, 0.6, 1.0);
 
 // Walk, paper 3: semi-axes [m], two laps in about 96 s, so one lap in 48 s [s].
 constexpr double kSemiAxisX = 2.0;
@@ -40,8 +40,8 @@ constexpr double kHeadBottom = 1.5;
 constexpr double kHeadRadius = 0.1;
 constexpr double kBodyHeight = 1.75;
 
-TriangleMesh person_mesh() {
-  TriangleMesh body;
+model::TriangleMesh person_mesh() {
+  model::TriangleMesh body;
   auto part = [&](double half_x, double y0, double y1, double z0, double z1) {
     body.append(aligned_box({-half_x, y0, z0}, {half_x, y1, z1}));
   };
@@ -53,15 +53,15 @@ TriangleMesh person_mesh() {
   part(arm_half, kTorsoWidth / 2, kTorsoWidth / 2 + kArmSide, kArmBottom, kTorsoTop);
   part(arm_half, -kTorsoWidth / 2 - kArmSide, -kTorsoWidth / 2, kArmBottom, kTorsoTop);
   body.append(cylinder_mesh(kNeckRadius, kHeadBottom - kTorsoTop,
-                            Pose3(Eigen::Translation3d(0, 0, kTorsoTop))));
+                            model::Pose3(Eigen::Translation3d(0, 0, kTorsoTop))));
   body.append(cylinder_mesh(kHeadRadius, kBodyHeight - kHeadBottom,
-                            Pose3(Eigen::Translation3d(0, 0, kHeadBottom))));
+                            model::Pose3(Eigen::Translation3d(0, 0, kHeadBottom))));
   return body;
 }
 
 // On the ellipse at angle 2 pi t / period, counter-clockwise from (a, 0), facing along the
 // tangent (the way the person walks).
-Pose3 T_world_person(double t) {
+model::Pose3 T_world_person(double t) {
   const double angle = 2 * std::numbers::pi * t / kLapPeriod;
   const double x = kSemiAxisX * std::cos(angle);
   const double y = kSemiAxisY * std::sin(angle);
@@ -71,14 +71,14 @@ Pose3 T_world_person(double t) {
 
 }  // namespace
 
-Scene make_cell_scene() {
-  Scene scene;
+model::Scene make_cell_scene() {
+  model::Scene scene;
   scene.name = "cell";
   scene.T_world_robot = floor_pose(0, -kCellHalfSide, std::numbers::pi / 2);
   const double half = kCellHalfSide + kFloorMargin;
   add_object(scene, "floor", floor_rectangle({{-half, -half}, {half, half}}, 0));
   add_object(scene, "plate",
-             box_mesh(kPlateSize, Pose3(Eigen::Translation3d(0, 0, kPlateSize.z() / 2))));
+             box_mesh(kPlateSize, model::Pose3(Eigen::Translation3d(0, 0, kPlateSize.z() / 2))));
   scene.moving.push_back({"person", person_mesh(), T_world_person});
   return scene;
 }

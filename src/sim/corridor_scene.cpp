@@ -25,14 +25,14 @@ constexpr double kDoorLeftX = 5.0;    // start of the door in the left (+y) wall
 constexpr double kDoorRightX = 10.0;  // start of the door in the right (-y) wall
 
 // A 40 x 30 x 30 cm box on the floor, right of the centre line, 7 m ahead of the robot.
-const Vec3 kBoxSize(0.4, 0.3, 0.3);
+const model::Vec3 kBoxSize(0.4, 0.3, 0.3);
 constexpr double kBoxX = 8.0;
 constexpr double kBoxY = -0.5;
 
 constexpr double kRobotX = 1.0;  // [m] from the start wall
 
 // One side wall with a door recess starting at `door_x`; `side` is +1 (left) or -1 (right).
-void add_side_wall(Scene& scene, const std::string& name, double side, double door_x) {
+void add_side_wall(model::Scene& scene, const std::string& name, double side, double door_x) {
   const double inner = side * kHalfWidth;
   const double outer = side * (kHalfWidth + kWallThickness);
   const double door_back = side * (kHalfWidth + kRecessDepth);
@@ -49,12 +49,12 @@ void add_side_wall(Scene& scene, const std::string& name, double side, double do
 
 }  // namespace
 
-Scene make_corridor_scene() {
-  Scene scene;
+model::Scene make_corridor_scene() {
+  model::Scene scene;
   scene.name = "corridor";
   scene.T_world_robot = floor_pose(kRobotX, 0, 0);
 
-  TriangleMesh floor = floor_rectangle({{0, -kHalfWidth}, {kLength, kHalfWidth}}, 0);
+  model::TriangleMesh floor = floor_rectangle({{0, -kHalfWidth}, {kLength, kHalfWidth}}, 0);
   // The recesses' floors, in front of each door.
   floor.append(floor_rectangle(
       {{kDoorLeftX, kHalfWidth}, {kDoorLeftX + kDoorWidth, kHalfWidth + kRecessDepth}}, 0));
@@ -71,8 +71,9 @@ Scene make_corridor_scene() {
   add_side_wall(scene, "wall_left", +1, kDoorLeftX);
   add_side_wall(scene, "wall_right", -1, kDoorRightX);
 
-  add_object(scene, "box",
-             box_mesh(kBoxSize, Pose3(Eigen::Translation3d(kBoxX, kBoxY, kBoxSize.z() / 2))));
+  add_object(
+      scene, "box",
+      box_mesh(kBoxSize, model::Pose3(Eigen::Translation3d(kBoxX, kBoxY, kBoxSize.z() / 2))));
   return scene;
 }
 

@@ -7,7 +7,7 @@
 namespace rigdesign::sim {
 namespace {
 
-bool inside(const Rect2& rect, const Vec2& point) {
+bool inside(const Rect2& rect, const model::Vec2& point) {
   return point.x() > rect.low.x() && point.x() < rect.high.x() && point.y() > rect.low.y() &&
          point.y() < rect.high.y();
 }
@@ -25,13 +25,13 @@ std::vector<double> cuts(double low, double high, const std::vector<double>& can
 
 }  // namespace
 
-TriangleMesh box_mesh(const Vec3& size, const Pose3& T_world_box) {
-  TriangleMesh mesh;
+model::TriangleMesh box_mesh(const model::Vec3& size, const model::Pose3& T_world_box) {
+  model::TriangleMesh mesh;
   // Corner i has bit 0 set for +x, bit 1 for +y, bit 2 for +z.
   for (int corner = 0; corner < 8; ++corner) {
-    const Vec3 sign((corner & 1) ? 0.5 : -0.5, (corner & 2) ? 0.5 : -0.5,
-                    (corner & 4) ? 0.5 : -0.5);
-    mesh.vertices.push_back(T_world_box * Vec3(sign.cwiseProduct(size)));
+    const model::Vec3 sign((corner & 1) ? 0.5 : -0.5, (corner & 2) ? 0.5 : -0.5,
+                           (corner & 4) ? 0.5 : -0.5);
+    mesh.vertices.push_back(T_world_box * model::Vec3(sign.cwiseProduct(size)));
   }
   // Two triangles per face, each counter-clockwise seen from outside.
   mesh.triangles = {{0, 2, 3}, {0, 3, 1},   // -z
@@ -43,21 +43,23 @@ TriangleMesh box_mesh(const Vec3& size, const Pose3& T_world_box) {
   return mesh;
 }
 
-TriangleMesh aligned_box(const Vec3& low, const Vec3& high) {
-  Pose3 T_world_box = Pose3::Identity();
+model::TriangleMesh aligned_box(const model::Vec3& low, const model::Vec3& high) {
+  model::Pose3 T_world_box = model::Pose3::Identity();
   T_world_box.translation() = (low + high) / 2;
   return box_mesh(high - low, T_world_box);
 }
 
-TriangleMesh cylinder_mesh(double radius, double height, const Pose3& T_world_cylinder) {
-  TriangleMesh mesh;
+model::TriangleMesh cylinder_mesh(double radius, double height,
+                                  const model::Pose3& T_world_cylinder) {
+  model::TriangleMesh mesh;
   const int n = kCylinderSegments;
   // Bottom ring is 0 .. n-1, top ring n .. 2n-1, both counter-clockwise seen from +z.
   for (int ring = 0; ring < 2; ++ring) {
     for (int i = 0; i < n; ++i) {
       const double angle = 2 * std::numbers::pi * i / n;
-      mesh.vertices.push_back(T_world_cylinder * Vec3(radius * std::cos(angle),
-                                                      radius * std::sin(angle), ring * height));
+      mesh.vertices.push_back(T_world_cylinder * model::Vec3(radius * std::cos(angle),
+                                                             radius * std::sin(angle),
+                                                             ring * height));
     }
   }
   for (int i = 0; i < n; ++i) {
@@ -73,17 +75,18 @@ TriangleMesh cylinder_mesh(double radius, double height, const Pose3& T_world_cy
   return mesh;
 }
 
-TriangleMesh cylinder_between(const Vec3& start, const Vec3& end, double radius) {
-  const Vec3 axis = end - start;
-  Pose3 T_world_cylinder = Pose3::Identity();
+model::TriangleMesh cylinder_between(const model::Vec3& start, const model::Vec3& end,
+                                     double radius) {
+  const model::Vec3 axis = end - start;
+  model::Pose3 T_world_cylinder = model::Pose3::Identity();
   T_world_cylinder.linear() =
-      Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), axis).toRotationMatrix();
+      Eigen::Quaterniond::FromTwoVectors(model::Vec3::UnitZ(), axis).toRotationMatrix();
   T_world_cylinder.translation() = start;
   return cylinder_mesh(radius, axis.norm(), T_world_cylinder);
 }
 
-TriangleMesh floor_rectangle(const Rect2& area, double z) {
-  TriangleMesh mesh;
+model::TriangleMesh floor_rectangle(const Rect2& area, double z) {
+  model::TriangleMesh mesh;
   mesh.vertices = {{area.low.x(), area.low.y(), z},
                    {area.high.x(), area.low.y(), z},
                    {area.high.x(), area.high.y(), z},
@@ -92,7 +95,8 @@ TriangleMesh floor_rectangle(const Rect2& area, double z) {
   return mesh;
 }
 
-TriangleMesh floor_with_openings(const Rect2& area, const std::vector<Rect2>& openings, double z) {
+model::TriangleMesh floor_with_openings(const Rect2& area, const std::vector<Rect2>& openings,
+                                        double z) {
   std::vector<double> x_candidates;
   std::vector<double> y_candidates;
   for (const Rect2& opening : openings) {
@@ -101,12 +105,12 @@ TriangleMesh floor_with_openings(const Rect2& area, const std::vector<Rect2>& op
   }
   const std::vector<double> xs = cuts(area.low.x(), area.high.x(), x_candidates);
   const std::vector<double> ys = cuts(area.low.y(), area.high.y(), y_candidates);
-  TriangleMesh mesh;
+  model::TriangleMesh mesh;
   for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
     for (std::size_t j = 0; j + 1 < ys.size(); ++j) {
       const Rect2 cell{{xs[i], ys[j]}, {xs[i + 1], ys[j + 1]}};
       // Every cell lies wholly inside or wholly outside each opening, so its centre decides.
-      const Vec2 centre = (cell.low + cell.high) / 2;
+      const model::Vec2 centre = (cell.low + cell.high) / 2;
       const bool open = std::any_of(openings.begin(), openings.end(),
                                     [&](const Rect2& opening) { return inside(opening, centre); });
       if (!open) mesh.append(floor_rectangle(cell, z));

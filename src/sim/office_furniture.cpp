@@ -40,15 +40,16 @@ constexpr double kCasterHeight = 0.05;  // the bars rest on the casters
 constexpr double kCableRadius = 0.005;
 constexpr double kCableAlongTable = 0.3;
 
-Pose3 translated(const Pose3& T_world_frame, const Vec3& offset) {
-  Pose3 T_world_part = T_world_frame;
+model::Pose3 translated(const model::Pose3& T_world_frame, const model::Vec3& offset) {
+  model::Pose3 T_world_part = T_world_frame;
   T_world_part.translate(offset);
   return T_world_part;
 }
 
 }  // namespace
 
-void add_office_table(Scene& scene, const std::string& name, const Pose3& T_world_table) {
+void add_office_table(model::Scene& scene, const std::string& name,
+                      const model::Pose3& T_world_table) {
   add_object(scene, name + "_top",
              box_mesh({kTableLength, kTableDepth, kTopThickness},
                       translated(T_world_table, {0, 0, kTableHeight - kTopThickness / 2})));
@@ -64,14 +65,15 @@ void add_office_table(Scene& scene, const std::string& name, const Pose3& T_worl
   }
 }
 
-void add_office_chair(Scene& scene, const std::string& name, const Pose3& T_world_chair) {
+void add_office_chair(model::Scene& scene, const std::string& name,
+                      const model::Pose3& T_world_chair) {
   const double seat_bottom = kSeatTop - kSeatThickness;
   add_object(scene, name + "_seat",
              box_mesh({kSeatDepth, kSeatWidth, kSeatThickness},
                       translated(T_world_chair, {0, 0, kSeatTop - kSeatThickness / 2})));
 
   const double back_x = -(kSeatDepth / 2 + kBackThickness / 2);
-  TriangleMesh back =
+  model::TriangleMesh back =
       box_mesh({kBackThickness, kBackWidth, kBackTop - kBackBottom},
                translated(T_world_chair, {back_x, 0, (kBackBottom + kBackTop) / 2}));
   back.append(box_mesh({kBackStrutSide, kBackStrutSide, kBackBottom - kSeatTop},
@@ -80,18 +82,18 @@ void add_office_chair(Scene& scene, const std::string& name, const Pose3& T_worl
 
   const double bar_bottom = kCasterHeight;
   const double bar_top = bar_bottom + kStarLegSide;
-  TriangleMesh column = cylinder_mesh(kHubRadius, bar_top - bar_bottom,
-                                      translated(T_world_chair, {0, 0, bar_bottom}));
+  model::TriangleMesh column = cylinder_mesh(kHubRadius, bar_top - bar_bottom,
+                                             translated(T_world_chair, {0, 0, bar_bottom}));
   column.append(cylinder_mesh(kColumnRadius, seat_bottom - bar_top,
                               translated(T_world_chair, {0, 0, bar_top})));
   add_object(scene, name + "_column", std::move(column));
 
-  TriangleMesh casters;
+  model::TriangleMesh casters;
   const double bar_length = kStarLegOuter - kStarLegInner;
   for (int leg = 0; leg < kStarLegs; ++leg) {
     const double angle = 2 * std::numbers::pi * leg / kStarLegs;
-    Pose3 T_world_bar = T_world_chair;
-    T_world_bar.rotate(Eigen::AngleAxisd(angle, Vec3::UnitZ()));
+    model::Pose3 T_world_bar = T_world_chair;
+    T_world_bar.rotate(Eigen::AngleAxisd(angle, model::Vec3::UnitZ()));
     add_object(scene, name + "_leg_" + std::to_string(leg + 1),
                box_mesh({bar_length, kStarLegSide, kStarLegSide},
                         translated(T_world_bar, {(kStarLegInner + kStarLegOuter) / 2, 0,
@@ -102,11 +104,11 @@ void add_office_chair(Scene& scene, const std::string& name, const Pose3& T_worl
   add_object(scene, name + "_casters", std::move(casters));
 }
 
-void add_hanging_cable(Scene& scene, const Pose3& T_world_table) {
+void add_hanging_cable(model::Scene& scene, const model::Pose3& T_world_table) {
   // From just outside the top's edge, level with the board's middle, down to rest on the floor.
-  const Vec3 edge_table(kCableAlongTable, -(kTableDepth / 2 + kCableRadius),
-                        kTableHeight - kTopThickness / 2);
-  const Vec3 floor_table(kCableAlongTable, -(kTableDepth / 2 + kCableReach), kCableRadius);
+  const model::Vec3 edge_table(kCableAlongTable, -(kTableDepth / 2 + kCableRadius),
+                               kTableHeight - kTopThickness / 2);
+  const model::Vec3 floor_table(kCableAlongTable, -(kTableDepth / 2 + kCableReach), kCableRadius);
   add_object(
       scene, "cable",
       cylinder_between(T_world_table * edge_table, T_world_table * floor_table, kCableRadius));

@@ -22,15 +22,17 @@ constexpr double kChairReach = 0.36;
 
 /// Adds "<name>_top" and "<name>_leg_1" .. "<name>_leg_4". `T_world_table`: origin on the
 /// floor below the top's centre, x along the long side.
-void add_office_table(Scene& scene, const std::string& name, const Pose3& T_world_table);
+void add_office_table(model::Scene& scene, const std::string& name,
+                      const model::Pose3& T_world_table);
 
 /// Adds "<name>_seat", "<name>_back", "<name>_column", the star base's thin radial bars
 /// "<name>_leg_1" .. "<name>_leg_5" and "<name>_casters". `T_world_chair`: origin on the floor
 /// below the column, x the way the sitter faces.
-void add_office_chair(Scene& scene, const std::string& name, const Pose3& T_world_chair);
+void add_office_chair(model::Scene& scene, const std::string& name,
+                      const model::Pose3& T_world_chair);
 
 /// Adds "cable": a 1 cm cord hanging from the -y long edge of the table at `T_world_table`
 /// down to the floor kCableReach beyond that edge.
-void add_hanging_cable(Scene& scene, const Pose3& T_world_table);
+void add_hanging_cable(model::Scene& scene, const model::Pose3& T_world_table);
 
 }  // namespace rigdesign::sim

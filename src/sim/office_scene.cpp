@@ -40,7 +40,7 @@ constexpr double kSlotMargin = 0.05;  // kept free inside each slot's border
 constexpr int kMinTables = 2;
 constexpr int kMinChairs = 3;
 // Tables stand square to the walls, turned by up to this much [rad] either way.
-constexpr double kTableSkew = deg_to_rad(10.0);
+constexpr double kTableSkew = model::deg_to_rad(10.0);
 // Cardboard boxes [m]: each edge between 20 and 50 cm.
 constexpr double kBoxMinSide = 0.2;
 constexpr double kBoxMaxSide = 0.5;
@@ -69,7 +69,8 @@ void shuffle(std::vector<int>& values, std::mt19937_64& rng) {
 
 // A pose for a piece of half-extents (half_x, half_y) [m] turned by `yaw` [rad], shifted at
 // random as far as it still fits inside `slot`'s margin.
-Pose3 place_in_slot(int slot, double half_x, double half_y, double yaw, std::mt19937_64& rng) {
+model::Pose3 place_in_slot(int slot, double half_x, double half_y, double yaw,
+                           std::mt19937_64& rng) {
   const double centre_x = kSlotsStartX + (slot % kSlotColumns + 0.5) * kSlotSide;
   const double centre_y = kSlotsStartY + (slot / kSlotColumns + 0.5) * kSlotSide;
   const double c = std::abs(std::cos(yaw));
@@ -84,7 +85,7 @@ Pose3 place_in_slot(int slot, double half_x, double half_y, double yaw, std::mt1
   return floor_pose(centre_x + shift_x, centre_y + shift_y, yaw);
 }
 
-void add_room(Scene& scene) {
+void add_room(model::Scene& scene) {
   add_object(scene, "floor",
              floor_rectangle({{0, -kRoomWidth / 2}, {kRoomLength, kRoomWidth / 2}}, 0));
   const double t = kWallThickness;
@@ -99,8 +100,8 @@ void add_room(Scene& scene) {
 
 }  // namespace
 
-Scene make_office_scene(std::uint64_t seed) {
-  Scene scene;
+model::Scene make_office_scene(std::uint64_t seed) {
+  model::Scene scene;
   scene.name = "office";
   scene.T_world_robot = floor_pose(kRobotX, 0, 0);
   add_room(scene);
@@ -118,8 +119,8 @@ Scene make_office_scene(std::uint64_t seed) {
     const double yaw = square_yaw + uniform(rng, -kTableSkew, kTableSkew);
     // Every table's footprint keeps room for the cable on its -y side (and, for symmetry,
     // the same on its +y side).
-    const Pose3 T_world_table = place_in_slot(slots[next_slot++], kTableLength / 2,
-                                              kTableDepth / 2 + kCableReach, yaw, rng);
+    const model::Pose3 T_world_table = place_in_slot(slots[next_slot++], kTableLength / 2,
+                                                     kTableDepth / 2 + kCableReach, yaw, rng);
     add_office_table(scene, "table_" + std::to_string(i), T_world_table);
     if (i == 1) add_hanging_cable(scene, T_world_table);
   }
@@ -129,11 +130,12 @@ Scene make_office_scene(std::uint64_t seed) {
                      place_in_slot(slots[next_slot++], kChairReach, kChairReach, yaw, rng));
   }
   for (int i = 1; next_slot < slots.size(); ++i) {
-    Vec3 size;
+    model::Vec3 size;
     for (int axis = 0; axis < 3; ++axis) size[axis] = uniform(rng, kBoxMinSide, kBoxMaxSide);
     const double yaw = uniform(rng, 0, std::numbers::pi / 2);
-    Pose3 T_world_box = place_in_slot(slots[next_slot++], size.x() / 2, size.y() / 2, yaw, rng);
-    T_world_box.translate(Vec3(0, 0, size.z() / 2));
+    model::Pose3 T_world_box =
+        place_in_slot(slots[next_slot++], size.x() / 2, size.y() / 2, yaw, rng);
+    T_world_box.translate(model::Vec3(0, 0, size.z() / 2));
     add_object(scene, "box_" + std::to_string(i), box_mesh(size, T_world_box));
   }
   return scene;

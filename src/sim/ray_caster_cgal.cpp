@@ -8,7 +8,7 @@
 
 #include "rigdesign/sim/ray_caster.hpp"
 
-namespace rigdesign {
+namespace rigdesign::sim {
 namespace {
 
 // Floating-point construction is enough here: a hit point off by 1e-12 m is far below
@@ -19,7 +19,7 @@ using Iterator = std::vector<Triangle>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-Kernel::Point_3 point(const Vec3& v) {
+Kernel::Point_3 point(const model::Vec3& v) {
   return {v.x(), v.y(), v.z()};
 }
 
@@ -27,10 +27,10 @@ Kernel::Point_3 point(const Vec3& v) {
 
 struct RayCaster::Tree {
   std::vector<Triangle> triangles;
-  rigdesign::Tree tree;
+  sim::Tree tree;
 };
 
-RayCaster::RayCaster(const TriangleMesh& mesh) : tree_(std::make_unique<Tree>()) {
+RayCaster::RayCaster(const model::TriangleMesh& mesh) : tree_(std::make_unique<Tree>()) {
   for (const auto& t : mesh.triangles) {
     const Triangle triangle(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]),
                             point(mesh.vertices[t[2]]));
@@ -45,22 +45,23 @@ RayCaster::~RayCaster() = default;
 RayCaster::RayCaster(RayCaster&&) noexcept = default;
 RayCaster& RayCaster::operator=(RayCaster&&) noexcept = default;
 
-std::optional<double> RayCaster::first_hit(const Vec3& origin, const Vec3& direction) const {
+std::optional<double> RayCaster::first_hit(const model::Vec3& origin,
+                                           const model::Vec3& direction) const {
   if (tree_->triangles.empty()) return std::nullopt;
   const Kernel::Ray_3 ray(point(origin),
                           Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
   const auto hit = tree_->tree.first_intersection(ray);
   if (!hit) return std::nullopt;
   if (const Kernel::Point_3* p = boost::get<Kernel::Point_3>(&hit->first)) {
-    return (Vec3(p->x(), p->y(), p->z()) - origin).norm();
+    return (model::Vec3(p->x(), p->y(), p->z()) - origin).norm();
   }
   if (const Kernel::Segment_3* s =
           boost::get<Kernel::Segment_3>(&hit->first)) {  // ray in the triangle's plane
-    const Vec3 a(s->source().x(), s->source().y(), s->source().z());
-    const Vec3 b(s->target().x(), s->target().y(), s->target().z());
+    const model::Vec3 a(s->source().x(), s->source().y(), s->source().z());
+    const model::Vec3 b(s->target().x(), s->target().y(), s->target().z());
     return std::min((a - origin).norm(), (b - origin).norm());
   }
   return std::nullopt;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::sim

@@ -2,18 +2,20 @@
 
 #include <random>
 
-namespace rigdesign {
+namespace rigdesign::sim {
 
-std::vector<PointCloud> simulate_mount(const Scene& scene, const Mount& mount,
-                                       const SensorMode& mode, std::size_t mount_index, int frames,
-                                       std::uint64_t seed, const SimulationSettings& settings) {
+std::vector<model::PointCloud> simulate_mount(const model::Scene& scene, const model::Mount& mount,
+                                              const model::SensorMode& mode,
+                                              std::size_t mount_index, int frames,
+                                              std::uint64_t seed,
+                                              const SimulationSettings& settings) {
   std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
                          static_cast<std::uint32_t>(mount_index)};
   std::mt19937_64 rng(sequence);
-  const std::vector<Vec3> rays = ray_pattern(mode);
-  const Pose3 T_world_sensor = scene.T_world_robot * mount.T_robot_sensor;
-  const Pose3 T_robot_world = scene.T_world_robot.inverse();
-  std::vector<PointCloud> clouds;
+  const std::vector<model::Vec3> rays = ray_pattern(mode);
+  const model::Pose3 T_world_sensor = scene.T_world_robot * mount.T_robot_sensor;
+  const model::Pose3 T_robot_world = scene.T_world_robot.inverse();
+  std::vector<model::PointCloud> clouds;
   const bool static_scene = scene.moving.empty();
   std::optional<RayCaster> still;
   if (static_scene) still.emplace(scene.at(0.0));
@@ -21,11 +23,11 @@ std::vector<PointCloud> simulate_mount(const Scene& scene, const Mount& mount,
     const double t = k / mode.frequency;
     std::optional<RayCaster> moving;
     if (!static_scene) moving.emplace(scene.at(t));
-    PointCloud cloud =
+    model::PointCloud cloud =
         simulate_frame(static_scene ? *still : *moving, mode, rays, T_world_sensor, settings, rng);
     if (!settings.sensor_frame) {  // world frame -> robot frame
       const Eigen::Isometry3f transform = T_robot_world.cast<float>();
-      for (Point3f& p : cloud.points) p = transform * p;
+      for (model::Point3f& p : cloud.points) p = transform * p;
       cloud.origin = mount.T_robot_sensor.translation().cast<float>();
       cloud.orientation = Eigen::Quaternionf(mount.T_robot_sensor.linear().cast<float>());
     }
@@ -34,4 +36,4 @@ std::vector<PointCloud> simulate_mount(const Scene& scene, const Mount& mount,
   return clouds;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::sim

@@ -1,5 +1,5 @@
 #pragma once
-// One generator per named scene (DESIGN.md section 6); make_scene() in scene_generators.cpp
+// One generator per named scene (DESIGN.md section 6); make_scene() in scene_library.cpp
 // dispatches on the name. Private to sim.
 #include <cstdint>
 #include <string>
@@ -10,23 +10,23 @@
 namespace rigdesign::sim {
 
 /// An 8 x 6 m office with seeded tables, chairs, boxes and a hanging cable.
-Scene make_office_scene(std::uint64_t seed);
+model::Scene make_office_scene(std::uint64_t seed);
 /// A 15 m corridor, 2 m wide, with two door recesses and a box.
-Scene make_corridor_scene();
+model::Scene make_corridor_scene();
 /// A floor with a stairwell going down 1 m and a pit.
-Scene make_stairs_scene();
+model::Scene make_stairs_scene();
 /// A wall on the robot's left and a low table whose foam top overhangs into the path.
-Scene make_wall_following_scene();
+model::Scene make_wall_following_scene();
 /// Paper 3's 4 x 4 m cell: a plate in the centre and a person walking an ellipse around it.
-Scene make_cell_scene();
+model::Scene make_cell_scene();
 
 /// Adds a static object to `scene`.
-inline void add_object(Scene& scene, std::string name, TriangleMesh mesh) {
+inline void add_object(model::Scene& scene, std::string name, model::TriangleMesh mesh) {
   scene.objects.push_back({std::move(name), std::move(mesh)});
 }
 
 /// A pose standing on the floor (z = 0) at (x, y) [m], turned by `yaw` [rad] about +z: for
 /// the robot and for furniture.
-Pose3 floor_pose(double x, double y, double yaw);
+model::Pose3 floor_pose(double x, double y, double yaw);
 
 }  // namespace rigdesign::sim

@@ -31,7 +31,7 @@ const Rect2 kPit{{1.0, 1.0}, {1.4, 1.4}};
 constexpr double kPitDepth = 0.5;
 constexpr double kPitWallThickness = 0.05;
 
-void add_stairwell(Scene& scene) {
+void add_stairwell(model::Scene& scene) {
   const double x0 = kStairwellStartX;
   const double x1 = kStairwellStartX + kStairwellLength;
   const double y = kStairwellHalfWidth;
@@ -54,9 +54,9 @@ void add_stairwell(Scene& scene) {
   add_object(scene, "stairwell_wall_right", aligned_box({x0, -y - t, kLowerFloorZ}, {x1, -y, 0}));
 }
 
-void add_pit(Scene& scene) {
-  const Vec2& low = kPit.low;
-  const Vec2& high = kPit.high;
+void add_pit(model::Scene& scene) {
+  const model::Vec2& low = kPit.low;
+  const model::Vec2& high = kPit.high;
   const double t = kPitWallThickness;
   const double bottom = -kPitDepth;
   add_object(
@@ -74,8 +74,8 @@ void add_pit(Scene& scene) {
 
 }  // namespace
 
-Scene make_stairs_scene() {
-  Scene scene;
+model::Scene make_stairs_scene() {
+  model::Scene scene;
   scene.name = "stairs";
   scene.T_world_robot = floor_pose(0, 0, 0);
   const Rect2 stairwell{{kStairwellStartX, -kStairwellHalfWidth},

@@ -35,7 +35,7 @@ constexpr double kTableHeight = 0.39;
 constexpr double kFoamThickness = 0.06;
 constexpr double kFoamOverhang = 0.15;
 
-void add_table(Scene& scene) {
+void add_table(model::Scene& scene) {
   const double x0 = kTableStartX;
   const double x1 = kTableStartX + kTableLength;
   const double legs_y = kWallY - kLegFrameDepth;
@@ -55,8 +55,8 @@ void add_table(Scene& scene) {
 
 }  // namespace
 
-Scene make_wall_following_scene() {
-  Scene scene;
+model::Scene make_wall_following_scene() {
+  model::Scene scene;
   scene.name = "wall_following";
   scene.T_world_robot = floor_pose(0, 0, 0);
   add_object(scene, "floor",

@@ -15,6 +15,7 @@
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
+#include "rigdesign/sim/scene_library.hpp"
 
 namespace {
 
@@ -23,18 +24,20 @@ using namespace rigdesign;
 // The UR Cleaner's front Azure Kinect (NFOV unbinned) and top VLP-16 in the office scene,
 // clouds in the robot frame with the sensor origin, as the scenario driver will pass them.
 struct OfficeFrames {
-  Scene scene = make_scene("office", 1);
-  PointCloud kinect;
-  PointCloud lidar;
+  model::Scene scene = sim::make_scene("office", 1);
+  model::PointCloud kinect;
+  model::PointCloud lidar;
 
   OfficeFrames() {
-    const SensorLibrary library = load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
-    const Rig rig = load_rig(RIGDESIGN_SOURCE_DIR "/rigs/ur_cleaner.yaml");
+    const model::SensorLibrary library =
+        io::load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
+    const model::Rig rig = io::load_rig(RIGDESIGN_SOURCE_DIR "/rigs/ur_cleaner.yaml");
     for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
-      const Mount& mount = rig.mounts[i];
-      const SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
-      if (mount.id == "front_camera") kinect = simulate_mount(scene, mount, mode, i, 1, 1).front();
-      if (mount.id == "top_lidar") lidar = simulate_mount(scene, mount, mode, i, 1, 1).front();
+      const model::Mount& mount = rig.mounts[i];
+      const model::SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
+      if (mount.id == "front_camera")
+        kinect = sim::simulate_mount(scene, mount, mode, i, 1, 1).front();
+      if (mount.id == "top_lidar") lidar = sim::simulate_mount(scene, mount, mode, i, 1, 1).front();
     }
   }
 };
@@ -44,8 +47,8 @@ const OfficeFrames& office() {
   return frames;
 }
 
-GridWindow window_of(double size, double resolution, const Vec2& centre) {
-  GridWindow window;
+costmap::GridWindow window_of(double size, double resolution, const model::Vec2& centre) {
+  costmap::GridWindow window;
   window.width = static_cast<int>(size / resolution + 0.5);
   window.height = window.width;
   window.resolution = resolution;
@@ -54,8 +57,9 @@ GridWindow window_of(double size, double resolution, const Vec2& centre) {
 }
 
 // The same rays OctoMap's insertPointCloud casts: every point, no range limit.
-CloudObservation unlimited(const PointCloud& cloud, const Pose3& T_world_cloud) {
-  CloudObservation observation;
+costmap::CloudObservation unlimited(const model::PointCloud& cloud,
+                                    const model::Pose3& T_world_cloud) {
+  costmap::CloudObservation observation;
   observation.cloud = &cloud;
   observation.T_world_cloud = T_world_cloud;
   observation.source.obstacle_max_range = 1e9;
@@ -63,7 +67,7 @@ CloudObservation unlimited(const PointCloud& cloud, const Pose3& T_world_cloud) 
   return observation;
 }
 
-void report_points(benchmark::State& state, const VoxelUpdateStats& stats) {
+void report_points(benchmark::State& state, const costmap::VoxelUpdateStats& stats) {
   state.counters["points"] = static_cast<double>(stats.points);
   state.counters["voxels_per_ray"] =
       static_cast<double>(stats.voxels_cleared) /
@@ -73,13 +77,13 @@ void report_points(benchmark::State& state, const VoxelUpdateStats& stats) {
 }
 
 // One cloud into a 10 m x 10 m x 2 m voxel window at 0.1 m, clear then mark.
-void insert_cloud(benchmark::State& state, const PointCloud& cloud) {
-  const Pose3& T_world_robot = office().scene.T_world_robot;
-  VoxelLayerParams params;
+void insert_cloud(benchmark::State& state, const model::PointCloud& cloud) {
+  const model::Pose3& T_world_robot = office().scene.T_world_robot;
+  costmap::VoxelLayerParams params;
   params.z_resolution = 0.1;
-  VoxelLayer layer(window_of(10.0, 0.1, T_world_robot.translation().head<2>()), params);
-  const CloudObservation observation = unlimited(cloud, T_world_robot);
-  VoxelUpdateStats stats;
+  costmap::VoxelLayer layer(window_of(10.0, 0.1, T_world_robot.translation().head<2>()), params);
+  const costmap::CloudObservation observation = unlimited(cloud, T_world_robot);
+  costmap::VoxelUpdateStats stats;
   for (auto _ : state) stats = layer.insert(observation);
   report_points(state, stats);
 }
@@ -93,49 +97,51 @@ void BM_VoxelInsertLidarOffice(benchmark::State& state) {
 
 // 100,000 rays from 1 m up in random directions, 0.5 to 5 m long: a controlled mix.
 void BM_VoxelInsertSyntheticRays(benchmark::State& state) {
-  PointCloud cloud;
-  cloud.origin = Point3f(0.0f, 0.0f, 1.0f);
+  model::PointCloud cloud;
+  cloud.origin = model::Point3f(0.0f, 0.0f, 1.0f);
   std::mt19937_64 rng(42);
   std::normal_distribution<float> direction(0.0f, 1.0f);
   std::uniform_real_distribution<float> length(0.5f, 5.0f);
   for (int i = 0; i < 100000; ++i) {
-    const Point3f d = Point3f(direction(rng), direction(rng), direction(rng)).normalized();
+    const model::Point3f d =
+        model::Point3f(direction(rng), direction(rng), direction(rng)).normalized();
     cloud.points.push_back(cloud.origin + length(rng) * d);
   }
-  VoxelLayerParams params;
+  costmap::VoxelLayerParams params;
   params.z_resolution = 0.1;
-  VoxelLayer layer(window_of(10.0, 0.1, Vec2::Zero()), params);
-  const CloudObservation observation = unlimited(cloud, Pose3::Identity());
-  VoxelUpdateStats stats;
+  costmap::VoxelLayer layer(window_of(10.0, 0.1, model::Vec2::Zero()), params);
+  const costmap::CloudObservation observation = unlimited(cloud, model::Pose3::Identity());
+  costmap::VoxelUpdateStats stats;
   for (auto _ : state) stats = layer.insert(observation);
   report_points(state, stats);
 }
 
 // A 200 x 200 obstacle grid with 5 % lethal cells.
-CostGrid random_obstacles(std::uint64_t seed, double share) {
-  CostGrid grid(window_of(10.0, 0.05, Vec2::Zero()), cost::kFree);
+costmap::CostGrid random_obstacles(std::uint64_t seed, double share) {
+  costmap::CostGrid grid(window_of(10.0, 0.05, model::Vec2::Zero()), costmap::cost::kFree);
   std::mt19937_64 rng(seed);
   std::bernoulli_distribution lethal(share);
-  for (std::uint8_t& c : grid.cells()) c = lethal(rng) ? cost::kLethal : cost::kFree;
+  for (std::uint8_t& c : grid.cells())
+    c = lethal(rng) ? costmap::cost::kLethal : costmap::cost::kFree;
   return grid;
 }
 
 void BM_HitLayerUpdate200(benchmark::State& state) {
-  const CostGrid obstacles = random_obstacles(7, 0.05);
-  HitLayer layer(obstacles.window(), HitLayerParams{});
+  const costmap::CostGrid obstacles = random_obstacles(7, 0.05);
+  costmap::HitLayer layer(obstacles.window(), costmap::HitLayerParams{});
   double t = 0.0;
   double x = 0.0;
   for (auto _ : state) {
     t += 0.1;
     x += 0.01;  // moving: every update decrements where it does not add
-    benchmark::DoNotOptimize(layer.update(obstacles, t, Vec2(x, 0.0), false));
+    benchmark::DoNotOptimize(layer.update(obstacles, t, model::Vec2(x, 0.0), false));
   }
 }
 
 void BM_Inflation200(benchmark::State& state) {
-  const CostGrid obstacles = random_obstacles(8, 0.02);
-  InflationLayer inflation;
-  CostGrid master = obstacles;
+  const costmap::CostGrid obstacles = random_obstacles(8, 0.02);
+  costmap::InflationLayer inflation;
+  costmap::CostGrid master = obstacles;
   for (auto _ : state) {
     master.cells() = obstacles.cells();
     inflation.apply(master);
@@ -146,11 +152,11 @@ void BM_Inflation200(benchmark::State& state) {
 // The whole update at nav2's local-costmap settings: 10 m window at 5 cm, voxel layer 0-2 m
 // at 5 cm, Hit Layer, inflation; both office clouds per step.
 void BM_CostmapUpdateOffice(benchmark::State& state) {
-  const Pose3& T_world_robot = office().scene.T_world_robot;
-  Costmap costmap(CostmapParams{});
-  std::vector<CloudObservation> observations;
-  for (const PointCloud* cloud : {&office().kinect, &office().lidar}) {
-    CloudObservation observation;
+  const model::Pose3& T_world_robot = office().scene.T_world_robot;
+  costmap::Costmap costmap(costmap::CostmapParams{});
+  std::vector<costmap::CloudObservation> observations;
+  for (const model::PointCloud* cloud : {&office().kinect, &office().lidar}) {
+    costmap::CloudObservation observation;
     observation.cloud = cloud;
     observation.T_world_cloud = T_world_robot;
     observations.push_back(observation);
@@ -161,14 +167,14 @@ void BM_CostmapUpdateOffice(benchmark::State& state) {
 }
 
 void BM_Dijkstra200(benchmark::State& state) {
-  CostGrid master = random_obstacles(9, 0.01);
-  InflationLayer(InflationParams{}).apply(master);
-  const Vec2 start(-4.9, -4.9);
-  const Vec2 goal(4.9, 4.9);
-  master.at(1, 1) = cost::kFree;
-  master.at(198, 198) = cost::kFree;
-  PlannedPath path;
-  for (auto _ : state) path = plan_dijkstra(master, start, goal);
+  costmap::CostGrid master = random_obstacles(9, 0.01);
+  costmap::InflationLayer(costmap::InflationParams{}).apply(master);
+  const model::Vec2 start(-4.9, -4.9);
+  const model::Vec2 goal(4.9, 4.9);
+  master.at(1, 1) = costmap::cost::kFree;
+  master.at(198, 198) = costmap::cost::kFree;
+  costmap::PlannedPath path;
+  for (auto _ : state) path = costmap::plan_dijkstra(master, start, goal);
   state.counters["found"] = path.found;
 }
 

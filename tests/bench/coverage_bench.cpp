@@ -18,21 +18,22 @@ namespace {
 using namespace rigdesign;
 
 constexpr int kAngles = 360;
-constexpr double kCell = CoverageSettings{}.raster_cell;  // [m] the default raster cell
+constexpr double kCell = metrics::CoverageSettings{}.raster_cell;  // [m] the default raster cell
 
 struct UrCleaner {
-  SensorLibrary library = load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
-  Rig rig = load_rig(RIGDESIGN_SOURCE_DIR "/rigs/ur_cleaner.yaml");
-  BodyOccluder body{rig.body};
-  std::vector<MountedFov> fovs;
+  model::SensorLibrary library = io::load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
+  model::Rig rig = io::load_rig(RIGDESIGN_SOURCE_DIR "/rigs/ur_cleaner.yaml");
+  geometry::BodyOccluder body{rig.body};
+  std::vector<geometry::MountedFov> fovs;
   UrCleaner() {
-    for (const Mount& mount : rig.mounts) {
+    for (const model::Mount& mount : rig.mounts) {
       fovs.emplace_back(*library.find(mount.sensor_id)->find_mode(mount.mode_id),
                         mount.T_robot_sensor, body);
     }
   }
-  SectionFrame frame(int step) const {
-    return section_frame(body, 2 * std::numbers::pi * step / kAngles, rig.distance_of_interest);
+  geometry::SectionFrame frame(int step) const {
+    return geometry::section_frame(body, 2 * std::numbers::pi * step / kAngles,
+                                   rig.distance_of_interest);
   }
 };
 
@@ -41,7 +42,7 @@ const UrCleaner& ur_cleaner() {
   return instance;
 }
 
-RasterGrid grid_for(const SectionFrame& frame) {
+geometry::RasterGrid grid_for(const geometry::SectionFrame& frame) {
   return {static_cast<int>(std::ceil(frame.width() / kCell)),
           static_cast<int>(std::ceil(frame.h / kCell))};
 }
@@ -51,14 +52,14 @@ void BM_ExactSweep(benchmark::State& state) {
   for (auto _ : state) {
     double total = 0.0;
     for (int step = 0; step < kAngles; ++step) {
-      const SectionFrame frame = rig.frame(step);
-      std::vector<std::vector<Polygon2>> polygons;
-      IntervalSet floor;
-      for (const MountedFov& fov : rig.fovs) {
-        polygons.push_back(section_polygons(fov, frame));
-        floor = floor.united(floor_coverage(fov, frame));
+      const geometry::SectionFrame frame = rig.frame(step);
+      std::vector<std::vector<geometry::Polygon2>> polygons;
+      geometry::IntervalSet floor;
+      for (const geometry::MountedFov& fov : rig.fovs) {
+        polygons.push_back(geometry::section_polygons(fov, frame));
+        floor = floor.united(geometry::floor_coverage(fov, frame));
       }
-      total += union_area(polygons) / frame.area() + floor.length() / frame.width();
+      total += geometry::union_area(polygons) / frame.area() + floor.length() / frame.width();
     }
     benchmark::DoNotOptimize(total);
   }
@@ -67,9 +68,10 @@ void BM_ExactSweep(benchmark::State& state) {
 double raster_sweep(const UrCleaner& rig, int first_step, int step_stride) {
   double total = 0.0;
   for (int step = first_step; step < kAngles; step += step_stride) {
-    const SectionFrame frame = rig.frame(step);
-    SectionRaster united(grid_for(frame));
-    for (const MountedFov& fov : rig.fovs) united |= rasterize(fov, frame, grid_for(frame));
+    const geometry::SectionFrame frame = rig.frame(step);
+    geometry::SectionRaster united(grid_for(frame));
+    for (const geometry::MountedFov& fov : rig.fovs)
+      united |= geometry::rasterize(fov, frame, grid_for(frame));
     total += united.complete_share() + united.floor_share();
   }
   return total;
@@ -94,16 +96,17 @@ void BM_RasterSweepTwoThreads(benchmark::State& state) {
 
 void BM_PerCandidateCachedRasters(benchmark::State& state) {
   const UrCleaner& rig = ur_cleaner();
-  std::vector<std::vector<SectionRaster>> cached(rig.fovs.size());
+  std::vector<std::vector<geometry::SectionRaster>> cached(rig.fovs.size());
   for (std::size_t i = 0; i < rig.fovs.size(); ++i) {
     for (int step = 0; step < kAngles; ++step) {
-      cached[i].push_back(rasterize(rig.fovs[i], rig.frame(step), grid_for(rig.frame(step))));
+      cached[i].push_back(
+          geometry::rasterize(rig.fovs[i], rig.frame(step), grid_for(rig.frame(step))));
     }
   }
   for (auto _ : state) {
     double total = 0.0;
     for (int step = 0; step < kAngles; ++step) {
-      SectionRaster united = cached[0][step];
+      geometry::SectionRaster united = cached[0][step];
       for (std::size_t i = 1; i < cached.size(); ++i) united |= cached[i][step];
       total += united.complete_share() + united.floor_share();
     }
@@ -114,7 +117,7 @@ void BM_PerCandidateCachedRasters(benchmark::State& state) {
 void BM_ComputeCoverageAll(benchmark::State& state) {
   const UrCleaner& rig = ur_cleaner();
   for (auto _ : state) {
-    benchmark::DoNotOptimize(compute_coverage(rig.rig, rig.library, {}));
+    benchmark::DoNotOptimize(metrics::compute_coverage(rig.rig, rig.library, {}));
   }
 }
 

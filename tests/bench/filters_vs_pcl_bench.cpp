@@ -25,6 +25,7 @@
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
+#include "rigdesign/sim/scene_library.hpp"
 
 namespace {
 
@@ -45,10 +46,10 @@ double median_seconds(const std::function<std::size_t()>& run, std::size_t& poin
   return times[times.size() / 2];
 }
 
-PclCloud::Ptr to_pcl(const PointCloud& cloud) {
+PclCloud::Ptr to_pcl(const model::PointCloud& cloud) {
   PclCloud::Ptr out(new PclCloud);
   out->reserve(cloud.size());
-  for (const Point3f& p : cloud.points) out->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  for (const model::Point3f& p : cloud.points) out->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
   return out;
 }
 
@@ -160,22 +161,22 @@ void print(const std::string& cloud_name, std::size_t points, const std::vector<
   }
 }
 
-void compare(const std::string& name, const PointCloud& cloud) {
+void compare(const std::string& name, const model::PointCloud& cloud) {
   const PclCloud::Ptr input = to_pcl(cloud);
   std::vector<Row> rows;
   std::size_t a = 0, b = 0;
-  const PointCloud voxelised = voxel_grid(cloud);
+  const model::PointCloud voxelised = filters::voxel_grid(cloud);
   const PclCloud::Ptr pcl_voxelised = pcl_voxel(input, 0.03f);
-  double ours = median_seconds([&] { return voxel_grid(cloud).size(); }, a);
+  double ours = median_seconds([&] { return filters::voxel_grid(cloud).size(); }, a);
   double theirs = median_seconds([&] { return pcl_voxel(input, 0.03f)->size(); }, b);
   rows.push_back({"voxel_grid 3 cm", ours, theirs, a, b});
-  ours = median_seconds([&] { return statistical_outlier_removal(voxelised).size(); }, a);
+  ours = median_seconds([&] { return filters::statistical_outlier_removal(voxelised).size(); }, a);
   theirs = median_seconds([&] { return pcl_sor(pcl_voxelised)->size(); }, b);
   rows.push_back({"SOR on voxelised", ours, theirs, a, b});
-  ours = median_seconds([&] { return pass_through(cloud).size(); }, a);
+  ours = median_seconds([&] { return filters::pass_through(cloud).size(); }, a);
   theirs = median_seconds([&] { return pcl_pass(input, false)->size(); }, b);
   rows.push_back({"pass_through z", ours, theirs, a, b});
-  ours = median_seconds([&] { return fit_plane_ransac(voxelised).inliers.size(); }, a);
+  ours = median_seconds([&] { return filters::fit_plane_ransac(voxelised).inliers.size(); }, a);
   theirs = median_seconds(
       [&] {
         pcl::ModelCoefficients c;
@@ -183,15 +184,15 @@ void compare(const std::string& name, const PointCloud& cloud) {
       },
       b);
   rows.push_back({"RANSAC plane (voxelised)", ours, theirs, a, b});
-  ours = median_seconds([&] { return remove_floor_1(voxelised).size(); }, a);
+  ours = median_seconds([&] { return filters::remove_floor_1(voxelised).size(); }, a);
   theirs = median_seconds([&] { return pcl_floor_1(pcl_voxelised)->size(); }, b);
   rows.push_back({"floor_removal_1", ours, theirs, a, b});
-  ours = median_seconds([&] { return remove_floor_2(voxelised).size(); }, a);
+  ours = median_seconds([&] { return filters::remove_floor_2(voxelised).size(); }, a);
   theirs = median_seconds([&] { return pcl_floor_2(pcl_voxelised)->size(); }, b);
   rows.push_back({"floor_removal_2", ours, theirs, a, b});
   for (const char* pipeline : {"P2", "P3", "P4"}) {
-    const Pipeline p = *preset_pipeline(pipeline);
-    ours = median_seconds([&] { return run_pipeline(p, cloud).size(); }, a);
+    const model::Pipeline p = *filters::preset_pipeline(pipeline);
+    ours = median_seconds([&] { return filters::run_pipeline(p, cloud).size(); }, a);
     theirs = median_seconds(
         [&] {
           const PclCloud::Ptr v = pcl_voxel(input, 0.03f);
@@ -207,13 +208,14 @@ void compare(const std::string& name, const PointCloud& cloud) {
 
 // A real cloud from a camera's optical frame, placed as the UR Cleaner's front camera
 // (0.46 m ahead, 0.75 m up, pitched 25 deg down) so the floor stages have a robot frame.
-PointCloud mounted(const PointCloud& optical) {
-  Pose3 body_from_optical = Pose3::Identity();
+model::PointCloud mounted(const model::PointCloud& optical) {
+  model::Pose3 body_from_optical = model::Pose3::Identity();
   body_from_optical.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  const Pose3 T_robot_sensor = pose_from_xyz_rpy(Vec3(0.46, 0, 0.75), Vec3(0, deg_to_rad(25), 0));
+  const model::Pose3 T_robot_sensor = model::pose_from_xyz_rpy(
+      model::Vec3(0.46, 0, 0.75), model::Vec3(0, model::deg_to_rad(25), 0));
   const Eigen::Isometry3f T = (T_robot_sensor * body_from_optical).cast<float>();
-  PointCloud moved;
-  for (const Point3f& p : optical.points) moved.points.push_back(T * p);
+  model::PointCloud moved;
+  for (const model::Point3f& p : optical.points) moved.points.push_back(T * p);
   moved.origin = T.translation();
   return moved;
 }
@@ -225,12 +227,14 @@ int main() {
   std::printf("ours vs PCL %s, single thread, %d runs per figure (medians)\n", PCL_VERSION_PRETTY,
               kRuns);
   {  // A simulated Azure Kinect NFOV unbinned frame of the office, from the UR Cleaner's front.
-    const SensorLibrary library =
-        load_sensor_library(std::string(RIGDESIGN_SOURCE_DIR) + "/sensors.yaml");
-    const Rig rig = load_rig(std::string(RIGDESIGN_SOURCE_DIR) + "/rigs/ur_cleaner.yaml");
-    const Mount& front = rig.mounts.front();
-    const SensorMode& mode = *library.find(front.sensor_id)->find_mode(front.mode_id);
-    const PointCloud frame = simulate_mount(make_scene("office", 1), front, mode, 0, 1, 1).front();
+    const model::SensorLibrary library =
+        io::load_sensor_library(std::string(RIGDESIGN_SOURCE_DIR) + "/sensors.yaml");
+    const model::Rig rig =
+        io::load_rig(std::string(RIGDESIGN_SOURCE_DIR) + "/rigs/ur_cleaner.yaml");
+    const model::Mount& front = rig.mounts.front();
+    const model::SensorMode& mode = *library.find(front.sensor_id)->find_mode(front.mode_id);
+    const model::PointCloud frame =
+        sim::simulate_mount(sim::make_scene("office", 1), front, mode, 0, 1, 1).front();
     compare("simulated Azure Kinect NFOV frame, office scene (robot frame)", frame);
   }
   for (const char* file :
@@ -241,7 +245,7 @@ int main() {
       std::printf("%s: not found, skipped\n", path.c_str());
       continue;
     }
-    compare(file, mounted(read_cloud(path)));
+    compare(file, mounted(io::read_cloud(path)));
   }
   return 0;
 }

@@ -13,20 +13,20 @@ namespace {
 using namespace rigdesign;
 
 // The loop scenario (about 1,700 readings at 10 Hz) read faster, cut to `readings`.
-RssiLog loop_log(std::size_t readings) {
-  ScenarioParams params;
+localize::RssiLog loop_log(std::size_t readings) {
+  localize::ScenarioParams params;
   params.scan_rate = 10.0 * static_cast<double>(readings) / 1500.0;
-  RssiLog log = make_scenario("loop", params).log;
+  localize::RssiLog log = localize::make_scenario("loop", params).log;
   log.readings.resize(std::min(readings, log.readings.size()));
   return log;
 }
 
 // Paper 4's online method: add a reading and re-solve, per reading.
 void BM_WlsUpdatePerReading(benchmark::State& state) {
-  const RssiLog log = loop_log(static_cast<std::size_t>(state.range(0)));
+  const localize::RssiLog log = loop_log(static_cast<std::size_t>(state.range(0)));
   for (auto _ : state) {
-    IncrementalWls wls;
-    for (const RssiReading& r : log.readings) {
+    localize::IncrementalWls wls;
+    for (const localize::RssiReading& r : log.readings) {
       wls.add(r.position, r.rssi_dbm);
       benchmark::DoNotOptimize(wls.solve(2));
     }
@@ -37,11 +37,11 @@ void BM_WlsUpdatePerReading(benchmark::State& state) {
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-void full_solve(benchmark::State& state, LocalizeMethod method) {
-  const RssiLog log = loop_log(static_cast<std::size_t>(state.range(0)));
+void full_solve(benchmark::State& state, localize::LocalizeMethod method) {
+  const localize::RssiLog log = loop_log(static_cast<std::size_t>(state.range(0)));
   std::size_t chunks = 0;
   for (auto _ : state) {
-    const EmitterEstimate estimate = localize_emitter(log, 0, method);
+    const localize::EmitterEstimate estimate = localize::localize_emitter(log, 0, method);
     chunks = estimate.chunks.size();
     benchmark::DoNotOptimize(estimate.hypotheses.data());
   }
@@ -51,13 +51,13 @@ void full_solve(benchmark::State& state, LocalizeMethod method) {
 
 // Chunking plus one solve over the whole log.
 void BM_WlsFullSolve(benchmark::State& state) {
-  full_solve(state, LocalizeMethod::wls);
+  full_solve(state, localize::LocalizeMethod::wls);
 }
 void BM_RangeFitFullSolve(benchmark::State& state) {
-  full_solve(state, LocalizeMethod::nls);
+  full_solve(state, localize::LocalizeMethod::nls);
 }
 void BM_ObjectMapFullSolve(benchmark::State& state) {
-  full_solve(state, LocalizeMethod::map);
+  full_solve(state, localize::LocalizeMethod::map);
 }
 
 BENCHMARK(BM_WlsUpdatePerReading)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMillisecond);

@@ -20,6 +20,7 @@
 #include "rigdesign/occupancy/occupancy_evaluation.hpp"
 #include "rigdesign/occupancy/occupancy_sweep.hpp"
 #include "rigdesign/sim/ray_caster.hpp"
+#include "rigdesign/sim/scene_library.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
 namespace {
@@ -33,19 +34,21 @@ constexpr double kZMax = 2.0;        // [m] the scored band
 // OctoMap with its defaults (hit 0.7, miss 0.4, clamping 0.12/0.97, threshold 0.5). Points
 // below kMinHeight clear along their rays but do not mark, as octomap_server treats ground
 // points, so both mappers mark exactly the same end points.
-class OctoMapMapper final : public OccupancyMapper {
+class OctoMapMapper final : public occupancy::OccupancyMapper {
  public:
   std::string name() const override { return "OctoMap 0.1 m (defaults)"; }
-  VoxelLattice lattice() const override { return {kResolution, kResolution, 0.0, kZMax}; }
+  occupancy::VoxelLattice lattice() const override {
+    return {kResolution, kResolution, 0.0, kZMax};
+  }
 
-  void update(double, std::span<const PointCloud> clouds, bool) override {
-    for (const PointCloud& cloud : clouds) {
+  void update(double, std::span<const model::PointCloud> clouds, bool) override {
+    for (const model::PointCloud& cloud : clouds) {
       const octomap::point3d origin(cloud.origin.x(), cloud.origin.y(), cloud.origin.z());
       octomap::Pointcloud marking;
       octomap::KeySet free_cells, occupied_cells;
       octomap::KeyRay ray;
       std::vector<octomap::point3d> ground;
-      for (const Point3f& p : cloud.points) {
+      for (const model::Point3f& p : cloud.points) {
         if (p.z() >= kMinHeight) {
           marking.push_back(p.x(), p.y(), p.z());
         } else {
@@ -64,8 +67,8 @@ class OctoMapMapper final : public OccupancyMapper {
     }
   }
 
-  std::vector<VoxelKey> occupied() const override {
-    std::vector<VoxelKey> keys;
+  std::vector<costmap::VoxelKey> occupied() const override {
+    std::vector<costmap::VoxelKey> keys;
     for (auto it = tree_.begin_leafs(), end = tree_.end_leafs(); it != end; ++it) {
       if (!tree_.isNodeOccupied(*it)) continue;
       // A pruned leaf covers several voxels: expand it into its voxel centres.
@@ -75,9 +78,9 @@ class OctoMapMapper final : public OccupancyMapper {
       for (int i = 0; i < n; ++i) {
         for (int j = 0; j < n; ++j) {
           for (int k = 0; k < n; ++k) {
-            const Vec3 p(c.x() - size / 2 + (i + 0.5) * kResolution,
-                         c.y() - size / 2 + (j + 0.5) * kResolution,
-                         c.z() - size / 2 + (k + 0.5) * kResolution);
+            const model::Vec3 p(c.x() - size / 2 + (i + 0.5) * kResolution,
+                                c.y() - size / 2 + (j + 0.5) * kResolution,
+                                c.z() - size / 2 + (k + 0.5) * kResolution);
             if (p.z() < 0.0 || p.z() >= kZMax) continue;
             keys.push_back(lattice().key_at(p));
           }
@@ -98,8 +101,8 @@ std::string cell(double value, int decimals) {
   return text;
 }
 
-void print_run(const OccupancyRun& run) {
-  const OccupancyPhase& a = run.all;
+void print_run(const occupancy::OccupancyRun& run) {
+  const occupancy::OccupancyPhase& a = run.all;
   std::printf("| %-26s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", run.mapper.c_str(),
               cell(a.object.precision, 3).c_str(), cell(a.object.recall, 3).c_str(),
               cell(a.object.f1, 3).c_str(), cell(a.object.f2, 3).c_str(),
@@ -109,21 +112,21 @@ void print_run(const OccupancyRun& run) {
 }
 
 struct Frames {
-  std::vector<std::vector<PointCloud>> clouds;
+  std::vector<std::vector<model::PointCloud>> clouds;
   std::size_t points = 0;
 };
 
 // The cell's frames as the evaluation makes them (world frame, sensor origins set).
-Frames simulate(const Scene& scene, const std::vector<CellSensor>& sensors, int count,
-                double rate) {
+Frames simulate(const model::Scene& scene, const std::vector<occupancy::CellSensor>& sensors,
+                int count, double rate) {
   Frames frames;
   std::mt19937_64 rng(1);
   for (int k = 0; k < count; ++k) {
-    const RayCaster caster(scene.at(k / rate));
-    std::vector<PointCloud> clouds;
-    for (const CellSensor& sensor : sensors) {
-      clouds.push_back(simulate_frame(caster, sensor.mode, ray_pattern(sensor.mode),
-                                      sensor.T_world_sensor, SimulationSettings{}, rng));
+    const sim::RayCaster caster(scene.at(k / rate));
+    std::vector<model::PointCloud> clouds;
+    for (const occupancy::CellSensor& sensor : sensors) {
+      clouds.push_back(sim::simulate_frame(caster, sensor.mode, sim::ray_pattern(sensor.mode),
+                                           sensor.T_world_sensor, sim::SimulationSettings{}, rng));
       frames.points += clouds.back().size();
     }
     frames.clouds.push_back(std::move(clouds));
@@ -144,14 +147,14 @@ double best_seconds(int repeats, Insert insert) {
   return best;
 }
 
-void throughput(const Scene& scene, const std::vector<CellSensor>& sensors) {
+void throughput(const model::Scene& scene, const std::vector<occupancy::CellSensor>& sensors) {
   const Frames frames = simulate(scene, sensors, 20, 5.0);
   const double octomap_s = best_seconds(3, [&] {
     octomap::OcTree tree(kResolution);
     for (const auto& clouds : frames.clouds) {
-      for (const PointCloud& cloud : clouds) {
+      for (const model::PointCloud& cloud : clouds) {
         octomap::Pointcloud scan;
-        for (const Point3f& p : cloud.points) scan.push_back(p.x(), p.y(), p.z());
+        for (const model::Point3f& p : cloud.points) scan.push_back(p.x(), p.y(), p.z());
         tree.insertPointCloud(
             scan, octomap::point3d(cloud.origin.x(), cloud.origin.y(), cloud.origin.z()), -1.0);
       }
@@ -159,18 +162,19 @@ void throughput(const Scene& scene, const std::vector<CellSensor>& sensors) {
   });
   // The same rays whole: a window holding every ray (8 x 8 m, z 0-3 m, above every sensor),
   // no range limit, every end point marks.
-  GridWindow window = centred_window(8.0, kResolution);
-  VoxelLayerParams params;
+  costmap::GridWindow window = occupancy::centred_window(8.0, kResolution);
+  costmap::VoxelLayerParams params;
   params.z_max = 3.0;
   params.z_resolution = kResolution;
-  ObservationSource source;
+  costmap::ObservationSource source;
   source.obstacle_max_range = source.raytrace_max_range = 1e9;
   source.min_obstacle_height = -1e9;
   source.max_obstacle_height = 1e9;
   const double ours_s = best_seconds(3, [&] {
-    VoxelLayer layer(window, params);
+    costmap::VoxelLayer layer(window, params);
     for (const auto& clouds : frames.clouds) {
-      for (const PointCloud& cloud : clouds) layer.insert({&cloud, Pose3::Identity(), source});
+      for (const model::PointCloud& cloud : clouds)
+        layer.insert({&cloud, model::Pose3::Identity(), source});
     }
   });
   const double points = static_cast<double>(frames.points);
@@ -190,36 +194,39 @@ void throughput(const Scene& scene, const std::vector<CellSensor>& sensors) {
 int main(int argc, char** argv) {
   const double duration = argc > 1 ? std::atof(argv[1]) : 96.0;
   const double rate = argc > 2 ? std::atof(argv[2]) : 5.0;
-  const Rig rig = load_rig(RIGDESIGN_SOURCE_DIR "/rigs/cell.yaml");
-  const SensorLibrary library = load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
-  std::vector<CellSensor> sensors;
-  for (const Mount& mount : rig.mounts) {
+  const model::Rig rig = io::load_rig(RIGDESIGN_SOURCE_DIR "/rigs/cell.yaml");
+  const model::SensorLibrary library =
+      io::load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
+  std::vector<occupancy::CellSensor> sensors;
+  for (const model::Mount& mount : rig.mounts) {
     sensors.push_back(
         {mount.id, *library.find(mount.sensor_id)->find_mode(mount.mode_id), mount.T_robot_sensor});
   }
-  const Scene scene = make_scene("cell", 1);
+  const model::Scene scene = sim::make_scene("cell", 1);
 
-  VoxelMapperParams base;
+  occupancy::VoxelMapperParams base;
   base.source.obstacle_max_range = base.source.raytrace_max_range = 10.0;
   base.source.min_obstacle_height = kMinHeight;
   const std::vector<double> voxels = {0.05, 0.1, 0.15, 0.2};
-  const std::vector<PersistenceSetting> settings = {{false, 0, 0}};
-  std::vector<VoxelMapperParams> grid = sweep_grid(voxels, settings, base);
-  for (const PersistenceSetting& hit :
-       {PersistenceSetting{true, 3, 30}, PersistenceSetting{true, 3, 1500}}) {
-    const std::vector<PersistenceSetting> one = {hit};
+  const std::vector<occupancy::PersistenceSetting> settings = {{false, 0, 0}};
+  std::vector<occupancy::VoxelMapperParams> grid = occupancy::sweep_grid(voxels, settings, base);
+  for (const occupancy::PersistenceSetting& hit :
+       {occupancy::PersistenceSetting{true, 3, 30}, occupancy::PersistenceSetting{true, 3, 1500}}) {
+    const std::vector<occupancy::PersistenceSetting> one = {hit};
     const std::vector<double> tenth = {kResolution};
-    for (const VoxelMapperParams& params : sweep_grid(tenth, one, base)) grid.push_back(params);
+    for (const occupancy::VoxelMapperParams& params : occupancy::sweep_grid(tenth, one, base))
+      grid.push_back(params);
   }
-  auto ours = make_sweep_mappers(grid, SourceLocation{"(bench)"});
+  auto ours = occupancy::make_sweep_mappers(grid, model::SourceLocation{"(bench)"});
   OctoMapMapper octomap_mapper;
-  std::vector<OccupancyMapper*> mappers = {&octomap_mapper};
+  std::vector<occupancy::OccupancyMapper*> mappers = {&octomap_mapper};
   for (const auto& mapper : ours) mappers.push_back(mapper.get());
-  OccupancyEvalParams params;
+  occupancy::OccupancyEvalParams params;
   params.duration = duration;
   params.rate = rate;
   params.min_height = kMinHeight;
-  const std::vector<OccupancyRun> runs = evaluate_occupancy(scene, sensors, mappers, params);
+  const std::vector<occupancy::OccupancyRun> runs =
+      occupancy::evaluate_occupancy(scene, sensors, mappers, params);
 
   std::printf(
       "Cell, %zu frames at %.1f Hz (robot moving until %.0f s), same frames for every mapper\n",
@@ -228,7 +235,7 @@ int main(int argc, char** argv) {
       "| mapper | P | R | F1 | F2 | F3 | ghost m2 | ghost mov | ghost still | trail (p90) max m | "
       "ms/update |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const OccupancyRun& run : runs) print_run(run);
+  for (const occupancy::OccupancyRun& run : runs) print_run(run);
   throughput(scene, sensors);
   return 0;
 }

@@ -14,13 +14,14 @@ namespace {
 using namespace rigdesign;
 
 struct Bundled {
-  Catalog catalog = load_catalog(RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner.yaml");
-  SensorLibrary library = load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
-  Requirements requirements =
-      load_requirements(RIGDESIGN_SOURCE_DIR "/rigs/requirements/ur_cleaner.yaml");
-  SelectionSpace space{catalog, library};
-  std::vector<std::vector<const CatalogOption*>> kept;
-  SearchProblem problem = space.problem_for(satisficing_targets(requirements), kept);
+  model::Catalog catalog = io::load_catalog(RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner.yaml");
+  model::SensorLibrary library = io::load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
+  model::Requirements requirements =
+      io::load_requirements(RIGDESIGN_SOURCE_DIR "/rigs/requirements/ur_cleaner.yaml");
+  select::SelectionSpace space{catalog, library};
+  std::vector<std::vector<const select::CatalogOption*>> kept;
+  select::SearchProblem problem =
+      space.problem_for(select::satisficing_targets(requirements), kept);
 };
 
 const Bundled& bundled() {
@@ -28,7 +29,7 @@ const Bundled& bundled() {
   return instance;
 }
 
-void report(benchmark::State& state, const SearchResult& result) {
+void report(benchmark::State& state, const select::SearchResult& result) {
   state.counters["cost_usd"] = result.cost.total;
   state.counters["nodes"] = static_cast<double>(result.nodes);
   state.counters["rigs_evaluated"] = static_cast<double>(result.evaluations);
@@ -39,24 +40,24 @@ void report(benchmark::State& state, const SearchResult& result) {
 
 void BM_RasteriseCatalog(benchmark::State& state) {
   const Bundled& b = bundled();
-  for (auto _ : state) benchmark::DoNotOptimize(SelectionSpace(b.catalog, b.library));
+  for (auto _ : state) benchmark::DoNotOptimize(select::SelectionSpace(b.catalog, b.library));
 }
 
 void BM_BranchAndBound(benchmark::State& state) {
-  SearchResult result;
-  for (auto _ : state) result = branch_and_bound(bundled().problem);
+  select::SearchResult result;
+  for (auto _ : state) result = select::branch_and_bound(bundled().problem);
   report(state, result);
 }
 
 void BM_BruteForce(benchmark::State& state) {
-  SearchResult result;
-  for (auto _ : state) result = brute_force(bundled().problem);
+  select::SearchResult result;
+  for (auto _ : state) result = select::brute_force(bundled().problem);
   report(state, result);
 }
 
 void BM_SelectWithExactVerification(benchmark::State& state) {
   const Bundled& b = bundled();
-  for (auto _ : state) benchmark::DoNotOptimize(select_cheapest(b.space, b.requirements));
+  for (auto _ : state) benchmark::DoNotOptimize(select::select_cheapest(b.space, b.requirements));
 }
 
 BENCHMARK(BM_RasteriseCatalog)

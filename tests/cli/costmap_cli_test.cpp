@@ -48,7 +48,7 @@ TEST_CASE("costmap CLI: outcome, frames, map files and summary", "[scenario]") {
   // 6 m / 0.05 m = 120 cells a side at 4 px per cell, plus the 28 px title band.
   CHECK(png_size(read_all(out + "/final.png")) == std::pair<int, int>(480, 508));
   CHECK(png_size(read_all(out + "/frames/frame_0000.png")) == std::pair<int, int>(480, 508));
-  const OccupancyMap map = read_map_files(out + "/master.yaml");
+  const io::OccupancyMap map = io::read_map_files(out + "/master.yaml");
   CHECK(map.width == 120);
   CHECK(map.height == 120);
   CHECK(map.resolution == Approx(0.05));

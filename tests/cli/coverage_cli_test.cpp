@@ -96,15 +96,15 @@ TEST_CASE("a cross-section image shows the sensor's colour where it sees and whi
   REQUIRE(run_cli({"coverage", rig, "--out", out, "--angles", "0", "--step", "30", "--no-3d"})
               .exit_code == 0);
   const Png image(out + "/section_0.png");
-  SectionFrame frame;
+  geometry::SectionFrame frame;
   frame.r = 0.5;
   frame.d = 3.5;
   frame.h = 1.0;
-  const SectionLayout layout = section_layout(frame, 1);
+  const render::SectionLayout layout = render::section_layout(frame, 1);
   CHECK(image.width == layout.width);
   CHECK(image.height == layout.height);
   // (rho 3.1, z 0.6) is inside the wedge: the sensor colour at 45 % over white.
-  const Rgb colour = sensor_colour(0);
+  const render::Rgb colour = render::sensor_colour(0);
   const auto seen = image.at(layout.x(3.1), layout.y(0.6));
   const auto expected = [](double c) {
     return static_cast<int>(std::lround(255 * (0.55 + 0.45 * c)));

@@ -63,10 +63,11 @@ TEST_CASE("a pipeline file is pure data; an unknown stage is a located error") {
       folder.write("good.yaml",
                    "name: mine\nstages:\n  - voxel_grid: {leaf: 0.05}\n"
                    "  - statistical_outlier\n  - floor_removal_2: {ransac: {max_tilt_deg: 10}}\n");
-  const Pipeline pipeline = load_pipeline(good);
+  const model::Pipeline pipeline = io::load_pipeline(good);
   REQUIRE(pipeline.stages.size() == 3);
-  CHECK(std::get<VoxelGridParams>(pipeline.stages[0]).leaf == 0.05);
-  CHECK(std::get<StatisticalOutlierParams>(pipeline.stages[1]).neighbours == 10);  // paper default
+  CHECK(std::get<model::VoxelGridParams>(pipeline.stages[0]).leaf == 0.05);
+  CHECK(std::get<model::StatisticalOutlierParams>(pipeline.stages[1]).neighbours ==
+        10);  // paper default
   const std::string bad = folder.write(
       "bad.yaml", "name: mine\nstages:\n  - voxel_grid: {leaf: 0.05}\n  - smooth: {}\n");
   const std::string cloud = folder.write("tiny.pcd", kTinyCloud);

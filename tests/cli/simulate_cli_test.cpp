@@ -21,13 +21,14 @@ TEST_CASE("simulate writes one cloud per sensor and frame that reads back, the s
   for (const char* mount : {"kinect", "front_scanner"}) {
     for (const char* frame : {"frame_0.pcd", "frame_1.pcd"}) {
       const std::string a = folder.path() + "/a/" + mount + "/" + frame;
-      const PointCloud cloud = read_cloud(a);
+      const model::PointCloud cloud = io::read_cloud(a);
       CHECK_FALSE(cloud.empty());
-      CHECK(cloud.points == read_cloud(folder.path() + "/b/" + mount + "/" + frame).points);
+      CHECK(cloud.points == io::read_cloud(folder.path() + "/b/" + mount + "/" + frame).points);
     }
   }
   // The 2D scanner's fan is 20 cm above the floor in the robot frame: all its points too.
-  for (const Point3f& p : read_cloud(folder.path() + "/a/front_scanner/frame_0.pcd").points) {
+  for (const model::Point3f& p :
+       io::read_cloud(folder.path() + "/a/front_scanner/frame_0.pcd").points) {
     CHECK(std::abs(p.z() - 0.2f) < 0.2f);
   }
 }
@@ -52,10 +53,10 @@ TEST_CASE("simulate takes a scene file: the lab's walls where the room's mesh pu
   // The robot starts at (-1.2, -1.0) facing +x in a 6 x 4 m room (walls at x = +-3, y = +-2);
   // the scanner is 0.27 m ahead of it at 0.2 m. Robot frame: the wall ahead at x = 3 + 1.2,
   // the wall on the left at y = 2 + 1.0, seen from the scanner's x.
-  const PointCloud scan = read_cloud(folder.path() + "/front_scanner/frame_0.pcd");
-  const auto nearest_to = [&](const Point3f& target) {
+  const model::PointCloud scan = io::read_cloud(folder.path() + "/front_scanner/frame_0.pcd");
+  const auto nearest_to = [&](const model::Point3f& target) {
     float best = 1e9f;
-    for (const Point3f& p : scan.points) best = std::min(best, (p - target).norm());
+    for (const model::Point3f& p : scan.points) best = std::min(best, (p - target).norm());
     return best;
   };
   CHECK(nearest_to({4.2f, 0.0f, 0.2f}) < 0.05f);

@@ -9,26 +9,26 @@
 using namespace rigdesign;
 
 TEST_CASE("inflation costs follow nav2's values", "[costmap]") {
-  InflationParams params;  // inscribed 0.1 m, radius 0.55 m, k = 3 / m
-  CHECK(inflation_cost(0.0, params) == 254);
-  CHECK(inflation_cost(0.05, params) == 253);
-  CHECK(inflation_cost(0.1, params) == 253);
+  costmap::InflationParams params;  // inscribed 0.1 m, radius 0.55 m, k = 3 / m
+  CHECK(costmap::inflation_cost(0.0, params) == 254);
+  CHECK(costmap::inflation_cost(0.05, params) == 253);
+  CHECK(costmap::inflation_cost(0.1, params) == 253);
   // 252 exp(-3 (0.2 - 0.1)) = 186.69 -> 186; 252 exp(-3 x 0.45) = 65.33 -> 65.
-  CHECK(inflation_cost(0.2, params) == 186);
-  CHECK(inflation_cost(0.55, params) == 65);
-  CHECK(inflation_cost(0.56, params) == 0);
+  CHECK(costmap::inflation_cost(0.2, params) == 186);
+  CHECK(costmap::inflation_cost(0.55, params) == 65);
+  CHECK(costmap::inflation_cost(0.56, params) == 0);
 }
 
 TEST_CASE("the inflation layer decays around a lethal cell", "[costmap]") {
-  GridWindow window;
+  costmap::GridWindow window;
   window.width = 21;
   window.height = 21;
   window.resolution = 0.05;
-  CostGrid master(window, cost::kFree);
-  master.at(10, 10) = cost::kLethal;
-  master.at(10, 13) = cost::kUnknown;  // 0.15 m away: 216 < 253, stays unknown
-  master.at(11, 10) = cost::kUnknown;  // 0.05 m away: inscribed, takes 253
-  InflationLayer inflation;
+  costmap::CostGrid master(window, costmap::cost::kFree);
+  master.at(10, 10) = costmap::cost::kLethal;
+  master.at(10, 13) = costmap::cost::kUnknown;  // 0.15 m away: 216 < 253, stays unknown
+  master.at(11, 10) = costmap::cost::kUnknown;  // 0.05 m away: inscribed, takes 253
+  costmap::InflationLayer inflation;
   inflation.apply(master);
   CHECK(master.at(10, 10) == 254);
   CHECK(master.at(12, 10) == 253);  // 0.10 m
@@ -37,8 +37,8 @@ TEST_CASE("the inflation layer decays around a lethal cell", "[costmap]") {
   CHECK(master.at(13, 14) == 160);  // 5 cells = 0.25 m: 252 exp(-0.45) = 160.7
   CHECK(master.at(20, 10) == 75);   // 0.50 m: 252 exp(-1.2) = 75.9
   CHECK(master.at(20, 20) == 0);    // 0.707 m, beyond 0.55 m
-  CHECK(master.at(10, 13) == cost::kUnknown);
-  CHECK(master.at(11, 10) == cost::kInscribed);
+  CHECK(master.at(10, 13) == costmap::cost::kUnknown);
+  CHECK(master.at(11, 10) == costmap::cost::kInscribed);
 }
 
 TEST_CASE("the distance transform matches a brute-force nearest source", "[costmap]") {
@@ -50,7 +50,7 @@ TEST_CASE("the distance transform matches a brute-force nearest source", "[costm
   for (auto& m : mask) m = source(rng);
   mask[0] = 0;
   std::vector<double> fast;
-  squared_distance_transform(mask, width, height, fast);
+  costmap::squared_distance_transform(mask, width, height, fast);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       double best = 1e300;
@@ -65,6 +65,6 @@ TEST_CASE("the distance transform matches a brute-force nearest source", "[costm
   }
   // No source at all: everything is "far".
   std::vector<std::uint8_t> empty(12, 0);
-  squared_distance_transform(empty, 4, 3, fast);
+  costmap::squared_distance_transform(empty, 4, 3, fast);
   for (double d : fast) CHECK(d > 1e9);
 }

@@ -9,8 +9,8 @@ using namespace rigdesign;
 
 namespace {
 
-GridWindow window_of(int width, int height, double resolution) {
-  GridWindow window;
+costmap::GridWindow window_of(int width, int height, double resolution) {
+  costmap::GridWindow window;
   window.width = width;
   window.height = height;
   window.resolution = resolution;
@@ -21,13 +21,13 @@ GridWindow window_of(int width, int height, double resolution) {
 
 TEST_CASE("a rolling grid keeps the overlap and resets the cells entering the window",
           "[costmap]") {
-  RollingGrid<int> grid(window_of(4, 3, 1.0), -1);
+  costmap::RollingGrid<int> grid(window_of(4, 3, 1.0), -1);
   for (int y = 0; y < 3; ++y) {
     for (int x = 0; x < 4; ++x) grid.at(x, y) = 10 * x + y;
   }
   // Origin moves by (+1, -1): new cell (x, y) is old cell (x + 1, y - 1).
   grid.move_origin({1, -1});
-  CHECK(grid.window().origin() == Vec2(1.0, -1.0));
+  CHECK(grid.window().origin() == model::Vec2(1.0, -1.0));
   CHECK(grid.at(0, 1) == 10);  // old (1, 0)
   CHECK(grid.at(2, 2) == 31);  // old (3, 1)
   CHECK(grid.at(0, 2) == 11);  // old (1, 1)
@@ -51,41 +51,41 @@ TEST_CASE("a rolling grid keeps the overlap and resets the cells entering the wi
 }
 
 TEST_CASE("recentring puts the lattice cell under the robot at the window's centre", "[costmap]") {
-  CostGrid grid(window_of(4, 3, 0.5), 255);
-  grid.recentre(Vec2(2.2, 0.7));  // lattice cell (4, 1); centre cell (2, 1) -> origin (2, 0)
+  costmap::CostGrid grid(window_of(4, 3, 0.5), 255);
+  grid.recentre(model::Vec2(2.2, 0.7));  // lattice cell (4, 1); centre cell (2, 1) -> origin (2, 0)
   CHECK(grid.window().origin_cell == Eigen::Vector2i(2, 0));
-  CHECK(grid.window().origin() == Vec2(1.0, 0.0));
-  const auto cell = grid.window().cell_of(Vec2(2.2, 0.7));
+  CHECK(grid.window().origin() == model::Vec2(1.0, 0.0));
+  const auto cell = grid.window().cell_of(model::Vec2(2.2, 0.7));
   REQUIRE(cell);
-  CHECK(*cell == CellIndex{2, 1});
-  CHECK(grid.window().centre_of(2, 1).isApprox(Vec2(2.25, 0.75)));
-  CHECK_FALSE(grid.window().cell_of(Vec2(0.99, 0.7)));
+  CHECK(*cell == costmap::CellIndex{2, 1});
+  CHECK(grid.window().centre_of(2, 1).isApprox(model::Vec2(2.25, 0.75)));
+  CHECK_FALSE(grid.window().cell_of(model::Vec2(0.99, 0.7)));
 }
 
 TEST_CASE("a rolling voxel grid moves whole columns and keeps lattice keys", "[costmap]") {
-  RollingVoxelGrid grid(window_of(3, 2, 0.1), 0.0, 0.2, 0.1);
+  costmap::RollingVoxelGrid grid(window_of(3, 2, 0.1), 0.0, 0.2, 0.1);
   REQUIRE(grid.layers() == 2);
-  grid.set(2, 1, 1, VoxelState::occupied);
-  grid.set(0, 0, 0, VoxelState::free);
-  const VoxelKey key = grid.key_of(2, 1, 1);
-  CHECK(key == grid.key_at(Vec3(0.25, 0.15, 0.15)));
+  grid.set(2, 1, 1, costmap::VoxelState::occupied);
+  grid.set(0, 0, 0, costmap::VoxelState::free);
+  const costmap::VoxelKey key = grid.key_of(2, 1, 1);
+  CHECK(key == grid.key_at(model::Vec3(0.25, 0.15, 0.15)));
   grid.move_origin({1, 0});
-  CHECK(grid.state(1, 1, 1) == VoxelState::occupied);
+  CHECK(grid.state(1, 1, 1) == costmap::VoxelState::occupied);
   CHECK(grid.key_of(1, 1, 1) == key);
-  CHECK(grid.state(2, 1, 1) == VoxelState::unknown);    // entered
-  CHECK(grid.keys_in_state(VoxelState::free).empty());  // (0, 0) left the window
+  CHECK(grid.state(2, 1, 1) == costmap::VoxelState::unknown);    // entered
+  CHECK(grid.keys_in_state(costmap::VoxelState::free).empty());  // (0, 0) left the window
   grid.move_origin({3, 0});
-  CHECK(grid.keys_in_state(VoxelState::occupied).empty());
+  CHECK(grid.keys_in_state(costmap::VoxelState::occupied).empty());
 }
 
 TEST_CASE("a band that is a whole number of layers gets exactly that many", "[costmap]") {
   // 2.0 / 0.1 is 19.999... in floating point: still 20 layers, not 21.
-  CHECK(RollingVoxelGrid(window_of(1, 1, 0.1), 0.0, 2.0, 0.1).layers() == 20);
-  CHECK(RollingVoxelGrid(window_of(1, 1, 0.1), 0.0, 2.05, 0.1).layers() == 21);
+  CHECK(costmap::RollingVoxelGrid(window_of(1, 1, 0.1), 0.0, 2.0, 0.1).layers() == 20);
+  CHECK(costmap::RollingVoxelGrid(window_of(1, 1, 0.1), 0.0, 2.05, 0.1).layers() == 21);
 }
 
 TEST_CASE("the Hit Layer's window keeps counts in the overlap and zeroes new cells", "[costmap]") {
-  HitLayer layer(window_of(5, 5, 0.1), HitLayerParams{});
+  costmap::HitLayer layer(window_of(5, 5, 0.1), costmap::HitLayerParams{});
   layer.counts().at(3, 2) = 1500;
   layer.counts().at(0, 0) = 7;
   layer.move_origin({2, 0});

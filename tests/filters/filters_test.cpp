@@ -10,16 +10,17 @@ using namespace rigdesign;
 
 namespace {
 
-PointCloud cloud_of(std::vector<Point3f> points) {
-  PointCloud cloud;
+model::PointCloud cloud_of(std::vector<model::Point3f> points) {
+  model::PointCloud cloud;
   cloud.points = std::move(points);
   return cloud;
 }
 
 // A floor patch on a regular grid with Gaussian height noise.
-std::vector<Point3f> noisy_floor(double size, double spacing, double sigma, std::mt19937& rng) {
+std::vector<model::Point3f> noisy_floor(double size, double spacing, double sigma,
+                                        std::mt19937& rng) {
   std::normal_distribution<float> noise(0.0f, static_cast<float>(sigma));
-  std::vector<Point3f> points;
+  std::vector<model::Point3f> points;
   for (double x = -size / 2; x < size / 2; x += spacing) {
     for (double y = -size / 2; y < size / 2; y += spacing) {
       points.emplace_back(static_cast<float>(x), static_cast<float>(y), noise(rng));
@@ -30,7 +31,7 @@ std::vector<Point3f> noisy_floor(double size, double spacing, double sigma, std:
 
 // SOR's inliers by brute force: PCL's definition (mean distance to the k nearest others,
 // kept when within mean + 1 sample standard deviation), written independently.
-std::vector<std::uint32_t> brute_force_inliers(const std::vector<Point3f>& points, int k) {
+std::vector<std::uint32_t> brute_force_inliers(const std::vector<model::Point3f>& points, int k) {
   std::vector<double> mean(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     std::vector<double> d;
@@ -62,55 +63,55 @@ std::vector<std::uint32_t> brute_force_inliers(const std::vector<Point3f>& point
 TEST_CASE("voxel grid returns each voxel's centroid") {
   // Leaf 1 m: (0.1, 0.1, 0.1) and (0.3, 0.5, 0.2) share voxel (0, 0, 0), centroid
   // (0.2, 0.3, 0.15); (1.5, 0.2, 0.2) is alone in voxel (1, 0, 0).
-  VoxelGridParams params;
+  model::VoxelGridParams params;
   params.leaf = 1.0;
-  PointCloud result =
-      voxel_grid(cloud_of({{0.1f, 0.1f, 0.1f}, {1.5f, 0.2f, 0.2f}, {0.3f, 0.5f, 0.2f}}), params);
+  model::PointCloud result = filters::voxel_grid(
+      cloud_of({{0.1f, 0.1f, 0.1f}, {1.5f, 0.2f, 0.2f}, {0.3f, 0.5f, 0.2f}}), params);
   REQUIRE(result.size() == 2);
   std::sort(result.points.begin(), result.points.end(),
-            [](const Point3f& a, const Point3f& b) { return a.x() < b.x(); });
-  CHECK(result.points[0].isApprox(Point3f(0.2f, 0.3f, 0.15f), 1e-6f));
-  CHECK(result.points[1].isApprox(Point3f(1.5f, 0.2f, 0.2f), 1e-6f));
+            [](const model::Point3f& a, const model::Point3f& b) { return a.x() < b.x(); });
+  CHECK(result.points[0].isApprox(model::Point3f(0.2f, 0.3f, 0.15f), 1e-6f));
+  CHECK(result.points[1].isApprox(model::Point3f(1.5f, 0.2f, 0.2f), 1e-6f));
   // With boundaries at multiples of 1 m, 0.4 and 0.6 share a voxel; shifted by half a leaf
   // (boundaries at 0.5, 1.5, ...) they fall on opposite sides.
-  const PointCloud straddling = cloud_of({{0.4f, 0.7f, 0.7f}, {0.6f, 0.7f, 0.7f}});
-  CHECK(voxel_grid(straddling, params).size() == 1);
+  const model::PointCloud straddling = cloud_of({{0.4f, 0.7f, 0.7f}, {0.6f, 0.7f, 0.7f}});
+  CHECK(filters::voxel_grid(straddling, params).size() == 1);
   params.grid_offset = Eigen::Vector3d(0.5, 0.5, 0.5);
-  CHECK(voxel_grid(straddling, params).size() == 2);
+  CHECK(filters::voxel_grid(straddling, params).size() == 2);
 }
 
 TEST_CASE("voxel grid refuses a leaf that is not positive or would overflow voxel indices") {
-  const PointCloud cloud = cloud_of({{0, 0, 0}, {100, 0, 0}});
-  VoxelGridParams params;
+  const model::PointCloud cloud = cloud_of({{0, 0, 0}, {100, 0, 0}});
+  model::VoxelGridParams params;
   params.leaf = 0.0;
-  CHECK_THROWS_AS(voxel_grid(cloud, params), InputError);
+  CHECK_THROWS_AS(filters::voxel_grid(cloud, params), model::InputError);
   params.leaf = 1e-5;  // 100 m / 10 um = 1e7 voxels along x > 2^21
   try {
-    voxel_grid(cloud, params);
+    filters::voxel_grid(cloud, params);
     FAIL("expected an error");
-  } catch (const InputError& error) {
+  } catch (const model::InputError& error) {
     CHECK(error.diagnostics().front().field == "voxel_grid.leaf");
     CHECK(error.diagnostics().front().problem.find("overflow") != std::string::npos);
   }
   params.leaf = 1e-4;  // 1e6 voxels: fits
-  CHECK(voxel_grid(cloud, params).size() == 2);
+  CHECK(filters::voxel_grid(cloud, params).size() == 2);
 }
 
 TEST_CASE("statistical outlier removal matches a brute-force neighbour search") {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
-  std::vector<Point3f> points = noisy_floor(1.0, 0.02, 0.002, rng);
+  std::vector<model::Point3f> points = noisy_floor(1.0, 0.02, 0.002, rng);
   for (int i = 0; i < 40; ++i)
     points.emplace_back(unit(rng), unit(rng), 0.2f + 0.5f * std::abs(unit(rng)));
-  const PointCloud cloud = cloud_of(points);
+  const model::PointCloud cloud = cloud_of(points);
   const std::vector<std::uint32_t> expected = brute_force_inliers(points, 10);
   for (const double cell : {0.0, 0.01, 0.05, 0.5}) {  // the cell changes speed, never results
-    StatisticalOutlierParams params;
+    model::StatisticalOutlierParams params;
     params.cell = cell;
-    CHECK(statistical_outlier_inliers(cloud, params) == expected);
+    CHECK(filters::statistical_outlier_inliers(cloud, params) == expected);
   }
   // Every planted outlier goes; the floor stays.
-  const std::vector<std::uint32_t> kept = statistical_outlier_inliers(cloud);
+  const std::vector<std::uint32_t> kept = filters::statistical_outlier_inliers(cloud);
   const std::size_t floor_points = points.size() - 40;
   CHECK(std::count_if(kept.begin(), kept.end(),
                       [&](std::uint32_t i) { return i >= floor_points; }) == 0);
@@ -120,19 +121,21 @@ TEST_CASE("statistical outlier removal matches a brute-force neighbour search") 
 TEST_CASE("statistical outlier removal: duplicates, far loners and fewer points than neighbours") {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  std::vector<Point3f> points;
+  std::vector<model::Point3f> points;
   for (int i = 0; i < 300; ++i) points.emplace_back(unit(rng), unit(rng), 0.1f * unit(rng));
   for (int i = 0; i < 20; ++i)
     points.push_back(points[static_cast<std::size_t>(i) * 7]);  // exact duplicates
   points.emplace_back(40.0f, -30.0f, 5.0f);  // far from everything: the search radius must grow
   points.emplace_back(40.5f, -30.0f, 5.0f);
   for (const double cell : {0.0, 0.003, 0.2}) {
-    StatisticalOutlierParams params;
+    model::StatisticalOutlierParams params;
     params.cell = cell;
-    CHECK(statistical_outlier_inliers(cloud_of(points), params) == brute_force_inliers(points, 10));
+    CHECK(filters::statistical_outlier_inliers(cloud_of(points), params) ==
+          brute_force_inliers(points, 10));
   }
-  const std::vector<Point3f> few = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}, {9, 9, 9}};
-  CHECK(statistical_outlier_inliers(cloud_of(few)) == brute_force_inliers(few, 10));  // k > n - 1
+  const std::vector<model::Point3f> few = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}, {9, 9, 9}};
+  CHECK(filters::statistical_outlier_inliers(cloud_of(few)) ==
+        brute_force_inliers(few, 10));  // k > n - 1
 }
 
 TEST_CASE("RANSAC recovers a known plane within 1 degree with 30 % outliers") {
@@ -143,43 +146,48 @@ TEST_CASE("RANSAC recovers a known plane within 1 degree with 30 % outliers") {
   const Eigen::Vector3f normal(0.0f, -std::sin(0.17453293f), std::cos(0.17453293f));
   const Eigen::Vector3f u = Eigen::Vector3f::UnitX();
   const Eigen::Vector3f v = normal.cross(u);
-  std::vector<Point3f> points;
+  std::vector<model::Point3f> points;
   for (int i = 0; i < 700; ++i)
     points.push_back(unit(rng) * u + unit(rng) * v + noise(rng) * normal);
   for (int i = 0; i < 300; ++i) points.emplace_back(unit(rng), unit(rng), unit(rng));
-  const PointCloud cloud = cloud_of(points);
-  const PlaneFit fit = fit_plane_ransac(cloud, RansacPlaneParams{100, 0.03, 42, 0.99, {}});
+  const model::PointCloud cloud = cloud_of(points);
+  const filters::PlaneFit fit =
+      filters::fit_plane_ransac(cloud, model::RansacPlaneParams{100, 0.03, 42, 0.99, {}});
   REQUIRE(fit.found);
   const double angle = std::acos(std::min(1.0, std::abs(fit.normal.dot(normal.cast<double>()))));
   CHECK(angle < 1.0 * 3.141592653589793 / 180);
   CHECK(fit.inliers.size() >= 690);
   // Deterministic: the same seed, the same plane.
-  CHECK(fit_plane_ransac(cloud, RansacPlaneParams{100, 0.03, 42, 0.99, {}}).inliers == fit.inliers);
+  CHECK(
+      filters::fit_plane_ransac(cloud, model::RansacPlaneParams{100, 0.03, 42, 0.99, {}}).inliers ==
+      fit.inliers);
   // Adaptive stop: with ~70 % inliers (some outliers fall within T too), an all-inlier sample
   // is missed with probability (1 - 0.7^3)^k, below 1 % after k = ln 0.01 / ln(1 - 0.343) = 11;
   // a higher share found early stops sooner. Confidence 1 tries every hypothesis.
   CHECK(fit.hypotheses >= 1);
   CHECK(fit.hypotheses <= 11);
-  CHECK(fit_plane_ransac(cloud, RansacPlaneParams{100, 0.03, 42, 1.0, {}}).hypotheses == 100);
+  CHECK(filters::fit_plane_ransac(cloud, model::RansacPlaneParams{100, 0.03, 42, 1.0, {}})
+            .hypotheses == 100);
 }
 
 TEST_CASE("floor removal drops the floor and keeps a 5 cm box standing on it") {
   std::mt19937 rng(3);
-  std::vector<Point3f> points = noisy_floor(2.0, 0.01, 0.004, rng);
+  std::vector<model::Point3f> points = noisy_floor(2.0, 0.01, 0.004, rng);
   const std::size_t floor_points = points.size();
   for (double x = 0.3; x < 0.5; x += 0.005) {  // the box's top face, 20 x 20 cm at 5 cm
     for (double y = 0.3; y < 0.5; y += 0.005) points.emplace_back(float(x), float(y), 0.05f);
   }
   const std::size_t box_points = points.size() - floor_points;
-  PointCloud cloud = cloud_of(points);
-  cloud.origin = Point3f(0, 0, 0.8f);
-  const auto count_box = [](const PointCloud& c) {
+  model::PointCloud cloud = cloud_of(points);
+  cloud.origin = model::Point3f(0, 0, 0.8f);
+  const auto count_box = [](const model::PointCloud& c) {
     return std::count_if(c.points.begin(), c.points.end(),
-                         [](const Point3f& p) { return p.z() > 0.045f; });
+                         [](const model::Point3f& p) { return p.z() > 0.045f; });
   };
   for (int variant = 1; variant <= 2; ++variant) {
     INFO("floor removal " << variant);
-    const PointCloud rest = variant == 1 ? remove_floor_1(cloud) : remove_floor_2(cloud);
+    const model::PointCloud rest =
+        variant == 1 ? filters::remove_floor_1(cloud) : filters::remove_floor_2(cloud);
     const auto box_left = static_cast<std::size_t>(count_box(rest));
     const std::size_t floor_left = rest.size() - box_left;
     CHECK(floor_left <= floor_points / 100);
@@ -188,26 +196,27 @@ TEST_CASE("floor removal drops the floor and keeps a 5 cm box standing on it") {
 }
 
 TEST_CASE("negative obstacles: mirrored point and virtual point on the ray to the floor") {
-  PointCloud cloud = cloud_of({{2.0f, 0.0f, -0.5f}, {1.0f, 1.0f, -0.01f}});
-  cloud.origin = Point3f(0, 0, 1.0f);
-  const PointCloud marked = mark_negative_obstacles(cloud);
+  model::PointCloud cloud = cloud_of({{2.0f, 0.0f, -0.5f}, {1.0f, 1.0f, -0.01f}});
+  cloud.origin = model::Point3f(0, 0, 1.0f);
+  const model::PointCloud marked = filters::mark_negative_obstacles(cloud);
   REQUIRE(marked.size() == 3);
-  CHECK(marked.points[0].isApprox(Point3f(2.0f, 0.0f, 0.5f)));    // mirrored
-  CHECK(marked.points[1].isApprox(Point3f(1.0f, 1.0f, -0.01f)));  // above -2 cm: kept as is
+  CHECK(marked.points[0].isApprox(model::Point3f(2.0f, 0.0f, 0.5f)));    // mirrored
+  CHECK(marked.points[1].isApprox(model::Point3f(1.0f, 1.0f, -0.01f)));  // above -2 cm: kept as is
   // s = o_z / (o_z - z) = 1 / 1.5: P'' = (2 * 2/3, 0, 0.1).
-  CHECK(marked.points[2].isApprox(Point3f(4.0f / 3.0f, 0.0f, 0.1f), 1e-6f));
+  CHECK(marked.points[2].isApprox(model::Point3f(4.0f / 3.0f, 0.0f, 0.1f), 1e-6f));
 }
 
 TEST_CASE("pipelines P1-P4 run their stages in paper 1's orders") {
-  CHECK(stage_name(preset_pipeline("P3")->stages[1]) == "floor_removal_1");
-  CHECK(stage_name(preset_pipeline("P4")->stages[2]) == "floor_removal_2");
-  CHECK(stage_name(preset_pipeline("P1")->stages[0]) == "statistical_outlier");
-  CHECK_FALSE(preset_pipeline("P5").has_value());
+  CHECK(model::stage_name(filters::preset_pipeline("P3")->stages[1]) == "floor_removal_1");
+  CHECK(model::stage_name(filters::preset_pipeline("P4")->stages[2]) == "floor_removal_2");
+  CHECK(model::stage_name(filters::preset_pipeline("P1")->stages[0]) == "statistical_outlier");
+  CHECK_FALSE(filters::preset_pipeline("P5").has_value());
   std::mt19937 rng(9);
-  const PointCloud cloud = cloud_of(noisy_floor(2.0, 0.01, 0.004, rng));
+  const model::PointCloud cloud = cloud_of(noisy_floor(2.0, 0.01, 0.004, rng));
   for (const char* name : {"P1", "P2", "P3", "P4"}) {
-    std::vector<StageRun> runs;
-    const PointCloud out = run_pipeline(*preset_pipeline(name), cloud, &runs);
+    std::vector<filters::StageRun> runs;
+    const model::PointCloud out =
+        filters::run_pipeline(*filters::preset_pipeline(name), cloud, &runs);
     REQUIRE(runs.size() == 3);
     CHECK(runs.front().points_in == cloud.size());
     CHECK(runs.back().points_out == out.size());

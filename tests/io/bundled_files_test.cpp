@@ -28,25 +28,25 @@ std::vector<std::string> yaml_files_in(const std::string& folder) {
 }  // namespace
 
 TEST_CASE("every bundled rig and requirement file loads and resolves") {
-  const SensorLibrary library = load_sensor_library(source_path("sensors.yaml"));
+  const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   const auto rigs = yaml_files_in("rigs");
   CHECK(rigs.size() >= 3);
   for (const std::string& file : rigs) {
     INFO(file);
-    REQUIRE(detect_file_kind(file) == FileKind::rig);
-    const Rig rig = load_rig(file);
-    const Diagnostics references = check_rig_references(rig, library);
+    REQUIRE(io::detect_file_kind(file) == io::FileKind::rig);
+    const model::Rig rig = io::load_rig(file);
+    const model::Diagnostics references = io::check_rig_references(rig, library);
     CHECK(references.items().empty());  // no unknown reference, no distance out of range
   }
   for (const std::string& file : yaml_files_in("rigs/requirements")) {
     INFO(file);
-    REQUIRE(detect_file_kind(file) == FileKind::requirements);
-    CHECK_NOTHROW(load_requirements(file));
+    REQUIRE(io::detect_file_kind(file) == io::FileKind::requirements);
+    CHECK_NOTHROW(io::load_requirements(file));
   }
 }
 
 TEST_CASE("the sensor library holds the sensors the product card asks for") {
-  const SensorLibrary library = load_sensor_library(source_path("sensors.yaml"));
+  const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   CHECK(library.sensors.size() >= 12);
   for (const char* id :
        {"azure_kinect_dk", "pmd_pico_flexx", "velodyne_vlp16", "kinect_v1", "sick_lms100",
@@ -55,20 +55,21 @@ TEST_CASE("the sensor library holds the sensors the product card asks for") {
     INFO(id);
     CHECK(library.find(id) != nullptr);
   }
-  for (const Sensor& sensor : library.sensors) {
+  for (const model::Sensor& sensor : library.sensors) {
     INFO(sensor.id);
     CHECK_FALSE(sensor.source.empty());
     CHECK_FALSE(sensor.price.source.empty());
     CHECK(sensor.price.year >= 2010);
   }
   // Azure Kinect: the four depth modes of its datasheet; VLP-16: 5, 10, 15 and 20 Hz.
-  const Sensor& azure = *library.find("azure_kinect_dk");
+  const model::Sensor& azure = *library.find("azure_kinect_dk");
   for (const char* mode :
        {"nfov_unbinned_30", "nfov_binned_30", "wfov_binned_30", "wfov_unbinned_15"}) {
     CHECK(azure.find_mode(mode) != nullptr);
   }
   std::set<double> rates;
-  for (const SensorMode& mode : library.find("velodyne_vlp16")->modes) rates.insert(mode.frequency);
+  for (const model::SensorMode& mode : library.find("velodyne_vlp16")->modes)
+    rates.insert(mode.frequency);
   CHECK(rates == std::set<double>{5, 10, 15, 20});
 }
 
@@ -93,14 +94,14 @@ sensors:
          bytes_per_second: 940368,
          fov: {shape: band, elevation_min_deg: -15, elevation_max_deg: 15}}
 )");
-  const SensorLibrary library = load_sensor_library(file);
-  const SensorMode& grid = library.sensors[0].modes[0];
-  CHECK(grid.angular_resolution_h == Approx(deg_to_rad(0.1)));   // 60 deg / 600 px
-  CHECK(*grid.angular_resolution_v == Approx(deg_to_rad(0.1)));  // 40 deg / 400 px
+  const model::SensorLibrary library = io::load_sensor_library(file);
+  const model::SensorMode& grid = library.sensors[0].modes[0];
+  CHECK(grid.angular_resolution_h == Approx(model::deg_to_rad(0.1)));   // 60 deg / 600 px
+  CHECK(*grid.angular_resolution_v == Approx(model::deg_to_rad(0.1)));  // 40 deg / 400 px
   CHECK(grid.points_per_frame == 240000);
   CHECK(grid.bytes_per_frame == 480000);
-  const SensorMode& spinning = library.sensors[0].modes[1];
+  const model::SensorMode& spinning = library.sensors[0].modes[1];
   CHECK(spinning.fov.horizontal == Approx(2 * 3.14159265358979));  // band default: 360 deg
-  CHECK(spinning.fov.vertical == Approx(deg_to_rad(30)));
+  CHECK(spinning.fov.vertical == Approx(model::deg_to_rad(30)));
   CHECK(spinning.bytes_per_frame * 15 == Approx(940368));
 }

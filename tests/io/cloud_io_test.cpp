@@ -21,8 +21,8 @@ namespace {
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 // Values chosen to catch lossy text: no short decimal form, extremes of float's range.
-PointCloud small_cloud() {
-  PointCloud cloud;
+model::PointCloud small_cloud() {
+  model::PointCloud cloud;
   cloud.points = {{0.1f, -0.2f, 0.3f},
                   {1.0f / 3.0f, 2.0f / 3.0f, -1.0e-7f},
                   {123456.789f, -9.87654e-3f, 42.0f},
@@ -74,22 +74,23 @@ std::string xyz_pcd_header(std::size_t points, const std::string& data) {
 
 TEST_CASE("clouds survive a round trip through every format and encoding") {
   TempFolder folder;
-  const PointCloud original = small_cloud();
+  const model::PointCloud original = small_cloud();
   struct Case {
     const char* file;
-    CloudEncoding encoding;
+    io::CloudEncoding encoding;
     const char* format;
   };
-  const std::vector<Case> cases = {{"c.pcd", CloudEncoding::ascii, "pcd ascii"},
-                                   {"c.pcd", CloudEncoding::binary, "pcd binary"},
-                                   {"c.PLY", CloudEncoding::ascii, "ply ascii"},
-                                   {"c.ply", CloudEncoding::binary, "ply binary_little_endian"}};
+  const std::vector<Case> cases = {
+      {"c.pcd", io::CloudEncoding::ascii, "pcd ascii"},
+      {"c.pcd", io::CloudEncoding::binary, "pcd binary"},
+      {"c.PLY", io::CloudEncoding::ascii, "ply ascii"},
+      {"c.ply", io::CloudEncoding::binary, "ply binary_little_endian"}};
   for (const Case& c : cases) {
     INFO(c.format);
     const std::string path = folder.path() + "/" + c.file;
-    write_cloud(path, original, c.encoding);
-    CloudReadReport report;
-    const PointCloud read = read_cloud(path, &report);
+    io::write_cloud(path, original, c.encoding);
+    io::CloudReadReport report;
+    const model::PointCloud read = io::read_cloud(path, &report);
     CHECK(report.format == c.format);
     CHECK(report.points_in_file == original.size());
     CHECK(report.dropped_non_finite == 0);
@@ -108,22 +109,22 @@ TEST_CASE("clouds survive a round trip through every format and encoding") {
 
 TEST_CASE("non-finite points are dropped and counted, empty clouds are valid") {
   TempFolder folder;
-  PointCloud cloud;
+  model::PointCloud cloud;
   cloud.points = {
       {1, 2, 3}, {kNaN, kNaN, kNaN}, {4, std::numeric_limits<float>::infinity(), 6}, {7, 8, 9}};
-  for (const CloudEncoding encoding : {CloudEncoding::ascii, CloudEncoding::binary}) {
+  for (const io::CloudEncoding encoding : {io::CloudEncoding::ascii, io::CloudEncoding::binary}) {
     for (const char* name : {"/n.pcd", "/n.ply"}) {
       const std::string path = folder.path() + name;
-      write_cloud(path, cloud, encoding);
-      CloudReadReport report;
-      const PointCloud read = read_cloud(path, &report);
+      io::write_cloud(path, cloud, encoding);
+      io::CloudReadReport report;
+      const model::PointCloud read = io::read_cloud(path, &report);
       CHECK(report.points_in_file == 4);
       CHECK(report.dropped_non_finite == 2);
       REQUIRE(read.size() == 2);
-      CHECK(read.points[1] == Point3f(7, 8, 9));
+      CHECK(read.points[1] == model::Point3f(7, 8, 9));
 
-      write_cloud(path, PointCloud{}, encoding);
-      CHECK(read_cloud(path).empty());
+      io::write_cloud(path, model::PointCloud{}, encoding);
+      CHECK(io::read_cloud(path).empty());
     }
   }
 }
@@ -132,9 +133,9 @@ TEST_CASE("write_cloud refuses an unknown extension and leaves no file") {
   TempFolder folder;
   const std::string path = folder.path() + "/cloud.xyz";
   try {
-    write_cloud(path, small_cloud(), CloudEncoding::ascii);
+    io::write_cloud(path, small_cloud(), io::CloudEncoding::ascii);
     FAIL("no InputError");
-  } catch (const InputError& e) {
+  } catch (const model::InputError& e) {
     CHECK(std::string(e.what()).find("cloud.xyz: output:") != std::string::npos);
   }
   CHECK(folder.entries() == 0);
@@ -147,11 +148,11 @@ TEST_CASE("PCD fields besides x y z are read past in every encoding") {
   const std::string sizes = "4 4 2 4 8";
   const std::string types = "U F I F F";
   const std::string counts = "1 1 3 1 1";
-  const std::vector<Point3f> expected = {{1.5f, -2.5f, 3.25f}, {-0.1f, 0.2f, 1e-3f}};
+  const std::vector<model::Point3f> expected = {{1.5f, -2.5f, 3.25f}, {-0.1f, 0.2f, 1e-3f}};
   std::string records;
   std::string soa;  // binary_compressed: all rgb, then all x, ..., field after field
   std::string text;
-  for (const Point3f& p : expected) {
+  for (const model::Point3f& p : expected) {
     records += bytes_of(std::uint32_t{0xff8040}) + bytes_of(p.x()) + bytes_of(std::int16_t{-1}) +
                bytes_of(std::int16_t{2}) + bytes_of(std::int16_t{3}) + bytes_of(p.y()) +
                bytes_of(static_cast<double>(p.z()));
@@ -172,8 +173,8 @@ TEST_CASE("PCD fields besides x y z are read past in every encoding") {
   for (const auto& [encoding, body] : files) {
     INFO(encoding);
     std::string contents = pcd_header(fields, sizes, types, counts, n, encoding) + body;
-    CloudReadReport report;
-    const PointCloud cloud = read_cloud(folder.write("f.pcd", contents), &report);
+    io::CloudReadReport report;
+    const model::PointCloud cloud = io::read_cloud(folder.write("f.pcd", contents), &report);
     CHECK(report.format == "pcd " + encoding);
     CHECK(report.ignored_fields == std::vector<std::string>{"rgb", "desc"});
     REQUIRE(cloud.size() == n);
@@ -186,15 +187,15 @@ TEST_CASE("PCD fields besides x y z are read past in every encoding") {
 
 TEST_CASE("a hand-made binary_compressed PCD reads back, NaN points dropped") {
   TempFolder folder;
-  const std::vector<Point3f> points = {{1, 2, 3}, {kNaN, kNaN, kNaN}, {-4, 5.5f, 0.25f}};
+  const std::vector<model::Point3f> points = {{1, 2, 3}, {kNaN, kNaN, kNaN}, {-4, 5.5f, 0.25f}};
   std::string soa;
   for (int axis = 0; axis < 3; ++axis) {
-    for (const Point3f& p : points) soa += bytes_of(p[axis]);
+    for (const model::Point3f& p : points) soa += bytes_of(p[axis]);
   }
   const std::string contents = xyz_pcd_header(points.size(), "binary_compressed") +
                                compressed_body(literal_only_lzf(soa), soa.size());
-  CloudReadReport report;
-  const PointCloud cloud = read_cloud(folder.write("c.pcd", contents), &report);
+  io::CloudReadReport report;
+  const model::PointCloud cloud = io::read_cloud(folder.write("c.pcd", contents), &report);
   CHECK(report.format == "pcd binary_compressed");
   CHECK(report.points_in_file == 3);
   CHECK(report.dropped_non_finite == 1);
@@ -212,9 +213,9 @@ TEST_CASE("LZF back-references repeat earlier output, overlapping runs included"
   const std::string stream = std::string(1, '\x03') + one + "\xE0\x23\x03";
   TempFolder folder;
   const std::string contents = xyz_pcd_header(4, "binary_compressed") + compressed_body(stream, 48);
-  const PointCloud cloud = read_cloud(folder.write("r.pcd", contents));
+  const model::PointCloud cloud = io::read_cloud(folder.write("r.pcd", contents));
   REQUIRE(cloud.size() == 4);
-  for (const Point3f& p : cloud.points) CHECK(p == Point3f(1, 1, 1));
+  for (const model::Point3f& p : cloud.points) CHECK(p == model::Point3f(1, 1, 1));
 }
 
 TEST_CASE("PLY elements before the vertices are skipped, extra properties ignored") {
@@ -239,14 +240,14 @@ TEST_CASE("PLY elements before the vertices are skipped, extra properties ignore
   binary += bytes_of(-1.0) + bytes_of(-2.0f) + '\x00' + bytes_of(-3.0f) + bytes_of(1.0f);
   binary += "element faces follow here in some files";
   for (const std::string& contents : {ascii, binary}) {
-    CloudReadReport report;
-    const PointCloud cloud = read_cloud(folder.write("p.ply", contents), &report);
+    io::CloudReadReport report;
+    const model::PointCloud cloud = io::read_cloud(folder.write("p.ply", contents), &report);
     INFO(report.format);
     CHECK(report.ignored_fields == std::vector<std::string>{"red", "nx"});
     REQUIRE(cloud.size() == 2);
-    CHECK(cloud.points[0] == Point3f(1.5f, 2.5f, 3.5f));
-    CHECK(cloud.points[1] == Point3f(-1, -2, -3));
-    CHECK(cloud.origin == Point3f::Zero());
+    CHECK(cloud.points[0] == model::Point3f(1.5f, 2.5f, 3.5f));
+    CHECK(cloud.points[1] == model::Point3f(-1, -2, -3));
+    CHECK(cloud.origin == model::Point3f::Zero());
   }
 }
 
@@ -269,25 +270,25 @@ TEST_CASE("PCL's real test clouds load with their documented finite point counts
       {"milk_cartoon_all_small_clorox.pcd", 241407, "rgba"}};
   for (const RealCloud& real : clouds) {
     INFO(real.file);
-    CloudReadReport report;
-    const PointCloud cloud = read_cloud(folder + real.file, &report);
+    io::CloudReadReport report;
+    const model::PointCloud cloud = io::read_cloud(folder + real.file, &report);
     CHECK(report.format == "pcd binary_compressed");
     CHECK(report.points_in_file == 307200);
     CHECK(cloud.size() == real.finite_points);
     CHECK(report.dropped_non_finite == 307200 - real.finite_points);
     CHECK(report.ignored_fields == std::vector<std::string>{real.colour_field});
     // A Kinect sees from 0.4 m to a few metres along its optical z axis.
-    for (const Point3f& p : cloud.points) {
+    for (const model::Point3f& p : cloud.points) {
       if (!(p.z() > 0.0f && p.z() < 20.0f)) FAIL("implausible depth " << p.z());
     }
   }
   // office1's VIEWPOINT is "0 0 0 0 1 0 0": half a turn about x.
-  const PointCloud office = read_cloud(folder + "office1.pcd");
+  const model::PointCloud office = io::read_cloud(folder + "office1.pcd");
   CHECK(office.orientation.coeffs().isApprox(Eigen::Vector4f(1, 0, 0, 0)));
 
-  CloudReadReport report;
-  const PointCloud map =
-      read_cloud(folder + "subt_urban/urban_beta_both_floors_simplified.pcd", &report);
+  io::CloudReadReport report;
+  const model::PointCloud map =
+      io::read_cloud(folder + "subt_urban/urban_beta_both_floors_simplified.pcd", &report);
   CHECK(report.format == "pcd ascii");
   CHECK(map.size() == 47268);
   CHECK(report.dropped_non_finite == 0);
@@ -380,9 +381,9 @@ TEST_CASE("bad cloud files throw InputError naming file, place and field") {
     INFO(bad.name);
     const std::string path = folder.write(bad.file, bad.contents);
     try {
-      read_cloud(path);
+      io::read_cloud(path);
       FAIL("no InputError");
-    } catch (const InputError& e) {
+    } catch (const model::InputError& e) {
       const std::string message = e.what();
       INFO(message);
       CHECK(message.find(folder.path() + "/" + bad.where) == 0);
@@ -394,9 +395,9 @@ TEST_CASE("bad cloud files throw InputError naming file, place and field") {
 TEST_CASE("a missing cloud file is an InputError naming it") {
   TempFolder folder;
   try {
-    read_cloud(folder.path() + "/nowhere.pcd");
+    io::read_cloud(folder.path() + "/nowhere.pcd");
     FAIL("no InputError");
-  } catch (const InputError& e) {
+  } catch (const model::InputError& e) {
     CHECK(std::string(e.what()).find("nowhere.pcd: file: cannot be opened") != std::string::npos);
   }
 }

@@ -35,14 +35,15 @@ std::string read_text(const std::string& path) {
 
 TEST_CASE("a filtering-loads file round-trips and merges sensor by sensor", "[filtering_loads]") {
   const TempFolder folder;
-  FilteringLoads loads{"m",
-                       "P4",
-                       "office",
-                       20,
-                       {{"azure_kinect_dk", "nfov_unbinned_30", 3.94e-8, 260468, 0.0102, {}}},
-                       {}};
-  const std::string path = folder.write("loads.yaml", filtering_loads_to_yaml(loads, "a\nb"));
-  const FilteringLoads back = load_filtering_loads(path);
+  model::FilteringLoads loads{
+      "m",
+      "P4",
+      "office",
+      20,
+      {{"azure_kinect_dk", "nfov_unbinned_30", 3.94e-8, 260468, 0.0102, {}}},
+      {}};
+  const std::string path = folder.write("loads.yaml", io::filtering_loads_to_yaml(loads, "a\nb"));
+  const model::FilteringLoads back = io::load_filtering_loads(path);
   CHECK(back.machine == "m");
   CHECK(back.pipeline == "P4");
   CHECK(back.frames == 20);
@@ -50,9 +51,9 @@ TEST_CASE("a filtering-loads file round-trips and merges sensor by sensor", "[fi
   CHECK(back.sensors[0].seconds_per_point == Approx(3.94e-8).epsilon(1e-6));
   CHECK(back.sensors[0].points_per_frame == 260468);
 
-  const FilteringLoads newer{"m2", "P2", "corridor", 5, {{"velodyne_vlp16", "", 1e-7, 1, 1, {}}},
-                             {}};
-  const FilteringLoads merged = merge_filtering_loads(back, newer);
+  const model::FilteringLoads newer{
+      "m2", "P2", "corridor", 5, {{"velodyne_vlp16", "", 1e-7, 1, 1, {}}}, {}};
+  const model::FilteringLoads merged = io::merge_filtering_loads(back, newer);
   CHECK(merged.machine == "m2");
   REQUIRE(merged.sensors.size() == 2);
   CHECK(merged.find("azure_kinect_dk") != nullptr);
@@ -72,8 +73,8 @@ TEST_CASE("a catalog takes measured loads unless a candidate gives its own", "[f
   const std::size_t at = catalog.find(library) + library.size();
   catalog.replace(at, catalog.find('\n', at) - at, "\"" + source_path("sensors.yaml") + "\"");
   folder.write("loads.yaml", kLoads);
-  const Catalog loaded = load_catalog(folder.write("catalog.yaml", catalog));
-  for (const CandidateSensor& candidate : loaded.sensors) {
+  const model::Catalog loaded = io::load_catalog(folder.write("catalog.yaml", catalog));
+  for (const model::CandidateSensor& candidate : loaded.sensors) {
     if (candidate.sensor_id == "azure_kinect_dk")
       CHECK(candidate.filtering_seconds_per_point == 1.0e-8);
     if (candidate.sensor_id == "pmd_pico_flexx")
@@ -84,10 +85,10 @@ TEST_CASE("a catalog takes measured loads unless a candidate gives its own", "[f
   catalog.replace(catalog.find("filtering_loads: loads.yaml"), 27, "filtering_loads: missing.yaml");
   const std::string broken = folder.write("broken.yaml", catalog);
   try {
-    load_catalog(broken);
+    io::load_catalog(broken);
     FAIL("expected an error");
-  } catch (const InputError& error) {
-    const Diagnostic& first = error.diagnostics().front();
+  } catch (const model::InputError& error) {
+    const model::Diagnostic& first = error.diagnostics().front();
     CHECK(first.field == "filtering_loads");
     CHECK(first.where.line == line_of(catalog, "filtering_loads:"));
     CHECK(first.problem.find("missing.yaml") != std::string::npos);
@@ -120,7 +121,7 @@ TEST_CASE("filter --write-loads records every sensor of the rig; without --scene
                "--frames", "2", "--pipeline", "P3", "--write-loads", path, "--json"});
   REQUIRE(result.exit_code == 0);
   const nlohmann::json report = nlohmann::json::parse(result.out);
-  const FilteringLoads loads = load_filtering_loads(path);
+  const model::FilteringLoads loads = io::load_filtering_loads(path);
   CHECK(loads.pipeline == "P3");
   CHECK(loads.scene == "corridor");
   CHECK(loads.sensors.size() == 3);  // the Azure Kinect, the pico flexx (three mounts), the VLP-16

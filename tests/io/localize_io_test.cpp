@@ -18,7 +18,7 @@ template <typename Parse>
 std::string error_of(Parse parse) {
   try {
     parse();
-  } catch (const InputError& error) {
+  } catch (const model::InputError& error) {
     return error.diagnostics().front().message();
   }
   return "(no error)";
@@ -28,7 +28,7 @@ std::string error_of(Parse parse) {
 
 TEST_CASE("an RSSI log parses with its header in any order, comments and blank lines",
           "[localize]") {
-  const RssiLog log = parse_rssi_csv(
+  const localize::RssiLog log = io::parse_rssi_csv(
       "# robot "
       "1\nbssid,rssi,t,x,y,z\n\naa:01,-61,0.5,1,2,0.4\r\nbb:02,-70,0.6,1.1,2,0.4\naa:01,-62.5,0.7,"
       "1.2,2,0.4\n",
@@ -37,73 +37,74 @@ TEST_CASE("an RSSI log parses with its header in any order, comments and blank l
   REQUIRE(log.emitters == std::vector<std::string>{"aa:01", "bb:02"});
   CHECK(log.readings[2].emitter == 0);
   CHECK(log.readings[2].rssi_dbm == -62.5);
-  CHECK(log.readings[1].position == Vec3(1.1, 2, 0.4));
+  CHECK(log.readings[1].position == model::Vec3(1.1, 2, 0.4));
   CHECK(log.readings[0].t == 0.5);
   // The CSV writer's form reads back to the same values.
-  const RssiLog again = parse_rssi_csv(to_rssi_csv(log), "again.csv");
+  const localize::RssiLog again = io::parse_rssi_csv(io::to_rssi_csv(log), "again.csv");
   CHECK(again.readings[1].position == log.readings[1].position);
   CHECK(again.emitters == log.emitters);
 }
 
 TEST_CASE("bad RSSI logs name file, line, column and the column's header", "[localize]") {
-  CHECK(error_of([] { parse_rssi_csv("t,x,y,z,bssid\n0,0,0,0,a\n", "log.csv"); }) ==
+  CHECK(error_of([] { io::parse_rssi_csv("t,x,y,z,bssid\n0,0,0,0,a\n", "log.csv"); }) ==
         "log.csv:1:1: rssi: column is missing from the header (expected a header line naming the "
         "columns "
         "t,x,y,z,bssid,rssi)");
   // Column 5 is where the third field ("abc") starts on line 3.
   CHECK(error_of([] {
-          parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,a,-50\n1,0,abc,0,a,-50\n", "log.csv");
+          io::parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,a,-50\n1,0,abc,0,a,-50\n", "log.csv");
         }) == "log.csv:3:5: y: 'abc' is not a number (expected a number)");
-  CHECK(error_of([] { parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,a,3\n", "log.csv"); }) ==
+  CHECK(error_of([] { io::parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,a,3\n", "log.csv"); }) ==
         "log.csv:2:11: rssi: is 3 dBm, above 0 dBm (expected a received power in dBm, <= 0)");
   CHECK(error_of([] {
-          parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,a\n", "log.csv");
+          io::parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,a\n", "log.csv");
         }).find("log.csv:2:10: rssi: is missing") == 0);
   CHECK(error_of([] {
-          parse_rssi_csv("t,x,y,z,bssid,rssi\n", "log.csv");
+          io::parse_rssi_csv("t,x,y,z,bssid,rssi\n", "log.csv");
         }).find("log.csv:1:1: data: has a header but no readings") == 0);
-  CHECK(error_of([] { parse_rssi_csv("", "log.csv"); }).find("log.csv: data: is empty") == 0);
+  CHECK(error_of([] { io::parse_rssi_csv("", "log.csv"); }).find("log.csv: data: is empty") == 0);
   CHECK(error_of([] {
-          parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,nan,a,-50\n", "log.csv");
+          io::parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,nan,a,-50\n", "log.csv");
         }).find("log.csv:2:7: z: 'nan' is not finite") == 0);
   CHECK(error_of([] {
-          parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,,-50\n", "log.csv");
+          io::parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,,-50\n", "log.csv");
         }).find("log.csv:2:9: bssid: is empty") == 0);
 }
 
 TEST_CASE("CO2 logs: the CSV form and the untimed SubT form", "[localize]") {
-  const Co2Log timed =
-      parse_co2_log("t,x,y,z,co2_ppm\n0,1,2,0.3,450\n1,1.5,2,0.3,460\n", "co2.csv");
+  const localize::Co2Log timed =
+      io::parse_co2_log("t,x,y,z,co2_ppm\n0,1,2,0.3,450\n1,1.5,2,0.3,460\n", "co2.csv");
   REQUIRE(timed.readings.size() == 2);
   CHECK(timed.timed);
   CHECK(timed.readings[1].ppm == 460);
-  const Co2Log untimed = parse_co2_log("52.70 0.82 499.0\n  52.39\t0.27 498\n", "trace.txt");
+  const localize::Co2Log untimed =
+      io::parse_co2_log("52.70 0.82 499.0\n  52.39\t0.27 498\n", "trace.txt");
   REQUIRE(untimed.readings.size() == 2);
   CHECK_FALSE(untimed.timed);
-  CHECK(untimed.readings[1].position == Vec3(52.39, 0.27, 0.0));
+  CHECK(untimed.readings[1].position == model::Vec3(52.39, 0.27, 0.0));
   CHECK(untimed.readings[1].t == 1.0);  // the reading's index
-  CHECK(error_of([] { parse_co2_log("1 2 3\n1 2 x\n", "trace.txt"); }) ==
+  CHECK(error_of([] { io::parse_co2_log("1 2 3\n1 2 x\n", "trace.txt"); }) ==
         "trace.txt:2:5: co2_ppm: 'x' is not a number (expected a number)");
   CHECK(error_of([] {
-          parse_co2_log("1 2 3\n1 2\n", "trace.txt");
+          io::parse_co2_log("1 2 3\n1 2\n", "trace.txt");
         }).find("trace.txt:2:4: co2_ppm: has 2 fields") == 0);
   CHECK(error_of([] {
-          parse_co2_log("t,x,y,z,co2_ppm\n0,0,0,0,-1\n", "co2.csv");
+          io::parse_co2_log("t,x,y,z,co2_ppm\n0,0,0,0,-1\n", "co2.csv");
         }).find("co2.csv:2:9: co2_ppm: is negative") == 0);
   CHECK(error_of([] {
-          parse_co2_log("t,x,y,co2_ppm\n0,0,0,1\n", "co2.csv");
+          io::parse_co2_log("t,x,y,co2_ppm\n0,0,0,1\n", "co2.csv");
         }).find("co2.csv:1:1: z: column is missing") == 0);
 }
 
 TEST_CASE("a log's kind is told by its first line; ground truth files parse", "[localize]") {
-  CHECK(log_kind_of("t,x,y,z,bssid,rssi\n", "a") == LogKind::rssi);
-  CHECK(log_kind_of("# c\nt,x,y,z,co2_ppm\n", "a") == LogKind::co2);
-  CHECK(log_kind_of("1 2 400\n", "a") == LogKind::co2);
+  CHECK(io::log_kind_of("t,x,y,z,bssid,rssi\n", "a") == io::LogKind::rssi);
+  CHECK(io::log_kind_of("# c\nt,x,y,z,co2_ppm\n", "a") == io::LogKind::co2);
+  CHECK(io::log_kind_of("1 2 400\n", "a") == io::LogKind::co2);
   CHECK(error_of([] {
-          log_kind_of("t,x,y,z,temperature\n", "a.csv");
+          io::log_kind_of("t,x,y,z,temperature\n", "a.csv");
         }).find("a.csv:1:1: header:") == 0);
-  const auto truth = parse_emitter_truth("bssid,x,y,z\naa:01,1,2,3\n", "truth.csv");
+  const auto truth = io::parse_emitter_truth("bssid,x,y,z\naa:01,1,2,3\n", "truth.csv");
   REQUIRE(truth.size() == 1);
-  CHECK(truth[0].position == Vec3(1, 2, 3));
-  CHECK(parse_emitter_truth(to_emitter_truth_csv(truth), "again.csv")[0].bssid == "aa:01");
+  CHECK(truth[0].position == model::Vec3(1, 2, 3));
+  CHECK(io::parse_emitter_truth(io::to_emitter_truth_csv(truth), "again.csv")[0].bssid == "aa:01");
 }

@@ -16,11 +16,11 @@ using namespace rigdesign::test;
 
 namespace {
 
-const Vec3& corner(const TriangleMesh& mesh, int index) {
+const model::Vec3& corner(const model::TriangleMesh& mesh, int index) {
   return mesh.vertices.at(static_cast<std::size_t>(index));
 }
 
-double total_area(const TriangleMesh& mesh) {
+double total_area(const model::TriangleMesh& mesh) {
   double area = 0;
   for (const auto& t : mesh.triangles) {
     area += 0.5 * (corner(mesh, t[1]) - corner(mesh, t[0]))
@@ -31,7 +31,7 @@ double total_area(const TriangleMesh& mesh) {
 }
 
 // Divergence theorem: positive when every face winds counter-clockwise seen from outside.
-double signed_volume(const TriangleMesh& mesh) {
+double signed_volume(const model::TriangleMesh& mesh) {
   double six_volume = 0;
   for (const auto& t : mesh.triangles) {
     six_volume += corner(mesh, t[0]).dot(corner(mesh, t[1]).cross(corner(mesh, t[2])));
@@ -46,7 +46,7 @@ const char* kCubeVertices[8] = {"0 0 0", "1 0 0", "1 1 0", "0 1 0",
 const int kCubeQuads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
                               {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}};
 
-void check_unit_cube(const TriangleMesh& mesh) {
+void check_unit_cube(const model::TriangleMesh& mesh) {
   CHECK(mesh.vertices.size() == 8);
   CHECK(mesh.triangles.size() == 12);
   CHECK(total_area(mesh) == Approx(6.0));
@@ -64,7 +64,7 @@ std::string bytes_of(T value) {
 std::string error_of(const std::function<void()>& load) {
   try {
     load();
-  } catch (const InputError& error) {
+  } catch (const model::InputError& error) {
     UNSCOPED_INFO(error.what());  // shown when a check on it fails
     return error.what();
   }
@@ -74,7 +74,7 @@ std::string error_of(const std::function<void()>& load) {
 std::string load_error(const TempFolder& folder, const std::string& name,
                        const std::string& contents) {
   const std::string path = folder.write(name, contents);
-  return error_of([&] { load_mesh(path); });
+  return error_of([&] { io::load_mesh(path); });
 }
 
 std::string cube_ply_ascii_header() {
@@ -149,16 +149,16 @@ std::string cube_off() {
 TEST_CASE("a unit cube reads as 12 triangles of area 6 from every format", "[mesh_scene]") {
   TempFolder folder;
   SECTION("PLY ascii with extra properties and elements") {
-    check_unit_cube(load_mesh(folder.write("cube.ply", cube_ply_ascii())));
+    check_unit_cube(io::load_mesh(folder.write("cube.ply", cube_ply_ascii())));
   }
   SECTION("PLY binary little endian, doubles, an element before the vertices") {
-    check_unit_cube(load_mesh(folder.write("cube.PLY", cube_ply_binary())));
+    check_unit_cube(io::load_mesh(folder.write("cube.PLY", cube_ply_binary())));
   }
   SECTION("OBJ with i, i/j, i/j/k and i//k corners") {
-    check_unit_cube(load_mesh(folder.write("cube.obj", cube_obj())));
+    check_unit_cube(io::load_mesh(folder.write("cube.obj", cube_obj())));
   }
   SECTION("OFF with comments and counts on their own line") {
-    check_unit_cube(load_mesh(folder.write("cube.off", cube_off())));
+    check_unit_cube(io::load_mesh(folder.write("cube.off", cube_off())));
   }
   SECTION("OFF with the counts on the keyword's line and triangles") {
     std::string text = "OFF 8 12 0\n";
@@ -168,14 +168,14 @@ TEST_CASE("a unit cube reads as 12 triangles of area 6 from every format", "[mes
               std::to_string(q[2]) + "\n3 " + std::to_string(q[0]) + " " + std::to_string(q[2]) +
               " " + std::to_string(q[3]) + " 255 0 0\n";  // a face colour after the indices
     }
-    check_unit_cube(load_mesh(folder.write("cube.off", text)));
+    check_unit_cube(io::load_mesh(folder.write("cube.off", text)));
   }
 }
 
 TEST_CASE("polygons are split into a fan around their first corner", "[mesh_scene]") {
   TempFolder folder;
   // A convex pentagon's corners in order; the fan is (0,1,2), (0,2,3), (0,3,4).
-  const TriangleMesh pentagon = load_mesh(
+  const model::TriangleMesh pentagon = io::load_mesh(
       folder.write("pentagon.obj", "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nf 1 2 3 4 5\n"));
   REQUIRE(pentagon.triangles.size() == 3);
   CHECK(pentagon.triangles[0] == std::array<int, 3>{0, 1, 2});
@@ -193,7 +193,7 @@ TEST_CASE("negative OBJ indices count back from the latest vertex", "[mesh_scene
     for (int index : quad) text += "v " + std::string(kCubeVertices[index]) + "\n";
     text += "f -4 -3 -2/1 -1//1\n";
   }
-  const TriangleMesh mesh = load_mesh(folder.write("cube.obj", text));
+  const model::TriangleMesh mesh = io::load_mesh(folder.write("cube.obj", text));
   CHECK(mesh.vertices.size() == 24);
   CHECK(mesh.triangles.size() == 12);
   CHECK(total_area(mesh) == Approx(6.0));
@@ -290,7 +290,7 @@ TEST_CASE("bad mesh files name the file, line, column and field", "[mesh_scene]"
           0);
   }
   SECTION("a missing file") {
-    const std::string message = error_of([&] { load_mesh(dir + "absent.obj"); });
+    const std::string message = error_of([&] { io::load_mesh(dir + "absent.obj"); });
     CHECK(message.find(dir + "absent.obj: file: cannot be opened") == 0);
   }
 }

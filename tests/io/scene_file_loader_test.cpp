@@ -21,24 +21,24 @@ const std::string kCubeObj =
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
     "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 1 5 8 4\nf 2 3 7 6\n";
 
-double total_area(const TriangleMesh& mesh) {
+double total_area(const model::TriangleMesh& mesh) {
   double area = 0;
   for (const auto& t : mesh.triangles) {
-    const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
-    const Vec3& b = mesh.vertices[static_cast<std::size_t>(t[1])];
-    const Vec3& c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    const model::Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
+    const model::Vec3& b = mesh.vertices[static_cast<std::size_t>(t[1])];
+    const model::Vec3& c = mesh.vertices[static_cast<std::size_t>(t[2])];
     area += 0.5 * (b - a).cross(c - a).norm();
   }
   return area;
 }
 
 // Heading [deg] of a pose's x axis about +z.
-double yaw_deg(const Pose3& T) {
-  const Vec3 x_axis = T.linear().col(0);
+double yaw_deg(const model::Pose3& T) {
+  const model::Vec3 x_axis = T.linear().col(0);
   return std::atan2(x_axis.y(), x_axis.x()) * 180.0 / std::numbers::pi;
 }
 
-void check_position(const Pose3& T, double x, double y, double z) {
+void check_position(const model::Pose3& T, double x, double y, double z) {
   CHECK(T.translation().x() == Approx(x).margin(1e-12));
   CHECK(T.translation().y() == Approx(y).margin(1e-12));
   CHECK(T.translation().z() == Approx(z).margin(1e-12));
@@ -47,7 +47,7 @@ void check_position(const Pose3& T, double x, double y, double z) {
 std::string error_of(const std::function<void()>& load) {
   try {
     load();
-  } catch (const InputError& error) {
+  } catch (const model::InputError& error) {
     UNSCOPED_INFO(error.what());  // shown when a check on it fails
     return error.what();
   }
@@ -72,14 +72,14 @@ static:
   - {name: big, mesh: cube.obj, pose: {xyz: [1, 2, 0], rpy_deg: [0, 0, 90]}, scale: 2}
   - {name: plain, mesh: cube.obj}
 )");
-  const Scene scene = load_scene_file(path);
+  const model::Scene scene = io::load_scene_file(path);
   CHECK(scene.name == "placed");
   REQUIRE(scene.objects.size() == 2);
   CHECK(scene.moving.empty());
   // (1, 0, 0) scaled to (2, 0, 0), turned 90 deg left to (0, 2, 0), moved by (1, 2, 0).
-  const TriangleMesh& big = scene.objects[0].mesh;
+  const model::TriangleMesh& big = scene.objects[0].mesh;
   CHECK(scene.objects[0].name == "big");
-  CHECK((big.vertices[1] - Vec3(1, 4, 0)).norm() < 1e-12);
+  CHECK((big.vertices[1] - model::Vec3(1, 4, 0)).norm() < 1e-12);
   CHECK(total_area(big) == Approx(24.0));  // 6 faces of 2 x 2 m
   CHECK(total_area(scene.objects[1].mesh) == Approx(6.0));
   check_position(scene.T_world_robot, 1, 2, 0);
@@ -98,15 +98,15 @@ TEST_CASE("waypoints are interpolated linearly, yaw along the shorter arc", "[me
   SECTION("clamped") {
     std::string text = motion;
     text.replace(text.find("LOOP"), 4, "false");
-    const Scene scene = load_scene_file(scene_with_moving(folder, text));
+    const model::Scene scene = io::load_scene_file(scene_with_moving(folder, text));
     REQUIRE(scene.moving.size() == 1);
-    const MovingObject& box = scene.moving[0];
+    const model::MovingObject& box = scene.moving[0];
     // The mesh is lifted by its pose in the object frame: vertex (0, 0, 0) at z = 0.5.
-    CHECK((box.mesh.vertices[0] - Vec3(0, 0, 0.5)).norm() < 1e-12);
+    CHECK((box.mesh.vertices[0] - model::Vec3(0, 0, 0.5)).norm() < 1e-12);
     // Midway: half of (2, 4, 0); yaw 170 -> -170 is 20 deg through 180, so 180 midway.
-    const Pose3 middle = box.T_world_object(5.0);
+    const model::Pose3 middle = box.T_world_object(5.0);
     check_position(middle, 1, 2, 0);
-    CHECK((middle.linear() * Vec3::UnitX() - Vec3(-1, 0, 0)).norm() < 1e-12);
+    CHECK((middle.linear() * model::Vec3::UnitX() - model::Vec3(-1, 0, 0)).norm() < 1e-12);
     // A quarter of the way: 170 + 5 = 175 deg.
     CHECK(yaw_deg(box.T_world_object(2.5)) == Approx(175));
     check_position(box.T_world_object(2.5), 0.5, 1, 0);
@@ -120,7 +120,7 @@ TEST_CASE("waypoints are interpolated linearly, yaw along the shorter arc", "[me
   SECTION("looped with period t_last - t_first = 10 s") {
     std::string text = motion;
     text.replace(text.find("LOOP"), 4, "true");
-    const Scene scene = load_scene_file(scene_with_moving(folder, text));
+    const model::Scene scene = io::load_scene_file(scene_with_moving(folder, text));
     REQUIRE(scene.moving.size() == 1);
     check_position(scene.moving[0].T_world_object(12.5), 0.5, 1, 0);
     check_position(scene.moving[0].T_world_object(-2.5), 1.5, 3, 0);  // as t = 7.5
@@ -129,7 +129,7 @@ TEST_CASE("waypoints are interpolated linearly, yaw along the shorter arc", "[me
 
 TEST_CASE("a single waypoint holds its pose at every time", "[mesh_scene]") {
   TempFolder folder;
-  const Scene scene = load_scene_file(scene_with_moving(
+  const model::Scene scene = io::load_scene_file(scene_with_moving(
       folder, "    trajectory: {waypoints: [{t: 3, xyz: [1, 1, 0], yaw_deg: -45}]}\n"));
   REQUIRE(scene.moving.size() == 1);
   for (double t : {-10.0, 3.0, 100.0}) {
@@ -145,7 +145,7 @@ TEST_CASE("an ellipse walk is at the top of the ellipse a quarter period in", "[
   SECTION("facing the way it walks") {
     std::string facing = text;
     facing.replace(facing.find("FACE"), 4, "true");
-    const Scene scene = load_scene_file(scene_with_moving(folder, facing));
+    const model::Scene scene = io::load_scene_file(scene_with_moving(folder, facing));
     REQUIRE(scene.moving.size() == 1);
     const auto& T = scene.moving[0].T_world_object;
     // t = 0: at (1 + 2, -1), walking counter-clockwise, so along +y.
@@ -153,14 +153,14 @@ TEST_CASE("an ellipse walk is at the top of the ellipse a quarter period in", "[
     CHECK(yaw_deg(T(0)) == Approx(90));
     // t = period / 4 = 12 s: angle 90 deg, at (1, -1 + 1), walking along -x.
     check_position(T(12), 1, 0, 0);
-    CHECK((T(12).linear() * Vec3::UnitX() - Vec3(-1, 0, 0)).norm() < 1e-12);
+    CHECK((T(12).linear() * model::Vec3::UnitX() - model::Vec3(-1, 0, 0)).norm() < 1e-12);
     // One lap later, the same place.
     CHECK((T(60).translation() - T(12).translation()).norm() < 1e-12);
   }
   SECTION("keeping its heading") {
     std::string fixed = text;
     fixed.replace(fixed.find("FACE"), 4, "false");
-    const Scene scene = load_scene_file(scene_with_moving(folder, fixed));
+    const model::Scene scene = io::load_scene_file(scene_with_moving(folder, fixed));
     REQUIRE(scene.moving.size() == 1);
     check_position(scene.moving[0].T_world_object(12), 1, 0, 0);
     CHECK(scene.moving[0].T_world_object(12).linear().isIdentity(1e-12));
@@ -168,7 +168,7 @@ TEST_CASE("an ellipse walk is at the top of the ellipse a quarter period in", "[
 }
 
 TEST_CASE("the bundled lab scene loads with its room, table and two walkers", "[mesh_scene]") {
-  const Scene scene = load_scene_file(source_path("rigs/scenes/lab/lab.yaml"));
+  const model::Scene scene = io::load_scene_file(source_path("rigs/scenes/lab/lab.yaml"));
   CHECK(scene.name == "lab");
   REQUIRE(scene.objects.size() == 2);
   REQUIRE(scene.moving.size() == 2);
@@ -178,8 +178,8 @@ TEST_CASE("the bundled lab scene loads with its room, table and two walkers", "[
   CHECK(total_area(scene.objects[0].mesh) == Approx(6 * 4 + 20 * 2.5));
   // Every part of the scene stays inside the room at any time of the loops.
   for (double t = 0; t < 30; t += 0.5) {
-    Vec2 farthest = Vec2::Zero();
-    for (const Vec3& v : scene.at(t).vertices) {
+    model::Vec2 farthest = model::Vec2::Zero();
+    for (const model::Vec3& v : scene.at(t).vertices) {
       farthest = farthest.cwiseMax(v.head<2>().cwiseAbs());
     }
     INFO("t = " << t);
@@ -192,7 +192,7 @@ TEST_CASE("bad scene files name the file, line, column and field", "[mesh_scene]
   TempFolder folder;
   const std::string yaml = folder.path() + "/scene.yaml";
   const auto error_with = [&](const std::string& moving) {
-    return error_of([&] { load_scene_file(scene_with_moving(folder, moving)); });
+    return error_of([&] { io::load_scene_file(scene_with_moving(folder, moving)); });
   };
   SECTION("waypoint times not increasing") {
     const std::string message = error_with(R"(    trajectory:
@@ -220,7 +220,7 @@ TEST_CASE("bad scene files name the file, line, column and field", "[mesh_scene]
   SECTION("a mesh file that does not exist") {
     const std::string path =
         folder.write("scene.yaml", "name: t\nstatic:\n  - name: room\n    mesh: rooms/room.obj\n");
-    const std::string message = error_of([&] { load_scene_file(path); });
+    const std::string message = error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(yaml + ":4:11: static[0].mesh: file '") == 0);
     CHECK(message.find("does not exist") != std::string::npos);
   }
@@ -228,14 +228,14 @@ TEST_CASE("bad scene files name the file, line, column and field", "[mesh_scene]
     folder.write("room.stl", "solid\n");
     const std::string path =
         folder.write("scene.yaml", "name: t\nstatic:\n  - {name: room, mesh: room.stl}\n");
-    const std::string message = error_of([&] { load_scene_file(path); });
+    const std::string message = error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(yaml + ":3:24: static[0].mesh: 'room.stl' is not a mesh file") == 0);
   }
   SECTION("a problem inside the mesh names the mesh file's line") {
     folder.write("room.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
     const std::string path =
         folder.write("scene.yaml", "name: t\nstatic:\n  - {name: room, mesh: room.obj}\n");
-    const std::string message = error_of([&] { load_scene_file(path); });
+    const std::string message = error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(folder.path() + "/room.obj:4:7: f: refers to vertex 4") == 0);
   }
   SECTION("duplicate names and unknown fields are all reported") {
@@ -245,14 +245,14 @@ static:
   - {name: a, mesh: cube.obj}
   - {name: a, mesh: cube.obj, colour: red}
 )");
-    const std::string message = error_of([&] { load_scene_file(path); });
+    const std::string message = error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(yaml + ":4:12: static[1].name: duplicate object name 'a'") !=
           std::string::npos);
     CHECK(message.find(yaml + ":4:31: static[1].colour: unknown field") != std::string::npos);
   }
   SECTION("a scene without objects") {
     const std::string path = folder.write("scene.yaml", "name: t\nstatic: []\n");
-    const std::string message = error_of([&] { load_scene_file(path); });
+    const std::string message = error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(yaml + ":2:9: static: the scene has no objects") == 0);
   }
 }

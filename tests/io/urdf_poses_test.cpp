@@ -10,8 +10,8 @@ using namespace rigdesign::test;
 TEST_CASE("a URDF-posed mount equals the same pose written in the rig file") {
   // rigs/urdf/ur_cleaner.urdf builds each pose as a chain (base_link 5 cm up, brackets that
   // yaw, sensor links that pitch); ur_cleaner.yaml writes the composed xyz and rpy directly.
-  const Rig by_hand = load_rig(source_path("rigs/ur_cleaner.yaml"));
-  const Rig from_urdf = load_rig(source_path("rigs/ur_cleaner_from_urdf.yaml"));
+  const model::Rig by_hand = io::load_rig(source_path("rigs/ur_cleaner.yaml"));
+  const model::Rig from_urdf = io::load_rig(source_path("rigs/ur_cleaner_from_urdf.yaml"));
   REQUIRE(by_hand.mounts.size() == from_urdf.mounts.size());
   for (std::size_t i = 0; i < by_hand.mounts.size(); ++i) {
     INFO(by_hand.mounts[i].id);

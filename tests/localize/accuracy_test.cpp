@@ -10,17 +10,18 @@ using namespace rigdesign;
 // `rigdesign localize --scenario all --seeds 20 --table`, docs/localize.md).
 namespace {
 
-double mean_error(const std::string& scenario, LocalizeMethod method, int seeds,
+double mean_error(const std::string& scenario, localize::LocalizeMethod method, int seeds,
                   double tx_offset = 0.0) {
   double sum = 0.0;
   for (int seed = 1; seed <= seeds; ++seed) {
-    ScenarioParams params;
+    localize::ScenarioParams params;
     params.seed = static_cast<std::uint64_t>(seed);
     params.tx_offset_db = tx_offset;
-    const Scenario s = make_scenario(scenario, params);
-    const EmitterEstimate estimate = localize_emitter(s.log, 0, method);
+    const localize::Scenario s = localize::make_scenario(scenario, params);
+    const localize::EmitterEstimate estimate = localize::localize_emitter(s.log, 0, method);
     REQUIRE_FALSE(estimate.hypotheses.empty());
-    sum += position_error(estimate.hypotheses.front().position, s.truth.front().position, 2);
+    sum +=
+        localize::position_error(estimate.hypotheses.front().position, s.truth.front().position, 2);
   }
   return sum / seeds;
 }
@@ -31,8 +32,8 @@ TEST_CASE("range fit: at most 0.6x paper 4's mean error on the corner and loop s
           "[localize]") {
   for (const char* scenario : {"corner", "loop"}) {
     INFO(scenario);
-    CHECK(mean_error(scenario, LocalizeMethod::nls, 5) <=
-          0.6 * mean_error(scenario, LocalizeMethod::wls, 5));
+    CHECK(mean_error(scenario, localize::LocalizeMethod::nls, 5) <=
+          0.6 * mean_error(scenario, localize::LocalizeMethod::wls, 5));
   }
 }
 
@@ -41,15 +42,17 @@ TEST_CASE(
     "[localize]") {
   double sum = 0.0;
   for (int seed = 1; seed <= 5; ++seed) {
-    ScenarioParams params;
+    localize::ScenarioParams params;
     params.seed = static_cast<std::uint64_t>(seed);
-    const Scenario s = make_scenario("hallway", params);
-    const EmitterEstimate estimate = localize_emitter(s.log, 0, LocalizeMethod::nls);
+    const localize::Scenario s = localize::make_scenario("hallway", params);
+    const localize::EmitterEstimate estimate =
+        localize::localize_emitter(s.log, 0, localize::LocalizeMethod::nls);
     INFO("seed " << seed);
     REQUIRE(estimate.hypotheses.size() == 2);
     double nearest = 1e9;
-    for (const Hypothesis& h : estimate.hypotheses)
-      nearest = std::min(nearest, position_error(h.position, s.truth.front().position, 2));
+    for (const localize::Hypothesis& h : estimate.hypotheses)
+      nearest =
+          std::min(nearest, localize::position_error(h.position, s.truth.front().position, 2));
     sum += nearest;
   }
   CHECK(sum / 5 <= 2.5);
@@ -59,6 +62,6 @@ TEST_CASE("range fit: a phone 5 dB weaker than assumed is still found (corner, l
           "[localize]") {
   for (const char* scenario : {"corner", "loop"}) {
     INFO(scenario);
-    CHECK(mean_error(scenario, LocalizeMethod::nls, 5, -5.0) < 2.5);
+    CHECK(mean_error(scenario, localize::LocalizeMethod::nls, 5, -5.0) < 2.5);
   }
 }

@@ -12,17 +12,17 @@ namespace {
 
 // One reading per second and per metre along x; `ppm(i)` gives reading i's concentration.
 template <typename Ppm>
-Co2Log straight_log(int readings, Ppm ppm) {
-  Co2Log log;
+localize::Co2Log straight_log(int readings, Ppm ppm) {
+  localize::Co2Log log;
   log.source = "test";
   for (int i = 0; i < readings; ++i)
     log.readings.push_back({static_cast<double>(i), {static_cast<double>(i), 0, 0}, ppm(i)});
   return log;
 }
 
-std::vector<double> xs(const std::vector<GasDetection>& detections) {
+std::vector<double> xs(const std::vector<localize::GasDetection>& detections) {
   std::vector<double> x;
-  for (const GasDetection& d : detections) x.push_back(d.position.x());
+  for (const localize::GasDetection& d : detections) x.push_back(d.position.x());
   return x;
 }
 
@@ -36,24 +36,26 @@ TEST_CASE("CO2: moving average of 5 against 1800 ppm, refined to the strongest r
           "[localize]") {
   // Plumes of 3000 ppm at x = 10..16 and 30..36 over 400 ppm. The average of 5 first reaches
   // 1800 at x = 12 ((2 x 400 + 3 x 3000) / 5 = 1960) and 3000 at x = 14.
-  const Co2Log log = straight_log(
+  const localize::Co2Log log = straight_log(
       50, [](int i) { return (i >= 10 && i <= 16) || (i >= 30 && i <= 36) ? 3000.0 : 400.0; });
-  GasDetectionParams params;
-  const auto refined = detect_gas(log, GasThreshold::fixed, params);
+  localize::GasDetectionParams params;
+  const auto refined = localize::detect_gas(log, localize::GasThreshold::fixed, params);
   CHECK(xs(refined) == std::vector<double>{14, 34});
   CHECK(refined[0].trigger_index == 12);
   CHECK(refined[0].ppm == Approx(3000));
   // Unrefined, the trailing average's tail (x = 18: (3 x 3000 + 2 x 400) / 5 = 1960) lies 6 m
   // from the trigger at x = 12 and counts again: the lag the refinement hides.
   params.refine_strongest = false;
-  CHECK(xs(detect_gas(log, GasThreshold::fixed, params)) == std::vector<double>{12, 18, 32, 38});
+  CHECK(xs(localize::detect_gas(log, localize::GasThreshold::fixed, params)) ==
+        std::vector<double>{12, 18, 32, 38});
 }
 
 TEST_CASE("CO2: one detection per 5 m along a long plume", "[localize]") {
   // 3000 ppm from x = 10 to 30: the first detection is refined to x = 14 (average 3000); the
   // next may not lie within 5 m of it (x = 19), then each leaves the 5 m area of its trigger.
-  const Co2Log log = straight_log(45, [](int i) { return i >= 10 && i <= 30 ? 3000.0 : 400.0; });
-  const auto detections = detect_gas(log, GasThreshold::fixed);
+  const localize::Co2Log log =
+      straight_log(45, [](int i) { return i >= 10 && i <= 30 ? 3000.0 : 400.0; });
+  const auto detections = localize::detect_gas(log, localize::GasThreshold::fixed);
   CHECK(xs(detections) == std::vector<double>{14, 19, 25, 31});
   for (std::size_t i = 1; i < detections.size(); ++i) {
     CHECK(detections[i].position.x() - detections[i - 1].position.x() >= 5.0);
@@ -64,11 +66,11 @@ TEST_CASE(
     "CO2: a threshold relative to the running baseline finds a weak plume; the lag moves it back",
     "[localize]") {
   // Ambient 489-491 ppm, a plume of 700 ppm at x = 40..45: far below 1800 ppm.
-  const Co2Log log =
+  const localize::Co2Log log =
       straight_log(80, [](int i) { return i >= 40 && i <= 45 ? 700.0 : 489.0 + i % 3; });
-  CHECK(detect_gas(log, GasThreshold::fixed).empty());
-  GasDetectionParams params;
-  const auto detections = detect_gas(log, GasThreshold::relative, params);
+  CHECK(localize::detect_gas(log, localize::GasThreshold::fixed).empty());
+  localize::GasDetectionParams params;
+  const auto detections = localize::detect_gas(log, localize::GasThreshold::relative, params);
   REQUIRE(detections.size() == 1);
   // Median 490, MAD 1 ppm: threshold 490 + max(6 x 1.4826, 50) = 540. The average passes it
   // with two plume readings in (x = 41: (3 x ~490 + 2 x 700) / 5 = 574; one gives 532) and
@@ -77,7 +79,7 @@ TEST_CASE(
   CHECK(detections[0].position.x() == 44);
   CHECK(detections[0].threshold_ppm == Approx(540));
   // Lag: 5 s time constant + 2 readings of the trailing average at 1 s each = 7 s = 7 m back.
-  CHECK(detection_lag(log, params) == Approx(7.0));
+  CHECK(localize::detection_lag(log, params) == Approx(7.0));
   CHECK(detections[0].lag_corrected.x() == Approx(37.0));
 }
 
@@ -88,16 +90,16 @@ TEST_CASE(
     WARN("shared/data/real/subt_urban is absent: skipped");
     return;
   }
-  const Co2Log log = read_co2_log(subt("gas_data_spot2_urban_beta2.txt"));
+  const localize::Co2Log log = io::read_co2_log(subt("gas_data_spot2_urban_beta2.txt"));
   REQUIRE(log.readings.size() == 1030);  // SOURCES.md
-  const std::vector<Artifact> artifacts = read_artifacts(subt("gt_beta2.json"));
+  const std::vector<localize::Artifact> artifacts = io::read_artifacts(subt("gt_beta2.json"));
   // SOURCES.md: the trace peaks near 720 ppm, far below 1800.
-  CHECK(detect_gas(log, GasThreshold::fixed).empty());
-  const auto detections = detect_gas(log, GasThreshold::relative);
+  CHECK(localize::detect_gas(log, localize::GasThreshold::fixed).empty());
+  const auto detections = localize::detect_gas(log, localize::GasThreshold::relative);
   for (const bool lagged : {false, true}) {
-    const GasScore score = score_gas(log, detections, artifacts, lagged);
+    const localize::GasScore score = localize::score_gas(log, detections, artifacts, lagged);
     REQUIRE(score.artifacts.size() == 3);  // gas 57, 67, 74
-    for (const GasArtifactResult& a : score.artifacts) {
+    for (const localize::GasArtifactResult& a : score.artifacts) {
       if (a.artifact.id == 67) CHECK(a.found);
     }
   }

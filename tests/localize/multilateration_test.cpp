@@ -12,19 +12,19 @@ using namespace rigdesign;
 namespace {
 
 // Noise-free log: RSSI from the path-loss model at the exact distance to `emitter`.
-RssiLog exact_log(const std::vector<Vec3>& positions, const Vec3& emitter,
-                  const PathLossParams& model) {
-  RssiLog log;
+localize::RssiLog exact_log(const std::vector<model::Vec3>& positions, const model::Vec3& emitter,
+                            const localize::PathLossParams& model) {
+  localize::RssiLog log;
   log.emitters = {"e"};
   double t = 0;
-  for (const Vec3& p : positions)
-    log.readings.push_back({t++, p, 0, rssi_at_range((emitter - p).norm(), model)});
+  for (const model::Vec3& p : positions)
+    log.readings.push_back({t++, p, 0, localize::rssi_at_range((emitter - p).norm(), model)});
   return log;
 }
 
 // An L-shaped ground path (z = 0.4 m) with readings every 0.25 m.
-std::vector<Vec3> l_path() {
-  std::vector<Vec3> positions;
+std::vector<model::Vec3> l_path() {
+  std::vector<model::Vec3> positions;
   for (double x = -10; x <= 0; x += 0.25) positions.emplace_back(x, 0.0, 0.4);
   for (double y = 0.25; y <= 10; y += 0.25) positions.emplace_back(0.0, y, 0.4);
   return positions;
@@ -34,21 +34,22 @@ std::vector<Vec3> l_path() {
 
 TEST_CASE("path loss: range and RSSI are inverse; the paper's model at hand-computed points",
           "[localize]") {
-  PathLossParams model;  // a = -45 dBm, n = 2.5
-  CHECK(rssi_at_range(1.0, model) == Approx(-45.0));
-  CHECK(rssi_at_range(10.0, model) == Approx(-70.0));  // -45 - 25 log10(10)
-  CHECK(range_from_rssi(-70.0, model) == Approx(10.0));
-  CHECK(range_from_rssi(-57.5, model) == Approx(std::sqrt(10.0)));  // 10^(12.5 / 25)
+  localize::PathLossParams model;  // a = -45 dBm, n = 2.5
+  CHECK(localize::rssi_at_range(1.0, model) == Approx(-45.0));
+  CHECK(localize::rssi_at_range(10.0, model) == Approx(-70.0));  // -45 - 25 log10(10)
+  CHECK(localize::range_from_rssi(-70.0, model) == Approx(10.0));
+  CHECK(localize::range_from_rssi(-57.5, model) == Approx(std::sqrt(10.0)));  // 10^(12.5 / 25)
 }
 
 TEST_CASE("chunks average the readings' distances; weights are sqrt(c) / r", "[localize]") {
-  PathLossParams model;  // -45 dBm -> 1 m, -70 dBm -> 10 m, -95 dBm -> 100 m (below the cut-off)
-  RssiLog log;
+  localize::PathLossParams
+      model;  // -45 dBm -> 1 m, -70 dBm -> 10 m, -95 dBm -> 100 m (below the cut-off)
+  localize::RssiLog log;
   log.emitters = {"a", "b"};
   log.readings = {{0, {0.01, 0.02, 0.4}, 0, -45.0},  {1, {0.05, 0.06, 0.4}, 0, -70.0},
                   {2, {0.15, 0.02, 0.4}, 0, -70.0},  {3, {0.16, 0.03, 0.4}, 0, -95.0},
                   {4, {-0.05, 0.02, 0.4}, 0, -70.0}, {5, {0.02, 0.02, 0.4}, 1, -40.0}};
-  const std::vector<Chunk> chunks = chunk_readings(log, 0, model);
+  const std::vector<localize::Chunk> chunks = localize::chunk_readings(log, 0, model);
   REQUIRE(chunks.size() == 3);  // cells [0, 0.1), [0.1, 0.2) and [-0.1, 0) in x
   CHECK(chunks[0].count == 2);
   CHECK(chunks[0].position().x() == Approx(0.03));
@@ -56,23 +57,23 @@ TEST_CASE("chunks average the readings' distances; weights are sqrt(c) / r", "[l
   // Paper 4 averages distances: (1 + 10) / 2 = 5.5 m, not the 3.16 m of the mean RSSI.
   CHECK(chunks[0].mean_range() == Approx(5.5));
   CHECK(chunks[0].mean_rssi() == Approx(-57.5));
-  CHECK(wls_weight(chunks[0]) == Approx(std::sqrt(2.0) / 5.5));
+  CHECK(localize::wls_weight(chunks[0]) == Approx(std::sqrt(2.0) / 5.5));
   CHECK(chunks[1].count == 1);  // the -95 dBm reading was dropped
-  CHECK(wls_weight(chunks[1]) == Approx(0.1));
+  CHECK(localize::wls_weight(chunks[1]) == Approx(0.1));
   CHECK(chunks[2].position().x() == Approx(-0.05));
 }
 
 TEST_CASE("the incremental system equals the batch system after every reading", "[localize]") {
-  const Vec3 emitter(-3.0, 4.0, 0.4);
-  PathLossParams model;
-  const RssiLog log = exact_log(l_path(), emitter, model);
-  IncrementalWls incremental(model);
-  ChunkAccumulator batch;
-  for (const RssiReading& r : log.readings) {
+  const model::Vec3 emitter(-3.0, 4.0, 0.4);
+  localize::PathLossParams model;
+  const localize::RssiLog log = exact_log(l_path(), emitter, model);
+  localize::IncrementalWls incremental(model);
+  localize::ChunkAccumulator batch;
+  for (const localize::RssiReading& r : log.readings) {
     incremental.add(r.position, r.rssi_dbm);
-    batch.add(r.position, range_from_rssi(r.rssi_dbm, model), r.rssi_dbm);
+    batch.add(r.position, localize::range_from_rssi(r.rssi_dbm, model), r.rssi_dbm);
     const auto a = incremental.solve(2);
-    const auto b = wls_multilateration(batch.chunks(), 2);
+    const auto b = localize::wls_multilateration(batch.chunks(), 2);
     REQUIRE(a.has_value() == b.has_value());
     if (a) CHECK((a->position - b->position).norm() < 1e-6);
   }
@@ -80,62 +81,66 @@ TEST_CASE("the incremental system equals the batch system after every reading", 
 
 TEST_CASE("noise-free ranges are recovered exactly in 2D by every linear variant and the range fit",
           "[localize]") {
-  const Vec3 emitter(-3.0, 4.0, 0.4);  // at the antenna's height: the 2D problem is exact
-  PathLossParams model;
-  const RssiLog log = exact_log(l_path(), emitter, model);
-  const std::vector<Chunk> chunks = chunk_readings(log, 0, model);
-  const GeometryAnalysis geometry = analyse_geometry(chunks);
+  const model::Vec3 emitter(-3.0, 4.0, 0.4);  // at the antenna's height: the 2D problem is exact
+  localize::PathLossParams model;
+  const localize::RssiLog log = exact_log(l_path(), emitter, model);
+  const std::vector<localize::Chunk> chunks = localize::chunk_readings(log, 0, model);
+  const localize::GeometryAnalysis geometry = localize::analyse_geometry(chunks);
   REQUIRE(geometry.dimensions == 2);
   REQUIRE_FALSE(geometry.collinear);
-  for (const WlsReference reference : {WlsReference::first_chunk, WlsReference::weighted_mean}) {
-    const auto solution = wls_multilateration(chunks, 2, reference);
+  for (const localize::WlsReference reference :
+       {localize::WlsReference::first_chunk, localize::WlsReference::weighted_mean}) {
+    const auto solution = localize::wls_multilateration(chunks, 2, reference);
     REQUIRE(solution);
     CHECK((solution->position - emitter).norm() < 1e-6);
   }
-  RangeFitParams fit;
+  localize::RangeFitParams fit;
   fit.level_prior_db = 0;        // the level is free: the fit must find -45 dBm by itself
   model.rssi_at_1m_dbm = -40.0;  // assumed 5 dB off
-  const RangeFitResult result = fit_ranges(chunks, geometry, model, fit);
+  const localize::RangeFitResult result = localize::fit_ranges(chunks, geometry, model, fit);
   REQUIRE(result.hypotheses.size() == 1);
   CHECK((result.hypotheses[0].position - emitter).norm() < 1e-4);
   CHECK(result.hypotheses[0].rssi_at_1m_dbm == Approx(-45.0).margin(1e-4));
 }
 
 TEST_CASE("noise-free ranges are recovered exactly in 3D from a path that climbs", "[localize]") {
-  const Vec3 emitter(2.0, -1.0, 1.5);
-  PathLossParams model;
-  std::vector<Vec3> helix;
+  const model::Vec3 emitter(2.0, -1.0, 1.5);
+  localize::PathLossParams model;
+  std::vector<model::Vec3> helix;
   for (int i = 0; i < 400; ++i) {
     const double angle = 0.05 * i;
     helix.emplace_back(6 * std::cos(angle), 6 * std::sin(angle), 0.01 * i);  // 0 to 4 m up
   }
-  const std::vector<Chunk> chunks = chunk_readings(exact_log(helix, emitter, model), 0, model);
-  const GeometryAnalysis geometry = analyse_geometry(chunks);
+  const std::vector<localize::Chunk> chunks =
+      localize::chunk_readings(exact_log(helix, emitter, model), 0, model);
+  const localize::GeometryAnalysis geometry = localize::analyse_geometry(chunks);
   REQUIRE(geometry.dimensions == 3);
-  const auto linear = wls_multilateration(chunks, 3);
+  const auto linear = localize::wls_multilateration(chunks, 3);
   REQUIRE(linear);
   CHECK((linear->position - emitter).norm() < 1e-6);
-  const RangeFitResult fit = fit_ranges(chunks, geometry, model);
+  const localize::RangeFitResult fit = localize::fit_ranges(chunks, geometry, model);
   REQUIRE_FALSE(fit.hypotheses.empty());
   CHECK((fit.hypotheses[0].position - emitter).norm() < 1e-4);
 }
 
 TEST_CASE("collinear positions are reported as degenerate, with both mirror images", "[localize]") {
-  const Vec3 emitter(2.0, 3.0, 0.4);
-  PathLossParams model;
-  std::vector<Vec3> line;
+  const model::Vec3 emitter(2.0, 3.0, 0.4);
+  localize::PathLossParams model;
+  std::vector<model::Vec3> line;
   for (double x = -15; x <= 15; x += 0.2) line.emplace_back(x, 0.0, 0.4);
-  const RssiLog log = exact_log(line, emitter, model);
-  const EmitterEstimate wls = localize_emitter(log, 0, LocalizeMethod::wls);
+  const localize::RssiLog log = exact_log(line, emitter, model);
+  const localize::EmitterEstimate wls =
+      localize::localize_emitter(log, 0, localize::LocalizeMethod::wls);
   CHECK(wls.geometry.collinear);
   CHECK(wls.hypotheses.empty());  // the linear system is singular: no confident point
-  const EmitterEstimate nls = localize_emitter(log, 0, LocalizeMethod::nls);
+  const localize::EmitterEstimate nls =
+      localize::localize_emitter(log, 0, localize::LocalizeMethod::nls);
   CHECK(nls.geometry.collinear);
   REQUIRE(nls.hypotheses.size() == 2);
   CHECK(nls.twin);
-  const Vec3 mirror(2.0, -3.0, 0.4);
-  const Vec3& a = nls.hypotheses[0].position;
-  const Vec3& b = nls.hypotheses[1].position;
+  const model::Vec3 mirror(2.0, -3.0, 0.4);
+  const model::Vec3& a = nls.hypotheses[0].position;
+  const model::Vec3& b = nls.hypotheses[1].position;
   CHECK(std::min((a - emitter).norm() + (b - mirror).norm(),
                  (a - mirror).norm() + (b - emitter).norm()) < 1e-3);
   // Each hypothesis is well determined on its own: noise-free data leave it sub-centimetre
@@ -145,40 +150,41 @@ TEST_CASE("collinear positions are reported as degenerate, with both mirror imag
 
 TEST_CASE("geometry: height spread decides 2D or 3D; the mirror reflects across the path",
           "[localize]") {
-  std::vector<Chunk> chunks(2);
+  std::vector<localize::Chunk> chunks(2);
   chunks[0].position_sum = {0, 0, 0.4};
   chunks[0].count = 1;
   chunks[1].position_sum = {10, 0, 0.4};
   chunks[1].count = 1;
-  const GeometryAnalysis g = analyse_geometry(chunks);
+  const localize::GeometryAnalysis g = localize::analyse_geometry(chunks);
   CHECK(g.dimensions == 2);
   CHECK(g.collinear);
   CHECK(g.along_spread == Approx(5.0));  // two points 10 m apart: standard deviation 5 m
-  const Vec3 image = g.mirror({3, 2, 0.4});
-  CHECK((image - Vec3(3, -2, 0.4)).norm() < 1e-12);
+  const model::Vec3 image = g.mirror({3, 2, 0.4});
+  CHECK((image - model::Vec3(3, -2, 0.4)).norm() < 1e-12);
 }
 
 TEST_CASE("a circular path with unknown level reports the inverse-point twin", "[localize]") {
   // Every point X of the circle |X| = 12 sees (4, 0) and its inverse (144 / 4, 0) = (36, 0) at
   // the distance ratio 12 / 4 = 3: the twin's level is 25 log10(3) = 11.93 dB stronger.
-  const Vec3 emitter(4.0, 0.0, 0.4);
-  PathLossParams model;
-  std::vector<Vec3> circle;
+  const model::Vec3 emitter(4.0, 0.0, 0.4);
+  localize::PathLossParams model;
+  std::vector<model::Vec3> circle;
   for (int i = 0; i < 750; ++i) {
     const double angle = 2 * 3.14159265358979 * i / 750;
     circle.emplace_back(12 * std::cos(angle), 12 * std::sin(angle), 0.4);
   }
-  const std::vector<Chunk> chunks = chunk_readings(exact_log(circle, emitter, model), 0, model);
-  const GeometryAnalysis geometry = analyse_geometry(chunks);
+  const std::vector<localize::Chunk> chunks =
+      localize::chunk_readings(exact_log(circle, emitter, model), 0, model);
+  const localize::GeometryAnalysis geometry = localize::analyse_geometry(chunks);
   REQUIRE(geometry.circular);
   CHECK(geometry.circle_radius == Approx(12.0).margin(1e-3));
-  RangeFitParams fit;
+  localize::RangeFitParams fit;
   fit.level_prior_db = 0;
-  const RangeFitResult result = fit_ranges(chunks, geometry, model, fit);
+  const localize::RangeFitResult result = localize::fit_ranges(chunks, geometry, model, fit);
   REQUIRE(result.hypotheses.size() == 2);
   CHECK(result.twin);
-  const Vec3 twin(36.0, 0.0, 0.4);
-  for (const Hypothesis& h : result.hypotheses) {
+  const model::Vec3 twin(36.0, 0.0, 0.4);
+  for (const localize::Hypothesis& h : result.hypotheses) {
     const bool is_phone = (h.position - emitter).norm() < 1e-2;
     CHECK((is_phone || (h.position - twin).norm() < 1e-2));
     CHECK(h.rssi_at_1m_dbm == Approx(is_phone ? -45.0 : -45.0 + 25 * std::log10(3.0)).margin(1e-2));

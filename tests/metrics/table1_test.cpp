@@ -14,10 +14,10 @@ using namespace rigdesign;
 using rigdesign::test::source_path;
 
 TEST_CASE("UR Cleaner reproduces paper 1's Table 1") {
-  const SensorLibrary library = load_sensor_library(source_path("sensors.yaml"));
-  const Rig rig = load_rig(source_path("rigs/ur_cleaner.yaml"));
-  REQUIRE_FALSE(check_rig_references(rig, library).has_errors());
-  const ResultantMetrics metrics = compute_resultant(rig, library);
+  const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
+  const model::Rig rig = io::load_rig(source_path("rigs/ur_cleaner.yaml"));
+  REQUIRE_FALSE(io::check_rig_references(rig, library).has_errors());
+  const metrics::ResultantMetrics metrics = metrics::compute_resultant(rig, library);
 
   CHECK(metrics.frequency.value == 15.0);
   // Table 1: R = 122 mm (+-1 mm), from the VLP-16's 2 deg vertical step at 3.5 m.
@@ -27,10 +27,10 @@ TEST_CASE("UR Cleaner reproduces paper 1's Table 1") {
   CHECK(metrics.noise.mounts == std::vector<std::string>{"top_lidar"});
 
   // L = true for the conditions the UR Cleaner requires.
-  const Requirements requirements =
-      load_requirements(source_path("rigs/requirements/ur_cleaner.yaml"));
+  const model::Requirements requirements =
+      io::load_requirements(source_path("rigs/requirements/ur_cleaner.yaml"));
   REQUIRE_FALSE(requirements.lighting.empty());
-  for (LightCondition condition : requirements.lighting) {
+  for (model::LightCondition condition : requirements.lighting) {
     CHECK(metrics.light_for(condition).immune);
   }
 }

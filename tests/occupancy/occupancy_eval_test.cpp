@@ -11,52 +11,54 @@
 using namespace rigdesign;
 
 TEST_CASE("the surface voxeliser finds a box's shell of voxels, counted by hand", "[occupancy]") {
-  const VoxelLattice lattice{0.1, 0.1, 0.0, 2.0};
+  const occupancy::VoxelLattice lattice{0.1, 0.1, 0.0, 2.0};
   // [0.05, 0.25]^3 spans voxels 0..2 per axis; voxel (1, 1, 1) = [0.1, 0.2]^3 is strictly inside.
-  const auto small =
-      voxelise_surface(test::box_mesh({0.05, 0.05, 0.05}, {0.25, 0.25, 0.25}), lattice, 0.0);
+  const auto small = occupancy::voxelise_surface(
+      test::box_mesh({0.05, 0.05, 0.05}, {0.25, 0.25, 0.25}), lattice, 0.0);
   CHECK(small.size() == 26u);
-  CHECK_FALSE(std::binary_search(small.begin(), small.end(), VoxelKey{1, 1, 1}));
+  CHECK_FALSE(std::binary_search(small.begin(), small.end(), costmap::VoxelKey{1, 1, 1}));
   // [0.05, 0.45]^3: a 5^3 block less its 3^3 interior = 98.
-  CHECK(voxelise_surface(test::box_mesh({0.05, 0.05, 0.05}, {0.45, 0.45, 0.45}), lattice, 0.0)
+  CHECK(occupancy::voxelise_surface(test::box_mesh({0.05, 0.05, 0.05}, {0.45, 0.45, 0.45}), lattice,
+                                    0.0)
             .size() == 98u);
   // Only z >= 0.2 m: the top layer of the small box, 3 x 3.
-  const auto top =
-      voxelise_surface(test::box_mesh({0.05, 0.05, 0.05}, {0.25, 0.25, 0.25}), lattice, 0.2);
+  const auto top = occupancy::voxelise_surface(
+      test::box_mesh({0.05, 0.05, 0.05}, {0.25, 0.25, 0.25}), lattice, 0.2);
   CHECK(top.size() == 9u);
-  for (const VoxelKey& key : top) CHECK(key.z == 2);
+  for (const costmap::VoxelKey& key : top) CHECK(key.z == 2);
   // Anisotropic voxels and a z_min: z = floor((z - 0.05) / 0.05) for a box 0.1..0.2 m high.
-  const VoxelLattice tall{0.1, 0.05, 0.05, 2.0};
+  const occupancy::VoxelLattice tall{0.1, 0.05, 0.05, 2.0};
   const auto layered =
-      voxelise_surface(test::box_mesh({0.01, 0.01, 0.1}, {0.09, 0.09, 0.2}), tall, 0.0);
+      occupancy::voxelise_surface(test::box_mesh({0.01, 0.01, 0.1}, {0.09, 0.09, 0.2}), tall, 0.0);
   // One column, z from 0.1 (layer 1) to 0.2 (layer 3, holding the top face): layers 1, 2, 3.
   REQUIRE(layered.size() == 3u);
-  CHECK(layered.front() == VoxelKey{0, 0, 1});
-  CHECK(layered.back() == VoxelKey{0, 0, 3});
+  CHECK(layered.front() == costmap::VoxelKey{0, 0, 1});
+  CHECK(layered.back() == costmap::VoxelKey{0, 0, 3});
 }
 
 TEST_CASE("column masks and their dilation by a radius", "[occupancy]") {
-  GridWindow window{5, 5, 1.0, {-2, -2}};  // lattice -2..2, cell (2, 2) is lattice (0, 0)
-  const std::vector<VoxelKey> keys = {{0, 0, 3}, {0, 0, 7}, {9, 9, 0}};  // the last is outside
-  const auto columns = column_mask(keys, window);
+  costmap::GridWindow window{5, 5, 1.0, {-2, -2}};  // lattice -2..2, cell (2, 2) is lattice (0, 0)
+  const std::vector<costmap::VoxelKey> keys = {
+      {0, 0, 3}, {0, 0, 7}, {9, 9, 0}};  // the last is outside
+  const auto columns = occupancy::column_mask(keys, window);
   CHECK(std::count(columns.begin(), columns.end(), 1) == 1);
   CHECK(columns[window.index(2, 2)] == 1);
   // Radius 1: the cell and its 4 edge neighbours; 1.5: the 3 x 3 block (diagonal 1.41).
   auto count = [](const std::vector<std::uint8_t>& m) { return std::count(m.begin(), m.end(), 1); };
-  CHECK(count(dilate_mask(columns, window, 1.0)) == 5);
-  CHECK(count(dilate_mask(columns, window, 1.5)) == 9);
-  CHECK(count(dilate_mask(columns, window, 0.0)) == 1);
+  CHECK(count(occupancy::dilate_mask(columns, window, 1.0)) == 5);
+  CHECK(count(occupancy::dilate_mask(columns, window, 1.5)) == 9);
+  CHECK(count(occupancy::dilate_mask(columns, window, 0.0)) == 1);
 }
 
 TEST_CASE("the trail behind a moving object and its length along the path", "[occupancy]") {
   // Five cells of 0.5 m; the object steps from cell 0 to cell 3, a grid that never clears
   // keeps every cell it saw, and cell 4 holds a stray mark the truth never had.
-  TrailTracker tracker(5, 0.25);
-  PathOdometer path;
-  const Vec2 positions[] = {{0, 0}, {1, 0}, {1, 1}, {1, 2}};
+  occupancy::TrailTracker tracker(5, 0.25);
+  occupancy::PathOdometer path;
+  const model::Vec2 positions[] = {{0, 0}, {1, 0}, {1, 1}, {1, 2}};
   std::vector<std::uint8_t> shown(5, 0);
   shown[4] = 1;
-  TrailFrame frame;
+  occupancy::TrailFrame frame;
   for (int k = 0; k < 4; ++k) {
     std::vector<std::uint8_t> truth(5, 0);
     truth[static_cast<std::size_t>(k)] = 1;
@@ -86,22 +88,22 @@ TEST_CASE("the trail behind a moving object and its length along the path", "[oc
 namespace {
 
 // Shows one fixed voxel far from the object and logs the motion flags it was given.
-class FixedMapper final : public OccupancyMapper {
+class FixedMapper final : public occupancy::OccupancyMapper {
  public:
   std::string name() const override { return "fixed"; }
-  VoxelLattice lattice() const override { return {0.5, 0.5, 0.0, 2.0}; }
-  void update(double, std::span<const PointCloud>, bool robot_moving) override {
+  occupancy::VoxelLattice lattice() const override { return {0.5, 0.5, 0.0, 2.0}; }
+  void update(double, std::span<const model::PointCloud>, bool robot_moving) override {
     flags.push_back(robot_moving);
   }
-  std::vector<VoxelKey> occupied() const override { return {{4, 4, 1}}; }
+  std::vector<costmap::VoxelKey> occupied() const override { return {{4, 4, 1}}; }
   std::vector<bool> flags;
 };
 
-Scene sliding_box_scene() {
-  Scene scene;
+model::Scene sliding_box_scene() {
+  model::Scene scene;
   scene.name = "sliding box";
   scene.moving.push_back({"box", test::box_mesh({-0.2, -0.2, 0.0}, {0.2, 0.2, 1.0}), [](double t) {
-                            return Pose3(Eigen::Translation3d(-2.0 + 0.5 * t, 0.0, 0.0));
+                            return model::Pose3(Eigen::Translation3d(-2.0 + 0.5 * t, 0.0, 0.0));
                           }});
   return scene;
 }
@@ -110,12 +112,12 @@ Scene sliding_box_scene() {
 
 TEST_CASE("frames split into the moving and the standing phase", "[occupancy]") {
   FixedMapper mapper;
-  OccupancyMapper* mappers[] = {&mapper};
-  OccupancyEvalParams params;
+  occupancy::OccupancyMapper* mappers[] = {&mapper};
+  occupancy::OccupancyEvalParams params;
   params.rate = 2.0;
   params.duration = 4.0;
   params.moving_until = 1.0;
-  const auto runs = evaluate_occupancy(sliding_box_scene(), {}, mappers, params);
+  const auto runs = occupancy::evaluate_occupancy(sliding_box_scene(), {}, mappers, params);
   REQUIRE(runs.size() == 1u);
   // Frames at 0, 0.5 (moving) and 1.0 .. 3.5 (standing).
   CHECK(runs[0].frames.size() == 8u);
@@ -136,19 +138,20 @@ TEST_CASE("frames split into the moving and the standing phase", "[occupancy]") 
 }
 
 TEST_CASE("a scene without a moving object cannot be scored", "[occupancy]") {
-  Scene still;
+  model::Scene still;
   still.name = "still";
   FixedMapper mapper;
-  OccupancyMapper* mappers[] = {&mapper};
-  CHECK_THROWS_AS(evaluate_occupancy(still, {}, mappers, {}), std::invalid_argument);
+  occupancy::OccupancyMapper* mappers[] = {&mapper};
+  CHECK_THROWS_AS(occupancy::evaluate_occupancy(still, {}, mappers, {}), std::invalid_argument);
 }
 
 TEST_CASE("the sweep's grid is every voxel length with every persistence setting", "[occupancy]") {
   const std::vector<double> voxels = {0.05, 0.1};
-  const std::vector<PersistenceSetting> settings = {{false, 0, 0}, {true, 3, 1500}, {true, 1, 15}};
-  VoxelMapperParams base;
+  const std::vector<occupancy::PersistenceSetting> settings = {
+      {false, 0, 0}, {true, 3, 1500}, {true, 1, 15}};
+  occupancy::VoxelMapperParams base;
   base.robot_radius = 0.25;
-  const auto grid = sweep_grid(voxels, settings, base);
+  const auto grid = occupancy::sweep_grid(voxels, settings, base);
   REQUIRE(grid.size() == 6u);
   for (std::size_t i = 0; i < grid.size(); ++i) {
     CHECK(grid[i].voxel == voxels[i / 3]);
@@ -159,9 +162,11 @@ TEST_CASE("the sweep's grid is every voxel length with every persistence setting
       CHECK(grid[i].hit.hit_max == settings[i % 3].hit_max);
     }
   }
-  CHECK(sweep_grid(default_sweep_voxels(), default_sweep_persistence()).size() == 4u * 5u);
+  CHECK(occupancy::sweep_grid(occupancy::default_sweep_voxels(),
+                              occupancy::default_sweep_persistence())
+            .size() == 4u * 5u);
   // Each row makes a mapper named after it, on a cubic lattice of its voxel length.
-  const auto mappers = make_sweep_mappers(grid, SourceLocation{"(test)"});
+  const auto mappers = occupancy::make_sweep_mappers(grid, model::SourceLocation{"(test)"});
   CHECK(mappers[4]->lattice().resolution == 0.1);
   CHECK(mappers[4]->lattice().z_resolution == 0.1);
   CHECK(mappers[4]->name() == "voxel 0.1 m, hit 3/1500");

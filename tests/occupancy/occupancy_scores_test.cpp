@@ -8,17 +8,19 @@ using namespace rigdesign;
 
 namespace {
 
-const VoxelKey A{0, 0, 0}, B{1, 0, 0}, C{0, 1, 0}, D{0, 0, 1}, E{5, 5, 5}, F{-1, 2, 3}, G{9, 9, 9};
+const costmap::VoxelKey A{0, 0, 0}, B{1, 0, 0}, C{0, 1, 0}, D{0, 0, 1}, E{5, 5, 5}, F{-1, 2, 3},
+    G{9, 9, 9};
 
 }  // namespace
 
 TEST_CASE("precision, recall and F-beta on a hand-counted case", "[costmap]") {
   // Predicted {A, B, C, D} (B listed twice), truth {B, C, E}: TP 2, FP 2 (A, D), FN 1 (E).
-  const ConfusionCounts counts = compare_voxel_sets({A, B, C, D, B}, {E, C, B});
+  const occupancy::ConfusionCounts counts =
+      occupancy::compare_voxel_sets({A, B, C, D, B}, {E, C, B});
   CHECK(counts.true_positives == 2);
   CHECK(counts.false_positives == 2);
   CHECK(counts.false_negatives == 1);
-  const Scores s = scores_of(counts);
+  const occupancy::Scores s = occupancy::scores_of(counts);
   CHECK(s.precision == Approx(0.5));
   CHECK(s.recall == Approx(2.0 / 3.0));
   CHECK(s.f1 == Approx(4.0 / 7.0));    // 2 (1/3) / (7/6)
@@ -30,15 +32,16 @@ TEST_CASE("precision, recall and F-beta on a hand-counted case", "[costmap]") {
 }
 
 TEST_CASE("undefined scores are NaN and the mean skips them", "[costmap]") {
-  const Scores empty = scores_of(compare_voxel_sets({}, {}));
+  const occupancy::Scores empty = occupancy::scores_of(occupancy::compare_voxel_sets({}, {}));
   CHECK(std::isnan(empty.precision));
   CHECK(std::isnan(empty.f1));
-  const Scores none_right = scores_of(compare_voxel_sets({A}, {B}));
+  const occupancy::Scores none_right =
+      occupancy::scores_of(occupancy::compare_voxel_sets({A}, {B}));
   CHECK(none_right.precision == 0.0);
   CHECK(none_right.f1 == 0.0);
-  const Scores perfect = scores_of(compare_voxel_sets({A}, {A}));
-  const std::vector<Scores> frames{empty, none_right, perfect};
-  const Scores mean = mean_scores(frames);
+  const occupancy::Scores perfect = occupancy::scores_of(occupancy::compare_voxel_sets({A}, {A}));
+  const std::vector<occupancy::Scores> frames{empty, none_right, perfect};
+  const occupancy::Scores mean = occupancy::mean_scores(frames);
   CHECK(mean.precision == Approx(0.5));
   CHECK(mean.f3 == Approx(0.5));
 }
@@ -46,20 +49,20 @@ TEST_CASE("undefined scores are NaN and the mean skips them", "[costmap]") {
 TEST_CASE("masks, ghost area and misses by cause", "[costmap]") {
   const std::vector<std::uint8_t> predicted{1, 1, 0, 1};
   const std::vector<std::uint8_t> truth{0, 1, 1, 0};
-  const ConfusionCounts counts = compare_masks(predicted, truth);
+  const occupancy::ConfusionCounts counts = occupancy::compare_masks(predicted, truth);
   CHECK(counts.true_positives == 1);
   CHECK(counts.false_positives == 2);
   CHECK(counts.false_negatives == 1);
-  CHECK(ghost_area(predicted, truth, 0.1) == Approx(0.02));  // 2 cells of 0.01 m^2
+  CHECK(occupancy::ghost_area(predicted, truth, 0.1) == Approx(0.02));  // 2 cells of 0.01 m^2
   // Truth {B, C, E, F}, kept {B}; the sensors saw C, E and G: C and E were seen but not kept,
   // F never seen.
-  const MissCauses causes = split_misses({B}, {B, C, E, F}, {C, E, G});
+  const occupancy::MissCauses causes = occupancy::split_misses({B}, {B, C, E, F}, {C, E, G});
   CHECK(causes.seen_not_kept == 2);
   CHECK(causes.never_seen == 1);
 }
 
 TEST_CASE("time to mark and time to clear, per cell", "[costmap]") {
-  ChangeDelays delays(1);
+  occupancy::ChangeDelays delays(1);
   auto frame = [&](double t, int truth, int predicted) {
     const std::vector<std::uint8_t> tr{static_cast<std::uint8_t>(truth)};
     const std::vector<std::uint8_t> pr{static_cast<std::uint8_t>(predicted)};

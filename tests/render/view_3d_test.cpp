@@ -22,34 +22,34 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-SensorMode pyramid_mode(double horizontal_deg, double vertical_deg, double min_range,
-                        double max_range) {
-  SensorMode mode;
-  mode.fov.shape = FovShape::pyramid;
-  mode.fov.horizontal = deg_to_rad(horizontal_deg);
-  mode.fov.vertical = deg_to_rad(vertical_deg);
+model::SensorMode pyramid_mode(double horizontal_deg, double vertical_deg, double min_range,
+                               double max_range) {
+  model::SensorMode mode;
+  mode.fov.shape = model::FovShape::pyramid;
+  mode.fov.horizontal = model::deg_to_rad(horizontal_deg);
+  mode.fov.vertical = model::deg_to_rad(vertical_deg);
   mode.min_range = min_range;
   mode.max_range = max_range;
   return mode;
 }
 
-SensorMode cone_mode(double apex_deg, double min_range, double max_range) {
-  SensorMode mode;
-  mode.fov.shape = FovShape::cone;
-  mode.fov.horizontal = deg_to_rad(apex_deg);
+model::SensorMode cone_mode(double apex_deg, double min_range, double max_range) {
+  model::SensorMode mode;
+  mode.fov.shape = model::FovShape::cone;
+  mode.fov.horizontal = model::deg_to_rad(apex_deg);
   mode.fov.vertical = mode.fov.horizontal;
   mode.min_range = min_range;
   mode.max_range = max_range;
   return mode;
 }
 
-SensorMode band_mode(FovShape shape, double span_deg, double elevation_min_deg,
-                     double elevation_max_deg, double min_range, double max_range) {
-  SensorMode mode;
+model::SensorMode band_mode(model::FovShape shape, double span_deg, double elevation_min_deg,
+                            double elevation_max_deg, double min_range, double max_range) {
+  model::SensorMode mode;
   mode.fov.shape = shape;
-  mode.fov.horizontal = deg_to_rad(span_deg);
-  mode.fov.elevation_min = deg_to_rad(elevation_min_deg);
-  mode.fov.elevation_max = deg_to_rad(elevation_max_deg);
+  mode.fov.horizontal = model::deg_to_rad(span_deg);
+  mode.fov.elevation_min = model::deg_to_rad(elevation_min_deg);
+  mode.fov.elevation_max = model::deg_to_rad(elevation_max_deg);
   mode.fov.vertical = mode.fov.elevation_max - mode.fov.elevation_min;
   mode.min_range = min_range;
   mode.max_range = max_range;
@@ -57,13 +57,13 @@ SensorMode band_mode(FovShape shape, double span_deg, double elevation_min_deg,
 }
 
 // A mount somewhere on the robot, tilted, so the tests also exercise the pose.
-Pose3 tilted_mount() {
-  return pose_from_xyz_rpy(Vec3(0.3, -0.1, 0.45), Vec3(0.1, 0.35, -0.6));
+model::Pose3 tilted_mount() {
+  return model::pose_from_xyz_rpy(model::Vec3(0.3, -0.1, 0.45), model::Vec3(0.1, 0.35, -0.6));
 }
 
 // Volume enclosed by a closed, outward-wound mesh: the divergence theorem as a sum of signed
 // tetrahedra with the origin.
-double enclosed_volume(const TriangleMesh& mesh) {
+double enclosed_volume(const model::TriangleMesh& mesh) {
   double six_volume = 0.0;
   for (const auto& [a, b, c] : mesh.triangles) {
     six_volume += mesh.vertices[a].dot(mesh.vertices[b].cross(mesh.vertices[c]));
@@ -72,7 +72,7 @@ double enclosed_volume(const TriangleMesh& mesh) {
 }
 
 // Closed and consistently wound: every directed edge is used once and its reverse once.
-bool is_closed_and_oriented(const TriangleMesh& mesh) {
+bool is_closed_and_oriented(const model::TriangleMesh& mesh) {
   std::map<std::pair<int, int>, int> uses;
   for (const auto& [a, b, c] : mesh.triangles) {
     ++uses[{a, b}];
@@ -91,18 +91,19 @@ double shell_sector_volume(double solid_angle, double r0, double r1) {
   return solid_angle * (r1 * r1 * r1 - r0 * r0 * r0) / 3;
 }
 
-RobotBody cylinder_body(double radius, double height) {
-  RobotBody body;
+model::RobotBody cylinder_body(double radius, double height) {
+  model::RobotBody body;
   body.radius = radius;
   body.height = height;
   return body;
 }
 
-RobotBody square_body(const Vec2& centre, double half_side, double height) {
-  RobotBody body;
+model::RobotBody square_body(const model::Vec2& centre, double half_side, double height) {
+  model::RobotBody body;
   body.height = height;
   body.radius = half_side * std::numbers::sqrt2 + centre.norm();
-  for (const Vec2& corner : {Vec2(-1, -1), Vec2(1, -1), Vec2(1, 1), Vec2(-1, 1)}) {
+  for (const model::Vec2& corner :
+       {model::Vec2(-1, -1), model::Vec2(1, -1), model::Vec2(1, 1), model::Vec2(-1, 1)}) {
     body.footprint.push_back(centre + half_side * corner);
   }
   return body;
@@ -123,13 +124,13 @@ std::uint32_t big_endian_u32(const std::string& bytes, std::size_t offset) {
 }  // namespace
 
 TEST_CASE("a pyramid FOV mesh stays inside its angles and range, far cap at the truncation") {
-  const SensorMode mode = pyramid_mode(75, 65, 0.5, 5.46);
-  const Pose3 T_robot_sensor = tilted_mount();
-  const TriangleMesh mesh = fov_mesh(mode, T_robot_sensor, 3.0);
+  const model::SensorMode mode = pyramid_mode(75, 65, 0.5, 5.46);
+  const model::Pose3 T_robot_sensor = tilted_mount();
+  const model::TriangleMesh mesh = render::fov_mesh(mode, T_robot_sensor, 3.0);
   REQUIRE_FALSE(mesh.vertices.empty());
   int on_far_cap = 0;
-  for (const Vec3& vertex : mesh.vertices) {
-    const Vec3 q = T_robot_sensor.inverse() * vertex;
+  for (const model::Vec3& vertex : mesh.vertices) {
+    const model::Vec3 q = T_robot_sensor.inverse() * vertex;
     const double distance = q.norm();
     // Only cap vertices: the walls are planar and need none of their own.
     CHECK((std::abs(distance - 0.5) < 1e-9 || std::abs(distance - 3.0) < 1e-9));
@@ -143,66 +144,70 @@ TEST_CASE("a pyramid FOV mesh stays inside its angles and range, far cap at the 
 }
 
 TEST_CASE("a 360-degree band mesh reaches both elevation limits all round") {
-  const SensorMode vlp16 = band_mode(FovShape::band, 360, -15, 15, 0.9, 100);
-  const TriangleMesh mesh = fov_mesh(vlp16, Pose3::Identity(), 4.0);
+  const model::SensorMode vlp16 = band_mode(model::FovShape::band, 360, -15, 15, 0.9, 100);
+  const model::TriangleMesh mesh = render::fov_mesh(vlp16, model::Pose3::Identity(), 4.0);
   double lowest = kPi;
   double highest = -kPi;
   int behind = 0;
-  for (const Vec3& q : mesh.vertices) {
+  for (const model::Vec3& q : mesh.vertices) {
     const double elevation = std::asin(q.z() / q.norm());
     lowest = std::min(lowest, elevation);
     highest = std::max(highest, elevation);
     if (q.x() < -0.5) ++behind;
   }
-  CHECK_THAT(lowest, WithinAbs(deg_to_rad(-15), 1e-9));
-  CHECK_THAT(highest, WithinAbs(deg_to_rad(15), 1e-9));
+  CHECK_THAT(lowest, WithinAbs(model::deg_to_rad(-15), 1e-9));
+  CHECK_THAT(highest, WithinAbs(model::deg_to_rad(15), 1e-9));
   CHECK(behind > 0);
   CHECK(is_closed_and_oriented(mesh));
 }
 
 TEST_CASE("FOV mesh volumes match the spherical-shell sectors they tessellate") {
-  const Pose3 T_robot_sensor = tilted_mount();
+  const model::Pose3 T_robot_sensor = tilted_mount();
   SECTION("cone from the sensor origin") {
-    const double half_apex = deg_to_rad(30);
-    const TriangleMesh mesh = fov_mesh(cone_mode(60, 0.0, 2.0), T_robot_sensor, 10.0);
+    const double half_apex = model::deg_to_rad(30);
+    const model::TriangleMesh mesh =
+        render::fov_mesh(cone_mode(60, 0.0, 2.0), T_robot_sensor, 10.0);
     const double exact = shell_sector_volume(2 * kPi * (1 - std::cos(half_apex)), 0.0, 2.0);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
   SECTION("cone with a minimum range") {
-    const double half_apex = deg_to_rad(45);
-    const TriangleMesh mesh = fov_mesh(cone_mode(90, 0.3, 2.5), T_robot_sensor, 10.0);
+    const double half_apex = model::deg_to_rad(45);
+    const model::TriangleMesh mesh =
+        render::fov_mesh(cone_mode(90, 0.3, 2.5), T_robot_sensor, 10.0);
     const double exact = shell_sector_volume(2 * kPi * (1 - std::cos(half_apex)), 0.3, 2.5);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
   SECTION("full-circle band") {
-    const TriangleMesh mesh =
-        fov_mesh(band_mode(FovShape::band, 360, -15, 15, 0.9, 100), T_robot_sensor, 4.0);
+    const model::TriangleMesh mesh = render::fov_mesh(
+        band_mode(model::FovShape::band, 360, -15, 15, 0.9, 100), T_robot_sensor, 4.0);
     const double exact = shell_sector_volume(
-        2 * kPi * (std::sin(deg_to_rad(15)) - std::sin(deg_to_rad(-15))), 0.9, 4.0);
+        2 * kPi * (std::sin(model::deg_to_rad(15)) - std::sin(model::deg_to_rad(-15))), 0.9, 4.0);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
   SECTION("band up to the zenith, from the sensor origin") {
-    const TriangleMesh mesh =
-        fov_mesh(band_mode(FovShape::band, 360, -30, 90, 0.0, 3.0), T_robot_sensor, 10.0);
-    const double exact = shell_sector_volume(2 * kPi * (1 - std::sin(deg_to_rad(-30))), 0, 3.0);
+    const model::TriangleMesh mesh = render::fov_mesh(
+        band_mode(model::FovShape::band, 360, -30, 90, 0.0, 3.0), T_robot_sensor, 10.0);
+    const double exact =
+        shell_sector_volume(2 * kPi * (1 - std::sin(model::deg_to_rad(-30))), 0, 3.0);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
   SECTION("planar 270-degree wedge") {
-    const TriangleMesh mesh =
-        fov_mesh(band_mode(FovShape::planar, 270, -0.5, 0.5, 0.05, 10), T_robot_sensor, 5.0);
-    const double solid_angle =
-        deg_to_rad(270) * (std::sin(deg_to_rad(0.5)) - std::sin(deg_to_rad(-0.5)));
+    const model::TriangleMesh mesh = render::fov_mesh(
+        band_mode(model::FovShape::planar, 270, -0.5, 0.5, 0.05, 10), T_robot_sensor, 5.0);
+    const double solid_angle = model::deg_to_rad(270) * (std::sin(model::deg_to_rad(0.5)) -
+                                                         std::sin(model::deg_to_rad(-0.5)));
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(shell_sector_volume(solid_angle, 0.05, 5.0), 0.02));
   }
   SECTION("pyramid") {
-    const TriangleMesh mesh = fov_mesh(pyramid_mode(120, 120, 0.25, 2.88), T_robot_sensor, 10.0);
+    const model::TriangleMesh mesh =
+        render::fov_mesh(pyramid_mode(120, 120, 0.25, 2.88), T_robot_sensor, 10.0);
     // Solid angle of a rectangular pyramid with full angles a, b: 4 asin(sin(a/2) sin(b/2)).
-    const double half = deg_to_rad(60);
+    const double half = model::deg_to_rad(60);
     const double solid_angle = 4 * std::asin(std::sin(half) * std::sin(half));
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh),
@@ -211,31 +216,33 @@ TEST_CASE("FOV mesh volumes match the spherical-shell sectors they tessellate") 
 }
 
 TEST_CASE("an empty range interval gives an empty FOV mesh") {
-  CHECK(fov_mesh(cone_mode(60, 0.5, 4.0), Pose3::Identity(), 0.4).triangles.empty());
+  CHECK(render::fov_mesh(cone_mode(60, 0.5, 4.0), model::Pose3::Identity(), 0.4).triangles.empty());
 }
 
 TEST_CASE("body meshes are closed prisms with the body's volume") {
   SECTION("cylinder") {
-    const TriangleMesh mesh = body_mesh(cylinder_body(0.45, 1.2));
+    const model::TriangleMesh mesh = render::body_mesh(cylinder_body(0.45, 1.2));
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(kPi * 0.45 * 0.45 * 1.2, 0.01));
   }
   SECTION("rectangle footprint, exactly") {
-    RobotBody body;
+    model::RobotBody body;
     body.height = 0.9;
-    body.footprint = {Vec2(-0.4, -0.3), Vec2(0.5, -0.3), Vec2(0.5, 0.3), Vec2(-0.4, 0.3)};
-    const TriangleMesh mesh = body_mesh(body);
+    body.footprint = {model::Vec2(-0.4, -0.3), model::Vec2(0.5, -0.3), model::Vec2(0.5, 0.3),
+                      model::Vec2(-0.4, 0.3)};
+    const model::TriangleMesh mesh = render::body_mesh(body);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinAbs(0.9 * 0.6 * 0.9, 1e-12));
   }
   SECTION("non-convex footprint, either winding") {
-    RobotBody body;
+    model::RobotBody body;
     body.height = 0.5;
     // An L of three unit squares; its notch defeats a fan from the first corner.
-    body.footprint = {Vec2(0, 0), Vec2(2, 0), Vec2(2, 1), Vec2(1, 1), Vec2(1, 2), Vec2(0, 2)};
+    body.footprint = {model::Vec2(0, 0), model::Vec2(2, 0), model::Vec2(2, 1),
+                      model::Vec2(1, 1), model::Vec2(1, 2), model::Vec2(0, 2)};
     for (const bool reversed : {false, true}) {
       if (reversed) std::reverse(body.footprint.begin(), body.footprint.end());
-      const TriangleMesh mesh = body_mesh(body);
+      const model::TriangleMesh mesh = render::body_mesh(body);
       CHECK(is_closed_and_oriented(mesh));
       CHECK_THAT(enclosed_volume(mesh), WithinAbs(3 * 0.5, 1e-12));
     }
@@ -245,12 +252,13 @@ TEST_CASE("body meshes are closed prisms with the body's volume") {
 TEST_CASE("render_view_3d writes a PNG of the requested size") {
   const test::TempFolder folder;
   const std::string path = folder.path() + "/body.png";
-  View3dSettings settings;
+  render::View3dSettings settings;
   settings.width = 200;
   settings.height = 150;
-  settings.viewpoint = Viewpoint::top;
+  settings.viewpoint = render::Viewpoint::top;
   settings.extent = 1.0;
-  render_view_3d({{body_mesh(cylinder_body(0.5, 1.0)), kBodyColour, 1.0}}, settings, path);
+  render::render_view_3d({{render::body_mesh(cylinder_body(0.5, 1.0)), render::kBodyColour, 1.0}},
+                         settings, path);
 
   std::ifstream file(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
@@ -262,13 +270,13 @@ TEST_CASE("render_view_3d writes a PNG of the requested size") {
 }
 
 TEST_CASE("a top view shows the body grey on a white background") {
-  View3dSettings settings;
+  render::View3dSettings settings;
   settings.width = 200;
   settings.height = 150;
-  settings.viewpoint = Viewpoint::top;
+  settings.viewpoint = render::Viewpoint::top;
   settings.extent = 1.0;
-  const std::vector<std::uint8_t> rgba =
-      render_view_3d_pixels({{body_mesh(cylinder_body(0.5, 1.0)), kBodyColour, 1.0}}, settings);
+  const std::vector<std::uint8_t> rgba = render::render_view_3d_pixels(
+      {{render::body_mesh(cylinder_body(0.5, 1.0)), render::kBodyColour, 1.0}}, settings);
   REQUIRE(rgba.size() == 200u * 150u * 4u);
 
   // Inside the body's disc, off the axis arrows drawn from its centre (up for x, left for y).
@@ -284,17 +292,17 @@ TEST_CASE("a top view shows the body grey on a white background") {
 }
 
 TEST_CASE("a top view puts the robot's front up and its left on the left") {
-  View3dSettings settings;
+  render::View3dSettings settings;
   settings.width = 120;
   settings.height = 120;
-  settings.viewpoint = Viewpoint::top;
+  settings.viewpoint = render::Viewpoint::top;
   settings.extent = 1.0;
-  const Rgb orange{0.90, 0.62, 0.00};
-  const Rgb blue{0.00, 0.45, 0.70};
-  const std::vector<std::uint8_t> rgba =
-      render_view_3d_pixels({{body_mesh(square_body(Vec2(0.7, 0.0), 0.12, 0.3)), orange, 1.0},
-                             {body_mesh(square_body(Vec2(0.0, 0.7), 0.12, 0.3)), blue, 1.0}},
-                            settings);
+  const render::Rgb orange{0.90, 0.62, 0.00};
+  const render::Rgb blue{0.00, 0.45, 0.70};
+  const std::vector<std::uint8_t> rgba = render::render_view_3d_pixels(
+      {{render::body_mesh(square_body(model::Vec2(0.7, 0.0), 0.12, 0.3)), orange, 1.0},
+       {render::body_mesh(square_body(model::Vec2(0.0, 0.7), 0.12, 0.3)), blue, 1.0}},
+      settings);
   // 1 m is about 55 px here (the frame spans the 2 m grid plus a small margin); 0.7 m ~ 39 px.
   const std::uint8_t* ahead = pixel(rgba, 120, 60, 60 - 39);
   const std::uint8_t* left = pixel(rgba, 120, 60 - 39, 60);
@@ -309,15 +317,16 @@ TEST_CASE("a top view puts the robot's front up and its left on the left") {
 }
 
 TEST_CASE("an isometric view blends a translucent FOV over the scene") {
-  View3dSettings settings;
+  render::View3dSettings settings;
   settings.width = 120;
   settings.height = 90;
-  const Rgb blue{0.00, 0.45, 0.70};
-  const Pose3 T_robot_sensor = pose_from_xyz_rpy(Vec3(0.3, 0, 0.8), Vec3::Zero());
-  const std::vector<std::uint8_t> rgba =
-      render_view_3d_pixels({{body_mesh(cylinder_body(0.3, 0.8)), kBodyColour, 1.0},
-                             {fov_mesh(cone_mode(60, 0.0, 5.0), T_robot_sensor, 1.5), blue, 0.35}},
-                            settings);
+  const render::Rgb blue{0.00, 0.45, 0.70};
+  const model::Pose3 T_robot_sensor =
+      model::pose_from_xyz_rpy(model::Vec3(0.3, 0, 0.8), model::Vec3::Zero());
+  const std::vector<std::uint8_t> rgba = render::render_view_3d_pixels(
+      {{render::body_mesh(cylinder_body(0.3, 0.8)), render::kBodyColour, 1.0},
+       {render::fov_mesh(cone_mode(60, 0.0, 5.0), T_robot_sensor, 1.5), blue, 0.35}},
+      settings);
   int tinted = 0;
   int white = 0;
   for (std::size_t i = 0; i < rgba.size(); i += 4) {
@@ -329,7 +338,7 @@ TEST_CASE("an isometric view blends a translucent FOV over the scene") {
 }
 
 TEST_CASE("render_view_3d_pixels rejects an empty image") {
-  View3dSettings settings;
+  render::View3dSettings settings;
   settings.width = 0;
-  CHECK_THROWS_AS(render_view_3d_pixels({}, settings), std::invalid_argument);
+  CHECK_THROWS_AS(render::render_view_3d_pixels({}, settings), std::invalid_argument);
 }

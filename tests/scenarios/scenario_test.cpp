@@ -18,8 +18,8 @@ using namespace rigdesign::test;
 namespace {
 
 struct UrCleaner {
-  Rig rig = load_rig(source_path("rigs/ur_cleaner.yaml"));
-  SensorLibrary library = load_sensor_library(locate_sensor_library(rig, ""));
+  model::Rig rig = io::load_rig(source_path("rigs/ur_cleaner.yaml"));
+  model::SensorLibrary library = io::load_sensor_library(io::locate_sensor_library(rig, ""));
 };
 
 const UrCleaner& ur_cleaner() {
@@ -27,15 +27,16 @@ const UrCleaner& ur_cleaner() {
   return loaded;
 }
 
-ScenarioResult run(const std::string& name, ObstacleLayerKind layer, bool hit_layer,
-                   const std::function<void(const ScenarioStep&)>& on_update = {},
-                   double d_threshold = HitLayerParams{}.d_threshold) {
-  ScenarioParams params;
+scenarios::ScenarioResult run(
+    const std::string& name, costmap::ObstacleLayerKind layer, bool hit_layer,
+    const std::function<void(const scenarios::ScenarioStep&)>& on_update = {},
+    double d_threshold = costmap::HitLayerParams{}.d_threshold) {
+  scenarios::ScenarioParams params;
   params.costmap.layer = layer;
   params.costmap.use_hit_layer = hit_layer;
   params.costmap.hit.d_threshold = d_threshold;
-  return run_scenario(make_costmap_scenario(name, 1), ur_cleaner().rig, ur_cleaner().library,
-                      params, on_update);
+  return scenarios::run_scenario(scenarios::make_costmap_scenario(name, 1), ur_cleaner().rig,
+                                 ur_cleaner().library, params, on_update);
 }
 
 // Largest Hit Layer count over the cells whose centres lie in the stationary scenario's
@@ -44,15 +45,15 @@ struct CartCells {
   int max_count = 0;
   bool observed = false;
 };
-CartCells cart_cells(const Costmap& costmap) {
+CartCells cart_cells(const costmap::Costmap& costmap) {
   CartCells cells;
-  const GridWindow& window = costmap.hit_layer().counts().window();
+  const costmap::GridWindow& window = costmap.hit_layer().counts().window();
   for (int y = 0; y < window.height; ++y) {
     for (int x = 0; x < window.width; ++x) {
-      const Vec2 c = window.centre_of(x, y);
+      const model::Vec2 c = window.centre_of(x, y);
       if (c.x() < 1.3 || c.x() > 1.7 || c.y() < 0.05 || c.y() > 0.45) continue;
       cells.max_count = std::max<int>(cells.max_count, costmap.hit_layer().counts().at(x, y));
-      cells.observed = cells.observed || costmap.obstacle_grid().at(x, y) == cost::kLethal;
+      cells.observed = cells.observed || costmap.obstacle_grid().at(x, y) == costmap::cost::kLethal;
     }
   }
   return cells;
@@ -62,14 +63,15 @@ CartCells cart_cells(const Costmap& costmap) {
 
 TEST_CASE("collision check: clearance to a hand-placed box within the body's height band",
           "[scenario]") {
-  const TriangleMesh block = test::box_mesh({1.0, -0.2, 0.0}, {1.4, 0.2, 0.5});
-  const TriangleMesh shelf =
-      test::box_mesh({-1.4, -0.2, 1.2}, {-1.0, 0.2, 1.5});                 // above the 1 m body
-  const TriangleMesh floor = test::box_mesh({-5, -5, -0.1}, {5, 5, 0.0});  // top face at z = 0
-  const FootprintCollisionChecker checker({{"block", &block}, {"shelf", &shelf}, {"floor", &floor}},
-                                          HeightBand{0.02, 1.0});
+  const model::TriangleMesh block = test::box_mesh({1.0, -0.2, 0.0}, {1.4, 0.2, 0.5});
+  const model::TriangleMesh shelf =
+      test::box_mesh({-1.4, -0.2, 1.2}, {-1.0, 0.2, 1.5});  // above the 1 m body
+  const model::TriangleMesh floor =
+      test::box_mesh({-5, -5, -0.1}, {5, 5, 0.0});  // top face at z = 0
+  const costmap::FootprintCollisionChecker checker(
+      {{"block", &block}, {"shelf", &shelf}, {"floor", &floor}}, costmap::HeightBand{0.02, 1.0});
   // Axis at the origin: the block's near face is 1.0 m away, the body's radius 0.45 m.
-  Clearance c = checker.clearance({0.0, 0.0}, 0.45);
+  costmap::Clearance c = checker.clearance({0.0, 0.0}, 0.45);
   CHECK(c.distance == Approx(1.0 - 0.45));
   CHECK(c.object == "block");
   // Nearest point is the block's corner (1.0, 0.2): sqrt(0.5^2 + 0.3^2) - 0.45.
@@ -80,45 +82,50 @@ TEST_CASE("collision check: clearance to a hand-placed box within the body's hei
   // 2.0 m away (from x = -1.0 to the block's face at 1.0) counts.
   CHECK(checker.clearance({-1.0, 0.0}, 0.45).distance == Approx(2.0 - 0.45));
   // An overhang inside the band counts even with nothing under it.
-  const TriangleMesh foam = test::box_mesh({0.0, 0.15, 0.37}, {1.2, 0.6, 0.45});
-  const FootprintCollisionChecker overhang({{"foam", &foam}}, HeightBand{0.02, 1.0});
+  const model::TriangleMesh foam = test::box_mesh({0.0, 0.15, 0.37}, {1.2, 0.6, 0.45});
+  const costmap::FootprintCollisionChecker overhang({{"foam", &foam}},
+                                                    costmap::HeightBand{0.02, 1.0});
   CHECK(overhang.clearance({0.6, 0.0}, 0.45).distance == Approx(0.15 - 0.45));
   CHECK(overhang.clearance({0.6, -0.4}, 0.45).distance == Approx(0.55 - 0.45));
-  const FootprintCollisionChecker low_body({{"foam", &foam}}, HeightBand{0.02, 0.3});
+  const costmap::FootprintCollisionChecker low_body({{"foam", &foam}},
+                                                    costmap::HeightBand{0.02, 0.3});
   CHECK(std::isinf(low_body.clearance({0.6, 0.0}, 0.45).distance));
 }
 
 TEST_CASE("path follower: pure pursuit command and the unicycle's exact arc", "[scenario]") {
-  FollowerParams params;  // 0.4 m/s, 1 rad/s, lookahead 0.6 m
+  costmap::FollowerParams params;  // 0.4 m/s, 1 rad/s, lookahead 0.6 m
   // Straight ahead: full speed, no turn.
-  VelocityCommand straight =
-      pursue({{0.0, 0.0}, {0.3, 0.0}, {0.6, 0.0}, {0.9, 0.0}}, Pose2{}, params);
+  costmap::VelocityCommand straight =
+      costmap::pursue({{0.0, 0.0}, {0.3, 0.0}, {0.6, 0.0}, {0.9, 0.0}}, costmap::Pose2{}, params);
   CHECK(straight.linear == Approx(0.4));
   CHECK(straight.angular == Approx(0.0).margin(1e-12));
   // Target (0.6, 0.6): 45 degrees left at 0.6 sqrt 2 m, curvature 2 sin 45 / (0.6 sqrt 2) = 5/3.
-  VelocityCommand left = pursue({{0.0, 0.0}, {0.6, 0.6}}, Pose2{}, params);
+  costmap::VelocityCommand left =
+      costmap::pursue({{0.0, 0.0}, {0.6, 0.6}}, costmap::Pose2{}, params);
   CHECK(left.linear == Approx(0.4));
   CHECK(left.angular == Approx(0.4 * 5.0 / 3.0));
   // Behind the robot: turn on the spot towards it.
-  VelocityCommand behind = pursue({{0.0, 0.0}, {-1.0, 0.1}}, Pose2{}, params);
+  costmap::VelocityCommand behind =
+      costmap::pursue({{0.0, 0.0}, {-1.0, 0.1}}, costmap::Pose2{}, params);
   CHECK(behind.linear == 0.0);
   CHECK(behind.angular == Approx(1.0));
   // A quarter circle of radius 1: from the origin facing +x to (1, 1) facing +y.
-  const Pose2 end = integrate_unicycle(Pose2{}, {1.0, 1.0}, std::acos(-1.0) / 2);
+  const costmap::Pose2 end =
+      costmap::integrate_unicycle(costmap::Pose2{}, {1.0, 1.0}, std::acos(-1.0) / 2);
   CHECK(end.position.x() == Approx(1.0));
   CHECK(end.position.y() == Approx(1.0));
   CHECK(end.yaw == Approx(std::acos(-1.0) / 2));
 }
 
 TEST_CASE("path follower reaches the goal on an empty floor", "[scenario]") {
-  ScenarioDefinition scenario;
+  scenarios::ScenarioDefinition scenario;
   scenario.name = "empty";
   scenario.scene.objects.push_back({"floor", test::box_mesh({-5, -5, -0.1}, {5, 5, 0.0})});
-  scenario.route = {{Vec2(3.0, 1.0), 0.0}};
+  scenario.route = {{model::Vec2(3.0, 1.0), 0.0}};
   scenario.max_duration = 20.0;
-  ScenarioParams params;
-  const ScenarioResult result =
-      run_scenario(scenario, ur_cleaner().rig, ur_cleaner().library, params);
+  scenarios::ScenarioParams params;
+  const scenarios::ScenarioResult result =
+      scenarios::run_scenario(scenario, ur_cleaner().rig, ur_cleaner().library, params);
   CHECK(result.reached_goal);
   CHECK_FALSE(result.collided);
   CHECK(std::isinf(result.min_clearance));  // the floor is below the body's band
@@ -126,12 +133,14 @@ TEST_CASE("path follower reaches the goal on an empty floor", "[scenario]") {
   // sqrt(10) = 3.16 m at 0.4 m/s takes 7.9 s at least; the turn at the start costs little.
   CHECK(result.end_time >= std::sqrt(10.0) / 0.4 - 0.15 / 0.4);
   CHECK(result.end_time <= std::sqrt(10.0) / 0.4 + 2.0);
-  CHECK((result.trajectory.back().pose.position - Vec2(3.0, 1.0)).norm() < params.goal_tolerance);
+  CHECK((result.trajectory.back().pose.position - model::Vec2(3.0, 1.0)).norm() <
+        params.goal_tolerance);
 }
 
 TEST_CASE("paper 1 Fig. 12: without the Hit Layer the robot drives into the foam, with it not",
           "[scenario]") {
-  const ScenarioResult forgetting = run("wall_following", ObstacleLayerKind::obstacle, false);
+  const scenarios::ScenarioResult forgetting =
+      run("wall_following", costmap::ObstacleLayerKind::obstacle, false);
   CHECK(forgetting.collided);
   CHECK(forgetting.collision_object == "foam");
   // Contact is found within one control step: at most 0.4 m/s x 0.05 s = 2 cm deep.
@@ -141,7 +150,8 @@ TEST_CASE("paper 1 Fig. 12: without the Hit Layer the robot drives into the foam
   CHECK(forgetting.collision_position.x() > 3.0 - 0.45);
   CHECK(forgetting.collision_position.x() < 4.2 + 0.45);
 
-  const ScenarioResult remembering = run("wall_following", ObstacleLayerKind::obstacle, true);
+  const scenarios::ScenarioResult remembering =
+      run("wall_following", costmap::ObstacleLayerKind::obstacle, true);
   CHECK_FALSE(remembering.collided);
   CHECK(remembering.reached_goal);
   CHECK(remembering.min_clearance > 0.0);
@@ -149,7 +159,8 @@ TEST_CASE("paper 1 Fig. 12: without the Hit Layer the robot drives into the foam
   CHECK(remembering.min_clearance <= 0.6 - 0.45 + 1e-9);
 
   // Paper 2's voxel layer keeps the foam without help: the lidar's rays pass above its voxels.
-  const ScenarioResult voxels = run("wall_following", ObstacleLayerKind::voxel, false);
+  const scenarios::ScenarioResult voxels =
+      run("wall_following", costmap::ObstacleLayerKind::voxel, false);
   CHECK_FALSE(voxels.collided);
   CHECK(voxels.reached_goal);
 }
@@ -163,17 +174,18 @@ TEST_CASE("stationary: the motion condition keeps the cart's cells while the rob
   bool observed_at_wait_end = true;
   int moving_updates = 0;
   int after_ten_moving = -1;
-  run("stationary", ObstacleLayerKind::obstacle, true, [&](const ScenarioStep& step) {
-    const CartCells cells = cart_cells(*step.costmap);
-    if (std::abs(step.time - 2.8) < 1e-9) CHECK(cells.max_count == kSeen);
-    if (std::abs(step.time - 11.8) < 1e-9) {
-      at_wait_end = cells.max_count;
-      observed_at_wait_end = cells.observed;
-    }
-    if (step.time > 12.0 - 1e-9 && step.velocity_command && ++moving_updates == 10) {
-      after_ten_moving = cells.max_count;
-    }
-  });
+  run("stationary", costmap::ObstacleLayerKind::obstacle, true,
+      [&](const scenarios::ScenarioStep& step) {
+        const CartCells cells = cart_cells(*step.costmap);
+        if (std::abs(step.time - 2.8) < 1e-9) CHECK(cells.max_count == kSeen);
+        if (std::abs(step.time - 11.8) < 1e-9) {
+          at_wait_end = cells.max_count;
+          observed_at_wait_end = cells.observed;
+        }
+        if (step.time > 12.0 - 1e-9 && step.velocity_command && ++moving_updates == 10) {
+          after_ten_moving = cells.max_count;
+        }
+      });
   // Standing still since t = 0, the robot never decrements (eq. 9 skipped): 45 after 9 s of
   // the obstacle layer seeing free space there.
   CHECK(at_wait_end == kSeen);
@@ -185,8 +197,8 @@ TEST_CASE("stationary: the motion condition keeps the cart's cells while the rob
   // (45 of them) take the count from 45 to 0 while it waits.
   int dropped = -1;
   run(
-      "stationary", ObstacleLayerKind::obstacle, true,
-      [&](const ScenarioStep& step) {
+      "stationary", costmap::ObstacleLayerKind::obstacle, true,
+      [&](const scenarios::ScenarioStep& step) {
         if (std::abs(step.time - 5.0) < 1e-9)
           CHECK(cart_cells(*step.costmap).max_count == kSeen - 11);
         if (std::abs(step.time - 11.8) < 1e-9) dropped = cart_cells(*step.costmap).max_count;
@@ -196,23 +208,23 @@ TEST_CASE("stationary: the motion condition keeps the cart's cells while the rob
 }
 
 TEST_CASE("scenario inputs: a rig whose sensors cannot mark is refused", "[scenario]") {
-  Rig rig = ur_cleaner().rig;
-  ScenarioParams params;
+  model::Rig rig = ur_cleaner().rig;
+  scenarios::ScenarioParams params;
   // Only the Azure Kinect, looking straight up from 1.5 m: its rays (65 degrees wide around
   // the vertical) all climb, so none reaches the band 0.1-1.0 m.
   rig.mounts.resize(1);
-  rig.mounts.front().T_robot_sensor = Pose3(Eigen::Translation3d(0.0, 0.0, 1.5)) *
-                                      Eigen::AngleAxisd(-std::acos(-1.0) / 2, Vec3::UnitY());
+  rig.mounts.front().T_robot_sensor = model::Pose3(Eigen::Translation3d(0.0, 0.0, 1.5)) *
+                                      Eigen::AngleAxisd(-std::acos(-1.0) / 2, model::Vec3::UnitY());
   try {
-    check_scenario_inputs(rig, ur_cleaner().library, params);
+    scenarios::check_scenario_inputs(rig, ur_cleaner().library, params);
     FAIL("expected an InputError");
-  } catch (const InputError& error) {
+  } catch (const model::InputError& error) {
     REQUIRE(error.diagnostics().size() == 1);
     CHECK(error.diagnostics().front().field == "mounts");
     CHECK(error.diagnostics().front().where.file == rig.where.file);
   }
-  CHECK_THROWS_AS(make_costmap_scenario("moon", 1), std::invalid_argument);
-  const TimeSummary times = summarize_times({0.004, 0.001, 0.003, 0.002});
+  CHECK_THROWS_AS(scenarios::make_costmap_scenario("moon", 1), std::invalid_argument);
+  const scenarios::TimeSummary times = scenarios::summarize_times({0.004, 0.001, 0.003, 0.002});
   CHECK(times.median == Approx(0.0025));
   CHECK(times.p99 == Approx(0.004));
 }

@@ -9,22 +9,22 @@ using namespace rigdesign;
 
 namespace {
 
-Requirements base() {
-  Requirements requirements;
+model::Requirements base() {
+  model::Requirements requirements;
   requirements.file = "req.yaml";
   requirements.distance = 3.5;
-  requirements.robot_speed = MotionBetweenFrames{1.0, 0.07, {}};
+  requirements.robot_speed = model::MotionBetweenFrames{1.0, 0.07, {}};
   requirements.smallest_obstacle = 0.15;
-  requirements.lighting = {LightCondition::dark, LightCondition::indoor};
-  SectorRequirement back;
+  requirements.lighting = {model::LightCondition::dark, model::LightCondition::indoor};
+  model::SectorRequirement back;
   back.name = "back";
   back.min_floor_coverage = 0.5;
   requirements.sectors = {back};
   return requirements;
 }
 
-RelaxationStep step(const std::string& requirement, double to) {
-  RelaxationStep relaxation;
+model::RelaxationStep step(const std::string& requirement, double to) {
+  model::RelaxationStep relaxation;
   relaxation.requirement = requirement;
   relaxation.to = to;
   relaxation.where = {"policy.yaml", 7, 5};
@@ -34,24 +34,24 @@ RelaxationStep step(const std::string& requirement, double to) {
 }  // namespace
 
 TEST_CASE("relaxing requirements changes the derived satisficing metrics") {
-  Requirements relaxed = relax(base(), step("robot_speed.max_speed", 0.7));
+  model::Requirements relaxed = select::relax(base(), step("robot_speed.max_speed", 0.7));
   CHECK(relaxed.required_frequency() == Approx(10.0));  // 0.7 / 0.07
-  relaxed = relax(relaxed, step("smallest_obstacle.size", 0.2));
+  relaxed = select::relax(relaxed, step("smallest_obstacle.size", 0.2));
   CHECK(*relaxed.smallest_obstacle == 0.2);
-  relaxed = relax(relaxed, step("sectors.back.min_floor_coverage", 0.3));
+  relaxed = select::relax(relaxed, step("sectors.back.min_floor_coverage", 0.3));
   CHECK(relaxed.sectors[0].min_floor_coverage == 0.3);
-  RelaxationStep drop;
+  model::RelaxationStep drop;
   drop.requirement = "lighting";
-  drop.drop = LightCondition::dark;
-  relaxed = relax(relaxed, drop);
-  CHECK(relaxed.lighting == std::vector<LightCondition>{LightCondition::indoor});
+  drop.drop = model::LightCondition::dark;
+  relaxed = select::relax(relaxed, drop);
+  CHECK(relaxed.lighting == std::vector<model::LightCondition>{model::LightCondition::indoor});
 }
 
 TEST_CASE("a step that tightens, names an unknown requirement or leaves the range is bad input") {
-  const auto message = [](const RelaxationStep& s) {
+  const auto message = [](const model::RelaxationStep& s) {
     try {
-      relax(base(), s);
-    } catch (const InputError& error) {
+      select::relax(base(), s);
+    } catch (const model::InputError& error) {
       return error.diagnostics().front().message();
     }
     return std::string("no error");
@@ -69,9 +69,10 @@ TEST_CASE("a step that tightens, names an unknown requirement or leaves the rang
 }
 
 TEST_CASE("check_policy applies every step in order") {
-  RelaxationPolicy policy;
+  model::RelaxationPolicy policy;
   policy.steps = {step("robot_speed.max_speed", 0.8), step("robot_speed.max_speed", 0.6)};
-  CHECK(check_policy(base(), policy).robot_speed->speed == 0.6);
+  CHECK(select::check_policy(base(), policy).robot_speed->speed == 0.6);
   policy.steps = {step("robot_speed.max_speed", 0.6), step("robot_speed.max_speed", 0.8)};
-  CHECK_THROWS_AS(check_policy(base(), policy), InputError);  // the second step tightens
+  CHECK_THROWS_AS(select::check_policy(base(), policy),
+                  model::InputError);  // the second step tightens
 }

@@ -8,34 +8,35 @@
 using namespace rigdesign;
 
 TEST_CASE("cost model: the cheapest transfer and CPU whose capacity exceeds the load") {
-  const std::vector<PricedCapacity> transfer = {{"onboard", 1.0e9, 0, {}}, {"card", 4.0e9, 80, {}}};
-  const std::vector<PricedCapacity> cpus = {
+  const std::vector<model::PricedCapacity> transfer = {{"onboard", 1.0e9, 0, {}},
+                                                       {"card", 4.0e9, 80, {}}};
+  const std::vector<model::PricedCapacity> cpus = {
       {"small", 2.0, 300, {}}, {"big", 8.0, 900, {}}, {"mid", 4.0, 500, {}}};
   // 100 MB/s = 0.8 Gbit/s fits the onboard link; 2.5 cores need the 4-core CPU.
-  CostBreakdown cost = rig_cost({1000.0, 100e6, 2.5, 2}, transfer, cpus);
+  select::CostBreakdown cost = select::rig_cost({1000.0, 100e6, 2.5, 2}, transfer, cpus);
   CHECK(cost.feasible);
   CHECK(cost.transfer_id == "onboard");
   CHECK(cost.cpu_id == "mid");
   CHECK(cost.total == 1000.0 + 0.0 + 500.0);  // C = C_s + C_t + C_c
   // 125 MB/s is exactly 1 Gbit/s: capacity must exceed the load, so the card is bought.
-  cost = rig_cost({1000.0, 125e6, 2.0, 2}, transfer, cpus);
+  cost = select::rig_cost({1000.0, 125e6, 2.0, 2}, transfer, cpus);
   CHECK(cost.transfer_id == "card");
   CHECK(cost.cpu_id == "mid");  // 2.0 cores do not exceed the 2-core CPU either
   CHECK(cost.total == 1000.0 + 80.0 + 500.0);
   // Nothing carries 10 cores.
-  CHECK_FALSE(rig_cost({0.0, 0.0, 10.0, 1}, transfer, cpus).feasible);
-  CHECK(cheapest_exceeding(cpus, 8.0) == nullptr);
+  CHECK_FALSE(select::rig_cost({0.0, 0.0, 10.0, 1}, transfer, cpus).feasible);
+  CHECK(select::cheapest_exceeding(cpus, 8.0) == nullptr);
 }
 
 namespace {
 
 // A random small catalog: 2-4 slots of 1-3 options, 6 angles on a 12 x 4 grid, random
 // coverage bits, one or two sectors with random thresholds, random hardware.
-SearchProblem random_problem(std::mt19937& rng) {
+select::SearchProblem random_problem(std::mt19937& rng) {
   std::uniform_int_distribution<int> slots(2, 4), options(1, 3), coin(0, 1);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  SearchProblem problem;
-  const RasterGrid grid{12, 4};
+  select::SearchProblem problem;
+  const geometry::RasterGrid grid{12, 4};
   const int angles = 6;
   problem.grids.assign(angles, grid);
   const int slot_count = slots(rng);
@@ -43,13 +44,13 @@ SearchProblem random_problem(std::mt19937& rng) {
     problem.slots.emplace_back();
     const int option_count = options(rng);
     for (int o = 0; o < option_count; ++o) {
-      SearchOption option;
+      select::SearchOption option;
       option.price = std::round(50 + 950 * unit(rng));
       option.bandwidth = 1e8 * unit(rng);
       option.cpu = 2.0 * unit(rng);
       const double density = 0.2 + 0.5 * unit(rng);
       for (int a = 0; a < angles; ++a) {
-        SectionRaster raster(grid);
+        geometry::SectionRaster raster(grid);
         for (int c = 0; c < grid.columns; ++c) {
           int run_start = -1;
           for (int r = 0; r <= grid.rows; ++r) {
@@ -69,7 +70,7 @@ SearchProblem random_problem(std::mt19937& rng) {
   }
   const int sectors = 1 + coin(rng);
   for (int s = 0; s < sectors; ++s) {
-    SearchSector sector;
+    select::SearchSector sector;
     for (int a = 0; a < angles; ++a) {
       if (unit(rng) < 0.5) sector.angles.push_back(a);
     }
@@ -89,9 +90,9 @@ TEST_CASE("branch and bound finds the brute-force optimum on 200 random small ca
   int feasible = 0;
   for (int trial = 0; trial < 200; ++trial) {
     INFO("trial " << trial);
-    const SearchProblem problem = random_problem(rng);
-    const SearchResult exhaustive = brute_force(problem);
-    const SearchResult bounded = branch_and_bound(problem);
+    const select::SearchProblem problem = random_problem(rng);
+    const select::SearchResult exhaustive = select::brute_force(problem);
+    const select::SearchResult bounded = select::branch_and_bound(problem);
     REQUIRE(bounded.found == exhaustive.found);
     if (!exhaustive.found) continue;
     ++feasible;
@@ -104,10 +105,10 @@ TEST_CASE("branch and bound finds the brute-force optimum on 200 random small ca
 TEST_CASE("an excluded assignment is skipped and the next cheapest returned") {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 40; ++trial) {
-    const SearchProblem problem = random_problem(rng);
-    const SearchResult first = branch_and_bound(problem);
+    const select::SearchProblem problem = random_problem(rng);
+    const select::SearchResult first = select::branch_and_bound(problem);
     if (!first.found) continue;
-    const SearchResult second = branch_and_bound(problem, {first.choice});
+    const select::SearchResult second = select::branch_and_bound(problem, {first.choice});
     if (second.found) {
       CHECK(second.choice != first.choice);
       CHECK(second.cost.total >= first.cost.total);

@@ -2,8 +2,8 @@
 
 namespace rigdesign::test {
 
-TriangleMesh box_mesh(const Vec3& low, const Vec3& high) {
-  TriangleMesh mesh;
+model::TriangleMesh box_mesh(const model::Vec3& low, const model::Vec3& high) {
+  model::TriangleMesh mesh;
   for (int i = 0; i < 8; ++i) {  // corner i: bit 0 picks x, bit 1 y, bit 2 z
     mesh.vertices.emplace_back(i & 1 ? high.x() : low.x(), i & 2 ? high.y() : low.y(),
                                i & 4 ? high.z() : low.z());

@@ -6,6 +6,6 @@
 namespace rigdesign::test {
 
 /// An axis-aligned box [low, high] as 12 triangles, faces wound outwards.
-TriangleMesh box_mesh(const Vec3& low, const Vec3& high);
+model::TriangleMesh box_mesh(const model::Vec3& low, const model::Vec3& high);
 
 }  // namespace rigdesign::test

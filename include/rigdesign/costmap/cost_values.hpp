@@ -3,7 +3,7 @@
 /// grids, thresholds and exports compare one to one with a nav2 stack.
 #include <cstdint>
 
-namespace rigdesign::cost {
+namespace rigdesign::costmap::cost {
 
 constexpr std::uint8_t kFree = 0;              ///< FREE_SPACE
 constexpr std::uint8_t kMaxNonObstacle = 252;  ///< MAX_NON_OBSTACLE: the top of the decaying range
@@ -11,4 +11,4 @@ constexpr std::uint8_t kInscribed = 253;  ///< INSCRIBED_INFLATED_OBSTACLE: the 
 constexpr std::uint8_t kLethal = 254;     ///< LETHAL_OBSTACLE: an obstacle in the cell
 constexpr std::uint8_t kUnknown = 255;    ///< NO_INFORMATION
 
-}  // namespace rigdesign::cost
+}  // namespace rigdesign::costmap::cost

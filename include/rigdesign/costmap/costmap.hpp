@@ -12,7 +12,7 @@
 #include "rigdesign/costmap/voxel_layer.hpp"
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 enum class ObstacleLayerKind { obstacle, voxel };
 
@@ -34,7 +34,7 @@ struct CostmapParams {
 /// from, or {"(command line)"}): resolution <= 0, a window smaller than the footprint
 /// (size < 2 robot_radius), an empty z band, hit counts outside 16 bits, and so on. Field
 /// names are `prefix` + the struct's member path ("resolution", "voxel.z_max", "hit.hit_max").
-void check_costmap_params(const CostmapParams& params, const SourceLocation& where,
+void check_costmap_params(const CostmapParams& params, const model::SourceLocation& where,
                           const std::string& prefix = {});
 
 class Costmap {
@@ -42,14 +42,14 @@ class Costmap {
   /// Checks the parameters (check_costmap_params with `where`); the window starts centred on
   /// the world origin, every layer empty (unknown or free as the layer defines).
   explicit Costmap(const CostmapParams& params,
-                   const SourceLocation& where = SourceLocation{"(command line)"});
+                   const model::SourceLocation& where = model::SourceLocation{"(command line)"});
 
   /// One step at `time` [s] with the robot at `T_world_robot`: centre every layer's window on
   /// the robot (the overlap kept, entering cells reset), clear then mark with every
   /// observation, project the voxels, apply the Hit Layer (its motion condition from the
   /// robot's positions and `velocity_command`), copy into the master grid, mark the Hit
   /// Layer's cells lethal there, and inflate.
-  void update(double time, const Pose3& T_world_robot,
+  void update(double time, const model::Pose3& T_world_robot,
               std::span<const CloudObservation> observations, bool velocity_command = false);
 
   const CostmapParams& params() const { return params_; }
@@ -75,4 +75,4 @@ class Costmap {
   bool decremented_ = false;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

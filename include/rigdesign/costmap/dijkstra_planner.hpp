@@ -8,7 +8,7 @@
 
 #include "rigdesign/costmap/rolling_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 struct PlannerParams {
   /// w: how much a cost of 252 adds to a step, as a multiple of its length.
@@ -21,11 +21,12 @@ struct PlannerParams {
 
 struct PlannedPath {
   bool found = false;
-  std::vector<Vec2> waypoints_world;  ///< cell centres from the start cell to the goal cell [m]
-  std::vector<CellIndex> cells;       ///< the same cells as window indices
-  double length = 0.0;                ///< [m] along the waypoints
-  double cost = 0.0;                  ///< sum of step costs [m]
-  std::string failure;                ///< why there is no path, when !found
+  std::vector<model::Vec2>
+      waypoints_world;           ///< cell centres from the start cell to the goal cell [m]
+  std::vector<CellIndex> cells;  ///< the same cells as window indices
+  double length = 0.0;           ///< [m] along the waypoints
+  double cost = 0.0;             ///< sum of step costs [m]
+  std::string failure;           ///< why there is no path, when !found
 };
 
 /// The cheapest path from the cell holding `start_world` to the cell holding `goal_world`.
@@ -34,7 +35,7 @@ struct PlannedPath {
 /// not cut the corner of an impassable cell. Not found (with the reason) when either point
 /// is outside the window, the goal is impassable or walled off. Deterministic: ties go to
 /// the lower cell index.
-PlannedPath plan_dijkstra(const CostGrid& master, const Vec2& start_world, const Vec2& goal_world,
-                          const PlannerParams& params = {});
+PlannedPath plan_dijkstra(const CostGrid& master, const model::Vec2& start_world,
+                          const model::Vec2& goal_world, const PlannerParams& params = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

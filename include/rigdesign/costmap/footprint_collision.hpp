@@ -10,12 +10,12 @@
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 /// A named mesh to check against (a scene object at the time of the check).
 struct NamedMesh {
   std::string name;
-  const TriangleMesh* mesh = nullptr;  ///< not owned; only read while building the checker
+  const model::TriangleMesh* mesh = nullptr;  ///< not owned; only read while building the checker
 };
 
 /// The body's vertical extent [m], world z: from `bottom` (the lowest part above the floor,
@@ -42,15 +42,15 @@ class FootprintCollisionChecker {
 
   /// Clearance of a vertical cylinder of `radius` [m] whose axis stands at `centre_world` [m].
   /// The body collides when the distance is negative. Exact; O(pieces).
-  Clearance clearance(const Vec2& centre_world, double radius) const;
+  Clearance clearance(const model::Vec2& centre_world, double radius) const;
 
   std::size_t pieces() const { return pieces_.size(); }
   /// The floor-plane outlines of every piece, for drawing.
-  std::vector<std::vector<Vec2>> outlines() const;
+  std::vector<std::vector<model::Vec2>> outlines() const;
 
  private:
   struct Piece {
-    std::vector<Vec2> polygon;  ///< convex, in order; 1 to 5 vertices
+    std::vector<model::Vec2> polygon;  ///< convex, in order; 1 to 5 vertices
     Eigen::AlignedBox2d bounds;
     int object = 0;
   };
@@ -60,6 +60,6 @@ class FootprintCollisionChecker {
 
 /// Distance [m] from `p` to a convex polygon given by its vertices in order (0 inside it);
 /// one vertex is a point, two a segment. Exposed for tests.
-double distance_to_convex_polygon(const Vec2& p, const std::vector<Vec2>& polygon);
+double distance_to_convex_polygon(const model::Vec2& p, const std::vector<model::Vec2>& polygon);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -11,7 +11,7 @@
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/rolling_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 struct HitLayerParams {
   int hit = 3;         ///< added per update where the obstacle grid is occupied (paper 1)
@@ -38,14 +38,14 @@ class MotionMonitor {
  public:
   explicit MotionMonitor(const HitLayerParams& params = {}) : params_(params) {}
   /// Records the robot's position [m] at `time` [s] (non-decreasing).
-  void record(double time, const Vec2& position_world);
+  void record(double time, const model::Vec2& position_world);
   /// True while the robot counts as moving (see the class comment).
   bool moving(bool velocity_command) const;
 
  private:
   struct Sample {
     double time;
-    Vec2 position;
+    model::Vec2 position;
   };
   HitLayerParams params_;
   std::deque<Sample> samples_;
@@ -60,13 +60,13 @@ class HitLayer {
   /// One step: records the robot position, then applies eqs. (8) and (9) to `obstacles` (a grid
   /// on this layer's window), decrementing only when the motion condition says the robot
   /// moves. Returns whether it decremented.
-  bool update(const CostGrid& obstacles, double time, const Vec2& robot_world,
+  bool update(const CostGrid& obstacles, double time, const model::Vec2& robot_world,
               bool velocity_command);
 
   /// Sets cost::kLethal in `master` (on this layer's window) wherever the count is positive.
   void mark(CostGrid& master) const;
 
-  void recentre(const Vec2& centre_world) { counts_.recentre(centre_world); }
+  void recentre(const model::Vec2& centre_world) { counts_.recentre(centre_world); }
   void move_origin(const Eigen::Vector2i& origin_cell) { counts_.move_origin(origin_cell); }
 
   const RollingGrid<std::uint16_t>& counts() const { return counts_; }
@@ -79,4 +79,4 @@ class HitLayer {
   RollingGrid<std::uint16_t> counts_;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -12,7 +12,7 @@
 
 #include "rigdesign/costmap/rolling_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 struct InflationParams {
   double inscribed_radius =
@@ -56,4 +56,4 @@ class InflationLayer {
   std::vector<double> squared_;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

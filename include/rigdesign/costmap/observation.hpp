@@ -4,7 +4,7 @@
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 /// Per-source settings. Defaults are nav2's except min_obstacle_height (see its comment).
 struct ObservationSource {
@@ -26,7 +26,7 @@ struct ObservationSource {
   }
   /// Whether an end point marks: in the height band, and its distance from the sensor origin
   /// within [obstacle_min_range, obstacle_max_range]. The 2D and 3D layers share this rule.
-  bool marks(const Vec3& p_world, const Vec3& origin_world) const {
+  bool marks(const model::Vec3& p_world, const model::Vec3& origin_world) const {
     const double squared = (p_world - origin_world).squaredNorm();
     return in_height_band(p_world.z()) && squared >= obstacle_min_range * obstacle_min_range &&
            squared <= obstacle_max_range * obstacle_max_range;
@@ -36,11 +36,11 @@ struct ObservationSource {
 /// A cloud in any frame and the transform to the world; the cloud's `origin` is the sensor
 /// origin in the cloud's frame (PointCloud's VIEWPOINT), where every ray starts.
 struct CloudObservation {
-  const PointCloud* cloud = nullptr;  ///< not owned; must outlive the update call
+  const model::PointCloud* cloud = nullptr;  ///< not owned; must outlive the update call
   /// Maps cloud-frame points into the world frame: T_world_robot for robot-frame clouds,
   /// identity for world-frame ones.
-  Pose3 T_world_cloud = Pose3::Identity();
+  model::Pose3 T_world_cloud = model::Pose3::Identity();
   ObservationSource source;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

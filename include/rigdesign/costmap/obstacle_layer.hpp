@@ -9,7 +9,7 @@
 #include "rigdesign/costmap/observation.hpp"
 #include "rigdesign/costmap/rolling_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 struct ObstacleLayerParams {
   /// nav2's `track_unknown_space`: cells start (and enter the window) unknown rather than free.
@@ -26,7 +26,7 @@ class ObstacleLayer {
   /// segment crosses) and clipped to the window. Deterministic.
   void update(std::span<const CloudObservation> observations);
 
-  void recentre(const Vec2& centre_world) { grid_.recentre(centre_world); }
+  void recentre(const model::Vec2& centre_world) { grid_.recentre(centre_world); }
   void move_origin(const Eigen::Vector2i& origin_cell) { grid_.move_origin(origin_cell); }
 
   /// cost::kLethal, cost::kFree or cost::kUnknown per cell.
@@ -37,4 +37,4 @@ class ObstacleLayer {
   CostGrid grid_;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

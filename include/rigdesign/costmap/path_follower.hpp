@@ -6,11 +6,11 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 /// A planar pose: position [m] and heading [rad] about +z, world frame.
 struct Pose2 {
-  Vec2 position = Vec2::Zero();
+  model::Vec2 position = model::Vec2::Zero();
   double yaw = 0.0;
 };
 
@@ -33,10 +33,10 @@ struct VelocityCommand {
 /// `pose`: the first waypoint after the nearest one that lies at least `lookahead` away (else
 /// the last), curvature 2 sin(alpha) / distance, speed reduced so the angular speed stays
 /// within its limit. An empty path gives a zero command.
-VelocityCommand pursue(const std::vector<Vec2>& path_world, const Pose2& pose,
+VelocityCommand pursue(const std::vector<model::Vec2>& path_world, const Pose2& pose,
                        const FollowerParams& params);
 
 /// Moves a unicycle for `dt` [s] under a constant command (exact arc).
 Pose2 integrate_unicycle(const Pose2& pose, const VelocityCommand& command, double dt);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -12,7 +12,7 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 /// A cell of a window: 0 <= x < width, 0 <= y < height.
 struct CellIndex {
@@ -30,7 +30,7 @@ struct GridWindow {
   Eigen::Vector2i origin_cell = Eigen::Vector2i::Zero();  ///< lattice index of cell (0, 0)
 
   /// World position of the lower-left corner of cell (0, 0) [m] (map_server's `origin`).
-  Vec2 origin() const { return origin_cell.cast<double>() * resolution; }
+  model::Vec2 origin() const { return origin_cell.cast<double>() * resolution; }
   std::size_t size() const {
     return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   }
@@ -40,20 +40,22 @@ struct GridWindow {
   }
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
   /// Lattice index of the cell holding a world point: floor(p / r).
-  Eigen::Vector2i lattice_of(const Vec2& p_world) const {
+  Eigen::Vector2i lattice_of(const model::Vec2& p_world) const {
     return {static_cast<int>(std::floor(p_world.x() / resolution)),
             static_cast<int>(std::floor(p_world.y() / resolution))};
   }
   /// The window cell holding a world point, if inside the window.
-  std::optional<CellIndex> cell_of(const Vec2& p_world) const {
+  std::optional<CellIndex> cell_of(const model::Vec2& p_world) const {
     const Eigen::Vector2i local = lattice_of(p_world) - origin_cell;
     if (!contains(local.x(), local.y())) return std::nullopt;
     return CellIndex{local.x(), local.y()};
   }
   /// World position of a cell's centre [m].
-  Vec2 centre_of(int x, int y) const { return origin() + resolution * Vec2(x + 0.5, y + 0.5); }
+  model::Vec2 centre_of(int x, int y) const {
+    return origin() + resolution * model::Vec2(x + 0.5, y + 0.5);
+  }
   /// The origin that puts the lattice cell holding `centre_world` at cell (width/2, height/2).
-  Eigen::Vector2i origin_centred_on(const Vec2& centre_world) const {
+  Eigen::Vector2i origin_centred_on(const model::Vec2& centre_world) const {
     return lattice_of(centre_world) - Eigen::Vector2i(width / 2, height / 2);
   }
 };
@@ -121,7 +123,9 @@ class RollingGrid {
     window_.origin_cell = origin_cell;
   }
   /// Centres the window on a world point [m] (see GridWindow::origin_centred_on).
-  void recentre(const Vec2& centre_world) { move_origin(window_.origin_centred_on(centre_world)); }
+  void recentre(const model::Vec2& centre_world) {
+    move_origin(window_.origin_centred_on(centre_world));
+  }
 
  private:
   GridWindow window_;
@@ -133,4 +137,4 @@ class RollingGrid {
 /// A costmap layer's grid (values from cost_values.hpp).
 using CostGrid = RollingGrid<std::uint8_t>;
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -8,7 +8,7 @@
 
 #include "rigdesign/costmap/rolling_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 enum class VoxelState : std::uint8_t { unknown = 0, free = 1, occupied = 2 };
 
@@ -50,7 +50,9 @@ class RollingVoxelGrid {
 
   /// Moves the window (see RollingGrid::move_origin); entering columns become unknown.
   void move_origin(const Eigen::Vector2i& origin_cell);
-  void recentre(const Vec2& centre_world) { move_origin(window_.origin_centred_on(centre_world)); }
+  void recentre(const model::Vec2& centre_world) {
+    move_origin(window_.origin_centred_on(centre_world));
+  }
   void reset();
 
   /// The lattice key of window voxel (x, y, z).
@@ -58,7 +60,7 @@ class RollingVoxelGrid {
     return {window_.origin_cell.x() + x, window_.origin_cell.y() + y, z};
   }
   /// The lattice key of the voxel holding a world point (whether or not it is in the window).
-  VoxelKey key_at(const Vec3& p_world) const;
+  VoxelKey key_at(const model::Vec3& p_world) const;
   /// Every voxel in the given state, as lattice keys in ascending order.
   std::vector<VoxelKey> keys_in_state(VoxelState state) const;
 
@@ -71,4 +73,4 @@ class RollingVoxelGrid {
   std::vector<std::uint8_t> scratch_;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

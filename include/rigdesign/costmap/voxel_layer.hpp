@@ -9,7 +9,7 @@
 #include "rigdesign/costmap/rolling_grid.hpp"
 #include "rigdesign/costmap/rolling_voxel_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::costmap {
 
 struct VoxelLayerParams {
   double z_min = 0.0;          ///< [m] world z of the band's bottom
@@ -49,7 +49,7 @@ class VoxelLayer {
   /// cost::kUnknown or cost::kFree per paper 2's rule.
   void project(CostGrid& grid) const;
 
-  void recentre(const Vec2& centre_world) { grid_.recentre(centre_world); }
+  void recentre(const model::Vec2& centre_world) { grid_.recentre(centre_world); }
   void move_origin(const Eigen::Vector2i& origin_cell) { grid_.move_origin(origin_cell); }
 
   const RollingVoxelGrid& grid() const { return grid_; }
@@ -61,4 +61,4 @@ class VoxelLayer {
   RollingVoxelGrid grid_;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::costmap

@@ -5,11 +5,13 @@
 #include "rigdesign/filters/ransac_plane.hpp"
 #include "rigdesign/filters/voxel_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 
-PointCloud remove_floor_1(const PointCloud& cloud, const FloorRemoval1Params& params = {});
-PointCloud remove_floor_2(const PointCloud& cloud, const FloorRemoval2Params& params = {});
-PointCloud mark_negative_obstacles(const PointCloud& cloud,
-                                   const NegativeObstacleParams& params = {});
+model::PointCloud remove_floor_1(const model::PointCloud& cloud,
+                                 const model::FloorRemoval1Params& params = {});
+model::PointCloud remove_floor_2(const model::PointCloud& cloud,
+                                 const model::FloorRemoval2Params& params = {});
+model::PointCloud mark_negative_obstacles(const model::PointCloud& cloud,
+                                          const model::NegativeObstacleParams& params = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

@@ -4,12 +4,13 @@
 #include "rigdesign/model/filter_params.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 
-PointCloud pass_through(const PointCloud& cloud, const PassThroughParams& params = {});
+model::PointCloud pass_through(const model::PointCloud& cloud,
+                               const model::PassThroughParams& params = {});
 
 /// Indices of the points pass_through would keep.
-std::vector<std::uint32_t> pass_through_indices(const PointCloud& cloud,
-                                                const PassThroughParams& params);
+std::vector<std::uint32_t> pass_through_indices(const model::PointCloud& cloud,
+                                                const model::PassThroughParams& params);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

@@ -9,7 +9,7 @@
 #include "rigdesign/filters/floor_removal.hpp"
 #include "rigdesign/filters/statistical_outlier.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 
 /// Paper 1's four pipelines, read from its text (Fig. 3): noise removal (SOR), size
 /// reduction (voxel grid) and floor removal in different orders, the fourth with floor
@@ -17,7 +17,7 @@ namespace rigdesign {
 /// P2 = voxel grid, SOR, floor removal 1; P3 = voxel grid, floor removal 1, SOR (SOR on the
 /// fewest points); P4 = voxel grid, SOR, floor removal 2. Paper defaults in every stage.
 /// Returns nothing for another name.
-std::optional<Pipeline> preset_pipeline(const std::string& name);
+std::optional<model::Pipeline> preset_pipeline(const std::string& name);
 
 struct StageRun {
   std::string stage;
@@ -27,9 +27,9 @@ struct StageRun {
 };
 
 /// Runs the stages in order; `runs` receives one entry per stage.
-PointCloud run_pipeline(const Pipeline& pipeline, const PointCloud& input,
-                        std::vector<StageRun>* runs = nullptr);
+model::PointCloud run_pipeline(const model::Pipeline& pipeline, const model::PointCloud& input,
+                               std::vector<StageRun>* runs = nullptr);
 
-PointCloud run_stage(const StageParams& stage, const PointCloud& cloud);
+model::PointCloud run_stage(const model::StageParams& stage, const model::PointCloud& cloud);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

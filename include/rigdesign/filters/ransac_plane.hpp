@@ -9,7 +9,7 @@
 #include "rigdesign/model/filter_params.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 
 struct PlaneFit {
   bool found = false;
@@ -21,11 +21,12 @@ struct PlaneFit {
 
 /// Fits a plane to `cloud.points[subset[i]]` (all points when `subset` is null); inliers
 /// are indices into the cloud.
-PlaneFit fit_plane_ransac(const PointCloud& cloud, const RansacPlaneParams& params = {},
+PlaneFit fit_plane_ransac(const model::PointCloud& cloud,
+                          const model::RansacPlaneParams& params = {},
                           const std::vector<std::uint32_t>* subset = nullptr);
 
 /// Indices of the cloud's points within `threshold` of the plane.
-std::vector<std::uint32_t> points_near_plane(const PointCloud& cloud, const PlaneFit& plane,
+std::vector<std::uint32_t> points_near_plane(const model::PointCloud& cloud, const PlaneFit& plane,
                                              double threshold);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

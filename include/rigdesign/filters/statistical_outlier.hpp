@@ -9,16 +9,17 @@
 #include "rigdesign/model/filter_params.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 
 /// Indices of the points kept, in input order.
-std::vector<std::uint32_t> statistical_outlier_inliers(const PointCloud& cloud,
-                                                       const StatisticalOutlierParams& params = {});
+std::vector<std::uint32_t> statistical_outlier_inliers(
+    const model::PointCloud& cloud, const model::StatisticalOutlierParams& params = {});
 
-PointCloud statistical_outlier_removal(const PointCloud& cloud,
-                                       const StatisticalOutlierParams& params = {});
+model::PointCloud statistical_outlier_removal(const model::PointCloud& cloud,
+                                              const model::StatisticalOutlierParams& params = {});
 
 /// The cloud's points at `indices`, keeping origin and orientation.
-PointCloud select_points(const PointCloud& cloud, const std::vector<std::uint32_t>& indices);
+model::PointCloud select_points(const model::PointCloud& cloud,
+                                const std::vector<std::uint32_t>& indices);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

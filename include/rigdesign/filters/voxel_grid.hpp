@@ -4,11 +4,12 @@
 #include "rigdesign/model/filter_params.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
-namespace rigdesign {
+namespace rigdesign::filters {
 
 /// Throws InputError (field "voxel_grid.leaf") when the leaf is <= 0 or so small that a
 /// voxel index along an axis would not fit in 21 bits (PCL's limit is the same idea):
 /// refused, never wrapped around.
-PointCloud voxel_grid(const PointCloud& cloud, const VoxelGridParams& params = {});
+model::PointCloud voxel_grid(const model::PointCloud& cloud,
+                             const model::VoxelGridParams& params = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::filters

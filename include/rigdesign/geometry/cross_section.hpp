@@ -5,7 +5,7 @@
 #include "rigdesign/geometry/interval_set.hpp"
 #include "rigdesign/geometry/mounted_fov.hpp"
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 
 struct SectionFrame {
   double theta = 0.0;  ///< [rad] azimuth, counter-clockwise from x
@@ -16,7 +16,7 @@ struct SectionFrame {
   double width() const { return d - r; }
   double area() const { return (d - r) * h; }
   /// Robot-frame point of section coordinates (rho, z).
-  Vec3 point(double rho, double z) const;
+  model::Vec3 point(double rho, double z) const;
 };
 
 SectionFrame section_frame(const BodyOccluder& body, double theta, double distance_of_interest);
@@ -27,4 +27,4 @@ IntervalSet column_coverage(const MountedFov& fov, const SectionFrame& frame, do
 /// The rho intervals in [r, d] that `fov` sees on the floor line z = 0.
 IntervalSet floor_coverage(const MountedFov& fov, const SectionFrame& frame);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 
 class IntervalSet {
  public:
@@ -25,4 +25,4 @@ class IntervalSet {
   std::vector<Interval> intervals_;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

@@ -10,41 +10,43 @@
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/sensor.hpp"
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 
 class MountedFov {
  public:
-  MountedFov(const SensorMode& mode, const Pose3& T_robot_sensor, const BodyOccluder& body);
+  MountedFov(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
+             const BodyOccluder& body);
 
   /// True when the sensor measures `p_robot`: inside its FOV and range and not behind the body.
-  bool sees(const Vec3& p_robot) const;
+  bool sees(const model::Vec3& p_robot) const;
 
   /// The parameters t in [t_min, t_max] at which the line start + t * direction is seen,
   /// exact up to floating point: every t where coverage can change (a root of the range
   /// spheres, FOV boundary planes and cones, or the body's silhouette) splits the line and
   /// each piece is tested once.
-  IntervalSet covered_along(const Vec3& start, const Vec3& direction, double t_min,
+  IntervalSet covered_along(const model::Vec3& start, const model::Vec3& direction, double t_min,
                             double t_max) const;
 
-  const Vec3& origin() const { return origin_; }
+  const model::Vec3& origin() const { return origin_; }
   /// False when the FOV certainly misses the vertical half-plane at azimuth `theta` (a
   /// conservative test: true does not promise coverage).
   bool may_reach_azimuth(double theta) const;
 
   /// False when no direction in the FOV can reach the body, so occlusion can be skipped.
   bool may_be_occluded() const { return may_be_occluded_; }
-  const Pose3& pose() const { return T_robot_sensor_; }
-  const SensorMode& mode() const { return *mode_; }
+  const model::Pose3& pose() const { return T_robot_sensor_; }
+  const model::SensorMode& mode() const { return *mode_; }
 
  private:
-  bool in_fov(const Vec3& q_sensor) const;
+  bool in_fov(const model::Vec3& q_sensor) const;
   bool rays_can_reach(const BodyOccluder& body) const;
-  void append_fov_roots(const Vec3& c, const Vec3& w, std::vector<double>& roots) const;
+  void append_fov_roots(const model::Vec3& c, const model::Vec3& w,
+                        std::vector<double>& roots) const;
 
-  const SensorMode* mode_;
-  Pose3 T_robot_sensor_;
-  Mat3 R_sensor_robot_;
-  Vec3 origin_;
+  const model::SensorMode* mode_;
+  model::Pose3 T_robot_sensor_;
+  model::Mat3 R_sensor_robot_;
+  model::Vec3 origin_;
   const BodyOccluder* body_;
   // Shape constants, precomputed: tangents of half-angles, sines of elevation limits.
   double tan_half_h_ = 0.0;
@@ -60,4 +62,4 @@ class MountedFov {
   void bound_azimuths();
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

@@ -8,7 +8,7 @@
 
 #include "rigdesign/geometry/cross_section.hpp"
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 
 struct TessellationSettings {
   double tolerance = 1e-3;     ///< [m] largest chord error of a curved boundary
@@ -16,7 +16,7 @@ struct TessellationSettings {
   double min_gap = 1e-4;       ///< [m] narrowest column spacing, at topology changes
 };
 
-using Polygon2 = std::vector<Vec2>;  ///< counter-clockwise vertices (rho, z)
+using Polygon2 = std::vector<model::Vec2>;  ///< counter-clockwise vertices (rho, z)
 
 std::vector<Polygon2> section_polygons(const MountedFov& fov, const SectionFrame& frame,
                                        const TessellationSettings& settings = {});
@@ -25,4 +25,4 @@ std::vector<Polygon2> section_polygons(const MountedFov& fov, const SectionFrame
 /// exact-kernel polygons [m^2].
 double union_area(const std::vector<std::vector<Polygon2>>& per_sensor);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

@@ -8,7 +8,7 @@
 
 #include "rigdesign/geometry/cross_section.hpp"
 
-namespace rigdesign {
+namespace rigdesign::geometry {
 
 struct RasterGrid {
   int columns = 300;  ///< cells along rho
@@ -47,4 +47,4 @@ class SectionRaster {
 /// Rasterises what `fov` sees in `frame` (cells and the floor).
 SectionRaster rasterize(const MountedFov& fov, const SectionFrame& frame, const RasterGrid& grid);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::geometry

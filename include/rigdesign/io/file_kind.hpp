@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 enum class FileKind { sensor_library, rig, requirements, catalog, policy };
 
@@ -13,4 +13,4 @@ FileKind detect_file_kind(const std::string& path);
 
 std::string to_string(FileKind kind);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

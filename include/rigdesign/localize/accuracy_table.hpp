@@ -8,7 +8,7 @@
 #include "rigdesign/localize/kpis.hpp"
 #include "rigdesign/localize/log_generator.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct AccuracyRow {
   std::string scenario;
@@ -30,4 +30,4 @@ std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
                                         const LocalizeParams& params = {},
                                         const KpiParams& kpi = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -10,19 +10,19 @@
 #include "rigdesign/localize/rssi_log.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct ChunkParams {
   double size = 0.10;  ///< chunk edge [m] (paper 4: 10 cm)
 };
 
 struct Chunk {
-  Vec3 position_sum = Vec3::Zero();  ///< [m]
-  double range_sum = 0.0;            ///< sum of per-reading distances from RSSI [m]
-  double rssi_sum = 0.0;             ///< [dBm]
-  int count = 0;                     ///< readings in the chunk (paper 4's c)
+  model::Vec3 position_sum = model::Vec3::Zero();  ///< [m]
+  double range_sum = 0.0;                          ///< sum of per-reading distances from RSSI [m]
+  double rssi_sum = 0.0;                           ///< [dBm]
+  int count = 0;                                   ///< readings in the chunk (paper 4's c)
 
-  Vec3 position() const { return position_sum / count; }
+  model::Vec3 position() const { return position_sum / count; }
   /// Paper 4's averaged distance: the mean of the readings' distances (not the distance of
   /// the mean RSSI).
   double mean_range() const { return range_sum / count; }
@@ -38,7 +38,8 @@ class ChunkAccumulator {
   /// Adds one reading with its distance from RSSI; returns the index of its chunk in
   /// chunks(). O(1) amortised. When `previous` is given it receives the chunk as it was
   /// before the reading (count 0 for a new chunk), so running sums can swap it out exactly.
-  std::size_t add(const Vec3& position, double range, double rssi_dbm, Chunk* previous = nullptr);
+  std::size_t add(const model::Vec3& position, double range, double rssi_dbm,
+                  Chunk* previous = nullptr);
   const std::vector<Chunk>& chunks() const { return chunks_; }
 
  private:
@@ -51,4 +52,4 @@ class ChunkAccumulator {
 std::vector<Chunk> chunk_readings(const RssiLog& log, int emitter, const PathLossParams& path_loss,
                                   const ChunkParams& params = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -11,12 +11,12 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct Co2Reading {
-  double t = 0.0;  ///< [s]; for an untimed log, the reading's index (see Co2Log::timed)
-  Vec3 position;   ///< [m]; z = 0 in the untimed form
-  double ppm = 0;  ///< CO2 concentration [ppm]
+  double t = 0.0;        ///< [s]; for an untimed log, the reading's index (see Co2Log::timed)
+  model::Vec3 position;  ///< [m]; z = 0 in the untimed form
+  double ppm = 0;        ///< CO2 concentration [ppm]
 };
 
 struct Co2Log {
@@ -25,4 +25,4 @@ struct Co2Log {
   std::vector<Co2Reading> readings;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

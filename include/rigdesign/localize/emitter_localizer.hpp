@@ -14,7 +14,7 @@
 #include "rigdesign/localize/range_fit.hpp"
 #include "rigdesign/localize/rssi_log.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 enum class LocalizeMethod { wls, nls, map };
 
@@ -53,4 +53,4 @@ EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod m
 EmitterEstimate localize_emitter(const RssiLog& log, int emitter, LocalizeMethod method,
                                  const LocalizeParams& params = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

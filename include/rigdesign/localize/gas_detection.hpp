@@ -13,7 +13,7 @@
 #include "rigdesign/localize/ground_truth.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 enum class GasThreshold { fixed, relative };
 
@@ -35,10 +35,11 @@ struct GasDetectionParams {
 struct GasDetection {
   std::size_t trigger_index = 0;  ///< reading whose moving average first crossed the threshold
   std::size_t index = 0;          ///< reading reported (the strongest in the area when refining)
-  Vec3 position = Vec3::Zero();   ///< robot position at `index` [m]
-  Vec3 lag_corrected = Vec3::Zero();  ///< the path position the lag says the air came from [m]
-  double ppm = 0.0;                   ///< moving average at `index`
-  double threshold_ppm = 0.0;         ///< threshold in force at the trigger
+  model::Vec3 position = model::Vec3::Zero();  ///< robot position at `index` [m]
+  model::Vec3 lag_corrected =
+      model::Vec3::Zero();     ///< the path position the lag says the air came from [m]
+  double ppm = 0.0;            ///< moving average at `index`
+  double threshold_ppm = 0.0;  ///< threshold in force at the trigger
 };
 
 std::vector<GasDetection> detect_gas(const Co2Log& log, GasThreshold threshold,
@@ -66,4 +67,4 @@ struct GasScore {
 GasScore score_gas(const Co2Log& log, const std::vector<GasDetection>& detections,
                    const std::vector<Artifact>& artifacts, bool lag_corrected, double radius = 5.0);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

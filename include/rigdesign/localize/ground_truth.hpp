@@ -5,11 +5,11 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct EmitterTruth {
   std::string bssid;
-  Vec3 position;  ///< [m], map frame
+  model::Vec3 position;  ///< [m], map frame
 };
 
 /// An artifact of a DARPA SubT ground-truth file (`gt_*.json`: {"artifacts": [{id, type, x, y,
@@ -17,7 +17,7 @@ struct EmitterTruth {
 struct Artifact {
   int id = 0;
   std::string type;
-  Vec3 position;  ///< [m], course frame
+  model::Vec3 position;  ///< [m], course frame
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

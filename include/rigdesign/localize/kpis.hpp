@@ -9,7 +9,7 @@
 #include "rigdesign/localize/emitter_localizer.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct KpiParams {
   /// An estimate this close to the truth counts as a detection [m] (DARPA SubT scored reports
@@ -32,7 +32,7 @@ struct ErrorStats {
 ErrorStats error_stats(std::vector<double> errors);
 
 /// Error of an estimate against the truth: horizontal when z is unobservable (dimensions 2).
-double position_error(const Vec3& estimate, const Vec3& truth, int dimensions);
+double position_error(const model::Vec3& estimate, const model::Vec3& truth, int dimensions);
 
 /// Paper 4's Algorithm 1: given (measurements consumed, error of the estimate then) in order,
 /// the first count whose error is within `acceptable`; empty when none is.
@@ -50,8 +50,8 @@ struct EmitterKpis {
 
 /// KPIs of `method` on emitter `emitter` of `log` with its true position. `final_estimate` is
 /// the method's result on the whole log.
-EmitterKpis evaluate_emitter(const RssiLog& log, int emitter, const Vec3& truth,
+EmitterKpis evaluate_emitter(const RssiLog& log, int emitter, const model::Vec3& truth,
                              const EmitterEstimate& final_estimate, const LocalizeParams& params,
                              const KpiParams& kpi = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -13,10 +13,10 @@
 #include "rigdesign/localize/rssi_log.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct WallSegment {
-  Vec2 a, b;              ///< end points in the horizontal plane [m]
+  model::Vec2 a, b;       ///< end points in the horizontal plane [m]
   double attenuation_db;  ///< loss when the line of sight crosses it [dB]
 };
 
@@ -42,7 +42,7 @@ struct Scenario {
   RssiLog log;
   std::vector<EmitterTruth> truth;
   std::vector<WallSegment> walls;
-  std::vector<Vec3> path;  ///< the robot's true waypoints [m]
+  std::vector<model::Vec3> path;  ///< the robot's true waypoints [m]
 };
 
 /// loop, corner, room, hallway.
@@ -52,6 +52,7 @@ const std::vector<std::string>& scenario_names();
 Scenario make_scenario(const std::string& name, const ScenarioParams& params = {});
 
 /// Total attenuation of the walls crossed by the segment from `from` to `to` (x, y only) [dB].
-double wall_loss_db(const std::vector<WallSegment>& walls, const Vec3& from, const Vec3& to);
+double wall_loss_db(const std::vector<WallSegment>& walls, const model::Vec3& from,
+                    const model::Vec3& to);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

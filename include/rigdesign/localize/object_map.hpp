@@ -10,7 +10,7 @@
 #include "rigdesign/localize/hypothesis.hpp"
 #include "rigdesign/localize/path_loss.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct ObjectMapParams {
   double cell = 0.5;              ///< grid cell [m]
@@ -23,8 +23,8 @@ struct ObjectMapParams {
 };
 
 struct ObjectMap {
-  Vec2 origin = Vec2::Zero();  ///< corner of cell (0, 0) [m]
-  double cell = 0.5;           ///< [m]
+  model::Vec2 origin = model::Vec2::Zero();  ///< corner of cell (0, 0) [m]
+  double cell = 0.5;                         ///< [m]
   int width = 0, height = 0;
   std::vector<double> log_probability;  ///< row-major, up to a constant
 };
@@ -38,4 +38,4 @@ struct ObjectMapResult {
 ObjectMapResult object_map(const std::vector<Chunk>& chunks, const GeometryAnalysis& geometry,
                            const PathLossParams& path_loss, const ObjectMapParams& params = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

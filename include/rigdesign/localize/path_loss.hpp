@@ -2,7 +2,7 @@
 /// Log-distance path-loss model (paper 4; DESIGN.md section 8): rssi = a - 10 n log10(r),
 /// so r = 10^((a - rssi) / (10 n)). Readings below the cut-off are dropped by both
 /// estimators, as paper 4 does.
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct PathLossParams {
   /// RSSI at 1 m [dBm]. Paper 4 calibrates a per phone; its value is not quoted in
@@ -20,4 +20,4 @@ double range_from_rssi(double rssi_dbm, const PathLossParams& params);
 /// RSSI [dBm] the model predicts at `range` [m] (> 0).
 double rssi_at_range(double range, const PathLossParams& params);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -21,7 +21,7 @@
 #include "rigdesign/localize/hypothesis.hpp"
 #include "rigdesign/localize/path_loss.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct RangeFitParams {
   bool estimate_level = true;      ///< fit the 1 m level a (else PathLossParams' value)
@@ -61,4 +61,4 @@ struct RangeFitResult {
 RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalysis& geometry,
                           const PathLossParams& path_loss, const RangeFitParams& params = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -13,13 +13,13 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 struct RssiReading {
-  double t = 0.0;       ///< [s]
-  Vec3 position;        ///< robot antenna position [m]
-  int emitter = 0;      ///< index into RssiLog::emitters
-  double rssi_dbm = 0;  ///< [dBm]
+  double t = 0.0;        ///< [s]
+  model::Vec3 position;  ///< robot antenna position [m]
+  int emitter = 0;       ///< index into RssiLog::emitters
+  double rssi_dbm = 0;   ///< [dBm]
 };
 
 struct RssiLog {
@@ -31,4 +31,4 @@ struct RssiLog {
   int find(const std::string& bssid) const;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

@@ -14,20 +14,21 @@
 #include "rigdesign/localize/chunking.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::localize {
 
 enum class WlsReference { first_chunk, weighted_mean };
 
 struct WlsSolution {
-  Vec3 position;    ///< [m]; with 2 dimensions z is the chunks' weighted mean height
-  Mat3 covariance;  ///< [m^2] sigma^2 (A^T W A)^-1 from the linear residuals; z row/column 0 in 2D
+  model::Vec3 position;  ///< [m]; with 2 dimensions z is the chunks' weighted mean height
+  model::Mat3
+      covariance;  ///< [m^2] sigma^2 (A^T W A)^-1 from the linear residuals; z row/column 0 in 2D
 };
 
 /// Running weighted sums of the linear system. Positions are taken relative to `origin` to
 /// keep the sums well scaled.
 class WlsSums {
  public:
-  explicit WlsSums(const Vec3& origin = Vec3::Zero()) : origin_(origin) {}
+  explicit WlsSums(const model::Vec3& origin = model::Vec3::Zero()) : origin_(origin) {}
   /// Adds (sign +1) or removes (sign -1) a chunk's contribution.
   void add(const Chunk& chunk, double sign = 1.0);
   /// Solves in the first `dimensions` (2: x, y; 3: x, y, z) coordinates; the reference chunk
@@ -38,10 +39,10 @@ class WlsSums {
   int chunks() const { return chunks_; }
 
  private:
-  Vec3 origin_;
+  model::Vec3 origin_;
   double w_ = 0.0, wk_ = 0.0, wkk_ = 0.0, wz_ = 0.0;
-  Vec3 wp_ = Vec3::Zero(), wpk_ = Vec3::Zero();
-  Mat3 wpp_ = Mat3::Zero();
+  model::Vec3 wp_ = model::Vec3::Zero(), wpk_ = model::Vec3::Zero();
+  model::Mat3 wpp_ = model::Mat3::Zero();
   int chunks_ = 0;
 };
 
@@ -51,7 +52,7 @@ class IncrementalWls {
   explicit IncrementalWls(PathLossParams path_loss = {}, ChunkParams chunking = {})
       : path_loss_(path_loss), accumulator_(chunking) {}
   /// Adds one reading; false (and nothing changes) when it is below the cut-off.
-  bool add(const Vec3& position, double rssi_dbm);
+  bool add(const model::Vec3& position, double rssi_dbm);
   std::optional<WlsSolution> solve(int dimensions,
                                    WlsReference reference = WlsReference::first_chunk) const;
   const std::vector<Chunk>& chunks() const { return accumulator_.chunks(); }
@@ -66,4 +67,4 @@ class IncrementalWls {
 std::optional<WlsSolution> wls_multilateration(const std::vector<Chunk>& chunks, int dimensions,
                                                WlsReference reference = WlsReference::first_chunk);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::localize

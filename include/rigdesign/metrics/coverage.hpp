@@ -14,12 +14,12 @@
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
 
-namespace rigdesign {
+namespace rigdesign::metrics {
 
 struct CoverageSettings {
   double step = 0.017453292519943295;  ///< [rad] between sampled azimuths (1 degree)
   bool exact = true;                   ///< SC curves from CGAL polygons (else from the raster)
-  TessellationSettings tessellation;
+  geometry::TessellationSettings tessellation;
   double raster_cell = 0.01;  ///< [m] raster cell size along rho and z
 };
 
@@ -50,7 +50,7 @@ struct CoverageSummary {
 };
 
 struct SectorCoverage {
-  SectorRequirement sector;
+  model::SectorRequirement sector;
   CoverageSummary complete;
   CoverageSummary floor;
   bool pass = false;
@@ -79,26 +79,26 @@ struct RigCoverage {
 
 /// Precondition: the rig's references resolve (check_rig_references) and no mount is inside
 /// the body. Deterministic.
-RigCoverage compute_coverage(const Rig& rig, const SensorLibrary& library,
-                             const std::vector<SectorRequirement>& sectors,
+RigCoverage compute_coverage(const model::Rig& rig, const model::SensorLibrary& library,
+                             const std::vector<model::SectorRequirement>& sectors,
                              const CoverageSettings& settings = {});
 
 /// One cross-section in full, for pictures: each mount's region as polygons and its floor
 /// intervals, and the union's shares (exact path).
 struct SectionView {
-  SectionFrame frame;
+  geometry::SectionFrame frame;
   std::vector<std::string> mount_ids;
-  std::vector<std::vector<Polygon2>> polygons;  ///< per mount, (rho, z)
-  std::vector<IntervalSet> floors;              ///< per mount, rho intervals at z = 0
-  std::vector<Vec3> origins;                    ///< per mount, sensor origin (robot frame)
+  std::vector<std::vector<geometry::Polygon2>> polygons;  ///< per mount, (rho, z)
+  std::vector<geometry::IntervalSet> floors;              ///< per mount, rho intervals at z = 0
+  std::vector<model::Vec3> origins;  ///< per mount, sensor origin (robot frame)
   double complete = 0.0;
   double floor = 0.0;
 };
 
-SectionView section_view(const Rig& rig, const SensorLibrary& library, double theta,
-                         const TessellationSettings& tessellation = {});
+SectionView section_view(const model::Rig& rig, const model::SensorLibrary& library, double theta,
+                         const geometry::TessellationSettings& tessellation = {});
 
 /// Whether azimuth `theta` lies in the sector (angles compared modulo 360 degrees).
-bool in_sector(const SectorRequirement& sector, double theta);
+bool in_sector(const model::SectorRequirement& sector, double theta);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::metrics

@@ -5,7 +5,7 @@
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
 
-namespace rigdesign {
+namespace rigdesign::metrics {
 
 struct MountMetrics {
   std::string mount_id;
@@ -15,22 +15,22 @@ struct MountMetrics {
   double frequency = 0.0;      ///< F_i [Hz]
   double point_spacing = 0.0;  ///< R_i [m] = d_i * tan(coarser angular resolution)
   double noise = 0.0;          ///< N_i [m] = sigma(d_i)
-  LightImmunity light;
+  model::LightImmunity light;
   double points_per_second = 0.0;
   double bandwidth = 0.0;   ///< B_i [B/s] = w_i * f_i (paper 1, eq. 2)
   double driver_cpu = 0.0;  ///< U_p,i [core-equivalents] (paper 1, eq. 5)
-  Basis driver_cpu_basis = Basis::estimate;
+  model::Basis driver_cpu_basis = model::Basis::estimate;
   double price = 0.0;  ///< [USD]
-  Basis price_basis = Basis::datasheet;
+  model::Basis price_basis = model::Basis::datasheet;
   bool distance_in_range = true;  ///< d_i within [min_range, max_range]
 };
 
 /// Metrics of one mounted sensor at distance `distance` [m].
-MountMetrics compute_mount_metrics(const Mount& mount, const Sensor& sensor, const SensorMode& mode,
-                                   double distance);
+MountMetrics compute_mount_metrics(const model::Mount& mount, const model::Sensor& sensor,
+                                   const model::SensorMode& mode, double distance);
 
 /// Spacing between neighbouring rays at `distance` [m] for an angular step [rad]:
 /// d * tan(step), as paper 1 states it (122 mm for the VLP-16's 2 degrees at 3.5 m).
 double ray_spacing(double distance, double angular_step);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::metrics

@@ -10,7 +10,7 @@
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/requirements.hpp"
 
-namespace rigdesign {
+namespace rigdesign::metrics {
 
 enum class Verdict { pass, fail, not_evaluated };
 
@@ -23,18 +23,18 @@ struct RequirementResult {
   std::optional<double> actual;
   Verdict verdict = Verdict::pass;
   std::vector<std::string> limiting_mounts;  ///< mounts that set the actual value (or fail)
-  std::string explanation;  ///< one sentence: how required was derived, what failed
-  std::string field;        ///< the requirement's key in its file, e.g. "robot_speed"
-  SourceLocation where;     ///< the requirement in its file
+  std::string explanation;      ///< one sentence: how required was derived, what failed
+  std::string field;            ///< the requirement's key in its file, e.g. "robot_speed"
+  model::SourceLocation where;  ///< the requirement in its file
 };
 
 /// `coverage` judges R2's sectors; computed with requirements.sectors (compute_coverage).
 /// Without it, R2 is reported as not evaluated.
-std::vector<RequirementResult> evaluate_requirements(const Rig& rig,
+std::vector<RequirementResult> evaluate_requirements(const model::Rig& rig,
                                                      const ResultantMetrics& metrics,
-                                                     const Requirements& requirements,
+                                                     const model::Requirements& requirements,
                                                      const RigCoverage* coverage = nullptr);
 
 std::string to_string(Verdict verdict);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::metrics

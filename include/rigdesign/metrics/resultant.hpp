@@ -8,7 +8,7 @@
 
 #include "rigdesign/metrics/mount_metrics.hpp"
 
-namespace rigdesign {
+namespace rigdesign::metrics {
 
 /// A resultant value and the mounts that set it (several when tied).
 struct Limiting {
@@ -17,7 +17,7 @@ struct Limiting {
 };
 
 struct LightResult {
-  LightCondition condition = LightCondition::dark;
+  model::LightCondition condition = model::LightCondition::dark;
   bool immune = true;                       ///< every mount works in this condition
   std::vector<std::string> failing_mounts;  ///< mounts that do not
 };
@@ -33,10 +33,10 @@ struct ResultantMetrics {
   double sensor_cost = 0.0;          ///< C_s [USD]
   bool any_estimate = false;         ///< some price or driver load is an estimate
 
-  const LightResult& light_for(LightCondition condition) const;
+  const LightResult& light_for(model::LightCondition condition) const;
 };
 
 /// Precondition: check_rig_references(rig, library) reported no error.
-ResultantMetrics compute_resultant(const Rig& rig, const SensorLibrary& library);
+ResultantMetrics compute_resultant(const model::Rig& rig, const model::SensorLibrary& library);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::metrics

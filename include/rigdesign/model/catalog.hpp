@@ -9,7 +9,7 @@
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 struct CandidateSensor {
   std::string sensor_id;
@@ -54,4 +54,4 @@ struct Catalog {
   SourceLocation where;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -4,11 +4,11 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Pose3 = Eigen::Isometry3d;
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

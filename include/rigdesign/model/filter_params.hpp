@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 struct VoxelGridParams {
   double leaf = 0.03;  ///< [m] voxel edge (paper 1: V1 = 3 cm); > 0
@@ -90,4 +90,4 @@ struct Pipeline {
 const std::vector<std::string>& stage_names();
 std::string stage_name(const StageParams& params);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

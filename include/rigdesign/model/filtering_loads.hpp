@@ -7,7 +7,7 @@
 
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 struct FilteringLoad {
   std::string sensor_id;
@@ -30,4 +30,4 @@ struct FilteringLoads {
   const FilteringLoad* find(const std::string& sensor_id) const;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 /// Shortest readable form of a number for messages: up to `digits` significant digits,
 /// no trailing zeros ("3.5", "0.122", "nan").
@@ -11,4 +11,4 @@ std::string format_number(double value, int digits = 6);
 /// The items separated by `separator`, for lists in messages ("a, b, c").
 std::string join(const std::vector<std::string>& items, const std::string& separator = ", ");
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -8,7 +8,7 @@
 
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 enum class Severity { error, warning };
 
@@ -59,4 +59,4 @@ class Diagnostics {
   std::vector<Diagnostic> items_;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 using Point3f = Eigen::Vector3f;
 
@@ -19,4 +19,4 @@ struct PointCloud {
   bool empty() const { return points.empty(); }
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -9,7 +9,7 @@
 #include "rigdesign/model/requirements.hpp"
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 struct RelaxationStep {
   std::string
@@ -25,4 +25,4 @@ struct RelaxationPolicy {
   std::string file;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -9,7 +9,7 @@
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 /// R2: a direction of motion and the spatial coverage it needs.
 struct SectorRequirement {
@@ -60,4 +60,4 @@ struct Requirements {
   double required_frequency() const;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

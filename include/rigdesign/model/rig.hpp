@@ -9,7 +9,7 @@
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 /// The robot's body, which bounds the area to perceive (rho >= r, z in [0, h]) and occludes.
 struct RobotBody {
@@ -51,4 +51,4 @@ struct Rig {
   }
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -10,7 +10,7 @@
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 struct SceneObject {
   std::string name;   ///< e.g. "floor", "table_2", "chair_1_leg_3", "cable"
@@ -34,11 +34,4 @@ struct Scene {
   TriangleMesh at(double t) const;
 };
 
-/// "office", "corridor", "stairs", "wall_following", "cell".
-const std::vector<std::string>& scene_names();
-
-/// Builds a named scene; `seed` places the office's furniture. Throws std::invalid_argument
-/// for an unknown name (the CLI checks names first).
-Scene make_scene(const std::string& name, std::uint64_t seed);
-
-}  // namespace rigdesign
+}  // namespace rigdesign::model

@@ -8,7 +8,7 @@
 
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 enum class Technology {
   tof,
@@ -127,4 +127,4 @@ std::string to_string(FovShape shape);
 std::string to_string(LightCondition condition);
 std::string to_string(Basis basis);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

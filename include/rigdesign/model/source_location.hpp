@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 /// Where a value came from in an input file, so findings can point at it. Lines and columns
 /// are 1-based, as editors and compilers show them; 0 means "the whole file".
@@ -14,4 +14,4 @@ struct SourceLocation {
 /// "file:line:col" (or just "file" when the location is the whole file).
 std::string to_string(const SourceLocation& where);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

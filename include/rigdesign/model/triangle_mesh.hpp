@@ -4,7 +4,7 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::model {
 
 /// An indexed triangle mesh, coordinates in metres.
 struct TriangleMesh {
@@ -15,4 +15,4 @@ struct TriangleMesh {
   void append(const TriangleMesh& other, const Pose3& T = Pose3::Identity());
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::model

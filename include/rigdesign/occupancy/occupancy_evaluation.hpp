@@ -18,13 +18,13 @@
 #include "rigdesign/occupancy/occupancy_scores.hpp"
 #include "rigdesign/occupancy/occupancy_voxel_mapper.hpp"
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 
 /// A fixed sensor of the cell.
 struct CellSensor {
   std::string id;
-  SensorMode mode;
-  Pose3 T_world_sensor = Pose3::Identity();
+  model::SensorMode mode;
+  model::Pose3 T_world_sensor = model::Pose3::Identity();
 };
 
 struct OccupancyEvalParams {
@@ -96,7 +96,7 @@ struct OccupancyRun {
 /// Runs every mapper on the same frames of `scene` (its first moving object is the scored
 /// object; the robot frame is the world frame) and scores them. Deterministic for a seed
 /// except the update times. Throws std::invalid_argument when the scene has no moving object.
-std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene,
+std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                                              std::span<const CellSensor> sensors,
                                              std::span<OccupancyMapper* const> mappers,
                                              const OccupancyEvalParams& params);
@@ -104,4 +104,4 @@ std::vector<OccupancyRun> evaluate_occupancy(const Scene& scene,
 /// Median (p = 0.5) or any percentile by the nearest-rank rule; NaN for no values.
 double percentile_of(std::vector<double> values, double p);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

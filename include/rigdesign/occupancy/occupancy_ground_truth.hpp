@@ -16,7 +16,7 @@
 #include "rigdesign/costmap/rolling_voxel_grid.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 
 /// The voxel layer's world-fixed lattice (RollingVoxelGrid::key_at): x = floor(x / r),
 /// y = floor(y / r), z = floor((z - z_min) / r_z).
@@ -26,22 +26,23 @@ struct VoxelLattice {
   double z_min = 0.0;         ///< [m] world z of layer 0's bottom
   double z_max = 2.0;         ///< [m] top of the band; voxels holding z >= z_max are left out
 
-  VoxelKey key_at(const Vec3& p_world) const;
+  costmap::VoxelKey key_at(const model::Vec3& p_world) const;
 };
 
 /// Every lattice voxel that holds a point of the mesh's surface at a height in [z_low, z_max),
 /// ascending and unique. The surface is sampled on a barycentric grid with steps of at most a
 /// quarter of the smaller voxel side, so a voxel the surface only clips by less than that can
 /// be missed (a sliver no range sensor would hit either). Deterministic.
-std::vector<VoxelKey> voxelise_surface(const TriangleMesh& mesh, const VoxelLattice& lattice,
-                                       double z_low);
+std::vector<costmap::VoxelKey> voxelise_surface(const model::TriangleMesh& mesh,
+                                                const VoxelLattice& lattice, double z_low);
 
 /// 1 for every cell of `window` under some key's column, else 0 (row-major, window.index).
-std::vector<std::uint8_t> column_mask(std::span<const VoxelKey> keys, const GridWindow& window);
+std::vector<std::uint8_t> column_mask(std::span<const costmap::VoxelKey> keys,
+                                      const costmap::GridWindow& window);
 
 /// 1 for every cell whose centre lies within `radius` [m] of an occupied cell's centre
 /// (the occupied cells included); cells outside the window do not contribute.
-std::vector<std::uint8_t> dilate_mask(std::span<const std::uint8_t> mask, const GridWindow& window,
-                                      double radius);
+std::vector<std::uint8_t> dilate_mask(std::span<const std::uint8_t> mask,
+                                      const costmap::GridWindow& window, double radius);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

@@ -10,7 +10,7 @@
 
 #include "rigdesign/costmap/rolling_voxel_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 
 struct ConfusionCounts {
   std::size_t true_positives = 0;
@@ -39,7 +39,8 @@ Scores scores_of(const ConfusionCounts& counts);
 Scores mean_scores(std::span<const Scores> frames);
 
 /// Counts on voxel sets (duplicates ignored; any order).
-ConfusionCounts compare_voxel_sets(std::vector<VoxelKey> predicted, std::vector<VoxelKey> truth);
+ConfusionCounts compare_voxel_sets(std::vector<costmap::VoxelKey> predicted,
+                                   std::vector<costmap::VoxelKey> truth);
 /// Counts on two masks of the same cells (non-zero = occupied).
 ConfusionCounts compare_masks(std::span<const std::uint8_t> predicted,
                               std::span<const std::uint8_t> truth);
@@ -50,8 +51,8 @@ struct MissCauses {
   std::size_t never_seen = 0;
   std::size_t seen_not_kept = 0;
 };
-MissCauses split_misses(std::vector<VoxelKey> predicted, std::vector<VoxelKey> truth,
-                        std::vector<VoxelKey> seen);
+MissCauses split_misses(std::vector<costmap::VoxelKey> predicted,
+                        std::vector<costmap::VoxelKey> truth, std::vector<costmap::VoxelKey> seen);
 
 /// Area [m^2] of cells predicted occupied where the truth is free ("ghosts"), for masks of
 /// the same cells of side `resolution` [m].
@@ -89,4 +90,4 @@ class ChangeDelays {
   bool started_ = false;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

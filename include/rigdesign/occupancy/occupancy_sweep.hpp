@@ -9,7 +9,7 @@
 
 #include "rigdesign/occupancy/occupancy_voxel_mapper.hpp"
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 
 /// One persistence setting: none (the voxel layer alone), or per-voxel hit counts with these
 /// `hit` and `hit_max` (paper 1's eqs. 8, 9: a voxel seen n times in a row stays about
@@ -34,6 +34,6 @@ std::vector<VoxelMapperParams> sweep_grid(std::span<const double> voxels,
 /// One mapper per row of the grid; throws InputError (at `where`) for parameters no costmap
 /// accepts.
 std::vector<std::unique_ptr<OccupancyMapper>> make_sweep_mappers(
-    std::span<const VoxelMapperParams> grid, const SourceLocation& where);
+    std::span<const VoxelMapperParams> grid, const model::SourceLocation& where);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

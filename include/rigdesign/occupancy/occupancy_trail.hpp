@@ -8,7 +8,7 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 
 /// One frame of the whole-window picture.
 struct TrailFrame {
@@ -44,7 +44,7 @@ class TrailTracker {
 class PathOdometer {
  public:
   /// Appends the position [m] at `time` [s] (increasing).
-  void record(double time, const Vec2& position);
+  void record(double time, const model::Vec2& position);
   /// [m] path length from the last recorded frame at or before `since` to the newest one
   /// (from the first when `since` is earlier; 0 when nothing is recorded).
   double length_since(double since) const;
@@ -52,7 +52,7 @@ class PathOdometer {
  private:
   std::vector<double> times_;
   std::vector<double> cumulative_;  // [m] length from the first position to each
-  Vec2 last_ = Vec2::Zero();
+  model::Vec2 last_ = model::Vec2::Zero();
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

@@ -13,7 +13,7 @@
 #include "rigdesign/model/point_cloud.hpp"
 #include "rigdesign/occupancy/occupancy_ground_truth.hpp"
 
-namespace rigdesign {
+namespace rigdesign::occupancy {
 
 class OccupancyMapper {
  public:
@@ -24,12 +24,13 @@ class OccupancyMapper {
   /// One update at `time` [s] with every sensor's cloud of the frame, in the world frame with
   /// the sensor origin set. `robot_moving` is the velocity command a persistence layer's motion
   /// condition takes (the cell's sensors never move, so the position alone says "standing").
-  virtual void update(double time, std::span<const PointCloud> clouds_world, bool robot_moving) = 0;
+  virtual void update(double time, std::span<const model::PointCloud> clouds_world,
+                      bool robot_moving) = 0;
   /// The voxels shown occupied now.
-  virtual std::vector<VoxelKey> occupied() const = 0;
+  virtual std::vector<costmap::VoxelKey> occupied() const = 0;
   /// The planner's grid over `window`: 1 where the robot's centre may not go (inscribed or
   /// lethal cost), 0 elsewhere; empty when the mapper feeds no planner.
-  virtual std::vector<std::uint8_t> blocked_cells(const GridWindow& window) const;
+  virtual std::vector<std::uint8_t> blocked_cells(const costmap::GridWindow& window) const;
 };
 
 /// Our mapper: paper 2's voxel layer in the layered costmap (voxel layer, Hit Layer,
@@ -39,20 +40,20 @@ struct VoxelMapperParams {
   /// Hit-style persistence: paper 1's eqs. (8), (9) per voxel (the voxels shown are those with
   /// a positive count) and the Hit Layer on the 2D grid. Off: the voxel layer's own states.
   bool persistence = false;
-  HitLayerParams hit;         ///< paper 1's values by default
-  double window_size = 6.0;   ///< [m] square window centred on the cell (its 6 m floor)
-  double z_max = 2.0;         ///< [m] top of the voxel band (nav2's max_obstacle_height)
-  double robot_radius = 0.3;  ///< [m] inscribed radius of the robot the planner guards
-  ObservationSource source;   ///< per-sensor flags and ranges (same for every sensor)
+  costmap::HitLayerParams hit;        ///< paper 1's values by default
+  double window_size = 6.0;           ///< [m] square window centred on the cell (its 6 m floor)
+  double z_max = 2.0;                 ///< [m] top of the voxel band (nav2's max_obstacle_height)
+  double robot_radius = 0.3;          ///< [m] inscribed radius of the robot the planner guards
+  costmap::ObservationSource source;  ///< per-sensor flags and ranges (same for every sensor)
 };
 
 /// Throws InputError (at `where`, fields prefixed "voxel", "hit.") through
 /// check_costmap_params when the parameters cannot make a costmap.
 std::unique_ptr<OccupancyMapper> make_voxel_mapper(const VoxelMapperParams& params,
-                                                   const SourceLocation& where);
+                                                   const model::SourceLocation& where);
 
 /// The square window of `size` [m] centred on the world origin at `resolution` [m], as the
 /// costmap builds its own (sides lround(size / resolution) cells).
-GridWindow centred_window(double size, double resolution);
+costmap::GridWindow centred_window(double size, double resolution);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::occupancy

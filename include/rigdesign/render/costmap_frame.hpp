@@ -9,28 +9,28 @@
 
 #include "rigdesign/costmap/rolling_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 
 /// A sensor's horizontal field of view as a wedge on the floor (a disc when it spins).
 struct FovWedge {
-  Vec2 apex = Vec2::Zero();  ///< [m] world
-  double yaw = 0.0;          ///< [rad] optical axis
-  double half_angle = 0.0;   ///< [rad]; >= pi draws a disc
-  double range = 0.0;        ///< [m]
-  std::size_t colour = 0;    ///< index into sensor_colour
+  model::Vec2 apex = model::Vec2::Zero();  ///< [m] world
+  double yaw = 0.0;                        ///< [rad] optical axis
+  double half_angle = 0.0;                 ///< [rad]; >= pi draws a disc
+  double range = 0.0;                      ///< [m]
+  std::size_t colour = 0;                  ///< index into sensor_colour
 };
 
 struct CostmapFrame {
   std::string title;
-  const CostGrid* master = nullptr;  ///< the grid to draw (not owned)
+  const costmap::CostGrid* master = nullptr;  ///< the grid to draw (not owned)
   /// Cells, on the master's window, the Hit Layer keeps lethal while the obstacle grid does
   /// not see them (row-major; empty for none).
   std::vector<std::uint8_t> remembered;
-  std::vector<std::vector<Vec2>> obstacles;  ///< ground-truth outlines [m]
+  std::vector<std::vector<model::Vec2>> obstacles;  ///< ground-truth outlines [m]
   std::vector<FovWedge> fovs;
-  std::vector<Vec2> path;   ///< planned [m]
-  std::vector<Vec2> trail;  ///< driven so far [m]
-  Vec2 robot = Vec2::Zero();
+  std::vector<model::Vec2> path;   ///< planned [m]
+  std::vector<model::Vec2> trail;  ///< driven so far [m]
+  model::Vec2 robot = model::Vec2::Zero();
   double yaw = 0.0;
   double robot_radius = 0.0;
   bool collided = false;  ///< draws the body in red
@@ -40,4 +40,4 @@ struct CostmapFrame {
 void draw_costmap_frame(const CostmapFrame& frame, const std::string& path,
                         int pixels_per_cell = 4);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

@@ -10,7 +10,7 @@
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 
 // The meshes built here are closed and wound counter-clockwise seen from outside, so
 // (b - a) x (c - a) points out of the volume.
@@ -22,12 +22,13 @@ namespace rigdesign {
 /// FOV's boundary gives the side walls. Curved parts are tessellated with 48 segments over the
 /// FOV's wider angle, which keeps the enclosed volume within about 1 % of the exact one.
 /// Returns an empty mesh when the range interval is empty. Deterministic.
-TriangleMesh fov_mesh(const SensorMode& mode, const Pose3& T_robot_sensor, double truncate_at);
+model::TriangleMesh fov_mesh(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
+                             double truncate_at);
 
 /// The robot body as a closed prism from z = 0 to z = body.height [m]: the footprint polygon
 /// when there is one (counter-clockwise; a clockwise one is accepted and reversed; simple
 /// polygons only, convex or not), else a vertical cylinder of body.radius approximated by an
 /// inscribed 64-sided polygon (0.16 % less area). Deterministic.
-TriangleMesh body_mesh(const RobotBody& body);
+model::TriangleMesh body_mesh(const model::RobotBody& body);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

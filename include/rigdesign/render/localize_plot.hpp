@@ -7,12 +7,12 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 
 enum class PlotMarkerKind { estimate, alternative, truth, detection, lag_corrected, artifact };
 
 struct PlotMarker {
-  Vec3 position = Vec3::Zero();
+  model::Vec3 position = model::Vec3::Zero();
   Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();  ///< [m^2]; drawn as a 2-sigma ellipse
   std::string label;
   PlotMarkerKind kind = PlotMarkerKind::estimate;
@@ -20,14 +20,14 @@ struct PlotMarker {
 
 struct LocalizePlot {
   std::string title;
-  std::vector<Vec3> path;      ///< reading positions [m]
-  std::vector<double> values;  ///< one per path point (may be empty)
-  std::string value_label;     ///< e.g. "RSSI [dBm]"
-  std::vector<std::pair<Vec2, Vec2>> walls;
+  std::vector<model::Vec3> path;  ///< reading positions [m]
+  std::vector<double> values;     ///< one per path point (may be empty)
+  std::string value_label;        ///< e.g. "RSSI [dBm]"
+  std::vector<std::pair<model::Vec2, model::Vec2>> walls;
   std::vector<PlotMarker> markers;
 };
 
 void plot_localization(const LocalizePlot& plot, const std::string& path, int width = 1000,
                        int height = 820);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace rigdesign {
+namespace rigdesign::render {
 
 struct ParetoPoint {
   std::string label;        ///< e.g. "0.1 m, hit 3/1500"
@@ -21,4 +21,4 @@ std::vector<std::size_t> pareto_front(const std::vector<ParetoPoint>& points);
 void plot_occupancy_pareto(const std::vector<ParetoPoint>& points, const std::string& title,
                            const std::string& path, int width = 1000, int height = 700);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

@@ -4,7 +4,7 @@
 #include <array>
 #include <cstddef>
 
-namespace rigdesign {
+namespace rigdesign::render {
 
 struct Rgb {
   double r = 0.0;  ///< [0, 1]
@@ -21,4 +21,4 @@ inline constexpr Rgb kFloorColour{0.85, 0.40, 0.05};
 inline constexpr Rgb kInkColour{0.15, 0.15, 0.15};   ///< text, axes, frames
 inline constexpr Rgb kGridColour{0.87, 0.87, 0.87};  ///< chart grid lines
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

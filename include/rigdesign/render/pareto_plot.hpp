@@ -5,15 +5,15 @@
 
 #include "rigdesign/select/search.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 
 /// Every explored rig as a dot (meeting the requirements or not), the Pareto front (no other
 /// rig both cheaper and covering more), the budget as a vertical line and the chosen rig.
-void plot_pareto(const std::vector<ExploredRig>& explored, double budget, double chosen_cost,
-                 double chosen_coverage, const std::string& title, const std::string& path,
-                 int width = 1100, int height = 650);
+void plot_pareto(const std::vector<select::ExploredRig>& explored, double budget,
+                 double chosen_cost, double chosen_coverage, const std::string& title,
+                 const std::string& path, int width = 1100, int height = 650);
 
 /// The explored rigs on the Pareto front, cheapest first.
-std::vector<ExploredRig> pareto_front(const std::vector<ExploredRig>& explored);
+std::vector<select::ExploredRig> pareto_front(const std::vector<select::ExploredRig>& explored);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

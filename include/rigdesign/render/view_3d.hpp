@@ -9,7 +9,7 @@
 #include "rigdesign/render/fov_mesh.hpp"
 #include "rigdesign/render/palette.hpp"
 
-namespace rigdesign {
+namespace rigdesign::render {
 
 enum class Viewpoint {
   isometric,  ///< from the robot's front-left, 35.26 deg above the floor; z up on the image
@@ -18,7 +18,7 @@ enum class Viewpoint {
 
 /// A mesh in the robot frame with how to draw it.
 struct ColouredMesh {
-  TriangleMesh mesh;
+  model::TriangleMesh mesh;
   Rgb colour;
   double opacity = 1.0;  ///< [0, 1]; below 1 the mesh is drawn translucent, after opaque ones
 };
@@ -47,4 +47,4 @@ std::vector<std::uint8_t> render_view_3d_pixels(const std::vector<ColouredMesh>&
 void render_view_3d(const std::vector<ColouredMesh>& meshes, const View3dSettings& settings,
                     const std::string& png_path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::render

@@ -9,20 +9,20 @@
 #include "rigdesign/costmap/path_follower.hpp"
 #include "rigdesign/model/scene.hpp"
 
-namespace rigdesign {
+namespace rigdesign::scenarios {
 
 /// A point of the route; the robot waits `wait` [s] on arriving there.
 struct RouteStop {
-  Vec2 position = Vec2::Zero();  ///< [m] world
-  double wait = 0.0;             ///< [s]
+  model::Vec2 position = model::Vec2::Zero();  ///< [m] world
+  double wait = 0.0;                           ///< [s]
 };
 
 /// A scene, where the robot starts and the route it drives.
 struct ScenarioDefinition {
   std::string name;
   std::string description;
-  Scene scene;
-  Pose2 start;
+  model::Scene scene;
+  costmap::Pose2 start;
   std::vector<RouteStop> route;  ///< driven in order; the last stop is the goal
   double max_duration = 60.0;    ///< [s] the run ends here if the goal is not reached
 };
@@ -36,11 +36,11 @@ ScenarioDefinition make_costmap_scenario(const std::string& name, std::uint64_t 
 
 /// The costmap a scenario starts from: nav2's local costmap (5 cm cells) on a 6 x 6 m window,
 /// the 2D obstacle layer (paper 1's setup), the Hit Layer on with paper 1's values.
-CostmapParams scenario_costmap_defaults();
+costmap::CostmapParams scenario_costmap_defaults();
 
 /// nav2's source defaults except min_obstacle_height = 0.10 m: the Azure Kinect's 17 mm range
 /// noise puts about one floor return in a thousand above 5 cm, a few per frame, and the 2D
 /// layer never clears them (floor returns lie below the band). 10 cm is 6 sigma.
-ObservationSource scenario_source_defaults();
+costmap::ObservationSource scenario_source_defaults();
 
-}  // namespace rigdesign
+}  // namespace rigdesign::scenarios

@@ -19,17 +19,17 @@
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/scenarios/scenario_library.hpp"
 
-namespace rigdesign {
+namespace rigdesign::scenarios {
 
 struct ScenarioParams {
   /// robot_radius and the inscribed radius are set from the rig's body; the inflation radius
   /// is raised to inscribed + 0.1 m when smaller; the voxel band's top to the body's height.
-  CostmapParams costmap = scenario_costmap_defaults();
+  costmap::CostmapParams costmap = scenario_costmap_defaults();
   /// Per-mount source settings; max_obstacle_height is set to the body's height (nav2 practice:
   /// points above the robot neither mark nor clear).
-  ObservationSource source = scenario_source_defaults();
-  PlannerParams planner;
-  FollowerParams follower;
+  costmap::ObservationSource source = scenario_source_defaults();
+  costmap::PlannerParams planner;
+  costmap::FollowerParams follower;
   double update_rate = 5.0;      ///< [Hz] sensing, costmap update and planning
   double control_rate = 20.0;    ///< [Hz] follower commands and collision checks
   double goal_lookahead = 2.0;   ///< [m] local goal distance along the route (capped by the window)
@@ -49,27 +49,27 @@ struct ScenarioParams {
 /// A sampled pose of the run.
 struct TrajectorySample {
   double time = 0.0;  ///< [s]
-  Pose2 pose;
+  costmap::Pose2 pose;
 };
 
 /// What one costmap update saw and decided, for drawing and tests (valid during the callback).
 struct ScenarioStep {
   int index = 0;                  ///< update number from 0
   double time = 0.0;              ///< [s]
-  Pose2 pose;                     ///< robot pose at the update
+  costmap::Pose2 pose;            ///< robot pose at the update
   bool velocity_command = false;  ///< the command given to the costmap's motion condition
   bool waiting = false;           ///< the robot stands at a stop
-  const Costmap* costmap = nullptr;
-  const PlannedPath* path = nullptr;   ///< the plan of this update (empty while waiting)
-  Vec2 goal = Vec2::Zero();            ///< the local goal planned to [m]
-  std::span<const PointCloud> clouds;  ///< this update's clouds, world frame, one per mount
+  const costmap::Costmap* costmap = nullptr;
+  const costmap::PlannedPath* path = nullptr;  ///< the plan of this update (empty while waiting)
+  model::Vec2 goal = model::Vec2::Zero();      ///< the local goal planned to [m]
+  std::span<const model::PointCloud> clouds;   ///< this update's clouds, world frame, one per mount
 };
 
 struct ScenarioResult {
   bool collided = false;
   double collision_time = std::numeric_limits<double>::quiet_NaN();  ///< [s] first contact
   std::string collision_object;                                      ///< scene object hit
-  Vec2 collision_position = Vec2::Zero();                            ///< robot centre [m]
+  model::Vec2 collision_position = model::Vec2::Zero();              ///< robot centre [m]
   /// [m] smallest body clearance over the run (negative: penetration at the collision step).
   double min_clearance = std::numeric_limits<double>::infinity();
   double min_clearance_time = 0.0;  ///< [s]
@@ -87,16 +87,17 @@ struct ScenarioResult {
 /// of its rays reaches the costmap's height band within the marking range, or the rig has no
 /// mounts; at the rig's `body` when its radius or height is not positive. Also checks the
 /// costmap parameters (InputError, fields as in check_costmap_params, at `where`).
-void check_scenario_inputs(const Rig& rig, const SensorLibrary& library,
+void check_scenario_inputs(const model::Rig& rig, const model::SensorLibrary& library,
                            const ScenarioParams& params,
-                           const SourceLocation& where = SourceLocation{"(command line)"});
+                           const model::SourceLocation& where = model::SourceLocation{
+                               "(command line)"});
 
 /// Runs the scenario with `rig`'s sensors (modes from `library`) on a body of the rig's
 /// radius and height. Checks its inputs first (check_scenario_inputs). `on_update` is called
 /// after every costmap update and plan. The run stops at the first collision, at the goal or
 /// at max_duration. Deterministic for params.seed, except the measured times.
-ScenarioResult run_scenario(const ScenarioDefinition& scenario, const Rig& rig,
-                            const SensorLibrary& library, const ScenarioParams& params,
+ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig& rig,
+                            const model::SensorLibrary& library, const ScenarioParams& params,
                             const std::function<void(const ScenarioStep&)>& on_update = {});
 
 /// Median and 99th percentile (nearest rank) of durations [s]; zeros when empty.
@@ -106,4 +107,4 @@ struct TimeSummary {
 };
 TimeSummary summarize_times(std::vector<double> seconds);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::scenarios

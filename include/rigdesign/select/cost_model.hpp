@@ -8,7 +8,7 @@
 
 #include "rigdesign/model/catalog.hpp"
 
-namespace rigdesign {
+namespace rigdesign::select {
 
 /// What a rig asks of the hardware.
 struct RigLoad {
@@ -29,10 +29,11 @@ struct CostBreakdown {
 };
 
 /// The cheapest item whose capacity exceeds `load` (same unit as the capacity), or nullptr.
-const PricedCapacity* cheapest_exceeding(const std::vector<PricedCapacity>& items, double load);
+const model::PricedCapacity* cheapest_exceeding(const std::vector<model::PricedCapacity>& items,
+                                                double load);
 
 /// C for a load; transfer capacities are bit/s and the bandwidth bytes/s.
-CostBreakdown rig_cost(const RigLoad& load, const std::vector<PricedCapacity>& transfer,
-                       const std::vector<PricedCapacity>& cpus);
+CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
+                       const std::vector<model::PricedCapacity>& cpus);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

@@ -4,14 +4,15 @@
 
 #include "rigdesign/model/relaxation_policy.hpp"
 
-namespace rigdesign {
+namespace rigdesign::select {
 
 /// `requirements` with `step` applied. Throws InputError at the step when it names an
 /// unknown requirement, one the requirements do not state, a value out of range, or a value
 /// that tightens instead of relaxing.
-Requirements relax(const Requirements& requirements, const RelaxationStep& step);
+model::Requirements relax(const model::Requirements& requirements,
+                          const model::RelaxationStep& step);
 
 /// One line on what a step changes, e.g. "robot_speed.max_speed 1 -> 0.8 m/s".
-std::string describe(const Requirements& before, const RelaxationStep& step);
+std::string describe(const model::Requirements& before, const model::RelaxationStep& step);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

@@ -9,11 +9,11 @@
 #include "rigdesign/model/relaxation_policy.hpp"
 #include "rigdesign/select/selection.hpp"
 
-namespace rigdesign {
+namespace rigdesign::select {
 
 struct RelaxationIteration {
   std::string relaxed;  ///< what this iteration relaxed ("" for the first)
-  Requirements requirements;
+  model::Requirements requirements;
   SatisficingTargets targets;
   Selection selection;
   bool within_budget = false;
@@ -37,11 +37,13 @@ struct RelaxationOutcome {
 /// Runs the loop; every iteration is reported to `on_iteration` as soon as it is done.
 /// Precondition: every policy step applies (relax() throws otherwise; check before).
 RelaxationOutcome select_within_budget(
-    const SelectionSpace& space, const Requirements& requirements, const RelaxationPolicy& policy,
-    double budget, const std::function<void(const RelaxationIteration&)>& on_iteration = {},
+    const SelectionSpace& space, const model::Requirements& requirements,
+    const model::RelaxationPolicy& policy, double budget,
+    const std::function<void(const RelaxationIteration&)>& on_iteration = {},
     const std::function<void(long)>& progress = {});
 
 /// Applies every step in order, so a bad policy fails before any search (throws InputError).
-Requirements check_policy(const Requirements& requirements, const RelaxationPolicy& policy);
+model::Requirements check_policy(const model::Requirements& requirements,
+                                 const model::RelaxationPolicy& policy);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

@@ -14,13 +14,13 @@
 #include "rigdesign/geometry/section_raster.hpp"
 #include "rigdesign/select/cost_model.hpp"
 
-namespace rigdesign {
+namespace rigdesign::select {
 
 struct SearchOption {
-  double price = 0.0;                   ///< [USD]
-  double bandwidth = 0.0;               ///< [bytes/s]
-  double cpu = 0.0;                     ///< [core-equivalents]
-  std::vector<SectionRaster> sections;  ///< one per angle of the problem
+  double price = 0.0;                             ///< [USD]
+  double bandwidth = 0.0;                         ///< [bytes/s]
+  double cpu = 0.0;                               ///< [core-equivalents]
+  std::vector<geometry::SectionRaster> sections;  ///< one per angle of the problem
 };
 
 /// SC thresholds over some of the problem's angles (R2).
@@ -33,9 +33,9 @@ struct SearchSector {
 struct SearchProblem {
   std::vector<std::vector<SearchOption>> slots;
   std::vector<SearchSector> sectors;
-  std::vector<PricedCapacity> transfer;
-  std::vector<PricedCapacity> cpus;
-  std::vector<RasterGrid> grids;  ///< per angle
+  std::vector<model::PricedCapacity> transfer;
+  std::vector<model::PricedCapacity> cpus;
+  std::vector<geometry::RasterGrid> grids;  ///< per angle
 };
 
 /// A rig the search evaluated, for the cost-versus-coverage Pareto plot.
@@ -66,4 +66,4 @@ SearchResult branch_and_bound(const SearchProblem& problem,
 /// Every assignment, for tests and the benchmark's ratio.
 SearchResult brute_force(const SearchProblem& problem);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

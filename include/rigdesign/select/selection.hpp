@@ -13,39 +13,39 @@
 #include "rigdesign/model/requirements.hpp"
 #include "rigdesign/select/search.hpp"
 
-namespace rigdesign {
+namespace rigdesign::select {
 
 /// The satisficing metrics requirements R1-R8 ask for (DESIGN.md section 5).
 struct SatisficingTargets {
-  double min_frequency = 0.0;              ///< F >= [Hz]: R3's rate, R4 and R5's v / travel
-  std::optional<double> max_spacing;       ///< R <= [m]: R6's smallest obstacle
-  std::optional<double> max_noise;         ///< N <= [m]: R7
-  std::vector<LightCondition> lighting;    ///< L: R8
-  std::vector<SectorRequirement> sectors;  ///< SC per sector: R2
-  double distance = 0.0;                   ///< d [m]: R3
+  double min_frequency = 0.0;                     ///< F >= [Hz]: R3's rate, R4 and R5's v / travel
+  std::optional<double> max_spacing;              ///< R <= [m]: R6's smallest obstacle
+  std::optional<double> max_noise;                ///< N <= [m]: R7
+  std::vector<model::LightCondition> lighting;    ///< L: R8
+  std::vector<model::SectorRequirement> sectors;  ///< SC per sector: R2
+  double distance = 0.0;                          ///< d [m]: R3
 };
 
-SatisficingTargets satisficing_targets(const Requirements& requirements);
+SatisficingTargets satisficing_targets(const model::Requirements& requirements);
 
 /// One sensor mode in one slot, with its metrics and its raster sections.
 struct CatalogOption {
   std::size_t slot = 0;
-  const Sensor* sensor = nullptr;
-  const SensorMode* mode = nullptr;
-  MountMetrics metrics;                 ///< at the slot's distance of interest
-  double filtering = 0.0;               ///< U_f [core-equivalents]
-  std::vector<SectionRaster> sections;  ///< per angle of the space
+  const model::Sensor* sensor = nullptr;
+  const model::SensorMode* mode = nullptr;
+  metrics::MountMetrics metrics;                  ///< at the slot's distance of interest
+  double filtering = 0.0;                         ///< U_f [core-equivalents]
+  std::vector<geometry::SectionRaster> sections;  ///< per angle of the space
 };
 
 /// Every option of a catalog rasterised once; searches for different requirements reuse it.
 class SelectionSpace {
  public:
-  SelectionSpace(const Catalog& catalog, const SensorLibrary& library,
-                 const CoverageSettings& settings = {});
+  SelectionSpace(const model::Catalog& catalog, const model::SensorLibrary& library,
+                 const metrics::CoverageSettings& settings = {});
 
-  const Catalog& catalog() const { return *catalog_; }
-  const SensorLibrary& library() const { return *library_; }
-  const CoverageSettings& settings() const { return settings_; }
+  const model::Catalog& catalog() const { return *catalog_; }
+  const model::SensorLibrary& library() const { return *library_; }
+  const metrics::CoverageSettings& settings() const { return settings_; }
   std::size_t option_count() const;
   double angle(std::size_t index) const;
 
@@ -56,24 +56,24 @@ class SelectionSpace {
                             std::vector<std::vector<const CatalogOption*>>& kept) const;
 
   /// The rig an assignment describes: one mount per chosen slot.
-  Rig rig_for(const std::vector<const CatalogOption*>& chosen) const;
+  model::Rig rig_for(const std::vector<const CatalogOption*>& chosen) const;
 
  private:
-  const Catalog* catalog_;
-  const SensorLibrary* library_;
-  CoverageSettings settings_;
-  std::vector<RasterGrid> grids_;
+  const model::Catalog* catalog_;
+  const model::SensorLibrary* library_;
+  metrics::CoverageSettings settings_;
+  std::vector<geometry::RasterGrid> grids_;
   std::vector<std::vector<CatalogOption>> options_;  // per slot
 };
 
 struct Selection {
   bool found = false;
   std::string infeasible_reason;  ///< when nothing can meet the requirements
-  Rig rig;
+  model::Rig rig;
   std::vector<const CatalogOption*> chosen;
   CostBreakdown cost;
   SearchResult search;             ///< of the last (accepted) search
-  RigCoverage coverage;            ///< the winner on the exact path
+  metrics::RigCoverage coverage;   ///< the winner on the exact path
   int rejected_by_exact_path = 0;  ///< raster winners the exact path turned down
   double seconds = 0.0;
 };
@@ -81,7 +81,7 @@ struct Selection {
 /// The cheapest rig meeting `requirements`, proven optimal on the raster path and verified
 /// on the exact path (a raster winner the exact path rejects is excluded and the search
 /// runs again).
-Selection select_cheapest(const SelectionSpace& space, const Requirements& requirements,
+Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
                           const std::function<void(long)>& progress = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::select

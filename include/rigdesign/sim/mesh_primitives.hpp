@@ -15,32 +15,35 @@ constexpr int kCylinderSegments = 16;
 
 /// An axis-aligned rectangle in the xy plane [m].
 struct Rect2 {
-  Vec2 low;
-  Vec2 high;
+  model::Vec2 low;
+  model::Vec2 high;
 };
 
 /// A closed box with edge lengths `size` [m] along its own axes, centred on its frame's
 /// origin, placed by `T_world_box`: 8 vertices, 12 triangles.
-TriangleMesh box_mesh(const Vec3& size, const Pose3& T_world_box = Pose3::Identity());
+model::TriangleMesh box_mesh(const model::Vec3& size,
+                             const model::Pose3& T_world_box = model::Pose3::Identity());
 
 /// A closed world-aligned box between the corners `low` and `high` [m].
-TriangleMesh aligned_box(const Vec3& low, const Vec3& high);
+model::TriangleMesh aligned_box(const model::Vec3& low, const model::Vec3& high);
 
 /// A closed cylinder of `radius` [m] whose axis runs along its frame's z from z = 0 to
 /// z = `height` [m], placed by `T_world_cylinder`.
-TriangleMesh cylinder_mesh(double radius, double height,
-                           const Pose3& T_world_cylinder = Pose3::Identity());
+model::TriangleMesh cylinder_mesh(double radius, double height,
+                                  const model::Pose3& T_world_cylinder = model::Pose3::Identity());
 
 /// A closed cylinder of `radius` [m] whose axis runs from `start` to `end` [m]
 /// (precondition: the two differ).
-TriangleMesh cylinder_between(const Vec3& start, const Vec3& end, double radius);
+model::TriangleMesh cylinder_between(const model::Vec3& start, const model::Vec3& end,
+                                     double radius);
 
 /// A single-sided horizontal rectangle at height `z` [m], facing up (+z).
-TriangleMesh floor_rectangle(const Rect2& area, double z);
+model::TriangleMesh floor_rectangle(const Rect2& area, double z);
 
 /// A single-sided floor at height `z` [m] over `area` with rectangular `openings` left
 /// open: no triangle covers any point inside an opening. Built as the cells of the grid the
 /// rectangles' edges span, keeping the cells outside every opening.
-TriangleMesh floor_with_openings(const Rect2& area, const std::vector<Rect2>& openings, double z);
+model::TriangleMesh floor_with_openings(const Rect2& area, const std::vector<Rect2>& openings,
+                                        double z);
 
 }  // namespace rigdesign::sim

@@ -6,21 +6,21 @@
 
 #include "rigdesign/model/triangle_mesh.hpp"
 
-namespace rigdesign {
+namespace rigdesign::sim {
 
 class RayCaster {
  public:
-  explicit RayCaster(const TriangleMesh& mesh);
+  explicit RayCaster(const model::TriangleMesh& mesh);
   ~RayCaster();
   RayCaster(RayCaster&&) noexcept;
   RayCaster& operator=(RayCaster&&) noexcept;
 
   /// Distance [m] from `origin` along the unit `direction` to the first triangle hit, if any.
-  std::optional<double> first_hit(const Vec3& origin, const Vec3& direction) const;
+  std::optional<double> first_hit(const model::Vec3& origin, const model::Vec3& direction) const;
 
  private:
   struct Tree;
   std::unique_ptr<Tree> tree_;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::sim

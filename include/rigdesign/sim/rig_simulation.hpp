@@ -10,12 +10,14 @@
 #include "rigdesign/model/scene.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
-namespace rigdesign {
+namespace rigdesign::sim {
 
 /// `frames` clouds of `mount` (mode `mode`), frame k at t = k / frequency. Deterministic
 /// for a seed: each mount draws from its own stream seeded with (seed, mount index).
-std::vector<PointCloud> simulate_mount(const Scene& scene, const Mount& mount,
-                                       const SensorMode& mode, std::size_t mount_index, int frames,
-                                       std::uint64_t seed, const SimulationSettings& settings = {});
+std::vector<model::PointCloud> simulate_mount(const model::Scene& scene, const model::Mount& mount,
+                                              const model::SensorMode& mode,
+                                              std::size_t mount_index, int frames,
+                                              std::uint64_t seed,
+                                              const SimulationSettings& settings = {});
 
-}  // namespace rigdesign
+}  // namespace rigdesign::sim

@@ -10,14 +10,14 @@
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/sim/ray_caster.hpp"
 
-namespace rigdesign {
+namespace rigdesign::sim {
 
 /// Unit ray directions in the sensor frame (x forward): a pinhole pixel grid for pyramid
 /// cameras (pixel centres, evenly spaced in the image plane), rings of a spinning lidar
 /// (one row per vertical step from the lowest beam, one column per horizontal step), one
 /// row for a 2D scanner's fan, a pixel grid clipped to the circle for a cone. Non-repetitive
 /// scanners (Livox) get a grid at their effective step.
-std::vector<Vec3> ray_pattern(const SensorMode& mode);
+std::vector<model::Vec3> ray_pattern(const model::SensorMode& mode);
 
 struct SimulationSettings {
   double dropout = 0.0;       ///< share of rays that return nothing, in [0, 1)
@@ -27,8 +27,9 @@ struct SimulationSettings {
 
 /// One frame. `T_world_sensor` places the sensor; the cloud's origin and orientation record
 /// the sensor pose in the cloud's frame.
-PointCloud simulate_frame(const RayCaster& scene, const SensorMode& mode,
-                          const std::vector<Vec3>& rays, const Pose3& T_world_sensor,
-                          const SimulationSettings& settings, std::mt19937_64& rng);
+model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode& mode,
+                                 const std::vector<model::Vec3>& rays,
+                                 const model::Pose3& T_world_sensor,
+                                 const SimulationSettings& settings, std::mt19937_64& rng);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::sim

@@ -34,7 +34,7 @@ void read_ascii_points(const std::string& path, LineCursor& cursor, const AsciiL
   for (int axis = 0; axis < 3; ++axis) axis_at[layout.xyz[static_cast<std::size_t>(axis)]] = axis;
 
   std::vector<std::string_view> words;
-  Point3f point = Point3f::Zero();
+  model::Point3f point = model::Point3f::Zero();
   for (std::size_t index = 0; index < count; ++index) {
     if (!next_record(cursor, words)) {
       throw_data_error(path, 0,

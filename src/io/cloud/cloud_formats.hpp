@@ -10,13 +10,15 @@
 namespace rigdesign::io {
 
 /// Parses a whole PCD file held in `bytes`; `path` names it in findings.
-PointCloud parse_pcd(const std::string& path, std::string_view bytes, CloudReadReport& report);
+model::PointCloud parse_pcd(const std::string& path, std::string_view bytes,
+                            CloudReadReport& report);
 /// The PCD file's bytes for `cloud`: FIELDS x y z as F 4, HEIGHT 1, DATA ascii or binary.
-std::string encode_pcd(const PointCloud& cloud, CloudEncoding encoding);
+std::string encode_pcd(const model::PointCloud& cloud, CloudEncoding encoding);
 
 /// Parses a whole PLY file held in `bytes`; `path` names it in findings.
-PointCloud parse_ply(const std::string& path, std::string_view bytes, CloudReadReport& report);
+model::PointCloud parse_ply(const std::string& path, std::string_view bytes,
+                            CloudReadReport& report);
 /// The PLY file's bytes for `cloud`: one vertex element with float x y z.
-std::string encode_ply(const PointCloud& cloud, CloudEncoding encoding);
+std::string encode_ply(const model::PointCloud& cloud, CloudEncoding encoding);
 
 }  // namespace rigdesign::io

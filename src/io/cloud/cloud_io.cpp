@@ -9,7 +9,7 @@
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 enum class CloudFormat { pcd, ply, unknown };
@@ -24,13 +24,13 @@ CloudFormat format_of(const std::string& path) {
 }
 
 [[noreturn]] void throw_unknown_extension(const std::string& path, const std::string& field) {
-  throw InputError(Diagnostic{
+  throw model::InputError(model::Diagnostic{
       {path, 0, 0}, field, "is neither a .pcd nor a .ply file", "a path ending in .pcd or .ply"});
 }
 
 }  // namespace
 
-PointCloud read_cloud(const std::string& path, CloudReadReport* report) {
+model::PointCloud read_cloud(const std::string& path, CloudReadReport* report) {
   const CloudFormat format = format_of(path);
   if (format == CloudFormat::unknown) throw_unknown_extension(path, "file");
   const std::string bytes = io::read_file_bytes(path, "a readable point cloud file");
@@ -41,11 +41,11 @@ PointCloud read_cloud(const std::string& path, CloudReadReport* report) {
                                     : io::parse_ply(path, bytes, filled);
 }
 
-void write_cloud(const std::string& path, const PointCloud& cloud, CloudEncoding encoding) {
+void write_cloud(const std::string& path, const model::PointCloud& cloud, CloudEncoding encoding) {
   const CloudFormat format = format_of(path);
   if (format == CloudFormat::unknown) throw_unknown_extension(path, "output");
   write_file_atomically(path, format == CloudFormat::pcd ? io::encode_pcd(cloud, encoding)
                                                          : io::encode_ply(cloud, encoding));
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -103,12 +103,13 @@ std::string quoted(std::string_view word) {
 
 void throw_header_error(const std::string& path, int line, const std::string& field,
                         const std::string& problem, const std::string& expected) {
-  throw InputError(Diagnostic{{path, line, 1}, field, problem, expected});
+  throw model::InputError(model::Diagnostic{{path, line, 1}, field, problem, expected});
 }
 
 void throw_data_error(const std::string& path, int line, const std::string& problem,
                       const std::string& expected) {
-  throw InputError(Diagnostic{{path, line, line > 0 ? 1 : 0}, "data", problem, expected});
+  throw model::InputError(
+      model::Diagnostic{{path, line, line > 0 ? 1 : 0}, "data", problem, expected});
 }
 
 }  // namespace rigdesign::io

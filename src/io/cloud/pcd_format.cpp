@@ -135,7 +135,7 @@ void read_compressed_body(const std::string& path, std::string_view bytes, const
   }
 }
 
-std::string header_text(const PointCloud& cloud, CloudEncoding encoding) {
+std::string header_text(const model::PointCloud& cloud, CloudEncoding encoding) {
   const std::string n = std::to_string(cloud.size());
   std::string text = "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\n";
   text += "SIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH " + n + "\nHEIGHT 1\nVIEWPOINT";
@@ -147,7 +147,8 @@ std::string header_text(const PointCloud& cloud, CloudEncoding encoding) {
 
 }  // namespace
 
-PointCloud parse_pcd(const std::string& path, std::string_view bytes, CloudReadReport& report) {
+model::PointCloud parse_pcd(const std::string& path, std::string_view bytes,
+                            CloudReadReport& report) {
   const PcdHeader header = parse_pcd_header(path, bytes);
   report.format = "pcd " + to_string(header.encoding);
   report.points_in_file = header.points;
@@ -170,7 +171,7 @@ PointCloud parse_pcd(const std::string& path, std::string_view bytes, CloudReadR
   return std::move(collected).into_cloud(header.origin, header.orientation);
 }
 
-std::string encode_pcd(const PointCloud& cloud, CloudEncoding encoding) {
+std::string encode_pcd(const model::PointCloud& cloud, CloudEncoding encoding) {
   std::string text = header_text(cloud, encoding);
   append_point_body(text, cloud, encoding);
   return text;

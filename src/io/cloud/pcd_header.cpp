@@ -212,7 +212,7 @@ void read_viewpoint(const RawHeader& raw, PcdHeader& header) {
     }
     values[i] = *value;
   }
-  header.origin = Point3f(values[0], values[1], values[2]);
+  header.origin = model::Point3f(values[0], values[1], values[2]);
   const Eigen::Quaternionf orientation(values[3], values[4], values[5], values[6]);
   if (orientation.norm() == 0.0f) {
     throw_header_error(raw.path, entry.line, "VIEWPOINT", "the quaternion is zero", expected);

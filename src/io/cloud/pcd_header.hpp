@@ -28,7 +28,7 @@ struct PcdHeader {
   std::size_t width = 0;
   std::size_t height = 0;
   std::size_t points = 0;
-  Point3f origin = Point3f::Zero();                                 ///< VIEWPOINT tx ty tz
+  model::Point3f origin = model::Point3f::Zero();                   ///< VIEWPOINT tx ty tz
   Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity();  ///< VIEWPOINT qw qx qy qz
   PcdEncoding encoding = PcdEncoding::ascii;
   std::size_t body_offset = 0;  ///< first byte after the DATA line

@@ -100,7 +100,8 @@ void read_ascii_body(const std::string& path, std::string_view bytes, const PlyH
 
 }  // namespace
 
-PointCloud parse_ply(const std::string& path, std::string_view bytes, CloudReadReport& report) {
+model::PointCloud parse_ply(const std::string& path, std::string_view bytes,
+                            CloudReadReport& report) {
   const PlyHeader header = parse_ply_header(path, bytes);
   const PlyElement& vertex = header.elements[header.vertex_element];
   report.format = "ply " + to_string(header.encoding);
@@ -121,7 +122,7 @@ PointCloud parse_ply(const std::string& path, std::string_view bytes, CloudReadR
   return std::move(collected).into_cloud(header.origin, header.orientation);
 }
 
-std::string encode_ply(const PointCloud& cloud, CloudEncoding encoding) {
+std::string encode_ply(const model::PointCloud& cloud, CloudEncoding encoding) {
   std::string text = "ply\nformat ";
   text += encoding == CloudEncoding::ascii ? "ascii 1.0\n" : "binary_little_endian 1.0\n";
   // PLY has no viewpoint; this comment keeps the sensor pose through a round trip.

@@ -100,7 +100,7 @@ class HeaderParser {
     }
     const Eigen::Quaternionf orientation(values[3], values[4], values[5], values[6]);
     if (orientation.norm() == 0.0f) return;
-    header_.origin = Point3f(values[0], values[1], values[2]);
+    header_.origin = model::Point3f(values[0], values[1], values[2]);
     header_.orientation = orientation.normalized();
   }
 

@@ -36,7 +36,7 @@ struct PlyHeader {
   std::size_t vertex_element = 0;               ///< index of `vertex` in `elements`
   std::array<std::size_t, 3> xyz_properties{};  ///< indices of x, y, z among its properties
   /// From a `comment viewpoint tx ty tz qw qx qy qz` line (write_cloud's), else identity.
-  Point3f origin = Point3f::Zero();
+  model::Point3f origin = model::Point3f::Zero();
   Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity();
   std::size_t body_offset = 0;  ///< first byte after end_header
   int end_header_line = 0;

@@ -39,7 +39,7 @@ float read_coordinate(const char* at, CoordinateType type) {
 
 }  // namespace
 
-void CollectedPoints::keep_if_finite(const Point3f& point) {
+void CollectedPoints::keep_if_finite(const model::Point3f& point) {
   if (point.allFinite()) {
     points.push_back(point);
   } else {
@@ -72,9 +72,9 @@ bool collect_points(std::string_view bytes, std::size_t count,
   return true;
 }
 
-PointCloud CollectedPoints::into_cloud(const Point3f& origin,
-                                       const Eigen::Quaternionf& orientation) && {
-  PointCloud cloud;
+model::PointCloud CollectedPoints::into_cloud(const model::Point3f& origin,
+                                              const Eigen::Quaternionf& orientation) && {
+  model::PointCloud cloud;
   cloud.points = std::move(points);
   cloud.origin = origin;
   cloud.orientation = orientation;

@@ -23,14 +23,15 @@ struct CoordinateColumn {
 
 /// Finite points and how many were dropped for a NaN or infinite coordinate.
 struct CollectedPoints {
-  std::vector<Point3f> points;
+  std::vector<model::Point3f> points;
   std::size_t dropped_non_finite = 0;
 
   /// Keeps `point` when all three coordinates are finite, counts it as dropped otherwise.
-  void keep_if_finite(const Point3f& point);
+  void keep_if_finite(const model::Point3f& point);
 
   /// The cloud of the kept points with the file's sensor pose.
-  PointCloud into_cloud(const Point3f& origin, const Eigen::Quaternionf& orientation) &&;
+  model::PointCloud into_cloud(const model::Point3f& origin,
+                               const Eigen::Quaternionf& orientation) &&;
 };
 
 /// A double as the nearest float; beyond float's range, an infinity of its sign (which

@@ -9,7 +9,7 @@
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 using io::MapReader;
@@ -35,9 +35,9 @@ std::vector<std::string> read_names(MapReader& reader, const std::string& key,
   return names;
 }
 
-PricedCapacity read_priced(MapReader& reader, const std::string& capacity_key,
-                           const std::string& capacity_expected) {
-  PricedCapacity item;
+model::PricedCapacity read_priced(MapReader& reader, const std::string& capacity_key,
+                                  const std::string& capacity_expected) {
+  model::PricedCapacity item;
   item.where = reader.location();
   item.id = reader.text("id", Need::required, "an id").value_or("");
   item.capacity = io::positive(reader, capacity_key, Need::required, capacity_expected);
@@ -48,34 +48,36 @@ PricedCapacity read_priced(MapReader& reader, const std::string& capacity_key,
 }
 
 /// The measured loads file named by `filtering_loads` (relative to the catalog), if any.
-std::optional<FilteringLoads> read_measured_loads(MapReader& top, const std::string& catalog_path) {
+std::optional<model::FilteringLoads> read_measured_loads(MapReader& top,
+                                                         const std::string& catalog_path) {
   const std::optional<std::string> name = top.text("filtering_loads", Need::optional);
   if (!name) return std::nullopt;
   const std::filesystem::path resolved = std::filesystem::path(catalog_path).parent_path() / *name;
   std::error_code error;
   if (!std::filesystem::is_regular_file(resolved, error)) {
-    throw InputError(
-        Diagnostic{top.location("filtering_loads"), top.field("filtering_loads"),
-                   "'" + resolved.string() + "' does not exist",
-                   "a file written by `rigdesign filter --write-loads`, relative to the catalog"});
+    throw model::InputError(model::Diagnostic{
+        top.location("filtering_loads"), top.field("filtering_loads"),
+        "'" + resolved.string() + "' does not exist",
+        "a file written by `rigdesign filter --write-loads`, relative to the catalog"});
   }
   return load_filtering_loads(resolved.string());
 }
 
 }  // namespace
 
-Catalog load_catalog(const std::string& path) {
+model::Catalog load_catalog(const std::string& path) {
   const YAML::Node root = io::load_yaml_file(path);
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1},
-                                "(document)",
-                                "is not a map",
-                                "a catalog: name, body, distance_of_interest, sensors, slots, "
-                                "transfer, cpus"});
+    throw model::InputError(
+        model::Diagnostic{{path, 1, 1},
+                          "(document)",
+                          "is not a map",
+                          "a catalog: name, body, distance_of_interest, sensors, slots, "
+                          "transfer, cpus"});
   }
-  Catalog catalog;
+  model::Catalog catalog;
   catalog.file = path;
   catalog.where = top.location();
   catalog.name = top.text("name", Need::required, "the catalog's name").value_or("");
@@ -97,12 +99,12 @@ Catalog load_catalog(const std::string& path) {
   catalog.filtering_seconds_per_point =
       io::non_negative(top, "filtering_seconds_per_point", Need::required,
                        "core-seconds of point filtering per delivered point, >= 0");
-  const std::optional<FilteringLoads> measured = read_measured_loads(top, path);
+  const std::optional<model::FilteringLoads> measured = read_measured_loads(top, path);
   const std::optional<UrdfPoses> urdf = io::read_urdf(top, path);
 
   std::set<std::string> seen;
   for (MapReader& reader : top.maps("sensors", Need::required, "a list of candidate sensors")) {
-    CandidateSensor candidate;
+    model::CandidateSensor candidate;
     candidate.where = reader.location();
     candidate.sensor_id = reader.text("sensor", Need::required, "a sensor id").value_or("");
     candidate.mode_ids = read_names(reader, "modes", "a non-empty list of mode ids");
@@ -110,7 +112,7 @@ Catalog load_catalog(const std::string& path) {
       candidate.filtering_seconds_per_point = io::non_negative(
           reader, "filtering_seconds_per_point", Need::required, "core-seconds per point, >= 0");
     }
-    const FilteringLoad* load = measured ? measured->find(candidate.sensor_id) : nullptr;
+    const model::FilteringLoad* load = measured ? measured->find(candidate.sensor_id) : nullptr;
     if (!candidate.filtering_seconds_per_point && load != nullptr) {
       candidate.filtering_seconds_per_point = load->seconds_per_point;
     }
@@ -126,7 +128,7 @@ Catalog load_catalog(const std::string& path) {
 
   std::set<std::string> slot_ids;
   for (MapReader& reader : top.maps("slots", Need::required, "a list of mounting slots")) {
-    MountingSlot slot;
+    model::MountingSlot slot;
     slot.where = reader.location();
     slot.id = reader.text("id", Need::required, "a slot id").value_or("");
     if (auto pose =
@@ -163,13 +165,14 @@ Catalog load_catalog(const std::string& path) {
   return catalog;
 }
 
-Diagnostics check_catalog_references(const Catalog& catalog, const SensorLibrary& library) {
-  Diagnostics diagnostics;
+model::Diagnostics check_catalog_references(const model::Catalog& catalog,
+                                            const model::SensorLibrary& library) {
+  model::Diagnostics diagnostics;
   std::set<std::string> candidates;
   for (std::size_t i = 0; i < catalog.sensors.size(); ++i) {
-    const CandidateSensor& candidate = catalog.sensors[i];
+    const model::CandidateSensor& candidate = catalog.sensors[i];
     const std::string field = "sensors[" + std::to_string(i) + "]";
-    const Sensor* sensor = library.find(candidate.sensor_id);
+    const model::Sensor* sensor = library.find(candidate.sensor_id);
     if (sensor == nullptr) {
       diagnostics.error(candidate.where, field + ".sensor",
                         "unknown sensor '" + candidate.sensor_id + "' in " + library.file,
@@ -180,7 +183,8 @@ Diagnostics check_catalog_references(const Catalog& catalog, const SensorLibrary
     for (const std::string& mode : candidate.mode_ids) {
       if (sensor->find_mode(mode) == nullptr) {
         std::string modes;
-        for (const SensorMode& m : sensor->modes) modes += (modes.empty() ? "" : ", ") + m.id;
+        for (const model::SensorMode& m : sensor->modes)
+          modes += (modes.empty() ? "" : ", ") + m.id;
         diagnostics.error(candidate.where, field + ".modes",
                           "unknown mode '" + mode + "' of sensor '" + sensor->id + "'",
                           "one of: " + modes);
@@ -188,7 +192,7 @@ Diagnostics check_catalog_references(const Catalog& catalog, const SensorLibrary
     }
   }
   for (std::size_t i = 0; i < catalog.slots.size(); ++i) {
-    const MountingSlot& slot = catalog.slots[i];
+    const model::MountingSlot& slot = catalog.slots[i];
     const std::string field = "slots[" + std::to_string(i) + "].allows";
     bool allows_any = false;
     for (const std::string& sensor : slot.allowed_sensors) {
@@ -210,4 +214,4 @@ Diagnostics check_catalog_references(const Catalog& catalog, const SensorLibrary
   return diagnostics;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

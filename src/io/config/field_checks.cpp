@@ -7,7 +7,7 @@ namespace rigdesign::io {
 double positive(MapReader& reader, const std::string& key, Need need, const std::string& expected) {
   const auto value = reader.number(key, need, expected);
   if (!value) return 0.0;
-  reader.require(*value > 0, key, "must be > 0, got " + format_number(*value), expected);
+  reader.require(*value > 0, key, "must be > 0, got " + model::format_number(*value), expected);
   return *value;
 }
 
@@ -15,7 +15,7 @@ double non_negative(MapReader& reader, const std::string& key, Need need,
                     const std::string& expected) {
   const auto value = reader.number(key, need, expected);
   if (!value) return 0.0;
-  reader.require(*value >= 0, key, "must be >= 0, got " + format_number(*value), expected);
+  reader.require(*value >= 0, key, "must be >= 0, got " + model::format_number(*value), expected);
   return *value;
 }
 
@@ -24,15 +24,15 @@ double angle_in(MapReader& reader, const std::string& key, double low, double hi
   const auto value = reader.number(key, Need::required, expected);
   if (!value) return 0.0;
   const bool ok = *value > low && (high_inclusive ? *value <= high : *value < high);
-  reader.require(ok, key, "is out of range: " + format_number(*value), expected);
+  reader.require(ok, key, "is out of range: " + model::format_number(*value), expected);
   return *value;
 }
 
 double elevation(MapReader& reader, const std::string& key, const std::string& expected) {
   const auto value = reader.number(key, Need::required, expected);
   if (!value) return 0.0;
-  reader.require(*value >= -90 && *value <= 90, key, "is out of range: " + format_number(*value),
-                 expected);
+  reader.require(*value >= -90 && *value <= 90, key,
+                 "is out of range: " + model::format_number(*value), expected);
   return *value;
 }
 
@@ -41,13 +41,13 @@ std::optional<double> share(MapReader& reader, const std::string& key, Need need
   const auto value = reader.number(key, need, expected);
   if (!value) return std::nullopt;
   const bool ok = *value >= 0 && *value <= 1;
-  reader.require(ok, key, "is out of range: " + format_number(*value), expected);
+  reader.require(ok, key, "is out of range: " + model::format_number(*value), expected);
   return ok ? value : std::nullopt;
 }
 
-Basis basis(MapReader& reader, Need need) {
+model::Basis basis(MapReader& reader, Need need) {
   const auto index = reader.choice("basis", need, {"datasheet", "measured", "estimate"});
-  return index ? static_cast<Basis>(*index) : Basis::estimate;
+  return index ? static_cast<model::Basis>(*index) : model::Basis::estimate;
 }
 
 }  // namespace rigdesign::io

@@ -24,6 +24,6 @@ double elevation(MapReader& reader, const std::string& key, const std::string& e
 std::optional<double> share(MapReader& reader, const std::string& key, Need need,
                             const std::string& expected);
 /// `basis: datasheet | measured | estimate`.
-Basis basis(MapReader& reader, Need need);
+model::Basis basis(MapReader& reader, Need need);
 
 }  // namespace rigdesign::io

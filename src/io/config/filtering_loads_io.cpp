@@ -5,21 +5,21 @@
 #include "io/config/field_checks.hpp"
 #include "io/config/yaml_reader.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
-FilteringLoads load_filtering_loads(const std::string& path) {
+model::FilteringLoads load_filtering_loads(const std::string& path) {
   using io::Need;
   const YAML::Node root = io::load_yaml_file(path);
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
   io::MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(
-        Diagnostic{{path, 1, 1},
-                   "(document)",
-                   "is not a map",
-                   "a filtering-loads file: machine, pipeline, scene, frames, sensors"});
+    throw model::InputError(
+        model::Diagnostic{{path, 1, 1},
+                          "(document)",
+                          "is not a map",
+                          "a filtering-loads file: machine, pipeline, scene, frames, sensors"});
   }
-  FilteringLoads loads;
+  model::FilteringLoads loads;
   loads.file = path;
   loads.machine =
       top.text("machine", Need::required, "what one core-equivalent means").value_or("");
@@ -28,7 +28,7 @@ FilteringLoads load_filtering_loads(const std::string& path) {
   loads.frames = top.integer("frames", Need::optional, "frames per sensor, >= 1").value_or(0);
   std::set<std::string> seen;
   for (io::MapReader& reader : top.maps("sensors", Need::required, "a list of measured sensors")) {
-    FilteringLoad load;
+    model::FilteringLoad load;
     load.where = reader.location();
     load.sensor_id = reader.text("sensor", Need::required, "a sensor id").value_or("");
     load.mode_id = reader.text("mode", Need::optional).value_or("");
@@ -50,13 +50,13 @@ FilteringLoads load_filtering_loads(const std::string& path) {
   return loads;
 }
 
-FilteringLoads merge_filtering_loads(const FilteringLoads& previous,
-                                     const FilteringLoads& measured) {
-  FilteringLoads merged = measured;
-  for (const FilteringLoad& old : previous.sensors) {
+model::FilteringLoads merge_filtering_loads(const model::FilteringLoads& previous,
+                                            const model::FilteringLoads& measured) {
+  model::FilteringLoads merged = measured;
+  for (const model::FilteringLoad& old : previous.sensors) {
     if (measured.find(old.sensor_id) == nullptr) merged.sensors.push_back(old);
   }
   return merged;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

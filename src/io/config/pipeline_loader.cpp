@@ -7,7 +7,7 @@
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/model/units.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 using io::MapReader;
@@ -22,7 +22,7 @@ void read_positive(MapReader& m, const std::string& key, double& value,
   if (m.has(key)) value = io::positive(m, key, Need::required, expected);
 }
 
-RansacPlaneParams read_ransac(MapReader& m, RansacPlaneParams params) {
+model::RansacPlaneParams read_ransac(MapReader& m, model::RansacPlaneParams params) {
   if (const auto iterations = m.integer("iterations", Need::optional, "an iteration count, > 0")) {
     m.require(*iterations > 0, "iterations", "must be > 0", "an iteration count, > 0");
     params.iterations = *iterations;
@@ -39,14 +39,14 @@ RansacPlaneParams read_ransac(MapReader& m, RansacPlaneParams params) {
   }
   if (const auto tilt = m.number("max_tilt_deg", Need::optional, "degrees in (0, 90]")) {
     m.require(*tilt > 0 && *tilt <= 90, "max_tilt_deg", "is out of range", "degrees in (0, 90]");
-    params.max_tilt = deg_to_rad(*tilt);
+    params.max_tilt = model::deg_to_rad(*tilt);
   }
   m.reject_unknown_keys();
   return params;
 }
 
-PassThroughParams read_pass_through(MapReader& m) {
-  PassThroughParams params;
+model::PassThroughParams read_pass_through(MapReader& m) {
+  model::PassThroughParams params;
   if (const auto axis = m.choice("axis", Need::optional, {"x", "y", "z"}))
     params.axis = static_cast<int>(*axis);
   read(m, "min", params.min, "metres");
@@ -57,10 +57,10 @@ PassThroughParams read_pass_through(MapReader& m) {
   return params;
 }
 
-StageParams read_stage(MapReader& m, std::size_t index) {
+model::StageParams read_stage(MapReader& m, std::size_t index) {
   switch (index) {
     case 0: {
-      VoxelGridParams params;
+      model::VoxelGridParams params;
       read_positive(m, "leaf", params.leaf, "the voxel size in metres, > 0");
       if (const auto offset =
               m.numbers("grid_offset", Need::optional, 3, 3, "[x, y, z] in metres")) {
@@ -70,7 +70,7 @@ StageParams read_stage(MapReader& m, std::size_t index) {
       return params;
     }
     case 1: {
-      StatisticalOutlierParams params;
+      model::StatisticalOutlierParams params;
       if (const auto k = m.integer("neighbours", Need::optional, "a neighbour count N, > 0")) {
         m.require(*k > 0, "neighbours", "must be > 0", "a neighbour count N, > 0");
         params.neighbours = *k;
@@ -81,9 +81,9 @@ StageParams read_stage(MapReader& m, std::size_t index) {
       return params;
     }
     case 2: return read_pass_through(m);
-    case 3: return RemovePlaneParams{read_ransac(m, {})};
+    case 3: return model::RemovePlaneParams{read_ransac(m, {})};
     case 4: {
-      FloorRemoval1Params params;
+      model::FloorRemoval1Params params;
       if (auto slice = m.map("slice", Need::optional)) params.slice = read_pass_through(*slice);
       if (auto ransac = m.map("ransac", Need::optional))
         params.ransac = read_ransac(*ransac, params.ransac);
@@ -91,7 +91,7 @@ StageParams read_stage(MapReader& m, std::size_t index) {
       return params;
     }
     case 5: {
-      FloorRemoval2Params params;
+      model::FloorRemoval2Params params;
       read_positive(m, "coarse_leaf", params.coarse_leaf, "V2 in metres, > 0");
       if (auto ransac = m.map("ransac", Need::optional))
         params.ransac = read_ransac(*ransac, params.ransac);
@@ -99,7 +99,7 @@ StageParams read_stage(MapReader& m, std::size_t index) {
       return params;
     }
     default: {
-      NegativeObstacleParams params;
+      model::NegativeObstacleParams params;
       read(m, "below", params.below, "metres (negative: below the floor)");
       read(m, "virtual_height", params.virtual_height, "metres");
       m.reject_unknown_keys();
@@ -110,15 +110,15 @@ StageParams read_stage(MapReader& m, std::size_t index) {
 
 }  // namespace
 
-Pipeline load_pipeline(const std::string& path) {
+model::Pipeline load_pipeline(const std::string& path) {
   const YAML::Node root = io::load_yaml_file(path);
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(
-        Diagnostic{{path, 1, 1}, "(document)", "is not a map", "a pipeline: name and stages"});
+    throw model::InputError(model::Diagnostic{
+        {path, 1, 1}, "(document)", "is not a map", "a pipeline: name and stages"});
   }
-  Pipeline pipeline;
+  model::Pipeline pipeline;
   pipeline.name = top.text("name", Need::required, "the pipeline's name").value_or("");
   const YAML::Node stages = top.node("stages");
   if (!stages.IsSequence() || stages.size() == 0) {
@@ -131,7 +131,7 @@ Pipeline load_pipeline(const std::string& path) {
       const std::string name = stage.IsMap() && stage.size() == 1 ? stage.begin()->first.Scalar()
                                : stage.IsScalar()                 ? stage.Scalar()
                                                                   : "";
-      const auto& names = stage_names();
+      const auto& names = model::stage_names();
       const auto known = std::find(names.begin(), names.end(), name);
       if (known == names.end()) {
         std::string list;
@@ -160,4 +160,4 @@ Pipeline load_pipeline(const std::string& path) {
   return pipeline;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -10,12 +10,12 @@
 
 namespace rigdesign::io {
 
-RobotBody read_body(MapReader& body);
+model::RobotBody read_body(MapReader& body);
 
 /// The `urdf` map of a rig or catalog at `file`; problems are recorded on `top`.
 std::optional<UrdfPoses> read_urdf(MapReader& top, const std::string& file);
 
 /// A pose is xyz (+ rpy_deg) in the robot frame, or the pose of a link of the file's URDF.
-Pose3 read_pose(MapReader& pose, const std::optional<UrdfPoses>& urdf);
+model::Pose3 read_pose(MapReader& pose, const std::optional<UrdfPoses>& urdf);
 
 }  // namespace rigdesign::io

@@ -3,23 +3,23 @@
 #include "io/config/field_checks.hpp"
 #include "io/config/yaml_reader.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
-RelaxationPolicy load_policy(const std::string& path) {
+model::RelaxationPolicy load_policy(const std::string& path) {
   const YAML::Node root = io::load_yaml_file(path);
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
   io::MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1},
-                                "(document)",
-                                "is not a map",
-                                "a relaxation policy: a map with name and steps"});
+    throw model::InputError(model::Diagnostic{{path, 1, 1},
+                                              "(document)",
+                                              "is not a map",
+                                              "a relaxation policy: a map with name and steps"});
   }
-  RelaxationPolicy policy;
+  model::RelaxationPolicy policy;
   policy.file = path;
   policy.name = top.text("name", io::Need::required, "the policy's name").value_or("");
   for (io::MapReader& reader : top.maps("steps", io::Need::required, "a list of steps")) {
-    RelaxationStep step;
+    model::RelaxationStep step;
     step.where = reader.location();
     step.requirement =
         reader.text("relax", io::Need::required, "a requirement path such as robot_speed.max_speed")
@@ -27,7 +27,7 @@ RelaxationPolicy load_policy(const std::string& path) {
     if (step.requirement == "lighting") {
       if (const auto drop =
               reader.choice("drop", io::Need::required, {"dark", "indoor", "sunlight"})) {
-        step.drop = static_cast<LightCondition>(*drop);
+        step.drop = static_cast<model::LightCondition>(*drop);
       }
     } else {
       step.to = reader.number("to", io::Need::required,
@@ -44,4 +44,4 @@ RelaxationPolicy load_policy(const std::string& path) {
   return policy;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

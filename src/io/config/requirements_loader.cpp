@@ -7,14 +7,14 @@
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/model/units.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 using io::MapReader;
 using io::Need;
 
-SectorRequirement read_sector(MapReader& reader) {
-  SectorRequirement sector;
+model::SectorRequirement read_sector(MapReader& reader) {
+  model::SectorRequirement sector;
   sector.where = reader.location();
   sector.name = reader.text("name", Need::required, "a sector name such as front").value_or("");
   const std::string angle = "an azimuth in degrees, counter-clockwise from forward, in [-360, 360]";
@@ -24,8 +24,8 @@ SectorRequirement read_sector(MapReader& reader) {
     reader.require(*from >= -360 && *from <= 360, "from_deg", "is out of range", angle);
     reader.require(*to > *from && *to - *from <= 360, "to_deg", "does not follow from_deg",
                    "from_deg < to_deg <= from_deg + 360");
-    sector.from = deg_to_rad(*from);
-    sector.to = deg_to_rad(*to);
+    sector.from = model::deg_to_rad(*from);
+    sector.to = model::deg_to_rad(*to);
   }
   const std::string share = "a share of the cross-section in [0, 1]";
   sector.min_complete_coverage =
@@ -36,8 +36,8 @@ SectorRequirement read_sector(MapReader& reader) {
   return sector;
 }
 
-MotionBetweenFrames read_motion(MapReader& reader, const std::string& speed_key) {
-  MotionBetweenFrames motion;
+model::MotionBetweenFrames read_motion(MapReader& reader, const std::string& speed_key) {
+  model::MotionBetweenFrames motion;
   motion.where = reader.location();
   motion.speed = io::positive(reader, speed_key, Need::required, "metres per second, > 0");
   motion.travel = io::positive(reader, "max_travel_between_frames", Need::required,
@@ -46,7 +46,7 @@ MotionBetweenFrames read_motion(MapReader& reader, const std::string& speed_key)
   return motion;
 }
 
-void read_lighting(MapReader& top, Requirements& requirements) {
+void read_lighting(MapReader& top, model::Requirements& requirements) {
   const std::vector<std::string> names = {"dark", "indoor", "sunlight"};
   const std::string expected = "a list of conditions from: dark, indoor, sunlight";
   requirements.lighting_where = top.location("lighting");
@@ -68,23 +68,24 @@ void read_lighting(MapReader& top, Requirements& requirements) {
                               expected);
       continue;
     }
-    requirements.lighting.push_back(static_cast<LightCondition>(it - names.begin()));
+    requirements.lighting.push_back(static_cast<model::LightCondition>(it - names.begin()));
   }
 }
 
 }  // namespace
 
-Requirements load_requirements(const std::string& path) {
+model::Requirements load_requirements(const std::string& path) {
   const YAML::Node root = io::load_yaml_file(path);
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1},
-                                "(document)",
-                                "is not a map",
-                                "requirements: a map with keys R1-R8 (see rigs/README.md)"});
+    throw model::InputError(
+        model::Diagnostic{{path, 1, 1},
+                          "(document)",
+                          "is not a map",
+                          "requirements: a map with keys R1-R8 (see rigs/README.md)"});
   }
-  Requirements requirements;
+  model::Requirements requirements;
   requirements.file = path;
   requirements.name = top.text("name", Need::required, "the application's name").value_or("");
   if (auto body = top.map("body", Need::optional)) {  // R1
@@ -95,7 +96,7 @@ Requirements load_requirements(const std::string& path) {
   }
   std::set<std::string> sector_names;
   for (MapReader& reader : top.maps("sectors", Need::optional)) {  // R2
-    SectorRequirement sector = read_sector(reader);
+    model::SectorRequirement sector = read_sector(reader);
     if (!sector.name.empty() && !sector_names.insert(sector.name).second) {
       reader.require(false, "name", "duplicate sector '" + sector.name + "'", "unique names");
     }
@@ -136,4 +137,4 @@ Requirements load_requirements(const std::string& path) {
   return requirements;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -7,7 +7,7 @@
 #include "io/config/placement_fields.hpp"
 #include "io/config/yaml_reader.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 using io::MapReader;
@@ -16,8 +16,8 @@ using io::read_body;
 using io::read_pose;
 using io::read_urdf;
 
-Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf) {
-  Mount mount;
+model::Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf) {
+  model::Mount mount;
   mount.where = reader.location();
   mount.id = reader.text("id", Need::required, "a mount id, unique in the rig").value_or("");
   mount.sensor_id =
@@ -40,17 +40,18 @@ Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf) {
 
 }  // namespace
 
-Rig load_rig(const std::string& path) {
+model::Rig load_rig(const std::string& path) {
   const YAML::Node root = io::load_yaml_file(path);
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1},
-                                "(document)",
-                                "is not a map",
-                                "a rig: a map with name, body, distance_of_interest, mounts"});
+    throw model::InputError(
+        model::Diagnostic{{path, 1, 1},
+                          "(document)",
+                          "is not a map",
+                          "a rig: a map with name, body, distance_of_interest, mounts"});
   }
-  Rig rig;
+  model::Rig rig;
   rig.file = path;
   rig.where = top.location();
   rig.name = top.text("name", Need::required, "the rig's name").value_or("");
@@ -70,7 +71,7 @@ Rig load_rig(const std::string& path) {
   const std::optional<UrdfPoses> urdf = read_urdf(top, path);
   std::set<std::string> ids;
   for (MapReader& reader : top.maps("mounts", Need::required, "a list of mounts")) {
-    Mount mount = read_mount(reader, urdf);
+    model::Mount mount = read_mount(reader, urdf);
     if (!mount.id.empty() && !ids.insert(mount.id).second) {
       reader.require(false, "id", "duplicate mount id '" + mount.id + "'", "unique mount ids");
     }
@@ -84,4 +85,4 @@ Rig load_rig(const std::string& path) {
   return rig;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

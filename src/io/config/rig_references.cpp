@@ -2,7 +2,7 @@
 
 #include "rigdesign/model/format_number.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 template <typename Items, typename IdOf>
@@ -18,37 +18,38 @@ std::string mount_field(std::size_t index, const char* key) {
 
 }  // namespace
 
-Diagnostics check_rig_references(const Rig& rig, const SensorLibrary& library) {
-  Diagnostics diagnostics;
+model::Diagnostics check_rig_references(const model::Rig& rig,
+                                        const model::SensorLibrary& library) {
+  model::Diagnostics diagnostics;
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
-    const Mount& mount = rig.mounts[i];
-    const Sensor* sensor = library.find(mount.sensor_id);
+    const model::Mount& mount = rig.mounts[i];
+    const model::Sensor* sensor = library.find(mount.sensor_id);
     if (sensor == nullptr) {
       diagnostics.error(
           mount.sensor_where, mount_field(i, "sensor"),
           "unknown sensor '" + mount.sensor_id + "' in " + library.file,
-          "one of: " + list_ids(library.sensors, [](const Sensor& s) { return s.id; }));
+          "one of: " + list_ids(library.sensors, [](const model::Sensor& s) { return s.id; }));
       continue;
     }
-    const SensorMode* mode = sensor->find_mode(mount.mode_id);
+    const model::SensorMode* mode = sensor->find_mode(mount.mode_id);
     if (mode == nullptr) {
       diagnostics.error(
           mount.mode_where, mount_field(i, "mode"),
           "unknown mode '" + mount.mode_id + "' of sensor '" + sensor->id + "'",
-          "one of: " + list_ids(sensor->modes, [](const SensorMode& m) { return m.id; }));
+          "one of: " + list_ids(sensor->modes, [](const model::SensorMode& m) { return m.id; }));
       continue;
     }
     const double distance = rig.distance_for(mount);
     if (distance > mode->max_range || distance < mode->min_range) {
       diagnostics.warning(mount.where, mount_field(i, "distance_of_interest"),
-                          "distance of interest " + format_number(distance) +
+                          "distance of interest " + model::format_number(distance) +
                               " m is outside the range of " + sensor->id + "/" + mode->id + " [" +
-                              format_number(mode->min_range) + ", " +
-                              format_number(mode->max_range) + "] m: it sees nothing there",
+                              model::format_number(mode->min_range) + ", " +
+                              model::format_number(mode->max_range) + "] m: it sees nothing there",
                           "a per-mount distance_of_interest within the mode's range");
     }
   }
   return diagnostics;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -7,7 +7,7 @@
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/model/units.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 using io::MapReader;
@@ -39,48 +39,51 @@ MapReader& source_of(const std::string& key, MapReader& mode, std::optional<MapR
   return *defaults;
 }
 
-FieldOfView read_fov(MapReader& fov) {
-  FieldOfView result;
+model::FieldOfView read_fov(MapReader& fov) {
+  model::FieldOfView result;
   const auto shape = fov.choice("shape", Need::required, kShapeNames);
   if (!shape) return result;
-  result.shape = static_cast<FovShape>(*shape);
+  result.shape = static_cast<model::FovShape>(*shape);
   const std::string full_angle = "a full angle in degrees, in (0, 360]";
   const std::string lens_angle =
       "a full angle in degrees, in (0, 180) for a " + kShapeNames[*shape];
   switch (result.shape) {
-    case FovShape::pyramid:
+    case model::FovShape::pyramid:
       result.horizontal =
-          deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 180, false, lens_angle));
-      result.vertical = deg_to_rad(io::angle_in(fov, "vertical_deg", 0, 180, false, lens_angle));
+          model::deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 180, false, lens_angle));
+      result.vertical =
+          model::deg_to_rad(io::angle_in(fov, "vertical_deg", 0, 180, false, lens_angle));
       result.elevation_min = -result.vertical / 2;
       result.elevation_max = result.vertical / 2;
       break;
-    case FovShape::cone:
-      result.horizontal = deg_to_rad(io::angle_in(fov, "apex_deg", 0, 180, false, lens_angle));
+    case model::FovShape::cone:
+      result.horizontal =
+          model::deg_to_rad(io::angle_in(fov, "apex_deg", 0, 180, false, lens_angle));
       result.vertical = result.horizontal;
       result.elevation_min = -result.vertical / 2;
       result.elevation_max = result.vertical / 2;
       break;
-    case FovShape::band: {
+    case model::FovShape::band: {
       result.horizontal =
           fov.has("horizontal_deg")
-              ? deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle))
+              ? model::deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle))
               : 2 * std::numbers::pi;
       const std::string elevation = "an elevation in degrees, in [-90, 90]";
       const double low = io::elevation(fov, "elevation_min_deg", elevation);
       const double high = io::elevation(fov, "elevation_max_deg", elevation);
       fov.require(high > low, "elevation_max_deg", "is not above elevation_min_deg",
                   "elevation_min_deg < elevation_max_deg");
-      result.elevation_min = deg_to_rad(low);
-      result.elevation_max = deg_to_rad(high);
+      result.elevation_min = model::deg_to_rad(low);
+      result.elevation_max = model::deg_to_rad(high);
       result.vertical = result.elevation_max - result.elevation_min;
       break;
     }
-    case FovShape::planar:
-      result.horizontal = deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle));
-      result.vertical =
-          deg_to_rad(io::angle_in(fov, "beam_divergence_deg", 0, 180, false,
-                                  "the beam's full divergence angle in degrees, in (0, 180)"));
+    case model::FovShape::planar:
+      result.horizontal =
+          model::deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle));
+      result.vertical = model::deg_to_rad(
+          io::angle_in(fov, "beam_divergence_deg", 0, 180, false,
+                       "the beam's full divergence angle in degrees, in (0, 180)"));
       result.elevation_min = -result.vertical / 2;
       result.elevation_max = result.vertical / 2;
       break;
@@ -91,8 +94,8 @@ FieldOfView read_fov(MapReader& fov) {
 }
 
 // Angular resolution and points per frame: from a pixel grid, or given for scanners.
-void read_sampling(SensorMode& mode, MapReader& reader, std::optional<MapReader>& defaults) {
-  const bool planar = mode.fov.shape == FovShape::planar;
+void read_sampling(model::SensorMode& mode, MapReader& reader, std::optional<MapReader>& defaults) {
+  const bool planar = mode.fov.shape == model::FovShape::planar;
   MapReader& pixels_from = source_of("pixels", reader, defaults);
   MapReader& resolution_from = source_of("angular_resolution_deg", reader, defaults);
   const bool has_pixels = pixels_from.has("pixels");
@@ -123,8 +126,8 @@ void read_sampling(SensorMode& mode, MapReader& reader, std::optional<MapReader>
     if (resolution) {
       const bool positive = (*resolution)[0] > 0 && (count == 1 || (*resolution)[1] > 0);
       resolution_from.require(positive, "angular_resolution_deg", "has a value <= 0", expected);
-      mode.angular_resolution_h = deg_to_rad((*resolution)[0]);
-      if (count == 2) mode.angular_resolution_v = deg_to_rad((*resolution)[1]);
+      mode.angular_resolution_h = model::deg_to_rad((*resolution)[0]);
+      if (count == 2) mode.angular_resolution_v = model::deg_to_rad((*resolution)[1]);
     }
   }
   MapReader& points_from = source_of("points_per_frame", reader, defaults);
@@ -137,7 +140,7 @@ void read_sampling(SensorMode& mode, MapReader& reader, std::optional<MapReader>
                                        "a positive number of points per frame");
 }
 
-void read_bytes(SensorMode& mode, MapReader& reader, std::optional<MapReader>& defaults) {
+void read_bytes(model::SensorMode& mode, MapReader& reader, std::optional<MapReader>& defaults) {
   const std::vector<std::string> keys = {"bytes_per_frame", "bytes_per_point", "bytes_per_second"};
   const std::string expected = "exactly one of bytes_per_frame, bytes_per_point, bytes_per_second";
   int given = 0;
@@ -162,8 +165,8 @@ void read_bytes(SensorMode& mode, MapReader& reader, std::optional<MapReader>& d
   }
 }
 
-NoiseModel read_noise(MapReader& noise) {
-  NoiseModel model;
+model::NoiseModel read_noise(MapReader& noise) {
+  model::NoiseModel model;
   const std::string expected = "sigma(d) = a + b*d + c*d^2 with a [m], b [-], c [1/m], each >= 0";
   model.a = io::non_negative(noise, "a", Need::optional, expected);
   model.b = io::non_negative(noise, "b", Need::optional, expected);
@@ -176,8 +179,8 @@ NoiseModel read_noise(MapReader& noise) {
   return model;
 }
 
-LightImmunity read_light(MapReader& light) {
-  LightImmunity immunity;
+model::LightImmunity read_light(MapReader& light) {
+  model::LightImmunity immunity;
   immunity.dark = light.boolean("dark", Need::required).value_or(false);
   immunity.indoor = light.boolean("indoor", Need::required).value_or(false);
   immunity.sunlight = light.boolean("sunlight", Need::required).value_or(false);
@@ -186,8 +189,8 @@ LightImmunity read_light(MapReader& light) {
   return immunity;
 }
 
-DriverCpuLoad read_driver_cpu(MapReader& cpu) {
-  DriverCpuLoad load;
+model::DriverCpuLoad read_driver_cpu(MapReader& cpu) {
+  model::DriverCpuLoad load;
   load.cores = io::non_negative(cpu, "cores", Need::required,
                                 "core-equivalents of the reference machine, >= 0");
   load.seconds_per_point = io::non_negative(cpu, "seconds_per_point", Need::optional,
@@ -198,8 +201,8 @@ DriverCpuLoad read_driver_cpu(MapReader& cpu) {
   return load;
 }
 
-SensorMode read_mode(MapReader& reader, std::optional<MapReader>& defaults) {
-  SensorMode mode;
+model::SensorMode read_mode(MapReader& reader, std::optional<MapReader>& defaults) {
+  model::SensorMode mode;
   mode.where = reader.location();
   mode.id = reader.text("id", Need::required, "a mode id").value_or("");
   if (auto fov = source_of("fov", reader, defaults).map("fov", Need::required)) {
@@ -230,8 +233,8 @@ SensorMode read_mode(MapReader& reader, std::optional<MapReader>& defaults) {
   return mode;
 }
 
-Price read_price(MapReader& reader) {
-  Price price;
+model::Price read_price(MapReader& reader) {
+  model::Price price;
   price.usd = io::positive(reader, "usd", Need::required, "US dollars, > 0");
   const auto year = reader.integer("year", Need::required, "a year such as 2019");
   reader.require(!year || (*year >= 1990 && *year <= 2100), "year", "is out of range",
@@ -243,13 +246,13 @@ Price read_price(MapReader& reader) {
   return price;
 }
 
-Sensor read_sensor(MapReader& reader) {
-  Sensor sensor;
+model::Sensor read_sensor(MapReader& reader) {
+  model::Sensor sensor;
   sensor.where = reader.location();
   sensor.id = reader.text("id", Need::required, "a sensor id").value_or("");
   sensor.name = reader.text("name", Need::required, "the product name").value_or("");
   if (const auto technology = reader.choice("technology", Need::required, kTechnologyNames)) {
-    sensor.technology = static_cast<Technology>(*technology);
+    sensor.technology = static_cast<model::Technology>(*technology);
   }
   sensor.source =
       reader.text("source", Need::required, "the datasheet document or URL").value_or("");
@@ -259,7 +262,7 @@ Sensor read_sensor(MapReader& reader) {
   if (defaults) defaults->reject_keys_other_than(kModeKeys);
   std::set<std::string> mode_ids;
   for (MapReader& mode_reader : reader.maps("modes", Need::required, "a list of modes")) {
-    SensorMode mode = read_mode(mode_reader, defaults);
+    model::SensorMode mode = read_mode(mode_reader, defaults);
     if (!mode.id.empty() && !mode_ids.insert(mode.id).second) {
       mode_reader.require(false, "id", "duplicate mode id '" + mode.id + "'",
                           "mode ids unique within a sensor");
@@ -274,24 +277,24 @@ Sensor read_sensor(MapReader& reader) {
 
 }  // namespace
 
-SensorLibrary load_sensor_library(const std::string& path) {
+model::SensorLibrary load_sensor_library(const std::string& path) {
   const YAML::Node root = io::load_yaml_file(path);
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
   MapReader top(root, "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{path, 1, 1},
-                                "(document)",
-                                "is not a map",
-                                "a map with `reference_machine` and `sensors`"});
+    throw model::InputError(model::Diagnostic{{path, 1, 1},
+                                              "(document)",
+                                              "is not a map",
+                                              "a map with `reference_machine` and `sensors`"});
   }
-  SensorLibrary library;
+  model::SensorLibrary library;
   library.file = path;
   library.reference_machine = top.text("reference_machine", Need::required,
                                        "the machine a driver core-equivalent refers to")
                                   .value_or("");
   std::set<std::string> sensor_ids;
   for (MapReader& reader : top.maps("sensors", Need::required, "a list of sensors")) {
-    Sensor sensor = read_sensor(reader);
+    model::Sensor sensor = read_sensor(reader);
     if (!sensor.id.empty() && !sensor_ids.insert(sensor.id).second) {
       reader.require(false, "id", "duplicate sensor id '" + sensor.id + "'", "unique sensor ids");
     }
@@ -304,4 +307,4 @@ SensorLibrary load_sensor_library(const std::string& path) {
   return library;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

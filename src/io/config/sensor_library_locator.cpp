@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 std::string resolve_beside(const std::string& file, const std::string& relative) {
   const std::filesystem::path path(relative);
@@ -14,7 +14,7 @@ std::string bundled_sensor_library() {
   return (std::filesystem::path(RIGDESIGN_DATA_DIR) / "sensors.yaml").string();
 }
 
-std::string locate_sensor_library(const Rig& rig, const std::string& explicit_path) {
+std::string locate_sensor_library(const model::Rig& rig, const std::string& explicit_path) {
   if (!explicit_path.empty()) return explicit_path;
   if (!rig.sensor_library.empty()) return resolve_beside(rig.file, rig.sensor_library);
   namespace fs = std::filesystem;
@@ -32,4 +32,4 @@ std::string locate_sensor_library(const Rig& rig, const std::string& explicit_pa
   return bundled_sensor_library();
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

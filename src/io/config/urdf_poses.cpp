@@ -8,12 +8,12 @@
 
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
-Pose3 to_pose(const urdf::Pose& pose) {
-  Pose3 result = Pose3::Identity();
-  result.translation() = Vec3(pose.position.x, pose.position.y, pose.position.z);
+model::Pose3 to_pose(const urdf::Pose& pose) {
+  model::Pose3 result = model::Pose3::Identity();
+  result.translation() = model::Vec3(pose.position.x, pose.position.y, pose.position.z);
   result.linear() =
       Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)
           .normalized()
@@ -22,8 +22,8 @@ Pose3 to_pose(const urdf::Pose& pose) {
 }
 
 // T_root_link, by composing joint origins from the link up to the root.
-Pose3 pose_in_root(const urdf::LinkConstSharedPtr& link) {
-  Pose3 T_root_link = Pose3::Identity();
+model::Pose3 pose_in_root(const urdf::LinkConstSharedPtr& link) {
+  model::Pose3 T_root_link = model::Pose3::Identity();
   for (urdf::LinkConstSharedPtr current = link; current && current->parent_joint;
        current = current->getParent()) {
     T_root_link = to_pose(current->parent_joint->parent_to_joint_origin_transform) * T_root_link;
@@ -34,11 +34,13 @@ Pose3 pose_in_root(const urdf::LinkConstSharedPtr& link) {
 }  // namespace
 
 UrdfPoses UrdfPoses::load(const std::string& path, const std::string& base_link,
-                          const SourceLocation& named_at, const SourceLocation& base_named_at) {
+                          const model::SourceLocation& named_at,
+                          const model::SourceLocation& base_named_at) {
   std::ifstream stream(path);
   if (!stream) {
-    throw InputError(Diagnostic{named_at, "urdf.file", "names '" + path + "', which cannot be read",
-                                "a URDF file path relative to the rig file"});
+    throw model::InputError(model::Diagnostic{named_at, "urdf.file",
+                                              "names '" + path + "', which cannot be read",
+                                              "a URDF file path relative to the rig file"});
   }
   std::stringstream xml;
   xml << stream.rdbuf();
@@ -46,8 +48,9 @@ UrdfPoses UrdfPoses::load(const std::string& path, const std::string& base_link,
   console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_NONE);
   const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml.str());
   if (!model) {
-    throw InputError(Diagnostic{named_at, "urdf.file", "'" + path + "' is not a valid URDF",
-                                "a URDF robot description (XML with <robot>, <link>, <joint>)"});
+    throw model::InputError(
+        model::Diagnostic{named_at, "urdf.file", "'" + path + "' is not a valid URDF",
+                          "a URDF robot description (XML with <robot>, <link>, <joint>)"});
   }
   UrdfPoses poses;
   std::vector<urdf::LinkSharedPtr> links;
@@ -57,14 +60,14 @@ UrdfPoses UrdfPoses::load(const std::string& path, const std::string& base_link,
   if (poses.T_root_.count(poses.base_link_) == 0) {
     std::string names;
     for (const auto& [name, pose] : poses.T_root_) names += (names.empty() ? "" : ", ") + name;
-    throw InputError(Diagnostic{base_named_at, "urdf.base_link",
-                                "no link '" + poses.base_link_ + "' in " + path,
-                                "one of: " + names});
+    throw model::InputError(model::Diagnostic{base_named_at, "urdf.base_link",
+                                              "no link '" + poses.base_link_ + "' in " + path,
+                                              "one of: " + names});
   }
   return poses;
 }
 
-std::optional<Pose3> UrdfPoses::T_base(const std::string& link) const {
+std::optional<model::Pose3> UrdfPoses::T_base(const std::string& link) const {
   const auto it = T_root_.find(link);
   if (it == T_root_.end()) return std::nullopt;
   return T_root_.at(base_link_).inverse() * it->second;
@@ -76,4 +79,4 @@ std::vector<std::string> UrdfPoses::link_names() const {
   return names;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -58,32 +58,33 @@ std::string unknown_key_problem(const std::string& key, const std::vector<std::s
 YAML::Node load_yaml_file(const std::string& path) {
   std::ifstream stream(path);
   if (!stream) {
-    throw InputError(Diagnostic{{path, 0, 0},
-                                "file",
-                                std::string("cannot be opened: ") + std::strerror(errno),
-                                "a readable YAML file"});
+    throw model::InputError(
+        model::Diagnostic{{path, 0, 0},
+                          "file",
+                          std::string("cannot be opened: ") + std::strerror(errno),
+                          "a readable YAML file"});
   }
   std::stringstream contents;
   contents << stream.rdbuf();
   try {
     return YAML::Load(contents.str());
   } catch (const YAML::ParserException& e) {
-    throw InputError(Diagnostic{{path, e.mark.line + 1, e.mark.column + 1},
-                                "(syntax)",
-                                "YAML syntax error: " + e.msg,
-                                "well-formed YAML"});
+    throw model::InputError(model::Diagnostic{{path, e.mark.line + 1, e.mark.column + 1},
+                                              "(syntax)",
+                                              "YAML syntax error: " + e.msg,
+                                              "well-formed YAML"});
   }
 }
 
-SourceLocation location_of(const YAML::Node& node, const std::string& file) {
+model::SourceLocation location_of(const YAML::Node& node, const std::string& file) {
   if (!node.IsDefined()) return {file, 0, 0};
   const YAML::Mark mark = node.Mark();
   if (mark.is_null()) return {file, 0, 0};
   return {file, mark.line + 1, mark.column + 1};
 }
 
-MapReader::MapReader(YAML::Node node, std::string path, std::string file, Diagnostics& diagnostics,
-                     SourceLocation named_at)
+MapReader::MapReader(YAML::Node node, std::string path, std::string file,
+                     model::Diagnostics& diagnostics, model::SourceLocation named_at)
     : node_(std::move(node)),
       path_(std::move(path)),
       file_(std::move(file)),
@@ -92,7 +93,7 @@ MapReader::MapReader(YAML::Node node, std::string path, std::string file, Diagno
   valid_ = node_.IsMap();
 }
 
-SourceLocation MapReader::key_location(const std::string& key) const {
+model::SourceLocation MapReader::key_location(const std::string& key) const {
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     if (it->first.IsScalar() && it->first.Scalar() == key) return location_of(it->first, file_);
   }
@@ -104,9 +105,9 @@ bool MapReader::has(const std::string& key) const {
   return valid_ && node_[key].IsDefined() && !node_[key].IsNull();
 }
 
-SourceLocation MapReader::location(const std::string& key) const {
+model::SourceLocation MapReader::location(const std::string& key) const {
   if (!valid_) return where_;
-  const SourceLocation at_key = location_of(node_[key], file_);
+  const model::SourceLocation at_key = location_of(node_[key], file_);
   return at_key.line == 0 ? where_ : at_key;
 }
 
@@ -199,7 +200,7 @@ std::optional<std::vector<double>> MapReader::numbers(const std::string& key, Ne
 
 std::optional<std::size_t> MapReader::choice(const std::string& key, Need need,
                                              const std::vector<std::string>& names) {
-  const std::string expected = "one of: " + join(names, ", ");
+  const std::string expected = "one of: " + model::join(names, ", ");
   const auto value = text(key, need, expected);
   if (!value) return std::nullopt;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -255,7 +256,7 @@ void MapReader::reject_keys_other_than(const std::vector<std::string>& allowed) 
   std::map<std::string, int> seen;
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     const std::string key = it->first.IsScalar() ? it->first.Scalar() : "?";
-    const SourceLocation where = location_of(it->first, file_);
+    const model::SourceLocation where = location_of(it->first, file_);
     if (++seen[key] == 2) {
       diagnostics_->error(where, field(key), "given twice", "each key once");
       continue;
@@ -264,14 +265,14 @@ void MapReader::reject_keys_other_than(const std::vector<std::string>& allowed) 
       std::vector<std::string> sorted(allowed.begin(), allowed.end());
       std::sort(sorted.begin(), sorted.end());
       diagnostics_->error(where, field(key), unknown_key_problem(key, sorted),
-                          "one of: " + join(sorted, ", "));
+                          "one of: " + model::join(sorted, ", "));
     }
   }
 }
 
 std::optional<double> sequence_number(const YAML::Node& element, const std::string& field,
                                       const std::string& file, const std::string& expected,
-                                      Diagnostics& diagnostics) {
+                                      model::Diagnostics& diagnostics) {
   double parsed = 0.0;
   if (!element.IsScalar() || !YAML::convert<double>::decode(element, parsed)) {
     diagnostics.error(location_of(element, file), field, "is " + describe_kind(element), expected);

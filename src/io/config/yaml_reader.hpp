@@ -22,25 +22,25 @@ enum class Need { required, optional };
 YAML::Node load_yaml_file(const std::string& path);
 
 /// 1-based location of a node (or of the file when the node carries no mark).
-SourceLocation location_of(const YAML::Node& node, const std::string& file);
+model::SourceLocation location_of(const YAML::Node& node, const std::string& file);
 
 class MapReader {
  public:
   /// `node` should be a map. `named_at` is where the map is named (its key in the parent,
   /// or the file's start): findings about the whole map, such as a missing field, point
   /// there; without it they point at the map's first entry.
-  MapReader(YAML::Node node, std::string path, std::string file, Diagnostics& diagnostics,
-            SourceLocation named_at = {});
+  MapReader(YAML::Node node, std::string path, std::string file, model::Diagnostics& diagnostics,
+            model::SourceLocation named_at = {});
 
   bool valid() const { return valid_; }
   /// Whether `key` is present and not null; asking marks the key as known.
   bool has(const std::string& key) const;
   const std::string& path() const { return path_; }
   const std::string& file() const { return file_; }
-  Diagnostics& diagnostics() const { return *diagnostics_; }
-  SourceLocation location() const { return where_; }
+  model::Diagnostics& diagnostics() const { return *diagnostics_; }
+  model::SourceLocation location() const { return where_; }
   /// Location of the value under `key`, or of this map when the key is absent.
-  SourceLocation location(const std::string& key) const;
+  model::SourceLocation location(const std::string& key) const;
   std::string field(const std::string& key) const;
 
   /// The raw node under `key` (undefined when absent); marks the key as read.
@@ -74,14 +74,14 @@ class MapReader {
 
  private:
   void error(const std::string& key, const std::string& problem, const std::string& expected);
-  SourceLocation key_location(const std::string& key) const;
+  model::SourceLocation key_location(const std::string& key) const;
   bool present(const std::string& key, Need need, const std::string& expected);
 
   YAML::Node node_;
   std::string path_;
   std::string file_;
-  Diagnostics* diagnostics_;
-  SourceLocation where_;
+  model::Diagnostics* diagnostics_;
+  model::SourceLocation where_;
   bool valid_ = false;
   mutable std::set<std::string> read_;  // keys the loader knows: asked for or read
 };
@@ -89,6 +89,6 @@ class MapReader {
 /// Reads one element of a sequence as a scalar number, with its own location.
 std::optional<double> sequence_number(const YAML::Node& element, const std::string& field,
                                       const std::string& file, const std::string& expected,
-                                      Diagnostics& diagnostics);
+                                      model::Diagnostics& diagnostics);
 
 }  // namespace rigdesign::io

@@ -7,12 +7,12 @@
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 // Enough digits that a pose read back equals the one written to well under a micrometre.
 std::string number(double value) {
-  return format_number(value, 12);
+  return model::format_number(value, 12);
 }
 
 void write_comment(std::ostringstream& out, const std::string& comment) {
@@ -31,7 +31,7 @@ std::string quoted(const std::string& text) {
 
 }  // namespace
 
-std::string rig_to_yaml(const Rig& rig, const std::string& sensor_library,
+std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library,
                         const std::string& requirements, const std::string& comment) {
   std::ostringstream out;
   write_comment(out, comment);
@@ -51,14 +51,14 @@ std::string rig_to_yaml(const Rig& rig, const std::string& sensor_library,
   }
   out << "distance_of_interest: " << number(rig.distance_of_interest) << '\n';
   out << "mounts:\n";
-  for (const Mount& mount : rig.mounts) {
-    const Vec3 xyz = mount.T_robot_sensor.translation();
-    const Vec3 rpy = rpy_from_rotation(mount.T_robot_sensor.linear());
+  for (const model::Mount& mount : rig.mounts) {
+    const model::Vec3 xyz = mount.T_robot_sensor.translation();
+    const model::Vec3 rpy = model::rpy_from_rotation(mount.T_robot_sensor.linear());
     out << "  - id: " << quoted(mount.id) << "\n    sensor: " << quoted(mount.sensor_id)
         << "\n    mode: " << quoted(mount.mode_id) << "\n    pose: {xyz: [" << number(xyz.x())
         << ", " << number(xyz.y()) << ", " << number(xyz.z()) << "], rpy_deg: ["
-        << number(rad_to_deg(rpy.x())) << ", " << number(rad_to_deg(rpy.y())) << ", "
-        << number(rad_to_deg(rpy.z())) << "]}\n";
+        << number(model::rad_to_deg(rpy.x())) << ", " << number(model::rad_to_deg(rpy.y())) << ", "
+        << number(model::rad_to_deg(rpy.z())) << "]}\n";
     if (mount.distance_of_interest) {
       out << "    distance_of_interest: " << number(*mount.distance_of_interest) << '\n';
     }
@@ -66,7 +66,8 @@ std::string rig_to_yaml(const Rig& rig, const std::string& sensor_library,
   return out.str();
 }
 
-std::string requirements_to_yaml(const Requirements& requirements, const std::string& comment) {
+std::string requirements_to_yaml(const model::Requirements& requirements,
+                                 const std::string& comment) {
   std::ostringstream out;
   write_comment(out, comment);
   out << "name: " << quoted(requirements.name) << '\n';
@@ -76,10 +77,10 @@ std::string requirements_to_yaml(const Requirements& requirements, const std::st
   }
   if (!requirements.sectors.empty()) {
     out << "sectors:\n";
-    for (const SectorRequirement& sector : requirements.sectors) {
+    for (const model::SectorRequirement& sector : requirements.sectors) {
       out << "  - {name: " << quoted(sector.name)
-          << ", from_deg: " << number(rad_to_deg(sector.from))
-          << ", to_deg: " << number(rad_to_deg(sector.to))
+          << ", from_deg: " << number(model::rad_to_deg(sector.from))
+          << ", to_deg: " << number(model::rad_to_deg(sector.to))
           << ", min_complete_coverage: " << number(sector.min_complete_coverage)
           << ", min_floor_coverage: " << number(sector.min_floor_coverage) << "}\n";
     }
@@ -111,7 +112,8 @@ std::string requirements_to_yaml(const Requirements& requirements, const std::st
 }
 
 // Declared in filtering_loads_io.hpp: the loads file is written here with the other YAML.
-std::string filtering_loads_to_yaml(const FilteringLoads& loads, const std::string& comment) {
+std::string filtering_loads_to_yaml(const model::FilteringLoads& loads,
+                                    const std::string& comment) {
   std::ostringstream out;
   write_comment(out, comment);
   out << "machine: " << quoted(loads.machine) << '\n';
@@ -119,15 +121,15 @@ std::string filtering_loads_to_yaml(const FilteringLoads& loads, const std::stri
   if (!loads.scene.empty()) out << "scene: " << quoted(loads.scene) << '\n';
   if (loads.frames > 0) out << "frames: " << loads.frames << '\n';
   out << "sensors:\n";
-  for (const FilteringLoad& load : loads.sensors) {
+  for (const model::FilteringLoad& load : loads.sensors) {
     out << "  - sensor: " << quoted(load.sensor_id) << '\n';
     if (!load.mode_id.empty()) out << "    mode: " << quoted(load.mode_id) << '\n';
-    out << "    seconds_per_point: " << format_number(load.seconds_per_point, 6) << '\n';
-    out << "    points_per_frame: " << format_number(load.points_per_frame, 8) << '\n';
-    out << "    median_seconds_per_frame: " << format_number(load.median_seconds_per_frame, 6)
-        << '\n';
+    out << "    seconds_per_point: " << model::format_number(load.seconds_per_point, 6) << '\n';
+    out << "    points_per_frame: " << model::format_number(load.points_per_frame, 8) << '\n';
+    out << "    median_seconds_per_frame: "
+        << model::format_number(load.median_seconds_per_frame, 6) << '\n';
   }
   return out.str();
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

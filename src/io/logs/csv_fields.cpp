@@ -8,7 +8,7 @@
 
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign::localize_detail {
+namespace rigdesign::io::csv {
 namespace {
 
 bool is_blank(char c) {
@@ -66,19 +66,21 @@ std::vector<Field> split_fields(const std::string& line, char separator) {
   }
 }
 
-double parse_number(const Field& field, const SourceLocation& where, const std::string& name) {
+double parse_number(const Field& field, const model::SourceLocation& where,
+                    const std::string& name) {
   if (field.text.empty()) {
-    throw InputError(Diagnostic{where, name, "is empty", "a number"});
+    throw model::InputError(model::Diagnostic{where, name, "is empty", "a number"});
   }
   errno = 0;
   char* end = nullptr;
   const double value = std::strtod(field.text.c_str(), &end);
   if (end != field.text.c_str() + field.text.size()) {
-    throw InputError(Diagnostic{where, name, "'" + field.text + "' is not a number", "a number"});
+    throw model::InputError(
+        model::Diagnostic{where, name, "'" + field.text + "' is not a number", "a number"});
   }
   if (!std::isfinite(value) || errno == ERANGE) {
-    throw InputError(
-        Diagnostic{where, name, "'" + field.text + "' is not finite", "a finite number"});
+    throw model::InputError(
+        model::Diagnostic{where, name, "'" + field.text + "' is not finite", "a finite number"});
   }
   return value;
 }
@@ -88,20 +90,20 @@ std::size_t require_column(const std::vector<Field>& header, const std::string& 
   for (std::size_t i = 0; i < header.size(); ++i) {
     if (header[i].text == name) return i;
   }
-  throw InputError(Diagnostic{{file, line, 1},
-                              name,
-                              "column is missing from the header",
-                              "a header line naming the columns " + expected_header});
+  throw model::InputError(model::Diagnostic{{file, line, 1},
+                                            name,
+                                            "column is missing from the header",
+                                            "a header line naming the columns " + expected_header});
 }
 
 std::string read_text_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    throw InputError(
-        Diagnostic{{path, 0, 0}, "file", "cannot be opened for reading", "a readable file"});
+    throw model::InputError(
+        model::Diagnostic{{path, 0, 0}, "file", "cannot be opened for reading", "a readable file"});
   std::ostringstream contents;
   contents << in.rdbuf();
   return contents.str();
 }
 
-}  // namespace rigdesign::localize_detail
+}  // namespace rigdesign::io::csv

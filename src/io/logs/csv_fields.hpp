@@ -7,7 +7,7 @@
 
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign::localize_detail {
+namespace rigdesign::io::csv {
 
 struct Field {
   std::string text;  ///< trimmed of spaces and tabs
@@ -27,7 +27,8 @@ std::vector<Line> content_lines(const std::string& text);
 std::vector<Field> split_fields(const std::string& line, char separator);
 
 /// The field as a finite number; throws InputError at `where` naming `name` otherwise.
-double parse_number(const Field& field, const SourceLocation& where, const std::string& name);
+double parse_number(const Field& field, const model::SourceLocation& where,
+                    const std::string& name);
 
 /// Index of `name` in the header, or throws InputError (line 1) listing what is required.
 std::size_t require_column(const std::vector<Field>& header, const std::string& name,
@@ -36,4 +37,4 @@ std::size_t require_column(const std::vector<Field>& header, const std::string& 
 /// The whole file as a string; InputError (field "file") when it cannot be read.
 std::string read_text_file(const std::string& path);
 
-}  // namespace rigdesign::localize_detail
+}  // namespace rigdesign::io::csv

@@ -8,48 +8,48 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 constexpr const char* kHeader = "bssid,x,y,z";
 
-SourceLocation location_of(const YAML::Node& node, const std::string& file) {
+model::SourceLocation location_of(const YAML::Node& node, const std::string& file) {
   const YAML::Mark mark = node.Mark();
   return {file, mark.line + 1, mark.column + 1};
 }
 
 }  // namespace
 
-std::vector<EmitterTruth> parse_emitter_truth(const std::string& text, const std::string& file) {
-  const auto lines = localize_detail::content_lines(text);
+std::vector<localize::EmitterTruth> parse_emitter_truth(const std::string& text,
+                                                        const std::string& file) {
+  const auto lines = csv::content_lines(text);
   if (lines.empty())
-    throw InputError(
-        Diagnostic{{file, 0, 0}, "data", "is empty", std::string("a header ") + kHeader});
-  const auto header = localize_detail::split_fields(lines.front().text, ',');
+    throw model::InputError(
+        model::Diagnostic{{file, 0, 0}, "data", "is empty", std::string("a header ") + kHeader});
+  const auto header = csv::split_fields(lines.front().text, ',');
   const std::array<std::string, 4> names = {"bssid", "x", "y", "z"};
   std::array<std::size_t, 4> index{};
   for (std::size_t i = 0; i < names.size(); ++i) {
-    index[i] =
-        localize_detail::require_column(header, names[i], file, lines.front().number, kHeader);
+    index[i] = csv::require_column(header, names[i], file, lines.front().number, kHeader);
   }
-  std::vector<EmitterTruth> truth;
+  std::vector<localize::EmitterTruth> truth;
   for (std::size_t l = 1; l < lines.size(); ++l) {
-    const auto fields = localize_detail::split_fields(lines[l].text, ',');
-    EmitterTruth item;
+    const auto fields = csv::split_fields(lines[l].text, ',');
+    localize::EmitterTruth item;
     for (std::size_t i = 0; i < names.size(); ++i) {
       if (index[i] >= fields.size()) {
-        throw InputError(
-            Diagnostic{{file, lines[l].number, static_cast<int>(lines[l].text.size()) + 1},
-                       names[i],
-                       "is missing",
-                       std::string("one field per header column (") + kHeader + ")"});
+        throw model::InputError(
+            model::Diagnostic{{file, lines[l].number, static_cast<int>(lines[l].text.size()) + 1},
+                              names[i],
+                              "is missing",
+                              std::string("one field per header column (") + kHeader + ")"});
       }
       const auto& f = fields[index[i]];
       if (i == 0) {
         item.bssid = f.text;
       } else {
         item.position[static_cast<Eigen::Index>(i - 1)] =
-            localize_detail::parse_number(f, {file, lines[l].number, f.column}, names[i]);
+            csv::parse_number(f, {file, lines[l].number, f.column}, names[i]);
       }
     }
     truth.push_back(item);
@@ -57,44 +57,44 @@ std::vector<EmitterTruth> parse_emitter_truth(const std::string& text, const std
   return truth;
 }
 
-std::vector<EmitterTruth> read_emitter_truth(const std::string& path) {
-  return parse_emitter_truth(localize_detail::read_text_file(path), path);
+std::vector<localize::EmitterTruth> read_emitter_truth(const std::string& path) {
+  return parse_emitter_truth(csv::read_text_file(path), path);
 }
 
-std::string to_emitter_truth_csv(const std::vector<EmitterTruth>& truth) {
+std::string to_emitter_truth_csv(const std::vector<localize::EmitterTruth>& truth) {
   std::string text = std::string(kHeader) + "\n";
-  for (const EmitterTruth& item : truth) {
-    text += item.bssid + "," + format_number(item.position.x(), 10) + "," +
-            format_number(item.position.y(), 10) + "," + format_number(item.position.z(), 10) +
-            "\n";
+  for (const localize::EmitterTruth& item : truth) {
+    text += item.bssid + "," + model::format_number(item.position.x(), 10) + "," +
+            model::format_number(item.position.y(), 10) + "," +
+            model::format_number(item.position.z(), 10) + "\n";
   }
   return text;
 }
 
-std::vector<Artifact> read_artifacts(const std::string& path) {
-  const std::string text = localize_detail::read_text_file(path);
+std::vector<localize::Artifact> read_artifacts(const std::string& path) {
+  const std::string text = csv::read_text_file(path);
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& error) {
-    throw InputError(Diagnostic{
+    throw model::InputError(model::Diagnostic{
         {path, error.mark.line + 1, error.mark.column + 1}, "document", error.msg, "JSON"});
   }
   const YAML::Node list = root["artifacts"];
   if (!list || !list.IsSequence()) {
-    throw InputError(Diagnostic{
+    throw model::InputError(model::Diagnostic{
         {path, 1, 1}, "artifacts", "is missing or not a list", "{\"artifacts\": [...]}"});
   }
-  std::vector<Artifact> artifacts;
+  std::vector<localize::Artifact> artifacts;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const YAML::Node item = list[i];
     const std::string prefix = "artifacts[" + std::to_string(i) + "].";
-    Artifact artifact;
+    localize::Artifact artifact;
     const auto scalar = [&](const char* key) {
       const YAML::Node node = item[key];
       if (!node || !node.IsScalar()) {
-        throw InputError(
-            Diagnostic{location_of(item, path), prefix + key, "is missing", "a value"});
+        throw model::InputError(
+            model::Diagnostic{location_of(item, path), prefix + key, "is missing", "a value"});
       }
       return node;
     };
@@ -104,14 +104,14 @@ std::vector<Artifact> read_artifacts(const std::string& path) {
       artifact.position = {scalar("x").as<double>(), scalar("y").as<double>(),
                            scalar("z").as<double>()};
     } catch (const YAML::BadConversion& error) {
-      throw InputError(Diagnostic{{path, error.mark.line + 1, error.mark.column + 1},
-                                  prefix + "x/y/z/id",
-                                  "is not a number",
-                                  "numbers for id, x, y, z"});
+      throw model::InputError(model::Diagnostic{{path, error.mark.line + 1, error.mark.column + 1},
+                                                prefix + "x/y/z/id",
+                                                "is not a number",
+                                                "numbers for id, x, y, z"});
     }
     artifacts.push_back(artifact);
   }
   return artifacts;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -13,7 +13,7 @@
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 // map_server's trinary shades.
@@ -30,16 +30,17 @@ std::string exact(double value) {
 }
 
 std::int8_t occupancy_of_cost(std::uint8_t c) {
-  if (c == cost::kUnknown) return kOccupancyUnknown;
-  if (c == cost::kLethal) return 100;
-  if (c == cost::kInscribed) return 99;
-  if (c == cost::kFree) return 0;
+  if (c == costmap::cost::kUnknown) return kOccupancyUnknown;
+  if (c == costmap::cost::kLethal) return 100;
+  if (c == costmap::cost::kInscribed) return 99;
+  if (c == costmap::cost::kFree) return 0;
   return static_cast<std::int8_t>(1 + (97 * (c - 1)) / 251);  // nav2's integer translation
 }
 
 [[noreturn]] void bad_image(const std::string& file, const std::string& problem,
                             const std::string& expected) {
-  throw InputError(Diagnostic{SourceLocation{file, 0, 0}, "image", problem, expected});
+  throw model::InputError(
+      model::Diagnostic{model::SourceLocation{file, 0, 0}, "image", problem, expected});
 }
 
 // Skips whitespace and '#' comments between PGM header tokens.
@@ -104,7 +105,7 @@ Image read_pgm(const std::string& file) {
 
 }  // namespace
 
-OccupancyMap to_occupancy_map(const CostGrid& grid) {
+OccupancyMap to_occupancy_map(const costmap::CostGrid& grid) {
   OccupancyMap map;
   map.width = grid.width();
   map.height = grid.height();
@@ -150,7 +151,7 @@ void write_map_files(const OccupancyMap& map, const std::string& yaml_path,
 }
 
 OccupancyMap read_map_files(const std::string& yaml_path) {
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
   const YAML::Node root = io::load_yaml_file(yaml_path);
   io::MapReader top(root, "", yaml_path, diagnostics, {yaml_path, 1, 1});
   const auto image =
@@ -182,7 +183,7 @@ OccupancyMap read_map_files(const std::string& yaml_path) {
   map.width = pgm.width;
   map.height = pgm.height;
   map.resolution = *resolution;
-  map.origin = Vec2((*origin)[0], (*origin)[1]);
+  map.origin = model::Vec2((*origin)[0], (*origin)[1]);
   map.cells.resize(pgm.shades.size());
   const bool negated = negate.value_or(0) == 1;
   for (int row = 0; row < pgm.height; ++row) {
@@ -202,4 +203,4 @@ OccupancyMap read_map_files(const std::string& yaml_path) {
   return map;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -8,7 +8,7 @@ namespace rigdesign::io {
 
 void throw_mesh_error(const std::string& path, int line, int column, const std::string& field,
                       const std::string& problem, const std::string& expected) {
-  throw InputError(Diagnostic{{path, line, column}, field, problem, expected});
+  throw model::InputError(model::Diagnostic{{path, line, column}, field, problem, expected});
 }
 
 int column_of(std::string_view line, std::string_view word) {
@@ -21,7 +21,7 @@ bool parse_index(std::string_view word, std::int64_t& index) {
   return error == std::errc() && end == word.data() + word.size();
 }
 
-void append_fan(TriangleMesh& mesh, const std::vector<int>& corners) {
+void append_fan(model::TriangleMesh& mesh, const std::vector<int>& corners) {
   for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
     mesh.triangles.push_back({corners[0], corners[i], corners[i + 1]});
   }

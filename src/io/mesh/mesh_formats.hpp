@@ -13,11 +13,11 @@
 namespace rigdesign::io {
 
 /// Parses a whole PLY file (ascii or binary_little_endian) held in `bytes`.
-TriangleMesh parse_ply_mesh(const std::string& path, std::string_view bytes);
+model::TriangleMesh parse_ply_mesh(const std::string& path, std::string_view bytes);
 /// Parses a whole Wavefront OBJ file held in `bytes`.
-TriangleMesh parse_obj_mesh(const std::string& path, std::string_view bytes);
+model::TriangleMesh parse_obj_mesh(const std::string& path, std::string_view bytes);
 /// Parses a whole OFF file held in `bytes`.
-TriangleMesh parse_off_mesh(const std::string& path, std::string_view bytes);
+model::TriangleMesh parse_off_mesh(const std::string& path, std::string_view bytes);
 
 /// Throws InputError at `line`:`column` of `path` (both 0 for a binary body, whose problem
 /// text names the byte offset and element index instead).
@@ -33,6 +33,6 @@ bool parse_index(std::string_view word, std::int64_t& index);
 
 /// Appends the polygon `corners` (valid vertex indices, at least 3) as a fan of triangles
 /// around its first corner: (c0, c1, c2), (c0, c2, c3), ...
-void append_fan(TriangleMesh& mesh, const std::vector<int>& corners);
+void append_fan(model::TriangleMesh& mesh, const std::vector<int>& corners);
 
 }  // namespace rigdesign::io

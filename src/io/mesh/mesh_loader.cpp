@@ -8,7 +8,7 @@
 #include "io/mesh/mesh_formats.hpp"
 #include "rigdesign/model/input_error.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 enum class MeshFormat { ply, obj, off, unknown };
@@ -31,26 +31,26 @@ bool has_mesh_extension(const std::string& path) {
   return format_of(path) != MeshFormat::unknown;
 }
 
-TriangleMesh load_mesh(const std::string& path) {
+model::TriangleMesh load_mesh(const std::string& path) {
   const MeshFormat format = format_of(path);
   if (format == MeshFormat::unknown) {
-    throw InputError(
-        Diagnostic{{path, 0, 0},
-                   "file",
-                   "unknown mesh format '" + std::filesystem::path(path).extension().string() + "'",
-                   "a path ending in .ply, .obj or .off"});
+    throw model::InputError(model::Diagnostic{
+        {path, 0, 0},
+        "file",
+        "unknown mesh format '" + std::filesystem::path(path).extension().string() + "'",
+        "a path ending in .ply, .obj or .off"});
   }
   const std::string bytes = io::read_file_bytes(path, kReadable);
-  TriangleMesh mesh = format == MeshFormat::ply   ? io::parse_ply_mesh(path, bytes)
-                      : format == MeshFormat::obj ? io::parse_obj_mesh(path, bytes)
-                                                  : io::parse_off_mesh(path, bytes);
+  model::TriangleMesh mesh = format == MeshFormat::ply   ? io::parse_ply_mesh(path, bytes)
+                             : format == MeshFormat::obj ? io::parse_obj_mesh(path, bytes)
+                                                         : io::parse_off_mesh(path, bytes);
   if (mesh.triangles.empty()) {
-    throw InputError(Diagnostic{{path, 0, 0},
-                                "faces",
-                                "the mesh has no faces",
-                                "at least one polygon of 3 or more vertices"});
+    throw model::InputError(model::Diagnostic{{path, 0, 0},
+                                              "faces",
+                                              "the mesh has no faces",
+                                              "at least one polygon of 3 or more vertices"});
   }
   return mesh;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

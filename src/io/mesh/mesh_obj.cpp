@@ -30,7 +30,7 @@ class ObjReader {
  public:
   ObjReader(const std::string& path, std::string_view bytes) : path_(path), cursor_(bytes) {}
 
-  TriangleMesh read() {
+  model::TriangleMesh read() {
     while (const auto raw = cursor_.next()) {
       std::string_view line = *raw;
       if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) {
@@ -59,7 +59,7 @@ class ObjReader {
       fail(line, words_[0], "v", "has " + std::to_string(words_.size() - 1) + " value(s)",
            kVertexForm);
     }
-    Vec3 vertex;
+    model::Vec3 vertex;
     for (std::size_t i = 1; i < words_.size(); ++i) {
       const auto value = parse_double(words_[i]);
       if (!value || !std::isfinite(*value)) {
@@ -126,12 +126,12 @@ class ObjReader {
   std::vector<std::string_view> words_;
   std::vector<int> corners_;
   std::vector<ForwardReference> forward_;
-  TriangleMesh mesh_;
+  model::TriangleMesh mesh_;
 };
 
 }  // namespace
 
-TriangleMesh parse_obj_mesh(const std::string& path, std::string_view bytes) {
+model::TriangleMesh parse_obj_mesh(const std::string& path, std::string_view bytes) {
   return ObjReader(path, bytes).read();
 }
 

@@ -26,7 +26,7 @@ class OffReader {
  public:
   OffReader(const std::string& path, std::string_view bytes) : path_(path), cursor_(bytes) {}
 
-  TriangleMesh read() {
+  model::TriangleMesh read() {
     read_counts();
     if (vertex_count_ > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
       fail(line_, words_[0], "counts", "too many vertices", "at most 2^31 - 1 vertices");
@@ -96,7 +96,7 @@ class OffReader {
       fail(line_, words_[0], field, "has " + std::to_string(words_.size()) + " value(s)",
            kVertexForm);
     }
-    Vec3 vertex;
+    model::Vec3 vertex;
     for (std::size_t i = 0; i < words_.size(); ++i) {
       const auto value = parse_double(words_[i]);
       if (!value || (i < 3 && !std::isfinite(*value))) {
@@ -146,12 +146,12 @@ class OffReader {
   std::vector<int> corners_;
   std::size_t vertex_count_ = 0;
   std::size_t face_count_ = 0;
-  TriangleMesh mesh_;
+  model::TriangleMesh mesh_;
 };
 
 }  // namespace
 
-TriangleMesh parse_off_mesh(const std::string& path, std::string_view bytes) {
+model::TriangleMesh parse_off_mesh(const std::string& path, std::string_view bytes) {
   return OffReader(path, bytes).read();
 }
 

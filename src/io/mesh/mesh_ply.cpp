@@ -49,8 +49,8 @@ FaceLayout face_layout(const std::string& path, const PlyHeader& header) {
 
 template <typename Body>
 void add_vertex(const Body& body, const PlyElement& element, const PlyHeader& header,
-                const PlyRecord& record, TriangleMesh& mesh) {
-  Vec3 vertex;
+                const PlyRecord& record, model::TriangleMesh& mesh) {
+  model::Vec3 vertex;
   for (std::size_t axis = 0; axis < 3; ++axis) {
     const std::size_t p = header.xyz_properties[axis];
     vertex[static_cast<Eigen::Index>(axis)] = record.scalars[p];
@@ -65,7 +65,7 @@ void add_vertex(const Body& body, const PlyElement& element, const PlyHeader& he
 
 template <typename Body>
 void add_face(const Body& body, const FaceLayout& faces, std::size_t vertex_count,
-              const PlyRecord& record, std::vector<int>& corners, TriangleMesh& mesh) {
+              const PlyRecord& record, std::vector<int>& corners, model::TriangleMesh& mesh) {
   const std::string field =
       ply_field(*faces.element, record.index, faces.element->properties[faces.indices].name);
   if (record.items.size() < 3) {
@@ -88,15 +88,15 @@ void add_face(const Body& body, const FaceLayout& faces, std::size_t vertex_coun
 }
 
 template <typename Body>
-TriangleMesh read_body(Body body, const std::string& path, const PlyHeader& header,
-                       std::size_t body_size) {
+model::TriangleMesh read_body(Body body, const std::string& path, const PlyHeader& header,
+                              std::size_t body_size) {
   const FaceLayout faces = face_layout(path, header);
   const PlyElement& vertex_element = header.elements[header.vertex_element];
   if (vertex_element.count > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
     throw_mesh_error(path, vertex_element.line, 1, "element vertex", "has too many vertices",
                      "at most 2^31 - 1 vertices");
   }
-  TriangleMesh mesh;
+  model::TriangleMesh mesh;
   // A vertex takes at least 6 bytes of text or 12 of binary: never reserve past the file.
   mesh.vertices.reserve(std::min(vertex_element.count, body_size / 6));
   PlyRecord record;
@@ -117,7 +117,7 @@ TriangleMesh read_body(Body body, const std::string& path, const PlyHeader& head
 
 }  // namespace
 
-TriangleMesh parse_ply_mesh(const std::string& path, std::string_view bytes) {
+model::TriangleMesh parse_ply_mesh(const std::string& path, std::string_view bytes) {
   const PlyHeader header = parse_ply_header(path, bytes);
   const std::size_t body_size = bytes.size() - header.body_offset;
   if (header.encoding == PlyEncoding::ascii) {

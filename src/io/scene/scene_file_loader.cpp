@@ -15,7 +15,7 @@
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 namespace {
 
 using io::MapReader;
@@ -29,7 +29,7 @@ class MeshFiles {
  public:
   explicit MeshFiles(std::string scene_file) : scene_file_(std::move(scene_file)) {}
 
-  std::optional<TriangleMesh> read(MapReader& object) {
+  std::optional<model::TriangleMesh> read(MapReader& object) {
     const auto name = object.text("mesh", Need::required, kMeshForm);
     if (!name) return std::nullopt;
     const std::string path = resolve_beside(scene_file_, *name);
@@ -46,8 +46,9 @@ class MeshFiles {
     if (const auto found = meshes_.find(path); found != meshes_.end()) return found->second;
     try {
       return meshes_[path] = load_mesh(path);
-    } catch (const InputError& error) {
-      for (const Diagnostic& diagnostic : error.diagnostics()) object.diagnostics().add(diagnostic);
+    } catch (const model::InputError& error) {
+      for (const model::Diagnostic& diagnostic : error.diagnostics())
+        object.diagnostics().add(diagnostic);
       meshes_[path] = std::nullopt;  // reported once, however many objects use it
       return std::nullopt;
     }
@@ -55,40 +56,44 @@ class MeshFiles {
 
  private:
   std::string scene_file_;
-  std::map<std::string, std::optional<TriangleMesh>> meshes_;
+  std::map<std::string, std::optional<model::TriangleMesh>> meshes_;
 };
 
 // `pose` (xyz, rpy_deg) and `scale` as one transform: scale about the mesh's origin first.
 Eigen::Affine3d read_placement(MapReader& object) {
   const double scale =
       object.has("scale") ? io::positive(object, "scale", Need::required, "a factor > 0") : 1.0;
-  Pose3 T_parent_mesh = Pose3::Identity();
+  model::Pose3 T_parent_mesh = model::Pose3::Identity();
   if (auto pose = object.map("pose", Need::optional, "a map with xyz and rpy_deg")) {
     const auto xyz = pose->numbers("xyz", Need::optional, 3, 3,
                                    "[x, y, z] in metres, finite (default [0, 0, 0])");
     const auto rpy = pose->numbers("rpy_deg", Need::optional, 3, 3,
                                    "[roll, pitch, yaw] in degrees, finite (default [0, 0, 0])");
     pose->reject_unknown_keys();
-    const Vec3 position = xyz ? Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : Vec3::Zero();
-    Vec3 angles = Vec3::Zero();
-    if (rpy) angles = Vec3(deg_to_rad((*rpy)[0]), deg_to_rad((*rpy)[1]), deg_to_rad((*rpy)[2]));
-    T_parent_mesh = pose_from_xyz_rpy(position, angles);
+    const model::Vec3 position =
+        xyz ? model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : model::Vec3::Zero();
+    model::Vec3 angles = model::Vec3::Zero();
+    if (rpy)
+      angles = model::Vec3(model::deg_to_rad((*rpy)[0]), model::deg_to_rad((*rpy)[1]),
+                           model::deg_to_rad((*rpy)[2]));
+    T_parent_mesh = model::pose_from_xyz_rpy(position, angles);
   }
   return T_parent_mesh * Eigen::Scaling(scale > 0 ? scale : 1.0);
 }
 
-TriangleMesh placed(const TriangleMesh& mesh, const Eigen::Affine3d& T_parent_mesh) {
-  TriangleMesh result = mesh;
-  for (Vec3& vertex : result.vertices) vertex = T_parent_mesh * vertex;
+model::TriangleMesh placed(const model::TriangleMesh& mesh, const Eigen::Affine3d& T_parent_mesh) {
+  model::TriangleMesh result = mesh;
+  for (model::Vec3& vertex : result.vertices) vertex = T_parent_mesh * vertex;
   return result;
 }
 
-Pose3 read_robot_start(MapReader& start) {
+model::Pose3 read_robot_start(MapReader& start) {
   const auto xyz = start.numbers("xyz", Need::required, 3, 3, "[x, y, z] in metres, finite");
   const double yaw = start.number("yaw_deg", Need::optional, "degrees, finite").value_or(0.0);
   start.reject_unknown_keys();
-  const Vec3 position = xyz ? Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : Vec3::Zero();
-  return pose_from_xyz_rpy(position, Vec3(0.0, 0.0, deg_to_rad(yaw)));
+  const model::Vec3 position =
+      xyz ? model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : model::Vec3::Zero();
+  return model::pose_from_xyz_rpy(position, model::Vec3(0.0, 0.0, model::deg_to_rad(yaw)));
 }
 
 io::WaypointPath read_waypoint_path(MapReader& trajectory) {
@@ -109,7 +114,8 @@ io::WaypointPath read_waypoint_path(MapReader& trajectory) {
       waypoint.require(*t > path.waypoints.back().t, "t",
                        "is not after the previous waypoint's time", "times strictly increasing");
     }
-    path.waypoints.push_back({*t, Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]), deg_to_rad(yaw)});
+    path.waypoints.push_back(
+        {*t, model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]), model::deg_to_rad(yaw)});
   }
   trajectory.reject_unknown_keys();
   return path;
@@ -119,12 +125,12 @@ io::EllipsePath read_ellipse_path(MapReader& ellipse) {
   io::EllipsePath path;
   const auto centre =
       ellipse.numbers("centre", Need::optional, 2, 2, "[x, y] in metres, finite (default [0, 0])");
-  if (centre) path.centre = Vec2((*centre)[0], (*centre)[1]);
+  if (centre) path.centre = model::Vec2((*centre)[0], (*centre)[1]);
   if (const auto axes =
           ellipse.numbers("semi_axes", Need::required, 2, 2, "[a, b] in metres, both > 0")) {
     ellipse.require((*axes)[0] > 0 && (*axes)[1] > 0, "semi_axes", "has a semi-axis <= 0",
                     "[a, b] in metres, both > 0");
-    path.semi_axes = Vec2((*axes)[0], (*axes)[1]);
+    path.semi_axes = model::Vec2((*axes)[0], (*axes)[1]);
   }
   path.period = io::positive(ellipse, "period", Need::required, "seconds per lap, > 0");
   path.face_travel = ellipse.boolean("face_travel", Need::optional).value_or(true);
@@ -132,7 +138,7 @@ io::EllipsePath read_ellipse_path(MapReader& ellipse) {
   return path;
 }
 
-std::function<Pose3(double)> read_motion(MapReader& object) {
+std::function<model::Pose3(double)> read_motion(MapReader& object) {
   const bool has_trajectory = object.has("trajectory");
   const bool has_ellipse = object.has("ellipse");
   object.require(has_trajectory != has_ellipse, "trajectory",
@@ -146,7 +152,7 @@ std::function<Pose3(double)> read_motion(MapReader& object) {
                                 "a map with centre, semi_axes, period, face_travel")) {
     return read_ellipse_path(*ellipse);
   }
-  return [](double) { return Pose3::Identity(); };
+  return [](double) { return model::Pose3::Identity(); };
 }
 
 // Names identify objects in reports; two alike would make them ambiguous.
@@ -160,17 +166,18 @@ std::string read_name(MapReader& object, std::set<std::string>& names) {
 
 }  // namespace
 
-Scene load_scene_file(const std::string& yaml_path) {
+model::Scene load_scene_file(const std::string& yaml_path) {
   const YAML::Node root = io::load_yaml_file(yaml_path);
-  Diagnostics diagnostics;
+  model::Diagnostics diagnostics;
   MapReader top(root, "", yaml_path, diagnostics, {yaml_path, 1, 1});
   if (!top.valid()) {
-    throw InputError(Diagnostic{{yaml_path, 1, 1},
-                                "(document)",
-                                "is not a map",
-                                "a scene: a map with name, robot_start, static, moving"});
+    throw model::InputError(
+        model::Diagnostic{{yaml_path, 1, 1},
+                          "(document)",
+                          "is not a map",
+                          "a scene: a map with name, robot_start, static, moving"});
   }
-  Scene scene;
+  model::Scene scene;
   scene.name = top.text("name", Need::required, "the scene's name").value_or("");
   if (auto start = top.map("robot_start", Need::optional, "a map with xyz and yaw_deg")) {
     scene.T_world_robot = read_robot_start(*start);
@@ -191,7 +198,7 @@ Scene load_scene_file(const std::string& yaml_path) {
     std::string name = read_name(object, names);
     const auto mesh = meshes.read(object);
     const Eigen::Affine3d T_object_mesh = read_placement(object);
-    std::function<Pose3(double)> T_world_object = read_motion(object);
+    std::function<model::Pose3(double)> T_world_object = read_motion(object);
     object.reject_unknown_keys();
     if (mesh) {
       scene.moving.push_back({std::move(name), placed(*mesh, T_object_mesh), T_world_object});
@@ -207,4 +214,4 @@ Scene load_scene_file(const std::string& yaml_path) {
   return scene;
 }
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

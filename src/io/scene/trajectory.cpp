@@ -7,9 +7,9 @@
 namespace rigdesign::io {
 namespace {
 
-Pose3 yawed_pose(const Vec3& xyz, double yaw) {
-  Pose3 T_world_object = Pose3::Identity();
-  T_world_object.linear() = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
+model::Pose3 yawed_pose(const model::Vec3& xyz, double yaw) {
+  model::Pose3 T_world_object = model::Pose3::Identity();
+  T_world_object.linear() = Eigen::AngleAxisd(yaw, model::Vec3::UnitZ()).toRotationMatrix();
   T_world_object.translation() = xyz;
   return T_world_object;
 }
@@ -25,7 +25,7 @@ double shorter_turn(double angle) {
 
 }  // namespace
 
-Pose3 WaypointPath::operator()(double t) const {
+model::Pose3 WaypointPath::operator()(double t) const {
   const Waypoint& first = waypoints.front();
   const Waypoint& last = waypoints.back();
   const double span = last.t - first.t;
@@ -45,11 +45,11 @@ Pose3 WaypointPath::operator()(double t) const {
   return yawed_pose(a.xyz + s * (b.xyz - a.xyz), a.yaw + s * shorter_turn(b.yaw - a.yaw));
 }
 
-Pose3 EllipsePath::operator()(double t) const {
+model::Pose3 EllipsePath::operator()(double t) const {
   const double angle = 2 * std::numbers::pi * t / period;
   const double a = semi_axes.x();
   const double b = semi_axes.y();
-  const Vec3 xyz(centre.x() + a * std::cos(angle), centre.y() + b * std::sin(angle), 0.0);
+  const model::Vec3 xyz(centre.x() + a * std::cos(angle), centre.y() + b * std::sin(angle), 0.0);
   // The tangent d/d(angle) (a cos, b sin) = (-a sin, b cos).
   const double heading = face_travel ? std::atan2(b * std::cos(angle), -a * std::sin(angle)) : 0.0;
   return yawed_pose(xyz, heading);

@@ -8,9 +8,9 @@
 namespace rigdesign::io {
 
 struct Waypoint {
-  double t = 0.0;           ///< [s]
-  Vec3 xyz = Vec3::Zero();  ///< object origin in the world frame [m]
-  double yaw = 0.0;         ///< heading about +z [rad]
+  double t = 0.0;                         ///< [s]
+  model::Vec3 xyz = model::Vec3::Zero();  ///< object origin in the world frame [m]
+  double yaw = 0.0;                       ///< heading about +z [rad]
 };
 
 /// Piecewise-linear motion through waypoints (precondition: at least one, times strictly
@@ -23,19 +23,19 @@ struct WaypointPath {
   std::vector<Waypoint> waypoints;
   bool loop = false;
 
-  Pose3 operator()(double t) const;
+  model::Pose3 operator()(double t) const;
 };
 
 /// Counter-clockwise walk around an axis-aligned ellipse on the floor (z = 0), starting at
 /// (centre.x + a, centre.y) at t = 0: angle 2 pi t / period. With `face_travel` the object's
 /// x axis points along the direction of travel, otherwise it keeps yaw 0.
 struct EllipsePath {
-  Vec2 centre = Vec2::Zero();  ///< [m]
-  Vec2 semi_axes{1.0, 1.0};    ///< a along x, b along y [m], > 0
-  double period = 1.0;         ///< one lap [s], > 0
+  model::Vec2 centre = model::Vec2::Zero();  ///< [m]
+  model::Vec2 semi_axes{1.0, 1.0};           ///< a along x, b along y [m], > 0
+  double period = 1.0;                       ///< one lap [s], > 0
   bool face_travel = true;
 
-  Pose3 operator()(double t) const;
+  model::Pose3 operator()(double t) const;
 };
 
 }  // namespace rigdesign::io

@@ -7,7 +7,7 @@
 
 #include "rigdesign/model/point_cloud.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// What read_cloud found in a file besides the points it returns.
 struct CloudReadReport {
@@ -33,7 +33,7 @@ struct CloudReadReport {
 /// Throws InputError when the file cannot be read, has another extension, or its header or
 /// data are malformed; the finding names the header line, or the byte offset or point index
 /// in the data, and the field ("FIELDS", "element vertex", "data", ...).
-PointCloud read_cloud(const std::string& path, CloudReadReport* report = nullptr);
+model::PointCloud read_cloud(const std::string& path, CloudReadReport* report = nullptr);
 
 enum class CloudEncoding { ascii, binary };
 
@@ -44,6 +44,6 @@ enum class CloudEncoding { ascii, binary };
 /// `comment viewpoint tx ty tz qw qx qy qz` header line that read_cloud understands.
 /// ascii output uses the shortest decimal form that reads back to the same float.
 /// Throws InputError (field "output") for another extension or an unwritable folder.
-void write_cloud(const std::string& path, const PointCloud& cloud, CloudEncoding encoding);
+void write_cloud(const std::string& path, const model::PointCloud& cloud, CloudEncoding encoding);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

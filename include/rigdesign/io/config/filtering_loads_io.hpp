@@ -5,17 +5,17 @@
 
 #include "rigdesign/model/filtering_loads.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Throws InputError naming file:line:col and the field on bad input.
-FilteringLoads load_filtering_loads(const std::string& path);
+model::FilteringLoads load_filtering_loads(const std::string& path);
 
 /// YAML text; `comment` becomes the header comment, one "# " line per line.
-std::string filtering_loads_to_yaml(const FilteringLoads& loads, const std::string& comment);
+std::string filtering_loads_to_yaml(const model::FilteringLoads& loads, const std::string& comment);
 
 /// `measured` merged over `previous`: sensors measured now replace their earlier entries, the
 /// others are kept (so a file can collect loads from several rigs).
-FilteringLoads merge_filtering_loads(const FilteringLoads& previous,
-                                     const FilteringLoads& measured);
+model::FilteringLoads merge_filtering_loads(const model::FilteringLoads& previous,
+                                            const model::FilteringLoads& measured);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

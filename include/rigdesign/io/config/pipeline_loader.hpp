@@ -3,7 +3,7 @@
 
 #include "rigdesign/model/filter_params.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Reads a user-defined filter pipeline:
 ///   name: mine
@@ -14,6 +14,6 @@ namespace rigdesign {
 ///     0.03}}
 /// Every parameter is optional and defaults to the papers' value (rigs/README.md lists them).
 /// Throws InputError, e.g. for an unknown stage.
-Pipeline load_pipeline(const std::string& path);
+model::Pipeline load_pipeline(const std::string& path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -3,10 +3,10 @@
 
 #include "rigdesign/model/relaxation_policy.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Reads a relaxation policy: `steps: [{relax: robot_speed.max_speed, to: 0.8}, ...]`, or
 /// `{relax: lighting, drop: dark}`. Steps are validated against requirements with relax().
-RelaxationPolicy load_policy(const std::string& path);
+model::RelaxationPolicy load_policy(const std::string& path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

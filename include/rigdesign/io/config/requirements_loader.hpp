@@ -3,10 +3,10 @@
 
 #include "rigdesign/model/requirements.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Reads an application requirements file R1-R8 (schema in rigs/README.md).
 /// Throws InputError listing every problem.
-Requirements load_requirements(const std::string& path);
+model::Requirements load_requirements(const std::string& path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -3,10 +3,10 @@
 
 #include "rigdesign/model/rig.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Reads a rig file (schema in rigs/README.md). Sensor and mode references are only read
 /// here; check_rig_references() resolves them against a library. Throws InputError.
-Rig load_rig(const std::string& path);
+model::Rig load_rig(const std::string& path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

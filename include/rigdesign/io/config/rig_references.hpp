@@ -3,11 +3,11 @@
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Resolves every mount's sensor and mode against the library. Errors: unknown sensor or
 /// mode (the message lists the valid ids). Warnings: a distance of interest outside the
 /// mode's [min, max] range, where the mount sees nothing.
-Diagnostics check_rig_references(const Rig& rig, const SensorLibrary& library);
+model::Diagnostics check_rig_references(const model::Rig& rig, const model::SensorLibrary& library);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

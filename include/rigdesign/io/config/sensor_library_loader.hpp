@@ -3,10 +3,10 @@
 
 #include "rigdesign/model/sensor.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Reads a sensors.yaml library (schema in rigs/README.md). Throws InputError listing every
 /// problem found, each with file:line:col, field and the expected form.
-SensorLibrary load_sensor_library(const std::string& path);
+model::SensorLibrary load_sensor_library(const std::string& path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -3,13 +3,13 @@
 
 #include "rigdesign/model/rig.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Which sensors.yaml a rig uses, first match wins: `explicit_path` (the --sensors option);
 /// the rig's own `sensor_library` field, relative to the rig file; a sensors.yaml in the
 /// rig's folder or any folder above it (a repository of rigs keeps its own library); the
 /// library bundled with rigdesign.
-std::string locate_sensor_library(const Rig& rig, const std::string& explicit_path);
+std::string locate_sensor_library(const model::Rig& rig, const std::string& explicit_path);
 
 /// `relative` resolved against the folder of `file` (absolute paths are kept).
 std::string resolve_beside(const std::string& file, const std::string& relative);
@@ -17,4 +17,4 @@ std::string resolve_beside(const std::string& file, const std::string& relative)
 /// The bundled sensors.yaml.
 std::string bundled_sensor_library();
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -10,7 +10,7 @@
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/source_location.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 class UrdfPoses {
  public:
@@ -19,16 +19,17 @@ class UrdfPoses {
   /// `urdf.file`) when the file cannot be read or parsed, and at `base_named_at` when the
   /// base link does not exist.
   static UrdfPoses load(const std::string& path, const std::string& base_link,
-                        const SourceLocation& named_at, const SourceLocation& base_named_at);
+                        const model::SourceLocation& named_at,
+                        const model::SourceLocation& base_named_at);
 
   /// T_base_link, or nothing when the URDF has no such link.
-  std::optional<Pose3> T_base(const std::string& link) const;
+  std::optional<model::Pose3> T_base(const std::string& link) const;
   std::vector<std::string> link_names() const;
   const std::string& base_link() const { return base_link_; }
 
  private:
-  std::map<std::string, Pose3> T_root_;  // every link's pose in the root link's frame
+  std::map<std::string, model::Pose3> T_root_;  // every link's pose in the root link's frame
   std::string base_link_;
 };
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -6,13 +6,14 @@
 #include "rigdesign/model/requirements.hpp"
 #include "rigdesign/model/rig.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// `sensor_library` and `requirements` are written as given (paths relative to the file);
 /// `comment` becomes the header comment, one "# " line per line.
-std::string rig_to_yaml(const Rig& rig, const std::string& sensor_library,
+std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library,
                         const std::string& requirements, const std::string& comment);
 
-std::string requirements_to_yaml(const Requirements& requirements, const std::string& comment);
+std::string requirements_to_yaml(const model::Requirements& requirements,
+                                 const std::string& comment);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -4,12 +4,12 @@
 
 #include "rigdesign/localize/co2_log.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Throws InputError on a missing column, a non-numeric field, a negative concentration or a
 /// log without readings.
-Co2Log parse_co2_log(const std::string& text, const std::string& file);
+localize::Co2Log parse_co2_log(const std::string& text, const std::string& file);
 
-Co2Log read_co2_log(const std::string& path);
+localize::Co2Log read_co2_log(const std::string& path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -4,7 +4,7 @@
 /// naming `co2_ppm`) or the untimed `x y co2_ppm` form.
 #include <string>
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 enum class LogKind { rssi, co2 };
 
@@ -14,4 +14,4 @@ LogKind log_kind_of(const std::string& text, const std::string& file);
 /// The file's text; InputError when it cannot be read.
 std::string read_log_text(const std::string& path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

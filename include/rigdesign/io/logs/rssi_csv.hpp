@@ -4,16 +4,16 @@
 
 #include "rigdesign/localize/rssi_log.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Parses the CSV text above; `file` names it in errors. Throws InputError on a missing
 /// column, a non-numeric or non-finite number, an RSSI above 0 dBm or a log without readings.
-RssiLog parse_rssi_csv(const std::string& text, const std::string& file);
+localize::RssiLog parse_rssi_csv(const std::string& text, const std::string& file);
 
 /// Reads and parses a file (InputError when it cannot be opened).
-RssiLog read_rssi_log(const std::string& path);
+localize::RssiLog read_rssi_log(const std::string& path);
 
 /// The CSV form parse_rssi_csv reads (round trip; numbers with enough digits to reproduce).
-std::string to_rssi_csv(const RssiLog& log);
+std::string to_rssi_csv(const localize::RssiLog& log);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -9,14 +9,15 @@
 
 #include "rigdesign/costmap/rolling_grid.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// A nav_msgs/OccupancyGrid in memory: -1 unknown, else 0..100, row-major from the lowest y.
 struct OccupancyMap {
   int width = 0;
   int height = 0;
-  double resolution = 0.05;    ///< [m]
-  Vec2 origin = Vec2::Zero();  ///< world position of the lower-left corner of cell (0, 0) [m]
+  double resolution = 0.05;  ///< [m]
+  model::Vec2 origin =
+      model::Vec2::Zero();  ///< world position of the lower-left corner of cell (0, 0) [m]
   std::vector<std::int8_t> cells;
 };
 
@@ -24,7 +25,7 @@ constexpr std::int8_t kOccupancyUnknown = -1;
 
 /// A costmap as nav2 publishes it (Costmap2DPublisher's translation table): 0 -> 0,
 /// 1..252 -> 1 + 97 (c - 1) / 251 (integer division), 253 -> 99, 254 -> 100, 255 -> -1.
-OccupancyMap to_occupancy_map(const CostGrid& grid);
+OccupancyMap to_occupancy_map(const costmap::CostGrid& grid);
 
 /// map_saver's thresholds (occupancy as a fraction of 100), written into the YAML.
 struct MapFileParams {
@@ -50,4 +51,4 @@ void write_map_files(const OccupancyMap& map, const std::string& yaml_path,
 /// always reads unknown. Throws InputError naming file:line:column and field on bad input.
 OccupancyMap read_map_files(const std::string& yaml_path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -5,7 +5,7 @@
 
 #include "rigdesign/model/triangle_mesh.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Reads the mesh at `path` (`.ply`, `.obj` or `.off`, any letter case). Coordinates are
 /// taken as metres, as stored; polygons with more than three corners are split into a fan
@@ -16,9 +16,9 @@ namespace rigdesign {
 /// extension, an unreadable file, a malformed or truncated file, a non-numeric or non-finite
 /// value, an index out of range, a face with fewer than three corners, and a file with no
 /// triangle.
-TriangleMesh load_mesh(const std::string& path);
+model::TriangleMesh load_mesh(const std::string& path);
 
 /// Whether `path` ends in an extension load_mesh reads (.ply, .obj, .off, any case).
 bool has_mesh_extension(const std::string& path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io

@@ -5,13 +5,13 @@
 
 #include "rigdesign/model/scene.hpp"
 
-namespace rigdesign {
+namespace rigdesign::io {
 
 /// Loads the scene file at `yaml_path`; mesh paths in it are relative to its folder. Static
 /// objects come out in the world frame (scaled, then posed); moving objects in their own
 /// frame (scaled, then placed by their optional `pose`) with a pose function of time [s]
 /// that is deterministic and defined for every t. Throws InputError listing every problem
 /// found (file:line:column, field, expected form), including those inside the mesh files.
-Scene load_scene_file(const std::string& yaml_path);
+model::Scene load_scene_file(const std::string& yaml_path);
 
-}  // namespace rigdesign
+}  // namespace rigdesign::io
