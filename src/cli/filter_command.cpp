@@ -1,29 +1,27 @@
 // `rigdesign filter --cloud FILE... --pipeline P1..P4|FILE [--rig RIG --mount ID]`: runs a
-// filter pipeline on point clouds and reports, per stage, the median and p95 time and the
+// filter pipeline on point clouds and reports, per stage, the median and p95 time (model::median,
+// model::percentile) and the
 // points in and out (paper 1, section 3). A cloud recorded in a sensor's optical frame is
 // moved into the robot frame by the mount's pose first, so the floor stages find the floor.
-#include <sys/resource.h>
-
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
-#include <thread>
 
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
+#include "machine_info.hpp"
 #include "rigdesign/filters/pipeline.hpp"
+#include "rigdesign/filters/pipeline_timing.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/io/config/pipeline_loader.hpp"
 #include "rigdesign/metrics/mount_metrics.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/optical_frame.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
 #include "text_table.hpp"
 
@@ -45,21 +43,6 @@ struct FilterOptions {
   bool json = false;
 };
 
-struct StageStats {
-  std::string stage;
-  std::size_t points_in = 0;
-  std::size_t points_out = 0;
-  double median = 0.0;  // [s]
-  double p95 = 0.0;     // [s]
-};
-
-double percentile(std::vector<double> values, double share) {
-  std::sort(values.begin(), values.end());
-  const std::size_t index =
-      static_cast<std::size_t>(std::ceil(share * static_cast<double>(values.size()))) - 1;
-  return values[std::min(index, values.size() - 1)];
-}
-
 model::Pipeline pipeline_named(const std::string& name) {
   if (const auto preset = filters::preset_pipeline(name)) return *preset;
   std::error_code error;
@@ -68,52 +51,6 @@ model::Pipeline pipeline_named(const std::string& name) {
                                             "--pipeline",
                                             "'" + name + "' is neither a preset nor a file",
                                             "P1, P2, P3, P4 or a pipeline YAML file"});
-}
-
-// Optical frame (x right, y down, z forward) to the sensor body frame (x forward, y left, z up).
-model::Pose3 body_from_optical() {
-  model::Pose3 pose = model::Pose3::Identity();
-  pose.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  return pose;
-}
-
-model::PointCloud to_robot_frame(const model::PointCloud& cloud,
-                                 const model::Pose3& T_robot_cloud) {
-  model::PointCloud moved;
-  moved.points.reserve(cloud.size());
-  const Eigen::Isometry3f transform = T_robot_cloud.cast<float>();
-  for (const model::Point3f& p : cloud.points) moved.points.push_back(transform * p);
-  moved.origin = T_robot_cloud.translation().cast<float>();
-  return moved;
-}
-
-double peak_memory_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-}
-
-std::string describe_machine() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string model = "unknown CPU";
-  for (std::string line; std::getline(cpuinfo, line);) {
-    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
-      model = line.substr(line.find(':') + 2);
-      break;
-    }
-  }
-  return std::to_string(std::thread::hardware_concurrency()) + " cores, " + model + ", one thread";
-}
-
-// Two mounts of one sensor (three pico flexx, say) share its entry: the slower per point counts.
-void record_load(model::FilteringLoads& loads, const model::FilteringLoad& load) {
-  for (model::FilteringLoad& existing : loads.sensors) {
-    if (existing.sensor_id == load.sensor_id) {
-      if (load.seconds_per_point > existing.seconds_per_point) existing = load;
-      return;
-    }
-  }
-  loads.sensors.push_back(load);
 }
 
 // Merged into what the file already holds, so loads measured on several rigs collect there.
@@ -160,37 +97,27 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
     const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
     const std::vector<model::PointCloud> clouds =
         sim::simulate_mount(scene, mount, mode, i, options.frames, options.seed);
-    std::vector<double> seconds;
-    std::size_t points = 0, kept = 0;
-    for (const model::PointCloud& cloud : clouds) {
-      std::vector<filters::StageRun> runs;
-      kept += filters::run_pipeline(pipeline, cloud, &runs).size();
-      points += cloud.size();
-      double total = 0.0;
-      for (const filters::StageRun& run : runs) total += run.seconds;
-      seconds.push_back(total);
-    }
-    const double median = percentile(seconds, 0.5);
-    const double load = median * mode.frequency;
-    const double per_point =
-        points > 0 ? median * static_cast<double>(clouds.size()) / static_cast<double>(points)
-                   : 0.0;
+    const filters::FramesLoad measured_load =
+        filters::measure_filtering_load(pipeline, clouds, mode.frequency);
+    const double median = measured_load.seconds_per_frame.median;
+    const double load = measured_load.load.cores;
+    const double per_point = measured_load.load.seconds_per_point;
     total_load += load;
-    table.add_row({mount.id, std::to_string(points / clouds.size()),
-                   std::to_string(kept / clouds.size()), fixed(median * 1e3, 2),
-                   fixed(percentile(seconds, 0.95) * 1e3, 2), fixed(mode.frequency, 0),
+    table.add_row({mount.id, std::to_string(measured_load.points / clouds.size()),
+                   std::to_string(measured_load.kept / clouds.size()), fixed(median * 1e3, 2),
+                   fixed(measured_load.seconds_per_frame.p95 * 1e3, 2), fixed(mode.frequency, 0),
                    fixed(load, 3), model::format_number(per_point, 3)});
     report["mounts"].push_back({{"mount", mount.id},
-                                {"points_per_frame", points / clouds.size()},
+                                {"points_per_frame", measured_load.points / clouds.size()},
                                 {"median_s", median},
                                 {"filtering_load_cores", load},
                                 {"filtering_seconds_per_point", per_point}});
-    record_load(measured, {mount.sensor_id,
-                           mount.mode_id,
-                           per_point,
-                           static_cast<double>(points) / static_cast<double>(clouds.size()),
-                           median,
-                           {}});
+    measured.record({mount.sensor_id,
+                     mount.mode_id,
+                     per_point,
+                     static_cast<double>(measured_load.points) / static_cast<double>(clouds.size()),
+                     median,
+                     {}});
   }
   if (!options.write_loads.empty()) write_loads(options.write_loads, measured, inputs.rig.file);
   report["total_filtering_load_cores"] = total_load;
@@ -247,44 +174,31 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
       throw model::InputError(model::Diagnostic{
           {path, 0, 0}, "data", "has no finite point to filter", "a non-empty cloud"});
     }
-    if (mount != nullptr) {
+    if (mount != nullptr && options.frame != "robot") {
       const model::Pose3 T_robot_cloud = options.frame == "optical"
-                                             ? mount->T_robot_sensor * body_from_optical()
+                                             ? mount->T_robot_sensor * model::T_sensor_optical()
                                              : mount->T_robot_sensor;
-      cloud = options.frame == "robot" ? cloud : to_robot_frame(cloud, T_robot_cloud);
+      cloud = model::transform_cloud(cloud, T_robot_cloud);
     }
-    std::vector<std::vector<double>> times(pipeline.stages.size());
-    std::vector<filters::StageRun> first;
-    model::PointCloud result;
-    for (int run = 0; run < options.repeat; ++run) {
-      std::vector<filters::StageRun> runs;
-      result = filters::run_pipeline(pipeline, cloud, &runs);
-      for (std::size_t s = 0; s < runs.size(); ++s) times[s].push_back(runs[s].seconds);
-      if (run == 0) first = runs;
-    }
-    std::vector<double> totals(static_cast<std::size_t>(options.repeat), 0.0);
-    for (const auto& stage_times : times) {
-      for (std::size_t r = 0; r < stage_times.size(); ++r) totals[r] += stage_times[r];
-    }
-    const double total_median = percentile(totals, 0.5);
+    const filters::PipelineTiming timing = filters::time_pipeline(pipeline, cloud, options.repeat);
+    const double total_median = timing.total.median;
     nlohmann::json stages = nlohmann::json::array();
     TextTable table;
     table.add_column("stage", TextTable::Align::left);
     for (const char* header : {"points in", "points out", "median ms", "p95 ms"})
       table.add_column(header, TextTable::Align::right);
-    for (std::size_t s = 0; s < first.size(); ++s) {
-      const StageStats stats{first[s].stage, first[s].points_in, first[s].points_out,
-                             percentile(times[s], 0.5), percentile(times[s], 0.95)};
-      table.add_row({stats.stage, std::to_string(stats.points_in), std::to_string(stats.points_out),
-                     fixed(stats.median * 1e3, 2), fixed(stats.p95 * 1e3, 2)});
-      stages.push_back({{"stage", stats.stage},
-                        {"points_in", stats.points_in},
-                        {"points_out", stats.points_out},
-                        {"median_s", stats.median},
-                        {"p95_s", stats.p95}});
+    for (const filters::StageTiming& stage : timing.stages) {
+      table.add_row({stage.stage, std::to_string(stage.points_in), std::to_string(stage.points_out),
+                     fixed(stage.seconds.median * 1e3, 2), fixed(stage.seconds.p95 * 1e3, 2)});
+      stages.push_back({{"stage", stage.stage},
+                        {"points_in", stage.points_in},
+                        {"points_out", stage.points_out},
+                        {"median_s", stage.seconds.median},
+                        {"p95_s", stage.seconds.p95}});
     }
+    const model::PointCloud& result = timing.result;
     table.add_row({"total", std::to_string(cloud.size()), std::to_string(result.size()),
-                   fixed(total_median * 1e3, 2), fixed(percentile(totals, 0.95) * 1e3, 2)});
+                   fixed(total_median * 1e3, 2), fixed(timing.total.p95 * 1e3, 2)});
     nlohmann::json item = {{"file", path},
                            {"format", read.format},
                            {"points", cloud.size()},
@@ -299,9 +213,10 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
       table.print(out, "  ");
     }
     if (mode != nullptr) {
-      // U_f: time per frame times frames per second, in core-equivalents of this machine.
-      const double load = total_median * mode->frequency;
-      const double per_point = total_median / static_cast<double>(cloud.size());
+      const filters::FilteringLoadRate rate =
+          filters::filtering_load(total_median, static_cast<double>(cloud.size()), mode->frequency);
+      const double load = rate.cores;
+      const double per_point = rate.seconds_per_point;
       item["filtering_load_cores"] = load;
       item["filtering_seconds_per_point"] = per_point;
       if (!options.json) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "rigdesign/model/statistics.hpp"
+
 namespace rigdesign::localize {
 namespace {
 
@@ -17,13 +19,6 @@ double time_of(const Co2Log& log, std::size_t i, const GasDetectionParams& param
   return log.timed ? log.readings[i].t : static_cast<double>(i) * params.sample_period;
 }
 
-double median_of(std::vector<double> values) {
-  const auto middle = values.begin() + static_cast<long>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  if (values.size() % 2 == 1) return *middle;
-  return 0.5 * (*middle + *std::max_element(values.begin(), middle));
-}
-
 // Running baseline from the readings before i: median + k sigma (sigma from the MAD), but at
 // least min_rise above the median, so a flat trace (MAD 0) does not fire on 1 ppm.
 double relative_threshold(const Co2Log& log, std::size_t i, const GasDetectionParams& params) {
@@ -33,9 +28,9 @@ double relative_threshold(const Co2Log& log, std::size_t i, const GasDetectionPa
     return std::numeric_limits<double>::infinity();
   std::vector<double> values;
   for (std::size_t k = begin; k < i; ++k) values.push_back(log.readings[k].ppm);
-  const double median = median_of(values);
+  const double median = model::median(values);
   for (double& v : values) v = std::abs(v - median);
-  const double sigma = kMadToSigma * median_of(values);
+  const double sigma = kMadToSigma * model::median(values);
   return median + std::max(params.mad_factor * sigma, params.min_rise_ppm);
 }
 
@@ -60,7 +55,7 @@ double detection_lag(const Co2Log& log, const GasDetectionParams& params) {
     std::vector<double> steps;
     for (std::size_t i = 1; i < log.readings.size(); ++i)
       steps.push_back(log.readings[i].t - log.readings[i - 1].t);
-    period = median_of(steps);
+    period = model::median(steps);
   }
   return params.time_constant + 0.5 * (params.moving_average - 1) * period;
 }

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "rigdesign/localize/wls_multilateration.hpp"
+#include "rigdesign/model/statistics.hpp"
 
 namespace rigdesign::localize {
 namespace {
@@ -70,7 +71,7 @@ ErrorStats error_stats(std::vector<double> errors) {
   stats.smallest = errors.front();
   stats.mean = sum / static_cast<double>(n);
   stats.rms = std::sqrt(squares / static_cast<double>(n));
-  stats.median = n % 2 == 1 ? errors[n / 2] : 0.5 * (errors[n / 2 - 1] + errors[n / 2]);
+  stats.median = model::median(errors);
   return stats;
 }
 

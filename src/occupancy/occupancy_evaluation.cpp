@@ -11,6 +11,8 @@
 #include <stdexcept>
 
 #include "rigdesign/occupancy/occupancy_trail.hpp"
+#include "rigdesign/sim/decimation.hpp"
+#include "rigdesign/sim/noise_stream.hpp"
 #include "rigdesign/sim/ray_caster.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
@@ -18,24 +20,6 @@ namespace rigdesign::occupancy {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// A camera's mode with every `stride`-th pixel row and column: a lower-resolution mode.
-model::SensorMode decimated(model::SensorMode mode, int stride) {
-  const bool camera =
-      mode.fov.shape == model::FovShape::pyramid || mode.fov.shape == model::FovShape::cone;
-  if (!camera || stride <= 1) return mode;
-  mode.angular_resolution_h *= stride;
-  if (mode.angular_resolution_v) *mode.angular_resolution_v *= stride;
-  mode.points_per_frame /= static_cast<double>(stride * stride);
-  return mode;
-}
-
-std::mt19937_64 stream_for(std::uint64_t seed, std::size_t sensor) {
-  // As simulate_mount: (seed, sensor index), so each sensor's noise is its own.
-  std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
-                         static_cast<std::uint32_t>(sensor)};
-  return std::mt19937_64(sequence);
-}
 
 model::TriangleMesh static_scenery(const model::Scene& scene) {
   model::TriangleMesh mesh;
@@ -136,9 +120,9 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
   std::vector<model::SensorMode> modes;
   std::vector<std::mt19937_64> streams;
   for (std::size_t i = 0; i < sensors.size(); ++i) {
-    modes.push_back(decimated(sensors[i].mode, params.camera_stride));
+    modes.push_back(sim::decimated_mode(sensors[i].mode, params.camera_stride, 1));
     rays.push_back(sim::ray_pattern(modes.back()));
-    streams.push_back(stream_for(params.seed, i));
+    streams.push_back(sim::noise_stream(params.seed, i));
   }
   // One truth per distinct lattice; mappers share it.
   const model::TriangleMesh scenery = static_scenery(scene);

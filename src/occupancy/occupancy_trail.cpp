@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "rigdesign/model/statistics.hpp"
+
 namespace rigdesign::occupancy {
 namespace {
 
@@ -37,13 +39,8 @@ TrailFrame TrailTracker::record(double time, std::span<const std::uint8_t> truth
                    static_cast<double>(times.size()) * cell_area_, kNever, kNever};
   if (!times.empty()) {
     frame.oldest_trail_time = *std::min_element(times.begin(), times.end());
-    // The 90 % youngest cells: the nearest-rank 10th percentile of the leaving times.
-    const std::size_t rank =
-        static_cast<std::size_t>(std::ceil(0.1 * static_cast<double>(times.size())));
-    const auto nth =
-        times.begin() + static_cast<std::ptrdiff_t>(std::max<std::size_t>(rank, 1) - 1);
-    std::nth_element(times.begin(), nth, times.end());
-    frame.trail_p90_time = *nth;
+    // The 90 % youngest cells: the 10th percentile of the leaving times.
+    frame.trail_p90_time = model::percentile(times, 0.1);
   }
   return frame;
 }

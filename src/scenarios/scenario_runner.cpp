@@ -9,6 +9,8 @@
 
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
+#include "rigdesign/model/statistics.hpp"
+#include "rigdesign/sim/noise_stream.hpp"
 #include "rigdesign/sim/ray_caster.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 #include "scenarios/scenario_setup.hpp"
@@ -96,14 +98,9 @@ std::optional<model::Vec2> local_goal(const model::Vec2& leg_start, const model:
 
 }  // namespace
 
-TimeSummary summarize_times(std::vector<double> seconds) {
+TimeSummary summarize_times(const std::vector<double>& seconds) {
   if (seconds.empty()) return {};
-  std::sort(seconds.begin(), seconds.end());
-  const std::size_t n = seconds.size();
-  const double median = n % 2 == 1 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
-  // Nearest rank: the smallest value with at least 99 % of the samples at or below it.
-  const auto rank = static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(n)));
-  return {median, seconds[std::max<std::size_t>(rank, 1) - 1]};
+  return {model::median(seconds), model::percentile(seconds, 0.99)};
 }
 
 ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig& rig,
@@ -121,12 +118,8 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
     still_checker.emplace(checker_at(scenario.scene, 0.0, band));
   }
   std::vector<std::mt19937_64> streams;
-  for (std::size_t i = 0; i < setup.mounts.size(); ++i) {
-    std::seed_seq sequence{static_cast<std::uint32_t>(params.seed),
-                           static_cast<std::uint32_t>(params.seed >> 32),
-                           static_cast<std::uint32_t>(i)};
-    streams.emplace_back(sequence);
-  }
+  for (std::size_t i = 0; i < setup.mounts.size(); ++i)
+    streams.push_back(sim::noise_stream(params.seed, i));
   sim::SimulationSettings settings;
   settings.add_noise = params.add_noise;
 

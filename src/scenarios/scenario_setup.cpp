@@ -5,24 +5,10 @@
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
+#include "rigdesign/sim/decimation.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
 namespace rigdesign::scenarios::detail {
-namespace {
-
-// Cameras lose rays along both image axes; lidars only along the scan (horizontally), since
-// dropping rings would drop the lowest beam, which decides what a lidar sees low down.
-model::SensorMode decimated(model::SensorMode mode, const ScenarioParams& params) {
-  const bool camera =
-      mode.fov.shape == model::FovShape::pyramid || mode.fov.shape == model::FovShape::cone;
-  const double factor = std::max(1, camera ? params.camera_decimation : params.lidar_decimation);
-  mode.angular_resolution_h *= factor;
-  if (camera && mode.angular_resolution_v) *mode.angular_resolution_v *= factor;
-  return mode;
-}
-
-}  // namespace
-
 Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
                  const ScenarioParams& params) {
   Setup setup;
@@ -41,7 +27,8 @@ Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
     const model::Sensor* sensor = library.find(mount.sensor_id);
     const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
     if (!mode) continue;
-    SimulatedMount simulated{mount, decimated(*mode, params), {}};
+    SimulatedMount simulated{
+        mount, sim::decimated_mode(*mode, params.camera_decimation, params.lidar_decimation), {}};
     simulated.rays = sim::ray_pattern(simulated.mode);
     setup.mounts.push_back(std::move(simulated));
   }

@@ -2,6 +2,8 @@
 
 #include <random>
 
+#include "rigdesign/sim/noise_stream.hpp"
+
 namespace rigdesign::sim {
 
 std::vector<model::PointCloud> simulate_mount(const model::Scene& scene, const model::Mount& mount,
@@ -9,9 +11,7 @@ std::vector<model::PointCloud> simulate_mount(const model::Scene& scene, const m
                                               std::size_t mount_index, int frames,
                                               std::uint64_t seed,
                                               const SimulationSettings& settings) {
-  std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
-                         static_cast<std::uint32_t>(mount_index)};
-  std::mt19937_64 rng(sequence);
+  std::mt19937_64 rng = noise_stream(seed, mount_index);
   const std::vector<model::Vec3> rays = ray_pattern(mode);
   const model::Pose3 T_world_sensor = scene.T_world_robot * mount.T_robot_sensor;
   const model::Pose3 T_robot_world = scene.T_world_robot.inverse();

@@ -28,6 +28,9 @@ struct FilteringLoads {
 
   /// The measured load of `sensor_id`, if it was measured.
   const FilteringLoad* find(const std::string& sensor_id) const;
+  /// Adds a measurement. Mounts of one sensor (three pico flexx, say) share its entry: the
+  /// slower per point is kept, so a catalog never underprices the sensor.
+  void record(const FilteringLoad& load);
 };
 
 }  // namespace rigdesign::model

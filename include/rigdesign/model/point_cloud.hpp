@@ -5,6 +5,8 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "rigdesign/model/eigen_types.hpp"
+
 namespace rigdesign::model {
 
 using Point3f = Eigen::Vector3f;
@@ -18,5 +20,9 @@ struct PointCloud {
   std::size_t size() const { return points.size(); }
   bool empty() const { return points.empty(); }
 };
+
+/// The cloud's points mapped by `T_target_cloud` into the target frame. The cloud is taken as
+/// recorded at its sensor, so the sensor origin becomes T_target_cloud's translation.
+PointCloud transform_cloud(const PointCloud& cloud, const Pose3& T_target_cloud);
 
 }  // namespace rigdesign::model

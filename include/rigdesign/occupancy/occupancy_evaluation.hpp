@@ -40,8 +40,8 @@ struct OccupancyEvalParams {
   double min_height = 0.1;
   double window_size = 6.0;   ///< [m] the scored square, centred on the world origin
   double robot_radius = 0.3;  ///< [m] the truth's dilation for the planner's grid
-  /// Keep every n-th pixel row and column of a camera (1: all): ray casting a full camera
-  /// frame is the evaluation's slowest step. Lidars are never decimated.
+  /// sim::decimated_mode's camera stride (1: every pixel): ray casting a full camera frame is
+  /// the evaluation's slowest step. Lidars are never decimated.
   int camera_stride = 1;
 };
 

@@ -37,9 +37,9 @@ struct ScenarioParams {
   /// [m] a local goal on a blocked cell moves to the nearest passable cell this close to it.
   double goal_search_radius = 1.0;
   double ground_clearance = 0.02;  ///< [m] bottom of the body's height band (the floor is not hit)
-  /// Every k-th ray along each image axis of cameras (an Azure Kinect frame has 368,640 rays),
-  /// and along each axis of lidar and scanner patterns: the tests' and default runs' speed.
-  /// 1 casts every ray.
+  /// Strides of sim::decimated_mode: every k-th pixel row and column of cameras (an Azure
+  /// Kinect frame has 368,640 rays), every k-th ray along the scan of lidars and scanners;
+  /// the tests' and default runs' speed. 1 casts every ray.
   int camera_decimation = 8;
   int lidar_decimation = 4;
   bool add_noise = true;   ///< range noise per sensor model
@@ -100,11 +100,11 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
                             const model::SensorLibrary& library, const ScenarioParams& params,
                             const std::function<void(const ScenarioStep&)>& on_update = {});
 
-/// Median and 99th percentile (nearest rank) of durations [s]; zeros when empty.
+/// model::median and the 99th model::percentile of durations [s]; zeros when empty.
 struct TimeSummary {
   double median = 0.0;
   double p99 = 0.0;
 };
-TimeSummary summarize_times(std::vector<double> seconds);
+TimeSummary summarize_times(const std::vector<double>& seconds);
 
 }  // namespace rigdesign::scenarios

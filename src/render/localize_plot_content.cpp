@@ -1,0 +1,68 @@
+#include "rigdesign/render/localize_plot_content.hpp"
+
+#include <algorithm>
+
+namespace rigdesign::render {
+
+LocalizePlot rssi_plot(const localize::RssiLog& log, std::string title) {
+  LocalizePlot plot;
+  plot.title = std::move(title);
+  plot.value_label = "RSSI [dBm]";
+  for (const localize::RssiReading& r : log.readings) {
+    plot.path.push_back(r.position);
+    plot.values.push_back(r.rssi_dbm);
+  }
+  return plot;
+}
+
+LocalizePlot co2_plot(const localize::Co2Log& log, std::string title) {
+  LocalizePlot plot;
+  plot.title = std::move(title);
+  plot.value_label = "CO2 [ppm]";
+  for (const localize::Co2Reading& r : log.readings) {
+    plot.path.push_back(r.position);
+    plot.values.push_back(r.ppm);
+  }
+  return plot;
+}
+
+void add_walls(const std::vector<localize::WallSegment>& walls, LocalizePlot& plot) {
+  for (const localize::WallSegment& wall : walls) plot.walls.emplace_back(wall.a, wall.b);
+}
+
+void add_estimate_markers(const localize::EmitterEstimate& estimate,
+                          const std::optional<model::Vec3>& truth, LocalizePlot& plot) {
+  for (std::size_t i = 0; i < estimate.hypotheses.size(); ++i) {
+    const localize::Hypothesis& h = estimate.hypotheses[i];
+    plot.markers.push_back({h.position, h.covariance.topLeftCorner<2, 2>(),
+                            to_string(estimate.method) + (i == 0 ? "" : " twin"),
+                            i == 0 ? PlotMarkerKind::estimate : PlotMarkerKind::alternative});
+  }
+  const bool drawn =
+      std::any_of(plot.markers.begin(), plot.markers.end(), [&](const PlotMarker& m) {
+        return m.kind == PlotMarkerKind::truth && truth && m.position == *truth;
+      });
+  if (truth && !drawn)
+    plot.markers.push_back(
+        {*truth, Eigen::Matrix2d::Zero(), estimate.bssid, PlotMarkerKind::truth});
+}
+
+void add_detection_markers(const std::vector<localize::GasDetection>& detections,
+                           LocalizePlot& plot) {
+  for (const localize::GasDetection& d : detections) {
+    plot.markers.push_back({d.position, Eigen::Matrix2d::Zero(), "", PlotMarkerKind::detection});
+    plot.markers.push_back(
+        {d.lag_corrected, Eigen::Matrix2d::Zero(), "", PlotMarkerKind::lag_corrected});
+  }
+}
+
+void add_gas_artifact_markers(const std::vector<localize::Artifact>& artifacts,
+                              LocalizePlot& plot) {
+  for (const localize::Artifact& a : artifacts) {
+    if (a.type == "gas")
+      plot.markers.push_back({a.position, Eigen::Matrix2d::Zero(), "gas " + std::to_string(a.id),
+                              PlotMarkerKind::artifact});
+  }
+}
+
+}  // namespace rigdesign::render
