@@ -4,26 +4,34 @@
 
 namespace rigdesign::render {
 
-LocalizePlot rssi_plot(const localize::RssiLog& log, std::string title) {
+namespace {
+
+// The path of a log's readings, coloured by what `value_of` reads from each.
+template <typename Reading, typename ValueOf>
+LocalizePlot path_plot(const std::vector<Reading>& readings, ValueOf value_of, std::string title,
+                       std::string value_label) {
   LocalizePlot plot;
   plot.title = std::move(title);
-  plot.value_label = "RSSI [dBm]";
-  for (const localize::RssiReading& r : log.readings) {
+  plot.value_label = std::move(value_label);
+  for (const Reading& r : readings) {
     plot.path.push_back(r.position);
-    plot.values.push_back(r.rssi_dbm);
+    plot.values.push_back(value_of(r));
   }
   return plot;
 }
 
+}  // namespace
+
+LocalizePlot rssi_plot(const localize::RssiLog& log, std::string title) {
+  return path_plot(
+      log.readings, [](const localize::RssiReading& r) { return r.rssi_dbm; }, std::move(title),
+      "RSSI [dBm]");
+}
+
 LocalizePlot co2_plot(const localize::Co2Log& log, std::string title) {
-  LocalizePlot plot;
-  plot.title = std::move(title);
-  plot.value_label = "CO2 [ppm]";
-  for (const localize::Co2Reading& r : log.readings) {
-    plot.path.push_back(r.position);
-    plot.values.push_back(r.ppm);
-  }
-  return plot;
+  return path_plot(
+      log.readings, [](const localize::Co2Reading& r) { return r.ppm; }, std::move(title),
+      "CO2 [ppm]");
 }
 
 void add_walls(const std::vector<localize::WallSegment>& walls, LocalizePlot& plot) {
