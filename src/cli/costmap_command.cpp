@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 
 #include "app.hpp"
@@ -17,6 +18,7 @@
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/io/maps/map_files.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/render/costmap_frame.hpp"
@@ -30,11 +32,12 @@ struct CostmapOptions {
   std::string rig;
   std::string sensors;
   std::string scenario;
-  std::string layer = "obstacle";
+  std::string params;  // nav2 costmap parameter file
+  std::string layer;   // empty: the parameters' layer (the scenario's default: obstacle)
   bool no_hit_layer = false;
   bool compare = false;
-  double resolution = 0.05;
-  double window = 6.0;
+  std::optional<double> resolution;  // unset: the parameters' (the scenario's default: 0.05 m)
+  std::optional<double> window;
   double speed = 0.4;
   double update_rate = 5.0;
   int frame_every = 5;
@@ -70,39 +73,6 @@ std::string joined(const std::vector<std::string>& names) {
 
 double milliseconds(double seconds) {
   return seconds * 1e3;
-}
-
-// Each mount's horizontal view on the floor at the robot's pose.
-std::vector<render::FovWedge> fov_wedges(const model::Rig& rig, const model::SensorLibrary& library,
-                                         const costmap::Pose2& pose, double marking_range) {
-  std::vector<render::FovWedge> wedges;
-  for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
-    const model::Mount& mount = rig.mounts[i];
-    const model::SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    const model::Vec3 axis = mount.T_robot_sensor.linear().col(0);
-    const model::Vec2 offset = mount.T_robot_sensor.translation().head<2>();
-    const Eigen::Rotation2Dd R_world_robot(pose.yaw);
-    render::FovWedge wedge;
-    wedge.apex = pose.position + R_world_robot * offset;
-    wedge.yaw = pose.yaw + std::atan2(axis.y(), axis.x());
-    wedge.half_angle = mode.fov.horizontal / 2;
-    wedge.range = std::min(mode.max_range, marking_range);
-    wedge.colour = i;
-    wedges.push_back(wedge);
-  }
-  return wedges;
-}
-
-// Cells the Hit Layer holds that the obstacle grid does not see occupied now.
-std::vector<std::uint8_t> remembered_cells(const costmap::Costmap& costmap) {
-  if (!costmap.params().use_hit_layer) return {};
-  const auto& counts = costmap.hit_layer().counts().cells();
-  const auto& observed = costmap.obstacle_grid().cells();
-  std::vector<std::uint8_t> remembered(counts.size(), 0);
-  for (std::size_t i = 0; i < counts.size(); ++i) {
-    remembered[i] = counts[i] > 0 && observed[i] != costmap::cost::kLethal;
-  }
-  return remembered;
 }
 
 std::string outcome_text(const scenarios::ScenarioResult& result) {
@@ -184,16 +154,18 @@ VariantRun run_variant(const CostmapOptions& options, const RigInputs& inputs,
   };
   const std::vector<std::vector<model::Vec2>> still_outlines = outlines_at(0.0);
   const std::string title = inputs.rig.name + ", " + options.scenario + ", " + variant.label();
+  std::vector<double> marking_ranges;
+  for (const costmap::ObservationSource& source : scenarios::mount_sources_of(inputs.rig, params))
+    marking_ranges.push_back(source.obstacle_max_range);
   run.result = scenarios::run_scenario(
       scenario, inputs.rig, inputs.library, params, [&](const scenarios::ScenarioStep& step) {
         trail.push_back(step.pose.position);
         last_master = step.costmap->master();
         last_obstacles = step.costmap->obstacle_grid();
         frame.title = title + ", t = " + fixed(step.time, 1) + " s";
-        frame.remembered = remembered_cells(*step.costmap);
+        frame.remembered = costmap::remembered_cells(*step.costmap);
         frame.obstacles = scenario.scene.moving.empty() ? still_outlines : outlines_at(step.time);
-        frame.fovs =
-            fov_wedges(inputs.rig, inputs.library, step.pose, params.source.obstacle_max_range);
+        frame.fovs = render::fov_wedges(inputs.rig, inputs.library, step.pose, marking_ranges);
         frame.path = step.path->waypoints_world;
         frame.trail = trail;
         frame.robot = step.pose.position;
@@ -266,31 +238,52 @@ void print_comparison(std::ostream& out, const std::vector<VariantRun>& runs) {
   table.print(out, "  ");
 }
 
+// A nav2 parameter file: its costmap, and its observation sources for the mounts they name.
+void apply_params_file(const std::string& path, const model::Rig& rig,
+                       scenarios::ScenarioParams& params) {
+  const io::CostmapParamsFile file = io::load_costmap_params(path, params.costmap, params.source);
+  params.costmap = file.costmap;
+  params.mount_sources = file.sources;
+  for (const costmap::NamedObservationSource& named : file.sources) {
+    const bool known = std::any_of(rig.mounts.begin(), rig.mounts.end(),
+                                   [&](const model::Mount& m) { return m.id == named.name; });
+    require_option(known, "--params",
+                   path + ": observation source '" + named.name + "' names no mount of " + rig.file,
+                   "observation sources named after the rig's mount ids");
+  }
+}
+
+std::string window_text(const costmap::CostmapParams& costmap) {
+  if (costmap.size_x == costmap.size_y) return model::format_number(costmap.size_x);
+  return model::format_number(costmap.size_x) + " x " + model::format_number(costmap.size_y);
+}
+
 int run_costmap(const CostmapOptions& options, std::ostream& out) {
   const std::vector<std::string>& names = scenarios::costmap_scenario_names();
   require_option(std::find(names.begin(), names.end(), options.scenario) != names.end(),
                  "--scenario", "unknown scenario '" + options.scenario + "'",
                  "one of: " + joined(names));
-  require_option(options.layer == "obstacle" || options.layer == "voxel", "--layer",
-                 "unknown layer '" + options.layer + "'", "obstacle or voxel");
-  require_option(options.resolution > 0.0, "--resolution", "must be positive",
-                 "a cell side > 0 [m]");
-  require_option(options.window > 0.0, "--window", "must be positive", "a window side > 0 [m]");
+  require_option(options.layer.empty() || options.layer == "obstacle" || options.layer == "voxel",
+                 "--layer", "unknown layer '" + options.layer + "'", "obstacle or voxel");
+  require_option(!options.resolution || *options.resolution > 0.0, "--resolution",
+                 "must be positive", "a cell side > 0 [m]");
+  require_option(!options.window || *options.window > 0.0, "--window", "must be positive",
+                 "a window side > 0 [m]");
   require_option(options.speed > 0.0, "--speed", "must be positive", "a speed > 0 [m/s]");
   require_option(options.update_rate > 0.0 && options.update_rate <= 20.0, "--update-rate",
                  "is out of range", "0 < rate <= 20 Hz (the control rate)");
   require_option(options.frame_every >= 0, "--frame-every", "must not be negative",
                  "0 (no frames) or a number of updates");
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, "");
+  scenarios::ScenarioParams params;
+  if (!options.params.empty()) apply_params_file(options.params, inputs.rig, params);
+  if (options.resolution) params.costmap.resolution = *options.resolution;
+  if (options.window) params.costmap.size_x = params.costmap.size_y = *options.window;
   const double footprint = 2.0 * inputs.rig.body.radius;
   require_option(
-      options.window >= footprint, "--window",
+      std::min(params.costmap.size_x, params.costmap.size_y) >= footprint, "--window",
       "is smaller than the robot's footprint (" + model::format_number(footprint) + " m across)",
       "a window side >= " + model::format_number(footprint) + " m");
-  scenarios::ScenarioParams params;
-  params.costmap.resolution = options.resolution;
-  params.costmap.size_x = options.window;
-  params.costmap.size_y = options.window;
   params.follower.speed = options.speed;
   params.update_rate = options.update_rate;
   params.seed = options.seed;
@@ -301,11 +294,10 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
   const std::string folder = options.out.empty() ? "costmap/" + options.scenario : options.out;
   out << inputs.rig.name << " in scenario " << scenario.name << " (seed " << options.seed
       << "): " << scenario.description << "\n";
-  out << "  " << model::format_number(options.resolution) << " m cells, "
-      << model::format_number(options.window) << " m window, "
-      << model::format_number(options.update_rate) << " Hz updates, "
-      << model::format_number(options.speed) << " m/s; Hit Layer hit " << params.costmap.hit.hit
-      << ", hit_max " << params.costmap.hit.hit_max << "\n";
+  out << "  " << model::format_number(params.costmap.resolution) << " m cells, "
+      << window_text(params.costmap) << " m window, " << model::format_number(options.update_rate)
+      << " Hz updates, " << model::format_number(options.speed) << " m/s; Hit Layer hit "
+      << params.costmap.hit.hit << ", hit_max " << params.costmap.hit.hit_max << "\n";
   std::vector<Variant> variants;
   if (options.compare) {
     for (costmap::ObstacleLayerKind layer :
@@ -313,9 +305,11 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
       for (bool hit : {false, true}) variants.push_back({layer, hit});
     }
   } else {
-    variants.push_back({options.layer == "voxel" ? costmap::ObstacleLayerKind::voxel
-                                                 : costmap::ObstacleLayerKind::obstacle,
-                        !options.no_hit_layer});
+    const costmap::ObstacleLayerKind layer = options.layer.empty() ? params.costmap.layer
+                                             : options.layer == "voxel"
+                                                 ? costmap::ObstacleLayerKind::voxel
+                                                 : costmap::ObstacleLayerKind::obstacle;
+    variants.push_back({layer, params.costmap.use_hit_layer && !options.no_hit_layer});
   }
   std::vector<VariantRun> runs;
   nlohmann::json all = nlohmann::json::array();
@@ -344,7 +338,10 @@ Command setup_costmap(CLI::App& parent) {
   app->add_option("--rig", options->rig, "Rig file")->required();
   app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
   app->add_option("--scenario", options->scenario, "wall_following or stationary")->required();
-  app->add_option("--layer", options->layer, "obstacle (2D, default) or voxel (3D)");
+  app->add_option("--params", options->params,
+                  "nav2 costmap parameter file (docs/costmap.md); options below override it");
+  app->add_option("--layer", options->layer,
+                  "obstacle (2D) or voxel (3D) (default: the parameters', else obstacle)");
   app->add_flag("--no-hit-layer", options->no_hit_layer, "Run without paper 1's Hit Layer");
   app->add_flag("--compare", options->compare,
                 "Run both layers with and without the Hit Layer and print a table");

@@ -71,4 +71,15 @@ void Costmap::update(double time, const model::Pose3& T_world_robot,
   inflation_.apply(master_);
 }
 
+std::vector<std::uint8_t> remembered_cells(const Costmap& costmap) {
+  if (!costmap.params().use_hit_layer) return {};
+  const auto& counts = costmap.hit_layer().counts().cells();
+  const auto& observed = costmap.obstacle_grid().cells();
+  std::vector<std::uint8_t> remembered(counts.size(), 0);
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    remembered[i] = counts[i] > 0 && observed[i] != cost::kLethal;
+  }
+  return remembered;
+}
+
 }  // namespace rigdesign::costmap

@@ -188,7 +188,7 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
         clouds[i] =
             sim::simulate_frame(caster, mount.mode, mount.rays,
                                 T_world_robot * mount.mount.T_robot_sensor, settings, streams[i]);
-        observations.push_back({&clouds[i], model::Pose3::Identity(), setup.source});
+        observations.push_back({&clouds[i], model::Pose3::Identity(), setup.mounts[i].source});
       }
       const bool velocity_command = !command.is_zero();
       const Clock::time_point update_start = Clock::now();

@@ -21,14 +21,17 @@ Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
       std::max(setup.costmap.inflation.inflation_radius, radius + 0.1);
   setup.costmap.voxel.z_max =
       std::max(setup.costmap.voxel.z_min + setup.costmap.voxel.z_resolution, rig.body.height);
-  setup.source = params.source;
-  setup.source.max_obstacle_height = rig.body.height;
-  for (const model::Mount& mount : rig.mounts) {
+  const std::vector<costmap::ObservationSource> sources = mount_sources_of(rig, params);
+  for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
+    const model::Mount& mount = rig.mounts[i];
     const model::Sensor* sensor = library.find(mount.sensor_id);
     const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
     if (!mode) continue;
     SimulatedMount simulated{
-        mount, sim::decimated_mode(*mode, params.camera_decimation, params.lidar_decimation), {}};
+        mount,
+        sim::decimated_mode(*mode, params.camera_decimation, params.lidar_decimation),
+        {},
+        sources[i]};
     simulated.rays = sim::ray_pattern(simulated.mode);
     setup.mounts.push_back(std::move(simulated));
   }
@@ -61,6 +64,23 @@ bool can_mark(const SimulatedMount& mount, const costmap::ObservationSource& sou
 
 namespace rigdesign::scenarios {
 
+std::vector<costmap::ObservationSource> mount_sources_of(const model::Rig& rig,
+                                                         const ScenarioParams& params) {
+  std::vector<costmap::ObservationSource> sources;
+  for (const model::Mount& mount : rig.mounts) {
+    const auto named = std::find_if(params.mount_sources.begin(), params.mount_sources.end(),
+                                    [&](const auto& s) { return s.name == mount.id; });
+    if (named != params.mount_sources.end()) {
+      sources.push_back(named->source);
+    } else {
+      sources.push_back(params.source);
+      // nav2 practice: points above the robot neither mark nor clear.
+      sources.back().max_obstacle_height = rig.body.height;
+    }
+  }
+  return sources;
+}
+
 void check_scenario_inputs(const model::Rig& rig, const model::SensorLibrary& library,
                            const ScenarioParams& params, const model::SourceLocation& where) {
   model::Diagnostics findings;
@@ -82,14 +102,17 @@ void check_scenario_inputs(const model::Rig& rig, const model::SensorLibrary& li
   }
   const detail::Setup setup = detail::make_setup(rig, library, params);
   const bool any = std::any_of(setup.mounts.begin(), setup.mounts.end(), [&](const auto& mount) {
-    return detail::can_mark(mount, setup.source);
+    return detail::can_mark(mount, mount.source);
   });
   if (!any) {
+    // Every mount without a source of its own shares this one; named sources are the user's.
+    costmap::ObservationSource shared = params.source;
+    shared.max_obstacle_height = rig.body.height;
     findings.error(rig.where, "mounts",
                    "no sensor can mark the costmap: none sees the height band " +
-                       model::format_number(setup.source.min_obstacle_height) + " to " +
-                       model::format_number(setup.source.max_obstacle_height) + " m within " +
-                       model::format_number(setup.source.obstacle_max_range) + " m",
+                       model::format_number(shared.min_obstacle_height) + " to " +
+                       model::format_number(shared.max_obstacle_height) + " m within " +
+                       model::format_number(shared.obstacle_max_range) + " m",
                    "at least one mount whose rays reach obstacles the body could hit");
   }
   findings.throw_if_errors();

@@ -1,6 +1,6 @@
 #pragma once
 // What a scenario run derives from the rig before it starts: the costmap and source settings
-// fitted to the body, and each mount's (decimated) ray pattern. Private to costmap.
+// fitted to the body, and each mount's (decimated) ray pattern. Private to scenarios.
 #include <vector>
 
 #include "rigdesign/scenarios/scenario_runner.hpp"
@@ -9,13 +9,13 @@ namespace rigdesign::scenarios::detail {
 
 struct SimulatedMount {
   model::Mount mount;
-  model::SensorMode mode;         ///< the mount's mode with the decimated angular steps
-  std::vector<model::Vec3> rays;  ///< ray_pattern(mode), sensor frame
+  model::SensorMode mode;             ///< the mount's mode with the decimated angular steps
+  std::vector<model::Vec3> rays;      ///< ray_pattern(mode), sensor frame
+  costmap::ObservationSource source;  ///< what its clouds mark and clear (mount_sources_of)
 };
 
 struct Setup {
   costmap::CostmapParams costmap;
-  costmap::ObservationSource source;
   std::vector<SimulatedMount> mounts;
 };
 

@@ -2,7 +2,9 @@
 /// The layered costmap (DESIGN.md section 7): a rolling window centred on the robot, an
 /// obstacle layer (2D) or voxel layer (3D), the Hit Layer and the inflation layer, combined in
 /// that order into the master grid the planner reads.
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "rigdesign/costmap/hit_layer.hpp"
 #include "rigdesign/costmap/inflation_layer.hpp"
@@ -36,6 +38,12 @@ struct CostmapParams {
 /// names are `prefix` + the struct's member path ("resolution", "voxel.z_max", "hit.hit_max").
 void check_costmap_params(const CostmapParams& params, const model::SourceLocation& where,
                           const std::string& prefix = {});
+
+class Costmap;
+
+/// Cells (row-major on the window) the Hit Layer keeps lethal while the obstacle grid does not
+/// see them occupied now: what only its memory holds. Empty without a Hit Layer.
+std::vector<std::uint8_t> remembered_cells(const Costmap& costmap);
 
 class Costmap {
  public:

@@ -1,6 +1,8 @@
 #pragma once
 /// One sensor's cloud as the costmap layers take it, with that source's nav2-style flags and
 /// ranges (nav2 ObstacleLayer's observation source parameters).
+#include <string>
+
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
@@ -31,6 +33,12 @@ struct ObservationSource {
     return in_height_band(p_world.z()) && squared >= obstacle_min_range * obstacle_min_range &&
            squared <= obstacle_max_range * obstacle_max_range;
   }
+};
+
+/// A source as nav2 names it in `observation_sources` (rigdesign names them after mounts).
+struct NamedObservationSource {
+  std::string name;
+  ObservationSource source;
 };
 
 /// A cloud in any frame and the transform to the world; the cloud's `origin` is the sensor

@@ -4,10 +4,14 @@
 /// body's height band, each sensor's horizontal field of view, the planned path, the driven
 /// trail and the robot's body. North up, world x to the right, equal scale.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "rigdesign/costmap/path_follower.hpp"
 #include "rigdesign/costmap/rolling_grid.hpp"
+#include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/sensor.hpp"
 
 namespace rigdesign::render {
 
@@ -19,6 +23,12 @@ struct FovWedge {
   double range = 0.0;                      ///< [m]
   std::size_t colour = 0;                  ///< index into sensor_colour
 };
+
+/// Each mount's horizontal view on the floor with the robot at `pose`, as far as the nearer of
+/// its mode's range and the mount's marking range (`marking_ranges`, in mount order).
+std::vector<FovWedge> fov_wedges(const model::Rig& rig, const model::SensorLibrary& library,
+                                 const costmap::Pose2& pose,
+                                 std::span<const double> marking_ranges);
 
 struct CostmapFrame {
   std::string title;

@@ -28,6 +28,9 @@ struct ScenarioParams {
   /// Per-mount source settings; max_obstacle_height is set to the body's height (nav2 practice:
   /// points above the robot neither mark nor clear).
   costmap::ObservationSource source = scenario_source_defaults();
+  /// Per-mount source settings by mount id, as a nav2 file's observation_sources name them;
+  /// used as given. A mount without an entry uses `source`.
+  std::vector<costmap::NamedObservationSource> mount_sources;
   costmap::PlannerParams planner;
   costmap::FollowerParams follower;
   double update_rate = 5.0;      ///< [Hz] sensing, costmap update and planning
@@ -91,6 +94,11 @@ void check_scenario_inputs(const model::Rig& rig, const model::SensorLibrary& li
                            const ScenarioParams& params,
                            const model::SourceLocation& where = model::SourceLocation{
                                "(command line)"});
+
+/// The source each mount of `rig` marks and clears with, in mount order: its entry in
+/// params.mount_sources, else params.source with max_obstacle_height at the body's height.
+std::vector<costmap::ObservationSource> mount_sources_of(const model::Rig& rig,
+                                                         const ScenarioParams& params);
 
 /// Runs the scenario with `rig`'s sensors (modes from `library`) on a body of the rig's
 /// radius and height. Checks its inputs first (check_scenario_inputs). `on_update` is called

@@ -1,0 +1,31 @@
+#pragma once
+/// Costmap parameters from a nav2 parameter file (docs/costmap.md, "Parameter files"): the
+/// `local_costmap: local_costmap: ros__parameters:` block (or `global_costmap`, or the same
+/// keys at the top of the file), with nav2's names where nav2 has the parameter and the Hit
+/// Layer's own keys. Layers are found by the nav2_bringup plugin names `obstacle_layer`,
+/// `voxel_layer`, `hit_layer` and `inflation_layer`. nav2 keys rigdesign does not model (topics,
+/// frames, rates) are accepted and ignored; any other key is an error with "did you mean".
+#include <string>
+#include <vector>
+
+#include "rigdesign/costmap/costmap.hpp"
+#include "rigdesign/costmap/observation.hpp"
+
+namespace rigdesign::io {
+
+struct CostmapParamsFile {
+  /// `defaults` with every key the file gives; checked by costmap::check_costmap_params.
+  costmap::CostmapParams costmap;
+  /// The layer's `observation_sources` in their order, each starting from the source defaults.
+  std::vector<costmap::NamedObservationSource> sources;
+  bool has_sources = false;  ///< the file names observation sources
+};
+
+/// Throws InputError naming file:line:col, the key's path and the expected form for a missing
+/// file, a malformed value, an unknown key, a source named but not given, or parameters no
+/// costmap accepts.
+CostmapParamsFile load_costmap_params(const std::string& path,
+                                      const costmap::CostmapParams& defaults,
+                                      const costmap::ObservationSource& source_defaults);
+
+}  // namespace rigdesign::io

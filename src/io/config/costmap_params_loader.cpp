@@ -1,0 +1,269 @@
+#include "rigdesign/io/config/costmap_params_loader.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "io/config/yaml_reader.hpp"
+#include "rigdesign/model/input_error.hpp"
+
+namespace rigdesign::io {
+namespace {
+
+// nav2 parameters rigdesign reads past: they name topics, frames and rates of a running
+// stack, which a simulation on recorded geometry does not need.
+const std::vector<std::string> kIgnoredCostmapKeys = {
+    "update_frequency",  "publish_frequency",        "global_frame",
+    "robot_base_frame",  "rolling_window",           "always_send_full_costmap",
+    "footprint_padding", "transform_tolerance",      "use_sim_time",
+    "map_topic",         "lethal_cost_threshold",    "unknown_cost_value",
+    "trinary_costmap",   "initial_transform_timeout"};
+const std::vector<std::string> kIgnoredLayerKeys = {"plugin",
+                                                    "enabled",
+                                                    "publish_voxel_map",
+                                                    "footprint_clearing_enabled",
+                                                    "combination_method",
+                                                    "max_obstacle_height",
+                                                    "min_obstacle_height"};
+const std::vector<std::string> kIgnoredSourceKeys = {
+    "topic",       "data_type", "sensor_frame", "expected_update_rate", "observation_persistence",
+    "inf_is_valid"};
+
+constexpr const char* kMetres = "metres, >= 0";
+
+void ignore(MapReader& m, const std::vector<std::string>& keys) {
+  for (const std::string& key : keys) m.has(key);  // asking marks a key as known
+}
+
+void read(MapReader& m, const std::string& key, double& value, const std::string& expected) {
+  if (const auto v = m.number(key, Need::optional, expected)) value = *v;
+}
+
+void read(MapReader& m, const std::string& key, bool& value) {
+  if (const auto v = m.boolean(key, Need::optional)) value = *v;
+}
+
+void read(MapReader& m, const std::string& key, int& value, const std::string& expected) {
+  if (const auto v = m.integer(key, Need::optional, expected)) value = *v;
+}
+
+// nav2 writes `observation_sources: front_camera top_lidar`; a YAML list is taken too.
+std::vector<std::string> source_names(MapReader& m) {
+  const YAML::Node node = m.node("observation_sources");
+  std::vector<std::string> names;
+  if (node.IsSequence()) {
+    for (const YAML::Node& item : node) names.push_back(item.as<std::string>(""));
+  } else if (node.IsScalar()) {
+    std::istringstream words(node.Scalar());
+    for (std::string word; words >> word;) names.push_back(word);
+  } else if (node.IsDefined() && !node.IsNull()) {
+    m.require(false, "observation_sources", "is not a list of names",
+              "source names separated by spaces, e.g. `front_camera top_lidar`");
+  }
+  return names;
+}
+
+costmap::ObservationSource read_source(MapReader& m, costmap::ObservationSource source) {
+  read(m, "marking", source.marking);
+  read(m, "clearing", source.clearing);
+  read(m, "obstacle_min_range", source.obstacle_min_range, kMetres);
+  read(m, "obstacle_max_range", source.obstacle_max_range, kMetres);
+  read(m, "raytrace_min_range", source.raytrace_min_range, kMetres);
+  read(m, "raytrace_max_range", source.raytrace_max_range, kMetres);
+  read(m, "min_obstacle_height", source.min_obstacle_height, "a world height in metres");
+  read(m, "max_obstacle_height", source.max_obstacle_height, "a world height in metres");
+  m.require(source.obstacle_min_range <= source.obstacle_max_range, "obstacle_min_range",
+            "is above obstacle_max_range", "obstacle_min_range <= obstacle_max_range");
+  m.require(source.min_obstacle_height <= source.max_obstacle_height, "min_obstacle_height",
+            "is above max_obstacle_height", "min_obstacle_height <= max_obstacle_height");
+  ignore(m, kIgnoredSourceKeys);
+  m.reject_unknown_keys();
+  return source;
+}
+
+// An obstacle or voxel layer: its sources, and for the voxel layer its column.
+void read_obstacle_layer(MapReader& m, bool voxel, const costmap::ObservationSource& defaults,
+                         CostmapParamsFile& file) {
+  read(m, "track_unknown_space", file.costmap.obstacle.track_unknown_space);
+  if (voxel) {
+    costmap::VoxelLayerParams& v = file.costmap.voxel;
+    read(m, "origin_z", v.z_min, "the column's bottom in metres");
+    read(m, "z_resolution", v.z_resolution, "a voxel height in metres, > 0");
+    int z_voxels = 0;
+    read(m, "z_voxels", z_voxels, "a voxel count, > 0");
+    if (m.has("z_voxels")) {
+      m.require(z_voxels > 0, "z_voxels", "must be > 0", "a voxel count, > 0");
+      v.z_max = v.z_min + z_voxels * v.z_resolution;
+    }
+    read(m, "unknown_threshold", v.unknown_threshold, "a voxel count, >= 0");
+    int mark_threshold = 0;
+    read(m, "mark_threshold", mark_threshold, "0");
+    m.require(mark_threshold == 0, "mark_threshold", "is not 0",
+              "0: one occupied voxel marks its column (the only rule rigdesign models)");
+  }
+  for (const std::string& name : source_names(m)) {
+    file.has_sources = true;
+    if (auto source = m.map(name, Need::required, "the source's parameters")) {
+      file.sources.push_back({name, read_source(*source, defaults)});
+    }
+  }
+  ignore(m, kIgnoredLayerKeys);
+  m.reject_unknown_keys();
+}
+
+void read_hit_layer(MapReader& m, costmap::HitLayerParams& hit) {
+  read(m, "hit", hit.hit, "a count added per update, > 0");
+  read(m, "hit_max", hit.hit_max, "the count's ceiling, >= hit");
+  read(m, "d_threshold", hit.d_threshold, "metres the robot must move to count as moving");
+  read(m, "d_duration", hit.d_duration, "seconds over which the motion is judged");
+  ignore(m, {"plugin", "enabled"});
+  m.reject_unknown_keys();
+}
+
+void read_inflation_layer(MapReader& m, costmap::InflationParams& inflation) {
+  read(m, "inflation_radius", inflation.inflation_radius, kMetres);
+  read(m, "cost_scaling_factor", inflation.cost_scaling_factor, "a rate in 1/m, > 0");
+  read(m, "inflate_unknown", inflation.inflate_unknown);
+  ignore(m, {"plugin", "enabled"});
+  m.reject_unknown_keys();
+}
+
+// check_costmap_params names struct members; the file names nav2 keys. Struct path -> key path.
+const std::vector<std::pair<std::string, std::string>> kKeyOfField = {
+    {"resolution", "resolution"},
+    {"robot_radius", "robot_radius"},
+    {"size_x", "width"},
+    {"size_y", "height"},
+    {"hit.hit", "hit_layer.hit"},
+    {"hit.hit_max", "hit_layer.hit_max"},
+    {"hit.d_threshold", "hit_layer.d_threshold"},
+    {"hit.d_duration", "hit_layer.d_duration"},
+    {"inflation.inflation_radius", "inflation_layer.inflation_radius"},
+    {"inflation.cost_scaling_factor", "inflation_layer.cost_scaling_factor"},
+    {"inflation.inscribed_radius", "robot_radius"},
+    {"voxel.z_min", "voxel_layer.origin_z"},
+    {"voxel.z_max", "voxel_layer.z_voxels"},
+    {"voxel.z_resolution", "voxel_layer.z_resolution"},
+    {"voxel.unknown_threshold", "voxel_layer.unknown_threshold"}};
+
+// The node at a dotted key path below `node`, or an undefined node. Read through const
+// nodes and reset(): yaml-cpp's non-const operator[] and operator= change the document.
+YAML::Node node_at(const YAML::Node& node, const std::string& key_path) {
+  YAML::Node current;
+  current.reset(node);
+  std::istringstream parts(key_path);
+  for (std::string part; std::getline(parts, part, '.');) {
+    if (!current.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+    const YAML::Node& parent = current;
+    const YAML::Node child = parent[part];
+    current.reset(child);
+  }
+  return current;
+}
+
+// Runs the costmap's own range checks and reports their findings at the file's keys.
+void check_in_file_terms(const costmap::CostmapParams& params, const YAML::Node& block,
+                         const std::string& block_path, const std::string& file) {
+  try {
+    costmap::check_costmap_params(params, location_of(block, file));
+  } catch (const model::InputError& error) {
+    std::vector<model::Diagnostic> located;
+    for (model::Diagnostic d : error.diagnostics()) {
+      for (const auto& [field, key] : kKeyOfField) {
+        if (d.field != field) continue;
+        const YAML::Node node = node_at(block, key);
+        if (node.IsDefined()) d.where = location_of(node, file);
+        d.field = (block_path.empty() ? "" : block_path + ".") + key;
+      }
+      located.push_back(std::move(d));
+    }
+    throw model::InputError(std::move(located));
+  }
+}
+
+bool listed(const std::vector<std::string>& plugins, const std::string& name) {
+  return std::find(plugins.begin(), plugins.end(), name) != plugins.end();
+}
+
+// The map holding the parameters: nav2's node/namespace nesting, or the file itself.
+YAML::Node parameter_block(const YAML::Node& root, std::string& path) {
+  const auto map_at = [](const YAML::Node& node, const char* key) {
+    const YAML::Node child = node.IsMap() ? node[key] : YAML::Node();
+    return child.IsDefined() && child.IsMap() ? child : YAML::Node(YAML::NodeType::Undefined);
+  };
+  for (const char* costmap : {"local_costmap", "global_costmap"}) {
+    const YAML::Node outer = map_at(root, costmap);
+    if (!outer.IsDefined()) continue;
+    const YAML::Node nested = map_at(outer, costmap);
+    const YAML::Node inner = nested.IsDefined() ? nested : outer;
+    path = std::string(costmap) + (nested.IsDefined() ? std::string(".") + costmap : "");
+    const YAML::Node parameters = map_at(inner, "ros__parameters");
+    if (parameters.IsDefined()) {
+      path += ".ros__parameters";
+      return parameters;
+    }
+    return inner;
+  }
+  return root;
+}
+
+}  // namespace
+
+CostmapParamsFile load_costmap_params(const std::string& path,
+                                      const costmap::CostmapParams& defaults,
+                                      const costmap::ObservationSource& source_defaults) {
+  const YAML::Node root = load_yaml_file(path);
+  model::Diagnostics diagnostics;
+  std::string block_path;
+  const YAML::Node block = parameter_block(root, block_path);
+  MapReader m(block, block_path, path, diagnostics, location_of(block, path));
+  if (!m.valid()) {
+    throw model::InputError(model::Diagnostic{
+        {path, 1, 1},
+        "(document)",
+        "is not a map",
+        "nav2 costmap parameters: local_costmap: local_costmap: ros__parameters: {...}"});
+  }
+  CostmapParamsFile file{defaults, {}, false};
+  costmap::CostmapParams& p = file.costmap;
+  read(m, "resolution", p.resolution, "a cell side in metres, > 0");
+  read(m, "width", p.size_x, "the window's side along x in metres, > 0");
+  read(m, "height", p.size_y, "the window's side along y in metres, > 0");
+  if (m.has("robot_radius")) {
+    read(m, "robot_radius", p.robot_radius, kMetres);
+    p.inflation.inscribed_radius = p.robot_radius;  // a round robot: nav2 does the same
+  }
+  m.require(!m.has("footprint"), "footprint", "is not supported yet",
+            "robot_radius (rigdesign's costmap takes a round footprint)");
+  if (m.has("plugins")) {
+    std::vector<std::string> plugins;
+    const YAML::Node list = m.node("plugins");
+    if (list.IsSequence()) {
+      for (const YAML::Node& item : list) plugins.push_back(item.as<std::string>(""));
+    } else {
+      m.require(false, "plugins", "is not a list", "e.g. [\"voxel_layer\", \"inflation_layer\"]");
+    }
+    const bool obstacle = listed(plugins, "obstacle_layer"), voxel = listed(plugins, "voxel_layer");
+    m.require(!(obstacle && voxel), "plugins", "lists both obstacle_layer and voxel_layer",
+              "one of obstacle_layer (2D) and voxel_layer (3D)");
+    if (obstacle) p.layer = costmap::ObstacleLayerKind::obstacle;
+    if (voxel) p.layer = costmap::ObstacleLayerKind::voxel;
+    p.use_hit_layer = listed(plugins, "hit_layer");
+  }
+  for (const auto& [key, voxel] : {std::pair{"obstacle_layer", false}, {"voxel_layer", true}}) {
+    if (auto layer = m.map(key, Need::optional)) {
+      read_obstacle_layer(*layer, voxel, source_defaults, file);
+    }
+  }
+  if (auto hit = m.map("hit_layer", Need::optional)) read_hit_layer(*hit, p.hit);
+  if (auto inflation = m.map("inflation_layer", Need::optional)) {
+    read_inflation_layer(*inflation, p.inflation);
+  }
+  ignore(m, kIgnoredCostmapKeys);
+  m.reject_unknown_keys();
+  diagnostics.throw_if_errors();
+  // The ranges and counts are checked in one place, the costmap's own check.
+  check_in_file_terms(p, block, block_path, path);
+  return file;
+}
+
+}  // namespace rigdesign::io
