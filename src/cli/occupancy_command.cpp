@@ -15,7 +15,9 @@
 #include "command.hpp"
 #include "inputs.hpp"
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/statistics.hpp"
 #include "rigdesign/occupancy/occupancy_evaluation.hpp"
 #include "rigdesign/occupancy/occupancy_sweep.hpp"
 #include "rigdesign/render/occupancy_pareto.hpp"
@@ -33,6 +35,7 @@ struct OccupancyOptions {
   double moving_until = 48.0;
   std::vector<double> voxels = occupancy::default_sweep_voxels();
   std::string persistence = "sweep";
+  std::string params;  // nav2 costmap parameter file
   int camera_stride = 1;
   std::uint64_t seed = 1;
   double robot_radius = 0.3;
@@ -42,11 +45,36 @@ struct OccupancyOptions {
   bool json = false;
 };
 
-std::vector<occupancy::PersistenceSetting> persistence_named(const std::string& name) {
+// "paper" runs the Hit Layer with `hit`: paper 1's values, or a parameter file's.
+std::vector<occupancy::PersistenceSetting> persistence_named(const std::string& name,
+                                                             const costmap::HitLayerParams& hit) {
   if (name == "none") return {occupancy::PersistenceSetting{}};
   if (name == "paper")
-    return {occupancy::PersistenceSetting{}, occupancy::PersistenceSetting{true, 3, 1500}};
+    return {occupancy::PersistenceSetting{},
+            occupancy::PersistenceSetting{true, hit.hit, hit.hit_max}};
   return occupancy::default_sweep_persistence();
+}
+
+// A nav2 parameter file over the mappers' settings: its Hit Layer, voxel column top, robot
+// radius and observation source. The mappers give every sensor one source, so the file's
+// sources must agree.
+void apply_params_file(const std::string& path, occupancy::VoxelMapperParams& base) {
+  costmap::CostmapParams defaults;
+  defaults.hit = base.hit;
+  defaults.voxel.z_max = base.z_max;
+  defaults.robot_radius = base.robot_radius;
+  const io::CostmapParamsFile file = io::load_costmap_params(path, defaults, base.source);
+  base.hit = file.costmap.hit;
+  base.z_max = file.costmap.voxel.z_max;
+  base.robot_radius = file.costmap.robot_radius;
+  if (file.sources.empty()) return;
+  for (const costmap::NamedObservationSource& named : file.sources) {
+    require_option(named.source == file.sources.front().source, "--params",
+                   path + ": observation source '" + named.name + "' differs from '" +
+                       file.sources.front().name + "'",
+                   "one setting for every sensor (the occupancy mappers share one source)");
+  }
+  base.source = file.sources.front().source;
 }
 
 std::string persistence_label(const occupancy::VoxelMapperParams& params) {
@@ -131,10 +159,10 @@ nlohmann::json phase_json(const occupancy::OccupancyPhase& phase) {
           {"master_ghost_area_m2", value(phase.master_ghost_area)},
           {"misses_never_seen", phase.never_seen},
           {"misses_seen_not_kept", phase.seen_not_kept},
-          {"mark_delay_median_s", value(occupancy::percentile_of(phase.mark_delays, 0.5))},
-          {"mark_delay_p95_s", value(occupancy::percentile_of(phase.mark_delays, 0.95))},
-          {"clear_delay_median_s", value(occupancy::percentile_of(phase.clear_delays, 0.5))},
-          {"clear_delay_p95_s", value(occupancy::percentile_of(phase.clear_delays, 0.95))},
+          {"mark_delay_median_s", value(model::median(phase.mark_delays))},
+          {"mark_delay_p95_s", value(model::percentile(phase.mark_delays, 0.95))},
+          {"clear_delay_median_s", value(model::median(phase.clear_delays))},
+          {"clear_delay_p95_s", value(model::percentile(phase.clear_delays, 0.95))},
           {"marks", phase.mark_delays.size()},
           {"clears", phase.clear_delays.size()},
           {"update_ms", value(phase.update_ms)},
@@ -175,9 +203,9 @@ void print_tables(const std::vector<occupancy::OccupancyRun>& runs,
     };
     cell.add_row({voxel, label, number(r.moving.ghost_area, 2), number(r.stationary.ghost_area, 2),
                   number(r.moving.trail_length_max, 2), number(r.stationary.trail_length_max, 2),
-                  number(occupancy::percentile_of(r.all.mark_delays, 0.5), 1),
-                  number(occupancy::percentile_of(r.moving.clear_delays, 0.5), 1),
-                  number(occupancy::percentile_of(r.stationary.clear_delays, 0.5), 1),
+                  number(model::median(r.all.mark_delays), 1),
+                  number(model::median(r.moving.clear_delays), 1),
+                  number(model::median(r.stationary.clear_delays), 1),
                   std::to_string(r.pending_changes), share(r.all.never_seen),
                   share(r.all.seen_not_kept), number(r.all.master.f2, 3),
                   number(r.all.master_ghost_area, 2), number(r.all.update_ms, 1),
@@ -218,8 +246,9 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
   // The whole cell is in reach: every ray clears and marks to its end, as OctoMap's do.
   base.source.obstacle_max_range = base.source.raytrace_max_range = 10.0;
   base.source.min_obstacle_height = options.min_height;
+  if (!options.params.empty()) apply_params_file(options.params, base);
   const std::vector<occupancy::PersistenceSetting> persistence =
-      persistence_named(options.persistence);
+      persistence_named(options.persistence, base.hit);
   const std::vector<occupancy::VoxelMapperParams> grid =
       occupancy::sweep_grid(options.voxels, persistence, base);
   const auto owned = occupancy::make_sweep_mappers(grid, model::SourceLocation{"(command line)"});
@@ -296,6 +325,9 @@ Command setup_occupancy(CLI::App& parent) {
   app->add_option("--persistence", options->persistence,
                   "Persistence settings: none, paper or sweep (default)")
       ->check(CLI::IsMember({"none", "paper", "sweep"}));
+  app->add_option("--params", options->params,
+                  "nav2 costmap parameter file: Hit Layer (for --persistence paper), voxel "
+                  "column, robot radius, observation source (docs/costmap.md)");
   app->add_option("--camera-stride", options->camera_stride,
                   "Keep every n-th camera pixel row and column (default 1)");
   app->add_option("--robot-radius", options->robot_radius,

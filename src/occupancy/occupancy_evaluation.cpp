@@ -99,14 +99,6 @@ void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*
 
 }  // namespace
 
-double percentile_of(std::vector<double> values, double p) {
-  if (values.empty()) return kNaN;
-  std::sort(values.begin(), values.end());
-  const double rank = std::ceil(p * static_cast<double>(values.size()));
-  const std::size_t index = static_cast<std::size_t>(std::max(1.0, rank)) - 1;
-  return values[std::min(index, values.size() - 1)];
-}
-
 std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                                              std::span<const CellSensor> sensors,
                                              std::span<OccupancyMapper* const> mappers,

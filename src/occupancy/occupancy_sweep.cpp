@@ -7,7 +7,12 @@ std::vector<double> default_sweep_voxels() {
 }
 
 std::vector<PersistenceSetting> default_sweep_persistence() {
-  return {{false, 0, 0}, {true, 1, 15}, {true, 3, 1500}, {true, 3, 30}, {true, 10, 1500}};
+  const costmap::HitLayerParams paper;
+  return {{false, 0, 0},
+          {true, 1, 15},
+          {true, paper.hit, paper.hit_max},
+          {true, paper.hit, 30},
+          {true, 10, paper.hit_max}};
 }
 
 std::vector<VoxelMapperParams> sweep_grid(std::span<const double> voxels,

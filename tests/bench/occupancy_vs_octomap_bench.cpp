@@ -211,7 +211,7 @@ int main(int argc, char** argv) {
   const std::vector<occupancy::PersistenceSetting> settings = {{false, 0, 0}};
   std::vector<occupancy::VoxelMapperParams> grid = occupancy::sweep_grid(voxels, settings, base);
   for (const occupancy::PersistenceSetting& hit :
-       {occupancy::PersistenceSetting{true, 3, 30}, occupancy::PersistenceSetting{true, 3, 1500}}) {
+       {occupancy::PersistenceSetting{true, 3, 30}, occupancy::PersistenceSetting{true}}) {
     const std::vector<occupancy::PersistenceSetting> one = {hit};
     const std::vector<double> tenth = {kResolution};
     for (const occupancy::VoxelMapperParams& params : occupancy::sweep_grid(tenth, one, base))

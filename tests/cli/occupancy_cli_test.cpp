@@ -69,3 +69,28 @@ TEST_CASE("occupancy rejects bad input with exit code 2", "[occupancy]") {
   CHECK(missing.exit_code == 2);
   CHECK(run_cli({"occupancy"}).exit_code == 2);  // --rig is required
 }
+
+TEST_CASE("occupancy --params: the file's Hit Layer is the one --persistence paper runs",
+          "[occupancy]") {
+  TempFolder folder;
+  const std::string params = folder.write("hit.yaml",
+                                          "hit_layer:\n"
+                                          "  hit: 2\n"
+                                          "  hit_max: 40\n");
+  const CliResult result = run_cli(
+      {"occupancy", "--rig", source_path("rigs/cell.yaml"), "--scene", "cell", "--duration",
+       "0.4", "--moving-until", "0.2", "--voxels", "0.2", "--persistence", "paper",
+       "--camera-stride", "8", "--params", params, "--json", "--out", folder.path() + "/occ"});
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  // The label names the counts the file gives, not paper 1's 3/1500.
+  CHECK(result.out.find("hit 2/40") != std::string::npos);
+  CHECK(result.out.find("hit 3/1500") == std::string::npos);
+
+  const std::string bad = folder.write("bad.yaml", "hit_layer:\n  hit: 2\n  hit_max: 1\n");
+  const CliResult refused = run_cli({"occupancy", "--rig", source_path("rigs/cell.yaml"),
+                                     "--persistence", "paper", "--params", bad});
+  CHECK(refused.exit_code == 2);
+  CHECK(refused.err.find(bad + ":3") != std::string::npos);
+  CHECK(refused.err.find("hit_layer.hit_max") != std::string::npos);
+}

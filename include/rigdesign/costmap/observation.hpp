@@ -22,6 +22,8 @@ struct ObservationSource {
   double min_obstacle_height = 0.05;
   double max_obstacle_height = 2.0;
 
+  bool operator==(const ObservationSource&) const = default;
+
   /// Whether a world-frame z lies in the [min, max]_obstacle_height band.
   bool in_height_band(double z_world) const {
     return z_world >= min_obstacle_height && z_world <= max_obstacle_height;

@@ -101,7 +101,4 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                                              std::span<OccupancyMapper* const> mappers,
                                              const OccupancyEvalParams& params);
 
-/// Median (p = 0.5) or any percentile by the nearest-rank rule; NaN for no values.
-double percentile_of(std::vector<double> values, double p);
-
 }  // namespace rigdesign::occupancy

@@ -16,8 +16,8 @@ namespace rigdesign::occupancy {
 /// hit x n updates after the last sighting, capped at hit_max, while the robot moves).
 struct PersistenceSetting {
   bool enabled = false;
-  int hit = 3;
-  int hit_max = 1500;
+  int hit = costmap::HitLayerParams{}.hit;  ///< paper 1's values by default (costmap's params)
+  int hit_max = costmap::HitLayerParams{}.hit_max;
 };
 
 /// Issue 6's defaults: 0.05, 0.1, 0.15 and 0.2 m.
