@@ -49,11 +49,11 @@ struct Variant {
   costmap::ObstacleLayerKind layer = costmap::ObstacleLayerKind::obstacle;
   bool hit_layer = true;
   std::string name() const {
-    return std::string(layer == costmap::ObstacleLayerKind::obstacle ? "obstacle" : "voxel") +
+    return std::string(model::name_in(costmap::kObstacleLayerNames, layer)) +
            (hit_layer ? "_hit" : "_no_hit");
   }
   std::string label() const {
-    return std::string(layer == costmap::ObstacleLayerKind::obstacle ? "obstacle" : "voxel") +
+    return std::string(model::name_in(costmap::kObstacleLayerNames, layer)) +
            (hit_layer ? " + Hit Layer" : ", no Hit Layer");
   }
 };
@@ -100,7 +100,7 @@ nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig
       {"rig", rig.name},
       {"scenario", options.scenario},
       {"seed", options.seed},
-      {"layer", run.variant.layer == costmap::ObstacleLayerKind::obstacle ? "obstacle" : "voxel"},
+      {"layer", std::string(model::name_in(costmap::kObstacleLayerNames, run.variant.layer))},
       {"hit_layer", run.variant.hit_layer},
       {"hit", params.costmap.hit.hit},
       {"hit_max", params.costmap.hit.hit_max},
@@ -263,7 +263,8 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
   require_option(std::find(names.begin(), names.end(), options.scenario) != names.end(),
                  "--scenario", "unknown scenario '" + options.scenario + "'",
                  "one of: " + joined(names));
-  require_option(options.layer.empty() || options.layer == "obstacle" || options.layer == "voxel",
+  require_option(options.layer.empty() ||
+                     model::value_in(costmap::kObstacleLayerNames, options.layer).has_value(),
                  "--layer", "unknown layer '" + options.layer + "'", "obstacle or voxel");
   require_option(!options.resolution || *options.resolution > 0.0, "--resolution",
                  "must be positive", "a cell side > 0 [m]");
@@ -305,10 +306,8 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
       for (bool hit : {false, true}) variants.push_back({layer, hit});
     }
   } else {
-    const costmap::ObstacleLayerKind layer = options.layer.empty() ? params.costmap.layer
-                                             : options.layer == "voxel"
-                                                 ? costmap::ObstacleLayerKind::voxel
-                                                 : costmap::ObstacleLayerKind::obstacle;
+    const costmap::ObstacleLayerKind layer =
+        model::value_in(costmap::kObstacleLayerNames, options.layer).value_or(params.costmap.layer);
     variants.push_back({layer, params.costmap.use_hit_layer && !options.no_hit_layer});
   }
   std::vector<VariantRun> runs;

@@ -77,12 +77,6 @@ void apply_params_file(const std::string& path, occupancy::VoxelMapperParams& ba
   base.source = file.sources.front().source;
 }
 
-std::string persistence_label(const occupancy::VoxelMapperParams& params) {
-  return params.persistence
-             ? "hit " + std::to_string(params.hit.hit) + "/" + std::to_string(params.hit.hit_max)
-             : "none";
-}
-
 std::string number(double value, int decimals) {
   return std::isnan(value) ? "-" : fixed(value, decimals);
 }
@@ -188,7 +182,8 @@ void print_tables(const std::vector<occupancy::OccupancyRun>& runs,
   }
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const occupancy::OccupancyRun& r = runs[i];
-    const std::string voxel = fixed(grid[i].voxel, 2), label = persistence_label(grid[i]);
+    const std::string voxel = fixed(grid[i].voxel, 2),
+                      label = occupancy::persistence_label(grid[i]);
     scores.add_row({voxel, label, number(r.all.object.precision, 3), number(r.all.object.recall, 3),
                     number(r.all.object.f1, 3), number(r.all.object.f2, 3),
                     number(r.all.object.f3, 3), number(r.moving.object.precision, 3),
@@ -226,12 +221,8 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
   require_option(!scene.moving.empty(), "--scene",
                  "'" + options.scene + "' has no moving object to score",
                  "cell (the scene with a moving person)");
-  // The cell's sensors are fixed: the rig's robot frame is the cell (world) frame.
-  std::vector<occupancy::CellSensor> sensors;
-  for (const model::Mount& mount : inputs.rig.mounts) {
-    sensors.push_back({mount.id, *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id),
-                       mount.T_robot_sensor});
-  }
+  const std::vector<occupancy::CellSensor> sensors =
+      occupancy::cell_sensors(inputs.rig, inputs.library);
   occupancy::OccupancyEvalParams params;
   params.rate = options.rate;
   params.duration = options.duration;
@@ -265,11 +256,12 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
                            {"moving_until_s", options.moving_until},
                            {"runs", nlohmann::json::array()}};
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    points.push_back({model::format_number(grid[i].voxel, 3) + " m, " + persistence_label(grid[i]),
-                      runs[i].all.object.f2, runs[i].all.ghost_area, runs[i].all.update_ms});
+    points.push_back(
+        {model::format_number(grid[i].voxel, 3) + " m, " + occupancy::persistence_label(grid[i]),
+         runs[i].all.object.f2, runs[i].all.ghost_area, runs[i].all.update_ms});
     report["runs"].push_back({{"mapper", runs[i].mapper},
                               {"voxel_m", grid[i].voxel},
-                              {"persistence", persistence_label(grid[i])},
+                              {"persistence", occupancy::persistence_label(grid[i])},
                               {"all", phase_json(runs[i].all)},
                               {"moving", phase_json(runs[i].moving)},
                               {"stationary", phase_json(runs[i].stationary)},

@@ -3,6 +3,49 @@
 #include <chrono>
 
 namespace rigdesign::filters {
+namespace {
+
+// The RANSAC plane's inliers removed, whatever its tilt.
+model::PointCloud remove_plane(const model::PointCloud& cloud,
+                               const model::RemovePlaneParams& params) {
+  const PlaneFit plane = fit_plane_ransac(cloud, params.ransac);
+  model::PointCloud rest = cloud;
+  if (!plane.found) return rest;
+  std::vector<bool> inlier(cloud.size(), false);
+  for (const std::uint32_t i : plane.inliers) inlier[i] = true;
+  rest.points.clear();
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!inlier[i]) rest.points.push_back(cloud.points[i]);
+  }
+  return rest;
+}
+
+// The stage registry's run functions, one per alternative of model::StageParams: a stage
+// without one fails to compile in run_stage.
+model::PointCloud run(const model::VoxelGridParams& params, const model::PointCloud& cloud) {
+  return voxel_grid(cloud, params);
+}
+model::PointCloud run(const model::StatisticalOutlierParams& params,
+                      const model::PointCloud& cloud) {
+  return statistical_outlier_removal(cloud, params);
+}
+model::PointCloud run(const model::PassThroughParams& params, const model::PointCloud& cloud) {
+  return pass_through(cloud, params);
+}
+model::PointCloud run(const model::RemovePlaneParams& params, const model::PointCloud& cloud) {
+  return remove_plane(cloud, params);
+}
+model::PointCloud run(const model::FloorRemoval1Params& params, const model::PointCloud& cloud) {
+  return remove_floor_1(cloud, params);
+}
+model::PointCloud run(const model::FloorRemoval2Params& params, const model::PointCloud& cloud) {
+  return remove_floor_2(cloud, params);
+}
+model::PointCloud run(const model::NegativeObstacleParams& params, const model::PointCloud& cloud) {
+  return mark_negative_obstacles(cloud, params);
+}
+
+}  // namespace
 
 std::optional<model::Pipeline> preset_pipeline(const std::string& name) {
   const model::StageParams voxel = model::VoxelGridParams{};
@@ -17,37 +60,7 @@ std::optional<model::Pipeline> preset_pipeline(const std::string& name) {
 }
 
 model::PointCloud run_stage(const model::StageParams& stage, const model::PointCloud& cloud) {
-  return std::visit(
-      [&](const auto& params) -> model::PointCloud {
-        using Params = std::decay_t<decltype(params)>;
-        if constexpr (std::is_same_v<Params, model::VoxelGridParams>)
-          return voxel_grid(cloud, params);
-        if constexpr (std::is_same_v<Params, model::StatisticalOutlierParams>) {
-          return statistical_outlier_removal(cloud, params);
-        }
-        if constexpr (std::is_same_v<Params, model::PassThroughParams>)
-          return pass_through(cloud, params);
-        if constexpr (std::is_same_v<Params, model::RemovePlaneParams>) {
-          const PlaneFit plane = fit_plane_ransac(cloud, params.ransac);
-          model::PointCloud rest = cloud;
-          if (!plane.found) return rest;
-          std::vector<bool> inlier(cloud.size(), false);
-          for (const std::uint32_t i : plane.inliers) inlier[i] = true;
-          rest.points.clear();
-          for (std::size_t i = 0; i < cloud.size(); ++i) {
-            if (!inlier[i]) rest.points.push_back(cloud.points[i]);
-          }
-          return rest;
-        }
-        if constexpr (std::is_same_v<Params, model::FloorRemoval1Params>)
-          return remove_floor_1(cloud, params);
-        if constexpr (std::is_same_v<Params, model::FloorRemoval2Params>)
-          return remove_floor_2(cloud, params);
-        if constexpr (std::is_same_v<Params, model::NegativeObstacleParams>) {
-          return mark_negative_obstacles(cloud, params);
-        }
-      },
-      stage);
+  return std::visit([&](const auto& params) { return run(params, cloud); }, stage);
 }
 
 model::PointCloud run_pipeline(const model::Pipeline& pipeline, const model::PointCloud& input,

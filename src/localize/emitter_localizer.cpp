@@ -5,20 +5,11 @@
 namespace rigdesign::localize {
 
 std::string to_string(LocalizeMethod method) {
-  switch (method) {
-    case LocalizeMethod::wls: return "wls";
-    case LocalizeMethod::nls: return "nls";
-    case LocalizeMethod::map: return "map";
-  }
-  return "?";
+  return std::string(model::name_in(kLocalizeMethodNames, method));
 }
 
 std::optional<LocalizeMethod> parse_localize_method(const std::string& name) {
-  for (const LocalizeMethod method :
-       {LocalizeMethod::wls, LocalizeMethod::nls, LocalizeMethod::map}) {
-    if (to_string(method) == name) return method;
-  }
-  return std::nullopt;
+  return model::value_in(kLocalizeMethodNames, name);
 }
 
 EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod method,

@@ -3,14 +3,12 @@
 namespace rigdesign::model {
 
 const std::vector<std::string>& stage_names() {
-  static const std::vector<std::string> names = {
-      "voxel_grid",      "statistical_outlier", "pass_through",      "ransac_plane",
-      "floor_removal_1", "floor_removal_2",     "negative_obstacles"};
+  static const std::vector<std::string> names(kStageNames.begin(), kStageNames.end());
   return names;
 }
 
 std::string stage_name(const StageParams& params) {
-  return stage_names()[params.index()];
+  return std::visit([](const auto& stage) { return std::string(stage.kName); }, params);
 }
 
 }  // namespace rigdesign::model

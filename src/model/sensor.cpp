@@ -34,44 +34,19 @@ const Sensor* SensorLibrary::find(const std::string& sensor_id) const {
 }
 
 std::string to_string(Technology technology) {
-  switch (technology) {
-    case Technology::tof: return "tof";
-    case Technology::structured_light: return "structured_light";
-    case Technology::active_stereo: return "active_stereo";
-    case Technology::passive_stereo: return "passive_stereo";
-    case Technology::lidar_3d_spinning: return "lidar_3d_spinning";
-    case Technology::lidar_2d: return "lidar_2d";
-    case Technology::solid_state_lidar: return "solid_state_lidar";
-  }
-  return "?";
+  return std::string(name_in(kTechnologyNames, technology));
 }
 
 std::string to_string(FovShape shape) {
-  switch (shape) {
-    case FovShape::pyramid: return "pyramid";
-    case FovShape::cone: return "cone";
-    case FovShape::band: return "band";
-    case FovShape::planar: return "planar";
-  }
-  return "?";
+  return std::string(name_in(kFovShapeNames, shape));
 }
 
 std::string to_string(LightCondition condition) {
-  switch (condition) {
-    case LightCondition::dark: return "dark";
-    case LightCondition::indoor: return "indoor";
-    case LightCondition::sunlight: return "sunlight";
-  }
-  return "?";
+  return std::string(name_in(kLightConditionNames, condition));
 }
 
 std::string to_string(Basis basis) {
-  switch (basis) {
-    case Basis::datasheet: return "datasheet";
-    case Basis::measured: return "measured";
-    case Basis::estimate: return "estimate";
-  }
-  return "?";
+  return std::string(name_in(kBasisNames, basis));
 }
 
 }  // namespace rigdesign::model

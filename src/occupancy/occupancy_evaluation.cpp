@@ -99,6 +99,15 @@ void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*
 
 }  // namespace
 
+std::vector<CellSensor> cell_sensors(const model::Rig& rig, const model::SensorLibrary& library) {
+  std::vector<CellSensor> sensors;
+  for (const model::Mount& mount : rig.mounts) {
+    sensors.push_back(
+        {mount.id, *library.find(mount.sensor_id)->find_mode(mount.mode_id), mount.T_robot_sensor});
+  }
+  return sensors;
+}
+
 std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                                              std::span<const CellSensor> sensors,
                                              std::span<OccupancyMapper* const> mappers,

@@ -38,10 +38,7 @@ class VoxelMapper final : public OccupancyMapper {
 
   std::string name() const override {
     std::string name = "voxel " + model::format_number(params_.voxel, 3) + " m";
-    if (params_.persistence) {
-      name +=
-          ", hit " + std::to_string(params_.hit.hit) + "/" + std::to_string(params_.hit.hit_max);
-    }
+    if (params_.persistence) name += ", " + persistence_label(params_);
     return name;
   }
 
@@ -121,6 +118,12 @@ costmap::GridWindow centred_window(double size, double resolution) {
 std::unique_ptr<OccupancyMapper> make_voxel_mapper(const VoxelMapperParams& params,
                                                    const model::SourceLocation& where) {
   return std::make_unique<VoxelMapper>(params, where);
+}
+
+std::string persistence_label(const VoxelMapperParams& params) {
+  return params.persistence
+             ? "hit " + std::to_string(params.hit.hit) + "/" + std::to_string(params.hit.hit_max)
+             : "none";
 }
 
 }  // namespace rigdesign::occupancy

@@ -5,8 +5,7 @@
 namespace rigdesign::sim {
 
 model::SensorMode decimated_mode(model::SensorMode mode, int camera_stride, int lidar_stride) {
-  const bool camera =
-      mode.fov.shape == model::FovShape::pyramid || mode.fov.shape == model::FovShape::cone;
+  const bool camera = mode.is_camera();
   const int stride = std::max(1, camera ? camera_stride : lidar_stride);
   if (stride == 1) return mode;
   mode.angular_resolution_h *= stride;

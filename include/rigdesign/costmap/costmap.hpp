@@ -12,11 +12,18 @@
 #include "rigdesign/costmap/obstacle_layer.hpp"
 #include "rigdesign/costmap/rolling_grid.hpp"
 #include "rigdesign/costmap/voxel_layer.hpp"
+#include "rigdesign/model/name_table.hpp"
 #include "rigdesign/model/source_location.hpp"
 
 namespace rigdesign::costmap {
 
 enum class ObstacleLayerKind { obstacle, voxel };
+inline constexpr model::NameTable<ObstacleLayerKind, 2> kObstacleLayerNames = {{
+    {ObstacleLayerKind::obstacle, "obstacle"},
+    {ObstacleLayerKind::voxel, "voxel"},
+}};
+static_assert(model::covers_in_order(kObstacleLayerNames) &&
+              kObstacleLayerNames.size() == static_cast<std::size_t>(ObstacleLayerKind::voxel) + 1);
 
 struct CostmapParams {
   double resolution = 0.05;  ///< [m] cell side (nav2 local costmap)

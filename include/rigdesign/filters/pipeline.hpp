@@ -30,6 +30,7 @@ struct StageRun {
 model::PointCloud run_pipeline(const model::Pipeline& pipeline, const model::PointCloud& input,
                                std::vector<StageRun>* runs = nullptr);
 
+/// One stage, run by its entry in the stage registry (model/filter_params.hpp).
 model::PointCloud run_stage(const model::StageParams& stage, const model::PointCloud& cloud);
 
 }  // namespace rigdesign::filters

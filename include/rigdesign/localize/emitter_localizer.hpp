@@ -13,10 +13,18 @@
 #include "rigdesign/localize/path_loss.hpp"
 #include "rigdesign/localize/range_fit.hpp"
 #include "rigdesign/localize/rssi_log.hpp"
+#include "rigdesign/model/name_table.hpp"
 
 namespace rigdesign::localize {
 
 enum class LocalizeMethod { wls, nls, map };
+inline constexpr model::NameTable<LocalizeMethod, 3> kLocalizeMethodNames = {{
+    {LocalizeMethod::wls, "wls"},
+    {LocalizeMethod::nls, "nls"},
+    {LocalizeMethod::map, "map"},
+}};
+static_assert(model::covers_in_order(kLocalizeMethodNames) &&
+              kLocalizeMethodNames.size() == static_cast<std::size_t>(LocalizeMethod::map) + 1);
 
 std::string to_string(LocalizeMethod method);
 /// "wls", "nls" or "map".

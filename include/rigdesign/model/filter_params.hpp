@@ -1,16 +1,25 @@
 #pragma once
 /// Parameters of the point-cloud filter stages, with the papers' defaults (DESIGN.md
 /// section 6). Plain data: io loads them from YAML, filters run them.
+///
+/// The stage registry, in the style of PDAL's named stages: a stage is its params struct (with
+/// its registered name, kName) in StageParams, one `run` overload in filters/pipeline.cpp and
+/// one reader in io/config/pipeline_loader.cpp. Every list of names is derived from
+/// StageParams, and a stage without its run function or reader fails to compile.
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
 namespace rigdesign::model {
 
 struct VoxelGridParams {
+  static constexpr std::string_view kName = "voxel_grid";  ///< its name in pipelines
   double leaf = 0.03;  ///< [m] voxel edge (paper 1: V1 = 3 cm); > 0
   /// [m] voxel boundaries lie at grid_offset + k * leaf on each axis. 0 is PCL's alignment,
   /// which puts the floor plane z = 0 exactly on a boundary, so sensor noise splits floor
@@ -19,15 +28,17 @@ struct VoxelGridParams {
 };
 
 struct PassThroughParams {
-  int axis = 2;           ///< 0 = x, 1 = y, 2 = z
-  double min = -0.10;     ///< [m] A
-  double max = 0.10;      ///< [m] B
-  bool negative = false;  ///< keep what is outside instead
+  static constexpr std::string_view kName = "pass_through";  ///< its name in pipelines
+  int axis = 2;                                              ///< 0 = x, 1 = y, 2 = z
+  double min = -0.10;                                        ///< [m] A
+  double max = 0.10;                                         ///< [m] B
+  bool negative = false;                                     ///< keep what is outside instead
 };
 
 struct StatisticalOutlierParams {
-  int neighbours = 10;          ///< N; > 0
-  double std_multiplier = 1.0;  ///< M
+  static constexpr std::string_view kName = "statistical_outlier";  ///< its name in pipelines
+  int neighbours = 10;                                              ///< N; > 0
+  double std_multiplier = 1.0;                                      ///< M
   /// [m] grid cell of the neighbour search; 0 picks one from the cloud (about N points per
   /// occupied cell). Only speed depends on it, never the result.
   double cell = 0.0;
@@ -48,7 +59,8 @@ struct RansacPlaneParams {
 /// Floor removal 1: a pass-through slice around the floor, a RANSAC plane on the slice,
 /// its inliers removed from the cloud.
 struct FloorRemoval1Params {
-  PassThroughParams slice;  ///< z in [-10, 10] cm
+  static constexpr std::string_view kName = "floor_removal_1";  ///< its name in pipelines
+  PassThroughParams slice;                                      ///< z in [-10, 10] cm
   RansacPlaneParams ransac;
 };
 
@@ -56,7 +68,8 @@ struct FloorRemoval1Params {
 /// within T of it removed. The plane must be near-horizontal (RANSAC ignores hypotheses
 /// tilted more than `ransac.max_tilt`, 15 degrees by default) so a wall cannot win.
 struct FloorRemoval2Params {
-  double coarse_leaf = 0.30;  ///< V2 [m]
+  static constexpr std::string_view kName = "floor_removal_2";  ///< its name in pipelines
+  double coarse_leaf = 0.30;                                    ///< V2 [m]
   /// All I hypotheses (confidence 1): the 30 cm copy holds a few hundred points, so the early
   /// stop would save little and the plane it keeps could differ more from PCL's.
   RansacPlaneParams ransac{100, 0.03, 1, 1.0, 0.2617993877991494};
@@ -67,12 +80,14 @@ struct FloorRemoval2Params {
 /// from the sensor origin O to the point crosses the floor:
 /// P'' = (o_x + (x - o_x) s, o_y + (y - o_y) s, virtual_height), s = o_z / (o_z - z).
 struct NegativeObstacleParams {
-  double below = -0.02;          ///< [m]
-  double virtual_height = 0.10;  ///< [m]
+  static constexpr std::string_view kName = "negative_obstacles";  ///< its name in pipelines
+  double below = -0.02;                                            ///< [m]
+  double virtual_height = 0.10;                                    ///< [m]
 };
 
 /// A RANSAC plane whose inliers are removed (the dominant plane, whatever its tilt).
 struct RemovePlaneParams {
+  static constexpr std::string_view kName = "ransac_plane";  ///< its name in pipelines
   RansacPlaneParams ransac;
 };
 
@@ -85,8 +100,27 @@ struct Pipeline {
   std::vector<StageParams> stages;
 };
 
-/// Registered stage names, in StageParams' order: "voxel_grid", "statistical_outlier",
-/// "pass_through", "ransac_plane", "floor_removal_1", "floor_removal_2", "negative_obstacles".
+namespace detail {
+template <typename Stages>
+struct StageNameList;
+template <typename... Stages>
+struct StageNameList<std::variant<Stages...>> {
+  static constexpr std::array<std::string_view, sizeof...(Stages)> names{Stages::kName...};
+};
+constexpr bool all_distinct(std::span<const std::string_view> names) {
+  for (std::size_t i = 0; i < names.size(); ++i)
+    for (std::size_t j = i + 1; j < names.size(); ++j)
+      if (names[i] == names[j]) return false;
+  return true;
+}
+}  // namespace detail
+
+/// Registered stage names, in StageParams' order.
+inline constexpr auto kStageNames = detail::StageNameList<StageParams>::names;
+static_assert(detail::all_distinct(kStageNames), "two stages registered under one name");
+
+/// kStageNames as strings, for messages: "voxel_grid", "statistical_outlier", "pass_through",
+/// "ransac_plane", "floor_removal_1", "floor_removal_2", "negative_obstacles".
 const std::vector<std::string>& stage_names();
 std::string stage_name(const StageParams& params);
 

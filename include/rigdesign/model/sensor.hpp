@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/model/name_table.hpp"
 #include "rigdesign/model/source_location.hpp"
 
 namespace rigdesign::model {
@@ -19,6 +20,18 @@ enum class Technology {
   lidar_2d,
   solid_state_lidar,
 };
+inline constexpr NameTable<Technology, 7> kTechnologyNames = {{
+    {Technology::tof, "tof"},
+    {Technology::structured_light, "structured_light"},
+    {Technology::active_stereo, "active_stereo"},
+    {Technology::passive_stereo, "passive_stereo"},
+    {Technology::lidar_3d_spinning, "lidar_3d_spinning"},
+    {Technology::lidar_2d, "lidar_2d"},
+    {Technology::solid_state_lidar, "solid_state_lidar"},
+}};
+static_assert(covers_in_order(kTechnologyNames) &&
+              kTechnologyNames.size() ==
+                  static_cast<std::size_t>(Technology::solid_state_lidar) + 1);
 
 enum class FovShape {
   pyramid,  ///< camera frustum: `horizontal` x `vertical` full angles about the x axis
@@ -26,6 +39,20 @@ enum class FovShape {
   band,  ///< spinning lidar: azimuth span `horizontal`, elevation in [elevation_min, elevation_max]
   planar,  ///< 2D scanner: aperture `horizontal`, a wedge `vertical` thick (beam divergence)
 };
+inline constexpr NameTable<FovShape, 4> kFovShapeNames = {{
+    {FovShape::pyramid, "pyramid"},
+    {FovShape::cone, "cone"},
+    {FovShape::band, "band"},
+    {FovShape::planar, "planar"},
+}};
+static_assert(covers_in_order(kFovShapeNames) &&
+              kFovShapeNames.size() == static_cast<std::size_t>(FovShape::planar) + 1);
+
+/// Cameras (a frustum or a cone of pixels) as opposed to scanning lidars: their rays form an
+/// image grid, which decides how they are decimated and drawn.
+constexpr bool is_camera(FovShape shape) {
+  return shape == FovShape::pyramid || shape == FovShape::cone;
+}
 
 /// Field of view in the sensor frame (x forward along the optical axis, y left, z up).
 struct FieldOfView {
@@ -38,6 +65,14 @@ struct FieldOfView {
 
 /// Lighting conditions of requirement R8, in a fixed order for tables.
 enum class LightCondition { dark, indoor, sunlight };
+inline constexpr NameTable<LightCondition, 3> kLightConditionNames = {{
+    {LightCondition::dark, "dark"},
+    {LightCondition::indoor, "indoor"},
+    {LightCondition::sunlight, "sunlight"},
+}};
+static_assert(covers_in_order(kLightConditionNames) &&
+              kLightConditionNames.size() ==
+                  static_cast<std::size_t>(LightCondition::sunlight) + 1);
 inline constexpr std::array<LightCondition, 3> kLightConditions = {
     LightCondition::dark, LightCondition::indoor, LightCondition::sunlight};
 
@@ -60,6 +95,13 @@ struct NoiseModel {
 
 /// How a number was obtained, so estimates are never mistaken for datasheet values.
 enum class Basis { datasheet, measured, estimate };
+inline constexpr NameTable<Basis, 3> kBasisNames = {{
+    {Basis::datasheet, "datasheet"},
+    {Basis::measured, "measured"},
+    {Basis::estimate, "estimate"},
+}};
+static_assert(covers_in_order(kBasisNames) &&
+              kBasisNames.size() == static_cast<std::size_t>(Basis::estimate) + 1);
 
 /// Driver CPU load U_p of one running sensor (paper 1, eq. 5), in core-equivalents of the
 /// reference machine named in sensors.yaml: a fixed part plus a cost per delivered point,
@@ -92,6 +134,8 @@ struct SensorMode {
 
   /// The coarser of the two ray spacings [rad]: what sets the smallest obstacle seen.
   double worst_angular_resolution() const;
+  /// A camera mode (model::is_camera of its FOV shape).
+  bool is_camera() const { return model::is_camera(fov.shape); }
 };
 
 struct Price {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/scene.hpp"
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/occupancy/occupancy_scores.hpp"
@@ -26,6 +27,10 @@ struct CellSensor {
   model::SensorMode mode;
   model::Pose3 T_world_sensor = model::Pose3::Identity();
 };
+
+/// The rig's mounts as cell sensors: the cell's sensors are fixed, so the rig's robot frame
+/// is the cell (world) frame. Every mount's sensor and mode must be in `library`.
+std::vector<CellSensor> cell_sensors(const model::Rig& rig, const model::SensorLibrary& library);
 
 struct OccupancyEvalParams {
   double rate = 5.0;       ///< [Hz] frames per second; every sensor records each frame

@@ -47,6 +47,9 @@ struct VoxelMapperParams {
   costmap::ObservationSource source;  ///< per-sensor flags and ranges (same for every sensor)
 };
 
+/// "none", or "hit H/M" with the Hit Layer's counts: how reports name a persistence setting.
+std::string persistence_label(const VoxelMapperParams& params);
+
 /// Throws InputError (at `where`, fields prefixed "voxel", "hit.") through
 /// check_costmap_params when the parameters cannot make a costmap.
 std::unique_ptr<OccupancyMapper> make_voxel_mapper(const VoxelMapperParams& params,

@@ -46,8 +46,7 @@ std::optional<double> share(MapReader& reader, const std::string& key, Need need
 }
 
 model::Basis basis(MapReader& reader, Need need) {
-  const auto index = reader.choice("basis", need, {"datasheet", "measured", "estimate"});
-  return index ? static_cast<model::Basis>(*index) : model::Basis::estimate;
+  return named_value(reader, "basis", need, model::kBasisNames).value_or(model::Basis::estimate);
 }
 
 }  // namespace rigdesign::io

@@ -26,4 +26,12 @@ std::optional<double> share(MapReader& reader, const std::string& key, Need need
 /// `basis: datasheet | measured | estimate`.
 model::Basis basis(MapReader& reader, Need need);
 
+/// A scalar that must be one of `table`'s names; its value.
+template <typename Enum, std::size_t N>
+std::optional<Enum> named_value(MapReader& reader, const std::string& key, Need need,
+                                const model::NameTable<Enum, N>& table) {
+  const auto index = reader.choice(key, need, model::names_of(table));
+  return index ? std::optional<Enum>(table[*index].first) : std::nullopt;
+}
+
 }  // namespace rigdesign::io

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <type_traits>
+#include <variant>
 
 #include "io/config/field_checks.hpp"
 #include "io/config/yaml_reader.hpp"
+#include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::io {
@@ -57,55 +61,68 @@ model::PassThroughParams read_pass_through(MapReader& m) {
   return params;
 }
 
-model::StageParams read_stage(MapReader& m, std::size_t index) {
-  switch (index) {
-    case 0: {
-      model::VoxelGridParams params;
-      read_positive(m, "leaf", params.leaf, "the voxel size in metres, > 0");
-      if (const auto offset =
-              m.numbers("grid_offset", Need::optional, 3, 3, "[x, y, z] in metres")) {
-        params.grid_offset = Eigen::Vector3d((*offset)[0], (*offset)[1], (*offset)[2]);
-      }
-      m.reject_unknown_keys();
-      return params;
-    }
-    case 1: {
-      model::StatisticalOutlierParams params;
-      if (const auto k = m.integer("neighbours", Need::optional, "a neighbour count N, > 0")) {
-        m.require(*k > 0, "neighbours", "must be > 0", "a neighbour count N, > 0");
-        params.neighbours = *k;
-      }
-      read(m, "std_multiplier", params.std_multiplier, "M, a number of standard deviations");
-      read_positive(m, "cell", params.cell, "the neighbour grid cell in metres, > 0");
-      m.reject_unknown_keys();
-      return params;
-    }
-    case 2: return read_pass_through(m);
-    case 3: return model::RemovePlaneParams{read_ransac(m, {})};
-    case 4: {
-      model::FloorRemoval1Params params;
-      if (auto slice = m.map("slice", Need::optional)) params.slice = read_pass_through(*slice);
-      if (auto ransac = m.map("ransac", Need::optional))
-        params.ransac = read_ransac(*ransac, params.ransac);
-      m.reject_unknown_keys();
-      return params;
-    }
-    case 5: {
-      model::FloorRemoval2Params params;
-      read_positive(m, "coarse_leaf", params.coarse_leaf, "V2 in metres, > 0");
-      if (auto ransac = m.map("ransac", Need::optional))
-        params.ransac = read_ransac(*ransac, params.ransac);
-      m.reject_unknown_keys();
-      return params;
-    }
-    default: {
-      model::NegativeObstacleParams params;
-      read(m, "below", params.below, "metres (negative: below the floor)");
-      read(m, "virtual_height", params.virtual_height, "metres");
-      m.reject_unknown_keys();
-      return params;
-    }
+// The stage registry's readers, one per alternative of model::StageParams: each fills its
+// stage's parameters from the stage's map and rejects other keys.
+void read_stage_fields(MapReader& m, model::VoxelGridParams& params) {
+  read_positive(m, "leaf", params.leaf, "the voxel size in metres, > 0");
+  if (const auto offset = m.numbers("grid_offset", Need::optional, 3, 3, "[x, y, z] in metres")) {
+    params.grid_offset = Eigen::Vector3d((*offset)[0], (*offset)[1], (*offset)[2]);
   }
+  m.reject_unknown_keys();
+}
+
+void read_stage_fields(MapReader& m, model::StatisticalOutlierParams& params) {
+  if (const auto k = m.integer("neighbours", Need::optional, "a neighbour count N, > 0")) {
+    m.require(*k > 0, "neighbours", "must be > 0", "a neighbour count N, > 0");
+    params.neighbours = *k;
+  }
+  read(m, "std_multiplier", params.std_multiplier, "M, a number of standard deviations");
+  read_positive(m, "cell", params.cell, "the neighbour grid cell in metres, > 0");
+  m.reject_unknown_keys();
+}
+
+void read_stage_fields(MapReader& m, model::PassThroughParams& params) {
+  params = read_pass_through(m);
+}
+
+void read_stage_fields(MapReader& m, model::RemovePlaneParams& params) {
+  params.ransac = read_ransac(m, params.ransac);
+}
+
+void read_stage_fields(MapReader& m, model::FloorRemoval1Params& params) {
+  if (auto slice = m.map("slice", Need::optional)) params.slice = read_pass_through(*slice);
+  if (auto ransac = m.map("ransac", Need::optional))
+    params.ransac = read_ransac(*ransac, params.ransac);
+  m.reject_unknown_keys();
+}
+
+void read_stage_fields(MapReader& m, model::FloorRemoval2Params& params) {
+  read_positive(m, "coarse_leaf", params.coarse_leaf, "V2 in metres, > 0");
+  if (auto ransac = m.map("ransac", Need::optional))
+    params.ransac = read_ransac(*ransac, params.ransac);
+  m.reject_unknown_keys();
+}
+
+void read_stage_fields(MapReader& m, model::NegativeObstacleParams& params) {
+  read(m, "below", params.below, "metres (negative: below the floor)");
+  read(m, "virtual_height", params.virtual_height, "metres");
+  m.reject_unknown_keys();
+}
+
+// The stage registered as `name`, its parameters read from `m`; nothing for another name. A
+// stage without a read_stage_fields overload fails to compile here.
+template <typename... Stages>
+std::optional<model::StageParams> read_named_stage(const std::string& name, MapReader& m,
+                                                   std::type_identity<std::variant<Stages...>>) {
+  std::optional<model::StageParams> stage;
+  const auto read_if_named = [&]<typename Stage>(std::type_identity<Stage>) {
+    if (stage || name != Stage::kName) return;
+    Stage params;
+    read_stage_fields(m, params);
+    stage = params;
+  };
+  (read_if_named(std::type_identity<Stages>{}), ...);
+  return stage;
 }
 
 }  // namespace
@@ -131,17 +148,13 @@ model::Pipeline load_pipeline(const std::string& path) {
       const std::string name = stage.IsMap() && stage.size() == 1 ? stage.begin()->first.Scalar()
                                : stage.IsScalar()                 ? stage.Scalar()
                                                                   : "";
-      const auto& names = model::stage_names();
-      const auto known = std::find(names.begin(), names.end(), name);
-      if (known == names.end()) {
-        std::string list;
-        for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      if (std::find(model::kStageNames.begin(), model::kStageNames.end(), name) ==
+          model::kStageNames.end()) {
         diagnostics.error(io::location_of(stage, path), field,
                           name.empty() ? "is not a stage" : "unknown stage '" + name + "'",
-                          "a map with one stage name: " + list);
+                          "a map with one stage name: " + model::join(model::stage_names()));
         continue;
       }
-      const std::size_t index = static_cast<std::size_t>(known - names.begin());
       YAML::Node params = stage.IsMap() ? stage.begin()->second : YAML::Node(YAML::NodeType::Map);
       if (params.IsNull()) params = YAML::Node(YAML::NodeType::Map);
       MapReader reader(params, field + "." + name, path, diagnostics, io::location_of(stage, path));
@@ -151,7 +164,8 @@ model::Pipeline load_pipeline(const std::string& path) {
                           "a map such as {leaf: 0.03}, or nothing for the defaults");
         continue;
       }
-      pipeline.stages.push_back(read_stage(reader, index));
+      pipeline.stages.push_back(
+          *read_named_stage(name, reader, std::type_identity<model::StageParams>{}));
     }
   }
   top.text("note", Need::optional);

@@ -25,10 +25,7 @@ model::RelaxationPolicy load_policy(const std::string& path) {
         reader.text("relax", io::Need::required, "a requirement path such as robot_speed.max_speed")
             .value_or("");
     if (step.requirement == "lighting") {
-      if (const auto drop =
-              reader.choice("drop", io::Need::required, {"dark", "indoor", "sunlight"})) {
-        step.drop = static_cast<model::LightCondition>(*drop);
-      }
+      step.drop = io::named_value(reader, "drop", io::Need::required, model::kLightConditionNames);
     } else {
       step.to = reader.number("to", io::Need::required,
                               "the relaxed value as a plain number in SI units (m, m/s, Hz) or a "

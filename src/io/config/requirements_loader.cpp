@@ -5,6 +5,7 @@
 
 #include "io/config/field_checks.hpp"
 #include "io/config/yaml_reader.hpp"
+#include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::io {
@@ -47,8 +48,8 @@ model::MotionBetweenFrames read_motion(MapReader& reader, const std::string& spe
 }
 
 void read_lighting(MapReader& top, model::Requirements& requirements) {
-  const std::vector<std::string> names = {"dark", "indoor", "sunlight"};
-  const std::string expected = "a list of conditions from: dark, indoor, sunlight";
+  const std::string expected =
+      "a list of conditions from: " + model::join(model::names_of(model::kLightConditionNames));
   requirements.lighting_where = top.location("lighting");
   const YAML::Node list = top.node("lighting");
   if (!list.IsDefined() || list.IsNull()) return;
@@ -60,15 +61,15 @@ void read_lighting(MapReader& top, model::Requirements& requirements) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string field = top.field("lighting") + "[" + std::to_string(i) + "]";
     const std::string value = list[i].IsScalar() ? list[i].Scalar() : "";
-    const auto it = std::find(names.begin(), names.end(), value);
-    if (it == names.end() || !seen.insert(value).second) {
+    const auto condition = model::value_in(model::kLightConditionNames, value);
+    if (!condition || !seen.insert(value).second) {
       top.diagnostics().error(io::location_of(list[i], top.file()), field,
-                              it == names.end() ? "unknown condition '" + value + "'"
-                                                : "condition '" + value + "' given twice",
+                              !condition ? "unknown condition '" + value + "'"
+                                         : "condition '" + value + "' given twice",
                               expected);
       continue;
     }
-    requirements.lighting.push_back(static_cast<model::LightCondition>(it - names.begin()));
+    requirements.lighting.push_back(*condition);
   }
 }
 

@@ -28,11 +28,6 @@ const std::vector<std::string> kModeKeys = {"id",
                                             "driver_cpu",
                                             "note"};
 
-const std::vector<std::string> kTechnologyNames = {
-    "tof",      "structured_light", "active_stereo", "passive_stereo", "lidar_3d_spinning",
-    "lidar_2d", "solid_state_lidar"};
-const std::vector<std::string> kShapeNames = {"pyramid", "cone", "band", "planar"};
-
 // A mode's field comes from the mode itself, else from the sensor's `mode_defaults`.
 MapReader& source_of(const std::string& key, MapReader& mode, std::optional<MapReader>& defaults) {
   if (mode.has(key) || !defaults || !defaults->has(key)) return mode;
@@ -41,12 +36,12 @@ MapReader& source_of(const std::string& key, MapReader& mode, std::optional<MapR
 
 model::FieldOfView read_fov(MapReader& fov) {
   model::FieldOfView result;
-  const auto shape = fov.choice("shape", Need::required, kShapeNames);
+  const auto shape = named_value(fov, "shape", Need::required, model::kFovShapeNames);
   if (!shape) return result;
-  result.shape = static_cast<model::FovShape>(*shape);
+  result.shape = *shape;
   const std::string full_angle = "a full angle in degrees, in (0, 360]";
   const std::string lens_angle =
-      "a full angle in degrees, in (0, 180) for a " + kShapeNames[*shape];
+      "a full angle in degrees, in (0, 180) for a " + model::to_string(*shape);
   switch (result.shape) {
     case model::FovShape::pyramid:
       result.horizontal =
@@ -251,8 +246,9 @@ model::Sensor read_sensor(MapReader& reader) {
   sensor.where = reader.location();
   sensor.id = reader.text("id", Need::required, "a sensor id").value_or("");
   sensor.name = reader.text("name", Need::required, "the product name").value_or("");
-  if (const auto technology = reader.choice("technology", Need::required, kTechnologyNames)) {
-    sensor.technology = static_cast<model::Technology>(*technology);
+  if (const auto technology =
+          named_value(reader, "technology", Need::required, model::kTechnologyNames)) {
+    sensor.technology = *technology;
   }
   sensor.source =
       reader.text("source", Need::required, "the datasheet document or URL").value_or("");
