@@ -66,17 +66,10 @@ std::optional<model::FilteringLoads> read_measured_loads(MapReader& top,
 }  // namespace
 
 model::Catalog load_catalog(const std::string& path) {
-  const YAML::Node root = io::load_yaml_file(path);
   model::Diagnostics diagnostics;
-  MapReader top(root, "", path, diagnostics, {path, 1, 1});
-  if (!top.valid()) {
-    throw model::InputError(
-        model::Diagnostic{{path, 1, 1},
-                          "(document)",
-                          "is not a map",
-                          "a catalog: name, body, distance_of_interest, sensors, slots, "
-                          "transfer, cpus"});
-  }
+  MapReader top = read_document_map(path, diagnostics,
+                                    "a catalog: name, body, distance_of_interest, sensors, slots, "
+                                    "transfer, cpus");
   model::Catalog catalog;
   catalog.file = path;
   catalog.where = top.location();

@@ -9,16 +9,9 @@ namespace rigdesign::io {
 
 model::FilteringLoads load_filtering_loads(const std::string& path) {
   using io::Need;
-  const YAML::Node root = io::load_yaml_file(path);
   model::Diagnostics diagnostics;
-  io::MapReader top(root, "", path, diagnostics, {path, 1, 1});
-  if (!top.valid()) {
-    throw model::InputError(
-        model::Diagnostic{{path, 1, 1},
-                          "(document)",
-                          "is not a map",
-                          "a filtering-loads file: machine, pipeline, scene, frames, sensors"});
-  }
+  MapReader top = read_document_map(
+      path, diagnostics, "a filtering-loads file: machine, pipeline, scene, frames, sensors");
   model::FilteringLoads loads;
   loads.file = path;
   loads.machine =

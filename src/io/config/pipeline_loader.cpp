@@ -128,13 +128,8 @@ std::optional<model::StageParams> read_named_stage(const std::string& name, MapR
 }  // namespace
 
 model::Pipeline load_pipeline(const std::string& path) {
-  const YAML::Node root = io::load_yaml_file(path);
   model::Diagnostics diagnostics;
-  MapReader top(root, "", path, diagnostics, {path, 1, 1});
-  if (!top.valid()) {
-    throw model::InputError(model::Diagnostic{
-        {path, 1, 1}, "(document)", "is not a map", "a pipeline: name and stages"});
-  }
+  MapReader top = read_document_map(path, diagnostics, "a pipeline: name and stages");
   model::Pipeline pipeline;
   pipeline.name = top.text("name", Need::required, "the pipeline's name").value_or("");
   const YAML::Node stages = top.node("stages");

@@ -6,15 +6,9 @@
 namespace rigdesign::io {
 
 model::RelaxationPolicy load_policy(const std::string& path) {
-  const YAML::Node root = io::load_yaml_file(path);
   model::Diagnostics diagnostics;
-  io::MapReader top(root, "", path, diagnostics, {path, 1, 1});
-  if (!top.valid()) {
-    throw model::InputError(model::Diagnostic{{path, 1, 1},
-                                              "(document)",
-                                              "is not a map",
-                                              "a relaxation policy: a map with name and steps"});
-  }
+  MapReader top =
+      read_document_map(path, diagnostics, "a relaxation policy: a map with name and steps");
   model::RelaxationPolicy policy;
   policy.file = path;
   policy.name = top.text("name", io::Need::required, "the policy's name").value_or("");

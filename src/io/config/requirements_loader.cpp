@@ -76,16 +76,9 @@ void read_lighting(MapReader& top, model::Requirements& requirements) {
 }  // namespace
 
 model::Requirements load_requirements(const std::string& path) {
-  const YAML::Node root = io::load_yaml_file(path);
   model::Diagnostics diagnostics;
-  MapReader top(root, "", path, diagnostics, {path, 1, 1});
-  if (!top.valid()) {
-    throw model::InputError(
-        model::Diagnostic{{path, 1, 1},
-                          "(document)",
-                          "is not a map",
-                          "requirements: a map with keys R1-R8 (see rigs/README.md)"});
-  }
+  MapReader top = read_document_map(path, diagnostics,
+                                    "requirements: a map with keys R1-R8 (see rigs/README.md)");
   model::Requirements requirements;
   requirements.file = path;
   requirements.name = top.text("name", Need::required, "the application's name").value_or("");

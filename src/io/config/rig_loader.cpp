@@ -41,16 +41,9 @@ model::Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf)
 }  // namespace
 
 model::Rig load_rig(const std::string& path) {
-  const YAML::Node root = io::load_yaml_file(path);
   model::Diagnostics diagnostics;
-  MapReader top(root, "", path, diagnostics, {path, 1, 1});
-  if (!top.valid()) {
-    throw model::InputError(
-        model::Diagnostic{{path, 1, 1},
-                          "(document)",
-                          "is not a map",
-                          "a rig: a map with name, body, distance_of_interest, mounts"});
-  }
+  MapReader top = read_document_map(path, diagnostics,
+                                    "a rig: a map with name, body, distance_of_interest, mounts");
   model::Rig rig;
   rig.file = path;
   rig.where = top.location();

@@ -274,15 +274,9 @@ model::Sensor read_sensor(MapReader& reader) {
 }  // namespace
 
 model::SensorLibrary load_sensor_library(const std::string& path) {
-  const YAML::Node root = io::load_yaml_file(path);
   model::Diagnostics diagnostics;
-  MapReader top(root, "", path, diagnostics, {path, 1, 1});
-  if (!top.valid()) {
-    throw model::InputError(model::Diagnostic{{path, 1, 1},
-                                              "(document)",
-                                              "is not a map",
-                                              "a map with `reference_machine` and `sensors`"});
-  }
+  MapReader top =
+      read_document_map(path, diagnostics, "a map with `reference_machine` and `sensors`");
   model::SensorLibrary library;
   library.file = path;
   library.reference_machine = top.text("reference_machine", Need::required,

@@ -286,4 +286,14 @@ std::optional<double> sequence_number(const YAML::Node& element, const std::stri
   return parsed;
 }
 
+MapReader read_document_map(const std::string& path, model::Diagnostics& diagnostics,
+                            const std::string& expected) {
+  MapReader top(load_yaml_file(path), "", path, diagnostics, {path, 1, 1});
+  if (!top.valid()) {
+    throw model::InputError(
+        model::Diagnostic{{path, 1, 1}, "(document)", "is not a map", expected});
+  }
+  return top;
+}
+
 }  // namespace rigdesign::io

@@ -86,6 +86,12 @@ class MapReader {
   mutable std::set<std::string> read_;  // keys the loader knows: asked for or read
 };
 
+/// The top-level map of the YAML file at `path`, reporting to `diagnostics` (which must outlive
+/// it). Throws InputError for a missing file, a syntax error, or a document that is not a map
+/// (at 1:1, field "(document)", with `expected` saying what the file should hold).
+MapReader read_document_map(const std::string& path, model::Diagnostics& diagnostics,
+                            const std::string& expected);
+
 /// Reads one element of a sequence as a scalar number, with its own location.
 std::optional<double> sequence_number(const YAML::Node& element, const std::string& field,
                                       const std::string& file, const std::string& expected,

@@ -167,16 +167,9 @@ std::string read_name(MapReader& object, std::set<std::string>& names) {
 }  // namespace
 
 model::Scene load_scene_file(const std::string& yaml_path) {
-  const YAML::Node root = io::load_yaml_file(yaml_path);
   model::Diagnostics diagnostics;
-  MapReader top(root, "", yaml_path, diagnostics, {yaml_path, 1, 1});
-  if (!top.valid()) {
-    throw model::InputError(
-        model::Diagnostic{{yaml_path, 1, 1},
-                          "(document)",
-                          "is not a map",
-                          "a scene: a map with name, robot_start, static, moving"});
-  }
+  MapReader top = read_document_map(yaml_path, diagnostics,
+                                    "a scene: a map with name, robot_start, static, moving");
   model::Scene scene;
   scene.name = top.text("name", Need::required, "the scene's name").value_or("");
   if (auto start = top.map("robot_start", Need::optional, "a map with xyz and yaw_deg")) {
