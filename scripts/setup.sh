@@ -14,6 +14,8 @@ packages=(
   libosmesa6-dev                         # off-screen 3D renders of FOV volumes
   libcairo2-dev                          # 2D charts, cross-section images, text, PNG and SVG
   liburdfdom-dev                         # mount poses from a robot's URDF
+  libtinyxml2-dev                        # xacro robot descriptions, parsed with line numbers
+  libassimp-dev                          # collision meshes of robot descriptions (STL, COLLADA, OBJ)
   python3                                # an independent XML parser for the JUnit test
   libbenchmark-dev                       # Google Benchmark for scripts/bench.sh
   fonts-dejavu-core                      # the font Cairo draws labels with

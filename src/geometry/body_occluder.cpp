@@ -58,6 +58,41 @@ bool overlaps_inside(const std::vector<model::Vec2>& polygon, const model::Vec2&
   return false;
 }
 
+// The farthest point along the ray at azimuth theta of the parts' horizontal projection.
+double outline_radius(const std::vector<model::BodyPart>& parts, double theta) {
+  const model::Vec2 u(std::cos(theta), std::sin(theta));
+  double farthest = 0.0;
+  for (const model::BodyPart& part : parts) {
+    if (part.cylinder) {
+      const model::Vec2& c = part.cylinder->centre;
+      const double along = u.dot(c);
+      const double square = part.cylinder->radius * part.cylinder->radius -
+                            (c.squaredNorm() - along * along);
+      if (square >= 0) farthest = std::max(farthest, along + std::sqrt(square));
+      continue;
+    }
+    const model::TriangleMesh& mesh = part.triangles;
+    for (const auto& t : mesh.triangles) {
+      for (int i = 0; i < 3; ++i) {
+        const model::Vec2 a = mesh.vertices[t[i]].head<2>();
+        const model::Vec2 e = mesh.vertices[t[(i + 1) % 3]].head<2>() - a;
+        const double denominator = cross2(u, e);
+        if (std::abs(denominator) < 1e-15) {
+          // An edge along the ray: its end points lie on it when a is on the ray.
+          if (std::abs(cross2(a, u)) < 1e-12) {
+            farthest = std::max({farthest, a.dot(u), (a + e).dot(u)});
+          }
+          continue;
+        }
+        const double rho = cross2(a, e) / denominator;
+        const double along_edge = cross2(a, u) / denominator;
+        if (rho >= 0 && along_edge >= 0 && along_edge <= 1) farthest = std::max(farthest, rho);
+      }
+    }
+  }
+  return farthest;
+}
+
 }  // namespace
 
 void append_quadratic_roots(double a, double b, double c, std::vector<double>& roots) {
@@ -80,9 +115,14 @@ void append_quadratic_roots(double a, double b, double c, std::vector<double>& r
 }
 
 BodyOccluder::BodyOccluder(const model::RobotBody& body)
-    : radius_(body.radius), height_(body.height), footprint_(body.footprint) {}
+    : radius_(body.radius),
+      height_(body.height),
+      area_top_(body.area_top()),
+      footprint_(body.footprint),
+      parts_(body.has_parts() ? &body.parts : nullptr) {}
 
 bool BodyOccluder::blocks(const model::Vec3& origin, const model::Vec3& point) const {
+  if (parts_) return false;
   const model::Vec3 d = point - origin;
   // Slab 0 < z < h along s in (0, 1).
   double low = 0.0;
@@ -115,6 +155,7 @@ bool BodyOccluder::blocks(const model::Vec3& origin, const model::Vec3& point) c
 void BodyOccluder::append_critical_parameters(const model::Vec3& origin, const model::Vec3& start,
                                               const model::Vec3& direction,
                                               std::vector<double>& parameters) const {
+  if (parts_) return;
   const model::Vec3 e =
       start - origin;  // sight vector at t = 0; it grows by `direction` per unit t
   const auto plane_root = [&](const model::Vec3& normal) {
@@ -162,6 +203,7 @@ void BodyOccluder::append_critical_parameters(const model::Vec3& origin, const m
 }
 
 bool BodyOccluder::contains(const model::Vec3& point) const {
+  if (parts_) return false;
   constexpr double kSurface = 1e-9;
   if (point.z() <= kSurface || point.z() >= height_ - kSurface) return false;
   if (!footprint_.empty()) {
@@ -179,6 +221,7 @@ bool BodyOccluder::contains(const model::Vec3& point) const {
 }
 
 double BodyOccluder::radius_at(double theta) const {
+  if (parts_) return outline_radius(*parts_, theta);
   if (footprint_.empty()) return radius_;
   const model::Vec2 far = model::Vec2(std::cos(theta), std::sin(theta)) * (2 * radius_ + 1.0);
   std::vector<double> crossings;

@@ -33,4 +33,20 @@ IntervalSet IntervalSet::united(const IntervalSet& other) const {
   return result;
 }
 
+IntervalSet IntervalSet::minus(const IntervalSet& other) const {
+  constexpr double kPiece = 1e-12;
+  IntervalSet result;
+  std::size_t k = 0;
+  for (const auto& [low, high] : intervals_) {
+    double from = low;
+    while (k < other.intervals_.size() && other.intervals_[k].second <= from) ++k;
+    for (std::size_t j = k; j < other.intervals_.size() && other.intervals_[j].first < high; ++j) {
+      if (other.intervals_[j].first - from > kPiece) result.append(from, other.intervals_[j].first);
+      from = std::max(from, other.intervals_[j].second);
+    }
+    if (high - from > kPiece) result.append(from, high);
+  }
+  return result;
+}
+
 }  // namespace rigdesign::geometry

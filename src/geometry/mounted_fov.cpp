@@ -49,8 +49,62 @@ MountedFov::MountedFov(const model::SensorMode& mode, const model::Pose3& T_robo
   sin_elevation_min_ = std::sin(fov.elevation_min);
   sin_elevation_max_ = std::sin(fov.elevation_max);
   half_span_ = fov.horizontal / 2;
-  may_be_occluded_ = rays_can_reach(body);
   bound_azimuths();
+  if (body.parts()) {
+    may_be_occluded_ = false;  // the body's own test is for cylinders and prisms
+    shadow_ = std::make_shared<const SolidShadow>(
+        *body.parts(), origin_,
+        [this](const model::Vec3& a, const model::Vec3& b, const model::Vec3& c) {
+          return triangle_may_matter(a, b, c);
+        });
+    if (shadow_->empty()) shadow_.reset();
+  } else {
+    may_be_occluded_ = rays_can_reach(body);
+  }
+}
+
+// A triangle hides a point of the FOV only if the sight line crosses it inside the FOV's cone
+// and within max range. Each test below finds a convex region outside the FOV that holds all
+// three corners, hence the whole triangle.
+bool MountedFov::triangle_may_matter(const model::Vec3& a, const model::Vec3& b,
+                                     const model::Vec3& c) const {
+  const model::Vec3 q[3] = {R_sensor_robot_ * (a - origin_), R_sensor_robot_ * (b - origin_),
+                            R_sensor_robot_ * (c - origin_)};
+  const model::Vec3 centre = (q[0] + q[1] + q[2]) / 3;
+  const double spread =
+      std::max({(q[0] - centre).norm(), (q[1] - centre).norm(), (q[2] - centre).norm()});
+  if (centre.norm() - spread > mode_->max_range) return false;
+  const auto all_below = [&](const model::Vec3& normal, double sin_limit) {
+    // All corners satisfy normal . q < sin_limit |q|.
+    return std::all_of(std::begin(q), std::end(q), [&](const model::Vec3& p) {
+      return normal.dot(p) < sin_limit * p.norm();
+    });
+  };
+  switch (mode_->fov.shape) {
+    case model::FovShape::pyramid:
+    case model::FovShape::cone: {
+      const bool cone = mode_->fov.shape == model::FovShape::cone;
+      const double th = tan_half_h_;
+      const double tv = cone ? tan_half_h_ : tan_half_v_;
+      // Half-spaces bounding the pyramid (the cone lies inside its square pyramid).
+      const model::Vec3 planes[5] = {{1, 0, 0}, {th, -1, 0}, {th, 1, 0}, {tv, 0, -1}, {tv, 0, 1}};
+      for (const model::Vec3& n : planes) {
+        if (all_below(n, 0.0)) return false;
+      }
+      return true;
+    }
+    case model::FovShape::band:
+    case model::FovShape::planar:
+      // Above the upper elevation cone (convex when its limit is >= 0), below the lower one.
+      if (sin_elevation_max_ >= 0 && all_below(-model::Vec3::UnitZ(), -sin_elevation_max_)) {
+        return false;
+      }
+      if (sin_elevation_min_ <= 0 && all_below(model::Vec3::UnitZ(), sin_elevation_min_)) {
+        return false;
+      }
+      return true;
+  }
+  return true;
 }
 
 // A pyramid's (or cone's) volume lies inside the convex hull of its origin and the four
@@ -150,7 +204,8 @@ bool MountedFov::in_fov(const model::Vec3& q) const {
 
 bool MountedFov::sees(const model::Vec3& p_robot) const {
   return in_fov(R_sensor_robot_ * (p_robot - origin_)) &&
-         !(may_be_occluded_ && body_->blocks(origin_, p_robot));
+         !(may_be_occluded_ && body_->blocks(origin_, p_robot)) &&
+         !(shadow_ && shadow_->blocks(p_robot));
 }
 
 void MountedFov::append_fov_roots(const model::Vec3& c, const model::Vec3& w,
@@ -186,7 +241,8 @@ void MountedFov::append_fov_roots(const model::Vec3& c, const model::Vec3& w,
 }
 
 IntervalSet MountedFov::covered_along(const model::Vec3& start, const model::Vec3& direction,
-                                      double t_min, double t_max) const {
+                                      double t_min, double t_max,
+                                      std::optional<double> section_azimuth) const {
   const model::Vec3 c = R_sensor_robot_ * (start - origin_);
   const model::Vec3 w = R_sensor_robot_ * direction;
   thread_local std::vector<double> cuts;  // reused: this runs once per raster column
@@ -202,13 +258,19 @@ IntervalSet MountedFov::covered_along(const model::Vec3& start, const model::Vec
     if (cut <= previous) continue;
     const double next = std::min(cut, t_max);
     if (next - previous > kPiece) {
-      const double mid = 0.5 * (previous + next);
-      if (sees(start + mid * direction)) covered.append(previous, next);
+      const model::Vec3 mid = start + 0.5 * (previous + next) * direction;
+      if (in_fov(R_sensor_robot_ * (mid - origin_)) &&
+          !(may_be_occluded_ && body_->blocks(origin_, mid))) {
+        covered.append(previous, next);
+      }
     }
     previous = next;
     if (previous >= t_max) break;
   }
-  return covered;
+  if (!shadow_ || covered.empty()) return covered;
+  return covered.minus(shadow_->blocked_along(start, direction, covered.intervals().front().first,
+                                              covered.intervals().back().second,
+                                              section_azimuth));
 }
 
 }  // namespace rigdesign::geometry

@@ -120,7 +120,7 @@ RigCoverage compute_coverage(const model::Rig& rig, const model::SensorLibrary& 
   RigCoverage result;
   result.exact = settings.exact;
   result.distance = rig.distance_of_interest;
-  result.height = rig.body.height;
+  result.height = rig.body.area_top();
   for (const PlacedMount& mount : mounts) result.mount_ids.push_back(mount.mount->id);
 
   const int steps = std::max(1, static_cast<int>(std::lround(kTwoPi / settings.step)));

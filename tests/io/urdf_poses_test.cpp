@@ -47,11 +47,21 @@ TEST_CASE("URDF problems are located errors") {
     CHECK(result.out.find("rig.yaml:2:") != std::string::npos);
     CHECK(result.out.find("urdf.file: names") != std::string::npos);
   }
-  SECTION("a file that is not URDF") {
-    folder.write("robot.urdf", "<robot><link></robot>");
+  SECTION("a file that is not XML names its line and the reason") {
+    folder.write("robot.urdf", "<robot>\n<link>\n</robot>");
     const CliResult result =
         run_cli({"check", folder.write("rig.yaml", head + "    pose: {urdf_link: cam}\n")});
     CHECK(result.exit_code == 2);
-    CHECK(result.out.find("is not a valid URDF") != std::string::npos);
+    CHECK(result.out.find("robot.urdf:2:") != std::string::npos);  // <link> opened, never closed
+    CHECK(result.out.find("is not well-formed XML") != std::string::npos);
+  }
+  SECTION("XML that is not a URDF says why") {
+    folder.write("robot.urdf", R"(<robot name="r"><link name="a"/>
+  <joint name="j" type="fixed"><parent link="a"/></joint></robot>)");
+    const CliResult result =
+        run_cli({"check", folder.write("rig.yaml", head + "    pose: {urdf_link: cam}\n")});
+    CHECK(result.exit_code == 2);
+    CHECK(result.out.find("is not a valid URDF: ") != std::string::npos);
+    CHECK(result.out.find("child") != std::string::npos);
   }
 }

@@ -20,6 +20,8 @@ class IntervalSet {
   bool contains(double x) const;
 
   IntervalSet united(const IntervalSet& other) const;
+  /// The parts of this set outside `other` (pieces shorter than 1e-12 are dropped).
+  IntervalSet minus(const IntervalSet& other) const;
 
  private:
   std::vector<Interval> intervals_;

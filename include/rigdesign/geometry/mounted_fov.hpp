@@ -2,10 +2,13 @@
 /// A sensor mode's field of view placed on the robot: the FOV shape (pyramid, cone, band,
 /// planar wedge) between the min and max range measured from the sensor origin (spherical
 /// caps), seen past the robot body. Gives exact coverage along any line in the robot frame.
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/solid_shadow.hpp"
 #include "rigdesign/geometry/interval_set.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/sensor.hpp"
@@ -23,9 +26,11 @@ class MountedFov {
   /// The parameters t in [t_min, t_max] at which the line start + t * direction is seen,
   /// exact up to floating point: every t where coverage can change (a root of the range
   /// spheres, FOV boundary planes and cones, or the body's silhouette) splits the line and
-  /// each piece is tested once.
+  /// each piece is tested once. A description's collision parts are subtracted as exact
+  /// shadow intervals; `section_azimuth` (the line lies in that vertical half-plane) lets the
+  /// shadow try only the triangles that reach it.
   IntervalSet covered_along(const model::Vec3& start, const model::Vec3& direction, double t_min,
-                            double t_max) const;
+                            double t_max, std::optional<double> section_azimuth = {}) const;
 
   const model::Vec3& origin() const { return origin_; }
   /// False when the FOV certainly misses the vertical half-plane at azimuth `theta` (a
@@ -36,10 +41,14 @@ class MountedFov {
   bool may_be_occluded() const { return may_be_occluded_; }
   const model::Pose3& pose() const { return T_robot_sensor_; }
   const model::SensorMode& mode() const { return *mode_; }
+  /// The shadow of the body's collision parts from this sensor; nullptr for a cylinder or
+  /// prism body.
+  const SolidShadow* shadow() const { return shadow_.get(); }
 
  private:
   bool in_fov(const model::Vec3& q_sensor) const;
   bool rays_can_reach(const BodyOccluder& body) const;
+  bool triangle_may_matter(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c) const;
   void append_fov_roots(const model::Vec3& c, const model::Vec3& w,
                         std::vector<double>& roots) const;
 
@@ -48,6 +57,7 @@ class MountedFov {
   model::Mat3 R_sensor_robot_;
   model::Vec3 origin_;
   const BodyOccluder* body_;
+  std::shared_ptr<const SolidShadow> shadow_;  // shared: MountedFov is copied into lists
   // Shape constants, precomputed: tangents of half-angles, sines of elevation limits.
   double tan_half_h_ = 0.0;
   double tan_half_v_ = 0.0;

@@ -8,16 +8,44 @@
 
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/source_location.hpp"
+#include "rigdesign/model/triangle_mesh.hpp"
 
 namespace rigdesign::model {
 
-/// The robot's body, which bounds the area to perceive (rho >= r, z in [0, h]) and occludes.
+/// A vertical cylinder of a robot's collision geometry (a standoff, a round base), kept
+/// round so that its shadow is exact.
+struct VerticalCylinder {
+  Vec2 centre = Vec2::Zero();  ///< [m] axis position in the robot frame
+  double radius = 0.0;         ///< [m]
+  double z_min = 0.0;          ///< [m]
+  double z_max = 0.0;          ///< [m]
+};
+
+/// One <collision> element of a robot description, in the robot frame: a vertical cylinder,
+/// or triangles (boxes and meshes exactly; tilted cylinders and spheres tessellated).
+struct BodyPart {
+  std::string link;
+  std::optional<VerticalCylinder> cylinder;
+  TriangleMesh triangles;
+  double tessellation_error = 0.0;  ///< [m] largest distance of the triangles from the true surface
+  SourceLocation where;
+};
+
+/// The robot's body, which bounds the area to perceive (rho >= r(theta), z in [0, h]) and
+/// occludes: a solid cylinder or footprint prism from the floor to `height`, or the union of
+/// a robot description's collision geometry (`parts`).
 struct RobotBody {
-  double height = 0.0;  ///< h [m]
-  /// Cylinder radius r [m]; with a footprint it is the footprint's largest distance from
-  /// the robot's vertical axis.
+  double height = 0.0;  ///< h [m]: the top of the body (of the collision geometry's parts)
+  /// Cylinder radius r [m]; with a footprint or parts, the largest horizontal distance of
+  /// the body from the robot's vertical axis.
   double radius = 0.0;
   std::vector<Vec2> footprint;  ///< optional prism cross-section, counter-clockwise [m]
+  std::vector<BodyPart> parts;  ///< a description's collision geometry; empty otherwise
+  /// Top of the area to perceive [m]; nothing means the body's height.
+  std::optional<double> area_height;
+
+  bool has_parts() const { return !parts.empty(); }
+  double area_top() const { return area_height.value_or(height); }
 };
 
 struct Mount {

@@ -11,7 +11,7 @@ struct SourceLocation {
   int column = 0;
 };
 
-/// "file:line:col" (or just "file" when the location is the whole file).
+/// "file:line:col", "file:line" when the column is unknown (XML), or "file" for the whole file.
 std::string to_string(const SourceLocation& where);
 
 }  // namespace rigdesign::model

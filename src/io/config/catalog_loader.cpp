@@ -93,7 +93,7 @@ model::Catalog load_catalog(const std::string& path) {
       io::non_negative(top, "filtering_seconds_per_point", Need::required,
                        "core-seconds of point filtering per delivered point, >= 0");
   const std::optional<model::FilteringLoads> measured = read_measured_loads(top, path);
-  const std::optional<UrdfPoses> urdf = io::read_urdf(top, path);
+  const std::optional<RobotLinks> urdf = io::read_robot_links(top, path);
 
   std::set<std::string> seen;
   for (MapReader& reader : top.maps("sensors", Need::required, "a list of candidate sensors")) {

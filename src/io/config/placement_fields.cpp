@@ -5,6 +5,8 @@
 
 #include "io/config/field_checks.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
+#include "rigdesign/io/robot/robot_description_loader.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/polygon_area.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
@@ -68,21 +70,24 @@ model::RobotBody read_body(MapReader& body) {
   return result;
 }
 
-model::Pose3 read_pose(MapReader& pose, const std::optional<UrdfPoses>& urdf) {
+model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot) {
   if (pose.has("urdf_link")) {
     const std::string link =
-        pose.text("urdf_link", Need::required, "a URDF link name").value_or("");
+        pose.text("urdf_link", Need::required, "a link name of the robot description").value_or("");
     pose.require(!pose.has("xyz") && !pose.has("rpy_deg"), "urdf_link", "given together with xyz",
                  "either urdf_link or xyz/rpy_deg");
     pose.reject_unknown_keys();
-    if (!urdf) {
-      pose.require(false, "urdf_link", "needs the rig's top-level `urdf` (file, base_link)",
-                   "a rig with `urdf: {file: robot.urdf}`");
+    if (robot && robot->failed) return model::Pose3::Identity();
+    if (!robot) {
+      pose.require(false, "urdf_link", "needs the rig's `robot` (or `urdf`) description",
+                   "a rig with `robot: {description: robot.urdf.xacro}`");
       return model::Pose3::Identity();
     }
-    if (const auto T_base_link = urdf->T_base(link)) return *T_base_link;
+    if (const auto it = robot->T_base_link.find(link); it != robot->T_base_link.end()) {
+      return it->second;
+    }
     std::string names;
-    for (const std::string& name : urdf->link_names()) names += (names.empty() ? "" : ", ") + name;
+    for (const auto& [name, T] : robot->T_base_link) names += (names.empty() ? "" : ", ") + name;
     pose.require(false, "urdf_link", "no link '" + link + "' in the URDF", "one of: " + names);
     return model::Pose3::Identity();
   }
@@ -99,21 +104,131 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<UrdfPoses>& urdf) {
   return model::pose_from_xyz_rpy(position, angles);
 }
 
-std::optional<UrdfPoses> read_urdf(MapReader& top, const std::string& file) {
-  auto urdf = top.map("urdf", Need::optional, "a map with file and base_link");
-  if (!urdf) return std::nullopt;
-  const auto urdf_file = urdf->text("file", Need::required, "a URDF path relative to this file");
-  const std::string base = urdf->text("base_link", Need::optional).value_or("");
-  const model::SourceLocation file_at = urdf->location("file");
-  const model::SourceLocation base_at = urdf->location("base_link");
-  urdf->reject_unknown_keys();
-  if (!urdf_file) return std::nullopt;
+namespace {
+
+RobotLinks failed_links() {
+  RobotLinks links;
+  links.failed = true;
+  return links;
+}
+
+std::map<std::string, std::string> read_text_map(MapReader& reader, const std::string& key,
+                                                 const std::string& expected) {
+  std::map<std::string, std::string> values;
+  const YAML::Node node = reader.node(key);
+  if (!node.IsDefined() || node.IsNull()) return values;
+  if (!node.IsMap()) {
+    reader.require(false, key, "is not a map", expected);
+    return values;
+  }
+  for (const auto& entry : node) {
+    if (!entry.second.IsScalar()) {
+      reader.diagnostics().error(location_of(entry.second, reader.file()),
+                                 reader.field(key) + "." + entry.first.as<std::string>(),
+                                 "is not a single value", expected);
+      continue;
+    }
+    values[entry.first.as<std::string>()] = entry.second.as<std::string>();
+  }
+  return values;
+}
+
+std::vector<std::string> read_folders(MapReader& reader, const std::string& key,
+                                      const std::string& file) {
+  std::vector<std::string> folders;
+  const YAML::Node node = reader.node(key);
+  if (!node.IsDefined() || node.IsNull()) return folders;
+  const std::string expected = "a list of folders, relative to the rig file";
+  if (!node.IsSequence()) {
+    reader.require(false, key, "is not a list", expected);
+    return folders;
+  }
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    if (!node[i].IsScalar()) {
+      reader.diagnostics().error(location_of(node[i], reader.file()),
+                                 reader.field(key) + "[" + std::to_string(i) + "]",
+                                 "is not a folder name", expected);
+      continue;
+    }
+    folders.push_back(resolve_beside(file, node[i].as<std::string>()));
+  }
+  return folders;
+}
+
+// Poses of every link in the frame of `base` (checked to be a link, reported at `base_at`).
+std::optional<RobotLinks> links_of(model::RobotDescription description, std::string base,
+                                   const std::string& field, MapReader& reader,
+                                   const std::string& base_key) {
+  if (base.empty()) {
+    base = description.T_root_link.count("base_footprint") ? "base_footprint"
+                                                           : description.root_link;
+  }
+  if (!description.T_root_link.count(base)) {
+    std::string names;
+    for (const auto& [name, T] : description.T_root_link) names += (names.empty() ? "" : ", ") + name;
+    reader.require(false, base_key, "no link '" + base + "' in " + description.file,
+                   "one of: " + names);
+    return failed_links();
+  }
+  RobotLinks links;
+  links.base_link = base;
+  links.field = field;
+  for (const auto& [name, T] : description.T_root_link)
+    links.T_base_link[name] = *description.T_base(base, name);
+  links.description = std::move(description);
+  return links;
+}
+
+std::optional<RobotLinks> read_legacy_urdf(MapReader& urdf, const std::string& file) {
+  const auto urdf_file = urdf.text("file", Need::required, "a URDF path relative to this file");
+  const std::string base = urdf.text("base_link", Need::optional).value_or("");
+  urdf.reject_unknown_keys();
+  if (!urdf_file) return failed_links();
+  RobotDescriptionRequest request;
+  request.path = resolve_beside(file, *urdf_file);
+  request.load_meshes = false;  // `urdf:` gives poses only; the body stays the rig's `body`
+  request.expander = RobotDescriptionRequest::Expander::builtin;
+  request.named_at = urdf.location("file");
+  request.field = "urdf.file";
+  std::optional<RobotLinks> links =
+      links_of(load_robot_description(request), base, "urdf", urdf, "base_link");
+  if (links) links->description.reset();
+  return links;
+}
+
+}  // namespace
+
+std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& file) {
+  const bool has_robot = top.has("robot");
+  top.require(!(has_robot && top.has("urdf")), "urdf", "given together with robot",
+              "either robot (a description with its collision geometry) or urdf (poses only)");
   try {
-    return UrdfPoses::load(resolve_beside(file, *urdf_file), base, file_at, base_at);
+    if (!has_robot) {
+      auto urdf = top.map("urdf", Need::optional, "a map with file and base_link");
+      return urdf ? read_legacy_urdf(*urdf, file) : std::nullopt;
+    }
+    auto robot = top.map("robot", Need::required,
+                         "a map with description, and optionally args, env, package_paths, "
+                         "base_link, expander");
+    if (!robot) return failed_links();
+    const auto description =
+        robot->text("description", Need::required, "a .urdf or .urdf.xacro path relative to this file");
+    RobotDescriptionRequest request;
+    request.named_at = robot->location("description");
+    request.args = read_text_map(*robot, "args", "a map of xacro argument names to values");
+    request.environment =
+        read_text_map(*robot, "env", "a map of environment variable names to values");
+    request.package_paths = read_folders(*robot, "package_paths", file);
+    const std::string base = robot->text("base_link", Need::optional).value_or("");
+    const auto expander = robot->choice("expander", Need::optional, {"auto", "builtin", "xacro"});
+    if (expander) request.expander = static_cast<RobotDescriptionRequest::Expander>(*expander);
+    robot->reject_unknown_keys();
+    if (!description) return failed_links();
+    request.path = resolve_beside(file, *description);
+    return links_of(load_robot_description(request), base, "robot", *robot, "base_link");
   } catch (const model::InputError& error) {
-    for (const model::Diagnostic& diagnostic : error.diagnostics())
-      top.diagnostics().add(diagnostic);
-    return std::nullopt;
+    for (const model::Diagnostic& diagnostic : error.diagnostics()) top.diagnostics().add(diagnostic);
+    return failed_links();
   }
 }
 

@@ -1,21 +1,33 @@
 #pragma once
-// Fields that rig files and candidate catalogs share: the robot body, the optional URDF and
-// sensor poses (xyz + rpy_deg, or a URDF link). Private to io.
+// Fields that rig files and candidate catalogs share: the robot body, the robot description
+// (`robot:`, or the older `urdf:` for poses only) and sensor poses (xyz + rpy_deg, or a
+// link of the description). Private to io.
+#include <map>
 #include <optional>
 #include <string>
 
 #include "io/config/yaml_reader.hpp"
-#include "rigdesign/io/config/urdf_poses.hpp"
 #include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/robot_description.hpp"
 
 namespace rigdesign::io {
 
 model::RobotBody read_body(MapReader& body);
 
-/// The `urdf` map of a rig or catalog at `file`; problems are recorded on `top`.
-std::optional<UrdfPoses> read_urdf(MapReader& top, const std::string& file);
+/// What a rig's robot description gives: every link's pose in the robot frame and, for
+/// `robot:`, the description itself (with its collision geometry).
+struct RobotLinks {
+  std::string base_link;  ///< the robot frame's link
+  std::string field;      ///< "robot" or "urdf", for messages
+  std::map<std::string, model::Pose3> T_base_link;
+  std::optional<model::RobotDescription> description;
+  bool failed = false;  ///< named but not loaded (its errors are already recorded)
+};
 
-/// A pose is xyz (+ rpy_deg) in the robot frame, or the pose of a link of the file's URDF.
-model::Pose3 read_pose(MapReader& pose, const std::optional<UrdfPoses>& urdf);
+/// The `robot` (or `urdf`) map of a rig or catalog at `file`; problems are recorded on `top`.
+std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& file);
+
+/// A pose is xyz (+ rpy_deg) in the robot frame, or the pose of a description's link.
+model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot);
 
 }  // namespace rigdesign::io

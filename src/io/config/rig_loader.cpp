@@ -6,6 +6,7 @@
 #include "io/config/field_checks.hpp"
 #include "io/config/placement_fields.hpp"
 #include "io/config/yaml_reader.hpp"
+#include "rigdesign/geometry/body_from_description.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -14,9 +15,10 @@ using io::MapReader;
 using io::Need;
 using io::read_body;
 using io::read_pose;
-using io::read_urdf;
+using io::read_robot_links;
+using io::RobotLinks;
 
-model::Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf) {
+model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robot) {
   model::Mount mount;
   mount.where = reader.location();
   mount.id = reader.text("id", Need::required, "a mount id, unique in the rig").value_or("");
@@ -27,7 +29,7 @@ model::Mount read_mount(MapReader& reader, const std::optional<UrdfPoses>& urdf)
   mount.mode_where = reader.location("mode");
   mount.pose_where = reader.location("pose");
   if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg, or urdf_link")) {
-    mount.T_robot_sensor = read_pose(*pose, urdf);
+    mount.T_robot_sensor = read_pose(*pose, robot);
   }
   if (reader.has("distance_of_interest")) {
     mount.distance_of_interest =
@@ -52,8 +54,20 @@ model::Rig load_rig(const std::string& path) {
   rig.sensor_library_where = top.location("sensor_library");
   rig.requirements = top.text("requirements", Need::optional).value_or("");
   rig.requirements_where = top.location("requirements");
-  if (auto body = top.map("body", Need::required, "a map with height and radius or footprint")) {
+  const std::optional<RobotLinks> robot = read_robot_links(top, path);
+  const bool has_geometry = robot && !robot->failed && robot->description;
+  // With a robot description the body is its collision geometry unless `body` is given.
+  if (auto body = top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,
+                          "a map with height and radius or footprint")) {
     rig.body = read_body(*body);
+  } else if (has_geometry) {
+    rig.body = geometry::body_from_description(*robot->description, robot->base_link);
+    top.require(rig.body.has_parts(), "robot", "has no collision geometry",
+                "links with <collision> elements, or a `body` (radius or footprint, height)");
+  }
+  if (top.has("area_height")) {
+    rig.body.area_height = io::positive(top, "area_height", Need::required,
+                                        "the top of the area to perceive in metres, > 0");
   }
   rig.distance_of_interest = io::positive(top, "distance_of_interest", Need::required,
                                           "the distance of interest d in metres, > body radius");
@@ -61,10 +75,9 @@ model::Rig load_rig(const std::string& path) {
     top.require(rig.distance_of_interest > rig.body.radius, "distance_of_interest",
                 "is not beyond the body radius", "d > r");
   }
-  const std::optional<UrdfPoses> urdf = read_urdf(top, path);
   std::set<std::string> ids;
   for (MapReader& reader : top.maps("mounts", Need::required, "a list of mounts")) {
-    model::Mount mount = read_mount(reader, urdf);
+    model::Mount mount = read_mount(reader, robot);
     if (!mount.id.empty() && !ids.insert(mount.id).second) {
       reader.require(false, "id", "duplicate mount id '" + mount.id + "'", "unique mount ids");
     }

@@ -1,0 +1,107 @@
+#include "package_locator.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace rigdesign::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// How deep below a listed folder packages are looked for (a workspace's src/vendor/pkg).
+constexpr int kSearchDepth = 4;
+
+std::vector<std::string> split_paths(const char* value) {
+  std::vector<std::string> parts;
+  if (!value) return parts;
+  std::stringstream stream(value);
+  std::string part;
+  while (std::getline(stream, part, ':')) {
+    if (!part.empty()) parts.push_back(part);
+  }
+  return parts;
+}
+
+std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+}  // namespace
+
+std::optional<std::string> package_name_of(const std::string& package_xml) {
+  std::ifstream stream(package_xml);
+  if (!stream) return std::nullopt;
+  std::stringstream text;
+  text << stream.rdbuf();
+  const std::string content = text.str();
+  // package.xml formats 1-3 all hold one <name> element directly under <package>.
+  const auto open = content.find("<name>");
+  const auto close = content.find("</name>", open);
+  if (open == std::string::npos || close == std::string::npos) return std::nullopt;
+  const std::string name = trim(content.substr(open + 6, close - open - 6));
+  if (name.empty()) return std::nullopt;
+  return name;
+}
+
+PackageLocator::PackageLocator(std::vector<std::string> folders) {
+  // Absolute, so $(find PKG) gives a path that does not depend on the including file.
+  for (const std::string& folder : folders) roots_.push_back(fs::absolute(folder).lexically_normal().string());
+  for (const std::string& folder : split_paths(std::getenv("ROS_PACKAGE_PATH")))
+    roots_.push_back(folder);
+  ament_prefixes_ = split_paths(std::getenv("AMENT_PREFIX_PATH"));
+}
+
+void PackageLocator::index(const std::string& root) const {
+  std::error_code error;
+  if (!fs::is_directory(root, error)) return;
+  if (const auto name = package_name_of((fs::path(root) / "package.xml").string())) {
+    found_.emplace(*name, fs::path(root).lexically_normal().string());
+    return;  // packages do not nest
+  }
+  fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, error);
+  for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+    if (it.depth() >= kSearchDepth) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (!it->is_directory(error)) continue;
+    const std::string name_of = (it->path() / "package.xml").string();
+    if (const auto name = package_name_of(name_of)) {
+      found_.emplace(*name, it->path().lexically_normal().string());
+      it.disable_recursion_pending();
+    }
+  }
+}
+
+std::optional<std::string> PackageLocator::find(const std::string& package) const {
+  if (!indexed_) {
+    for (const std::string& root : roots_) index(root);
+    indexed_ = true;
+  }
+  if (const auto it = found_.find(package); it != found_.end()) return it->second;
+  for (const std::string& prefix : ament_prefixes_) {
+    const fs::path share = fs::path(prefix) / "share" / package;
+    std::error_code error;
+    if (fs::is_regular_file(share / "package.xml", error)) return share.string();
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> PackageLocator::resolve_uri(const std::string& uri) const {
+  const std::string package_scheme = "package://";
+  const std::string file_scheme = "file://";
+  if (uri.rfind(file_scheme, 0) == 0) return uri.substr(file_scheme.size());
+  if (uri.rfind(package_scheme, 0) != 0) return uri;
+  const std::string rest = uri.substr(package_scheme.size());
+  const auto slash = rest.find('/');
+  const std::string package = rest.substr(0, slash);
+  const auto folder = find(package);
+  if (!folder) return std::nullopt;
+  return slash == std::string::npos ? *folder : *folder + rest.substr(slash);
+}
+
+}  // namespace rigdesign::io

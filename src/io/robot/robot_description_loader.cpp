@@ -1,0 +1,214 @@
+#include "rigdesign/io/robot/robot_description_loader.hpp"
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "package_locator.hpp"
+#include "rigdesign/io/mesh/assimp_mesh_loader.hpp"
+#include "rigdesign/model/input_error.hpp"
+#include "xacro_command.hpp"
+#include "xacro_expander.hpp"
+#include "xml_tree.hpp"
+
+namespace rigdesign::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// urdfdom reports why a description is invalid through console_bridge; this keeps the
+// message for our error instead of printing it.
+class MessageCollector : public console_bridge::OutputHandler {
+ public:
+  MessageCollector() {
+    console_bridge::useOutputHandler(this);
+    console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_ERROR);
+  }
+  ~MessageCollector() override { console_bridge::restorePreviousOutputHandler(); }
+  MessageCollector(const MessageCollector&) = delete;
+  MessageCollector& operator=(const MessageCollector&) = delete;
+
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) messages += (messages.empty() ? "" : "; ") + text;
+  }
+  std::string messages;
+};
+
+model::Pose3 to_pose(const urdf::Pose& pose) {
+  model::Pose3 result = model::Pose3::Identity();
+  result.translation() = model::Vec3(pose.position.x, pose.position.y, pose.position.z);
+  result.linear() =
+      Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)
+          .normalized()
+          .toRotationMatrix();
+  return result;
+}
+
+// T_root_link, composing joint origins from the link up to the root (every joint at zero).
+model::Pose3 pose_in_root(const urdf::LinkConstSharedPtr& link) {
+  model::Pose3 T_root_link = model::Pose3::Identity();
+  for (urdf::LinkConstSharedPtr current = link; current && current->parent_joint;
+       current = current->getParent()) {
+    T_root_link = to_pose(current->parent_joint->parent_to_joint_origin_transform) * T_root_link;
+  }
+  return T_root_link;
+}
+
+xml::Node read_tree(const RobotDescriptionRequest& request, const PackageLocator& packages) {
+  if (!is_xacro_file(request.path)) return xml::parse_file(request.path, request.named_at, request.field);
+  using Expander = RobotDescriptionRequest::Expander;
+  if (request.expander != Expander::builtin) {
+    if (const auto executable = find_xacro_executable()) {
+      return xml::parse_text(
+          run_xacro(*executable, request.path, request.args, request.environment, request.named_at),
+          request.path);
+    }
+    if (request.expander == Expander::external) {
+      throw model::InputError(model::Diagnostic{
+          request.named_at, "robot.expander", "is 'xacro' but no xacro executable is on PATH",
+          "ROS's xacro installed (e.g. ros-humble-xacro), or expander: builtin"});
+    }
+  }
+  XacroInput input;
+  input.path = request.path;
+  input.args = request.args;
+  input.environment = request.environment;
+  input.packages = &packages;
+  input.named_at = request.named_at;
+  return expand_xacro(input);
+}
+
+// Where each link's element and its <collision> elements are in the (expanded) text.
+struct LinkPlaces {
+  model::SourceLocation link;
+  std::vector<model::SourceLocation> collisions;
+};
+
+std::map<std::string, LinkPlaces> link_places(const xml::Node& robot) {
+  std::map<std::string, LinkPlaces> places;
+  for (const xml::Node& child : robot.children) {
+    if (!child.is_element("link")) continue;
+    const std::string* name = child.attribute("name");
+    if (!name) continue;
+    LinkPlaces& place = places[*name];
+    place.link = child.where;
+    for (const xml::Node& part : child.children) {
+      if (part.is_element("collision")) place.collisions.push_back(part.where);
+    }
+  }
+  return places;
+}
+
+model::CollisionShape shape_of(const urdf::Collision& collision, const std::string& link,
+                               const model::Pose3& T_root_link,
+                               const model::SourceLocation& where,
+                               const RobotDescriptionRequest& request,
+                               const PackageLocator& packages) {
+  model::CollisionShape shape;
+  shape.link = link;
+  shape.where = where;
+  shape.T_root_shape = T_root_link * to_pose(collision.origin);
+  const urdf::Geometry& geometry = *collision.geometry;
+  switch (geometry.type) {
+    case urdf::Geometry::BOX: {
+      const auto& box = static_cast<const urdf::Box&>(geometry);
+      shape.kind = model::CollisionShape::Kind::box;
+      shape.size = model::Vec3(box.dim.x, box.dim.y, box.dim.z);
+      break;
+    }
+    case urdf::Geometry::CYLINDER: {
+      const auto& cylinder = static_cast<const urdf::Cylinder&>(geometry);
+      shape.kind = model::CollisionShape::Kind::cylinder;
+      shape.radius = cylinder.radius;
+      shape.length = cylinder.length;
+      break;
+    }
+    case urdf::Geometry::SPHERE:
+      shape.kind = model::CollisionShape::Kind::sphere;
+      shape.radius = static_cast<const urdf::Sphere&>(geometry).radius;
+      break;
+    case urdf::Geometry::MESH: {
+      const auto& mesh = static_cast<const urdf::Mesh&>(geometry);
+      shape.kind = model::CollisionShape::Kind::mesh;
+      const auto resolved = packages.resolve_uri(mesh.filename);
+      if (!resolved) {
+        throw model::InputError(model::Diagnostic{
+            where, "collision.geometry.mesh.filename",
+            "'" + mesh.filename + "': its package is not found",
+            "package://PKG/... with PKG under the rig's robot.package_paths, ROS_PACKAGE_PATH "
+            "or AMENT_PREFIX_PATH"});
+      }
+      shape.mesh_file = *resolved;
+      if (fs::path(shape.mesh_file).is_relative()) {
+        shape.mesh_file = (fs::path(request.path).parent_path() / shape.mesh_file).string();
+      }
+      if (request.load_meshes) {
+        shape.mesh = load_mesh_with_assimp(shape.mesh_file, where);
+        const model::Vec3 scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
+        for (model::Vec3& v : shape.mesh.vertices) v = v.cwiseProduct(scale);
+      }
+      break;
+    }
+  }
+  return shape;
+}
+
+}  // namespace
+
+bool is_xacro_file(const std::string& path) {
+  if (path.size() >= 6 && path.compare(path.size() - 6, 6, ".xacro") == 0) return true;
+  std::ifstream stream(path);
+  std::string head(4096, '\0');
+  stream.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(stream.gcount()));
+  return head.find("xmlns:xacro") != std::string::npos;
+}
+
+model::RobotDescription load_robot_description(const RobotDescriptionRequest& request) {
+  const PackageLocator packages(request.package_paths);
+  const xml::Node tree = read_tree(request, packages);
+  if (tree.name != "robot") {
+    throw model::InputError(model::Diagnostic{tree.where, "robot", "the root element is <" + tree.name + ">",
+                                              "a URDF <robot> element"});
+  }
+  urdf::ModelInterfaceSharedPtr urdf_model;
+  std::string why;
+  {
+    MessageCollector collector;
+    urdf_model = urdf::parseURDF(xml::to_xml(tree));
+    why = collector.messages;
+  }
+  if (!urdf_model) {
+    throw model::InputError(model::Diagnostic{
+        {request.path, 0, 0}, "robot",
+        "is not a valid URDF" + (why.empty() ? std::string() : ": " + why),
+        "links joined by joints into one tree, each joint with a parent, a child and a type"});
+  }
+  model::RobotDescription description;
+  description.name = urdf_model->getName();
+  description.file = request.path;
+  description.root_link = urdf_model->getRoot()->name;
+  const std::map<std::string, LinkPlaces> places = link_places(tree);
+  std::vector<urdf::LinkSharedPtr> links;
+  urdf_model->getLinks(links);
+  for (const urdf::LinkSharedPtr& link : links) {
+    const model::Pose3 T_root_link = pose_in_root(link);
+    description.T_root_link[link->name] = T_root_link;
+    const auto place = places.find(link->name);
+    if (place != places.end()) description.link_where[link->name] = place->second.link;
+    for (std::size_t i = 0; i < link->collision_array.size(); ++i) {
+      const urdf::CollisionSharedPtr& collision = link->collision_array[i];
+      if (!collision || !collision->geometry) continue;
+      const model::SourceLocation where =
+          place != places.end() && i < place->second.collisions.size() ? place->second.collisions[i]
+                                                                       : model::SourceLocation{request.path, 0, 0};
+      description.collisions.push_back(
+          shape_of(*collision, link->name, T_root_link, where, request, packages));
+    }
+  }
+  return description;
+}
+
+}  // namespace rigdesign::io
