@@ -22,6 +22,7 @@ TempFolder::~TempFolder() {
 
 std::string TempFolder::write(const std::string& name, const std::string& contents) const {
   const std::string file = path_ + "/" + name;
+  std::filesystem::create_directories(std::filesystem::path(file).parent_path());
   std::ofstream(file) << contents;
   return file;
 }

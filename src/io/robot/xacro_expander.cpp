@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "rigdesign/model/input_error.hpp"
-#include "xacro_expression.hpp"
+#include "rigdesign/io/robot/xacro_expression.hpp"
 
 namespace rigdesign::io {
 namespace {

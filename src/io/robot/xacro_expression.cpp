@@ -1,7 +1,7 @@
 // A recursive-descent evaluator for the Python expressions of xacro's ${...}, following
 // Python's grammar levels: conditional < or < and < not < comparison < + - < * / // % <
 // unary < ** < primary.
-#include "xacro_expression.hpp"
+#include "rigdesign/io/robot/xacro_expression.hpp"
 
 #include <cctype>
 #include <charconv>

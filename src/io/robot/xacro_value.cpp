@@ -4,7 +4,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "xacro_expression.hpp"
+#include "rigdesign/io/robot/xacro_expression.hpp"
 
 namespace rigdesign::io::xacro {
 namespace {
