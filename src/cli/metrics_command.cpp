@@ -12,7 +12,9 @@
 #include "inputs.hpp"
 #include "json_report.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
+#include "rigdesign/metrics/coverage_findings.hpp"
 #include "rigdesign/metrics/coverage.hpp"
+#include "rigdesign/metrics/coverage_findings.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -185,6 +187,10 @@ void print_text(const RigInputs& inputs, const metrics::ResultantMetrics& metric
   if (metrics.any_estimate) out << "  * estimate, not a datasheet or measured value\n";
   print_coverage(coverage, out);
   for (const model::Diagnostic& warning : inputs.warnings) out << warning.message() << '\n';
+  for (const model::Diagnostic& finding :
+       metrics::coverage_findings(rig, inputs.library, metrics, coverage)) {
+    out << finding.message() << '\n';
+  }
   if (results.empty()) return;
   out << "\nRequirements (" << inputs.requirements->file << ")\n";
   using Align = TextTable::Align;

@@ -107,9 +107,10 @@ model::BodyPart part_of(const model::CollisionShape& shape, const model::Pose3& 
 }  // namespace
 
 model::RobotBody body_from_description(const model::RobotDescription& description,
-                                       const std::string& base_link) {
+                                       const std::string& base_link, double base_height) {
   model::RobotBody body;
-  const model::Pose3 T_robot_root = description.T_root_link.at(base_link).inverse();
+  model::Pose3 T_robot_root = description.T_root_link.at(base_link).inverse();
+  T_robot_root.pretranslate(model::Vec3(0.0, 0.0, base_height));
   for (const model::CollisionShape& shape : description.collisions) {
     model::BodyPart part = part_of(shape, T_robot_root * shape.T_root_shape);
     if (part.cylinder) {

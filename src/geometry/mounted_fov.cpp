@@ -57,7 +57,6 @@ MountedFov::MountedFov(const model::SensorMode& mode, const model::Pose3& T_robo
         [this](const model::Vec3& a, const model::Vec3& b, const model::Vec3& c) {
           return triangle_may_matter(a, b, c);
         });
-    if (shadow_->empty()) shadow_.reset();
   } else {
     may_be_occluded_ = rays_can_reach(body);
   }

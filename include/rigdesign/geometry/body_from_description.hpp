@@ -17,9 +17,10 @@ namespace rigdesign::geometry {
 /// the radius outside it.
 inline constexpr int kRoundSides = 48;
 
-/// Precondition: `base_link` is a link of `description`. The body's height is the parts'
-/// highest point, its radius their farthest horizontal distance from the vertical axis.
+/// Precondition: `base_link` is a link of `description`; the robot frame is that link moved
+/// down by `base_height` (a base link above the floor, as on the Jackal). The body's height is
+/// the parts' highest point, its radius their farthest horizontal distance from the axis.
 model::RobotBody body_from_description(const model::RobotDescription& description,
-                                       const std::string& base_link);
+                                       const std::string& base_link, double base_height = 0.0);
 
 }  // namespace rigdesign::geometry

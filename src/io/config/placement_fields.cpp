@@ -157,8 +157,8 @@ std::vector<std::string> read_folders(MapReader& reader, const std::string& key,
 
 // Poses of every link in the frame of `base` (checked to be a link, reported at `base_at`).
 std::optional<RobotLinks> links_of(model::RobotDescription description, std::string base,
-                                   const std::string& field, MapReader& reader,
-                                   const std::string& base_key) {
+                                   double base_height, const std::string& field,
+                                   MapReader& reader, const std::string& base_key) {
   if (base.empty()) {
     base = description.T_root_link.count("base_footprint") ? "base_footprint"
                                                            : description.root_link;
@@ -172,9 +172,14 @@ std::optional<RobotLinks> links_of(model::RobotDescription description, std::str
   }
   RobotLinks links;
   links.base_link = base;
+  links.base_height = base_height;
   links.field = field;
-  for (const auto& [name, T] : description.T_root_link)
-    links.T_base_link[name] = *description.T_base(base, name);
+  const model::Vec3 up(0.0, 0.0, base_height);
+  for (const auto& [name, T] : description.T_root_link) {
+    model::Pose3 T_robot_link = *description.T_base(base, name);
+    T_robot_link.translation() += up;
+    links.T_base_link[name] = T_robot_link;
+  }
   links.description = std::move(description);
   return links;
 }
@@ -191,7 +196,7 @@ std::optional<RobotLinks> read_legacy_urdf(MapReader& urdf, const std::string& f
   request.named_at = urdf.location("file");
   request.field = "urdf.file";
   std::optional<RobotLinks> links =
-      links_of(load_robot_description(request), base, "urdf", urdf, "base_link");
+      links_of(load_robot_description(request), base, 0.0, "urdf", urdf, "base_link");
   if (links) links->description.reset();
   return links;
 }
@@ -220,12 +225,19 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
         read_text_map(*robot, "env", "a map of environment variable names to values");
     request.package_paths = read_folders(*robot, "package_paths", file);
     const std::string base = robot->text("base_link", Need::optional).value_or("");
+    const double base_height =
+        robot->has("base_link_height")
+            ? robot->number("base_link_height", Need::required,
+                            "the base link's height above the floor in metres (default 0)")
+                  .value_or(0.0)
+            : 0.0;
     const auto expander = robot->choice("expander", Need::optional, {"auto", "builtin", "xacro"});
     if (expander) request.expander = static_cast<RobotDescriptionRequest::Expander>(*expander);
     robot->reject_unknown_keys();
     if (!description) return failed_links();
     request.path = resolve_beside(file, *description);
-    return links_of(load_robot_description(request), base, "robot", *robot, "base_link");
+    return links_of(load_robot_description(request), base, base_height, "robot", *robot,
+                    "base_link");
   } catch (const model::InputError& error) {
     for (const model::Diagnostic& diagnostic : error.diagnostics()) top.diagnostics().add(diagnostic);
     return failed_links();

@@ -61,7 +61,8 @@ model::Rig load_rig(const std::string& path) {
                           "a map with height and radius or footprint")) {
     rig.body = read_body(*body);
   } else if (has_geometry) {
-    rig.body = geometry::body_from_description(*robot->description, robot->base_link);
+    rig.body = geometry::body_from_description(*robot->description, robot->base_link,
+                                                robot->base_height);
     top.require(rig.body.has_parts(), "robot", "has no collision geometry",
                 "links with <collision> elements, or a `body` (radius or footprint, height)");
   }
