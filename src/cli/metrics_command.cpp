@@ -188,7 +188,7 @@ void print_text(const RigInputs& inputs, const metrics::ResultantMetrics& metric
   print_coverage(coverage, out);
   for (const model::Diagnostic& warning : inputs.warnings) out << warning.message() << '\n';
   for (const model::Diagnostic& finding :
-       metrics::coverage_findings(rig, inputs.library, metrics, coverage)) {
+       metrics::coverage_findings(rig, metrics, coverage)) {
     out << finding.message() << '\n';
   }
   if (results.empty()) return;

@@ -21,7 +21,6 @@ std::string join(const std::vector<std::string>& names) {
 }  // namespace
 
 std::vector<model::Diagnostic> coverage_findings(const model::Rig& rig,
-                                                 const model::SensorLibrary& library,
                                                  const ResultantMetrics& resultant,
                                                  const RigCoverage& coverage) {
   std::vector<model::Diagnostic> findings;

@@ -11,7 +11,6 @@
 namespace rigdesign::metrics {
 
 std::vector<model::Diagnostic> coverage_findings(const model::Rig& rig,
-                                                 const model::SensorLibrary& library,
                                                  const ResultantMetrics& resultant,
                                                  const RigCoverage& coverage);
 
