@@ -44,6 +44,7 @@ RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensor
   RigInputs inputs;
   inputs.rig = io::load_rig(rig_path);
   model::Diagnostics diagnostics;
+  for (const model::Diagnostic& warning : inputs.rig.load_warnings) diagnostics.add(warning);
   const std::string library_path = io::locate_sensor_library(inputs.rig, sensors_path);
   std::optional<model::SensorLibrary> library;
   if (!sensors_path.empty() || inputs.rig.sensor_library.empty() ||

@@ -84,9 +84,9 @@ model::BodyPart part_of(const model::CollisionShape& shape, const model::Pose3& 
       const model::Vec3 axis = T_robot_shape.linear().col(2);
       if (axis.z() * axis.z() >= kVertical) {
         const model::Vec3 centre = T_robot_shape.translation();
-        part.cylinder = model::VerticalCylinder{centre.head<2>(), shape.radius,
-                                                centre.z() - shape.length / 2,
-                                                centre.z() + shape.length / 2};
+        part.cylinder =
+            model::VerticalCylinder{centre.head<2>(), shape.radius, centre.z() - shape.length / 2,
+                                    centre.z() + shape.length / 2};
         return part;
       }
       local = cylinder_mesh(shape.radius, shape.length);

@@ -66,8 +66,8 @@ double outline_radius(const std::vector<model::BodyPart>& parts, double theta) {
     if (part.cylinder) {
       const model::Vec2& c = part.cylinder->centre;
       const double along = u.dot(c);
-      const double square = part.cylinder->radius * part.cylinder->radius -
-                            (c.squaredNorm() - along * along);
+      const double square =
+          part.cylinder->radius * part.cylinder->radius - (c.squaredNorm() - along * along);
       if (square >= 0) farthest = std::max(farthest, along + std::sqrt(square));
       continue;
     }

@@ -75,9 +75,8 @@ bool MountedFov::triangle_may_matter(const model::Vec3& a, const model::Vec3& b,
   if (centre.norm() - spread > mode_->max_range) return false;
   const auto all_below = [&](const model::Vec3& normal, double sin_limit) {
     // All corners satisfy normal . q < sin_limit |q|.
-    return std::all_of(std::begin(q), std::end(q), [&](const model::Vec3& p) {
-      return normal.dot(p) < sin_limit * p.norm();
-    });
+    return std::all_of(std::begin(q), std::end(q),
+                       [&](const model::Vec3& p) { return normal.dot(p) < sin_limit * p.norm(); });
   };
   switch (mode_->fov.shape) {
     case model::FovShape::pyramid:
@@ -268,8 +267,7 @@ IntervalSet MountedFov::covered_along(const model::Vec3& start, const model::Vec
   }
   if (!shadow_ || covered.empty()) return covered;
   return covered.minus(shadow_->blocked_along(start, direction, covered.intervals().front().first,
-                                              covered.intervals().back().second,
-                                              section_azimuth));
+                                              covered.intervals().back().second, section_azimuth));
 }
 
 }  // namespace rigdesign::geometry

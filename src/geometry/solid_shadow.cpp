@@ -199,7 +199,8 @@ IntervalSet SolidShadow::blocked_along(const model::Vec3& start, const model::Ve
     for (const double cut : cuts) {
       if (cut <= previous) continue;
       const double next = std::min(cut, t_max);
-      if (next - previous > kPiece && cylinder.solid.blocks(o, s + 0.5 * (previous + next) * direction)) {
+      if (next - previous > kPiece &&
+          cylinder.solid.blocks(o, s + 0.5 * (previous + next) * direction)) {
         pieces.emplace_back(previous, next);
       }
       previous = next;

@@ -37,8 +37,7 @@ std::vector<model::Diagnostic> coverage_findings(const model::Rig& rig,
           mount.pose_where, "mounts[" + std::to_string(i) + "]",
           "mount '" + mount.id + "' sees 0 % of the area to perceive (rho in [r, d], z in [0, " +
               model::format_number(coverage.height) + "] m)" +
-              (set.empty() ? std::string()
-                           : " but sets " + join(set) + " for the whole rig"),
+              (set.empty() ? std::string() : " but sets " + join(set) + " for the whole rig"),
           "a pose that looks into the area, or a different area_height", model::Severity::warning);
     }
   }

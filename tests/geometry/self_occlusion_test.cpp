@@ -19,9 +19,9 @@ using Catch::Matchers::WithinAbs;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kRadius = 0.02;    // r: standoff radius [m]
-constexpr double kDistance = 0.3;   // D: standoff axis from the robot's axis [m]
-constexpr double kLidarZ = 0.2;     // lidar height [m]
+constexpr double kRadius = 0.02;   // r: standoff radius [m]
+constexpr double kDistance = 0.3;  // D: standoff axis from the robot's axis [m]
+constexpr double kLidarZ = 0.2;    // lidar height [m]
 constexpr double kStandoffTop = 0.5;
 
 // A 360-degree band of +-15 degrees elevation, no minimum range.
@@ -57,9 +57,8 @@ std::string standoffs_urdf(const std::string& geometry) {
     urdf << "  <link name=\"standoff" << k << "\"><collision><geometry>" << geometry
          << "</geometry></collision></link>\n"
          << "  <joint name=\"j" << k << "\" type=\"fixed\"><parent link=\"base_footprint\"/>"
-         << "<child link=\"standoff" << k << "\"/><origin xyz=\""
-         << kDistance * std::cos(azimuth) << " " << kDistance * std::sin(azimuth) << " "
-         << kStandoffTop / 2 << "\"/></joint>\n";
+         << "<child link=\"standoff" << k << "\"/><origin xyz=\"" << kDistance * std::cos(azimuth)
+         << " " << kDistance * std::sin(azimuth) << " " << kStandoffTop / 2 << "\"/></joint>\n";
   }
   urdf << "</robot>\n";
   return urdf.str();
@@ -72,7 +71,8 @@ std::string prism_stl(int sides, double radius, double height) {
   stl.precision(17);
   const auto vertex = [&](int k, double z) {
     const double a = 2 * kPi * k / sides;
-    stl << "      vertex " << radius * std::cos(a) << " " << radius * std::sin(a) << " " << z << "\n";
+    stl << "      vertex " << radius * std::cos(a) << " " << radius * std::sin(a) << " " << z
+        << "\n";
   };
   const auto facet = [&](auto&& corners) {
     stl << "  facet normal 0 0 0\n    outer loop\n";
@@ -121,8 +121,8 @@ double complete_at(const model::Rig& rig, const model::SensorLibrary& library, d
 TEST_CASE("standoffs hide exactly 2 asin(r / D) of azimuth each from a lidar on their axis") {
   const model::SensorLibrary library = band_library();
   test::TempFolder folder;
-  const std::string cylinder = "<cylinder radius=\"" + std::to_string(kRadius) +
-                               "\" length=\"" + std::to_string(kStandoffTop) + "\"/>";
+  const std::string cylinder = "<cylinder radius=\"" + std::to_string(kRadius) + "\" length=\"" +
+                               std::to_string(kStandoffTop) + "\"/>";
   const model::Rig rig = standoff_rig(folder.write("standoffs.urdf", standoffs_urdf(cylinder)));
   REQUIRE(rig.body.parts.size() == 4);
   REQUIRE(rig.body.parts[0].cylinder.has_value());  // vertical: kept round, exact
@@ -162,12 +162,13 @@ TEST_CASE("standoffs hide exactly 2 asin(r / D) of azimuth each from a lidar on 
 TEST_CASE("the area to perceive starts at the description's outline at every azimuth") {
   const model::SensorLibrary library = band_library();
   test::TempFolder folder;
-  const std::string cylinder = "<cylinder radius=\"" + std::to_string(kRadius) +
-                               "\" length=\"" + std::to_string(kStandoffTop) + "\"/>";
+  const std::string cylinder = "<cylinder radius=\"" + std::to_string(kRadius) + "\" length=\"" +
+                               std::to_string(kStandoffTop) + "\"/>";
   const model::Rig rig = standoff_rig(folder.write("standoffs.urdf", standoffs_urdf(cylinder)));
   // Along a standoff's azimuth the outline is its far side, D + r; between them there is no
   // body, so the area starts on the axis.
-  CHECK_THAT(metrics::section_view(rig, library, kPi / 4).frame.r, WithinAbs(kDistance + kRadius, 1e-12));
+  CHECK_THAT(metrics::section_view(rig, library, kPi / 4).frame.r,
+             WithinAbs(kDistance + kRadius, 1e-12));
   CHECK_THAT(metrics::section_view(rig, library, 0.0).frame.r, WithinAbs(0.0, 1e-12));
   CHECK_THAT(rig.body.height, WithinAbs(kStandoffTop, 1e-12));
   CHECK_THAT(rig.body.radius, WithinAbs(kDistance + kRadius, 1e-12));

@@ -2,8 +2,8 @@
 // Python 3's (xacro evaluates ${...} with Python), computed with python3 and pasted here.
 #include <catch2/catch.hpp>
 
-#include "rigdesign/io/robot/xacro_expression.hpp"
 #include "rigdesign/io/robot/robot_description_loader.hpp"
+#include "rigdesign/io/robot/xacro_expression.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
@@ -87,10 +87,10 @@ TEST_CASE("xacro expression errors name the place") {
     }
     return 999;
   };
-  CHECK(offset_of("1 + width") == 4);   // name 'width' is not defined
-  CHECK(offset_of("1 / 0") == 2);       // division by zero
-  CHECK(offset_of("(1 + 2") == 6);      // expected ')'
-  CHECK(offset_of("1 2") == 2);         // unexpected '2'
+  CHECK(offset_of("1 + width") == 4);  // name 'width' is not defined
+  CHECK(offset_of("1 / 0") == 2);      // division by zero
+  CHECK(offset_of("(1 + 2") == 6);     // expected ')'
+  CHECK(offset_of("1 2") == 2);        // unexpected '2'
   CHECK(offset_of("") == 0);
   CHECK(offset_of("'a' - 1") == 4);
   CHECK(offset_of(std::string(500, '(') + "1" + std::string(500, ')')) < 500);  // too deep
@@ -186,23 +186,28 @@ TEST_CASE("bad robot descriptions: exit 2, file and line, nothing written") {
   };
   const std::string head = "<robot name=\"r\" xmlns:xacro=\"http://ros.org/wiki/xacro\">\n";
   SECTION("an undefined property") {
-    folder.write("a.urdf.xacro", head + "<link name=\"base_footprint\">\n<collision><geometry>"
-                                        "<box size=\"${w} 1 1\"/></geometry></collision></link></robot>");
+    folder.write("a.urdf.xacro",
+                 head +
+                     "<link name=\"base_footprint\">\n<collision><geometry>"
+                     "<box size=\"${w} 1 1\"/></geometry></collision></link></robot>");
     check_fails("a.urdf.xacro", "a.urdf.xacro:3", "name 'w' is not defined");
   }
   SECTION("a missing package") {
-    folder.write("b.urdf.xacro", head + "\n<xacro:include filename=\"$(find nope_pkg)/x.xacro\"/></robot>");
+    folder.write("b.urdf.xacro",
+                 head + "\n<xacro:include filename=\"$(find nope_pkg)/x.xacro\"/></robot>");
     check_fails("b.urdf.xacro", "b.urdf.xacro:3", "package 'nope_pkg' not found");
   }
   SECTION("a missing mesh") {
-    folder.write("c.urdf", "<robot name=\"r\"><link name=\"base_footprint\">\n<collision><geometry>"
-                           "<mesh filename=\"gone.stl\"/></geometry></collision></link></robot>");
+    folder.write("c.urdf",
+                 "<robot name=\"r\"><link name=\"base_footprint\">\n<collision><geometry>"
+                 "<mesh filename=\"gone.stl\"/></geometry></collision></link></robot>");
     check_fails("c.urdf", "c.urdf:2", "gone.stl' does not exist");
   }
   SECTION("a mesh with no triangles") {
     folder.write("empty.stl", "solid empty\nendsolid empty\n");
-    folder.write("d.urdf", "<robot name=\"r\"><link name=\"base_footprint\">\n<collision><geometry>"
-                           "<mesh filename=\"empty.stl\"/></geometry></collision></link></robot>");
+    folder.write("d.urdf",
+                 "<robot name=\"r\"><link name=\"base_footprint\">\n<collision><geometry>"
+                 "<mesh filename=\"empty.stl\"/></geometry></collision></link></robot>");
     check_fails("d.urdf", "d.urdf:2", "empty.stl");
   }
   SECTION("a cycle of includes") {

@@ -50,8 +50,8 @@ class SolidShadow {
     double offset[4];
   };
   struct CylinderShadow {
-    BodyOccluder solid;       // the cylinder as a body standing on its own floor
-    model::Vec3 to_local;     // subtract to move robot-frame points into its frame
+    BodyOccluder solid;    // the cylinder as a body standing on its own floor
+    model::Vec3 to_local;  // subtract to move robot-frame points into its frame
   };
 
   void add_triangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c);

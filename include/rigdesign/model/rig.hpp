@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/source_location.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
 
@@ -72,6 +73,9 @@ struct Rig {
   SourceLocation requirements_where;
   std::string file;
   SourceLocation where;
+  /// What the loader noticed that is not an error (e.g. a link used in the other frame
+  /// convention than its axes suggest).
+  std::vector<Diagnostic> load_warnings;
 
   /// The distance at which a mount's resolution and noise are judged [m].
   double distance_for(const Mount& mount) const {

@@ -6,7 +6,9 @@
 #include "io/config/field_checks.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
 #include "rigdesign/io/robot/robot_description_loader.hpp"
+#include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
+#include "rigdesign/model/optical_frame.hpp"
 #include "rigdesign/model/polygon_area.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
@@ -70,12 +72,68 @@ model::RobotBody read_body(MapReader& body) {
   return result;
 }
 
+namespace {
+
+// Frames a pose may be given in (REP-103): a body frame (x forward along the optical axis)
+// or a camera optical frame (z forward, x right, y down).
+enum class PoseFrame { automatic, body, optical };
+
+PoseFrame read_frame(MapReader& pose) {
+  const auto frame = pose.choice("frame", Need::optional, {"body", "optical"});
+  if (!frame) return PoseFrame::automatic;
+  return *frame == 0 ? PoseFrame::body : PoseFrame::optical;
+}
+
+// "up", "down" or "level at azimuth A deg" for a unit vector in the robot frame.
+std::string describe_direction(const model::Vec3& v) {
+  if (v.z() > 0.7) return "up";
+  if (v.z() < -0.7) return "down";
+  return "level at azimuth " +
+         model::format_number(std::round(model::rad_to_deg(std::atan2(v.y(), v.x()))) + 0.0) +
+         " deg";
+}
+
+// Flags a link used in the other convention than its axes suggest: an optical frame's z
+// (its optical axis) is near horizontal and its y points down; a body frame's x is the axis.
+void check_link_convention(MapReader& pose, const std::string& link, const model::Pose3& T,
+                           bool as_optical, bool named_optical) {
+  constexpr double kNearly = 0.9;  // cosine: within about 25 degrees
+  const model::Vec3 x = T.linear().col(0);
+  const model::Vec3 y = T.linear().col(1);
+  const model::Vec3 z = T.linear().col(2);
+  if (as_optical && named_optical && std::abs(z.z()) > kNearly && std::abs(x.z()) < 1 - kNearly) {
+    pose.diagnostics().warning(
+        pose.location("urdf_link"), pose.field("urdf_link"),
+        "'" + link +
+            "' is named as an optical frame, but its z axis (the optical axis there) "
+            "points " +
+            (z.z() > 0 ? "up" : "down") +
+            " while its x axis is level: it looks like a "
+            "body frame (x forward)",
+        "frame: body if the link is x-forward, or the camera's *_optical_frame link");
+  }
+  if (!as_optical && y.z() < -kNearly && std::abs(z.z()) < 1 - kNearly) {
+    pose.diagnostics().warning(
+        pose.location("urdf_link"), pose.field("urdf_link"),
+        "'" + link +
+            "' is used as a body frame (x forward), but its axes look like a camera "
+            "optical frame (z level, y down): the sensor would look along its x axis, " +
+            describe_direction(x) + " instead of along z, " + describe_direction(z),
+        "frame: optical, or the camera's x-forward link");
+  }
+}
+
+}  // namespace
+
 model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot) {
+  // The sensor frame rigdesign mounts by is x-forward; an optical-frame pose is turned into it.
+  const model::Pose3 T_optical_sensor = model::T_sensor_optical().inverse();
   if (pose.has("urdf_link")) {
     const std::string link =
         pose.text("urdf_link", Need::required, "a link name of the robot description").value_or("");
     pose.require(!pose.has("xyz") && !pose.has("rpy_deg"), "urdf_link", "given together with xyz",
                  "either urdf_link or xyz/rpy_deg");
+    const PoseFrame frame = read_frame(pose);
     pose.reject_unknown_keys();
     if (robot && robot->failed) return model::Pose3::Identity();
     if (!robot) {
@@ -84,13 +142,20 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot) 
       return model::Pose3::Identity();
     }
     if (const auto it = robot->T_base_link.find(link); it != robot->T_base_link.end()) {
-      return it->second;
+      // REP-103 names a camera's z-forward frame *_optical_frame; such a link is optical
+      // unless the rig says otherwise.
+      const bool named_optical = link.find("optical") != std::string::npos;
+      const bool as_optical =
+          frame == PoseFrame::optical || (frame == PoseFrame::automatic && named_optical);
+      check_link_convention(pose, link, it->second, as_optical, named_optical);
+      return as_optical ? it->second * T_optical_sensor : it->second;
     }
     std::string names;
     for (const auto& [name, T] : robot->T_base_link) names += (names.empty() ? "" : ", ") + name;
     pose.require(false, "urdf_link", "no link '" + link + "' in the URDF", "one of: " + names);
     return model::Pose3::Identity();
   }
+  const PoseFrame frame = read_frame(pose);
   const auto xyz = pose.numbers("xyz", Need::required, 3, 3, "[x, y, z] in metres, finite");
   const auto rpy = pose.numbers("rpy_deg", Need::optional, 3, 3,
                                 "[roll, pitch, yaw] in degrees, finite (default [0, 0, 0])");
@@ -101,7 +166,8 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot) 
   if (rpy)
     angles = model::Vec3(model::deg_to_rad((*rpy)[0]), model::deg_to_rad((*rpy)[1]),
                          model::deg_to_rad((*rpy)[2]));
-  return model::pose_from_xyz_rpy(position, angles);
+  const model::Pose3 T = model::pose_from_xyz_rpy(position, angles);
+  return frame == PoseFrame::optical ? T * T_optical_sensor : T;
 }
 
 namespace {
@@ -157,15 +223,16 @@ std::vector<std::string> read_folders(MapReader& reader, const std::string& key,
 
 // Poses of every link in the frame of `base` (checked to be a link, reported at `base_at`).
 std::optional<RobotLinks> links_of(model::RobotDescription description, std::string base,
-                                   double base_height, const std::string& field,
-                                   MapReader& reader, const std::string& base_key) {
+                                   double base_height, const std::string& field, MapReader& reader,
+                                   const std::string& base_key) {
   if (base.empty()) {
-    base = description.T_root_link.count("base_footprint") ? "base_footprint"
-                                                           : description.root_link;
+    base =
+        description.T_root_link.count("base_footprint") ? "base_footprint" : description.root_link;
   }
   if (!description.T_root_link.count(base)) {
     std::string names;
-    for (const auto& [name, T] : description.T_root_link) names += (names.empty() ? "" : ", ") + name;
+    for (const auto& [name, T] : description.T_root_link)
+      names += (names.empty() ? "" : ", ") + name;
     reader.require(false, base_key, "no link '" + base + "' in " + description.file,
                    "one of: " + names);
     return failed_links();
@@ -216,8 +283,8 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
                          "a map with description, and optionally args, env, package_paths, "
                          "base_link, expander");
     if (!robot) return failed_links();
-    const auto description =
-        robot->text("description", Need::required, "a .urdf or .urdf.xacro path relative to this file");
+    const auto description = robot->text("description", Need::required,
+                                         "a .urdf or .urdf.xacro path relative to this file");
     RobotDescriptionRequest request;
     request.named_at = robot->location("description");
     request.args = read_text_map(*robot, "args", "a map of xacro argument names to values");
@@ -227,8 +294,9 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
     const std::string base = robot->text("base_link", Need::optional).value_or("");
     const double base_height =
         robot->has("base_link_height")
-            ? robot->number("base_link_height", Need::required,
-                            "the base link's height above the floor in metres (default 0)")
+            ? robot
+                  ->number("base_link_height", Need::required,
+                           "the base link's height above the floor in metres (default 0)")
                   .value_or(0.0)
             : 0.0;
     const auto expander = robot->choice("expander", Need::optional, {"auto", "builtin", "xacro"});
@@ -239,7 +307,8 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
     return links_of(load_robot_description(request), base, base_height, "robot", *robot,
                     "base_link");
   } catch (const model::InputError& error) {
-    for (const model::Diagnostic& diagnostic : error.diagnostics()) top.diagnostics().add(diagnostic);
+    for (const model::Diagnostic& diagnostic : error.diagnostics())
+      top.diagnostics().add(diagnostic);
     return failed_links();
   }
 }

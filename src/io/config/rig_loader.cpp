@@ -57,12 +57,13 @@ model::Rig load_rig(const std::string& path) {
   const std::optional<RobotLinks> robot = read_robot_links(top, path);
   const bool has_geometry = robot && !robot->failed && robot->description;
   // With a robot description the body is its collision geometry unless `body` is given.
-  if (auto body = top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,
-                          "a map with height and radius or footprint")) {
+  if (auto body =
+          top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,
+                  "a map with height and radius or footprint")) {
     rig.body = read_body(*body);
   } else if (has_geometry) {
-    rig.body = geometry::body_from_description(*robot->description, robot->base_link,
-                                                robot->base_height);
+    rig.body =
+        geometry::body_from_description(*robot->description, robot->base_link, robot->base_height);
     top.require(rig.body.has_parts(), "robot", "has no collision geometry",
                 "links with <collision> elements, or a `body` (radius or footprint, height)");
   }
@@ -89,6 +90,9 @@ model::Rig load_rig(const std::string& path) {
   top.text("note", Need::optional);
   top.reject_unknown_keys();
   diagnostics.throw_if_errors();
+  for (const model::Diagnostic& diagnostic : diagnostics.items()) {
+    if (diagnostic.severity == model::Severity::warning) rig.load_warnings.push_back(diagnostic);
+  }
   return rig;
 }
 

@@ -14,9 +14,9 @@ namespace rigdesign::io {
 model::TriangleMesh load_mesh_with_assimp(const std::string& path,
                                           const model::SourceLocation& named_at) {
   const auto fail = [&](const std::string& problem) {
-    throw model::InputError(model::Diagnostic{
-        named_at, "mesh.filename", problem,
-        "a mesh file with triangles (STL, COLLADA .dae, OBJ, PLY)"});
+    throw model::InputError(
+        model::Diagnostic{named_at, "mesh.filename", problem,
+                          "a mesh file with triangles (STL, COLLADA .dae, OBJ, PLY)"});
   };
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) fail("'" + path + "' does not exist");
@@ -25,10 +25,11 @@ model::TriangleMesh load_mesh_with_assimp(const std::string& path,
   // frame as written; assimp would otherwise turn Z_UP files to its own Y-up convention.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   // Only triangles matter: drop points and lines, so they never reach the occluder.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                aiProcess_SortByPType);
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                  aiProcess_PreTransformVertices | aiProcess_SortByPType);
   if (!scene) fail("'" + path + "' cannot be read: " + importer.GetErrorString());
   model::TriangleMesh mesh;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {

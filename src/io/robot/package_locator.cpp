@@ -49,7 +49,8 @@ std::optional<std::string> package_name_of(const std::string& package_xml) {
 
 PackageLocator::PackageLocator(std::vector<std::string> folders) {
   // Absolute, so $(find PKG) gives a path that does not depend on the including file.
-  for (const std::string& folder : folders) roots_.push_back(fs::absolute(folder).lexically_normal().string());
+  for (const std::string& folder : folders)
+    roots_.push_back(fs::absolute(folder).lexically_normal().string());
   for (const std::string& folder : split_paths(std::getenv("ROS_PACKAGE_PATH")))
     roots_.push_back(folder);
   ament_prefixes_ = split_paths(std::getenv("AMENT_PREFIX_PATH"));

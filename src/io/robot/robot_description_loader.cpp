@@ -31,7 +31,8 @@ class MessageCollector : public console_bridge::OutputHandler {
   MessageCollector& operator=(const MessageCollector&) = delete;
 
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
-    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) messages += (messages.empty() ? "" : "; ") + text;
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR)
+      messages += (messages.empty() ? "" : "; ") + text;
   }
   std::string messages;
 };
@@ -57,7 +58,8 @@ model::Pose3 pose_in_root(const urdf::LinkConstSharedPtr& link) {
 }
 
 xml::Node read_tree(const RobotDescriptionRequest& request, const PackageLocator& packages) {
-  if (!is_xacro_file(request.path)) return xml::parse_file(request.path, request.named_at, request.field);
+  if (!is_xacro_file(request.path))
+    return xml::parse_file(request.path, request.named_at, request.field);
   using Expander = RobotDescriptionRequest::Expander;
   if (request.expander != Expander::builtin) {
     if (const auto executable = find_xacro_executable()) {
@@ -102,8 +104,7 @@ std::map<std::string, LinkPlaces> link_places(const xml::Node& robot) {
 }
 
 model::CollisionShape shape_of(const urdf::Collision& collision, const std::string& link,
-                               const model::Pose3& T_root_link,
-                               const model::SourceLocation& where,
+                               const model::Pose3& T_root_link, const model::SourceLocation& where,
                                const RobotDescriptionRequest& request,
                                const PackageLocator& packages) {
   model::CollisionShape shape;
@@ -170,8 +171,8 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
   const PackageLocator packages(request.package_paths);
   const xml::Node tree = read_tree(request, packages);
   if (tree.name != "robot") {
-    throw model::InputError(model::Diagnostic{tree.where, "robot", "the root element is <" + tree.name + ">",
-                                              "a URDF <robot> element"});
+    throw model::InputError(model::Diagnostic{
+        tree.where, "robot", "the root element is <" + tree.name + ">", "a URDF <robot> element"});
   }
   urdf::ModelInterfaceSharedPtr urdf_model;
   std::string why;
@@ -182,7 +183,8 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
   }
   if (!urdf_model) {
     throw model::InputError(model::Diagnostic{
-        {request.path, 0, 0}, "robot",
+        {request.path, 0, 0},
+        "robot",
         "is not a valid URDF" + (why.empty() ? std::string() : ": " + why),
         "links joined by joints into one tree, each joint with a parent, a child and a type"});
   }
@@ -202,8 +204,9 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
       const urdf::CollisionSharedPtr& collision = link->collision_array[i];
       if (!collision || !collision->geometry) continue;
       const model::SourceLocation where =
-          place != places.end() && i < place->second.collisions.size() ? place->second.collisions[i]
-                                                                       : model::SourceLocation{request.path, 0, 0};
+          place != places.end() && i < place->second.collisions.size()
+              ? place->second.collisions[i]
+              : model::SourceLocation{request.path, 0, 0};
       description.collisions.push_back(
           shape_of(*collision, link->name, T_root_link, where, request, packages));
     }

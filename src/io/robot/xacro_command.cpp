@@ -44,8 +44,8 @@ std::string run_xacro(const std::string& executable, const std::string& path,
                       const std::map<std::string, std::string>& environment,
                       const model::SourceLocation& named_at) {
   // Output and messages go to private temporary files, read back once xacro has exited.
-  const fs::path folder = fs::temp_directory_path() /
-                          ("rigdesign-xacro-" + std::to_string(::getpid()));
+  const fs::path folder =
+      fs::temp_directory_path() / ("rigdesign-xacro-" + std::to_string(::getpid()));
   fs::create_directories(folder);
   const fs::path out = folder / "out.urdf";
   const fs::path err = folder / "err.txt";
@@ -73,8 +73,8 @@ std::string run_xacro(const std::string& executable, const std::string& path,
       messages.pop_back();
     throw model::InputError(model::Diagnostic{
         named_at, "robot.description",
-        "xacro (" + executable + ") failed on '" + path + "': " +
-            (messages.empty() ? "exit status " + std::to_string(status) : messages),
+        "xacro (" + executable + ") failed on '" + path +
+            "': " + (messages.empty() ? "exit status " + std::to_string(status) : messages),
         "a description that `xacro` expands, or robot.expander: builtin"});
   }
   return output;

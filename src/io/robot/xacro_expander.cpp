@@ -8,8 +8,8 @@
 #include <sstream>
 #include <vector>
 
-#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/io/robot/xacro_expression.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -224,15 +224,14 @@ class Expander {
   Value resolve(const std::string& name, Property& property, const model::SourceLocation& used_at) {
     if (property.value) return *property.value;
     if (property.is_block) {
-      fail(used_at, "'" + name + "' is a block, not a value", "<xacro:insert_block name=\"" +
-                                                                   name + "\"/> to insert it");
+      fail(used_at, "'" + name + "' is a block, not a value",
+           "<xacro:insert_block name=\"" + name + "\"/> to insert it");
     }
     if (property.evaluating) fail(property.where, "property '" + name + "' refers to itself");
     property.evaluating = true;
     const Value text = evaluate_text(*property.raw, *property.defined_in, property.where);
     property.evaluating = false;
-    property.value =
-        text.kind == Value::Kind::text ? xacro::parse_literal(text.text) : text;
+    property.value = text.kind == Value::Kind::text ? xacro::parse_literal(text.text) : text;
     return *property.value;
   }
 
@@ -270,8 +269,9 @@ class Expander {
       std::string searched;
       for (const std::string& root : input_.packages->searched())
         searched += (searched.empty() ? "" : ", ") + root;
-      fail(where, "package '" + words[1] + "' not found (searched: " +
-                      (searched.empty() ? "no folder" : searched) + ")",
+      fail(where,
+           "package '" + words[1] +
+               "' not found (searched: " + (searched.empty() ? "no folder" : searched) + ")",
            "a folder whose package.xml names " + words[1] +
                " under the rig's robot.package_paths, ROS_PACKAGE_PATH or AMENT_PREFIX_PATH");
     }
@@ -325,8 +325,8 @@ class Expander {
     if (keyword == "macro") return define_macro(node, scope);
     if (keyword == "if" || keyword == "unless") {
       const std::string& written = required(node, "value");
-      const bool holds = condition_holds(evaluate_text(written, scope, node.where), written,
-                                         node.where);
+      const bool holds =
+          condition_holds(evaluate_text(written, scope, node.where), written, node.where);
       if (holds == (keyword == "if")) expand_children(node, scope, out);
       return;
     }
@@ -527,6 +527,8 @@ class Expander {
 
 }  // namespace
 
-xml::Node expand_xacro(const XacroInput& input) { return Expander(input).run(); }
+xml::Node expand_xacro(const XacroInput& input) {
+  return Expander(input).run();
+}
 
 }  // namespace rigdesign::io

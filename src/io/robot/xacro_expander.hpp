@@ -20,12 +20,12 @@
 namespace rigdesign::io {
 
 struct XacroInput {
-  std::string path;                                   ///< the top-level .xacro or .urdf
-  std::map<std::string, std::string> args;            ///< name:=value, as on xacro's command line
-  std::map<std::string, std::string> environment;     ///< read by $(optenv) / $(env) before the
-                                                      ///< process's environment
-  const PackageLocator* packages = nullptr;           ///< resolves $(find PKG)
-  model::SourceLocation named_at;                     ///< where the rig names the description
+  std::string path;                                ///< the top-level .xacro or .urdf
+  std::map<std::string, std::string> args;         ///< name:=value, as on xacro's command line
+  std::map<std::string, std::string> environment;  ///< read by $(optenv) / $(env) before the
+                                                   ///< process's environment
+  const PackageLocator* packages = nullptr;        ///< resolves $(find PKG)
+  model::SourceLocation named_at;                  ///< where the rig names the description
 };
 
 /// The expanded description: a plain URDF tree whose elements keep the file and line of the

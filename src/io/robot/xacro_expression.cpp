@@ -16,8 +16,12 @@ namespace {
 // Deeper nesting than this is refused rather than risking the stack.
 constexpr int kMaxDepth = 200;
 
-bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_name_start(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+}
+bool is_name_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
 
 Value integer_or_real(long long a, long long b, char op) {
   long long result = 0;
@@ -215,7 +219,7 @@ class Parser {
       const std::size_t at = pos_;
       if (accept("//")) {
         value = arithmetic(value, unary(), 'f', at);
-      } else if (accept("*") ) {
+      } else if (accept("*")) {
         value = arithmetic(value, unary(), '*', at);
       } else if (accept("/")) {
         value = arithmetic(value, unary(), '/', at);
@@ -229,9 +233,9 @@ class Parser {
 
   static Value arithmetic(const Value& a, const Value& b, char op, std::size_t at) {
     if (a.kind == Value::Kind::text || b.kind == Value::Kind::text) {
-      throw ExpressionError(std::string("'") + (op == 'f' ? "//" : std::string(1, op)) +
-                                "' needs numbers, got text",
-                            at);
+      throw ExpressionError(
+          std::string("'") + (op == 'f' ? "//" : std::string(1, op)) + "' needs numbers, got text",
+          at);
     }
     const bool ints = integral(a) && integral(b);
     if (op == '+' || op == '-' || (op == '*' && ints)) {
@@ -296,7 +300,8 @@ class Parser {
     }
     if (integral(base) && integral(exponent) && as_integer(exponent) >= 0) {
       const double result = std::pow(base.number(), exponent.number());
-      if (std::abs(result) < 9.0e18) return Value::of_integer(static_cast<long long>(std::llround(result)));
+      if (std::abs(result) < 9.0e18)
+        return Value::of_integer(static_cast<long long>(std::llround(result)));
       return Value::of_real(result);
     }
     if (base.number() == 0.0 && exponent.number() < 0) {
@@ -318,7 +323,8 @@ class Parser {
     }
     if (c == '\'' || c == '"') return string_literal(c);
     if (std::isdigit(static_cast<unsigned char>(c)) ||
-        (c == '.' && pos_ + 1 < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_ + 1])))) {
+        (c == '.' && pos_ + 1 < text_.size() &&
+         std::isdigit(static_cast<unsigned char>(text_[pos_ + 1])))) {
       return number_literal();
     }
     if (is_name_start(c)) return name_or_call();
@@ -358,7 +364,8 @@ class Parser {
     const std::string literal = text_.substr(start, pos_ - start);
     if (!real) {
       long long value = 0;
-      const auto [ptr, error] = std::from_chars(literal.data(), literal.data() + literal.size(), value);
+      const auto [ptr, error] =
+          std::from_chars(literal.data(), literal.data() + literal.size(), value);
       if (error == std::errc()) return Value::of_integer(value);
     }
     double value = 0.0;
@@ -397,11 +404,12 @@ class Parser {
   static Value call(const std::string& name, const std::vector<Value>& args, std::size_t at) {
     const auto need = [&](std::size_t low, std::size_t high) {
       if (args.size() < low || args.size() > high) {
-        throw ExpressionError(name + "() takes " +
-                                  (low == high ? std::to_string(low)
-                                               : std::to_string(low) + " to " + std::to_string(high)) +
-                                  " argument(s), got " + std::to_string(args.size()),
-                              at);
+        throw ExpressionError(
+            name + "() takes " +
+                (low == high ? std::to_string(low)
+                             : std::to_string(low) + " to " + std::to_string(high)) +
+                " argument(s), got " + std::to_string(args.size()),
+            at);
       }
     };
     const auto x = [&](std::size_t i) {
@@ -412,10 +420,14 @@ class Parser {
     };
     using Unary = double (*)(double);
     static const std::pair<const char*, Unary> kMath[] = {
-        {"sin", [](double v) { return std::sin(v); }},   {"cos", [](double v) { return std::cos(v); }},
-        {"tan", [](double v) { return std::tan(v); }},   {"asin", [](double v) { return std::asin(v); }},
-        {"acos", [](double v) { return std::acos(v); }}, {"atan", [](double v) { return std::atan(v); }},
-        {"sqrt", [](double v) { return std::sqrt(v); }}, {"exp", [](double v) { return std::exp(v); }},
+        {"sin", [](double v) { return std::sin(v); }},
+        {"cos", [](double v) { return std::cos(v); }},
+        {"tan", [](double v) { return std::tan(v); }},
+        {"asin", [](double v) { return std::asin(v); }},
+        {"acos", [](double v) { return std::acos(v); }},
+        {"atan", [](double v) { return std::atan(v); }},
+        {"sqrt", [](double v) { return std::sqrt(v); }},
+        {"exp", [](double v) { return std::exp(v); }},
         {"log10", [](double v) { return std::log10(v); }},
         {"fabs", [](double v) { return std::fabs(v); }},
         {"radians", [](double v) { return v * std::numbers::pi / 180.0; }},
@@ -448,7 +460,7 @@ class Parser {
         const double scale = std::pow(10.0, x(1));
         return Value::of_real(std::nearbyint(v * scale) / scale);
       }
-      const double r = name == "floor" ? std::floor(v)
+      const double r = name == "floor"  ? std::floor(v)
                        : name == "ceil" ? std::ceil(v)
                        : name == "int"  ? std::trunc(v)
                                         : std::nearbyint(v);  // banker's rounding, as Python's
@@ -459,7 +471,9 @@ class Parser {
     }
     if (name == "abs") {
       need(1, 1);
-      if (integral(args[0])) return integer_or_real(0, as_integer(args[0]) < 0 ? -as_integer(args[0]) : as_integer(args[0]), '+');
+      if (integral(args[0]))
+        return integer_or_real(
+            0, as_integer(args[0]) < 0 ? -as_integer(args[0]) : as_integer(args[0]), '+');
       return Value::of_real(std::abs(x(0)));
     }
     if (name == "min" || name == "max") {

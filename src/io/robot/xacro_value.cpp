@@ -75,7 +75,8 @@ std::string to_text(const Value& value) {
   char buffer[64];
   const double magnitude = std::abs(x);
   if (magnitude != 0.0 && (magnitude < 1e-4 || magnitude >= 1e16)) {
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::scientific);
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::scientific);
     std::string text(buffer, result.ptr);
     const auto e = text.find('e');
     std::string mantissa = text.substr(0, e);

@@ -17,8 +17,7 @@ Node convert(const tinyxml2::XMLElement& element, const std::string& file) {
   for (const tinyxml2::XMLAttribute* a = element.FirstAttribute(); a; a = a->Next()) {
     node.attributes.emplace_back(a->Name(), a->Value());
   }
-  for (const tinyxml2::XMLNode* child = element.FirstChild(); child;
-       child = child->NextSibling()) {
+  for (const tinyxml2::XMLNode* child = element.FirstChild(); child; child = child->NextSibling()) {
     if (const tinyxml2::XMLElement* e = child->ToElement()) {
       node.children.push_back(convert(*e, file));
     } else if (const tinyxml2::XMLText* t = child->ToText()) {
@@ -38,9 +37,7 @@ void escape(const std::string& text, bool attribute, std::string& out) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
-      case '"':
-        out += attribute ? "&quot;" : "\"";
-        break;
+      case '"': out += attribute ? "&quot;" : "\""; break;
       default: out += c;
     }
   }
@@ -93,7 +90,8 @@ Node parse_text(const std::string& text, const std::string& file) {
   if (document.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
     const char* detail = document.ErrorStr();
     throw model::InputError(model::Diagnostic{
-        {file, document.ErrorLineNum(), 0}, "xml",
+        {file, document.ErrorLineNum(), 0},
+        "xml",
         std::string("is not well-formed XML: ") + (detail ? detail : "parse error"),
         "a robot description in XML (URDF or xacro)"});
   }

@@ -13,7 +13,7 @@ namespace rigdesign::io::xml {
 struct Node {
   enum class Kind { element, text };
   Kind kind = Kind::element;
-  std::string name;                                        ///< element tag, e.g. "xacro:macro"
+  std::string name;                                             ///< element tag, e.g. "xacro:macro"
   std::vector<std::pair<std::string, std::string>> attributes;  ///< in document order
   std::vector<Node> children;
   std::string text;  ///< a text node's content

@@ -19,8 +19,8 @@ struct RobotDescriptionRequest {
   std::map<std::string, std::string> environment;  ///< for $(optenv) / $(env), before the process's
   std::vector<std::string> package_paths;          ///< folders holding packages, absolute
   enum class Expander { automatic, builtin, external } expander = Expander::automatic;
-  bool load_meshes = true;         ///< false: poses only (collision meshes are not opened)
-  model::SourceLocation named_at;  ///< where the rig names the description
+  bool load_meshes = true;                  ///< false: poses only (collision meshes are not opened)
+  model::SourceLocation named_at;           ///< where the rig names the description
   std::string field = "robot.description";  ///< its field, for messages
 };
 
