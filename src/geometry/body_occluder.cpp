@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace rigdesign::geometry {
 namespace {
 
+// Azimuth bins of the outline's edge index (0.5 degree).
+constexpr int kOutlineBins = 720;
 // Sight lines shorter than this inside the body (m) are grazing contacts, not occlusion.
 constexpr double kGrazing = 1e-9;
 
@@ -58,41 +61,6 @@ bool overlaps_inside(const std::vector<model::Vec2>& polygon, const model::Vec2&
   return false;
 }
 
-// The farthest point along the ray at azimuth theta of the parts' horizontal projection.
-double outline_radius(const std::vector<model::BodyPart>& parts, double theta) {
-  const model::Vec2 u(std::cos(theta), std::sin(theta));
-  double farthest = 0.0;
-  for (const model::BodyPart& part : parts) {
-    if (part.cylinder) {
-      const model::Vec2& c = part.cylinder->centre;
-      const double along = u.dot(c);
-      const double square =
-          part.cylinder->radius * part.cylinder->radius - (c.squaredNorm() - along * along);
-      if (square >= 0) farthest = std::max(farthest, along + std::sqrt(square));
-      continue;
-    }
-    const model::TriangleMesh& mesh = part.triangles;
-    for (const auto& t : mesh.triangles) {
-      for (int i = 0; i < 3; ++i) {
-        const model::Vec2 a = mesh.vertices[t[i]].head<2>();
-        const model::Vec2 e = mesh.vertices[t[(i + 1) % 3]].head<2>() - a;
-        const double denominator = cross2(u, e);
-        if (std::abs(denominator) < 1e-15) {
-          // An edge along the ray: its end points lie on it when a is on the ray.
-          if (std::abs(cross2(a, u)) < 1e-12) {
-            farthest = std::max({farthest, a.dot(u), (a + e).dot(u)});
-          }
-          continue;
-        }
-        const double rho = cross2(a, e) / denominator;
-        const double along_edge = cross2(a, u) / denominator;
-        if (rho >= 0 && along_edge >= 0 && along_edge <= 1) farthest = std::max(farthest, rho);
-      }
-    }
-  }
-  return farthest;
-}
-
 }  // namespace
 
 void append_quadratic_roots(double a, double b, double c, std::vector<double>& roots) {
@@ -119,7 +87,44 @@ BodyOccluder::BodyOccluder(const model::RobotBody& body)
       height_(body.height),
       area_top_(body.area_top()),
       footprint_(body.footprint),
-      parts_(body.has_parts() ? &body.parts : nullptr) {}
+      parts_(body.has_parts() ? &body.parts : nullptr) {
+  if (parts_) bin_outline_edges();
+}
+
+void BodyOccluder::bin_outline_edges() {
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  outline_bins_.assign(kOutlineBins, {});
+  const double width = kTwoPi / kOutlineBins;
+  const auto wrap = [&](double angle) {
+    angle = std::fmod(angle, kTwoPi);
+    return angle < 0 ? angle + kTwoPi : angle;
+  };
+  for (const model::BodyPart& part : *parts_) {
+    const model::TriangleMesh& mesh = part.triangles;
+    for (const auto& t : mesh.triangles) {
+      for (int i = 0; i < 3; ++i) {
+        const Edge edge{mesh.vertices[t[i]].head<2>(), mesh.vertices[t[(i + 1) % 3]].head<2>()};
+        if (edge.a.norm() < 1e-12 || edge.b.norm() < 1e-12) {
+          for (auto& bin : outline_bins_) bin.push_back(edge);
+          continue;
+        }
+        // A segment not through the axis spans the shorter arc between its ends' azimuths.
+        double from = wrap(std::atan2(edge.a.y(), edge.a.x()));
+        double span = wrap(std::atan2(edge.b.y(), edge.b.x()) - from);
+        if (span > std::numbers::pi) {
+          from = wrap(from + span);
+          span = kTwoPi - span;
+        }
+        const int first = static_cast<int>(std::floor(from / width)) - 1;
+        const int last = static_cast<int>(std::floor((from + span) / width)) + 1;
+        for (int k = first; k <= last; ++k) {
+          outline_bins_[static_cast<std::size_t>((k % kOutlineBins + kOutlineBins) % kOutlineBins)]
+              .push_back(edge);
+        }
+      }
+    }
+  }
+}
 
 bool BodyOccluder::blocks(const model::Vec3& origin, const model::Vec3& point) const {
   if (parts_) return false;
@@ -220,8 +225,41 @@ bool BodyOccluder::contains(const model::Vec3& point) const {
   return point.head<2>().norm() < radius_ - kSurface;
 }
 
+// The farthest point along the ray at azimuth theta of the parts' horizontal projection.
+double BodyOccluder::outline_radius(double theta) const {
+  const model::Vec2 u(std::cos(theta), std::sin(theta));
+  double farthest = 0.0;
+  for (const model::BodyPart& part : *parts_) {
+    if (!part.cylinder) continue;
+    const model::Vec2& c = part.cylinder->centre;
+    const double along = u.dot(c);
+    const double square =
+        part.cylinder->radius * part.cylinder->radius - (c.squaredNorm() - along * along);
+    if (square >= 0) farthest = std::max(farthest, along + std::sqrt(square));
+  }
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  double wrapped = std::fmod(theta, kTwoPi);
+  if (wrapped < 0) wrapped += kTwoPi;
+  const int bin = std::clamp(static_cast<int>(wrapped / (kTwoPi / kOutlineBins)), 0, kOutlineBins - 1);
+  for (const Edge& edge : outline_bins_[static_cast<std::size_t>(bin)]) {
+    const model::Vec2 e = edge.b - edge.a;
+    const double denominator = cross2(u, e);
+    if (std::abs(denominator) < 1e-15) {
+      // An edge along the ray: its end points lie on it when a is on the ray.
+      if (std::abs(cross2(edge.a, u)) < 1e-12) {
+        farthest = std::max({farthest, edge.a.dot(u), edge.b.dot(u)});
+      }
+      continue;
+    }
+    const double rho = cross2(edge.a, e) / denominator;
+    const double along_edge = cross2(edge.a, u) / denominator;
+    if (rho >= 0 && along_edge >= 0 && along_edge <= 1) farthest = std::max(farthest, rho);
+  }
+  return farthest;
+}
+
 double BodyOccluder::radius_at(double theta) const {
-  if (parts_) return outline_radius(*parts_, theta);
+  if (parts_) return outline_radius(theta);
   if (footprint_.empty()) return radius_;
   const model::Vec2 far = model::Vec2(std::cos(theta), std::sin(theta)) * (2 * radius_ + 1.0);
   std::vector<double> crossings;

@@ -1,7 +1,8 @@
-// Coverage speed on the UR Cleaner (5 sensors), 360 angles, SC complete + floor:
-// the exact path (CGAL polygons), the raster path (column intervals into bitsets), and what
-// one candidate rig costs the selection search once each sensor's rasters are cached
-// (OR + popcount). Run through scripts/bench.sh; Google Benchmark prints medians.
+// Coverage speed on the UR Cleaner (5 sensors, cylinder body) and the TurtleBot 4 (2 sensors,
+// its collision meshes as the body), 360 angles, SC complete + floor: the exact path (CGAL
+// polygons), the raster path (column intervals into bitsets), and what one candidate rig
+// costs the selection search once each sensor's rasters are cached (OR + popcount). Run
+// through scripts/bench.sh; Google Benchmark prints medians.
 #include <benchmark/benchmark.h>
 
 #include <numbers>
@@ -22,10 +23,11 @@ constexpr double kCell = metrics::CoverageSettings{}.raster_cell;  // [m] the de
 
 struct UrCleaner {
   model::SensorLibrary library = io::load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
-  model::Rig rig = io::load_rig(RIGDESIGN_SOURCE_DIR "/rigs/ur_cleaner.yaml");
+  model::Rig rig;
   geometry::BodyOccluder body{rig.body};
   std::vector<geometry::MountedFov> fovs;
-  UrCleaner() {
+  explicit UrCleaner(const std::string& file)
+      : rig(io::load_rig(RIGDESIGN_SOURCE_DIR "/rigs/" + file)), body(rig.body) {
     for (const model::Mount& mount : rig.mounts) {
       fovs.emplace_back(*library.find(mount.sensor_id)->find_mode(mount.mode_id),
                         mount.T_robot_sensor, body);
@@ -38,7 +40,12 @@ struct UrCleaner {
 };
 
 const UrCleaner& ur_cleaner() {
-  static const UrCleaner instance;
+  static const UrCleaner instance("ur_cleaner.yaml");
+  return instance;
+}
+
+const UrCleaner& turtlebot4() {
+  static const UrCleaner instance("turtlebot4.yaml");
   return instance;
 }
 
@@ -47,8 +54,7 @@ geometry::RasterGrid grid_for(const geometry::SectionFrame& frame) {
           static_cast<int>(std::ceil(frame.h / kCell))};
 }
 
-void BM_ExactSweep(benchmark::State& state) {
-  const UrCleaner& rig = ur_cleaner();
+void exact_sweep(benchmark::State& state, const UrCleaner& rig) {
   for (auto _ : state) {
     double total = 0.0;
     for (int step = 0; step < kAngles; ++step) {
@@ -77,9 +83,14 @@ double raster_sweep(const UrCleaner& rig, int first_step, int step_stride) {
   return total;
 }
 
+void BM_ExactSweep(benchmark::State& state) { exact_sweep(state, ur_cleaner()); }
 void BM_RasterSweep(benchmark::State& state) {
-  const UrCleaner& rig = ur_cleaner();
-  for (auto _ : state) benchmark::DoNotOptimize(raster_sweep(rig, 0, 1));
+  for (auto _ : state) benchmark::DoNotOptimize(raster_sweep(ur_cleaner(), 0, 1));
+}
+// The TurtleBot 4's body: its collision meshes (the shell alone has 43,970 triangles).
+void BM_TurtleBot4ExactSweep(benchmark::State& state) { exact_sweep(state, turtlebot4()); }
+void BM_TurtleBot4RasterSweep(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(raster_sweep(turtlebot4(), 0, 1));
 }
 
 // The same sweep with the angles shared between two threads (this machine has two cores).
@@ -123,6 +134,8 @@ void BM_ComputeCoverageAll(benchmark::State& state) {
 
 BENCHMARK(BM_ExactSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
 BENCHMARK(BM_RasterSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
+BENCHMARK(BM_TurtleBot4ExactSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
+BENCHMARK(BM_TurtleBot4RasterSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
 BENCHMARK(BM_RasterSweepTwoThreads)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()

@@ -49,6 +49,15 @@ class BodyOccluder {
   double area_top_ = 0.0;
   std::vector<model::Vec2> footprint_;  // empty for a cylinder
   const std::vector<model::BodyPart>* parts_ = nullptr;
+  // The parts' projected triangle edges, binned by the azimuths they span about the axis, so
+  // that the outline along one azimuth tries only the edges that can cross it.
+  struct Edge {
+    model::Vec2 a;
+    model::Vec2 b;
+  };
+  std::vector<std::vector<Edge>> outline_bins_;
+  void bin_outline_edges();
+  double outline_radius(double theta) const;
 };
 
 /// Real roots of a t^2 + b t + c = 0 (one root when a is negligible) appended to `roots`.
