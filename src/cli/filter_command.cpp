@@ -36,7 +36,7 @@ struct FilterOptions {
   std::string pipeline = "P4";
   std::string rig;
   std::string mount;
-  std::string frame = "optical";
+  std::string frame = "auto";
   std::string out;
   std::string write_loads;
   int repeat = 10;
@@ -174,8 +174,12 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
       throw model::InputError(model::Diagnostic{
           {path, 0, 0}, "data", "has no finite point to filter", "a non-empty cloud"});
     }
-    if (mount != nullptr && options.frame != "robot") {
-      const model::Pose3 T_robot_cloud = options.frame == "optical"
+    // Clouds arrive as drivers publish them (and as `simulate --frame sensor` writes them):
+    // a camera's in its optical frame, a lidar's in its x-forward frame.
+    const std::string frame =
+        options.frame != "auto" ? options.frame : (mode && mode->is_camera() ? "optical" : "sensor");
+    if (mount != nullptr && frame != "robot") {
+      const model::Pose3 T_robot_cloud = frame == "optical"
                                              ? mount->T_robot_sensor * model::T_sensor_optical()
                                              : mount->T_robot_sensor;
       cloud = model::transform_cloud(cloud, T_robot_cloud);
@@ -263,8 +267,9 @@ Command setup_filter(CLI::App& parent) {
   app->add_option("--mount", options->mount,
                   "Mount id in --rig: moves the clouds into the robot frame");
   app->add_option("--frame", options->frame,
-                  "Frame the clouds are in (with --mount; default optical)")
-      ->check(CLI::IsMember({"optical", "sensor", "robot"}));
+                  "Frame the clouds are in (with --mount): auto (default: optical for a camera, sensor for "
+                  "a lidar, as drivers publish them), optical, sensor or robot")
+      ->check(CLI::IsMember({"auto", "optical", "sensor", "robot"}));
   app->add_option("--repeat", options->repeat,
                   "Runs per cloud for the timing statistics (default 10)");
   app->add_option("--out", options->out, "Write the filtered clouds (binary PCD) here");

@@ -1,5 +1,7 @@
 #include "rigdesign/sim/sensor_simulator.hpp"
 
+#include "rigdesign/model/optical_frame.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -90,6 +92,11 @@ model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode
   }
   if (settings.sensor_frame) {
     cloud.origin = model::Point3f::Zero();
+    if (mode.is_camera()) {  // as camera drivers publish: the optical frame
+      const Eigen::Matrix3f R_optical_sensor =
+          model::T_sensor_optical().linear().transpose().cast<float>();
+      for (model::Point3f& p : cloud.points) p = R_optical_sensor * p;
+    }
   } else {
     cloud.origin = origin.cast<float>();
     cloud.orientation = Eigen::Quaternionf(R_world_sensor.cast<float>());
