@@ -16,6 +16,11 @@ for rig in ur_cleaner elektron delivery_amr; do
   rm -rf "renders/$rig"
   ./build/release/src/rigdesign coverage "rigs/$rig.yaml" --out "renders/$rig" --angles 0,45,90,180
 done
+# Real robots from their descriptions: the TurtleBot 4 (58 deg: behind a tower standoff, as
+# the RPLIDAR sees it) and the Jackal.
+rm -rf renders/turtlebot4 renders/jackal
+./build/release/src/rigdesign coverage rigs/turtlebot4.yaml --out renders/turtlebot4 --angles 0,58,180
+./build/release/src/rigdesign coverage rigs/jackal.yaml --out renders/jackal --angles 0,90,180
 # Paper 1's Fig. 12: the four costmap variants on the wall-following scenario (final frames).
 rm -rf renders/costmap
 ./build/release/src/rigdesign costmap --rig rigs/ur_cleaner.yaml --scenario wall_following --compare \

@@ -298,7 +298,40 @@ model::TriangleMesh fov_mesh(const model::SensorMode& mode, const model::Pose3& 
   return ShellBuilder(grid, T_robot_sensor).build(near_radius, far_radius);
 }
 
+// A description's collision parts as drawn: triangles as they are, vertical cylinders as
+// prisms of kCylinderSides.
+model::TriangleMesh parts_mesh(const std::vector<model::BodyPart>& parts) {
+  model::TriangleMesh mesh;
+  for (const model::BodyPart& part : parts) {
+    if (!part.cylinder) {
+      mesh.append(part.triangles);
+      continue;
+    }
+    const model::VerticalCylinder& c = *part.cylinder;
+    const int base = static_cast<int>(mesh.vertices.size());
+    for (int i = 0; i < kCylinderSides; ++i) {
+      const double angle = 2 * kPi * i / kCylinderSides;
+      const model::Vec2 p = c.centre + c.radius * model::Vec2(std::cos(angle), std::sin(angle));
+      mesh.vertices.emplace_back(p.x(), p.y(), c.z_min);
+      mesh.vertices.emplace_back(p.x(), p.y(), c.z_max);
+    }
+    mesh.vertices.emplace_back(c.centre.x(), c.centre.y(), c.z_min);
+    mesh.vertices.emplace_back(c.centre.x(), c.centre.y(), c.z_max);
+    const int bottom = base + 2 * kCylinderSides;
+    for (int i = 0; i < kCylinderSides; ++i) {
+      const int a = base + 2 * i;
+      const int b = base + 2 * ((i + 1) % kCylinderSides);
+      mesh.triangles.push_back({a, b, b + 1});
+      mesh.triangles.push_back({a, b + 1, a + 1});
+      mesh.triangles.push_back({bottom, b, a});
+      mesh.triangles.push_back({bottom + 1, a + 1, b + 1});
+    }
+  }
+  return mesh;
+}
+
 model::TriangleMesh body_mesh(const model::RobotBody& body) {
+  if (body.has_parts()) return parts_mesh(body.parts);
   const std::vector<model::Vec2> outline = counter_clockwise_outline(body);
   const int count = static_cast<int>(outline.size());
   model::TriangleMesh mesh;
