@@ -1,6 +1,7 @@
 #include "inputs.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "rigdesign/geometry/mount_placement.hpp"
@@ -62,6 +63,17 @@ RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensor
   if (!wanted_requirements.empty() && requirements_readable) {
     inputs.requirements =
         load_collecting([&] { return io::load_requirements(wanted_requirements); }, diagnostics);
+  }
+  // The requirements state how high the area to perceive reaches; a rig's own value yields.
+  if (inputs.requirements && inputs.requirements->area_height) {
+    const double wanted = *inputs.requirements->area_height;
+    if (inputs.rig.body.area_height && std::abs(*inputs.rig.body.area_height - wanted) > 1e-9) {
+      diagnostics.warning(inputs.requirements->area_height_where, "area_height",
+                          "overrides the rig's area_height " +
+                              model::format_number(*inputs.rig.body.area_height) + " m",
+                          "one area_height, in the requirements");
+    }
+    inputs.rig.body.area_height = wanted;
   }
   if (library) {
     inputs.library = std::move(*library);

@@ -117,3 +117,16 @@ TEST_CASE("a camera mounted by its optical frame looks where the x-forward frame
         std::string::npos);
   }
 }
+
+TEST_CASE("the requirements state the top of the area to perceive, over the rig's") {
+  TempFolder folder;
+  const std::string requirements =
+      folder.write("needs.yaml", "name: low\narea_height: 0.15\nrange: {distance: 2.0}\n");
+  const CliResult result =
+      run_cli({"metrics", source_path("rigs/turtlebot4.yaml"), "--requirements", requirements});
+  INFO(result.out << result.err);
+  CHECK(result.exit_code == 0);
+  CHECK(result.out.find("z in [0, 0.15] m") != std::string::npos);
+  // The rig says 0.2: the requirements win, and the report says so.
+  CHECK(result.out.find("area_height: overrides the rig's area_height 0.2 m") != std::string::npos);
+}

@@ -1,6 +1,8 @@
 // The built-in xacro expander and its expressions. Expected values of expressions are
 // Python 3's (xacro evaluates ${...} with Python), computed with python3 and pasted here.
 #include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
 
 #include "rigdesign/io/robot/robot_description_loader.hpp"
 #include "rigdesign/io/robot/xacro_expression.hpp"
@@ -214,5 +216,51 @@ TEST_CASE("bad robot descriptions: exit 2, file and line, nothing written") {
     folder.write("e.urdf.xacro", head + "<xacro:include filename=\"f.xacro\"/></robot>");
     folder.write("f.xacro", head + "\n<xacro:include filename=\"e.urdf.xacro\"/></robot>");
     check_fails("e.urdf.xacro", "f.xacro:3", "include cycle");
+  }
+}
+
+TEST_CASE("ROS's xacro is used when it is on PATH, with the rig's arguments and environment") {
+  TempFolder folder;
+  // A stand-in for ROS's xacro: prints a URDF whose link names carry the argument and the
+  // environment variable it was given, so the test sees both arrive.
+  const std::string script = folder.write(
+      "bin/xacro",
+      "#!/bin/sh\nfor a in \"$@\"; do case \"$a\" in side:=*) side=${a#side:=};; esac; done\n"
+      "echo \"<robot name='r'><link name='base_footprint'/><link name='${side}_$MOUNT'/>"
+      "<joint name='j' type='fixed'><parent link='base_footprint'/><child link='${side}_$MOUNT'/>"
+      "<origin xyz='0 0 0.5'/></joint></robot>\"\n");
+  std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+  const std::string description =
+      folder.write("robot.urdf.xacro",
+                   "<robot name=\"r\" xmlns:xacro=\"http://ros.org/wiki/xacro\">"
+                   "<link name=\"base_footprint\"/></robot>");
+  // PATH gets the stand-in first, and its old value back however the test ends.
+  struct PathGuard {
+    std::string saved = std::getenv("PATH") ? std::getenv("PATH") : "";
+    explicit PathGuard(const std::string& first) {
+      ::setenv("PATH", (first + ":" + saved).c_str(), 1);
+    }
+    ~PathGuard() { ::setenv("PATH", saved.c_str(), 1); }
+    PathGuard(const PathGuard&) = delete;
+    PathGuard& operator=(const PathGuard&) = delete;
+  } path_guard(folder.path() + "/bin");
+  io::RobotDescriptionRequest request;
+  request.path = description;
+  request.args = {{"side", "left"}};
+  request.environment = {{"MOUNT", "mast"}};
+  const auto run = [&] { return io::load_robot_description(request); };
+  const model::RobotDescription robot = run();
+  REQUIRE(robot.T_root_link.count("left_mast") == 1);
+  CHECK(robot.T_base("base_footprint", "left_mast").value().translation().z() == 0.5);
+  SECTION("its failure is reported with its own message") {
+    folder.write("bin/xacro",
+                 "#!/bin/sh\necho 'undefined substitution argument gazebo' >&2\nexit 2\n");
+    std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+    const std::string message = error_of([&] { run(); });
+    CHECK(message.find("undefined substitution argument gazebo") != std::string::npos);
+  }
+  SECTION("expander: builtin ignores it") {
+    request.expander = io::RobotDescriptionRequest::Expander::builtin;
+    CHECK(run().T_root_link.size() == 1);  // the file's own link, not the stand-in's two
   }
 }

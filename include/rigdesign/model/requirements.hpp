@@ -35,6 +35,9 @@ struct Requirements {
   std::optional<double> body_radius;  ///< [m]
   std::optional<double> body_height;  ///< [m]
   SourceLocation body_where;
+  /// Top of the area to perceive [m]; the body's height when not stated.
+  std::optional<double> area_height;
+  SourceLocation area_height_where;
   // R2: directions of motion.
   std::vector<SectorRequirement> sectors;
   // R3: range and a rate the application needs regardless of motion.

@@ -88,6 +88,11 @@ model::Requirements load_requirements(const std::string& path) {
     requirements.body_height = io::positive(*body, "height", Need::required, "metres, > 0");
     body->reject_unknown_keys();
   }
+  if (top.has("area_height")) {
+    requirements.area_height_where = top.location("area_height");
+    requirements.area_height = io::positive(top, "area_height", Need::required,
+                                            "the top of the area to perceive in metres, > 0");
+  }
   std::set<std::string> sector_names;
   for (MapReader& reader : top.maps("sectors", Need::optional)) {  // R2
     model::SectorRequirement sector = read_sector(reader);
