@@ -157,39 +157,26 @@ class Parser {
     return compared ? Value::of_boolean(result) : left;
   }
 
-  static bool compare(const Value& a, const Value& b, const std::string& op, std::size_t at) {
-    if (a.kind == Value::Kind::text || b.kind == Value::Kind::text) {
-      if (a.kind != b.kind) {
-        if (op == "==") return false;
-        if (op == "!=") return true;
-        throw ExpressionError("cannot order text and a number with '" + op + "'", at);
-      }
-      const int c = a.text.compare(b.text);
-      if (op == "==") return c == 0;
-      if (op == "!=") return c != 0;
-      if (op == "<") return c < 0;
-      if (op == ">") return c > 0;
-      if (op == "<=") return c <= 0;
-      return c >= 0;
-    }
-    if (integral(a) && integral(b)) {
-      const long long x = as_integer(a);
-      const long long y = as_integer(b);
-      if (op == "==") return x == y;
-      if (op == "!=") return x != y;
-      if (op == "<") return x < y;
-      if (op == ">") return x > y;
-      if (op == "<=") return x <= y;
-      return x >= y;
-    }
-    const double x = a.number();
-    const double y = b.number();
+  // `op` applied to two values of one ordered type.
+  template <typename T>
+  static bool holds(const T& x, const T& y, const std::string& op) {
     if (op == "==") return x == y;
     if (op == "!=") return x != y;
     if (op == "<") return x < y;
     if (op == ">") return x > y;
     if (op == "<=") return x <= y;
     return x >= y;
+  }
+
+  static bool compare(const Value& a, const Value& b, const std::string& op, std::size_t at) {
+    if (a.kind == Value::Kind::text || b.kind == Value::Kind::text) {
+      if (a.kind == b.kind) return holds(a.text, b.text, op);
+      if (op == "==") return false;
+      if (op == "!=") return true;
+      throw ExpressionError("cannot order text and a number with '" + op + "'", at);
+    }
+    if (integral(a) && integral(b)) return holds(as_integer(a), as_integer(b), op);
+    return holds(a.number(), b.number(), op);
   }
 
   Value sum() {
