@@ -85,9 +85,15 @@ TEST_CASE("Jackal: default arguments and accessories chosen by environment varia
                                                 {{"JACKAL_LASER", "1"}, {"JACKAL_LASER_3D", "1"}});
   CHECK(equipped.T_root_link.count("front_laser") == 1);
   CHECK(equipped.T_root_link.count("velodyne") == 1);
-  // The VLP-16 sits on a tower: mid_mount, then the vlp16_mount macro's plate 0.1 m up
-  // (accessories/vlp16_mount.urdf.xacro: height:=0.1), so above z = 0.184 + 0.1.
-  CHECK(equipped.T_base("base_link", "velodyne")->translation().z() > 0.284 - 1e-12);
+  // The LMS1xx on the upright bracket: front_laser_mount at front_mount, the scan frame
+  // 0.149 m up (accessories/sick_lms1xx_upright_mount.urdf.xacro:57, the lms1xx macro names the
+  // link "front_laser").
+  check_translation(equipped, "base_link", "front_laser", {0.12, 0, 0.184 + 0.149});
+  // The VLP-16 on its tower: the plate height:=0.1 above mid_mount
+  // (accessories/vlp16_mount.urdf.xacro:91), the scan frame 0.0377 m above its base
+  // (velodyne_description/urdf/VLP-16.urdf.xacro:38-39, name:=velodyne).
+  check_translation(equipped, "base_link", "mid_vlp16_plate", {0, 0, 0.184 + 0.1});
+  check_translation(equipped, "base_link", "velodyne", {0, 0, 0.184 + 0.1 + 0.0377});
 }
 
 TEST_CASE("a camera mounted by its optical frame looks where the x-forward frame looks") {
