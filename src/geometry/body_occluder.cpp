@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "rigdesign/model/units.hpp"
+
 namespace rigdesign::geometry {
 namespace {
 
@@ -95,10 +97,6 @@ void BodyOccluder::bin_outline_edges() {
   constexpr double kTwoPi = 2 * std::numbers::pi;
   outline_bins_.assign(kOutlineBins, {});
   const double width = kTwoPi / kOutlineBins;
-  const auto wrap = [&](double angle) {
-    angle = std::fmod(angle, kTwoPi);
-    return angle < 0 ? angle + kTwoPi : angle;
-  };
   for (const model::BodyPart& part : *parts_) {
     const model::TriangleMesh& mesh = part.triangles;
     for (const auto& t : mesh.triangles) {
@@ -109,10 +107,10 @@ void BodyOccluder::bin_outline_edges() {
           continue;
         }
         // A segment not through the axis spans the shorter arc between its ends' azimuths.
-        double from = wrap(std::atan2(edge.a.y(), edge.a.x()));
-        double span = wrap(std::atan2(edge.b.y(), edge.b.x()) - from);
+        double from = model::wrap_angle(std::atan2(edge.a.y(), edge.a.x()));
+        double span = model::wrap_angle(std::atan2(edge.b.y(), edge.b.x()) - from);
         if (span > std::numbers::pi) {
-          from = wrap(from + span);
+          from = model::wrap_angle(from + span);
           span = kTwoPi - span;
         }
         const int first = static_cast<int>(std::floor(from / width)) - 1;
@@ -238,9 +236,8 @@ double BodyOccluder::outline_radius(double theta) const {
     if (square >= 0) farthest = std::max(farthest, along + std::sqrt(square));
   }
   constexpr double kTwoPi = 2 * std::numbers::pi;
-  double wrapped = std::fmod(theta, kTwoPi);
-  if (wrapped < 0) wrapped += kTwoPi;
-  const int bin = std::clamp(static_cast<int>(wrapped / (kTwoPi / kOutlineBins)), 0, kOutlineBins - 1);
+  const int bin = std::clamp(static_cast<int>(model::wrap_angle(theta) / (kTwoPi / kOutlineBins)),
+                             0, kOutlineBins - 1);
   for (const Edge& edge : outline_bins_[static_cast<std::size_t>(bin)]) {
     const model::Vec2 e = edge.b - edge.a;
     const double denominator = cross2(u, e);

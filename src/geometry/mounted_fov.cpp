@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "rigdesign/model/units.hpp"
+
 namespace rigdesign::geometry {
 namespace {
 
@@ -144,9 +146,7 @@ void MountedFov::bound_azimuths() {
 
 bool MountedFov::may_reach_azimuth(double theta) const {
   if (azimuth_span_ >= 2 * std::numbers::pi) return true;
-  const double offset =
-      std::fmod(std::fmod(theta - azimuth_from_, 2 * std::numbers::pi) + 2 * std::numbers::pi,
-                2 * std::numbers::pi);
+  const double offset = model::wrap_angle(theta - azimuth_from_);
   return offset <= azimuth_span_ + 1e-9;
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "rigdesign/model/units.hpp"
+
 namespace rigdesign::geometry {
 namespace {
 
@@ -13,11 +15,6 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr int kAzimuthBins = 720;
 // Shadow pieces shorter than this (line parameter) are grazing contacts, not occlusion.
 constexpr double kPiece = 1e-12;
-
-double wrap(double angle) {
-  angle = std::fmod(angle, kTwoPi);
-  return angle < 0 ? angle + kTwoPi : angle;
-}
 
 // Moller-Trumbore: whether the ray o + s d (s > 0) crosses triangle abc.
 bool ray_crosses(const model::Vec3& o, const model::Vec3& d, const model::Vec3& a,
@@ -127,8 +124,8 @@ void SolidShadow::bin_by_azimuth(std::size_t index, const model::Vec3 corners[3]
     const model::Vec2 corner = corners[i].head<2>();
     const model::Vec2 ray = corner - origin_.head<2>();
     if (corner.norm() < 1e-9) everywhere = true;
-    azimuths.push_back(wrap(std::atan2(corner.y(), corner.x())));
-    if (ray.norm() > 1e-12) azimuths.push_back(wrap(std::atan2(ray.y(), ray.x())));
+    azimuths.push_back(model::wrap_angle(std::atan2(corner.y(), corner.x())));
+    if (ray.norm() > 1e-12) azimuths.push_back(model::wrap_angle(std::atan2(ray.y(), ray.x())));
   }
   double from = 0.0;
   double span = kTwoPi;
@@ -161,7 +158,8 @@ void SolidShadow::bin_by_azimuth(std::size_t index, const model::Vec3 corners[3]
 
 const std::vector<int>& SolidShadow::candidates(std::optional<double> section_azimuth) const {
   if (!section_azimuth) return all_;
-  const int bin = static_cast<int>(std::floor(wrap(*section_azimuth) / (kTwoPi / kAzimuthBins)));
+  const int bin =
+      static_cast<int>(std::floor(model::wrap_angle(*section_azimuth) / (kTwoPi / kAzimuthBins)));
   return bins_[static_cast<std::size_t>(std::clamp(bin, 0, kAzimuthBins - 1))];
 }
 

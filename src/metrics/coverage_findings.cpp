@@ -12,12 +12,6 @@ bool limits(const Limiting& limiting, const std::string& mount_id) {
          limiting.mounts.end();
 }
 
-std::string join(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
-  return text;
-}
-
 }  // namespace
 
 std::vector<model::Diagnostic> coverage_findings(const model::Rig& rig,
@@ -37,7 +31,8 @@ std::vector<model::Diagnostic> coverage_findings(const model::Rig& rig,
           mount.pose_where, "mounts[" + std::to_string(i) + "]",
           "mount '" + mount.id + "' sees 0 % of the area to perceive (rho in [r, d], z in [0, " +
               model::format_number(coverage.height) + "] m)" +
-              (set.empty() ? std::string() : " but sets " + join(set) + " for the whole rig"),
+              (set.empty() ? std::string()
+                           : " but sets " + model::join(set) + " for the whole rig"),
           "a pose that looks into the area, or a different area_height", model::Severity::warning);
     }
   }

@@ -272,72 +272,34 @@ std::vector<std::array<int, 3>> triangulate(const std::vector<model::Vec2>& poly
   return triangles;
 }
 
+std::vector<model::Vec2> circle_outline(const model::Vec2& centre, double radius) {
+  std::vector<model::Vec2> circle;
+  circle.reserve(kCylinderSides);
+  for (int i = 0; i < kCylinderSides; ++i) {
+    const double angle = 2 * kPi * i / kCylinderSides;
+    circle.push_back(centre + radius * model::Vec2(std::cos(angle), std::sin(angle)));
+  }
+  return circle;
+}
+
 std::vector<model::Vec2> counter_clockwise_outline(const model::RobotBody& body) {
   if (!body.footprint.empty()) {
     std::vector<model::Vec2> outline = body.footprint;
     if (model::signed_area(outline) < 0) std::reverse(outline.begin(), outline.end());
     return outline;
   }
-  std::vector<model::Vec2> circle;
-  circle.reserve(kCylinderSides);
-  for (int i = 0; i < kCylinderSides; ++i) {
-    const double angle = 2 * kPi * i / kCylinderSides;
-    circle.emplace_back(body.radius * std::cos(angle), body.radius * std::sin(angle));
-  }
-  return circle;
+  return circle_outline(model::Vec2::Zero(), body.radius);
 }
 
-}  // namespace
-
-model::TriangleMesh fov_mesh(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
-                             double truncate_at) {
-  const double near_radius = std::max(0.0, mode.min_range);
-  const double far_radius = std::min(mode.max_range, truncate_at);
-  if (!(far_radius > near_radius)) return {};
-  const AngleGrid grid = angle_grid(mode.fov);
-  return ShellBuilder(grid, T_robot_sensor).build(near_radius, far_radius);
-}
-
-// A description's collision parts as drawn: triangles as they are, vertical cylinders as
-// prisms of kCylinderSides.
-model::TriangleMesh parts_mesh(const std::vector<model::BodyPart>& parts) {
-  model::TriangleMesh mesh;
-  for (const model::BodyPart& part : parts) {
-    if (!part.cylinder) {
-      mesh.append(part.triangles);
-      continue;
-    }
-    const model::VerticalCylinder& c = *part.cylinder;
-    const int base = static_cast<int>(mesh.vertices.size());
-    for (int i = 0; i < kCylinderSides; ++i) {
-      const double angle = 2 * kPi * i / kCylinderSides;
-      const model::Vec2 p = c.centre + c.radius * model::Vec2(std::cos(angle), std::sin(angle));
-      mesh.vertices.emplace_back(p.x(), p.y(), c.z_min);
-      mesh.vertices.emplace_back(p.x(), p.y(), c.z_max);
-    }
-    mesh.vertices.emplace_back(c.centre.x(), c.centre.y(), c.z_min);
-    mesh.vertices.emplace_back(c.centre.x(), c.centre.y(), c.z_max);
-    const int bottom = base + 2 * kCylinderSides;
-    for (int i = 0; i < kCylinderSides; ++i) {
-      const int a = base + 2 * i;
-      const int b = base + 2 * ((i + 1) % kCylinderSides);
-      mesh.triangles.push_back({a, b, b + 1});
-      mesh.triangles.push_back({a, b + 1, a + 1});
-      mesh.triangles.push_back({bottom, b, a});
-      mesh.triangles.push_back({bottom + 1, a + 1, b + 1});
-    }
-  }
-  return mesh;
-}
-
-model::TriangleMesh body_mesh(const model::RobotBody& body) {
-  if (body.has_parts()) return parts_mesh(body.parts);
-  const std::vector<model::Vec2> outline = counter_clockwise_outline(body);
+// A vertical prism over a counter-clockwise `outline` from z_low to z_high, closed by its
+// floor and top faces, wound outward.
+model::TriangleMesh prism_mesh(const std::vector<model::Vec2>& outline, double z_low,
+                               double z_high) {
   const int count = static_cast<int>(outline.size());
   model::TriangleMesh mesh;
   if (count < 3) return mesh;
   // Vertices 0..count-1 on the floor, count..2*count-1 on the top, in outline order.
-  for (const double z : {0.0, body.height}) {
+  for (const double z : {z_low, z_high}) {
     for (const model::Vec2& corner : outline) mesh.vertices.emplace_back(corner.x(), corner.y(), z);
   }
   for (const auto& [a, b, c] : triangulate(outline)) {
@@ -351,6 +313,37 @@ model::TriangleMesh body_mesh(const model::RobotBody& body) {
     mesh.triangles.push_back({i, count + next, count + i});
   }
   return mesh;
+}
+
+// A description's collision parts as drawn: triangles as they are, vertical cylinders as
+// prisms of kCylinderSides.
+model::TriangleMesh parts_mesh(const std::vector<model::BodyPart>& parts) {
+  model::TriangleMesh mesh;
+  for (const model::BodyPart& part : parts) {
+    if (!part.cylinder) {
+      mesh.append(part.triangles);
+      continue;
+    }
+    const model::VerticalCylinder& c = *part.cylinder;
+    mesh.append(prism_mesh(circle_outline(c.centre, c.radius), c.z_min, c.z_max));
+  }
+  return mesh;
+}
+
+}  // namespace
+
+model::TriangleMesh fov_mesh(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
+                             double truncate_at) {
+  const double near_radius = std::max(0.0, mode.min_range);
+  const double far_radius = std::min(mode.max_range, truncate_at);
+  if (!(far_radius > near_radius)) return {};
+  const AngleGrid grid = angle_grid(mode.fov);
+  return ShellBuilder(grid, T_robot_sensor).build(near_radius, far_radius);
+}
+
+model::TriangleMesh body_mesh(const model::RobotBody& body) {
+  if (body.has_parts()) return parts_mesh(body.parts);
+  return prism_mesh(counter_clockwise_outline(body), 0.0, body.height);
 }
 
 }  // namespace rigdesign::render
