@@ -31,18 +31,27 @@ bool inside_polygon(const std::vector<model::Vec2>& polygon, const model::Vec2& 
   return inside;
 }
 
+// Where the lines a + s d and p + t e meet: false when they are parallel.
+bool line_crossing(const model::Vec2& a, const model::Vec2& d, const model::Vec2& p,
+                   const model::Vec2& e, double& s, double& t) {
+  const double denominator = cross2(d, e);
+  if (std::abs(denominator) < 1e-15) return false;
+  s = cross2(p - a, e) / denominator;
+  t = cross2(p - a, d) / denominator;
+  return true;
+}
+
 // Parameters s in [0, 1] where the 2D segment a + s (b - a) crosses the polygon's edges.
 void edge_crossings(const std::vector<model::Vec2>& polygon, const model::Vec2& a,
                     const model::Vec2& b, std::vector<double>& crossings) {
-  const model::Vec2 d = b - a;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const model::Vec2& p = polygon[i];
-    const model::Vec2 e = polygon[(i + 1) % polygon.size()] - p;
-    const double denominator = cross2(d, e);
-    if (std::abs(denominator) < 1e-15) continue;
-    const double s = cross2(p - a, e) / denominator;
-    const double along_edge = cross2(p - a, d) / denominator;
-    if (s >= 0 && s <= 1 && along_edge >= 0 && along_edge <= 1) crossings.push_back(s);
+    double s = 0.0;
+    double along_edge = 0.0;
+    if (line_crossing(a, b - a, p, polygon[(i + 1) % polygon.size()] - p, s, along_edge) &&
+        s >= 0 && s <= 1 && along_edge >= 0 && along_edge <= 1) {
+      crossings.push_back(s);
+    }
   }
 }
 
@@ -239,17 +248,15 @@ double BodyOccluder::outline_radius(double theta) const {
   const int bin = std::clamp(static_cast<int>(model::wrap_angle(theta) / (kTwoPi / kOutlineBins)),
                              0, kOutlineBins - 1);
   for (const Edge& edge : outline_bins_[static_cast<std::size_t>(bin)]) {
-    const model::Vec2 e = edge.b - edge.a;
-    const double denominator = cross2(u, e);
-    if (std::abs(denominator) < 1e-15) {
+    double rho = 0.0;
+    double along_edge = 0.0;
+    if (!line_crossing(model::Vec2::Zero(), u, edge.a, edge.b - edge.a, rho, along_edge)) {
       // An edge along the ray: its end points lie on it when a is on the ray.
       if (std::abs(cross2(edge.a, u)) < 1e-12) {
         farthest = std::max({farthest, edge.a.dot(u), edge.b.dot(u)});
       }
       continue;
     }
-    const double rho = cross2(edge.a, e) / denominator;
-    const double along_edge = cross2(edge.a, u) / denominator;
     if (rho >= 0 && along_edge >= 0 && along_edge <= 1) farthest = std::max(farthest, rho);
   }
   return farthest;
