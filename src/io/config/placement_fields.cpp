@@ -84,6 +84,13 @@ PoseFrame read_frame(MapReader& pose) {
   return *frame == 0 ? PoseFrame::body : PoseFrame::optical;
 }
 
+// The links of a pose map, comma-separated, for "one of: ..." messages.
+std::string link_names(const std::map<std::string, model::Pose3>& poses) {
+  std::vector<std::string> names;
+  for (const auto& [name, T] : poses) names.push_back(name);
+  return model::join(names);
+}
+
 // "up", "down" or "level at azimuth A deg" for a unit vector in the robot frame.
 std::string describe_direction(const model::Vec3& v) {
   if (v.z() > 0.7) return "up";
@@ -150,9 +157,8 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot) 
       check_link_convention(pose, link, it->second, as_optical, named_optical);
       return as_optical ? it->second * T_optical_sensor : it->second;
     }
-    std::string names;
-    for (const auto& [name, T] : robot->T_base_link) names += (names.empty() ? "" : ", ") + name;
-    pose.require(false, "urdf_link", "no link '" + link + "' in the URDF", "one of: " + names);
+    pose.require(false, "urdf_link", "no link '" + link + "' in the URDF",
+                 "one of: " + link_names(robot->T_base_link));
     return model::Pose3::Identity();
   }
   const PoseFrame frame = read_frame(pose);
@@ -230,9 +236,7 @@ std::optional<RobotLinks> links_of(model::RobotDescription description, std::str
         description.T_root_link.count("base_footprint") ? "base_footprint" : description.root_link;
   }
   if (!description.T_root_link.count(base)) {
-    std::string names;
-    for (const auto& [name, T] : description.T_root_link)
-      names += (names.empty() ? "" : ", ") + name;
+    const std::string names = link_names(description.T_root_link);
     reader.require(false, base_key, "no link '" + base + "' in " + description.file,
                    "one of: " + names);
     return failed_links();
