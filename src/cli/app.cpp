@@ -22,7 +22,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   const std::vector<Command> commands = {
       setup_metrics(app),   setup_check(app),    setup_coverage(app),
       setup_select(app),    setup_filter(app),   setup_simulate(app),
-      setup_occupancy(app), setup_localize(app), setup_costmap(app)};
+      setup_occupancy(app), setup_localize(app), setup_costmap(app),
+      setup_export(app)};
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
   try {

@@ -28,5 +28,6 @@ Command setup_simulate(CLI::App& parent);
 Command setup_localize(CLI::App& parent);
 Command setup_occupancy(CLI::App& parent);
 Command setup_costmap(CLI::App& parent);
+Command setup_export(CLI::App& parent);
 
 }  // namespace rigdesign::cli

@@ -8,6 +8,7 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/coverage_plots.hpp"
+#include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
 #include "rigdesign/render/palette.hpp"
 
@@ -79,7 +80,7 @@ std::vector<std::string> write_coverage_files(const model::Rig& rig,
 void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,
                    render::Viewpoint viewpoint, const std::string& path) {
   std::vector<render::ColouredMesh> meshes;
-  meshes.push_back({render::body_mesh(rig.body), render::kBodyColour, 1.0});
+  meshes.push_back({geometry::body_mesh(rig.body), render::kBodyColour, 1.0});
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
     const model::Mount& mount = rig.mounts[i];
     const model::SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);

@@ -38,12 +38,23 @@ void append_cone_roots(const model::Vec3& axis, double sigma, const model::Vec3&
 }  // namespace
 
 MountedFov::MountedFov(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
-                       const BodyOccluder& body)
+                       const BodyOccluder& body, const model::MountLimits& limits)
     : mode_(&mode),
       T_robot_sensor_(T_robot_sensor),
       R_sensor_robot_(T_robot_sensor.linear().transpose()),
       origin_(T_robot_sensor.translation()),
       body_(&body) {
+  if (limits.min_range || limits.max_range) {
+    model::SensorMode limited = mode;
+    limited.min_range = std::max(mode.min_range, limits.min_range.value_or(0.0));
+    limited.max_range = std::min(mode.max_range, limits.max_range.value_or(mode.max_range));
+    limited.max_range = std::max(limited.max_range, limited.min_range);  // an empty band
+    limited_mode_ = std::make_shared<const model::SensorMode>(std::move(limited));
+    mode_ = limited_mode_.get();
+  }
+  if (!limits.excluded_azimuths.empty() || !limits.excluded_boxes.empty()) {
+    exclusions_ = std::make_shared<const MountExclusions>(limits, T_robot_sensor);
+  }
   const model::FieldOfView& fov = mode.fov;
   tan_half_h_ = std::tan(fov.horizontal / 2);
   tan_half_v_ = std::tan(fov.vertical / 2);
@@ -203,7 +214,7 @@ bool MountedFov::in_fov(const model::Vec3& q) const {
 bool MountedFov::sees(const model::Vec3& p_robot) const {
   return in_fov(R_sensor_robot_ * (p_robot - origin_)) &&
          !(may_be_occluded_ && body_->blocks(origin_, p_robot)) &&
-         !(shadow_ && shadow_->blocks(p_robot));
+         !(shadow_ && shadow_->blocks(p_robot)) && !(exclusions_ && exclusions_->excludes(p_robot));
 }
 
 void MountedFov::append_fov_roots(const model::Vec3& c, const model::Vec3& w,
@@ -265,9 +276,16 @@ IntervalSet MountedFov::covered_along(const model::Vec3& start, const model::Vec
     previous = next;
     if (previous >= t_max) break;
   }
-  if (!shadow_ || covered.empty()) return covered;
-  return covered.minus(shadow_->blocked_along(start, direction, covered.intervals().front().first,
-                                              covered.intervals().back().second, section_azimuth));
+  if (shadow_ && !covered.empty()) {
+    covered =
+        covered.minus(shadow_->blocked_along(start, direction, covered.intervals().front().first,
+                                             covered.intervals().back().second, section_azimuth));
+  }
+  if (exclusions_ && !covered.empty()) {
+    covered = covered.minus(exclusions_->excluded_along(
+        start, direction, covered.intervals().front().first, covered.intervals().back().second));
+  }
+  return covered;
 }
 
 }  // namespace rigdesign::geometry

@@ -47,6 +47,8 @@ bool inside_mesh(const model::TriangleMesh& mesh, const model::Vec3& point) {
   return crossings % 2 == 1;
 }
 
+}  // namespace
+
 bool inside_part(const model::BodyPart& part, const model::Vec3& point) {
   if (part.cylinder) {
     const model::VerticalCylinder& c = *part.cylinder;
@@ -55,8 +57,6 @@ bool inside_part(const model::BodyPart& part, const model::Vec3& point) {
   }
   return inside_mesh(part.triangles, point);
 }
-
-}  // namespace
 
 SolidShadow::SolidShadow(const std::vector<model::BodyPart>& parts, const model::Vec3& origin,
                          const TriangleTest& may_matter)

@@ -30,7 +30,7 @@ std::vector<PlacedMount> place_mounts(const model::Rig& rig, const model::Sensor
     const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
     if (mode == nullptr) throw std::logic_error("compute_coverage: unresolved mount " + mount.id);
     const double distance = rig.distance_for(mount);
-    placed.push_back({&mount, mode, geometry::MountedFov(*mode, mount.T_robot_sensor, body),
+    placed.push_back({&mount, mode, geometry::MountedFov(*mode, mount.T_robot_sensor, body, mount.limits),
                       ray_spacing(distance, mode->worst_angular_resolution()),
                       mode->noise.sigma(distance)});
   }

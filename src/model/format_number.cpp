@@ -1,5 +1,6 @@
 #include "rigdesign/model/format_number.hpp"
 
+#include <charconv>
 #include <cstdio>
 
 namespace rigdesign::model {
@@ -8,6 +9,12 @@ std::string format_number(double value, int digits) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
   return buffer;
+}
+
+std::string exact_number(double value) {
+  char buffer[64];
+  const std::to_chars_result end = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, end.ptr);
 }
 
 std::string join(const std::vector<std::string>& items, const std::string& separator) {

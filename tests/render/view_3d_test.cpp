@@ -11,6 +11,7 @@
 
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
+#include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
 #include "support/temp_folder.hpp"
 
@@ -221,7 +222,7 @@ TEST_CASE("an empty range interval gives an empty FOV mesh") {
 
 TEST_CASE("body meshes are closed prisms with the body's volume") {
   SECTION("cylinder") {
-    const model::TriangleMesh mesh = render::body_mesh(cylinder_body(0.45, 1.2));
+    const model::TriangleMesh mesh = geometry::body_mesh(cylinder_body(0.45, 1.2));
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(kPi * 0.45 * 0.45 * 1.2, 0.01));
   }
@@ -230,7 +231,7 @@ TEST_CASE("body meshes are closed prisms with the body's volume") {
     body.height = 0.9;
     body.footprint = {model::Vec2(-0.4, -0.3), model::Vec2(0.5, -0.3), model::Vec2(0.5, 0.3),
                       model::Vec2(-0.4, 0.3)};
-    const model::TriangleMesh mesh = render::body_mesh(body);
+    const model::TriangleMesh mesh = geometry::body_mesh(body);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinAbs(0.9 * 0.6 * 0.9, 1e-12));
   }
@@ -242,7 +243,7 @@ TEST_CASE("body meshes are closed prisms with the body's volume") {
                       model::Vec2(1, 1), model::Vec2(1, 2), model::Vec2(0, 2)};
     for (const bool reversed : {false, true}) {
       if (reversed) std::reverse(body.footprint.begin(), body.footprint.end());
-      const model::TriangleMesh mesh = render::body_mesh(body);
+      const model::TriangleMesh mesh = geometry::body_mesh(body);
       CHECK(is_closed_and_oriented(mesh));
       CHECK_THAT(enclosed_volume(mesh), WithinAbs(3 * 0.5, 1e-12));
     }
@@ -257,7 +258,7 @@ TEST_CASE("render_view_3d writes a PNG of the requested size") {
   settings.height = 150;
   settings.viewpoint = render::Viewpoint::top;
   settings.extent = 1.0;
-  render::render_view_3d({{render::body_mesh(cylinder_body(0.5, 1.0)), render::kBodyColour, 1.0}},
+  render::render_view_3d({{geometry::body_mesh(cylinder_body(0.5, 1.0)), render::kBodyColour, 1.0}},
                          settings, path);
 
   std::ifstream file(path, std::ios::binary);
@@ -276,7 +277,7 @@ TEST_CASE("a top view shows the body grey on a white background") {
   settings.viewpoint = render::Viewpoint::top;
   settings.extent = 1.0;
   const std::vector<std::uint8_t> rgba = render::render_view_3d_pixels(
-      {{render::body_mesh(cylinder_body(0.5, 1.0)), render::kBodyColour, 1.0}}, settings);
+      {{geometry::body_mesh(cylinder_body(0.5, 1.0)), render::kBodyColour, 1.0}}, settings);
   REQUIRE(rgba.size() == 200u * 150u * 4u);
 
   // Inside the body's disc, off the axis arrows drawn from its centre (up for x, left for y).
@@ -300,8 +301,8 @@ TEST_CASE("a top view puts the robot's front up and its left on the left") {
   const render::Rgb orange{0.90, 0.62, 0.00};
   const render::Rgb blue{0.00, 0.45, 0.70};
   const std::vector<std::uint8_t> rgba = render::render_view_3d_pixels(
-      {{render::body_mesh(square_body(model::Vec2(0.7, 0.0), 0.12, 0.3)), orange, 1.0},
-       {render::body_mesh(square_body(model::Vec2(0.0, 0.7), 0.12, 0.3)), blue, 1.0}},
+      {{geometry::body_mesh(square_body(model::Vec2(0.7, 0.0), 0.12, 0.3)), orange, 1.0},
+       {geometry::body_mesh(square_body(model::Vec2(0.0, 0.7), 0.12, 0.3)), blue, 1.0}},
       settings);
   // 1 m is about 55 px here (the frame spans the 2 m grid plus a small margin); 0.7 m ~ 39 px.
   const std::uint8_t* ahead = pixel(rgba, 120, 60, 60 - 39);
@@ -324,7 +325,7 @@ TEST_CASE("an isometric view blends a translucent FOV over the scene") {
   const model::Pose3 T_robot_sensor =
       model::pose_from_xyz_rpy(model::Vec3(0.3, 0, 0.8), model::Vec3::Zero());
   const std::vector<std::uint8_t> rgba = render::render_view_3d_pixels(
-      {{render::body_mesh(cylinder_body(0.3, 0.8)), render::kBodyColour, 1.0},
+      {{geometry::body_mesh(cylinder_body(0.3, 0.8)), render::kBodyColour, 1.0},
        {render::fov_mesh(cone_mode(60, 0.0, 5.0), T_robot_sensor, 1.5), blue, 0.35}},
       settings);
   int tinted = 0;

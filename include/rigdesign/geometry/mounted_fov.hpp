@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/mount_exclusions.hpp"
 #include "rigdesign/geometry/solid_shadow.hpp"
 #include "rigdesign/geometry/interval_set.hpp"
 #include "rigdesign/model/eigen_types.hpp"
@@ -17,8 +18,10 @@ namespace rigdesign::geometry {
 
 class MountedFov {
  public:
+  /// `limits` (a deployed stack's range limits and filters) narrow the mode's range and drop
+  /// their regions; empty for the design itself.
   MountedFov(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
-             const BodyOccluder& body);
+             const BodyOccluder& body, const model::MountLimits& limits = {});
 
   /// True when the sensor measures `p_robot`: inside its FOV and range and not behind the body.
   bool sees(const model::Vec3& p_robot) const;
@@ -41,6 +44,8 @@ class MountedFov {
   bool may_be_occluded() const { return may_be_occluded_; }
   const model::Pose3& pose() const { return T_robot_sensor_; }
   const model::SensorMode& mode() const { return *mode_; }
+  /// What the deployed filters drop, or nullptr.
+  const MountExclusions* exclusions() const { return exclusions_.get(); }
   /// The shadow of the body's collision parts from this sensor; nullptr for a cylinder or
   /// prism body.
   const SolidShadow* shadow() const { return shadow_.get(); }
@@ -53,6 +58,8 @@ class MountedFov {
                         std::vector<double>& roots) const;
 
   const model::SensorMode* mode_;
+  std::shared_ptr<const model::SensorMode> limited_mode_;  // the mode with a deployed range band
+  std::shared_ptr<const MountExclusions> exclusions_;       // null without filters
   model::Pose3 T_robot_sensor_;
   model::Mat3 R_sensor_robot_;
   model::Vec3 origin_;

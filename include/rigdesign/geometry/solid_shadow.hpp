@@ -22,6 +22,9 @@ namespace rigdesign::geometry {
 using TriangleTest =
     std::function<bool(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c)>;
 
+/// True when `point` is strictly inside the part (a sensor there sits in its own housing).
+bool inside_part(const model::BodyPart& part, const model::Vec3& point);
+
 class SolidShadow {
  public:
   /// `parts` in the robot frame. A part that holds `origin` (the sensor's own housing) casts

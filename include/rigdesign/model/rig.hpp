@@ -2,12 +2,14 @@
 /// A rig: the robot body, the distance of interest and the mounted sensors (DESIGN.md
 /// section 3). Frames follow REP-103: the robot frame is on the floor under the robot's
 /// centre, x forward, y left, z up.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/input_error.hpp"
+#include "rigdesign/model/mount_limits.hpp"
 #include "rigdesign/model/source_location.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
 
@@ -60,6 +62,9 @@ struct Mount {
   SourceLocation sensor_where;  ///< its `sensor` value, for findings about the reference
   SourceLocation mode_where;    ///< its `mode` value
   SourceLocation pose_where;    ///< its `pose`
+  /// What the deployed stack removes from this mount's data (`check` with nav2 parameters and
+  /// self-filters); empty for the design itself.
+  MountLimits limits;
 };
 
 struct Rig {
@@ -76,6 +81,13 @@ struct Rig {
   /// What the loader noticed that is not an error (e.g. a link used in the other frame
   /// convention than its axes suggest).
   std::vector<Diagnostic> load_warnings;
+  /// With a robot description: the link the robot frame stands on (REP-105's base_footprint,
+  /// or the description's base link), its height above the floor, and every link's pose in
+  /// the robot frame, so that exported sensor frames can hang from any link. Without one the
+  /// robot frame is base_footprint and `link_poses` is empty.
+  std::string base_link = "base_footprint";
+  double base_link_height = 0.0;  ///< [m]
+  std::map<std::string, Pose3> link_poses;
 
   /// The distance at which a mount's resolution and noise are judged [m].
   double distance_for(const Mount& mount) const {

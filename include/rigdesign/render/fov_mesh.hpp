@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "rigdesign/model/eigen_types.hpp"
-#include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
 
@@ -25,10 +24,5 @@ namespace rigdesign::render {
 model::TriangleMesh fov_mesh(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
                              double truncate_at);
 
-/// The robot body as a closed prism from z = 0 to z = body.height [m]: the footprint polygon
-/// when there is one (counter-clockwise; a clockwise one is accepted and reversed; simple
-/// polygons only, convex or not), else a vertical cylinder of body.radius approximated by an
-/// inscribed 64-sided polygon (0.16 % less area). Deterministic.
-model::TriangleMesh body_mesh(const model::RobotBody& body);
 
 }  // namespace rigdesign::render

@@ -1,6 +1,8 @@
 #include "rigdesign/io/config/costmap_params_loader.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "io/config/yaml_reader.hpp"
@@ -180,6 +182,48 @@ void check_in_file_terms(const costmap::CostmapParams& params, const YAML::Node&
   }
 }
 
+// nav2's footprint: a string "[[x, y], [x, y], ...]" (or the same as a YAML list). The
+// costmap's round-robot geometry takes the circumscribed radius for the window and the
+// collision check and the inscribed one for inflation, as nav2 derives both from a polygon.
+void read_footprint(MapReader& m, CostmapParamsFile& file) {
+  const std::string expected = "a polygon as nav2 writes it: \"[[x, y], [x, y], [x, y], ...]\"";
+  const YAML::Node node = m.node("footprint");
+  YAML::Node points = node;
+  if (node.IsScalar()) {
+    try {
+      points = YAML::Load(node.Scalar());
+    } catch (const YAML::Exception&) {
+      points = YAML::Node();
+    }
+  }
+  std::vector<model::Vec2> polygon;
+  bool valid = points.IsSequence() && points.size() >= 3;
+  for (std::size_t i = 0; valid && i < points.size(); ++i) {
+    const YAML::Node point = points[i];
+    valid = point.IsSequence() && point.size() == 2;
+    double x = 0.0, y = 0.0;
+    valid = valid && YAML::convert<double>::decode(point[0], x) &&
+            YAML::convert<double>::decode(point[1], y) && std::isfinite(x) && std::isfinite(y);
+    polygon.emplace_back(x, y);
+  }
+  if (!valid) {
+    m.require(false, "footprint", "is not a polygon of at least three [x, y] points", expected);
+    return;
+  }
+  double outer = 0.0, inner = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const model::Vec2& a = polygon[i];
+    const model::Vec2 edge = polygon[(i + 1) % polygon.size()] - a;
+    outer = std::max(outer, a.norm());
+    const double length = edge.norm();
+    if (length > 0.0) inner = std::min(inner, std::abs(edge.x() * a.y() - edge.y() * a.x()) / length);
+  }
+  m.require(outer > 0.0, "footprint", "has no extent", expected);
+  file.footprint = polygon;
+  file.costmap.robot_radius = outer;
+  file.costmap.inflation.inscribed_radius = std::min(inner, outer);
+}
+
 bool listed(const std::vector<std::string>& plugins, const std::string& name) {
   return std::find(plugins.begin(), plugins.end(), name) != plugins.end();
 }
@@ -223,7 +267,7 @@ CostmapParamsFile load_costmap_params(const std::string& path,
         "is not a map",
         "nav2 costmap parameters: local_costmap: local_costmap: ros__parameters: {...}"});
   }
-  CostmapParamsFile file{defaults, {}, false};
+  CostmapParamsFile file{defaults, {}, false, {}};
   costmap::CostmapParams& p = file.costmap;
   read(m, "resolution", p.resolution, "a cell side in metres, > 0");
   read(m, "width", p.size_x, "the window's side along x in metres, > 0");
@@ -232,8 +276,7 @@ CostmapParamsFile load_costmap_params(const std::string& path,
     read(m, "robot_radius", p.robot_radius, kMetres);
     p.inflation.inscribed_radius = p.robot_radius;  // a round robot: nav2 does the same
   }
-  m.require(!m.has("footprint"), "footprint", "is not supported yet",
-            "robot_radius (rigdesign's costmap takes a round footprint)");
+  if (m.has("footprint")) read_footprint(m, file);
   if (m.has("plugins")) {
     std::vector<std::string> plugins;
     const YAML::Node list = m.node("plugins");

@@ -56,6 +56,11 @@ model::Rig load_rig(const std::string& path) {
   rig.requirements_where = top.location("requirements");
   const std::optional<RobotLinks> robot = read_robot_links(top, path);
   const bool has_geometry = robot && !robot->failed && robot->description;
+  if (robot && !robot->failed) {
+    rig.base_link = robot->base_link;
+    rig.base_link_height = robot->base_height;
+    rig.link_poses = robot->T_base_link;
+  }
   // With a robot description the body is its collision geometry unless `body` is given.
   if (auto body =
           top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,

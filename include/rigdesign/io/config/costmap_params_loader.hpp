@@ -19,6 +19,9 @@ struct CostmapParamsFile {
   /// The layer's `observation_sources` in their order, each starting from the source defaults.
   std::vector<costmap::NamedObservationSource> sources;
   bool has_sources = false;  ///< the file names observation sources
+  /// nav2's `footprint` polygon [m], empty when the file gives robot_radius; the costmap then
+  /// takes its circumscribed radius as robot_radius and its inscribed one for inflation.
+  std::vector<model::Vec2> footprint;
 };
 
 /// Throws InputError naming file:line:col, the key's path and the expected form for a missing

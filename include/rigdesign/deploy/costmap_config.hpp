@@ -1,0 +1,65 @@
+#pragma once
+/// nav2 costmap parameters derived from a rig (issue 14): the footprint from the body, one
+/// observation source per mount with its marking and clearing ranges and height band from the
+/// sensor's mode, the area to perceive and the sensor's floor noise, the voxel column from the
+/// area's height, the inflation from the body, and the Hit Layer's memory from the rig's blind
+/// sectors (deploy/blind_memory.hpp). Every value says where it came from (`why`), so the
+/// exported file can explain itself.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigdesign/costmap/costmap.hpp"
+#include "rigdesign/costmap/observation.hpp"
+#include "rigdesign/deploy/blind_memory.hpp"
+#include "rigdesign/model/requirements.hpp"
+#include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/sensor.hpp"
+
+namespace rigdesign::deploy {
+
+struct DeployOptions {
+  std::string parent;                        ///< sensor frames' parent link; empty: the base link
+  std::string scan_topic = "/{mount}/scan";  ///< topic template of 2D scanners
+  std::string cloud_topic = "/{mount}/points";  ///< of 3D sensors ({mount}: the mount id)
+  double update_rate = 5.0;       ///< [Hz] the local costmap's update_frequency (nav2's default)
+  double max_speed = 0.0;  ///< [m/s] for the Hit Layer rule; 0: the requirements' R5
+  /// [m/s] the slowest the robot drives: nav2 Regulated Pure Pursuit's default
+  /// regulated_linear_scaling_min_speed (0.25 m/s), or max_speed when that is lower.
+  double min_speed = 0.25;
+  double floor_flatness = 0.02;   ///< [m] steps and tiles a flat floor may have
+  double floor_noise_sigmas = 6;  ///< floor returns this many sigma high still do not mark
+};
+
+/// One observation source as nav2's obstacle and voxel layers read it.
+struct SourceConfig {
+  std::string mount_id;
+  bool laser_scan = false;  ///< data_type LaserScan (2D scanners), else PointCloud2
+  std::string topic;
+  std::string sensor_frame;  ///< the frame the driver stamps its data with
+  costmap::ObservationSource source;
+  /// [m] the largest height error of a floor return within the marking range (0: the sensor
+  /// sees no floor there), from which min_obstacle_height follows.
+  double floor_height_error = 0.0;
+};
+
+struct CostmapConfig {
+  std::string robot_base_frame;        ///< the rig's base link
+  std::vector<model::Vec2> footprint;  ///< counter-clockwise; empty: a round robot
+  double robot_radius = 0.0;           ///< [m] circumscribed radius (nav2's robot_radius)
+  double inscribed_radius = 0.0;       ///< [m]
+  costmap::CostmapParams costmap;      ///< the local costmap (window, layers, Hit Layer, ...)
+  std::vector<SourceConfig> sources;
+  BlindMemory memory;             ///< how the Hit Layer's values were chosen
+  std::vector<std::string> notes;  ///< derivations and warnings for the file's comments
+};
+
+/// Precondition: every mount's sensor and mode are in `library`. `requirements` may be null
+/// (no R5 speed and no R6 check then).
+CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& library,
+                             const model::Requirements* requirements, const DeployOptions& options);
+
+/// `text` with every `{mount}` replaced by `mount_id`.
+std::string expand_topic(const std::string& text, const std::string& mount_id);
+
+}  // namespace rigdesign::deploy

@@ -1,0 +1,23 @@
+#pragma once
+/// Everything a rig means for the ROS stack that runs it (issue 14): sensor frames, nav2
+/// costmap parameters, self-filters. `rigdesign export` and `select --out` write it.
+#include <vector>
+
+#include "rigdesign/deploy/costmap_config.hpp"
+#include "rigdesign/deploy/self_filters.hpp"
+#include "rigdesign/deploy/sensor_frames.hpp"
+
+namespace rigdesign::deploy {
+
+struct Deployment {
+  SensorFrames frames;
+  CostmapConfig costmap;
+  std::vector<SelfFilter> self_filters;
+};
+
+/// Precondition: the rig's references resolve in `library`. `requirements` may be null.
+/// Throws InputError for a `parent` that is not a link of the rig (sensor_frames).
+Deployment plan_deployment(const model::Rig& rig, const model::SensorLibrary& library,
+                           const model::Requirements* requirements, const DeployOptions& options);
+
+}  // namespace rigdesign::deploy

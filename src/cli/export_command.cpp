@@ -1,0 +1,77 @@
+// `rigdesign export RIG --to DIR [--parent LINK] [--scan-topic T] [--cloud-topic T]
+// [--max-speed V] [--update-rate F]`: writes what the rig means for its ROS 2 stack (issue 14):
+// the sensors' URDF macro, nav2 costmap parameters, self-filters; prints how each was derived.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <memory>
+#include <ostream>
+
+#include "app.hpp"
+#include "command.hpp"
+#include "deployment_report.hpp"
+#include "inputs.hpp"
+#include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/io/deploy/deployment_files.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+struct ExportOptions {
+  std::string rig;
+  std::string sensors;
+  std::string requirements;
+  std::string to;
+  deploy::DeployOptions deploy;
+};
+
+int run_export(const ExportOptions& options, std::ostream& out) {
+  require_option(options.deploy.max_speed >= 0.0, "--max-speed", "must not be negative",
+                 "a speed in m/s (0: the requirements' R5 speed)");
+  require_option(options.deploy.min_speed > 0.0 && std::isfinite(options.deploy.min_speed),
+                 "--min-speed", "must be positive", "a speed in m/s, > 0");
+  require_option(std::isfinite(options.deploy.max_speed), "--max-speed", "is not a number",
+                 "a speed in m/s");
+  require_option(options.deploy.update_rate > 0.0 && options.deploy.update_rate <= 100.0,
+                 "--update-rate", "is out of range", "0 < rate <= 100 Hz");
+  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
+  const model::Requirements* requirements =
+      inputs.requirements ? &*inputs.requirements : nullptr;
+  const deploy::Deployment deployment =
+      deploy::plan_deployment(inputs.rig, inputs.library, requirements, options.deploy);
+  const std::vector<std::string> written = io::write_deployment(
+      options.to, inputs.rig, deployment, deployment_header(inputs.rig, requirements));
+  print_deployment(out, inputs.rig, deployment, written);
+  return kOk;
+}
+
+}  // namespace
+
+Command setup_export(CLI::App& parent) {
+  auto options = std::make_shared<ExportOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "export",
+      "Write the rig's ROS 2 configuration: sensors.urdf.xacro, nav2_costmap.yaml, "
+      "self_filters.yaml");
+  app->add_option("rig", options->rig, "Rig file")->required();
+  app->add_option("--to", options->to, "Output folder (created if missing)")->required();
+  app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
+  app->add_option("--requirements", options->requirements,
+                  "Requirements (default: the rig's); R5's speed sizes the Hit Layer");
+  app->add_option("--parent", options->deploy.parent,
+                  "Parent link of the sensor joints (default: the rig's base link, "
+                  "base_footprint without a description)");
+  app->add_option("--scan-topic", options->deploy.scan_topic,
+                  "Topic of 2D scanners, {mount} is the mount id (default /{mount}/scan)");
+  app->add_option("--cloud-topic", options->deploy.cloud_topic,
+                  "Topic of 3D sensors, {mount} is the mount id (default /{mount}/points)");
+  app->add_option("--max-speed", options->deploy.max_speed,
+                  "Robot speed [m/s] for the Hit Layer rule (default: the requirements' R5)");
+  app->add_option("--min-speed", options->deploy.min_speed,
+                  "Slowest driving speed [m/s] the Hit Layer must outlast a blind gap at "
+                  "(default 0.25, nav2 Regulated Pure Pursuit's regulated minimum)");
+  app->add_option("--update-rate", options->deploy.update_rate,
+                  "Local costmap update rate [Hz] (default 5, nav2's)");
+  return {app, [options](std::ostream& out, std::ostream&) { return run_export(*options, out); }};
+}
+
+}  // namespace rigdesign::cli

@@ -1,0 +1,183 @@
+#include "rigdesign/deploy/costmap_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "rigdesign/deploy/sensor_frames.hpp"
+#include "rigdesign/geometry/footprint_hull.hpp"
+#include "rigdesign/metrics/coverage.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/polygon_area.hpp"
+
+namespace rigdesign::deploy {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Directions sampled per FOV angle when looking for the steepest downward ray.
+constexpr int kFovSamples = 65;
+// A hull this close to its circumscribed circle's area is given as robot_radius.
+constexpr double kRoundShare = 0.9;
+// nav2's VoxelLayer packs a column into 16 bits.
+constexpr int kMaxVoxels = 16;
+
+double round_up(double value, double unit) {
+  return std::ceil(value / unit - 1e-9) * unit;
+}
+
+// The sine of the steepest downward direction of the mode's FOV in the robot frame (<= 0:
+// no ray points down), from a grid over the FOV's two angles, edges included.
+double steepest_down(const model::SensorMode& mode, const model::Mat3& R_robot_sensor) {
+  const model::FieldOfView& fov = mode.fov;
+  double best = -1.0;
+  for (int i = 0; i < kFovSamples; ++i) {
+    const double u = -0.5 + static_cast<double>(i) / (kFovSamples - 1);
+    for (int j = 0; j < kFovSamples; ++j) {
+      const double v = -0.5 + static_cast<double>(j) / (kFovSamples - 1);
+      model::Vec3 direction;
+      switch (fov.shape) {
+        case model::FovShape::pyramid:
+          direction = model::Vec3(1.0, std::tan(u * fov.horizontal), std::tan(v * fov.vertical));
+          break;
+        case model::FovShape::cone: {
+          const double polar = (v + 0.5) * fov.horizontal / 2;
+          const double around = 2 * u * kPi;
+          direction = model::Vec3(std::cos(polar), std::sin(polar) * std::cos(around),
+                                  std::sin(polar) * std::sin(around));
+          break;
+        }
+        case model::FovShape::band:
+        case model::FovShape::planar: {
+          const double azimuth = u * fov.horizontal;
+          const double elevation =
+              fov.elevation_min + (v + 0.5) * (fov.elevation_max - fov.elevation_min);
+          direction = model::Vec3(std::cos(elevation) * std::cos(azimuth),
+                                  std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+          break;
+        }
+      }
+      best = std::max(best, -(R_robot_sensor * direction.normalized()).z());
+    }
+  }
+  return best;
+}
+
+// The largest height error of a floor return within `range` of a sensor `height` above the
+// floor: a return at range D along a ray of elevation e errs by sigma(D) sin e = sigma(D) H / D
+// in height, and sigma(D) H / D = H (a / D + b + c D) is largest at an end of [D_min, range].
+double floor_height_error(const model::SensorMode& mode, double height, double down_sine,
+                          double range) {
+  if (!(down_sine > 0.0) || !(height > 0.0)) return 0.0;
+  const double nearest = std::max(height / down_sine, mode.min_range);
+  if (nearest > range) return 0.0;
+  const auto error = [&](double D) { return mode.noise.sigma(D) * height / D; };
+  return std::max(error(nearest), error(range));
+}
+
+// nav2's footprint: the hull of the body, or a radius when the hull is nearly round.
+void set_footprint(const model::RobotBody& body, CostmapConfig& config) {
+  const std::vector<model::Vec2> hull = geometry::footprint_hull(body);
+  double outer = 0.0;
+  for (const model::Vec2& corner : hull) outer = std::max(outer, corner.norm());
+  double inner = outer;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const model::Vec2& a = hull[i];
+    const model::Vec2& b = hull[(i + 1) % hull.size()];
+    const model::Vec2 edge = b - a;
+    inner = std::min(inner, std::abs(edge.x() * a.y() - edge.y() * a.x()) / edge.norm());
+  }
+  const bool round = body.footprint.empty() &&
+                     (!body.has_parts() || std::abs(model::signed_area(hull)) >= kRoundShare * kPi * outer * outer);
+  config.robot_radius = round && !body.has_parts() ? body.radius : outer;
+  config.inscribed_radius = round && !body.has_parts() ? body.radius : inner;
+  if (!round) config.footprint = hull;
+  config.notes.push_back(
+      round ? "footprint: robot_radius " + model::format_number(config.robot_radius, 4) +
+                  " m (the body is round)"
+            : "footprint: convex hull of the body, " + std::to_string(hull.size()) +
+                  " corners, circumscribed radius " + model::format_number(outer, 4) + " m");
+}
+
+}  // namespace
+
+std::string expand_topic(const std::string& text, const std::string& mount_id) {
+  std::string expanded = text;
+  const std::string key = "{mount}";
+  for (std::size_t at = expanded.find(key); at != std::string::npos;
+       at = expanded.find(key, at + mount_id.size())) {
+    expanded.replace(at, key.size(), mount_id);
+  }
+  return expanded;
+}
+
+CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& library,
+                             const model::Requirements* requirements, const DeployOptions& options) {
+  CostmapConfig config;
+  config.robot_base_frame = rig.base_link;
+  set_footprint(rig.body, config);
+  const double top = rig.body.area_top();
+  costmap::CostmapParams& p = config.costmap;
+  p.resolution = 0.05;  // nav2's default
+  p.size_x = p.size_y = std::max(3.0, round_up(2 * rig.distance_of_interest, 0.5));
+  p.robot_radius = config.robot_radius;
+  p.inflation.inscribed_radius = config.inscribed_radius;
+  p.inflation.inflation_radius = round_up(config.robot_radius + 0.1, 0.01);
+  bool any_3d = false;
+  for (const model::Mount& mount : rig.mounts) {
+    const model::Sensor* sensor = library.find(mount.sensor_id);
+    const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
+    if (mode == nullptr) throw std::logic_error("costmap_config: unresolved mount " + mount.id);
+    SourceConfig source;
+    source.mount_id = mount.id;
+    source.laser_scan = mode->fov.shape == model::FovShape::planar;
+    any_3d = any_3d || !source.laser_scan;
+    source.topic = expand_topic(source.laser_scan ? options.scan_topic : options.cloud_topic, mount.id);
+    source.sensor_frame = mode->is_camera() ? optical_frame_name(mount.id) : sensor_link_name(mount.id);
+    costmap::ObservationSource& s = source.source;
+    const model::Vec3 origin = mount.T_robot_sensor.translation();
+    // Far enough to mark every point of the area up to the mount's distance of interest.
+    const double reach = std::hypot(rig.distance_for(mount) + origin.head<2>().norm(),
+                                    std::max(origin.z(), top - origin.z()));
+    s.obstacle_min_range = mode->min_range;
+    s.obstacle_max_range = round_up(std::min(mode->max_range, reach), 0.01);
+    // The near blind zone is neither marked nor cleared: what sits there is remembered.
+    s.raytrace_min_range = mode->min_range;
+    s.raytrace_max_range = round_up(std::min(mode->max_range, s.obstacle_max_range + 0.5), 0.01);
+    source.floor_height_error =
+        floor_height_error(*mode, origin.z(), steepest_down(*mode, mount.T_robot_sensor.linear()),
+                           s.obstacle_max_range);
+    s.min_obstacle_height = round_up(
+        options.floor_flatness + options.floor_noise_sigmas * source.floor_height_error, 0.01);
+    s.max_obstacle_height = top;
+    if (requirements && requirements->smallest_obstacle &&
+        s.min_obstacle_height > *requirements->smallest_obstacle) {
+      config.notes.push_back("warning: " + mount.id + " needs min_obstacle_height " +
+                             model::format_number(s.min_obstacle_height, 3) +
+                             " m to keep its floor noise out, above the smallest obstacle (" +
+                             model::format_number(*requirements->smallest_obstacle, 3) + " m)");
+    }
+    config.sources.push_back(std::move(source));
+  }
+  p.layer = any_3d ? costmap::ObstacleLayerKind::voxel : costmap::ObstacleLayerKind::obstacle;
+  p.voxel.z_min = 0.0;
+  p.voxel.z_resolution = std::max(0.05, round_up(top / kMaxVoxels, 0.01));
+  p.voxel.z_max = std::ceil(top / p.voxel.z_resolution - 1e-9) * p.voxel.z_resolution;
+  const double speed =
+      options.max_speed > 0.0
+          ? options.max_speed
+          : (requirements && requirements->robot_speed ? requirements->robot_speed->speed : 0.0);
+  if (speed > 0.0) {
+    const std::vector<model::SectorRequirement> none;
+    const metrics::RigCoverage coverage = metrics::compute_coverage(rig, library, none);
+    config.memory =
+        blind_memory(coverage, speed, std::min(speed, options.min_speed), options.update_rate);
+    p.hit = config.memory.hit;
+  } else {
+    config.memory.rule = "no robot speed (requirements R5 or --max-speed): paper 1's values";
+  }
+  p.use_hit_layer = true;
+  return config;
+}
+
+}  // namespace rigdesign::deploy

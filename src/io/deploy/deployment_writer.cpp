@@ -1,0 +1,38 @@
+#include <filesystem>
+#include <system_error>
+
+#include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/model/input_error.hpp"
+
+namespace rigdesign::io {
+
+std::vector<std::string> write_deployment(const std::string& folder, const model::Rig& rig,
+                                          const deploy::Deployment& deployment,
+                                          const std::string& header) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) {
+    throw model::InputError(model::Diagnostic{model::SourceLocation{folder}, "output",
+                                              "cannot create the folder: " + error.message(),
+                                              "a writable folder"});
+  }
+  // The robot frame's link carries the crop boxes; it differs from the robot frame by its
+  // height above the floor only.
+  model::Pose3 T_robot_base = model::Pose3::Identity();
+  T_robot_base.translation().z() = rig.base_link_height;
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"sensors.urdf.xacro", sensors_xacro_text(deployment.frames, header)},
+      {"nav2_costmap.yaml", nav2_costmap_text(deployment.costmap, header)},
+      {"self_filters.yaml",
+       self_filters_text(deployment.self_filters, rig.base_link, T_robot_base, header)}};
+  std::vector<std::string> written;
+  for (const auto& [name, text] : files) {
+    const std::string path = (std::filesystem::path(folder) / name).string();
+    write_file_atomically(path, text);
+    written.push_back(path);
+  }
+  return written;
+}
+
+}  // namespace rigdesign::io

@@ -1,0 +1,67 @@
+#include <sstream>
+
+#include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace rigdesign::io {
+namespace {
+
+std::string number(double value) {
+  return model::exact_number(value);
+}
+
+}  // namespace
+
+std::string self_filters_text(const std::vector<deploy::SelfFilter>& filters,
+                              const std::string& box_frame, const model::Pose3& T_robot_box_frame,
+                              const std::string& header) {
+  std::ostringstream out;
+  std::istringstream lines(header);
+  for (std::string line; std::getline(lines, line);) out << "# " << line << '\n';
+  out << "# 2D scanners: run laser_filters' scan_to_scan_filter_chain as node <mount>_self_filter\n"
+         "# with this file; each LaserScanAngularBoundsFilterInPlace drops the scan angles\n"
+         "# (laser frame, radians) whose rays hit the robot. 3D sensors: one pcl_ros CropBox\n"
+         "# node per box (negative: true drops the inside), chained on the sensor's cloud.\n";
+  const model::Pose3 T_frame_robot = T_robot_box_frame.inverse();
+  bool any = false;
+  for (const deploy::SelfFilter& filter : filters) {
+    if (filter.scanner && !filter.bands.empty()) {
+      any = true;
+      out << filter.mount_id << "_self_filter:\n  ros__parameters:\n";
+      for (std::size_t i = 0; i < filter.bands.size(); ++i) {
+        const model::AzimuthBand& band = filter.bands[i];
+        out << "    filter" << i + 1 << ":\n";
+        out << "      name: " << filter.mount_id << "_robot_" << i + 1 << "  # "
+            << model::format_number(model::rad_to_deg(band.lower), 4) << " to "
+            << model::format_number(model::rad_to_deg(band.upper), 4) << " deg\n";
+        out << "      type: laser_filters/LaserScanAngularBoundsFilterInPlace\n";
+        out << "      params:\n";
+        out << "        lower_angle: " << number(band.lower) << '\n';
+        out << "        upper_angle: " << number(band.upper) << '\n';
+        out << "        replace_with_nan: true\n";
+      }
+    }
+    if (!filter.scanner) {
+      for (std::size_t i = 0; i < filter.boxes.size(); ++i) {
+        any = true;
+        const deploy::SelfBox& box = filter.boxes[i];
+        // The boxes are axis-aligned in the robot frame; the box frame differs from it by a
+        // translation only (the base link's height), so they stay axis-aligned there.
+        const model::Vec3 low = T_frame_robot * box.min;
+        const model::Vec3 high = T_frame_robot * box.max;
+        out << filter.mount_id << "_self_filter_" << i + 1 << ":  # " << box.part << ", "
+            << box.hits << " rays\n  ros__parameters:\n";
+        out << "    input_frame: " << box_frame << '\n';
+        out << "    min_x: " << number(low.x()) << "\n    max_x: " << number(high.x()) << '\n';
+        out << "    min_y: " << number(low.y()) << "\n    max_y: " << number(high.y()) << '\n';
+        out << "    min_z: " << number(low.z()) << "\n    max_z: " << number(high.z()) << '\n';
+        out << "    negative: true\n    keep_organized: false\n";
+      }
+    }
+  }
+  if (!any) out << "# No sensor of this rig sees its own robot: nothing to filter.\n{}\n";
+  return out.str();
+}
+
+}  // namespace rigdesign::io
