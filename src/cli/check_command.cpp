@@ -1,4 +1,5 @@
-// `rigdesign check FILE... [--requirements FILE] [--format text|json|junit] [--output FILE]`:
+// `rigdesign check FILE... [--requirements FILE] [--nav2 FILE] [--filters [MOUNT=]FILE]...
+// [--format text|json|junit] [--output FILE]`:
 // validates rig, sensor and requirement files for CI and judges rigs against requirements.
 // Exit 0 when all pass, 1 when a requirement fails, 2 when any input is invalid.
 #include <CLI/CLI.hpp>
@@ -19,12 +20,13 @@ struct CheckOptions {
   std::string sensors;
   std::string format = "text";
   std::string output;
+  DeploymentFiles deployment;
 };
 
 int run_check(const CheckOptions& options, std::ostream& out) {
   std::vector<FileReport> reports;
   for (const std::string& file : options.files) {
-    reports.push_back(check_file(file, options.sensors, options.requirements));
+    reports.push_back(check_file(file, options.sensors, options.requirements, options.deployment));
   }
   int exit_code = kOk;
   for (const FileReport& report : reports) {
@@ -59,6 +61,12 @@ Command setup_check(CLI::App& parent) {
   app->add_option("--requirements", options->requirements,
                   "Requirements to judge every rig against (default: the file each rig names)");
   app->add_option("--sensors", options->sensors, "Sensor library for every rig");
+  app->add_option("--nav2", options->deployment.nav2,
+                  "nav2 costmap parameters the rig is deployed with: every mount needs an "
+                  "observation source whose range and height band keep the requirements");
+  app->add_option("--filters", options->deployment.filters,
+                  "Self-filter file (laser_filters chains, pcl_ros crop boxes), FILE or "
+                  "MOUNT=FILE; repeatable. Fails when a filter hides a required sector");
   app->add_option("--format", options->format, "Report format")
       ->check(CLI::IsMember({"text", "json", "junit"}));
   app->add_option("--output", options->output,

@@ -4,13 +4,16 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "command.hpp"
 #include "inputs.hpp"
 #include "json_report.hpp"
+#include "rigdesign/deploy/deployed_check.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
+#include "rigdesign/io/deploy/self_filters_loader.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/format_number.hpp"
 
@@ -77,8 +80,26 @@ bool FileReport::failing() const {
   return count(results, metrics::Verdict::fail) > 0;
 }
 
+// The nav2 sources and the filters of every self-filter file; `MOUNT=FILE` filters MOUNT.
+deploy::DeployedConfig load_deployment(const DeploymentFiles& files, const model::Rig& rig) {
+  deploy::DeployedConfig config;
+  if (!files.nav2.empty()) config = io::load_deployed_sources(files.nav2, rig);
+  for (const std::string& spec : files.filters) {
+    const std::size_t equals = spec.find('=');
+    const std::string mount = equals == std::string::npos ? "" : spec.substr(0, equals);
+    const std::string file = equals == std::string::npos ? spec : spec.substr(equals + 1);
+    const bool known = mount.empty() || std::any_of(rig.mounts.begin(), rig.mounts.end(),
+                                                    [&](const model::Mount& m) { return m.id == mount; });
+    require_option(known, "--filters", "'" + mount + "' is no mount of " + rig.file,
+                   "FILE, or MOUNT=FILE for a mount of the rig");
+    for (deploy::DeployedFilter& filter : io::load_self_filters(file, mount, rig))
+      config.filters.push_back(std::move(filter));
+  }
+  return config;
+}
+
 FileReport check_file(const std::string& path, const std::string& sensors_path,
-                      const std::string& requirements_path) {
+                      const std::string& requirements_path, const DeploymentFiles& deployment) {
   FileReport report;
   report.file = path;
   try {
@@ -126,6 +147,13 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
           }
           report.results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements,
                                                           coverage ? &*coverage : nullptr);
+          if (!deployment.empty()) {
+            const deploy::DeployedConfig config = load_deployment(deployment, inputs.rig);
+            for (metrics::RequirementResult& result : deploy::check_deployment(
+                     inputs.rig, inputs.library, *inputs.requirements, config)) {
+              report.results.push_back(std::move(result));
+            }
+          }
         }
         break;
       }

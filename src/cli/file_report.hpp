@@ -22,8 +22,16 @@ struct FileReport {
   bool failing() const;
 };
 
+/// The deployed configuration `check` also judges a rig against (issue 14): nav2 costmap
+/// parameters and self-filter files, each `FILE` or `MOUNT=FILE`.
+struct DeploymentFiles {
+  std::string nav2;
+  std::vector<std::string> filters;
+  bool empty() const { return nav2.empty() && filters.empty(); }
+};
+
 FileReport check_file(const std::string& path, const std::string& sensors_path,
-                      const std::string& requirements_path);
+                      const std::string& requirements_path, const DeploymentFiles& deployment = {});
 
 std::string format_text(const std::vector<FileReport>& reports);
 std::string format_json(const std::vector<FileReport>& reports, int exit_code);

@@ -23,8 +23,15 @@ double folded(double theta) {
   return a > kPi ? 2 * kPi - a : a;
 }
 
-bool blind(const metrics::AngleCoverage& angle) {
-  return angle.floor <= 0.0;
+// Blind azimuths: where none of the floor is seen (a cable or a foot there is invisible); for
+// a rig that sees no floor anywhere (level scan planes), where nothing of the section is seen.
+std::vector<bool> blind_azimuths(const std::vector<metrics::AngleCoverage>& angles) {
+  const bool sees_floor = std::any_of(angles.begin(), angles.end(),
+                                      [](const metrics::AngleCoverage& a) { return a.floor > 0.0; });
+  std::vector<bool> blind;
+  for (const metrics::AngleCoverage& angle : angles)
+    blind.push_back(sees_floor ? angle.floor <= 0.0 : angle.complete <= 0.0);
+  return blind;
 }
 
 // What a grazing obstacle does on one side of the robot: kept while in the gap, seen before.
@@ -35,7 +42,8 @@ struct Pass {
 
 // The pass of an obstacle that enters the gap at angles[enter] (on the left when `left`) and
 // leaves it at folded azimuth `a_leave` (pi: never, it is kept until the body has passed it).
-Pass pass_from(const std::vector<metrics::AngleCoverage>& angles, int enter, bool left,
+Pass pass_from(const std::vector<metrics::AngleCoverage>& angles, const std::vector<bool>& blind,
+               int enter, bool left,
                double a_leave, double step, double d) {
   const int n = static_cast<int>(angles.size());
   const double a_enter = folded(angles[enter].theta);
@@ -46,7 +54,7 @@ Pass pass_from(const std::vector<metrics::AngleCoverage>& angles, int enter, boo
   int seen = 0;
   for (int j = 1; j < n; ++j) {
     const int index = ((enter + (left ? -j : j)) % n + n) % n;
-    if (blind(angles[index]) || folded(angles[index].theta) > a_enter) break;
+    if (blind[index] || folded(angles[index].theta) > a_enter) break;
     ++seen;
   }
   const double a_seen = std::max(0.0, a_enter - seen * step);
@@ -65,25 +73,26 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
   memory.update_rate = update_rate;
   const std::vector<metrics::AngleCoverage>& angles = coverage.angles;
   const int n = static_cast<int>(angles.size());
-  if (n == 0 || std::all_of(angles.begin(), angles.end(), blind) ||
-      std::none_of(angles.begin(), angles.end(), blind)) {
-    memory.rule = std::none_of(angles.begin(), angles.end(), blind)
-                      ? "the rig sees some floor at every azimuth: paper 1's values"
-                      : "the rig sees no floor at any azimuth: paper 1's values";
+  const std::vector<bool> blind = blind_azimuths(angles);
+  const bool all_blind = std::all_of(blind.begin(), blind.end(), [](bool b) { return b; });
+  const bool none_blind = std::none_of(blind.begin(), blind.end(), [](bool b) { return b; });
+  if (n == 0 || all_blind || none_blind) {
+    memory.rule = none_blind ? "the rig sees something at every azimuth: paper 1's values"
+                             : "the rig sees nothing at any azimuth: paper 1's values";
     return memory;
   }
   // Start the walk at a seen azimuth so that every gap is a whole run.
   int start = 0;
-  while (blind(angles[start])) ++start;
+  while (blind[start]) ++start;
   const double step = 2 * kPi / n;
   for (int k = 0; k < n;) {
     const int i = (start + k) % n;
-    if (!blind(angles[i])) {
+    if (!blind[i]) {
       ++k;
       continue;
     }
     int length = 0;
-    while (k + length < n && blind(angles[(start + k + length) % n])) ++length;
+    while (k + length < n && blind[(start + k + length) % n]) ++length;
     // On the left (azimuths in (0, pi)) a passed obstacle moves towards larger azimuths, on
     // the right towards smaller ones; a gap across pi (astern) is entered from both sides
     // and never left, a gap across 0 (ahead) is not passed driving forward.
@@ -97,12 +106,12 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
     const bool across_front = last >= 2 * kPi - 1e-9;
     std::vector<Pass> passes;
     if (across_back) {
-      if (first < kPi - 1e-9) passes.push_back(pass_from(angles, i, true, kPi, step, coverage.distance));
-      if (last > kPi + 1e-9) passes.push_back(pass_from(angles, last_index, false, kPi, step, coverage.distance));
+      if (first < kPi - 1e-9) passes.push_back(pass_from(angles, blind, i, true, kPi, step, coverage.distance));
+      if (last > kPi + 1e-9) passes.push_back(pass_from(angles, blind, last_index, false, kPi, step, coverage.distance));
     } else if (!across_front) {
       const bool left = last < kPi;
-      passes.push_back(left ? pass_from(angles, i, true, folded(last), step, coverage.distance)
-                            : pass_from(angles, last_index, false, folded(first), step, coverage.distance));
+      passes.push_back(left ? pass_from(angles, blind, i, true, folded(last), step, coverage.distance)
+                            : pass_from(angles, blind, last_index, false, folded(first), step, coverage.distance));
     }
     if (passes.empty()) {
       k += length;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include "rigdesign/geometry/body_mesh.hpp"
@@ -47,7 +46,9 @@ std::vector<model::AzimuthBand> bands_of(std::vector<std::pair<double, bool>> ra
     }
     std::size_t j = i;
     while (j + 1 < rays.size() && rays[j + 1].second) ++j;
-    bands.push_back({std::max(-std::numbers::pi, rays[i].first - step / 2), std::min(std::numbers::pi, rays[j].first + step / 2)});
+    // Half a step beyond the hit rays; a run at either end of the scan reaches past +-pi so
+    // that the filter, which drops angles strictly inside its bounds, also drops the end ray.
+    bands.push_back({rays[i].first - step / 2, rays[j].first + step / 2});
     i = j + 1;
   }
   return bands;

@@ -1,7 +1,8 @@
 #pragma once
 /// Paper 1's Hit Layer sized from the rig's own blind sectors (issue 14 item 3). A blind gap
 /// is a run of azimuths where the rig sees none of the floor between the body and the
-/// distance of interest (SC floor = 0): a cable or a foot there is invisible. The rule, for a
+/// distance of interest (SC floor = 0): a cable or a foot there is invisible (for a rig that
+/// sees no floor anywhere, level scan planes, where it sees nothing: SC complete = 0). The rule, for a
 /// robot driving straight past a static obstacle that grazes its side (lateral offset r, the
 /// body's radius at the gap's edge):
 /// - it is seen while its azimuth runs through the covered azimuths before the gap, from the

@@ -20,7 +20,8 @@ struct OrientedBox {
 };
 
 /// Azimuths about the sensor's z axis (atan2(y, x) in the sensor frame, as a 2D scan's angles)
-/// whose returns are dropped: lower < upper, both in [-pi, pi] [rad].
+/// whose returns are dropped: those strictly between lower < upper [rad] (bounds may lie half a
+/// ray step beyond +-pi, so that a band reaching the end of a scan includes its end ray).
 struct AzimuthBand {
   double lower = 0.0;
   double upper = 0.0;

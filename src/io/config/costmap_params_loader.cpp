@@ -71,6 +71,13 @@ costmap::ObservationSource read_source(MapReader& m, costmap::ObservationSource 
   read(m, "obstacle_max_range", source.obstacle_max_range, kMetres);
   read(m, "raytrace_min_range", source.raytrace_min_range, kMetres);
   read(m, "raytrace_max_range", source.raytrace_max_range, kMetres);
+  for (const auto& [key, value] :
+       {std::pair<const char*, double>{"obstacle_min_range", source.obstacle_min_range},
+        {"obstacle_max_range", source.obstacle_max_range},
+        {"raytrace_min_range", source.raytrace_min_range},
+        {"raytrace_max_range", source.raytrace_max_range}}) {
+    m.require(value >= 0.0, key, "is negative", kMetres);
+  }
   read(m, "min_obstacle_height", source.min_obstacle_height, "a world height in metres");
   read(m, "max_obstacle_height", source.max_obstacle_height, "a world height in metres");
   m.require(source.obstacle_min_range <= source.obstacle_max_range, "obstacle_min_range",
@@ -106,6 +113,10 @@ void read_obstacle_layer(MapReader& m, bool voxel, const costmap::ObservationSou
     file.has_sources = true;
     if (auto source = m.map(name, Need::required, "the source's parameters")) {
       file.sources.push_back({name, read_source(*source, defaults)});
+      file.source_locations.push_back(
+          {m.location(name), source->location("obstacle_min_range"),
+           source->location("obstacle_max_range"), source->location("min_obstacle_height"),
+           source->location("max_obstacle_height")});
     }
   }
   ignore(m, kIgnoredLayerKeys);
@@ -267,7 +278,7 @@ CostmapParamsFile load_costmap_params(const std::string& path,
         "is not a map",
         "nav2 costmap parameters: local_costmap: local_costmap: ros__parameters: {...}"});
   }
-  CostmapParamsFile file{defaults, {}, false, {}};
+  CostmapParamsFile file{defaults, {}, {}, false, {}};
   costmap::CostmapParams& p = file.costmap;
   read(m, "resolution", p.resolution, "a cell side in metres, > 0");
   read(m, "width", p.size_x, "the window's side along x in metres, > 0");
@@ -291,6 +302,18 @@ CostmapParamsFile load_costmap_params(const std::string& path,
     if (obstacle) p.layer = costmap::ObstacleLayerKind::obstacle;
     if (voxel) p.layer = costmap::ObstacleLayerKind::voxel;
     p.use_hit_layer = listed(plugins, "hit_layer");
+    // nav2 loads each listed layer by its `plugin` class: a layer without one fails to start.
+    for (const std::string& name : plugins) {
+      const YAML::Node layer = m.node(name);
+      if (!layer.IsDefined() || layer.IsNull()) {
+        m.require(false, "plugins", "lists '" + name + "', which is not given",
+                  "a map `" + name + ":` with its plugin and parameters");
+        continue;
+      }
+      const YAML::Node& const_layer = layer;
+      m.require(const_layer.IsMap() && const_layer["plugin"].IsDefined(), name, "has no plugin",
+                "plugin: the layer's class, e.g. \"nav2_costmap_2d::VoxelLayer\"");
+    }
   }
   for (const auto& [key, voxel] : {std::pair{"obstacle_layer", false}, {"voxel_layer", true}}) {
     if (auto layer = m.map(key, Need::optional)) {

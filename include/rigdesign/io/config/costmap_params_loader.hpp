@@ -10,14 +10,26 @@
 
 #include "rigdesign/costmap/costmap.hpp"
 #include "rigdesign/costmap/observation.hpp"
+#include "rigdesign/model/source_location.hpp"
 
 namespace rigdesign::io {
+
+/// Where one observation source and its limiting settings are written (the source's map
+/// when a key is absent), for findings about the deployed configuration.
+struct SourceLocations {
+  model::SourceLocation source;
+  model::SourceLocation obstacle_min_range;
+  model::SourceLocation obstacle_max_range;
+  model::SourceLocation min_obstacle_height;
+  model::SourceLocation max_obstacle_height;
+};
 
 struct CostmapParamsFile {
   /// `defaults` with every key the file gives; checked by costmap::check_costmap_params.
   costmap::CostmapParams costmap;
   /// The layer's `observation_sources` in their order, each starting from the source defaults.
   std::vector<costmap::NamedObservationSource> sources;
+  std::vector<SourceLocations> source_locations;  ///< parallel to `sources`
   bool has_sources = false;  ///< the file names observation sources
   /// nav2's `footprint` polygon [m], empty when the file gives robot_radius; the costmap then
   /// takes its circumscribed radius as robot_radius and its inscribed one for inflation.

@@ -1,0 +1,206 @@
+#include "rigdesign/deploy/deployed_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "rigdesign/metrics/coverage.hpp"
+#include "rigdesign/model/format_number.hpp"
+
+namespace rigdesign::deploy {
+namespace {
+
+// Below this an SC difference is rounding of the exact path, not a loss.
+constexpr double kLossTolerance = 1e-4;
+
+std::string percent(double share) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.1f %%", 100 * share);
+  return buffer;
+}
+
+std::string where_text(const model::SourceLocation& where) {
+  return where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
+}
+
+metrics::RequirementResult result(std::string id, std::string title, std::string field,
+                                  std::string metric, const model::SourceLocation& where) {
+  metrics::RequirementResult r;
+  r.id = std::move(id);
+  r.title = std::move(title);
+  r.field = std::move(field);
+  r.metric = std::move(metric);
+  r.where = where;
+  return r;
+}
+
+// A limiting setting and what it does to one mount.
+struct Setting {
+  std::string mount_id;
+  model::MountLimits limits;
+  model::LimitSetting setting;
+};
+
+// The range limits of the nav2 sources that cut into their modes' ranges, and the filters.
+std::vector<Setting> settings_of(const model::Rig& rig, const model::SensorLibrary& library,
+                                 const DeployedConfig& config) {
+  std::vector<Setting> settings;
+  for (const DeployedSource& source : config.sources) {
+    const auto mount = std::find_if(rig.mounts.begin(), rig.mounts.end(),
+                                    [&](const model::Mount& m) { return m.id == source.mount_id; });
+    if (mount == rig.mounts.end()) continue;
+    const model::SensorMode* mode = library.find(mount->sensor_id)->find_mode(mount->mode_id);
+    const costmap::ObservationSource& s = source.source;
+    if (s.obstacle_min_range > mode->min_range) {
+      Setting setting{source.mount_id, {}, {}};
+      setting.limits.min_range = s.obstacle_min_range;
+      setting.setting = {source.mount_id + " obstacle_min_range " +
+                             model::format_number(s.obstacle_min_range, 4) + " m",
+                         source.obstacle_min_range_where};
+      settings.push_back(setting);
+    }
+    if (s.obstacle_max_range < mode->max_range) {
+      Setting setting{source.mount_id, {}, {}};
+      setting.limits.max_range = s.obstacle_max_range;
+      setting.setting = {source.mount_id + " obstacle_max_range " +
+                             model::format_number(s.obstacle_max_range, 4) + " m",
+                         source.obstacle_max_range_where};
+      settings.push_back(setting);
+    }
+  }
+  for (const DeployedFilter& filter : config.filters) {
+    settings.push_back({filter.mount_id, filter.limits, filter.setting});
+  }
+  return settings;
+}
+
+void add_limits(model::MountLimits& into, const model::MountLimits& limits) {
+  if (limits.min_range) into.min_range = std::max(into.min_range.value_or(0.0), *limits.min_range);
+  if (limits.max_range) {
+    into.max_range = into.max_range ? std::min(*into.max_range, *limits.max_range) : *limits.max_range;
+  }
+  into.excluded_azimuths.insert(into.excluded_azimuths.end(), limits.excluded_azimuths.begin(),
+                                limits.excluded_azimuths.end());
+  into.excluded_boxes.insert(into.excluded_boxes.end(), limits.excluded_boxes.begin(),
+                             limits.excluded_boxes.end());
+}
+
+model::Rig limited(const model::Rig& rig, const std::vector<const Setting*>& settings) {
+  model::Rig copy = rig;
+  for (model::Mount& mount : copy.mounts) {
+    for (const Setting* setting : settings) {
+      if (setting->mount_id == mount.id) add_limits(mount.limits, setting->limits);
+    }
+  }
+  return copy;
+}
+
+// SC lost in a sector: the larger of the complete and floor minimum's drops.
+double loss(const metrics::SectorCoverage& design, const metrics::SectorCoverage& deployed) {
+  return std::max(design.complete.min - deployed.complete.min, design.floor.min - deployed.floor.min);
+}
+
+void check_sources(const model::Rig& rig, const model::Requirements& requirements,
+                   const DeployedConfig& config, std::vector<metrics::RequirementResult>& results) {
+  for (const model::Mount& mount : rig.mounts) {
+    const auto source = std::find_if(config.sources.begin(), config.sources.end(),
+                                     [&](const DeployedSource& s) { return s.mount_id == mount.id; });
+    metrics::RequirementResult r = result("D1", "observation source for " + mount.id,
+                                          "observation_sources", "source", mount.where);
+    if (source == config.sources.end()) {
+      r.verdict = metrics::Verdict::fail;
+      r.limiting_mounts = {mount.id};
+      r.explanation = config.nav2_file + " has no observation source named " + mount.id +
+                      ": the costmap never sees this sensor";
+      results.push_back(r);
+      continue;
+    }
+    r.where = source->where;
+    r.explanation = "observation source " + mount.id + " in " + config.nav2_file;
+    results.push_back(r);
+    const costmap::ObservationSource& s = source->source;
+    const double top = rig.body.area_top();
+    metrics::RequirementResult band = result("D2", "height band of " + mount.id,
+                                             "max_obstacle_height", "max_obstacle_height",
+                                             source->max_obstacle_height_where);
+    band.unit = "m";
+    band.required = top;
+    band.actual = s.max_obstacle_height;
+    band.limiting_mounts = {mount.id};
+    if (s.max_obstacle_height < top - 1e-9) {
+      band.verdict = metrics::Verdict::fail;
+      band.explanation = "max_obstacle_height " + model::format_number(s.max_obstacle_height, 4) +
+                         " m is below the top of the area to perceive (" +
+                         model::format_number(top, 4) + " m): obstacles above it never mark";
+    } else if (requirements.smallest_obstacle &&
+               s.min_obstacle_height >= *requirements.smallest_obstacle) {
+      band.field = band.metric = "min_obstacle_height";
+      band.where = source->min_obstacle_height_where;
+      band.required = *requirements.smallest_obstacle;
+      band.actual = s.min_obstacle_height;
+      band.verdict = metrics::Verdict::fail;
+      band.explanation = "min_obstacle_height " + model::format_number(s.min_obstacle_height, 4) +
+                         " m lets R6's smallest obstacle (" +
+                         model::format_number(*requirements.smallest_obstacle, 4) +
+                         " m) pass unmarked";
+    } else {
+      band.explanation = "marks " + model::format_number(s.min_obstacle_height, 4) + ".." +
+                         model::format_number(s.max_obstacle_height, 4) +
+                         " m, holding the area up to " + model::format_number(top, 4) + " m";
+    }
+    results.push_back(band);
+  }
+}
+
+}  // namespace
+
+std::vector<metrics::RequirementResult> check_deployment(const model::Rig& rig,
+                                                         const model::SensorLibrary& library,
+                                                         const model::Requirements& requirements,
+                                                         const DeployedConfig& config) {
+  std::vector<metrics::RequirementResult> results;
+  if (!config.nav2_file.empty()) check_sources(rig, requirements, config, results);
+  const std::vector<Setting> settings = settings_of(rig, library, config);
+  if (requirements.sectors.empty() || settings.empty()) return results;
+  std::vector<const Setting*> all;
+  for (const Setting& setting : settings) all.push_back(&setting);
+  const metrics::RigCoverage design = metrics::compute_coverage(rig, library, requirements.sectors);
+  const metrics::RigCoverage deployed =
+      metrics::compute_coverage(limited(rig, all), library, requirements.sectors);
+  for (std::size_t k = 0; k < requirements.sectors.size(); ++k) {
+    const metrics::SectorCoverage& before = design.sectors[k];
+    const metrics::SectorCoverage& after = deployed.sectors[k];
+    metrics::RequirementResult r =
+        result("D3", "deployed coverage: " + before.sector.name, "sectors", "SC", before.sector.where);
+    r.required = before.sector.min_complete_coverage;
+    r.actual = after.complete.min;
+    const double lost = loss(before, after);
+    r.explanation = "complete min " + percent(before.complete.min) + " -> " +
+                    percent(after.complete.min) + ", floor min " + percent(before.floor.min) +
+                    " -> " + percent(after.floor.min) + " after the deployed limits and filters";
+    if (after.pass || !before.pass || lost <= kLossTolerance) {
+      if (!before.pass) r.verdict = metrics::Verdict::not_evaluated;
+      results.push_back(r);
+      continue;
+    }
+    // Which settings lose coverage here: each one applied alone.
+    r.verdict = metrics::Verdict::fail;
+    std::string culprits;
+    for (const Setting& setting : settings) {
+      const metrics::RigCoverage alone =
+          metrics::compute_coverage(limited(rig, {&setting}), library, {before.sector});
+      const double own = loss(before, alone.sectors.front());
+      if (own <= kLossTolerance) continue;
+      if (culprits.empty()) r.where = setting.setting.where;
+      r.limiting_mounts.push_back(setting.mount_id);
+      culprits += "; " + setting.setting.what + " (" + where_text(setting.setting.where) +
+                  ") loses " + percent(own);
+    }
+    r.explanation += ": the sector needs complete " + percent(before.sector.min_complete_coverage) +
+                     " and floor " + percent(before.sector.min_floor_coverage) + culprits;
+    results.push_back(r);
+  }
+  return results;
+}
+
+}  // namespace rigdesign::deploy

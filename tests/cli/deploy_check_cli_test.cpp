@@ -1,0 +1,151 @@
+// Issue 14 item 2: `check --nav2 --filters` guards the configuration a rig is deployed with.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "support/cli_runner.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign::test;
+
+namespace {
+
+// The cart's rear scanner faces backwards (yaw 180 deg): its own +-0.8 rad is the robot's
+// rear, the whole back sector (150..210 deg of the robot is -30..30 deg of the scanner).
+const std::string kHidesRear = R"(rear_lidar_self_filter:
+  ros__parameters:
+    filter1:
+      name: hides_the_rear
+      type: laser_filters/LaserScanAngularBoundsFilterInPlace
+      params:
+        lower_angle: -0.8
+        upper_angle: 0.8
+)";
+
+// The same filter narrowed to where the scanner sees the cart itself: the corners of the back
+// face are at +-135 deg seen from the scanner (0.2 m behind a 0.4 m wide face), so
+// |angle| > 2.356 rad; in-place bounds from 2.36 rad through pi, written as two bands.
+const std::string kBodyOnly = R"(rear_lidar_self_filter:
+  ros__parameters:
+    filter1:
+      name: body_left
+      type: laser_filters/LaserScanAngularBoundsFilterInPlace
+      params: {lower_angle: 2.36, upper_angle: 3.2}
+    filter2:
+      name: body_right
+      type: laser_filters/LaserScanAngularBoundsFilterInPlace
+      params: {lower_angle: -3.2, upper_angle: -2.36}
+)";
+
+}  // namespace
+
+TEST_CASE("check --filters: a filter hiding a required sector fails at its line", "[deploy]") {
+  TempFolder folder;
+  const std::string cart = source_path("rigs/cart_two_scanners.yaml");
+  const CliResult hides = run_cli({"check", cart, "--filters", folder.write("hides.yaml", kHidesRear)});
+  INFO(hides.out << hides.err);
+  CHECK(hides.exit_code == 1);
+  // The filter's entry is on line 3 of the file ("filter1:" at column 5).
+  CHECK(hides.out.find(folder.path() + "/hides.yaml:3:5: sectors: fail: D3 deployed coverage: back") !=
+        std::string::npos);
+  CHECK(hides.out.find("rear_lidar hides_the_rear drops (-0.8, 0.8) rad") != std::string::npos);
+  const CliResult narrowed = run_cli({"check", cart, "--filters", folder.write("body.yaml", kBodyOnly)});
+  INFO(narrowed.out << narrowed.err);
+  CHECK(narrowed.exit_code == 0);
+  // The exported files pass too.
+  const std::string out = folder.path() + "/export";
+  REQUIRE(run_cli({"export", cart, "--to", out}).exit_code == 0);
+  const CliResult exported = run_cli({"check", cart, "--nav2", out + "/nav2_costmap.yaml",
+                                      "--filters", out + "/self_filters.yaml"});
+  INFO(exported.out << exported.err);
+  CHECK(exported.exit_code == 0);
+  CHECK(exported.out.find("D1 observation source for rear_lidar") != std::string::npos);
+}
+
+TEST_CASE("check --nav2: a range limit that opens a blind ring fails, a missing source fails",
+          "[deploy]") {
+  TempFolder folder;
+  const std::string rig = source_path("rigs/ur_cleaner.yaml");
+  const std::string out = folder.path() + "/export";
+  REQUIRE(run_cli({"export", rig, "--to", out}).exit_code == 0);
+  std::string text;
+  {
+    std::ifstream in(out + "/nav2_costmap.yaml");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const CliResult exported = run_cli({"check", rig, "--nav2", out + "/nav2_costmap.yaml"});
+  CHECK(exported.exit_code == 0);
+  // The mower of the issue: obstacle_min_range raised to hide something near the robot. The
+  // Azure Kinect's first floor return is 0.89 m from its lens (0.75 m high, floor seen from
+  // 0.48 m ahead), so 1.2 m leaves a blind ring in front.
+  const std::string key = "obstacle_min_range: 0.5  #";
+  REQUIRE(text.find(key) != std::string::npos);
+  std::string mower = text;
+  mower.replace(mower.find(key), key.size(), "obstacle_min_range: 1.2  #");
+  const CliResult ring = run_cli({"check", rig, "--nav2", folder.write("mower.yaml", mower)});
+  INFO(ring.out << ring.err);
+  CHECK(ring.exit_code == 1);
+  CHECK(ring.out.find("mower.yaml:33:31: sectors: fail: D3 deployed coverage: front") !=
+        std::string::npos);
+  CHECK(ring.out.find("front_camera obstacle_min_range 1.2 m") != std::string::npos);
+  // The top lidar left out of the sources: the costmap never sees it.
+  const std::string listed = "observation_sources: front_camera left_camera right_camera back_camera top_lidar";
+  REQUIRE(text.find(listed) != std::string::npos);
+  std::string without = text;
+  without.replace(without.find(listed), listed.size(),
+                  "observation_sources: front_camera left_camera right_camera back_camera");
+  const std::size_t block = without.find("        top_lidar:\n");
+  without.erase(block, without.find("      hit_layer:", block) - block);
+  const CliResult missing = run_cli({"check", rig, "--nav2", folder.write("without.yaml", without)});
+  INFO(missing.out << missing.err);
+  CHECK(missing.exit_code == 1);
+  CHECK(missing.out.find("fail: D1 observation source for top_lidar") != std::string::npos);
+}
+
+TEST_CASE("check --nav2 / --filters: bad files exit 2 naming file:line:col and the key",
+          "[deploy]") {
+  TempFolder folder;
+  const std::string cart = source_path("rigs/cart_two_scanners.yaml");
+  const auto nav2 = [&](const std::string& layers) {
+    return "local_costmap:\n  local_costmap:\n    ros__parameters:\n"
+           "      robot_radius: 0.36\n" + layers;
+  };
+  // A listed layer without its plugin class.
+  const CliResult plugin = run_cli(
+      {"check", cart, "--nav2",
+       folder.write("plugin.yaml", nav2("      plugins: [\"obstacle_layer\"]\n      obstacle_layer:\n"
+                                        "        observation_sources: front_lidar\n"
+                                        "        front_lidar: {data_type: LaserScan}\n"))});
+  CHECK(plugin.exit_code == 2);
+  CHECK(plugin.out.find("plugin.yaml:7:9") != std::string::npos);
+  CHECK(plugin.out.find("has no plugin") != std::string::npos);
+  // A source named after no mount.
+  const CliResult source = run_cli(
+      {"check", cart, "--nav2",
+       folder.write("source.yaml", nav2("      obstacle_layer:\n        plugin: x\n"
+                                        "        observation_sources: bumper\n"
+                                        "        bumper: {data_type: LaserScan}\n"))});
+  CHECK(source.exit_code == 2);
+  CHECK(source.out.find("source.yaml:8:17: bumper") != std::string::npos);
+  CHECK(source.out.find("names no mount") != std::string::npos);
+  // A negative range.
+  const CliResult negative = run_cli(
+      {"check", cart, "--nav2",
+       folder.write("negative.yaml", nav2("      obstacle_layer:\n        plugin: x\n"
+                                          "        observation_sources: front_lidar\n"
+                                          "        front_lidar:\n"
+                                          "          raytrace_min_range: -1\n"))});
+  CHECK(negative.exit_code == 2);
+  CHECK(negative.out.find("negative.yaml:9:31") != std::string::npos);
+  CHECK(negative.out.find("raytrace_min_range: is negative") != std::string::npos);
+  // A filter file for a sensor the rig lacks.
+  const CliResult lacks = run_cli(
+      {"check", cart, "--filters",
+       folder.write("lacks.yaml", "top_lidar_self_filter:\n  ros__parameters:\n    filter1:\n"
+                                  "      type: laser_filters/LaserScanRangeFilter\n"
+                                  "      params: {lower_threshold: 0.3}\n")});
+  CHECK(lacks.exit_code == 2);
+  CHECK(lacks.out.find("lacks.yaml:1:1: top_lidar_self_filter") != std::string::npos);
+  CHECK(lacks.out.find("names no mount") != std::string::npos);
+}
