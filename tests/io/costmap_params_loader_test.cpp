@@ -79,8 +79,10 @@ TEST_CASE("keys the file does not give keep the caller's defaults", "[io][costma
                                         "resolution: 0.1\n"
                                         "plugins: [voxel_layer, inflation_layer]\n"
                                         "voxel_layer:\n"
+                                        "  plugin: nav2_costmap_2d::VoxelLayer\n"
                                         "  observation_sources: [lidar]\n"
-                                        "  lidar: {clearing: false}\n");
+                                        "  lidar: {clearing: false}\n"
+                                        "inflation_layer: {plugin: nav2_costmap_2d::InflationLayer}\n");
   costmap::CostmapParams defaults;
   defaults.size_x = 7.0;
   defaults.hit.hit_max = 99;
