@@ -6,9 +6,11 @@
 
 #include "app.hpp"
 #include "coverage_files.hpp"
+#include "deployment_report.hpp"
 #include "json_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/yaml_writers.hpp"
+#include "rigdesign/io/deploy/deployment_files.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/render/pareto_plot.hpp"
 #include "text_table.hpp"
@@ -218,6 +220,14 @@ std::vector<std::string> SelectReport::write_files(const select::RelaxationOutco
         rig, space_.library(), pick->selection.coverage, {0, 45, 90, 180}, coverage_folder, true);
     written.insert(written.end(), pictures.begin(), pictures.end());
   }
+  // What the chosen rig means for its ROS 2 stack, as `rigdesign export` writes it.
+  model::Rig rig = pick->selection.rig;
+  rig.file = rig_file;
+  const deploy::Deployment deployment =
+      deploy::plan_deployment(rig, space_.library(), &pick->requirements, {});
+  const std::vector<std::string> deployed = io::write_deployment(
+      folder + "/deploy", rig, deployment, deployment_header(rig, &pick->requirements));
+  written.insert(written.end(), deployed.begin(), deployed.end());
   return written;
 }
 

@@ -86,6 +86,13 @@ TEST_CASE(
   INFO(check.out);
   CHECK(check.exit_code == 0);
   CHECK(check.out.find("0 fail") != std::string::npos);
+  // The chosen rig's ROS 2 configuration is written beside it, and check accepts it too.
+  const CliResult deployed = run_cli({"check", out + "/chosen_rig.yaml", "--nav2",
+                                      out + "/deploy/nav2_costmap.yaml", "--filters",
+                                      out + "/deploy/self_filters.yaml"});
+  INFO(deployed.out);
+  CHECK(deployed.exit_code == 0);
+  CHECK(deployed.out.find("D1 observation source") != std::string::npos);
 }
 
 TEST_CASE("an exhausted policy exits 1 naming the binding requirements") {
