@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 
 #include "rigdesign/deploy/sensor_frames.hpp"
 #include "rigdesign/geometry/footprint_hull.hpp"
@@ -125,9 +124,7 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   p.inflation.inflation_radius = round_up(config.robot_radius + 0.1, 0.01);
   bool any_3d = false;
   for (const model::Mount& mount : rig.mounts) {
-    const model::Sensor* sensor = library.find(mount.sensor_id);
-    const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
-    if (mode == nullptr) throw std::logic_error("costmap_config: unresolved mount " + mount.id);
+    const model::SensorMode* mode = &library.resolved_mode(mount.sensor_id, mount.mode_id);
     SourceConfig source;
     source.mount_id = mount.id;
     source.laser_scan = mode->fov.shape == model::FovShape::planar;

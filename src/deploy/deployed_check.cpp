@@ -49,23 +49,21 @@ std::vector<Setting> settings_of(const model::Rig& rig, const model::SensorLibra
     const auto mount = std::find_if(rig.mounts.begin(), rig.mounts.end(),
                                     [&](const model::Mount& m) { return m.id == source.mount_id; });
     if (mount == rig.mounts.end()) continue;
-    const model::SensorMode* mode = library.find(mount->sensor_id)->find_mode(mount->mode_id);
+    const model::SensorMode* mode = &library.resolved_mode(mount->sensor_id, mount->mode_id);
     const costmap::ObservationSource& s = source.source;
-    if (s.obstacle_min_range > mode->min_range) {
+    const auto add_range = [&](const char* key, double value, const model::SourceLocation& where,
+                               bool minimum) {
       Setting setting{source.mount_id, {}, {}};
-      setting.limits.min_range = s.obstacle_min_range;
-      setting.setting = {source.mount_id + " obstacle_min_range " +
-                             model::format_number(s.obstacle_min_range, 4) + " m",
-                         source.obstacle_min_range_where};
+      (minimum ? setting.limits.min_range : setting.limits.max_range) = value;
+      setting.setting = {source.mount_id + " " + key + " " + model::format_number(value, 4) + " m",
+                         where};
       settings.push_back(setting);
+    };
+    if (s.obstacle_min_range > mode->min_range) {
+      add_range("obstacle_min_range", s.obstacle_min_range, source.obstacle_min_range_where, true);
     }
     if (s.obstacle_max_range < mode->max_range) {
-      Setting setting{source.mount_id, {}, {}};
-      setting.limits.max_range = s.obstacle_max_range;
-      setting.setting = {source.mount_id + " obstacle_max_range " +
-                             model::format_number(s.obstacle_max_range, 4) + " m",
-                         source.obstacle_max_range_where};
-      settings.push_back(setting);
+      add_range("obstacle_max_range", s.obstacle_max_range, source.obstacle_max_range_where, false);
     }
   }
   for (const DeployedFilter& filter : config.filters) {

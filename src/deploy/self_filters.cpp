@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
@@ -62,11 +61,9 @@ std::vector<SelfFilter> self_filters(const model::Rig& rig, const model::SensorL
   const geometry::BodyOccluder occluder(rig.body);
   std::vector<SelfFilter> filters;
   for (const model::Mount& mount : rig.mounts) {
-    const model::Sensor* sensor = library.find(mount.sensor_id);
-    const model::SensorMode* full = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
-    if (full == nullptr) throw std::logic_error("self_filters: unresolved mount " + mount.id);
     const model::SensorMode mode =
-        sim::decimated_mode(*full, settings.camera_decimation, settings.lidar_decimation);
+        sim::decimated_mode(library.resolved_mode(mount.sensor_id, mount.mode_id),
+                            settings.camera_decimation, settings.lidar_decimation);
     const model::Vec3 origin = mount.T_robot_sensor.translation();
     const model::Mat3 R = mount.T_robot_sensor.linear();
     SelfFilter filter;

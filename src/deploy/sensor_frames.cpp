@@ -1,6 +1,5 @@
 #include "rigdesign/deploy/sensor_frames.hpp"
 
-#include <stdexcept>
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -38,9 +37,7 @@ SensorFrames sensor_frames(const model::Rig& rig, const model::SensorLibrary& li
   frames.parent = parent.empty() ? rig.base_link : parent;
   const model::Pose3 T_parent_robot = T_robot_parent(rig, frames.parent).inverse();
   for (const model::Mount& mount : rig.mounts) {
-    const model::Sensor* sensor = library.find(mount.sensor_id);
-    const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
-    if (mode == nullptr) throw std::logic_error("sensor_frames: unresolved mount " + mount.id);
+    const model::SensorMode* mode = &library.resolved_mode(mount.sensor_id, mount.mode_id);
     SensorFrame frame;
     frame.mount_id = mount.id;
     frame.sensor_id = mount.sensor_id;

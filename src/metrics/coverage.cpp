@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <stdexcept>
 
 #include "rigdesign/geometry/cross_section.hpp"
 #include "rigdesign/metrics/mount_metrics.hpp"
@@ -26,9 +25,7 @@ std::vector<PlacedMount> place_mounts(const model::Rig& rig, const model::Sensor
                                       const geometry::BodyOccluder& body) {
   std::vector<PlacedMount> placed;
   for (const model::Mount& mount : rig.mounts) {
-    const model::Sensor* sensor = library.find(mount.sensor_id);
-    const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
-    if (mode == nullptr) throw std::logic_error("compute_coverage: unresolved mount " + mount.id);
+    const model::SensorMode* mode = &library.resolved_mode(mount.sensor_id, mount.mode_id);
     const double distance = rig.distance_for(mount);
     placed.push_back({&mount, mode, geometry::MountedFov(*mode, mount.T_robot_sensor, body, mount.limits),
                       ray_spacing(distance, mode->worst_angular_resolution()),

@@ -1,6 +1,7 @@
 #include "rigdesign/model/sensor.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace rigdesign::model {
 
@@ -31,6 +32,14 @@ const Sensor* SensorLibrary::find(const std::string& sensor_id) const {
   const auto it = std::find_if(sensors.begin(), sensors.end(),
                                [&](const Sensor& sensor) { return sensor.id == sensor_id; });
   return it == sensors.end() ? nullptr : &*it;
+}
+
+const SensorMode& SensorLibrary::resolved_mode(const std::string& sensor_id,
+                                               const std::string& mode_id) const {
+  const Sensor* sensor = find(sensor_id);
+  const SensorMode* mode = sensor ? sensor->find_mode(mode_id) : nullptr;
+  if (mode == nullptr) throw std::logic_error("unresolved sensor mode " + sensor_id + "/" + mode_id);
+  return *mode;
 }
 
 std::string to_string(Technology technology) {

@@ -30,7 +30,12 @@ TEST_CASE("export CLI: files, and the exported Hit Layer avoids the Fig. 12 coll
   const CliResult with_hit = run(true);
   INFO(with_hit.err);
   REQUIRE(with_hit.exit_code == 0);
-  CHECK(with_hit.out.find("collision: none") != std::string::npos);
+  CHECK(with_hit.out.find("collision: none; goal reached") != std::string::npos);
+  // The same outcome as the scenario's built-in parameters (paper 1's Hit Layer values).
+  const CliResult defaults =
+      run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario",
+               "wall_following", "--frame-every", "0", "--out", folder.path() + "/defaults"});
+  CHECK(defaults.out.find("collision: none; goal reached") != std::string::npos);
   const CliResult without = run(false);
   CHECK(without.out.find("collision: collision with foam") != std::string::npos);
 }

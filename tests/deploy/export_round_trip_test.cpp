@@ -44,7 +44,7 @@ std::string round_trip_rig(const model::Rig& rig, const std::string& parent, boo
 TEST_CASE("export: every bundled rig round-trips through its sensors.urdf.xacro", "[deploy]") {
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   for (const std::string name : {"ur_cleaner", "ur_cleaner_from_urdf", "delivery_amr", "elektron",
-                                  "cell", "turtlebot4", "jackal"}) {
+                                  "cell", "cart_two_scanners", "turtlebot4", "jackal"}) {
     INFO(name);
     const model::Rig rig = io::load_rig(source_path("rigs/" + name + ".yaml"));
     const deploy::SensorFrames frames = deploy::sensor_frames(rig, library);

@@ -164,6 +164,9 @@ struct SensorLibrary {
   std::string file;
 
   const Sensor* find(const std::string& sensor_id) const;
+  /// The mode a mount's references name; std::logic_error when they do not resolve (callers
+  /// have checked the references first, io::check_rig_references).
+  const SensorMode& resolved_mode(const std::string& sensor_id, const std::string& mode_id) const;
 };
 
 std::string to_string(Technology technology);
