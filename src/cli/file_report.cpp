@@ -150,7 +150,8 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
           if (!deployment.empty()) {
             const deploy::DeployedConfig config = load_deployment(deployment, inputs.rig);
             for (metrics::RequirementResult& result : deploy::check_deployment(
-                     inputs.rig, inputs.library, *inputs.requirements, config)) {
+                     inputs.rig, inputs.library, *inputs.requirements, config,
+                     coverage ? &*coverage : nullptr)) {
               report.results.push_back(std::move(result));
             }
           }

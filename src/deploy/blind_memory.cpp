@@ -43,8 +43,7 @@ struct Pass {
 // The pass of an obstacle that enters the gap at angles[enter] (on the left when `left`) and
 // leaves it at folded azimuth `a_leave` (pi: never, it is kept until the body has passed it).
 Pass pass_from(const std::vector<metrics::AngleCoverage>& angles, const std::vector<bool>& blind,
-               int enter, bool left,
-               double a_leave, double step, double d) {
+               int enter, bool left, double a_leave, double step, double d) {
   const int n = static_cast<int>(angles.size());
   const double a_enter = folded(angles[enter].theta);
   const double lateral = angles[enter].r;
@@ -85,6 +84,9 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
   int start = 0;
   while (blind[start]) ++start;
   const double step = 2 * kPi / n;
+  const auto pass = [&](int enter, bool left, double a_leave) {
+    return pass_from(angles, blind, enter, left, a_leave, step, coverage.distance);
+  };
   for (int k = 0; k < n;) {
     const int i = (start + k) % n;
     if (!blind[i]) {
@@ -93,46 +95,41 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
     }
     int length = 0;
     while (k + length < n && blind[(start + k + length) % n]) ++length;
+    k += length;
     // On the left (azimuths in (0, pi)) a passed obstacle moves towards larger azimuths, on
     // the right towards smaller ones; a gap across pi (astern) is entered from both sides
     // and never left, a gap across 0 (ahead) is not passed driving forward.
     const double first = angles[i].theta;
     const double last = first + (length - 1) * step;
-    const int last_index = (start + k + length - 1) % n;
-    BlindGap gap;
-    gap.from = first;
-    gap.to = last;
+    const int last_index = (start + k - 1) % n;
     const bool across_back = first <= kPi + 1e-9 && last >= kPi - 1e-9;
     const bool across_front = last >= 2 * kPi - 1e-9;
     std::vector<Pass> passes;
     if (across_back) {
-      if (first < kPi - 1e-9) passes.push_back(pass_from(angles, blind, i, true, kPi, step, coverage.distance));
-      if (last > kPi + 1e-9) passes.push_back(pass_from(angles, blind, last_index, false, kPi, step, coverage.distance));
+      if (first < kPi - 1e-9) passes.push_back(pass(i, true, kPi));
+      if (last > kPi + 1e-9) passes.push_back(pass(last_index, false, kPi));
     } else if (!across_front) {
-      const bool left = last < kPi;
-      passes.push_back(left ? pass_from(angles, blind, i, true, folded(last), step, coverage.distance)
-                            : pass_from(angles, blind, last_index, false, folded(first), step, coverage.distance));
+      passes.push_back(last < kPi ? pass(i, true, folded(last)) : pass(last_index, false, folded(first)));
     }
-    if (passes.empty()) {
-      k += length;
-      continue;
-    }
-    const Pass& longest = *std::max_element(passes.begin(), passes.end(), [](const Pass& a, const Pass& b) {
-      return a.keep < b.keep;
-    });
+    if (passes.empty()) continue;
+    const Pass& longest = *std::max_element(
+        passes.begin(), passes.end(), [](const Pass& a, const Pass& b) { return a.keep < b.keep; });
+    // An obstacle already behind the body when it enters the gap needs no keeping.
+    if (!(longest.keep > 0.0)) continue;
+    BlindGap gap;
+    gap.from = first;
+    gap.to = last;
     gap.keep_distance = longest.keep;
     gap.seen_distance = longest.seen;
-    gap.reaches_back = across_back || (last < kPi ? folded(last) : folded(first)) >= kPi - 1.5 * step;
-    if (!(gap.keep_distance > 0.0)) {  // already behind the body when it enters: nothing to keep
-      k += length;
-      continue;
-    }
+    gap.reaches_back =
+        across_back || (last < kPi ? folded(last) : folded(first)) >= kPi - 1.5 * step;
     memory.gaps.push_back(gap);
-    k += length;
   }
   for (std::size_t g = 0; g < memory.gaps.size(); ++g) {
-    if (memory.worst_gap < 0 || memory.gaps[g].keep_distance > memory.gaps[memory.worst_gap].keep_distance)
+    if (memory.worst_gap < 0 ||
+        memory.gaps[g].keep_distance > memory.gaps[memory.worst_gap].keep_distance) {
       memory.worst_gap = static_cast<int>(g);
+    }
   }
   if (memory.worst_gap < 0) {
     memory.rule = "no blind gap is passed while driving forward: paper 1's values";

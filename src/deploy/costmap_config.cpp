@@ -77,19 +77,12 @@ double floor_height_error(const model::SensorMode& mode, double height, double d
 // nav2's footprint: the hull of the body, or a radius when the hull is nearly round.
 void set_footprint(const model::RobotBody& body, CostmapConfig& config) {
   const std::vector<model::Vec2> hull = geometry::footprint_hull(body);
-  double outer = 0.0;
-  for (const model::Vec2& corner : hull) outer = std::max(outer, corner.norm());
-  double inner = outer;
-  for (std::size_t i = 0; i < hull.size(); ++i) {
-    const model::Vec2& a = hull[i];
-    const model::Vec2& b = hull[(i + 1) % hull.size()];
-    const model::Vec2 edge = b - a;
-    inner = std::min(inner, std::abs(edge.x() * a.y() - edge.y() * a.x()) / edge.norm());
-  }
+  const model::PolygonRadii radii = model::polygon_radii(hull);
+  const double outer = radii.circumscribed;
   const bool round = body.footprint.empty() &&
                      (!body.has_parts() || std::abs(model::signed_area(hull)) >= kRoundShare * kPi * outer * outer);
   config.robot_radius = round && !body.has_parts() ? body.radius : outer;
-  config.inscribed_radius = round && !body.has_parts() ? body.radius : inner;
+  config.inscribed_radius = round && !body.has_parts() ? body.radius : radii.inscribed;
   if (!round) config.footprint = hull;
   config.notes.push_back(
       round ? "footprint: robot_radius " + model::format_number(config.robot_radius, 4) +
@@ -130,7 +123,7 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
     source.laser_scan = mode->fov.shape == model::FovShape::planar;
     any_3d = any_3d || !source.laser_scan;
     source.topic = expand_topic(source.laser_scan ? options.scan_topic : options.cloud_topic, mount.id);
-    source.sensor_frame = mode->is_camera() ? optical_frame_name(mount.id) : sensor_link_name(mount.id);
+    source.sensor_frame = data_frame_name(mount.id, *mode);
     costmap::ObservationSource& s = source.source;
     const model::Vec3 origin = mount.T_robot_sensor.translation();
     // Far enough to mark every point of the area up to the mount's distance of interest.

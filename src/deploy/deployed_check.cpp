@@ -19,10 +19,6 @@ std::string percent(double share) {
   return buffer;
 }
 
-std::string where_text(const model::SourceLocation& where) {
-  return where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
-}
-
 metrics::RequirementResult result(std::string id, std::string title, std::string field,
                                   std::string metric, const model::SourceLocation& where) {
   metrics::RequirementResult r;
@@ -155,18 +151,21 @@ void check_sources(const model::Rig& rig, const model::Requirements& requirement
 std::vector<metrics::RequirementResult> check_deployment(const model::Rig& rig,
                                                          const model::SensorLibrary& library,
                                                          const model::Requirements& requirements,
-                                                         const DeployedConfig& config) {
+                                                         const DeployedConfig& config,
+                                                         const metrics::RigCoverage* design) {
   std::vector<metrics::RequirementResult> results;
   if (!config.nav2_file.empty()) check_sources(rig, requirements, config, results);
   const std::vector<Setting> settings = settings_of(rig, library, config);
   if (requirements.sectors.empty() || settings.empty()) return results;
   std::vector<const Setting*> all;
   for (const Setting& setting : settings) all.push_back(&setting);
-  const metrics::RigCoverage design = metrics::compute_coverage(rig, library, requirements.sectors);
+  const metrics::RigCoverage own_design =
+      design ? metrics::RigCoverage{} : metrics::compute_coverage(rig, library, requirements.sectors);
+  const std::vector<metrics::SectorCoverage>& designed = (design ? *design : own_design).sectors;
   const metrics::RigCoverage deployed =
       metrics::compute_coverage(limited(rig, all), library, requirements.sectors);
   for (std::size_t k = 0; k < requirements.sectors.size(); ++k) {
-    const metrics::SectorCoverage& before = design.sectors[k];
+    const metrics::SectorCoverage& before = designed[k];
     const metrics::SectorCoverage& after = deployed.sectors[k];
     metrics::RequirementResult r =
         result("D3", "deployed coverage: " + before.sector.name, "sectors", "SC", before.sector.where);
@@ -191,7 +190,7 @@ std::vector<metrics::RequirementResult> check_deployment(const model::Rig& rig,
       if (own <= kLossTolerance) continue;
       if (culprits.empty()) r.where = setting.setting.where;
       r.limiting_mounts.push_back(setting.mount_id);
-      culprits += "; " + setting.setting.what + " (" + where_text(setting.setting.where) +
+      culprits += "; " + setting.setting.what + " (" + model::to_string(setting.setting.where) +
                   ") loses " + percent(own);
     }
     r.explanation += ": the sector needs complete " + percent(before.sector.min_complete_coverage) +

@@ -7,13 +7,9 @@
 namespace rigdesign::deploy {
 namespace {
 
-// The robot frame's pose of `parent`: base_footprint is the robot frame itself (REP-105), any
-// other name a link of the rig's description.
+// The robot frame's pose of `parent`, or an InputError naming the frames there are.
 model::Pose3 T_robot_parent(const model::Rig& rig, const std::string& parent) {
-  if (const auto link = rig.link_poses.find(parent); link != rig.link_poses.end()) {
-    return link->second;
-  }
-  if (parent == "base_footprint") return model::Pose3::Identity();
+  if (const std::optional<model::Pose3> pose = robot_frame_pose(rig, parent)) return *pose;
   std::vector<std::string> names = {"base_footprint"};
   for (const auto& [name, pose] : rig.link_poses) names.push_back(name);
   throw model::InputError(model::Diagnostic{
@@ -22,6 +18,18 @@ model::Pose3 T_robot_parent(const model::Rig& rig, const std::string& parent) {
 }
 
 }  // namespace
+
+std::optional<model::Pose3> robot_frame_pose(const model::Rig& rig, const std::string& frame) {
+  if (const auto link = rig.link_poses.find(frame); link != rig.link_poses.end()) {
+    return link->second;
+  }
+  if (frame == "base_footprint") return model::Pose3::Identity();
+  return std::nullopt;
+}
+
+std::string data_frame_name(const std::string& mount_id, const model::SensorMode& mode) {
+  return mode.is_camera() ? optical_frame_name(mount_id) : sensor_link_name(mount_id);
+}
 
 std::string sensor_link_name(const std::string& mount_id) {
   return mount_id + "_link";

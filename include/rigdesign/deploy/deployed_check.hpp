@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rigdesign/costmap/observation.hpp"
+#include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/model/mount_limits.hpp"
 #include "rigdesign/model/requirements.hpp"
@@ -43,10 +44,13 @@ struct DeployedConfig {
 /// Results with ids D1 (every mount has an observation source), D2 (each source's height
 /// band holds the area to perceive and marks R6's smallest obstacle) and D3 (per requirement
 /// sector: the deployed coverage still meets it; on failure the SC lost and each setting that
-/// loses some of it, with file:line). Precondition: the rig's references resolve.
+/// loses some of it, with file:line). Precondition: the rig's references resolve. `design`:
+/// the rig's own coverage for requirements.sectors when the caller has it (check computes it
+/// for R2), else null and it is computed here.
 std::vector<metrics::RequirementResult> check_deployment(const model::Rig& rig,
                                                          const model::SensorLibrary& library,
                                                          const model::Requirements& requirements,
-                                                         const DeployedConfig& config);
+                                                         const DeployedConfig& config,
+                                                         const metrics::RigCoverage* design = nullptr);
 
 }  // namespace rigdesign::deploy

@@ -32,6 +32,13 @@ struct SensorFrames {
 std::string sensor_link_name(const std::string& mount_id);
 std::string optical_frame_name(const std::string& mount_id);
 
+/// A frame's pose in the robot frame: base_footprint (the robot frame itself, REP-105) or a
+/// link of the rig's description; nothing for any other name.
+std::optional<model::Pose3> robot_frame_pose(const model::Rig& rig, const std::string& frame);
+
+/// The frame a mount's driver stamps its data with: a camera's optical frame, else its link.
+std::string data_frame_name(const std::string& mount_id, const model::SensorMode& mode);
+
 /// Frames of every mount of `rig` (modes from `library`; a mount whose mode is missing is a
 /// precondition violation). `parent` empty: the rig's base link (base_footprint without a
 /// description). Throws InputError at the rig when `parent` is neither base_footprint nor a

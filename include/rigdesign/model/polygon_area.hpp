@@ -9,4 +9,13 @@ namespace rigdesign::model {
 /// vertices run counter-clockwise.
 double signed_area(const std::vector<Vec2>& polygon);
 
+/// A footprint's two radii about the origin, as nav2 derives them from its polygon: the
+/// circumscribed one (the farthest corner) and the inscribed one (the nearest edge's line,
+/// never more than the circumscribed one; zero-length edges are skipped) [m].
+struct PolygonRadii {
+  double circumscribed = 0.0;
+  double inscribed = 0.0;
+};
+PolygonRadii polygon_radii(const std::vector<Vec2>& polygon);
+
 }  // namespace rigdesign::model

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/model/input_error.hpp"
+#include "rigdesign/model/polygon_area.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -221,18 +221,12 @@ void read_footprint(MapReader& m, CostmapParamsFile& file) {
     m.require(false, "footprint", "is not a polygon of at least three [x, y] points", expected);
     return;
   }
-  double outer = 0.0, inner = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const model::Vec2& a = polygon[i];
-    const model::Vec2 edge = polygon[(i + 1) % polygon.size()] - a;
-    outer = std::max(outer, a.norm());
-    const double length = edge.norm();
-    if (length > 0.0) inner = std::min(inner, std::abs(edge.x() * a.y() - edge.y() * a.x()) / length);
-  }
+  const model::PolygonRadii radii = model::polygon_radii(polygon);
+  const double outer = radii.circumscribed;
   m.require(outer > 0.0, "footprint", "has no extent", expected);
   file.footprint = polygon;
   file.costmap.robot_radius = outer;
-  file.costmap.inflation.inscribed_radius = std::min(inner, outer);
+  file.costmap.inflation.inscribed_radius = radii.inscribed;
 }
 
 bool listed(const std::vector<std::string>& plugins, const std::string& name) {

@@ -19,8 +19,8 @@ std::vector<std::string> write_deployment(const std::string& folder, const model
   }
   // The robot frame's link carries the crop boxes; it differs from the robot frame by its
   // height above the floor only.
-  model::Pose3 T_robot_base = model::Pose3::Identity();
-  T_robot_base.translation().z() = rig.base_link_height;
+  const model::Pose3 T_robot_base =
+      deploy::robot_frame_pose(rig, rig.base_link).value_or(model::Pose3::Identity());
   const std::vector<std::pair<std::string, std::string>> files = {
       {"sensors.urdf.xacro", sensors_xacro_text(deployment.frames, header)},
       {"nav2_costmap.yaml", nav2_costmap_text(deployment.costmap, header)},

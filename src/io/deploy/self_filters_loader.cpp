@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "io/config/yaml_reader.hpp"
+#include "rigdesign/deploy/sensor_frames.hpp"
 #include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/optical_frame.hpp"
@@ -35,18 +36,14 @@ std::string mount_of(const std::string& node, const model::Rig& rig) {
   return best;
 }
 
-// A frame's pose in the robot frame, or nothing.
+// A frame's pose in the robot frame: the robot's own frames, or a mount's exported frames.
 std::optional<model::Pose3> frame_pose(const model::Rig& rig, const std::string& frame) {
-  if (frame == "base_footprint" && !rig.link_poses.count(frame)) return model::Pose3::Identity();
-  if (const auto link = rig.link_poses.find(frame); link != rig.link_poses.end()) return link->second;
-  if (frame == rig.base_link) {
-    model::Pose3 base = model::Pose3::Identity();
-    base.translation().z() = rig.base_link_height;
-    return base;
-  }
+  if (const std::optional<model::Pose3> pose = deploy::robot_frame_pose(rig, frame)) return pose;
   for (const model::Mount& mount : rig.mounts) {
-    if (frame == mount.id + "_link") return mount.T_robot_sensor;
-    if (frame == mount.id + "_optical_frame") return mount.T_robot_sensor * model::T_sensor_optical();
+    if (frame == deploy::sensor_link_name(mount.id)) return mount.T_robot_sensor;
+    if (frame == deploy::optical_frame_name(mount.id)) {
+      return mount.T_robot_sensor * model::T_sensor_optical();
+    }
   }
   return std::nullopt;
 }
@@ -54,7 +51,7 @@ std::optional<model::Pose3> frame_pose(const model::Rig& rig, const std::string&
 std::vector<std::string> frame_names(const model::Rig& rig) {
   std::vector<std::string> names = {"base_footprint"};
   for (const auto& [name, pose] : rig.link_poses) names.push_back(name);
-  for (const model::Mount& mount : rig.mounts) names.push_back(mount.id + "_link");
+  for (const model::Mount& mount : rig.mounts) names.push_back(deploy::sensor_link_name(mount.id));
   return names;
 }
 
@@ -144,7 +141,7 @@ void read_laser_filter(MapReader& entry, const std::string& mount, const model::
     params->require(!invert, "invert", "is true (keep only the inside)",
                     "false: rigdesign models boxes that drop their inside");
     const std::optional<model::OrientedBox> box =
-        read_box(*params, "box_frame", mount + "_link", rig);
+        read_box(*params, "box_frame", deploy::sensor_link_name(mount), rig);
     params->reject_unknown_keys();
     if (!box || invert) return;
     filter.limits.excluded_boxes.push_back(*box);
@@ -188,7 +185,7 @@ std::vector<deploy::DeployedFilter> load_self_filters(const std::string& path,
         const bool negative = m.boolean("negative", Need::optional).value_or(false);
         m.require(negative, "negative", "is false (keep only the inside)",
                   "true: a self-filter crop box drops its inside");
-        const std::optional<model::OrientedBox> box = read_box(m, "input_frame", owner + "_link", rig);
+        const std::optional<model::OrientedBox> box = read_box(m, "input_frame", deploy::sensor_link_name(owner), rig);
         for (const char* key : {"keep_organized", "output_frame", "use_indices", "approximate_sync",
                                 "max_queue_size"})
           m.has(key);
