@@ -58,11 +58,19 @@ std::string describe(const select::SatisficingTargets& targets) {
   return text;
 }
 
-std::string describe(const model::Rig& rig) {
+// The chosen options with the pose a slot's range settled on.
+std::string describe(const select::Selection& selection, const model::Catalog& catalog) {
   std::string text;
-  for (const model::Mount& mount : rig.mounts) {
-    text += (text.empty() ? "" : ", ") + mount.id + ": " + mount.sensor_id + "/" + mount.mode_id;
+  for (const select::CatalogOption* option : selection.chosen) {
+    const model::MountingSlot& slot = catalog.slots[option->slot];
+    text += (text.empty() ? "" : ", ") + slot.id + ": " + option->sensor->id + "/" +
+            option->mode->id;
+    const std::string& label = slot.poses[option->pose].label;
+    if (!label.empty()) text += " at " + label;
   }
+  return text;
+}
+
   return text;
 }
 
@@ -99,7 +107,13 @@ void SelectReport::print_iteration(const select::RelaxationIteration& iteration,
         << " (" << selection.cost.transfer_id << ") + CPU " << fixed(selection.cost.cpu, 0) << " ("
         << selection.cost.cpu_id << ")  "
         << (iteration.within_budget ? "WITHIN BUDGET" : "over budget") << '\n';
-    out << "      " << describe(selection.rig) << '\n';
+    out << "      " << describe(selection, space_.catalog()) << '\n';
+    if (selection.search.ties > 1) {
+      out << "      " << selection.search.ties
+          << " rigs of this cost meet the requirements: chose the one with the largest smallest "
+             "margin to the sector thresholds, "
+          << model::format_number(100 * selection.search.margin, 3) << " points\n";
+    }
   }
   out << "    search: " << selection.search.nodes << " nodes, " << selection.search.evaluations
       << " rigs evaluated, " << fixed(selection.seconds, 2)
@@ -139,7 +153,7 @@ void SelectReport::print_summary(const select::RelaxationOutcome& outcome,
   const select::RelaxationIteration* pick = chosen(outcome);
   if (outcome.within_budget) {
     out << "\nChosen rig (" << usd(pick->selection.cost.total) << " <= budget " << usd(budget_)
-        << "): " << describe(pick->selection.rig) << '\n';
+        << "): " << describe(pick->selection, space_.catalog()) << '\n';
     const metrics::RigCoverage& coverage = pick->selection.coverage;
     out << "  SC complete mean " << percent(coverage.complete.mean) << " %, floor mean "
         << percent(coverage.floor.mean) << " % (exact path)\n";
@@ -147,7 +161,7 @@ void SelectReport::print_summary(const select::RelaxationOutcome& outcome,
     out << "\nThe policy is exhausted: no rig within " << usd(budget_) << ".\n";
     if (pick != nullptr) {
       out << "Cheapest rig found (" << usd(pick->selection.cost.total)
-          << "): " << describe(pick->selection.rig) << '\n';
+          << "): " << describe(pick->selection, space_.catalog()) << '\n';
     }
     out << "Binding requirements:\n";
     if (outcome.binding.empty()) out << "  none alone: the budget is below every rig's cost\n";
@@ -249,11 +263,16 @@ nlohmann::json SelectReport::to_json(const select::RelaxationOutcome& outcome,
           {"transfer", it.selection.cost.transfer}, {"transfer_id", it.selection.cost.transfer_id},
           {"cpu", it.selection.cost.cpu},           {"cpu_id", it.selection.cost.cpu_id}};
       nlohmann::json mounts = nlohmann::json::array();
-      for (const model::Mount& mount : it.selection.rig.mounts) {
-        mounts.push_back(
-            {{"slot", mount.id}, {"sensor", mount.sensor_id}, {"mode", mount.mode_id}});
+      for (const select::CatalogOption* option : it.selection.chosen) {
+        const model::MountingSlot& slot = space_.catalog().slots[option->slot];
+        mounts.push_back({{"slot", slot.id},
+                          {"sensor", option->sensor->id},
+                          {"mode", option->mode->id},
+                          {"pose", slot.poses[option->pose].label}});
       }
       item["rig"] = mounts;
+      item["margin"] = it.selection.search.margin;
+      item["ties"] = it.selection.search.ties;
       item["coverage"] = cli::to_json(it.selection.coverage, false);
     } else {
       item["reason"] = it.selection.infeasible_reason;

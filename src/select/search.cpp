@@ -11,6 +11,31 @@ bool meets(double share, double threshold) {
   return share >= threshold - kThresholdSlack;
 }
 
+// The smallest margin of `sections` over the sectors' angles (+inf without sectors).
+double smallest_margin(const SearchProblem& problem,
+                       const std::vector<geometry::SectionRaster>& sections) {
+  double margin = std::numeric_limits<double>::infinity();
+  for (const SearchSector& sector : problem.sectors) {
+    for (const int a : sector.angles) {
+      margin = std::min({margin, sections[a].complete_share() - sector.min_complete,
+                         sections[a].floor_share() - sector.min_floor});
+    }
+  }
+  return margin;
+}
+
+// Whether a feasible rig of `cost` and `margin` beats the best so far: cheaper, or as cheap
+// with a larger smallest margin. Counts the ties at the best cost.
+bool improves(SearchResult& best, double cost, double margin) {
+  if (!best.found || cost < best.cost.total - kCostTie) {
+    best.ties = 1;
+    return true;
+  }
+  if (cost > best.cost.total + kCostTie) return false;
+  ++best.ties;
+  return margin > best.margin;
+}
+
 class BranchAndBound {
  public:
   BranchAndBound(const SearchProblem& problem, const std::vector<std::vector<int>>& excluded,
@@ -65,6 +90,15 @@ class BranchAndBound {
     for (const geometry::SectionRaster& section : sections) mean += section.complete_share();
     const double angles = static_cast<double>(sections.size());
     result_.explored.push_back({cost.total, sections.empty() ? 0.0 : mean / angles, feasible});
+    if (feasible) {
+      const double margin = smallest_margin(problem_, sections);
+      if (improves(result_, cost.total, margin)) {
+        result_.found = true;
+        result_.cost = cost;
+        result_.choice = choice_;
+        result_.margin = margin;
+      }
+    }
     return feasible;
   }
 
@@ -87,13 +121,10 @@ class BranchAndBound {
     if (++result_.nodes % 4096 == 0 && progress_) progress_(result_.nodes);
     const CostBreakdown cost = rig_cost(load, problem_.transfer, problem_.cpus);
     // No transfer item or CPU carries this load: none carries a larger one either.
-    if (!cost.feasible || cost.total >= result_.cost.total) return;
-    if (just_added && evaluate(depth, cost)) {
-      result_.found = true;
-      result_.cost = cost;
-      result_.choice = choice_;
-      return;
-    }
+    // An equal cost is explored too: it may hold a rig with a larger margin.
+    if (!cost.feasible || cost.total > result_.cost.total + kCostTie) return;
+    // A feasible rig needs nothing more: any addition costs more.
+    if (just_added && evaluate(depth, cost)) return;
     if (depth == problem_.slots.size() || !may_meet(depth)) return;
     for (const int option_index : order_[depth]) {
       const SearchOption& option = problem_.slots[depth][option_index];
@@ -152,7 +183,7 @@ SearchResult brute_force(const SearchProblem& problem) {
       for (std::size_t a = 0; a < sections.size(); ++a) sections[a] |= option.sections[a];
     }
     const CostBreakdown cost = rig_cost(load, problem.transfer, problem.cpus);
-    if (load.sensors > 0 && cost.feasible && cost.total < result.cost.total) {
+    if (load.sensors > 0 && cost.feasible && cost.total <= result.cost.total + kCostTie) {
       ++result.evaluations;
       bool feasible = true;
       for (const SearchSector& sector : problem.sectors) {
@@ -161,10 +192,12 @@ SearchResult brute_force(const SearchProblem& problem) {
                      meets(sections[a].floor_share(), sector.min_floor);
         }
       }
-      if (feasible) {
+      const double margin = smallest_margin(problem, sections);
+      if (feasible && improves(result, cost.total, margin)) {
         result.found = true;
         result.cost = cost;
         result.choice = choice;
+        result.margin = margin;
       }
     }
     // Next assignment, as a mixed-radix counter where -1 is each slot's first digit.

@@ -53,30 +53,33 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
   options_.resize(catalog.slots.size());
   for (std::size_t k = 0; k < catalog.slots.size(); ++k) {
     const model::MountingSlot& slot = catalog.slots[k];
-    model::Mount mount;
-    mount.id = slot.id;
-    mount.T_robot_sensor = slot.T_robot_sensor;
     const double distance = slot.distance_of_interest.value_or(catalog.distance_of_interest);
-    for (const model::CandidateSensor& candidate : catalog.sensors) {
-      if (std::find(slot.allowed_sensors.begin(), slot.allowed_sensors.end(),
-                    candidate.sensor_id) == slot.allowed_sensors.end()) {
-        continue;
-      }
-      const model::Sensor* sensor = library.find(candidate.sensor_id);
-      for (const std::string& mode_id : candidate.mode_ids) {
-        CatalogOption option;
-        option.slot = k;
-        option.sensor = sensor;
-        option.mode = sensor->find_mode(mode_id);
-        option.metrics = metrics::compute_mount_metrics(mount, *sensor, *option.mode, distance);
-        // U_f: filtering time per point times points per second (paper 1, eq. 5).
-        option.filtering =
-            candidate.filtering_seconds_per_point.value_or(catalog.filtering_seconds_per_point) *
-            option.metrics.points_per_second;
-        const geometry::MountedFov fov(*option.mode, slot.T_robot_sensor, body);
-        for (int a = 0; a < angles; ++a)
-          option.sections.push_back(geometry::rasterize(fov, frames[a], grids_[a]));
-        options_[k].push_back(std::move(option));
+    for (std::size_t p = 0; p < slot.poses.size(); ++p) {
+      model::Mount mount;
+      mount.id = slot.id;
+      mount.T_robot_sensor = slot.poses[p].T_robot_sensor;
+      for (const model::CandidateSensor& candidate : catalog.sensors) {
+        if (std::find(slot.allowed_sensors.begin(), slot.allowed_sensors.end(),
+                      candidate.sensor_id) == slot.allowed_sensors.end()) {
+          continue;
+        }
+        const model::Sensor* sensor = library.find(candidate.sensor_id);
+        for (const std::string& mode_id : candidate.mode_ids) {
+          CatalogOption option;
+          option.slot = k;
+          option.pose = p;
+          option.sensor = sensor;
+          option.mode = sensor->find_mode(mode_id);
+          option.metrics = metrics::compute_mount_metrics(mount, *sensor, *option.mode, distance);
+          // U_f: filtering time per point times points per second (paper 1, eq. 5).
+          option.filtering =
+              candidate.filtering_seconds_per_point.value_or(catalog.filtering_seconds_per_point) *
+              option.metrics.points_per_second;
+          const geometry::MountedFov fov(*option.mode, mount.T_robot_sensor, body);
+          for (int a = 0; a < angles; ++a)
+            option.sections.push_back(geometry::rasterize(fov, frames[a], grids_[a]));
+          options_[k].push_back(std::move(option));
+        }
       }
     }
   }
@@ -131,7 +134,7 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
     mount.id = slot.id;
     mount.sensor_id = option->sensor->id;
     mount.mode_id = option->mode->id;
-    mount.T_robot_sensor = slot.T_robot_sensor;
+    mount.T_robot_sensor = slot.poses[option->pose].T_robot_sensor;
     mount.distance_of_interest = slot.distance_of_interest;
     rig.mounts.push_back(mount);
   }

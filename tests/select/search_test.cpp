@@ -97,6 +97,8 @@ TEST_CASE("branch and bound finds the brute-force optimum on 200 random small ca
     if (!exhaustive.found) continue;
     ++feasible;
     CHECK(bounded.cost.total == exhaustive.cost.total);
+    // Among equal costs both keep the largest smallest margin.
+    CHECK(bounded.margin == exhaustive.margin);
     CHECK(bounded.nodes <= exhaustive.nodes * 3);
   }
   CHECK(feasible >= 50);  // enough of them have a solution to compare costs
@@ -114,4 +116,37 @@ TEST_CASE("an excluded assignment is skipped and the next cheapest returned") {
       CHECK(second.cost.total >= first.cost.total);
     }
   }
+}
+
+TEST_CASE("of two rigs of equal cost the one with the larger margin wins") {
+  // One slot, two options at the same price (a camera at two pitches): at the one sector
+  // angle the first covers 6 of 8 cells (75 %), the second 7 of 8 (87.5 %); threshold 50 %.
+  // Both are feasible and cost the same; margins 25 and 37.5 points: the second wins, and
+  // the search reports the tie.
+  const geometry::RasterGrid grid{4, 2};
+  select::SearchProblem problem;
+  problem.grids = {grid};
+  problem.transfer = {{"onboard", 1e9, 0, {}}};
+  problem.cpus = {{"cpu", 4.0, 100, {}}};
+  const auto option = [&](int covered_cells) {
+    select::SearchOption o;
+    o.price = 200;
+    geometry::SectionRaster raster(grid);
+    for (int c = 0; c < grid.columns; ++c) {
+      const int rows = std::min(grid.rows, std::max(0, covered_cells - c * grid.rows));
+      if (rows > 0) raster.set_column_run(c, 0, rows);
+      raster.set_floor(c);
+    }
+    o.sections = {raster};
+    return o;
+  };
+  problem.slots = {{option(6), option(7)}};
+  problem.sectors = {{{0}, 0.5, 0.0}};
+  const select::SearchResult bounded = select::branch_and_bound(problem);
+  REQUIRE(bounded.found);
+  CHECK(bounded.choice == std::vector<int>{1});
+  CHECK(bounded.margin == Approx(0.375));
+  CHECK(bounded.ties == 2);
+  const select::SearchResult exhaustive = select::brute_force(problem);
+  CHECK(exhaustive.choice == std::vector<int>{1});
 }

@@ -20,9 +20,19 @@ struct CandidateSensor {
   SourceLocation where;
 };
 
+/// One pose a slot offers. `label` names the values a pose range varies ("z 0.5 m, pitch 25
+/// deg"); empty for a fixed pose.
+struct SlotPose {
+  Pose3 T_robot_sensor = Pose3::Identity();
+  std::string label;
+};
+
 struct MountingSlot {
   std::string id;
-  Pose3 T_robot_sensor = Pose3::Identity();
+  /// The poses to choose from: one for a fixed pose, a pose range's grid otherwise (values
+  /// that would put the sensor inside the body left out).
+  std::vector<SlotPose> poses;
+  int poses_inside_body = 0;  ///< range values left out: the sensor would be inside the body
   std::vector<std::string> allowed_sensors;
   std::optional<double> distance_of_interest;  ///< [m] as a mount's
   SourceLocation where;

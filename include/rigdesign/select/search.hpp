@@ -7,6 +7,8 @@
 /// - the union with every option of every undecided slot is an upper bound on the coverage
 ///   any completion reaches, so a node whose bound misses a sector threshold is cut;
 /// - a node whose chosen sensors already meet every threshold needs nothing more.
+/// Among rigs of equal cost (within kCostTie) the one with the largest smallest margin to the
+/// sector thresholds wins, so a pose range's most robust pose is chosen, not the first found.
 #include <functional>
 #include <string>
 #include <vector>
@@ -49,6 +51,10 @@ struct SearchResult {
   bool found = false;
   std::vector<int> choice;  ///< per slot: option index, or -1 for nothing
   CostBreakdown cost;
+  /// The chosen rig's smallest margin over the sectors' angles: min(SC - threshold) over SC
+  /// complete and floor (raster); +infinity without sectors.
+  double margin = 0.0;
+  long ties = 0;  ///< feasible rigs found at the optimum's cost (1: no tie to break)
   long nodes = 0;        ///< nodes of the search tree visited
   long evaluations = 0;  ///< rigs whose coverage was evaluated
   std::vector<ExploredRig> explored;
@@ -56,6 +62,8 @@ struct SearchResult {
 
 /// Coverage shares count as meeting a threshold from threshold - kThresholdSlack.
 inline constexpr double kThresholdSlack = 1e-4;
+/// Costs this close [USD] are equal, and the margin decides between them.
+inline constexpr double kCostTie = 1e-6;
 
 /// Proven-optimal assignment, skipping the assignments in `excluded` (used when the exact
 /// path rejects a raster winner). `progress` is called now and then with the nodes visited.

@@ -30,6 +30,7 @@ SatisficingTargets satisficing_targets(const model::Requirements& requirements);
 /// One sensor mode in one slot, with its metrics and its raster sections.
 struct CatalogOption {
   std::size_t slot = 0;
+  std::size_t pose = 0;  ///< index into the slot's poses
   const model::Sensor* sensor = nullptr;
   const model::SensorMode* mode = nullptr;
   metrics::MountMetrics metrics;                  ///< at the slot's distance of interest

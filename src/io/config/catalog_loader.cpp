@@ -7,6 +7,7 @@
 #include "io/config/field_checks.hpp"
 #include "io/config/placement_fields.hpp"
 #include "io/config/yaml_reader.hpp"
+#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 
 namespace rigdesign::io {
@@ -61,6 +62,29 @@ std::optional<model::FilteringLoads> read_measured_loads(MapReader& top,
         "a file written by `rigdesign filter --write-loads`, relative to the catalog"});
   }
   return load_filtering_loads(resolved.string());
+}
+
+// A pose range's values that put the sensor inside a cylinder or prism body are left out
+// (counted in the slot); a range with nothing left is an error at the pose.
+std::vector<model::SlotPose> keep_outside_body(std::vector<model::SlotPose> poses,
+                                               const model::RobotBody& body,
+                                               model::MountingSlot& slot, MapReader& pose) {
+  if (poses.size() < 2 || !(body.height > 0.0) || !(body.radius > 0.0)) return poses;
+  const geometry::BodyOccluder occluder(body);
+  std::vector<model::SlotPose> outside;
+  for (model::SlotPose& candidate : poses) {
+    if (occluder.contains(candidate.T_robot_sensor.translation())) {
+      ++slot.poses_inside_body;
+    } else {
+      outside.push_back(std::move(candidate));
+    }
+  }
+  if (outside.empty()) {
+    pose.require(false, "xyz", "puts the sensor inside the body for every value of its range",
+                 "a range with positions on or outside the body's surface");
+    return {model::SlotPose{}};
+  }
+  return outside;
 }
 
 }  // namespace
@@ -124,9 +148,9 @@ model::Catalog load_catalog(const std::string& path) {
     model::MountingSlot slot;
     slot.where = reader.location();
     slot.id = reader.text("id", Need::required, "a slot id").value_or("");
-    if (auto pose =
-            reader.map("pose", Need::required, "a map with xyz and rpy_deg, or urdf_link")) {
-      slot.T_robot_sensor = io::read_pose(*pose, urdf);
+    if (auto pose = reader.map("pose", Need::required,
+                               "a map with xyz and rpy_deg (numbers or ranges), or urdf_link")) {
+      slot.poses = keep_outside_body(io::read_pose_set(*pose, urdf), catalog.body, slot, *pose);
     }
     slot.allowed_sensors = read_names(reader, "allows", "a non-empty list of candidate sensor ids");
     if (reader.has("distance_of_interest")) {

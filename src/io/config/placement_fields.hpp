@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/config/yaml_reader.hpp"
+#include "rigdesign/model/catalog.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/robot_description.hpp"
 
@@ -30,5 +31,14 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
 
 /// A pose is xyz (+ rpy_deg) in the robot frame, or the pose of a description's link.
 model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot);
+
+/// A catalog slot's pose: as read_pose, or with ranges in place of any of xyz's and rpy_deg's
+/// six numbers, `{min: 0, max: 40, step: 5}`: every combination of their values, in order
+/// (x, y, z, roll, pitch, yaw; the last varying fastest). Errors at the range for min > max,
+/// a step <= 0, a step that does not divide max - min, or more than kMaxSlotPoses poses.
+std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<RobotLinks>& robot);
+
+/// Most poses one slot may offer: each costs a raster per angle in memory (about 0.2 MB).
+inline constexpr std::size_t kMaxSlotPoses = 400;
 
 }  // namespace rigdesign::io

@@ -1,0 +1,138 @@
+// Pose ranges of catalog slots (issue 15): xyz and rpy_deg elements that are ranges.
+#include <cmath>
+
+#include "io/config/placement_fields.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/rotation.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace rigdesign::io {
+namespace {
+
+constexpr const char* kRange = "a number, or a range {min: a, max: b, step: s} with s > 0 dividing b - a";
+const char* const kAxisNames[6] = {"x", "y", "z", "roll", "pitch", "yaw"};
+
+struct Axis {
+  std::vector<double> values;  // in the file's unit (m or deg)
+  bool varies = false;
+};
+
+// One element of xyz or rpy_deg: a finite number or a range; empty values after an error.
+Axis read_axis(MapReader& pose, const YAML::Node& element, const std::string& field) {
+  Axis axis;
+  const model::SourceLocation at = location_of(element, pose.file());
+  if (element.IsScalar()) {
+    double value = 0.0;
+    if (YAML::convert<double>::decode(element, value) && std::isfinite(value)) {
+      axis.values = {value};
+    } else {
+      pose.diagnostics().error(at, field, "is not a finite number", kRange);
+    }
+    return axis;
+  }
+  if (!element.IsMap()) {
+    pose.diagnostics().error(at, field, "is neither a number nor a range", kRange);
+    return axis;
+  }
+  MapReader range(element, field, pose.file(), pose.diagnostics(), at);
+  const auto low = range.number("min", Need::required, "the range's first value");
+  const auto high = range.number("max", Need::required, "the range's last value");
+  const auto step = range.number("step", Need::required, "the spacing of its values, > 0");
+  range.reject_unknown_keys();
+  if (!low || !high || !step) return axis;
+  if (*low > *high) {
+    range.require(false, "min", "is above max", "min <= max");
+    return axis;
+  }
+  if (!(*step > 0.0)) {
+    range.require(false, "step", "is not positive", "a spacing > 0");
+    return axis;
+  }
+  const double steps = (*high - *low) / *step;
+  const double whole = std::round(steps);
+  if (std::abs(steps - whole) > 1e-9 * std::max(1.0, steps)) {
+    range.require(false, "step",
+                  model::format_number(*step) + " does not divide max - min = " +
+                      model::format_number(*high - *low),
+                  "a step that divides the range, so that max is one of the values");
+    return axis;
+  }
+  for (int i = 0; i <= static_cast<int>(whole); ++i) axis.values.push_back(*low + i * *step);
+  axis.varies = axis.values.size() > 1;
+  return axis;
+}
+
+bool holds_range(const YAML::Node& list) {
+  if (!list.IsSequence()) return false;
+  for (const YAML::Node& element : list) {
+    if (element.IsMap()) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<RobotLinks>& robot) {
+  const YAML::Node xyz = pose.node("xyz");
+  const YAML::Node rpy = pose.node("rpy_deg");
+  if (!holds_range(xyz) && !holds_range(rpy)) return {{read_pose(pose, robot), ""}};
+  std::vector<Axis> axes(6);
+  bool valid = true;
+  for (const auto& [key, node, first] : {std::tuple{"xyz", xyz, 0}, std::tuple{"rpy_deg", rpy, 3}}) {
+    if (!node.IsDefined() || node.IsNull()) {
+      for (int i = 0; i < 3; ++i) axes[first + i].values = {0.0};  // rpy_deg defaults to 0
+      if (first == 0) {
+        pose.require(false, key, "is missing", "[x, y, z] in metres");
+        valid = false;
+      }
+      continue;
+    }
+    if (!node.IsSequence() || node.size() != 3) {
+      pose.require(false, key, "is not a list of three values", kRange);
+      valid = false;
+      continue;
+    }
+    for (int i = 0; i < 3; ++i) {
+      axes[first + i] = read_axis(pose, node[i], pose.field(key) + "[" + std::to_string(i) + "]");
+      valid = valid && !axes[first + i].values.empty();
+    }
+  }
+  pose.require(!pose.has("urdf_link"), "urdf_link", "given together with a pose range",
+               "either urdf_link or xyz/rpy_deg");
+  pose.require(!pose.has("frame"), "frame", "is not supported with a pose range",
+               "an x-forward pose (frame: body, the default)");
+  pose.reject_unknown_keys();
+  if (!valid) return {{model::Pose3::Identity(), ""}};
+  std::size_t count = 1;
+  for (const Axis& axis : axes) count *= axis.values.size();
+  if (count > kMaxSlotPoses) {
+    pose.require(false, "xyz", std::to_string(count) + " poses in one slot",
+                 "at most " + std::to_string(kMaxSlotPoses) + " (coarser steps, or more slots)");
+    return {{model::Pose3::Identity(), ""}};
+  }
+  std::vector<model::SlotPose> poses;
+  std::vector<std::size_t> index(6, 0);
+  for (std::size_t n = 0; n < count; ++n) {
+    double v[6];
+    std::string label;
+    for (int i = 0; i < 6; ++i) {
+      v[i] = axes[i].values[index[i]];
+      if (axes[i].varies) {
+        label += (label.empty() ? "" : ", ") + std::string(kAxisNames[i]) + " " +
+                 model::format_number(v[i], 6) + (i < 3 ? " m" : " deg");
+      }
+    }
+    poses.push_back({model::pose_from_xyz_rpy(model::Vec3(v[0], v[1], v[2]),
+                                              model::Vec3(model::deg_to_rad(v[3]),
+                                                          model::deg_to_rad(v[4]),
+                                                          model::deg_to_rad(v[5]))),
+                     label});
+    for (int i = 5; i >= 0; --i) {  // the last axis varies fastest
+      if (++index[i] < axes[i].values.size()) break;
+      index[i] = 0;
+    }
+  }
+  return poses;
+}
+
+}  // namespace rigdesign::io
