@@ -17,6 +17,7 @@
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
+#include "rigdesign/model/format_number.hpp"
 #include "rigdesign/select/relaxation.hpp"
 #include "select_report.hpp"
 
@@ -29,11 +30,31 @@ struct SelectOptions {
   std::string policy;
   std::string sensors;
   std::string out;
+  std::vector<std::string> robust;  // n-1 and/or a lighting condition
   double budget = -1.0;
   double step_deg = 1.0;
   bool json = false;
   bool no_renders = false;
 };
+
+// `--robust n-1 --robust sunlight`: the failures to survive, keeping the requirements'
+// relaxed thresholds if they state any.
+model::RobustnessRequirement robustness_option(const std::vector<std::string>& values,
+                                               const model::Requirements& requirements) {
+  model::RobustnessRequirement robust;
+  if (requirements.robustness) robust.sectors = requirements.robustness->sectors;
+  robust.where = model::SourceLocation{"(command line)"};
+  for (const std::string& value : values) {
+    const auto condition = model::value_in(model::kLightConditionNames, value);
+    require_option(value == "n-1" || condition.has_value(), "--robust",
+                   "unknown failure '" + value + "'",
+                   "n-1 (any one sensor) or a lighting condition: " +
+                       model::join(model::names_of(model::kLightConditionNames)));
+    if (condition) robust.condition = *condition;
+    else robust.single_failure = true;
+  }
+  return robust;
+}
 
 int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.budget > 0, "--budget", "is missing or not positive",
@@ -43,7 +64,14 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   const model::Catalog catalog = io::load_catalog(options.catalog);
   const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
   io::check_catalog_references(catalog, library).throw_if_errors();
-  const model::Requirements requirements = io::load_requirements(options.requirements);
+  model::Requirements requirements = io::load_requirements(options.requirements);
+  if (!options.robust.empty()) requirements.robustness = robustness_option(options.robust, requirements);
+  if (requirements.robustness && requirements.robustness->single_failure) {
+    require_option(catalog.slots.size() >= 2, "--robust",
+                   "n-1 with a catalog of " + std::to_string(catalog.slots.size()) +
+                       " slot: a rig of one sensor cannot survive its failure",
+                   "a catalog with at least two slots");
+  }
   model::RelaxationPolicy policy;
   if (!options.policy.empty()) {
     policy = io::load_policy(options.policy);
@@ -99,6 +127,10 @@ Command setup_select(CLI::App& parent) {
   app->add_option("--out", options->out,
                   "Folder for the chosen rig, the final requirements, the Pareto plot and the "
                   "coverage renders (default: selection/<catalog file name>)");
+  app->add_option("--robust", options->robust,
+                  "Failures the rig must survive: n-1 (any one sensor) and/or a lighting "
+                  "condition (every sensor not immune to it fails); overrides the requirements' "
+                  "robustness");
   app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)");
   app->add_flag("--json", options->json, "Print JSON instead of the trace");
   app->add_flag("--no-renders", options->no_renders, "Skip the chosen rig's coverage pictures");

@@ -108,6 +108,14 @@ void SelectReport::print_iteration(const select::RelaxationIteration& iteration,
         << selection.cost.cpu_id << ")  "
         << (iteration.within_budget ? "WITHIN BUDGET" : "over budget") << '\n';
     out << "      " << describe(selection, space_.catalog()) << '\n';
+    for (const select::FailureImpact& failure : selection.failures) {
+      out << "      survives: " << failure.failure << " (every sector still met on the exact path)\n";
+    }
+    if (selection.cost_without_robustness) {
+      out << "      robustness costs " << usd(selection.cost.total - *selection.cost_without_robustness)
+          << ": the cheapest rig without it costs " << usd(*selection.cost_without_robustness)
+          << '\n';
+    }
     if (selection.search.ties > 1) {
       out << "      " << selection.search.ties
           << " rigs of this cost meet the requirements: chose the one with the largest smallest "

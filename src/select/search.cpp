@@ -24,6 +24,53 @@ double smallest_margin(const SearchProblem& problem,
   return margin;
 }
 
+bool meets_sectors(const std::vector<SearchSector>& sectors,
+                   const std::vector<geometry::SectionRaster>& sections) {
+  for (const SearchSector& sector : sectors) {
+    for (const int a : sector.angles) {
+      if (!meets(sections[a].complete_share(), sector.min_complete) ||
+          !meets(sections[a].floor_share(), sector.min_floor)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Whether the rig `choice` still meets the robustness sectors after every failure the
+// problem asks it to survive: each chosen sensor alone, and every sensor that does not
+// survive the condition at once.
+bool survives(const SearchProblem& problem, const std::vector<int>& choice) {
+  const Robustness& robust = problem.robustness;
+  if (!robust.any()) return true;
+  const auto union_without = [&](const auto& dropped) {
+    std::vector<geometry::SectionRaster> sections;
+    for (const geometry::RasterGrid& grid : problem.grids) sections.emplace_back(grid);
+    for (std::size_t k = 0; k < choice.size(); ++k) {
+      if (choice[k] < 0 || dropped(k)) continue;
+      const SearchOption& option = problem.slots[k][choice[k]];
+      for (const SearchSector& sector : robust.sectors) {
+        for (const int a : sector.angles) sections[a] |= option.sections[a];
+      }
+    }
+    return sections;
+  };
+  if (robust.single_failure) {
+    for (std::size_t j = 0; j < choice.size(); ++j) {
+      if (choice[j] < 0) continue;
+      if (!meets_sectors(robust.sectors, union_without([&](std::size_t k) { return k == j; })))
+        return false;
+    }
+  }
+  if (robust.condition) {
+    const auto fails = [&](std::size_t k) {
+      return !problem.slots[k][choice[k]].survives_condition;
+    };
+    if (!meets_sectors(robust.sectors, union_without(fails))) return false;
+  }
+  return true;
+}
+
 // Whether a feasible rig of `cost` and `margin` beats the best so far: cheaper, or as cheap
 // with a larger smallest margin. Counts the ties at the best cost.
 bool improves(SearchResult& best, double cost, double margin) {
@@ -86,6 +133,7 @@ class BranchAndBound {
                    meets(sections[a].floor_share(), sector.min_floor);
       }
     }
+    feasible = feasible && survives(problem_, choice_);
     double mean = 0.0;
     for (const geometry::SectionRaster& section : sections) mean += section.complete_share();
     const double angles = static_cast<double>(sections.size());
@@ -192,6 +240,7 @@ SearchResult brute_force(const SearchProblem& problem) {
                      meets(sections[a].floor_share(), sector.min_floor);
         }
       }
+      feasible = feasible && survives(problem, choice);
       const double margin = smallest_margin(problem, sections);
       if (feasible && improves(result, cost.total, margin)) {
         result.found = true;

@@ -24,6 +24,61 @@ bool meets_alone(const CatalogOption& option, const SatisficingTargets& targets)
   return true;
 }
 
+// The sectors a robust rig must keep after a failure: the targets' with relaxed thresholds.
+std::vector<model::SectorRequirement> robust_sectors(const SatisficingTargets& targets) {
+  std::vector<model::SectorRequirement> sectors = targets.sectors;
+  for (model::SectorRequirement& sector : sectors) {
+    for (const model::SectorRequirement& relaxed : targets.robustness->sectors) {
+      if (relaxed.name != sector.name) continue;
+      sector.min_complete_coverage = relaxed.min_complete_coverage;
+      sector.min_floor_coverage = relaxed.min_floor_coverage;
+    }
+  }
+  return sectors;
+}
+
+// Each failure the targets ask the rig to survive, on the exact path.
+std::vector<FailureImpact> failure_impacts(const model::Rig& rig, const SelectionSpace& space,
+                                           const SatisficingTargets& targets,
+                                           const metrics::CoverageSettings& exact) {
+  std::vector<FailureImpact> impacts;
+  const std::vector<model::SectorRequirement> sectors = robust_sectors(targets);
+  const auto impact_without = [&](const std::vector<bool>& failed, std::string failure) {
+    model::Rig rest = rig;
+    rest.mounts.clear();
+    for (std::size_t i = 0; i < rig.mounts.size(); ++i)
+      if (!failed[i]) rest.mounts.push_back(rig.mounts[i]);
+    FailureImpact impact{std::move(failure), {}};
+    const metrics::RigCoverage coverage =
+        metrics::compute_coverage(rest, space.library(), sectors, exact);
+    for (const metrics::SectorCoverage& sector : coverage.sectors)
+      if (!sector.pass) impact.broken_sectors.push_back(sector.sector.name);
+    if (rest.mounts.empty())
+      for (const model::SectorRequirement& sector : sectors) impact.broken_sectors.push_back(sector.name);
+    impacts.push_back(std::move(impact));
+  };
+  if (targets.robustness->single_failure) {
+    for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
+      std::vector<bool> failed(rig.mounts.size(), false);
+      failed[i] = true;
+      impact_without(failed, rig.mounts[i].id + " fails");
+    }
+  }
+  if (targets.robustness->condition) {
+    std::vector<bool> failed;
+    std::vector<std::string> names;
+    for (const model::Mount& mount : rig.mounts) {
+      const model::SensorMode& mode = space.library().resolved_mode(mount.sensor_id, mount.mode_id);
+      failed.push_back(!mode.light.immune_to(*targets.robustness->condition));
+      if (failed.back()) names.push_back(mount.id);
+    }
+    impact_without(failed, to_string(*targets.robustness->condition) + ": " +
+                               (names.empty() ? std::string("no sensor") : model::join(names)) +
+                               " fail");
+  }
+  return impacts;
+}
+
 }  // namespace
 
 SatisficingTargets satisficing_targets(const model::Requirements& requirements) {
@@ -34,6 +89,7 @@ SatisficingTargets satisficing_targets(const model::Requirements& requirements) 
   targets.lighting = requirements.lighting;
   targets.sectors = requirements.sectors;
   targets.distance = requirements.distance;
+  targets.robustness = requirements.robustness;
   return targets;
 }
 
@@ -106,9 +162,11 @@ SearchProblem SelectionSpace::problem_for(
     problem.slots.emplace_back();
     for (const CatalogOption& option : options_[k]) {
       if (!meets_alone(option, targets)) continue;
+      const bool survives = !targets.robustness || !targets.robustness->condition ||
+                            option.metrics.light.immune_to(*targets.robustness->condition);
       problem.slots.back().push_back({option.metrics.price, option.metrics.bandwidth,
                                       option.metrics.driver_cpu + option.filtering,
-                                      option.sections});
+                                      option.sections, survives});
       kept[k].push_back(&option);
     }
   }
@@ -118,6 +176,20 @@ SearchProblem SelectionSpace::problem_for(
       if (metrics::in_sector(sector, angle(a))) searched.angles.push_back(static_cast<int>(a));
     }
     problem.sectors.push_back(std::move(searched));
+  }
+  if (targets.robustness && targets.robustness->any()) {
+    const model::RobustnessRequirement& robust = *targets.robustness;
+    problem.robustness.single_failure = robust.single_failure;
+    problem.robustness.condition = robust.condition.has_value();
+    for (std::size_t i = 0; i < targets.sectors.size(); ++i) {
+      SearchSector after = problem.sectors[i];
+      for (const model::SectorRequirement& relaxed : robust.sectors) {
+        if (relaxed.name != targets.sectors[i].name) continue;
+        after.min_complete = relaxed.min_complete_coverage;
+        after.min_floor = relaxed.min_floor_coverage;
+      }
+      problem.robustness.sectors.push_back(std::move(after));
+    }
   }
   return problem;
 }
@@ -176,9 +248,14 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
     selection.rig = space.rig_for(selection.chosen);
     selection.coverage =
         metrics::compute_coverage(selection.rig, space.library(), targets.sectors, exact);
-    const bool verified =
+    bool verified =
         std::all_of(selection.coverage.sectors.begin(), selection.coverage.sectors.end(),
                     [](const metrics::SectorCoverage& sector) { return sector.pass; });
+    if (verified && targets.robustness && targets.robustness->any()) {
+      selection.failures = failure_impacts(selection.rig, space, targets, exact);
+      verified = std::all_of(selection.failures.begin(), selection.failures.end(),
+                             [](const FailureImpact& f) { return f.broken_sectors.empty(); });
+    }
     if (verified) {
       selection.found = true;
       selection.cost = selection.search.cost;
@@ -186,6 +263,12 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
     }
     excluded.push_back(selection.search.choice);
     if (++selection.rejected_by_exact_path >= kMaxExactRejections) break;
+  }
+  if (problem.robustness.any()) {
+    SearchProblem plain = problem;
+    plain.robustness = {};
+    const SearchResult without = branch_and_bound(plain);
+    if (without.found) selection.cost_without_robustness = without.cost.total;
   }
   if (!selection.found && selection.infeasible_reason.empty()) {
     selection.infeasible_reason = "no combination of the catalog's options meets every requirement";

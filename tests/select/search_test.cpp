@@ -150,3 +150,67 @@ TEST_CASE("of two rigs of equal cost the one with the larger margin wins") {
   const select::SearchResult exhaustive = select::brute_force(problem);
   CHECK(exhaustive.choice == std::vector<int>{1});
 }
+
+TEST_CASE("with robustness, branch and bound still finds the brute-force optimum") {
+  // The same random catalogs, now required to keep half of each sector's thresholds after any
+  // one sensor fails, and (every other trial) after every option that does not survive a
+  // condition drops out (about half of them).
+  std::mt19937 rng(20261125);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int feasible = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    INFO("trial " << trial);
+    select::SearchProblem problem = random_problem(rng);
+    problem.robustness.single_failure = true;
+    problem.robustness.condition = trial % 2 == 1;
+    for (select::SearchSector sector : problem.sectors) {
+      sector.min_complete *= 0.5;
+      sector.min_floor *= 0.5;
+      problem.robustness.sectors.push_back(sector);
+    }
+    for (auto& slot : problem.slots) {
+      for (select::SearchOption& option : slot) option.survives_condition = unit(rng) < 0.5;
+    }
+    const select::SearchResult exhaustive = select::brute_force(problem);
+    const select::SearchResult bounded = select::branch_and_bound(problem);
+    REQUIRE(bounded.found == exhaustive.found);
+    if (!exhaustive.found) continue;
+    ++feasible;
+    CHECK(bounded.cost.total == exhaustive.cost.total);
+    CHECK(bounded.margin == exhaustive.margin);
+  }
+  CHECK(feasible >= 20);
+}
+
+TEST_CASE("a robust rig needs a second sensor where one suffices otherwise") {
+  // One sector angle, threshold 50 %; slot 0 offers a 100 USD sensor covering 6 of 8 cells,
+  // slot 1 a 150 USD one covering 5 of 8. Alone the cheap one suffices (100 USD + CPU 100);
+  // surviving any single failure at the same threshold needs both: each alone still
+  // meets 50 % (75 % and 62.5 %), so the robust optimum is 250 USD + CPU 100.
+  const geometry::RasterGrid grid{4, 2};
+  select::SearchProblem problem;
+  problem.grids = {grid};
+  problem.transfer = {{"onboard", 1e9, 0, {}}};
+  problem.cpus = {{"cpu", 4.0, 100, {}}};
+  const auto option = [&](double price, int covered_cells) {
+    select::SearchOption o;
+    o.price = price;
+    geometry::SectionRaster raster(grid);
+    for (int c = 0; c < grid.columns; ++c) {
+      const int rows = std::min(grid.rows, std::max(0, covered_cells - c * grid.rows));
+      if (rows > 0) raster.set_column_run(c, 0, rows);
+      raster.set_floor(c);
+    }
+    o.sections = {raster};
+    return o;
+  };
+  problem.slots = {{option(100, 6)}, {option(150, 5)}};
+  problem.sectors = {{{0}, 0.5, 0.0}};
+  CHECK(select::branch_and_bound(problem).cost.total == 200);
+  problem.robustness.single_failure = true;
+  problem.robustness.sectors = problem.sectors;
+  const select::SearchResult robust = select::branch_and_bound(problem);
+  REQUIRE(robust.found);
+  CHECK(robust.cost.total == 350);
+  CHECK(robust.choice == std::vector<int>{0, 0});
+}

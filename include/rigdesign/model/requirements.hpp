@@ -29,6 +29,17 @@ struct MotionBetweenFrames {
   double min_frequency() const { return speed / travel; }
 };
 
+/// Robustness (issue 15): the failures a rig must survive, and the sector thresholds it must
+/// still meet after each (its own sectors' unless relaxed here by name).
+struct RobustnessRequirement {
+  bool single_failure = false;              ///< `n-1`: any one sensor failing
+  std::optional<LightCondition> condition;  ///< every sensor not immune to it failing at once
+  /// Relaxed thresholds by sector name (from/to unused: the named sector's angles apply).
+  std::vector<SectorRequirement> sectors;
+  SourceLocation where;
+  bool any() const { return single_failure || condition.has_value(); }
+};
+
 struct Requirements {
   std::string name;
   // R1: body size and the area to perceive.
@@ -56,6 +67,7 @@ struct Requirements {
   // R8: lighting conditions the rig must work in.
   std::vector<LightCondition> lighting;
   SourceLocation lighting_where;
+  std::optional<RobustnessRequirement> robustness;
 
   std::string file;
 

@@ -23,6 +23,8 @@ struct SearchOption {
   double bandwidth = 0.0;                         ///< [bytes/s]
   double cpu = 0.0;                               ///< [core-equivalents]
   std::vector<geometry::SectionRaster> sections;  ///< one per angle of the problem
+  /// For robustness to a degraded condition: whether the option keeps working in it.
+  bool survives_condition = true;
 };
 
 /// SC thresholds over some of the problem's angles (R2).
@@ -32,9 +34,20 @@ struct SearchSector {
   double min_floor = 0.0;
 };
 
+/// What a rig must survive (issue 15): any one sensor failing, and/or a condition in which
+/// every option without `survives_condition` drops out at once; after each failure the rig
+/// must still meet `sectors` (the problem's own, or a relaxed set).
+struct Robustness {
+  bool single_failure = false;
+  bool condition = false;
+  std::vector<SearchSector> sectors;
+  bool any() const { return single_failure || condition; }
+};
+
 struct SearchProblem {
   std::vector<std::vector<SearchOption>> slots;
   std::vector<SearchSector> sectors;
+  Robustness robustness;
   std::vector<model::PricedCapacity> transfer;
   std::vector<model::PricedCapacity> cpus;
   std::vector<geometry::RasterGrid> grids;  ///< per angle

@@ -23,6 +23,8 @@ struct SatisficingTargets {
   std::vector<model::LightCondition> lighting;    ///< L: R8
   std::vector<model::SectorRequirement> sectors;  ///< SC per sector: R2
   double distance = 0.0;                          ///< d [m]: R3
+  /// Failures the rig must survive and the thresholds after them (issue 15); none if unset.
+  std::optional<model::RobustnessRequirement> robustness;
 };
 
 SatisficingTargets satisficing_targets(const model::Requirements& requirements);
@@ -67,6 +69,12 @@ class SelectionSpace {
   std::vector<std::vector<CatalogOption>> options_;  // per slot
 };
 
+/// One failure the chosen rig was checked against (exact path) and the sectors it breaks.
+struct FailureImpact {
+  std::string failure;  ///< "<mount id> fails", or "sunlight: <mounts> fail"
+  std::vector<std::string> broken_sectors;
+};
+
 struct Selection {
   bool found = false;
   std::string infeasible_reason;  ///< when nothing can meet the requirements
@@ -77,6 +85,10 @@ struct Selection {
   metrics::RigCoverage coverage;   ///< the winner on the exact path
   int rejected_by_exact_path = 0;  ///< raster winners the exact path turned down
   double seconds = 0.0;
+  /// With robustness: each failure of the chosen rig (all survived), and the cheapest rig's
+  /// cost without robustness (raster path), the price of robustness being the difference.
+  std::vector<FailureImpact> failures;
+  std::optional<double> cost_without_robustness;
 };
 
 /// The cheapest rig meeting `requirements`, proven optimal on the raster path and verified

@@ -73,6 +73,61 @@ void read_lighting(MapReader& top, model::Requirements& requirements) {
   }
 }
 
+// `robustness: {survive: [n-1, sunlight], sectors: [{name, min_complete_coverage,
+// min_floor_coverage}]}`; sector names must be the requirements' own.
+model::RobustnessRequirement read_robustness(MapReader& reader,
+                                             const std::vector<model::SectorRequirement>& sectors) {
+  model::RobustnessRequirement robustness;
+  robustness.where = reader.location();
+  const std::string expected = "a list of failures: n-1 (any one sensor), or a lighting condition "
+                               "in which every sensor not immune to it fails (" +
+                               model::join(model::names_of(model::kLightConditionNames)) + ")";
+  const YAML::Node list = reader.node("survive");
+  if (!list.IsSequence() || list.size() == 0) {
+    reader.require(false, "survive", list.IsDefined() ? "is not a non-empty list" : "is missing",
+                   expected);
+  } else {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string value = list[i].IsScalar() ? list[i].Scalar() : "";
+      const std::string field = reader.field("survive") + "[" + std::to_string(i) + "]";
+      if (value == "n-1") {
+        robustness.single_failure = true;
+      } else if (const auto condition = model::value_in(model::kLightConditionNames, value);
+                 condition && !robustness.condition) {
+        robustness.condition = *condition;
+      } else {
+        reader.diagnostics().error(io::location_of(list[i], reader.file()), field,
+                                   condition ? "names a second condition" : "unknown failure '" + value + "'",
+                                   expected);
+      }
+    }
+  }
+  const std::string share = "a share of the cross-section in [0, 1]";
+  for (MapReader& entry : reader.maps("sectors", Need::optional)) {
+    model::SectorRequirement relaxed;
+    relaxed.where = entry.location();
+    relaxed.name = entry.text("name", Need::required, "the name of one of the sectors").value_or("");
+    const auto named = std::find_if(sectors.begin(), sectors.end(),
+                                    [&](const model::SectorRequirement& s) { return s.name == relaxed.name; });
+    std::vector<std::string> names;
+    for (const model::SectorRequirement& sector : sectors) names.push_back(sector.name);
+    entry.require(named != sectors.end() || relaxed.name.empty(), "name",
+                  "names no sector of these requirements", "one of: " + model::join(names));
+    if (named != sectors.end()) {
+      relaxed.from = named->from;
+      relaxed.to = named->to;
+    }
+    relaxed.min_complete_coverage =
+        io::share(entry, "min_complete_coverage", Need::required, share).value_or(0.0);
+    relaxed.min_floor_coverage =
+        io::share(entry, "min_floor_coverage", Need::required, share).value_or(0.0);
+    entry.reject_unknown_keys();
+    robustness.sectors.push_back(relaxed);
+  }
+  reader.reject_unknown_keys();
+  return robustness;
+}
+
 }  // namespace
 
 model::Requirements load_requirements(const std::string& path) {
@@ -130,6 +185,9 @@ model::Requirements load_requirements(const std::string& path) {
     accuracy->reject_unknown_keys();
   }
   read_lighting(top, requirements);  // R8
+  if (auto robustness = top.map("robustness", Need::optional, "a map with survive (and sectors)")) {
+    requirements.robustness = read_robustness(*robustness, requirements.sectors);
+  }
   top.text("note", Need::optional);
   top.reject_unknown_keys();
   diagnostics.throw_if_errors();

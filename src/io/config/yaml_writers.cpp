@@ -108,6 +108,21 @@ std::string requirements_to_yaml(const model::Requirements& requirements,
     }
     out << "]\n";
   }
+  if (requirements.robustness && requirements.robustness->any()) {
+    const model::RobustnessRequirement& robust = *requirements.robustness;
+    std::vector<std::string> survive;
+    if (robust.single_failure) survive.push_back("n-1");
+    if (robust.condition) survive.push_back(to_string(*robust.condition));
+    out << "robustness:\n  survive: [" << model::join(survive) << "]\n";
+    if (!robust.sectors.empty()) {
+      out << "  sectors:\n";
+      for (const model::SectorRequirement& sector : robust.sectors) {
+        out << "    - {name: " << quoted(sector.name)
+            << ", min_complete_coverage: " << number(sector.min_complete_coverage)
+            << ", min_floor_coverage: " << number(sector.min_floor_coverage) << "}\n";
+      }
+    }
+  }
   return out.str();
 }
 
