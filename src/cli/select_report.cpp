@@ -71,9 +71,6 @@ std::string describe(const select::Selection& selection, const model::Catalog& c
   return text;
 }
 
-  return text;
-}
-
 SelectReport::SelectReport(const select::SelectionSpace& space,
                            const model::Requirements& requirements,
                            const model::RelaxationPolicy& policy, double budget)

@@ -36,7 +36,7 @@ class SelectReport {
 /// "F >= 10 Hz, R <= 150 mm, N <= 50 mm, L: dark, indoor, SC front >= 75 / 80 % ...".
 std::string describe(const select::SatisficingTargets& targets);
 
-/// "front: azure_kinect_dk/nfov_binned_15, top: velodyne_vlp16/vlp16_10hz".
-std::string describe(const model::Rig& rig);
+/// The chosen rig: per slot its sensor/mode and, for a pose range, the pose chosen.
+std::string describe(const select::Selection& selection, const model::Catalog& catalog);
 
 }  // namespace rigdesign::cli
