@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -83,8 +84,10 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   settings.step = options.step_deg * 3.141592653589793 / 180.0;
   if (terminal) err << "rasterising every slot option at " << options.step_deg << " deg steps...\n";
   const select::SelectionSpace space(catalog, library, settings);
-  const auto progress = [&](long nodes) {
-    if (terminal) err << "\r  search: " << nodes << " nodes" << std::flush;
+  const auto progress = [&](const select::SearchProgress& at) {
+    if (terminal)
+      err << "\r  search: " << at.nodes << " nodes, about " << std::lround(100 * at.fraction)
+          << " % of the tree" << std::flush;
   };
   SelectReport report(space, requirements, policy, options.budget);
   if (!options.json) report.print_header(out);

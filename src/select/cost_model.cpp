@@ -1,5 +1,7 @@
 #include "rigdesign/select/cost_model.hpp"
 
+#include <limits>
+
 namespace rigdesign::select {
 
 namespace {
@@ -32,6 +34,14 @@ CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapac
   }
   cost.total = cost.sensors + cost.transfer + cost.cpu;
   return cost;
+}
+
+double total_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
+                  const std::vector<model::PricedCapacity>& cpus) {
+  const model::PricedCapacity* link = cheapest_exceeding(transfer, load.bandwidth * kBitsPerByte);
+  const model::PricedCapacity* cpu = cheapest_exceeding(cpus, load.cpu);
+  if (link == nullptr || cpu == nullptr) return std::numeric_limits<double>::infinity();
+  return load.sensor_cost + link->price + cpu->price;
 }
 
 }  // namespace rigdesign::select

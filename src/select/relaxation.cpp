@@ -79,7 +79,7 @@ RelaxationOutcome select_within_budget(
     const SelectionSpace& space, const model::Requirements& requirements,
     const model::RelaxationPolicy& policy, double budget,
     const std::function<void(const RelaxationIteration&)>& on_iteration,
-    const std::function<void(long)>& progress) {
+    const std::function<void(const SearchProgress&)>& progress) {
   RelaxationOutcome outcome;
   model::Requirements current = requirements;
   for (std::size_t i = 0; i <= policy.steps.size(); ++i) {

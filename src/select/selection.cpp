@@ -214,7 +214,7 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
 }
 
 Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
-                          const std::function<void(long)>& progress) {
+                          const std::function<void(const SearchProgress&)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   Selection selection;
   const model::Catalog& catalog = space.catalog();

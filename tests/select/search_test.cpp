@@ -120,35 +120,64 @@ TEST_CASE("an excluded assignment is skipped and the next cheapest returned") {
 
 TEST_CASE("of two rigs of equal cost the one with the larger margin wins") {
   // One slot, two options at the same price (a camera at two pitches): at the one sector
-  // angle the first covers 6 of 8 cells (75 %), the second 7 of 8 (87.5 %); threshold 50 %.
-  // Both are feasible and cost the same; margins 25 and 37.5 points: the second wins, and
-  // the search reports the tie.
+  // angle the first covers cells 2..7 of 8 (75 %), the second cells 0..6 (87.5 %); neither
+  // holds the other, so neither dominates. Threshold 50 %: both are feasible and cost the
+  // same; margins 25 and 37.5 points: the second wins, and the search reports the tie.
   const geometry::RasterGrid grid{4, 2};
   select::SearchProblem problem;
   problem.grids = {grid};
   problem.transfer = {{"onboard", 1e9, 0, {}}};
   problem.cpus = {{"cpu", 4.0, 100, {}}};
-  const auto option = [&](int covered_cells) {
+  const auto option = [&](int first_cell, int end_cell) {
     select::SearchOption o;
     o.price = 200;
     geometry::SectionRaster raster(grid);
-    for (int c = 0; c < grid.columns; ++c) {
-      const int rows = std::min(grid.rows, std::max(0, covered_cells - c * grid.rows));
-      if (rows > 0) raster.set_column_run(c, 0, rows);
-      raster.set_floor(c);
-    }
+    for (int cell = first_cell; cell < end_cell; ++cell)
+      raster.set_column_run(cell / grid.rows, cell % grid.rows, cell % grid.rows + 1);
+    for (int c = 0; c < grid.columns; ++c) raster.set_floor(c);
     o.sections = {raster};
     return o;
   };
-  problem.slots = {{option(6), option(7)}};
+  problem.slots = {{option(2, 8), option(0, 7)}};
   problem.sectors = {{{0}, 0.5, 0.0}};
   const select::SearchResult bounded = select::branch_and_bound(problem);
   REQUIRE(bounded.found);
   CHECK(bounded.choice == std::vector<int>{1});
   CHECK(bounded.margin == Approx(0.375));
   CHECK(bounded.ties == 2);
+  CHECK(bounded.dominated == 0);
   const select::SearchResult exhaustive = select::brute_force(problem);
   CHECK(exhaustive.choice == std::vector<int>{1});
+}
+
+TEST_CASE("an option its slot's other option dominates is never tried") {
+  // Same price; the second covers cells 0..6, a superset of the first's 0..5: the first can
+  // never be the better choice, so it is left out, and the answer is unchanged.
+  const geometry::RasterGrid grid{4, 2};
+  select::SearchProblem problem;
+  problem.grids = {grid};
+  problem.transfer = {{"onboard", 1e9, 0, {}}};
+  problem.cpus = {{"cpu", 4.0, 100, {}}};
+  const auto option = [&](int end_cell, double cpu) {
+    select::SearchOption o;
+    o.price = 200;
+    o.cpu = cpu;
+    geometry::SectionRaster raster(grid);
+    for (int cell = 0; cell < end_cell; ++cell)
+      raster.set_column_run(cell / grid.rows, cell % grid.rows, cell % grid.rows + 1);
+    o.sections = {raster};
+    return o;
+  };
+  problem.slots = {{option(6, 0.5), option(7, 0.5)}};
+  problem.sectors = {{{0}, 0.5, 0.0}};
+  select::SearchResult bounded = select::branch_and_bound(problem);
+  CHECK(bounded.dominated == 1);
+  CHECK(bounded.choice == std::vector<int>{1});
+  // A superset that loads the CPU more does not dominate: both are tried.
+  problem.slots = {{option(6, 0.5), option(7, 0.6)}};
+  bounded = select::branch_and_bound(problem);
+  CHECK(bounded.dominated == 0);
+  CHECK(bounded.ties == 2);
 }
 
 TEST_CASE("with robustness, branch and bound still finds the brute-force optimum") {

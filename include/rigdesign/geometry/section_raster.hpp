@@ -38,6 +38,11 @@ class SectionRaster {
   double complete_share_with(const SectionRaster& other) const;
   double floor_share_with(const SectionRaster& other) const;
 
+  /// The bits themselves, for the search's compressed classes: cell bit column * rows + row,
+  /// floor bit column.
+  const std::vector<std::uint64_t>& cell_words() const { return cells_; }
+  const std::vector<std::uint64_t>& floor_words() const { return floor_; }
+
  private:
   RasterGrid grid_;
   std::vector<std::uint64_t> cells_;  // column-major: bit column * rows + row

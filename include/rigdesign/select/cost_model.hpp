@@ -36,4 +36,9 @@ const model::PricedCapacity* cheapest_exceeding(const std::vector<model::PricedC
 CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
                        const std::vector<model::PricedCapacity>& cpus);
 
+/// rig_cost(...).total, or +infinity when no item carries the load: the search's inner loop,
+/// without the breakdown's strings.
+double total_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
+                  const std::vector<model::PricedCapacity>& cpus);
+
 }  // namespace rigdesign::select

@@ -40,7 +40,7 @@ RelaxationOutcome select_within_budget(
     const SelectionSpace& space, const model::Requirements& requirements,
     const model::RelaxationPolicy& policy, double budget,
     const std::function<void(const RelaxationIteration&)>& on_iteration = {},
-    const std::function<void(long)>& progress = {});
+    const std::function<void(const SearchProgress&)>& progress = {});
 
 /// Applies every step in order, so a bad policy fails before any search (throws InputError).
 model::Requirements check_policy(const model::Requirements& requirements,

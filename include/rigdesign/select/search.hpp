@@ -2,13 +2,17 @@
 /// The exact minimum-cost search over slot assignments (each slot: nothing or one option),
 /// on precomputed raster sections. Branch and bound, admissible because both the cost and
 /// the coverage only grow when a sensor is added:
-/// - the cost of the sensors chosen so far (with the transfer and CPU their load needs) is a
-///   lower bound on every completion, so a node no cheaper than the incumbent is cut;
+/// - a node no cheaper than the incumbent is cut, and so is one whose cost plus the cheapest
+///   option that could still fill its worst uncovered angle is no cheaper;
 /// - the union with every option of every undecided slot is an upper bound on the coverage
 ///   any completion reaches, so a node whose bound misses a sector threshold is cut;
-/// - a node whose chosen sensors already meet every threshold needs nothing more.
-/// Among rigs of equal cost (within kCostTie) the one with the largest smallest margin to the
-/// sector thresholds wins, so a pose range's most robust pose is chosen, not the first found.
+/// - a node whose chosen sensors already meet every threshold needs nothing more;
+/// - an option another of its slot dominates (no dearer in price, bandwidth and CPU, covering
+///   a superset, surviving whatever it survives) is never tried.
+/// The search runs on ClassCoverage (cells covered by the same options merged), exact to the
+/// cell. Among rigs of equal cost (within kCostTie) the one with the largest smallest margin
+/// to the sector thresholds wins, so a pose range's most robust pose is chosen, not the first
+/// found.
 #include <functional>
 #include <string>
 #include <vector>
@@ -53,11 +57,19 @@ struct SearchProblem {
   std::vector<geometry::RasterGrid> grids;  ///< per angle
 };
 
-/// A rig the search evaluated, for the cost-versus-coverage Pareto plot.
+/// A rig the search found meeting every requirement, for the cost-versus-coverage Pareto plot.
 struct ExploredRig {
   double cost = 0.0;
   double mean_complete = 0.0;  ///< SC complete over the problem's angles (raster)
   bool feasible = false;
+};
+
+/// Where a running search is: nodes visited, and the share of the tree behind it (the
+/// depth-first position read as a mixed-radix fraction: an estimate, as cut subtrees differ
+/// in size).
+struct SearchProgress {
+  long nodes = 0;
+  double fraction = 0.0;
 };
 
 struct SearchResult {
@@ -70,7 +82,10 @@ struct SearchResult {
   long ties = 0;  ///< feasible rigs found at the optimum's cost (1: no tie to break)
   long nodes = 0;        ///< nodes of the search tree visited
   long evaluations = 0;  ///< rigs whose coverage was evaluated
-  std::vector<ExploredRig> explored;
+  long dominated = 0;    ///< options never tried: another of their slot dominates them
+  long raster_cells = 0;    ///< cells and floor columns of one rig's rasters, all angles
+  long coverage_classes = 0;  ///< the classes they compress to (ClassCoverage)
+  std::vector<ExploredRig> explored;  ///< the feasible rigs found
 };
 
 /// Coverage shares count as meeting a threshold from threshold - kThresholdSlack.
@@ -79,10 +94,10 @@ inline constexpr double kThresholdSlack = 1e-4;
 inline constexpr double kCostTie = 1e-6;
 
 /// Proven-optimal assignment, skipping the assignments in `excluded` (used when the exact
-/// path rejects a raster winner). `progress` is called now and then with the nodes visited.
+/// path rejects a raster winner). `progress` is called now and then.
 SearchResult branch_and_bound(const SearchProblem& problem,
                               const std::vector<std::vector<int>>& excluded = {},
-                              const std::function<void(long)>& progress = {});
+                              const std::function<void(const SearchProgress&)>& progress = {});
 
 /// Every assignment, for tests and the benchmark's ratio.
 SearchResult brute_force(const SearchProblem& problem);

@@ -95,6 +95,6 @@ struct Selection {
 /// on the exact path (a raster winner the exact path rejects is excluded and the search
 /// runs again).
 Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
-                          const std::function<void(long)>& progress = {});
+                          const std::function<void(const SearchProgress&)>& progress = {});
 
 }  // namespace rigdesign::select

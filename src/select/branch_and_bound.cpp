@@ -1,0 +1,357 @@
+// The proven-optimal search on compressed coverage classes (DESIGN.md section 5, issue 15).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "rigdesign/select/class_coverage.hpp"
+#include "rigdesign/select/search.hpp"
+#include "select/search_rules.hpp"
+
+namespace rigdesign::select {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr long kProgressEvery = 4096;
+
+// Covered cells (floor columns) needed at one angle of a sector: the smallest count whose
+// share meets the threshold exactly as meets() decides it on a share.
+struct Need {
+  std::size_t angle = 0;
+  std::int64_t cells = 0;
+  std::int64_t floor = 0;
+  double min_complete = 0.0;
+  double min_floor = 0.0;
+};
+
+std::int64_t smallest_count_meeting(double threshold, std::int64_t total) {
+  // share = count / total is monotone in count: start near the answer, then settle it with
+  // the same floating-point comparison meets() makes.
+  std::int64_t count = std::clamp<std::int64_t>(
+      static_cast<std::int64_t>(std::floor((threshold - kThresholdSlack) * static_cast<double>(total))) - 1, 0, total);
+  while (count <= total && !meets(static_cast<double>(count) / static_cast<double>(total), threshold))
+    ++count;
+  while (count > 0 && meets(static_cast<double>(count - 1) / static_cast<double>(total), threshold))
+    --count;
+  return count;  // total + 1: no count meets it
+}
+
+std::vector<Need> needs_of(const std::vector<SearchSector>& sectors, const ClassCoverage& classes) {
+  std::vector<Need> needs;
+  for (const SearchSector& sector : sectors) {
+    for (const int a : sector.angles) {
+      const CellCounts total = classes.total(static_cast<std::size_t>(a));
+      needs.push_back({static_cast<std::size_t>(a), smallest_count_meeting(sector.min_complete, total.cells),
+                       smallest_count_meeting(sector.min_floor, total.floor), sector.min_complete,
+                       sector.min_floor});
+    }
+  }
+  return needs;
+}
+
+bool met(const CellCounts& counts, const Need& need) {
+  return counts.cells >= need.cells && counts.floor >= need.floor;
+}
+
+class BranchAndBound {
+ public:
+  BranchAndBound(const SearchProblem& problem, const std::vector<std::vector<int>>& excluded,
+                 const std::function<void(const SearchProgress&)>& progress)
+      : problem_(problem), excluded_(excluded), progress_(progress), classes_(problem) {
+    const std::size_t slots = problem.slots.size();
+    const std::size_t angles = classes_.angles();
+    const std::size_t words = classes_.words();
+    needs_ = needs_of(problem.sectors, classes_);
+    robust_needs_ = needs_of(problem.robustness.sectors, classes_);
+    std::vector<bool> searched(angles, false);
+    for (const Need& need : needs_) searched[need.angle] = true;
+    for (const Need& need : robust_needs_) searched[need.angle] = true;
+    for (const geometry::RasterGrid& grid : problem.grids)
+      result_.raster_cells += static_cast<long>(grid.columns) * (grid.rows + 1);
+    result_.coverage_classes = static_cast<long>(classes_.classes());
+
+    // Options to try per slot, cheapest first (good incumbents early make the cost bound
+    // bite), without the dominated ones; and the angles each one changes the search state at.
+    order_.resize(slots);
+    searched_span_.resize(slots);
+    for (std::size_t k = 0; k < slots; ++k) {
+      searched_span_[k].resize(problem.slots[k].size());
+      for (std::size_t o = 0; o < problem.slots[k].size(); ++o) {
+        for (const int a : classes_.span(k, o))
+          if (searched[a]) searched_span_[k][o].push_back(a);
+        if (excluded.empty() && dominated(k, o)) {
+          ++result_.dominated;
+          continue;
+        }
+        order_[k].push_back(static_cast<int>(o));
+      }
+      std::stable_sort(order_[k].begin(), order_[k].end(), [&](int x, int y) {
+        return problem.slots[k][x].price < problem.slots[k][y].price;
+      });
+    }
+    // rest_[k]: the union of every option of slots k.. (the coverage bound), its counts, and
+    // per angle the cheapest of those options covering any cell (floor column) there.
+    rest_.assign(slots + 1, std::vector<std::uint64_t>(words, 0));
+    rest_counts_.assign(slots + 1, std::vector<CellCounts>(angles));
+    cheapest_cells_.assign(slots + 1, std::vector<double>(angles, kInfinity));
+    cheapest_floor_.assign(slots + 1, std::vector<double>(angles, kInfinity));
+    for (std::size_t k = slots; k-- > 0;) {
+      rest_[k] = rest_[k + 1];
+      cheapest_cells_[k] = cheapest_cells_[k + 1];
+      cheapest_floor_[k] = cheapest_floor_[k + 1];
+      for (const int o : order_[k]) {
+        const std::uint64_t* bits = classes_.bits(k, o);
+        for (std::size_t w = 0; w < words; ++w) rest_[k][w] |= bits[w];
+        for (const int a : searched_span_[k][o]) {
+          const CellCounts alone = classes_.count(a, bits);
+          const double price = problem.slots[k][o].price;
+          if (alone.cells > 0) cheapest_cells_[k][a] = std::min(cheapest_cells_[k][a], price);
+          if (alone.floor > 0) cheapest_floor_[k][a] = std::min(cheapest_floor_[k][a], price);
+        }
+      }
+      for (std::size_t a = 0; a < angles; ++a) rest_counts_[k][a] = classes_.count(a, rest_[k].data());
+    }
+    union_.assign(words, 0);
+    scratch_.assign(words, 0);
+    counts_.assign(angles, {});
+    choice_.assign(slots, -1);
+    position_.assign(slots, 0);
+    result_.cost.total = kInfinity;
+  }
+
+  SearchResult run() {
+    visit(0, RigLoad{}, false);
+    return result_;
+  }
+
+ private:
+  // Whether another option of slot k makes option o pointless: no dearer in price,
+  // bandwidth and CPU, surviving the condition if o does, covering every class o covers;
+  // identical options keep the first.
+  bool dominated(std::size_t k, std::size_t o) const {
+    const SearchOption& mine = problem_.slots[k][o];
+    const std::uint64_t* my_bits = classes_.bits(k, o);
+    for (std::size_t p = 0; p < problem_.slots[k].size(); ++p) {
+      if (p == o) continue;
+      const SearchOption& other = problem_.slots[k][p];
+      if (other.price > mine.price || other.bandwidth > mine.bandwidth || other.cpu > mine.cpu ||
+          (mine.survives_condition && !other.survives_condition)) {
+        continue;
+      }
+      const std::uint64_t* other_bits = classes_.bits(k, p);
+      bool covers = true;
+      for (std::size_t w = 0; w < classes_.words() && covers; ++w)
+        covers = (my_bits[w] & ~other_bits[w]) == 0;
+      if (!covers) continue;
+      const bool identical = other.price == mine.price && other.bandwidth == mine.bandwidth &&
+                             other.cpu == mine.cpu &&
+                             other.survives_condition == mine.survives_condition &&
+                             classes_.span(k, p) == classes_.span(k, o) &&
+                             std::equal(my_bits, my_bits + classes_.words(), other_bits);
+      if (!identical || p < o) return true;
+    }
+    return false;
+  }
+
+  // Adds option o of slot k to the union at the searched angles, saving what it changes.
+  void add(std::size_t k, int o) {
+    const std::uint64_t* bits = classes_.bits(k, o);
+    for (const int a : searched_span_[k][o]) {
+      saved_counts_.push_back(counts_[a]);
+      saved_words_.insert(saved_words_.end(), union_.begin() + static_cast<long>(classes_.begin(a)),
+                          union_.begin() + static_cast<long>(classes_.end(a)));
+      const CellCounts gain = classes_.count_new(a, bits, union_.data());
+      counts_[a].cells += gain.cells;
+      counts_[a].floor += gain.floor;
+      for (std::size_t w = classes_.begin(a); w < classes_.end(a); ++w) union_[w] |= bits[w];
+    }
+  }
+
+  void remove(std::size_t k, int o) {
+    const std::vector<int>& span = searched_span_[k][o];
+    for (auto it = span.rbegin(); it != span.rend(); ++it) {
+      const std::size_t a = static_cast<std::size_t>(*it);
+      counts_[a] = saved_counts_.back();
+      saved_counts_.pop_back();
+      const std::size_t words = classes_.end(a) - classes_.begin(a);
+      std::copy(saved_words_.end() - static_cast<long>(words), saved_words_.end(),
+                union_.begin() + static_cast<long>(classes_.begin(a)));
+      saved_words_.resize(saved_words_.size() - words);
+    }
+  }
+
+  // Counts at `angle` of the chosen options except those `dropped` says failed.
+  template <typename Dropped>
+  CellCounts counts_without(std::size_t angle, Dropped dropped) {
+    std::fill(scratch_.begin() + static_cast<long>(classes_.begin(angle)),
+              scratch_.begin() + static_cast<long>(classes_.end(angle)), 0);
+    for (std::size_t k = 0; k < choice_.size(); ++k) {
+      if (choice_[k] < 0 || dropped(k)) continue;
+      const std::uint64_t* bits = classes_.bits(k, choice_[k]);
+      for (std::size_t w = classes_.begin(angle); w < classes_.end(angle); ++w) scratch_[w] |= bits[w];
+    }
+    return classes_.count(angle, scratch_.data());
+  }
+
+  template <typename Dropped>
+  bool meets_robust_needs(Dropped dropped) {
+    return std::all_of(robust_needs_.begin(), robust_needs_.end(), [&](const Need& need) {
+      return met(counts_without(need.angle, dropped), need);
+    });
+  }
+
+  // Whether the chosen rig still meets the robustness sectors after every failure the
+  // problem asks it to survive: each chosen sensor alone, and every sensor that does not
+  // survive the condition at once.
+  bool survives() {
+    const Robustness& robust = problem_.robustness;
+    if (robust.single_failure) {
+      for (std::size_t j = 0; j < choice_.size(); ++j) {
+        if (choice_[j] >= 0 && !meets_robust_needs([&](std::size_t k) { return k == j; }))
+          return false;
+      }
+    }
+    if (robust.condition) {
+      return meets_robust_needs(
+          [&](std::size_t k) { return !problem_.slots[k][choice_[k]].survives_condition; });
+    }
+    return true;
+  }
+
+  double smallest_margin() const {
+    double margin = kInfinity;
+    for (const Need& need : needs_) {
+      const CellCounts total = classes_.total(need.angle);
+      const CellCounts& have = counts_[need.angle];
+      margin = std::min({margin,
+                         static_cast<double>(have.cells) / static_cast<double>(total.cells) -
+                             need.min_complete,
+                         static_cast<double>(have.floor) / static_cast<double>(total.floor) -
+                             need.min_floor});
+    }
+    return margin;
+  }
+
+  // SC complete averaged over every angle of the problem (the Pareto plot's axis).
+  double mean_complete() {
+    double sum = 0.0;
+    for (std::size_t a = 0; a < classes_.angles(); ++a) {
+      const CellCounts have = counts_without(a, [](std::size_t) { return false; });
+      sum += static_cast<double>(have.cells) / static_cast<double>(classes_.total(a).cells);
+    }
+    return classes_.angles() == 0 ? 0.0 : sum / static_cast<double>(classes_.angles());
+  }
+
+  // A rig whose sensors are chosen (the rest nothing): record it if it meets every sector
+  // threshold and survives what it must, and say whether it does.
+  bool evaluate(const RigLoad& load, double cost) {
+    ++result_.evaluations;
+    const bool feasible =
+        std::all_of(needs_.begin(), needs_.end(),
+                    [&](const Need& need) { return met(counts_[need.angle], need); }) &&
+        std::find(excluded_.begin(), excluded_.end(), choice_) == excluded_.end() && survives();
+    if (!feasible) return false;
+    result_.explored.push_back({cost, mean_complete(), true});
+    const double margin = smallest_margin();
+    if (improves(result_, cost, margin)) {
+      result_.found = true;
+      result_.cost = rig_cost(load, problem_.transfer, problem_.cpus);
+      result_.choice = choice_;
+      result_.margin = margin;
+    }
+    return true;
+  }
+
+  // Whether some completion of this node may meet every threshold for no more than the
+  // incumbent: the coverage bound per needed angle, then the cost bound (this node's cost
+  // plus the cheapest option of an undecided slot that covers anything at the worst
+  // uncovered angle: any completion must buy at least that one).
+  bool promising(std::size_t depth, const RigLoad& load) const {
+    double extra = 0.0;
+    for (const Need& need : needs_) {
+      const CellCounts& have = counts_[need.angle];
+      if (met(have, need)) continue;
+      const CellCounts& rest = rest_counts_[depth][need.angle];
+      if (have.cells + rest.cells < need.cells || have.floor + rest.floor < need.floor) return false;
+      const CellCounts gain = classes_.count_new(need.angle, rest_[depth].data(), union_.data());
+      if (have.cells + gain.cells < need.cells || have.floor + gain.floor < need.floor) return false;
+      if (have.cells < need.cells) extra = std::max(extra, cheapest_cells_[depth][need.angle]);
+      if (have.floor < need.floor) extra = std::max(extra, cheapest_floor_[depth][need.angle]);
+    }
+    if (extra == 0.0) return true;
+    RigLoad bound = load;
+    bound.sensor_cost += extra;
+    return total_cost(bound, problem_.transfer, problem_.cpus) <= result_.cost.total + kCostTie;
+  }
+
+  void report_progress(std::size_t depth) {
+    if (!progress_) return;
+    double fraction = 0.0;
+    double width = 1.0;
+    for (std::size_t d = 0; d < depth && d < position_.size(); ++d) {
+      const double branches = static_cast<double>(order_[d].size() + 1);
+      fraction += width * position_[d] / branches;
+      width /= branches;
+    }
+    progress_({result_.nodes, fraction});
+  }
+
+  void visit(std::size_t depth, const RigLoad& load, bool just_added) {
+    if (++result_.nodes % kProgressEvery == 0) report_progress(depth);
+    const double cost = total_cost(load, problem_.transfer, problem_.cpus);
+    // No transfer item or CPU carries this load: none carries a larger one either.
+    // An equal cost is explored too: it may hold a rig with a larger margin.
+    if (!std::isfinite(cost) || cost > result_.cost.total + kCostTie) return;
+    // A feasible rig needs nothing more: any addition costs more.
+    if (just_added && evaluate(load, cost)) return;
+    if (depth == problem_.slots.size() || !promising(depth, load)) return;
+    for (std::size_t i = 0; i < order_[depth].size(); ++i) {
+      const int o = order_[depth][i];
+      const SearchOption& option = problem_.slots[depth][o];
+      position_[depth] = static_cast<int>(i);
+      choice_[depth] = o;
+      add(depth, o);
+      RigLoad next = load;
+      next.sensor_cost += option.price;
+      next.bandwidth += option.bandwidth;
+      next.cpu += option.cpu;
+      ++next.sensors;
+      visit(depth + 1, next, true);
+      remove(depth, o);
+    }
+    position_[depth] = static_cast<int>(order_[depth].size());
+    choice_[depth] = -1;
+    visit(depth + 1, load, false);
+  }
+
+  const SearchProblem& problem_;
+  const std::vector<std::vector<int>>& excluded_;
+  const std::function<void(const SearchProgress&)>& progress_;
+  const ClassCoverage classes_;
+  std::vector<Need> needs_;
+  std::vector<Need> robust_needs_;
+  std::vector<std::vector<int>> order_;
+  std::vector<std::vector<std::vector<int>>> searched_span_;
+  std::vector<std::vector<std::uint64_t>> rest_;
+  std::vector<std::vector<CellCounts>> rest_counts_;
+  std::vector<std::vector<double>> cheapest_cells_;
+  std::vector<std::vector<double>> cheapest_floor_;
+  std::vector<std::uint64_t> union_;
+  std::vector<CellCounts> counts_;
+  std::vector<std::uint64_t> saved_words_;
+  std::vector<CellCounts> saved_counts_;
+  std::vector<std::uint64_t> scratch_;
+  std::vector<int> choice_;
+  std::vector<int> position_;
+  SearchResult result_;
+};
+
+}  // namespace
+
+SearchResult branch_and_bound(const SearchProblem& problem,
+                              const std::vector<std::vector<int>>& excluded,
+                              const std::function<void(const SearchProgress&)>& progress) {
+  return BranchAndBound(problem, excluded, progress).run();
+}
+
+}  // namespace rigdesign::select
