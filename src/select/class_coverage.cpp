@@ -61,7 +61,7 @@ ClassCoverage::ClassCoverage(const SearchProblem& problem) {
     totals_.push_back({static_cast<std::int64_t>(cells), grid.columns});
     signature.assign(cells + grid.columns, 0);
     for (std::size_t g = 0; g < options.size(); ++g) {
-      const geometry::SectionRaster& raster = options[g].data->sections[a];
+      const geometry::SectionRaster& raster = options[g].data->section(a);
       const std::uint64_t key = option_key(g);
       for_each_bit(raster.cell_words(), 0, [&](std::size_t bit) { signature[bit] += key; });
       for_each_bit(raster.floor_words(), cells, [&](std::size_t bit) { signature[bit] += key; });
@@ -91,7 +91,7 @@ ClassCoverage::ClassCoverage(const SearchProblem& problem) {
     cell_weight_.insert(cell_weight_.end(), cell_weight.begin(), cell_weight.end());
     floor_weight_.insert(floor_weight_.end(), floor_weight.begin(), floor_weight.end());
     for (std::size_t g = 0; g < options.size(); ++g) {
-      const geometry::SectionRaster& raster = options[g].data->sections[a];
+      const geometry::SectionRaster& raster = options[g].data->section(a);
       members.assign(classes, 0);
       bool any = false;
       const auto add = [&](std::size_t bit) {

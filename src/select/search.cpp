@@ -50,7 +50,7 @@ bool survives(const SearchProblem& problem, const std::vector<int>& choice) {
       if (choice[k] < 0 || dropped(k)) continue;
       const SearchOption& option = problem.slots[k][choice[k]];
       for (const SearchSector& sector : robust.sectors) {
-        for (const int a : sector.angles) sections[a] |= option.sections[a];
+        for (const int a : sector.angles) sections[a] |= option.section(a);
       }
     }
     return sections;
@@ -90,7 +90,7 @@ SearchResult brute_force(const SearchProblem& problem) {
       load.bandwidth += option.bandwidth;
       load.cpu += option.cpu;
       ++load.sensors;
-      for (std::size_t a = 0; a < sections.size(); ++a) sections[a] |= option.sections[a];
+      for (std::size_t a = 0; a < sections.size(); ++a) sections[a] |= option.section(a);
     }
     const CostBreakdown cost = rig_cost(load, problem.transfer, problem.cpus);
     if (load.sensors > 0 && cost.feasible && cost.total <= result.cost.total + kCostTie) {

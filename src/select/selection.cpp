@@ -132,8 +132,11 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
               candidate.filtering_seconds_per_point.value_or(catalog.filtering_seconds_per_point) *
               option.metrics.points_per_second;
           const geometry::MountedFov fov(*option.mode, mount.T_robot_sensor, body);
+          std::vector<geometry::SectionRaster> sections;
           for (int a = 0; a < angles; ++a)
-            option.sections.push_back(geometry::rasterize(fov, frames[a], grids_[a]));
+            sections.push_back(geometry::rasterize(fov, frames[a], grids_[a]));
+          option.sections =
+              std::make_shared<const std::vector<geometry::SectionRaster>>(std::move(sections));
           options_[k].push_back(std::move(option));
         }
       }

@@ -49,6 +49,7 @@ select::SearchProblem random_problem(std::mt19937& rng) {
       option.bandwidth = 1e8 * unit(rng);
       option.cpu = 2.0 * unit(rng);
       const double density = 0.2 + 0.5 * unit(rng);
+      std::vector<geometry::SectionRaster> sections;
       for (int a = 0; a < angles; ++a) {
         geometry::SectionRaster raster(grid);
         for (int c = 0; c < grid.columns; ++c) {
@@ -63,8 +64,9 @@ select::SearchProblem random_problem(std::mt19937& rng) {
           }
           if (unit(rng) < density) raster.set_floor(c);
         }
-        option.sections.push_back(raster);
+        sections.push_back(raster);
       }
+      option.sections = std::make_shared<const std::vector<geometry::SectionRaster>>(sections);
       problem.slots.back().push_back(option);
     }
   }
@@ -135,7 +137,7 @@ TEST_CASE("of two rigs of equal cost the one with the larger margin wins") {
     for (int cell = first_cell; cell < end_cell; ++cell)
       raster.set_column_run(cell / grid.rows, cell % grid.rows, cell % grid.rows + 1);
     for (int c = 0; c < grid.columns; ++c) raster.set_floor(c);
-    o.sections = {raster};
+    o.sections = std::make_shared<const std::vector<geometry::SectionRaster>>(1, raster);
     return o;
   };
   problem.slots = {{option(2, 8), option(0, 7)}};
@@ -165,7 +167,7 @@ TEST_CASE("an option its slot's other option dominates is never tried") {
     geometry::SectionRaster raster(grid);
     for (int cell = 0; cell < end_cell; ++cell)
       raster.set_column_run(cell / grid.rows, cell % grid.rows, cell % grid.rows + 1);
-    o.sections = {raster};
+    o.sections = std::make_shared<const std::vector<geometry::SectionRaster>>(1, raster);
     return o;
   };
   problem.slots = {{option(6, 0.5), option(7, 0.5)}};
@@ -230,7 +232,7 @@ TEST_CASE("a robust rig needs a second sensor where one suffices otherwise") {
       if (rows > 0) raster.set_column_run(c, 0, rows);
       raster.set_floor(c);
     }
-    o.sections = {raster};
+    o.sections = std::make_shared<const std::vector<geometry::SectionRaster>>(1, raster);
     return o;
   };
   problem.slots = {{option(100, 6)}, {option(150, 5)}};

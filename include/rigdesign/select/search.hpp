@@ -14,6 +14,7 @@
 /// to the sector thresholds wins, so a pose range's most robust pose is chosen, not the first
 /// found.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,10 @@ struct SearchOption {
   double price = 0.0;                             ///< [USD]
   double bandwidth = 0.0;                         ///< [bytes/s]
   double cpu = 0.0;                               ///< [core-equivalents]
-  std::vector<geometry::SectionRaster> sections;  ///< one per angle of the problem
+  /// One per angle of the problem; shared with the catalog option it came from (a catalog
+  /// of 150 options holds 54,000 rasters: copied per relaxation step they would not fit).
+  std::shared_ptr<const std::vector<geometry::SectionRaster>> sections;
+  const geometry::SectionRaster& section(std::size_t angle) const { return (*sections)[angle]; }
   /// For robustness to a degraded condition: whether the option keeps working in it.
   bool survives_condition = true;
 };

@@ -37,7 +37,7 @@ struct CatalogOption {
   const model::SensorMode* mode = nullptr;
   metrics::MountMetrics metrics;                  ///< at the slot's distance of interest
   double filtering = 0.0;                         ///< U_f [core-equivalents]
-  std::vector<geometry::SectionRaster> sections;  ///< per angle of the space
+  std::shared_ptr<const std::vector<geometry::SectionRaster>> sections;  ///< per angle of the space
 };
 
 /// Every option of a catalog rasterised once; searches for different requirements reuse it.
