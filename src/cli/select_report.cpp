@@ -1,5 +1,7 @@
 #include "select_report.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -12,7 +14,9 @@
 #include "rigdesign/io/config/yaml_writers.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/render/margin_plot.hpp"
 #include "rigdesign/render/pareto_plot.hpp"
+#include "rigdesign/select/pose_refinement.hpp"
 #include "text_table.hpp"
 
 namespace rigdesign::cli {
@@ -56,6 +60,30 @@ std::string describe(const select::SatisficingTargets& targets) {
             percent(sector.min_floor_coverage) + " %";
   }
   return text;
+}
+
+constexpr const char* kAxisNames[6] = {"x", "y", "z", "roll", "pitch", "yaw"};
+
+// An axis value in the file's unit: metres, or degrees for the angles.
+std::string axis_value(int axis, double value) {
+  return axis < 3 ? model::format_number(value, 4) + " m"
+                  : model::format_number(value * 180 / 3.141592653589793, 4) + " deg";
+}
+
+std::string describe(const select::PoseRefinement& refinement) {
+  std::string moves;
+  for (const select::RefinedAxis& axis : refinement.axes) {
+    moves += (moves.empty() ? "" : ", ") + axis.mount + " " + kAxisNames[axis.axis] + " " +
+             axis_value(axis.axis, axis.grid) + " -> " + axis_value(axis.axis, axis.refined);
+  }
+  std::string verdict =
+      refinement.accepted ? "confirmed on the exact path: the rig written uses these poses"
+      : refinement.refined_margin > refinement.grid_margin
+          ? "the exact path turned it down: the grid poses stand"
+          : "no move widened the margin: the grid poses stand";
+  return moves + "; smallest margin " + model::format_number(100 * refinement.grid_margin, 3) +
+         " -> " + model::format_number(100 * refinement.refined_margin, 3) + " points (" +
+         std::to_string(refinement.evaluations) + " rigs), " + verdict;
 }
 
 // The chosen options with the pose a slot's range settled on.
@@ -119,10 +147,14 @@ void SelectReport::print_iteration(const select::RelaxationIteration& iteration,
              "margin to the sector thresholds, "
           << model::format_number(100 * selection.search.margin, 3) << " points\n";
     }
+    if (selection.refinement.tried)
+      out << "      refined poses: " << describe(selection.refinement) << '\n';
   }
   out << "    search: " << selection.search.nodes << " nodes, " << selection.search.evaluations
-      << " rigs evaluated, " << fixed(selection.seconds, 2)
-      << " s, proven optimal on the raster path";
+      << " rigs evaluated, " << fixed(selection.seconds, 2) << " s ("
+      << selection.search.coverage_classes << " coverage classes for "
+      << selection.search.raster_cells << " raster cells, " << selection.search.dominated
+      << " dominated options), proven optimal on the raster path";
   if (selection.found) {
     out << ", verified on the exact path";
     if (selection.rejected_by_exact_path > 0) {
@@ -159,6 +191,8 @@ void SelectReport::print_summary(const select::RelaxationOutcome& outcome,
   if (outcome.within_budget) {
     out << "\nChosen rig (" << usd(pick->selection.cost.total) << " <= budget " << usd(budget_)
         << "): " << describe(pick->selection, space_.catalog()) << '\n';
+    if (pick->selection.refinement.accepted)
+      out << "  refined poses: " << describe(pick->selection.refinement) << '\n';
     const metrics::RigCoverage& coverage = pick->selection.coverage;
     out << "  SC complete mean " << percent(coverage.complete.mean) << " %, floor mean "
         << percent(coverage.floor.mean) << " % (exact path)\n";
@@ -180,6 +214,43 @@ void SelectReport::print_summary(const select::RelaxationOutcome& outcome,
         << std::filesystem::path(written.front()).parent_path().string()
         << " (chosen_rig.yaml passes `rigdesign check`)\n";
   }
+}
+
+// SC margin against pitch for each chosen sensor whose slot's range varies its pitch, the
+// rest of the rig as chosen.
+std::vector<std::string> SelectReport::write_margin_plots(const select::RelaxationIteration& pick,
+                                                          const std::string& folder) const {
+  constexpr int kPitch = 4;
+  constexpr int kSamples = 41;
+  std::vector<std::string> written;
+  const select::Selection& selection = pick.selection;
+  for (std::size_t m = 0; m < selection.chosen.size(); ++m) {
+    const model::MountingSlot& slot = space_.catalog().slots[selection.chosen[m]->slot];
+    const auto range = std::find_if(slot.ranges.begin(), slot.ranges.end(),
+                                    [](const model::PoseAxisRange& r) { return r.axis == kPitch; });
+    if (range == slot.ranges.end()) continue;
+    const std::array<double, 6>& grid_values = slot.poses[selection.chosen[m]->pose].values;
+    const std::array<double, 6>& values =
+        selection.refinement.accepted ? selection.refinement.values[m] : grid_values;
+    render::MarginCurve curve;
+    curve.axis_label = selection.rig.mounts[m].id + " pitch [deg] (positive looks down)";
+    constexpr double kDeg = 180 / 3.141592653589793;
+    for (const auto& [pitch, margin] : select::margin_sweep(space_, pick.targets, selection.rig,
+                                                            m, values, *range, kSamples))
+      curve.samples.emplace_back(pitch * kDeg, 100 * margin);
+    const long steps = std::lround((range->high - range->low) / range->step);
+    for (long i = 0; i <= steps; ++i)
+      curve.grid.push_back((range->low + static_cast<double>(i) * range->step) * kDeg);
+    curve.grid_choice = grid_values[kPitch] * kDeg;
+    curve.refined = values[kPitch] * kDeg;
+    const std::string path = folder + "/margin_" + selection.rig.mounts[m].id + "_pitch.png";
+    render::plot_margin_curve(
+        curve, selection.rig.mounts[m].id + " (" + selection.chosen[m]->sensor->id +
+                   "): SC margin against pitch, the rest of the rig as chosen",
+        path);
+    written.push_back(path);
+  }
+  return written;
 }
 
 std::vector<std::string> SelectReport::write_files(const select::RelaxationOutcome& outcome,
@@ -226,10 +297,14 @@ std::vector<std::string> SelectReport::write_files(const select::RelaxationOutco
     const std::string path = folder + "/pareto" + extension;
     render::plot_pareto(pick->selection.search.explored, budget_, pick->selection.cost.total,
                         pick->selection.coverage.complete.mean,
-                        space_.catalog().name + ": cost against coverage of the rigs explored",
+                        space_.catalog().name + ": rigs meeting the " +
+                            (pick->relaxed.empty() ? std::string("initial requirements")
+                                                   : "requirements relaxed by " + pick->relaxed),
                         path);
     written.push_back(path);
   }
+  const std::vector<std::string> margins = write_margin_plots(*pick, folder);
+  written.insert(written.end(), margins.begin(), margins.end());
   if (renders) {
     const std::string coverage_folder = folder + "/coverage";
     std::filesystem::create_directories(coverage_folder, error);
@@ -260,6 +335,9 @@ nlohmann::json SelectReport::to_json(const select::RelaxationOutcome& outcome,
                            {"within_budget", it.within_budget},
                            {"nodes", it.selection.search.nodes},
                            {"rigs_evaluated", it.selection.search.evaluations},
+                           {"coverage_classes", it.selection.search.coverage_classes},
+                           {"raster_cells", it.selection.search.raster_cells},
+                           {"dominated_options", it.selection.search.dominated},
                            {"seconds", it.selection.seconds},
                            {"rejected_by_exact_path", it.selection.rejected_by_exact_path}};
     if (it.selection.found) {
@@ -278,6 +356,20 @@ nlohmann::json SelectReport::to_json(const select::RelaxationOutcome& outcome,
       item["rig"] = mounts;
       item["margin"] = it.selection.search.margin;
       item["ties"] = it.selection.search.ties;
+      const select::PoseRefinement& refinement = it.selection.refinement;
+      if (refinement.tried) {
+        nlohmann::json axes = nlohmann::json::array();
+        for (const select::RefinedAxis& axis : refinement.axes) {
+          axes.push_back({{"mount", axis.mount}, {"axis", kAxisNames[axis.axis]},
+                          {"low", axis.low}, {"high", axis.high}, {"grid", axis.grid},
+                          {"refined", axis.refined}, {"unit", axis.axis < 3 ? "m" : "rad"}});
+        }
+        item["refinement"] = {{"accepted", refinement.accepted},
+                              {"grid_margin", refinement.grid_margin},
+                              {"refined_margin", refinement.refined_margin},
+                              {"evaluations", refinement.evaluations},
+                              {"axes", axes}};
+      }
       item["coverage"] = cli::to_json(it.selection.coverage, false);
     } else {
       item["reason"] = it.selection.infeasible_reason;

@@ -26,6 +26,9 @@ class SelectReport {
                          const std::vector<std::string>& written) const;
 
  private:
+  std::vector<std::string> write_margin_plots(const select::RelaxationIteration& pick,
+                                              const std::string& folder) const;
+
   const select::SelectionSpace& space_;
   const model::Requirements& requirements_;
   const model::RelaxationPolicy& policy_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 #include "cairo_canvas.hpp"
@@ -15,13 +16,14 @@ using render::draw_text;
 using render::set_colour;
 
 constexpr Rgb kFeasible{0.0, 0.55, 0.25};
-constexpr Rgb kInfeasible{0.7, 0.7, 0.7};
 constexpr Rgb kChosen{0.85, 0.1, 0.1};
 
 }  // namespace
 
 std::vector<select::ExploredRig> pareto_front(const std::vector<select::ExploredRig>& explored) {
-  std::vector<select::ExploredRig> sorted = explored;
+  std::vector<select::ExploredRig> sorted;
+  std::copy_if(explored.begin(), explored.end(), std::back_inserter(sorted),
+               [](const select::ExploredRig& rig) { return rig.feasible; });
   std::sort(sorted.begin(), sorted.end(),
             [](const select::ExploredRig& a, const select::ExploredRig& b) {
               return a.cost < b.cost || (a.cost == b.cost && a.mean_complete > b.mean_complete);
@@ -76,16 +78,13 @@ void plot_pareto(const std::vector<select::ExploredRig>& explored, double budget
     draw_text(cairo, "mean SC complete over 360 deg [%]", 0, 0, 14, Anchor::centre);
     cairo_restore(cairo);
 
-    for (const bool feasible : {false, true}) {  // rigs meeting the requirements on top
-      set_colour(cairo, feasible ? kFeasible : kInfeasible, feasible ? 0.8 : 0.5);
-      for (const select::ExploredRig& rig : explored) {
-        if (rig.feasible != feasible) continue;
-        cairo_new_sub_path(cairo);
-        cairo_arc(cairo, x(rig.cost), y(rig.mean_complete), feasible ? 3.5 : 2.5, 0,
-                  2 * std::numbers::pi);
-      }
-      cairo_fill(cairo);
+    set_colour(cairo, kFeasible, 0.8);
+    for (const select::ExploredRig& rig : explored) {
+      if (!rig.feasible) continue;
+      cairo_new_sub_path(cairo);
+      cairo_arc(cairo, x(rig.cost), y(rig.mean_complete), 3.5, 0, 2 * std::numbers::pi);
     }
+    cairo_fill(cairo);
     const std::vector<select::ExploredRig> front = pareto_front(explored);
     set_colour(cairo, kInkColour);
     cairo_set_line_width(cairo, 1.8);
@@ -112,17 +111,14 @@ void plot_pareto(const std::vector<select::ExploredRig>& explored, double budget
                 true);
     }
     // Legend.
-    double ly = bottom - 70;
-    for (const auto& [colour, label] : {std::pair{kFeasible, "meets the requirements"},
-                                        std::pair{kInfeasible, "misses a requirement"}}) {
-      set_colour(cairo, colour);
-      cairo_new_sub_path(cairo);
-      cairo_arc(cairo, right - 210, ly - 5, 4, 0, 2 * std::numbers::pi);
-      cairo_fill(cairo);
-      set_colour(cairo, kInkColour);
-      draw_text(cairo, label, right - 198, ly, 13);
-      ly += 20;
-    }
+    double ly = bottom - 50;
+    set_colour(cairo, kFeasible);
+    cairo_new_sub_path(cairo);
+    cairo_arc(cairo, right - 210, ly - 5, 4, 0, 2 * std::numbers::pi);
+    cairo_fill(cairo);
+    set_colour(cairo, kInkColour);
+    draw_text(cairo, "a rig meeting the requirements", right - 198, ly, 13);
+    ly += 20;
     cairo_set_line_width(cairo, 1.8);
     cairo_move_to(cairo, right - 218, ly - 5);
     cairo_line_to(cairo, right - 202, ly - 5);

@@ -46,7 +46,7 @@ std::vector<BindingRequirement> binding_requirements(const SelectionSpace& space
                                                      const Selection& last, double budget) {
   std::vector<BindingRequirement> all;
   for (const auto& [name, relaxed] : without_each(requirements)) {
-    const Selection selection = select_cheapest(space, relaxed);
+    const Selection selection = select_cheapest(space, relaxed, {}, false);
     all.push_back({name, selection.found, selection.found ? selection.cost.total : 0.0});
   }
   std::vector<BindingRequirement> binding;

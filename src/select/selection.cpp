@@ -6,6 +6,7 @@
 
 #include "rigdesign/geometry/cross_section.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/select/pose_refinement.hpp"
 
 namespace rigdesign::select {
 namespace {
@@ -24,7 +25,8 @@ bool meets_alone(const CatalogOption& option, const SatisficingTargets& targets)
   return true;
 }
 
-// The sectors a robust rig must keep after a failure: the targets' with relaxed thresholds.
+}  // namespace
+
 std::vector<model::SectorRequirement> robust_sectors(const SatisficingTargets& targets) {
   std::vector<model::SectorRequirement> sectors = targets.sectors;
   for (model::SectorRequirement& sector : sectors) {
@@ -37,10 +39,9 @@ std::vector<model::SectorRequirement> robust_sectors(const SatisficingTargets& t
   return sectors;
 }
 
-// Each failure the targets ask the rig to survive, on the exact path.
 std::vector<FailureImpact> failure_impacts(const model::Rig& rig, const SelectionSpace& space,
                                            const SatisficingTargets& targets,
-                                           const metrics::CoverageSettings& exact) {
+                                           const metrics::CoverageSettings& settings) {
   std::vector<FailureImpact> impacts;
   const std::vector<model::SectorRequirement> sectors = robust_sectors(targets);
   const auto impact_without = [&](const std::vector<bool>& failed, std::string failure) {
@@ -50,7 +51,7 @@ std::vector<FailureImpact> failure_impacts(const model::Rig& rig, const Selectio
       if (!failed[i]) rest.mounts.push_back(rig.mounts[i]);
     FailureImpact impact{std::move(failure), {}};
     const metrics::RigCoverage coverage =
-        metrics::compute_coverage(rest, space.library(), sectors, exact);
+        metrics::compute_coverage(rest, space.library(), sectors, settings);
     for (const metrics::SectorCoverage& sector : coverage.sectors)
       if (!sector.pass) impact.broken_sectors.push_back(sector.sector.name);
     if (rest.mounts.empty())
@@ -78,8 +79,6 @@ std::vector<FailureImpact> failure_impacts(const model::Rig& rig, const Selectio
   }
   return impacts;
 }
-
-}  // namespace
 
 SatisficingTargets satisficing_targets(const model::Requirements& requirements) {
   SatisficingTargets targets;
@@ -217,7 +216,8 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
 }
 
 Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
-                          const std::function<void(const SearchProgress&)>& progress) {
+                          const std::function<void(const SearchProgress&)>& progress,
+                          bool refine) {
   const auto start = std::chrono::steady_clock::now();
   Selection selection;
   const model::Catalog& catalog = space.catalog();
@@ -262,6 +262,13 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
     if (verified) {
       selection.found = true;
       selection.cost = selection.search.cost;
+      selection.grid_rig = selection.rig;
+      if (refine) selection.refinement = refine_poses(space, selection, targets);
+      if (selection.refinement.accepted) {
+        selection.rig = selection.refinement.rig;
+        selection.coverage = selection.refinement.coverage;
+        if (!selection.refinement.failures.empty()) selection.failures = selection.refinement.failures;
+      }
       break;
     }
     excluded.push_back(selection.search.choice);

@@ -1,6 +1,7 @@
 #pragma once
 /// What `select` chooses from (paper 1, section 2, Fig. 1): candidate sensor modes, mounting
 /// slots with the sensors each accepts, transfer hardware and CPUs with their prices.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,16 @@ struct CandidateSensor {
 struct SlotPose {
   Pose3 T_robot_sensor = Pose3::Identity();
   std::string label;
+  /// x, y, z [m], roll, pitch, yaw [rad] (REP-103 fixed axes) of a pose range's pose.
+  std::array<double, 6> values{};
+};
+
+/// One axis a slot's pose range varies (issue 15), SI: low, low + step, ..., high.
+struct PoseAxisRange {
+  int axis = 0;  ///< 0-2: x, y, z; 3-5: roll, pitch, yaw
+  double low = 0.0;
+  double high = 0.0;
+  double step = 0.0;
 };
 
 struct MountingSlot {
@@ -33,6 +44,7 @@ struct MountingSlot {
   /// that would put the sensor inside the body left out).
   std::vector<SlotPose> poses;
   int poses_inside_body = 0;  ///< range values left out: the sensor would be inside the body
+  std::vector<PoseAxisRange> ranges;  ///< the axes its pose range varies; none for a fixed pose
   std::vector<std::string> allowed_sensors;
   std::optional<double> distance_of_interest;  ///< [m] as a mount's
   SourceLocation where;

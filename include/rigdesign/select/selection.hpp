@@ -2,6 +2,7 @@
 /// `select`'s main step (paper 1, section 2, Fig. 1): from application requirements to
 /// satisficing metrics, and the cheapest rig of a catalog that meets them, found on the
 /// raster path and verified on the exact path.
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -49,6 +50,7 @@ class SelectionSpace {
   const model::Catalog& catalog() const { return *catalog_; }
   const model::SensorLibrary& library() const { return *library_; }
   const metrics::CoverageSettings& settings() const { return settings_; }
+  const std::vector<geometry::RasterGrid>& grids() const { return grids_; }
   std::size_t option_count() const;
   double angle(std::size_t index) const;
 
@@ -75,6 +77,29 @@ struct FailureImpact {
   std::vector<std::string> broken_sectors;
 };
 
+/// One axis moved by the refinement, SI (m, rad).
+struct RefinedAxis {
+  std::string mount;
+  int axis = 0;  ///< model::PoseAxisRange::axis
+  double low = 0.0;
+  double high = 0.0;
+  double grid = 0.0;     ///< the search's value
+  double refined = 0.0;  ///< the refinement's value
+};
+
+struct PoseRefinement {
+  bool tried = false;     ///< some chosen slot has a pose range
+  bool accepted = false;  ///< the exact path confirms the refined rig
+  double grid_margin = 0.0;     ///< smallest raster margin of the grid optimum [share]
+  double refined_margin = 0.0;  ///< of the refined poses
+  int evaluations = 0;          ///< rigs rasterised by the compass search
+  std::vector<RefinedAxis> axes;
+  std::vector<std::array<double, 6>> values;  ///< per mount: its pose values after refinement
+  model::Rig rig;  ///< the refined rig
+  metrics::RigCoverage coverage;        ///< its exact path
+  std::vector<FailureImpact> failures;  ///< with robustness: its failures on the exact path
+};
+
 struct Selection {
   bool found = false;
   std::string infeasible_reason;  ///< when nothing can meet the requirements
@@ -89,12 +114,26 @@ struct Selection {
   /// cost without robustness (raster path), the price of robustness being the difference.
   std::vector<FailureImpact> failures;
   std::optional<double> cost_without_robustness;
+  /// Continuous refinement of the chosen poses (pose_refinement.hpp); when accepted, `rig`,
+  /// `coverage` and `failures` are the refined rig's and `grid_rig` the search's.
+  PoseRefinement refinement;
+  model::Rig grid_rig;
 };
+
+/// The sectors a robust rig must keep after a failure: the targets' with relaxed thresholds.
+std::vector<model::SectorRequirement> robust_sectors(const SatisficingTargets& targets);
+
+/// Each failure the targets ask `rig` to survive, on the path `settings` says.
+std::vector<FailureImpact> failure_impacts(const model::Rig& rig, const SelectionSpace& space,
+                                           const SatisficingTargets& targets,
+                                           const metrics::CoverageSettings& settings);
 
 /// The cheapest rig meeting `requirements`, proven optimal on the raster path and verified
 /// on the exact path (a raster winner the exact path rejects is excluded and the search
 /// runs again).
+/// `refine`: refine the chosen poses continuously (off for the binding-requirement probes).
 Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
-                          const std::function<void(const SearchProgress&)>& progress = {});
+                          const std::function<void(const SearchProgress&)>& progress = {},
+                          bool refine = true);
 
 }  // namespace rigdesign::select

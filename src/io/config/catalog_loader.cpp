@@ -150,7 +150,8 @@ model::Catalog load_catalog(const std::string& path) {
     slot.id = reader.text("id", Need::required, "a slot id").value_or("");
     if (auto pose = reader.map("pose", Need::required,
                                "a map with xyz and rpy_deg (numbers or ranges), or urdf_link")) {
-      slot.poses = keep_outside_body(io::read_pose_set(*pose, urdf), catalog.body, slot, *pose);
+      slot.poses = keep_outside_body(io::read_pose_set(*pose, urdf, slot.ranges), catalog.body,
+                                     slot, *pose);
     }
     slot.allowed_sensors = read_names(reader, "allows", "a non-empty list of candidate sensor ids");
     if (reader.has("distance_of_interest")) {

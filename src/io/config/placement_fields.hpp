@@ -36,7 +36,8 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot);
 /// six numbers, `{min: 0, max: 40, step: 5}`: every combination of their values, in order
 /// (x, y, z, roll, pitch, yaw; the last varying fastest). Errors at the range for min > max,
 /// a step <= 0, a step that does not divide max - min, or more than kMaxSlotPoses poses.
-std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<RobotLinks>& robot);
+std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<RobotLinks>& robot,
+                                           std::vector<model::PoseAxisRange>& ranges);
 
 /// Most poses one slot may offer: each costs a raster per angle in memory (about 0.2 MB).
 inline constexpr std::size_t kMaxSlotPoses = 400;

@@ -72,7 +72,8 @@ bool holds_range(const YAML::Node& list) {
 
 }  // namespace
 
-std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<RobotLinks>& robot) {
+std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<RobotLinks>& robot,
+                                           std::vector<model::PoseAxisRange>& ranges) {
   const YAML::Node xyz = pose.node("xyz");
   const YAML::Node rpy = pose.node("rpy_deg");
   if (!holds_range(xyz) && !holds_range(rpy)) return {{read_pose(pose, robot), ""}};
@@ -110,6 +111,14 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
                  "at most " + std::to_string(kMaxSlotPoses) + " (coarser steps, or more slots)");
     return {{model::Pose3::Identity(), ""}};
   }
+  // Angles in radians from here on (SI in code).
+  const auto si = [](int axis, double value) { return axis < 3 ? value : model::deg_to_rad(value); };
+  for (int i = 0; i < 6; ++i) {
+    if (!axes[i].varies) continue;
+    const std::vector<double>& values = axes[i].values;
+    ranges.push_back({i, si(i, values.front()), si(i, values.back()),
+                      si(i, values[1]) - si(i, values[0])});
+  }
   std::vector<model::SlotPose> poses;
   std::vector<std::size_t> index(6, 0);
   for (std::size_t n = 0; n < count; ++n) {
@@ -122,11 +131,11 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
                  model::format_number(v[i], 6) + (i < 3 ? " m" : " deg");
       }
     }
-    poses.push_back({model::pose_from_xyz_rpy(model::Vec3(v[0], v[1], v[2]),
-                                              model::Vec3(model::deg_to_rad(v[3]),
-                                                          model::deg_to_rad(v[4]),
-                                                          model::deg_to_rad(v[5]))),
-                     label});
+    std::array<double, 6> values{};
+    for (int i = 0; i < 6; ++i) values[i] = si(i, v[i]);
+    poses.push_back({model::pose_from_xyz_rpy(model::Vec3(values[0], values[1], values[2]),
+                                              model::Vec3(values[3], values[4], values[5])),
+                     label, values});
     for (int i = 5; i >= 0; --i) {  // the last axis varies fastest
       if (++index[i] < axes[i].values.size()) break;
       index[i] = 0;
