@@ -143,9 +143,9 @@ void SelectReport::print_iteration(const select::RelaxationIteration& iteration,
     }
     if (selection.search.ties > 1) {
       out << "      " << selection.search.ties
-          << " rigs of this cost meet the requirements: chose the one with the largest smallest "
-             "margin to the sector thresholds, "
-          << model::format_number(100 * selection.search.margin, 3) << " points\n";
+          << " rigs of this cost meet the requirements: chose the one with the largest margins "
+             "to the sector thresholds, compared smallest first (smallest "
+          << model::format_number(100 * selection.search.margin, 3) << " points)\n";
     }
     if (selection.refinement.tried)
       out << "      refined poses: " << describe(selection.refinement) << '\n';
@@ -235,9 +235,15 @@ std::vector<std::string> SelectReport::write_margin_plots(const select::Relaxati
     render::MarginCurve curve;
     curve.axis_label = selection.rig.mounts[m].id + " pitch [deg] (positive looks down)";
     constexpr double kDeg = 180 / 3.141592653589793;
-    for (const auto& [pitch, margin] : select::margin_sweep(space_, pick.targets, selection.rig,
-                                                            m, values, *range, kSamples))
-      curve.samples.emplace_back(pitch * kDeg, 100 * margin);
+    for (const model::SectorRequirement& sector : pick.targets.sectors)
+      curve.sectors.push_back({sector.name, {}});
+    for (const select::MarginSample& sample :
+         select::margin_sweep(space_, pick.targets, selection.rig, m, values, *range, kSamples)) {
+      curve.at.push_back(sample.at * kDeg);
+      curve.smallest.push_back(100 * sample.smallest);
+      for (std::size_t s = 0; s < sample.sectors.size(); ++s)
+        curve.sectors[s].second.push_back(100 * sample.sectors[s]);
+    }
     const long steps = std::lround((range->high - range->low) / range->step);
     for (long i = 0; i <= steps; ++i)
       curve.grid.push_back((range->low + static_cast<double>(i) * range->step) * kDeg);

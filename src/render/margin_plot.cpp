@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 #include "cairo_canvas.hpp"
@@ -14,6 +15,12 @@ constexpr Rgb kCurve{0.1, 0.35, 0.7};
 constexpr Rgb kGridChoice{0.0, 0.55, 0.25};
 constexpr Rgb kRefined{0.85, 0.1, 0.1};
 constexpr Rgb kMiss{0.95, 0.85, 0.85};
+
+Rgb sector_colour(std::size_t index) {
+  constexpr Rgb kColours[] = {{0.55, 0.35, 0.0}, {0.45, 0.2, 0.6}, {0.0, 0.5, 0.5},
+                              {0.6, 0.6, 0.1}, {0.3, 0.3, 0.3}};
+  return kColours[index % std::size(kColours)];
+}
 
 // A round tick spacing giving about five ticks over `span`.
 double tick_step(double span) {
@@ -30,11 +37,24 @@ void plot_margin_curve(const MarginCurve& curve, const std::string& title,
     const double left = 80, top = 60, right = width - 30.0, bottom = height - 70.0;
     double x_low = curve.grid_choice, x_high = curve.grid_choice;
     double y_low = 0.0, y_high = 0.0;
-    for (const auto& [x, margin] : curve.samples) {
+    const auto varies = [](const std::vector<double>& values) {
+      return !values.empty() && *std::max_element(values.begin(), values.end()) -
+                                        *std::min_element(values.begin(), values.end()) > 1e-9;
+    };
+    for (const double x : curve.at) {
       x_low = std::min(x_low, x);
       x_high = std::max(x_high, x);
+    }
+    for (const double margin : curve.smallest) {
       y_low = std::min(y_low, margin);
       y_high = std::max(y_high, margin);
+    }
+    for (const auto& [name, margins] : curve.sectors) {
+      if (!varies(margins)) continue;
+      for (const double margin : margins) {
+        y_low = std::min(y_low, margin);
+        y_high = std::max(y_high, margin);
+      }
     }
     for (const double g : curve.grid) {
       x_low = std::min(x_low, g);
@@ -80,13 +100,30 @@ void plot_margin_curve(const MarginCurve& curve, const std::string& title,
               Anchor::centre);
     cairo_restore(cairo);
 
-    set_colour(cairo, kCurve);
-    cairo_set_line_width(cairo, 2);
-    for (std::size_t i = 0; i < curve.samples.size(); ++i) {
-      const auto& [x, margin] = curve.samples[i];
-      i == 0 ? cairo_move_to(cairo, px(x), py(margin)) : cairo_line_to(cairo, px(x), py(margin));
+    const auto polyline = [&](const std::vector<double>& margins) {
+      for (std::size_t i = 0; i < margins.size() && i < curve.at.size(); ++i) {
+        i == 0 ? cairo_move_to(cairo, px(curve.at[i]), py(margins[i]))
+               : cairo_line_to(cairo, px(curve.at[i]), py(margins[i]));
+      }
+      cairo_stroke(cairo);
+    };
+    // The sectors this axis changes, thin and named at their right end; the rig's smallest
+    // margin (what the search and the refinement widen) thick on top.
+    for (std::size_t s = 0; s < curve.sectors.size(); ++s) {
+      const auto& [name, margins] = curve.sectors[s];
+      if (!varies(margins)) continue;
+      set_colour(cairo, sector_colour(s));
+      cairo_set_line_width(cairo, 1.3);
+      polyline(margins);
+      draw_text(cairo, "sector " + name, px(curve.at.back()) - 4, py(margins.back()) - 6, 12,
+                Anchor::right);
     }
-    cairo_stroke(cairo);
+    set_colour(cairo, kCurve);
+    cairo_set_line_width(cairo, 2.5);
+    polyline(curve.smallest);
+    if (!curve.at.empty())
+      draw_text(cairo, "smallest (the rig)", px(curve.at.front()) + 4,
+                py(curve.smallest.front()) - 8, 12, Anchor::left, true);
     // The grid the search chose from, as ticks on the axis.
     set_colour(cairo, kInkColour);
     for (const double g : curve.grid) {

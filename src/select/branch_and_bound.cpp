@@ -17,6 +17,7 @@ constexpr long kProgressEvery = 4096;
 // Covered cells (floor columns) needed at one angle of a sector: the smallest count whose
 // share meets the threshold exactly as meets() decides it on a share.
 struct Need {
+  std::size_t sector = 0;
   std::size_t angle = 0;
   std::int64_t cells = 0;
   std::int64_t floor = 0;
@@ -38,10 +39,11 @@ std::int64_t smallest_count_meeting(double threshold, std::int64_t total) {
 
 std::vector<Need> needs_of(const std::vector<SearchSector>& sectors, const ClassCoverage& classes) {
   std::vector<Need> needs;
-  for (const SearchSector& sector : sectors) {
+  for (std::size_t s = 0; s < sectors.size(); ++s) {
+    const SearchSector& sector = sectors[s];
     for (const int a : sector.angles) {
       const CellCounts total = classes.total(static_cast<std::size_t>(a));
-      needs.push_back({static_cast<std::size_t>(a), smallest_count_meeting(sector.min_complete, total.cells),
+      needs.push_back({s, static_cast<std::size_t>(a), smallest_count_meeting(sector.min_complete, total.cells),
                        smallest_count_meeting(sector.min_floor, total.floor), sector.min_complete,
                        sector.min_floor});
     }
@@ -218,18 +220,21 @@ class BranchAndBound {
     return true;
   }
 
-  double smallest_margin() const {
-    double margin = kInfinity;
+  // Each sector's smallest margin over its angles, smallest first.
+  std::vector<double> sector_margins() const {
+    std::vector<double> margins(problem_.sectors.size(), kInfinity);
     for (const Need& need : needs_) {
       const CellCounts total = classes_.total(need.angle);
       const CellCounts& have = counts_[need.angle];
-      margin = std::min({margin,
-                         static_cast<double>(have.cells) / static_cast<double>(total.cells) -
-                             need.min_complete,
-                         static_cast<double>(have.floor) / static_cast<double>(total.floor) -
-                             need.min_floor});
+      margins[need.sector] =
+          std::min({margins[need.sector],
+                    static_cast<double>(have.cells) / static_cast<double>(total.cells) -
+                        need.min_complete,
+                    static_cast<double>(have.floor) / static_cast<double>(total.floor) -
+                        need.min_floor});
     }
-    return margin;
+    std::sort(margins.begin(), margins.end());
+    return margins;
   }
 
   // SC complete averaged over every angle of the problem (the Pareto plot's axis).
@@ -252,12 +257,13 @@ class BranchAndBound {
         std::find(excluded_.begin(), excluded_.end(), choice_) == excluded_.end() && survives();
     if (!feasible) return false;
     result_.explored.push_back({cost, mean_complete(), true});
-    const double margin = smallest_margin();
-    if (improves(result_, cost, margin)) {
+    std::vector<double> margins = sector_margins();
+    if (improves(result_, cost, margins)) {
       result_.found = true;
       result_.cost = rig_cost(load, problem_.transfer, problem_.cpus);
       result_.choice = choice_;
-      result_.margin = margin;
+      result_.margin = smallest_of(margins);
+      result_.margins = std::move(margins);
     }
     return true;
   }

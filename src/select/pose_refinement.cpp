@@ -139,6 +139,13 @@ std::vector<double> RasterMargins::margins_with(std::size_t mount, const model::
 
 std::vector<double> RasterMargins::margins() { return state_->margins(nullptr, 0); }
 
+std::vector<double> RasterMargins::sector_margins_with(std::size_t mount, const model::Pose3& pose) {
+  const std::vector<geometry::SectionRaster> moved = state_->rasterise(mount, pose);
+  std::vector<double> out;
+  state_->margins_of(state_->sectors, [](std::size_t) { return true; }, &moved, mount, out);
+  return out;
+}
+
 namespace {
 
 double smallest(const std::vector<double>& margins) {
@@ -168,20 +175,20 @@ model::Pose3 pose_from_values(const std::array<double, 6>& values) {
                                   model::Vec3(values[3], values[4], values[5]));
 }
 
-std::vector<std::pair<double, double>> margin_sweep(const SelectionSpace& space,
-                                                    const SatisficingTargets& targets,
-                                                    const model::Rig& rig, std::size_t mount,
-                                                    const std::array<double, 6>& values,
-                                                    const model::PoseAxisRange& range, int samples) {
+std::vector<MarginSample> margin_sweep(const SelectionSpace& space,
+                                       const SatisficingTargets& targets, const model::Rig& rig,
+                                       std::size_t mount, const std::array<double, 6>& values,
+                                       const model::PoseAxisRange& range, int samples) {
   RasterMargins margins(space, targets, rig);
-  std::vector<std::pair<double, double>> curve;
+  std::vector<MarginSample> curve;
   for (int i = 0; i < samples; ++i) {
     std::array<double, 6> at = values;
     at[range.axis] = samples < 2 ? range.low
                                  : range.low + (range.high - range.low) * i / (samples - 1);
     const model::Pose3 pose = pose_from_values(at);
     if (margins.inside_body(pose)) continue;
-    curve.emplace_back(at[range.axis], smallest(margins.margins_with(mount, pose)));
+    curve.push_back({at[range.axis], smallest(margins.margins_with(mount, pose)),
+                     margins.sector_margins_with(mount, pose)});
   }
   return curve;
 }

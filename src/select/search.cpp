@@ -11,17 +11,20 @@
 namespace rigdesign::select {
 namespace {
 
-// The smallest margin of `sections` over the sectors' angles (+inf without sectors).
-double smallest_margin(const SearchProblem& problem,
-                       const std::vector<geometry::SectionRaster>& sections) {
-  double margin = std::numeric_limits<double>::infinity();
+// Each sector's smallest margin over its angles, smallest first.
+std::vector<double> sector_margins(const SearchProblem& problem,
+                                   const std::vector<geometry::SectionRaster>& sections) {
+  std::vector<double> margins;
   for (const SearchSector& sector : problem.sectors) {
+    double margin = std::numeric_limits<double>::infinity();
     for (const int a : sector.angles) {
       margin = std::min({margin, sections[a].complete_share() - sector.min_complete,
                          sections[a].floor_share() - sector.min_floor});
     }
+    margins.push_back(margin);
   }
-  return margin;
+  std::sort(margins.begin(), margins.end());
+  return margins;
 }
 
 bool meets_sectors(const std::vector<SearchSector>& sectors,
@@ -103,12 +106,13 @@ SearchResult brute_force(const SearchProblem& problem) {
         }
       }
       feasible = feasible && survives(problem, choice);
-      const double margin = smallest_margin(problem, sections);
-      if (feasible && improves(result, cost.total, margin)) {
+      const std::vector<double> margins = sector_margins(problem, sections);
+      if (feasible && improves(result, cost.total, margins)) {
         result.found = true;
         result.cost = cost;
         result.choice = choice;
-        result.margin = margin;
+        result.margin = smallest_of(margins);
+        result.margins = margins;
       }
     }
     // Next assignment, as a mixed-radix counter where -1 is each slot's first digit.

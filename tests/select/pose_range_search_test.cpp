@@ -84,6 +84,7 @@ TEST_CASE("pose ranges: branch and bound equals brute force on a rasterised cata
       ++found;
       CHECK(bounded.cost.total == exhaustive.cost.total);
       CHECK(bounded.margin == exhaustive.margin);
+      CHECK(bounded.margins == exhaustive.margins);
       CHECK(bounded.nodes < exhaustive.nodes);
     }
     // Any one sensor may fail: the front must keep half its thresholds (two front cameras

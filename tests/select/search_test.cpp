@@ -101,6 +101,7 @@ TEST_CASE("branch and bound finds the brute-force optimum on 200 random small ca
     CHECK(bounded.cost.total == exhaustive.cost.total);
     // Among equal costs both keep the largest smallest margin.
     CHECK(bounded.margin == exhaustive.margin);
+    CHECK(bounded.margins == exhaustive.margins);
     CHECK(bounded.nodes <= exhaustive.nodes * 3);
   }
   CHECK(feasible >= 50);  // enough of them have a solution to compare costs
@@ -209,6 +210,7 @@ TEST_CASE("with robustness, branch and bound still finds the brute-force optimum
     ++feasible;
     CHECK(bounded.cost.total == exhaustive.cost.total);
     CHECK(bounded.margin == exhaustive.margin);
+    CHECK(bounded.margins == exhaustive.margins);
   }
   CHECK(feasible >= 20);
 }

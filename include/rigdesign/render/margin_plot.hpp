@@ -11,7 +11,11 @@ namespace rigdesign::render {
 
 struct MarginCurve {
   std::string axis_label;  ///< "pitch [deg]"
-  std::vector<std::pair<double, double>> samples;  ///< (axis value, margin [points])
+  std::vector<double> at;        ///< axis values swept
+  std::vector<double> smallest;  ///< the rig's smallest margin at each [points]
+  /// Each sector's own margin at each [points], by sector name (the plot draws those the
+  /// sweep changes).
+  std::vector<std::pair<std::string, std::vector<double>>> sectors;
   std::vector<double> grid;  ///< the range's grid values, same unit as the samples
   double grid_choice = 0.0;  ///< the search's value
   double refined = 0.0;      ///< the refinement's value (== grid_choice if it kept the grid)

@@ -32,6 +32,8 @@ class RasterMargins {
   std::vector<double> margins_with(std::size_t mount, const model::Pose3& pose);
   /// Of the rig as it is.
   std::vector<double> margins();
+  /// Each target sector's margin (no failure), in the targets' order, with the mount moved.
+  std::vector<double> sector_margins_with(std::size_t mount, const model::Pose3& pose);
   /// Moves the mount for good.
   void move(std::size_t mount, const model::Pose3& pose);
   /// Whether a sensor origin at `pose` would sit inside the body.
@@ -46,14 +48,21 @@ class RasterMargins {
 PoseRefinement refine_poses(const SelectionSpace& space, const Selection& selection,
                             const SatisficingTargets& targets);
 
-/// The smallest margin of `rig` as axis `range.axis` of mount `mount` sweeps the range's
-/// [low, high] in `samples` even steps, the mount's other axes at `values` and the other
-/// mounts fixed: pairs (axis value [SI], margin [share]). For the margin-against-pitch plot.
-std::vector<std::pair<double, double>> margin_sweep(const SelectionSpace& space,
-                                                    const SatisficingTargets& targets,
-                                                    const model::Rig& rig, std::size_t mount,
-                                                    const std::array<double, 6>& values,
-                                                    const model::PoseAxisRange& range, int samples);
+/// One sample of a sweep: the axis value [SI], the rig's smallest margin and each target
+/// sector's margin (in the targets' order) [share].
+struct MarginSample {
+  double at = 0.0;
+  double smallest = 0.0;
+  std::vector<double> sectors;
+};
+
+/// The margins of `rig` as axis `range.axis` of mount `mount` sweeps the range's [low, high]
+/// in `samples` even steps, the mount's other axes at `values` and the other mounts fixed
+/// (values inside the body skipped). For the margin-against-pitch plot.
+std::vector<MarginSample> margin_sweep(const SelectionSpace& space,
+                                       const SatisficingTargets& targets, const model::Rig& rig,
+                                       std::size_t mount, const std::array<double, 6>& values,
+                                       const model::PoseAxisRange& range, int samples);
 
 /// The pose of a pose-range slot with its axis values replaced by `values` (SI).
 model::Pose3 pose_from_values(const std::array<double, 6>& values);

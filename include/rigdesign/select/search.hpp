@@ -11,8 +11,8 @@
 ///   a superset, surviving whatever it survives) is never tried.
 /// The search runs on ClassCoverage (cells covered by the same options merged), exact to the
 /// cell. Among rigs of equal cost (within kCostTie) the one with the largest smallest margin
-/// to the sector thresholds wins, so a pose range's most robust pose is chosen, not the first
-/// found.
+/// to the sector thresholds wins, then the largest next smallest (leximin over the sectors'
+/// margins), so a pose range's most robust pose is chosen, not the first found.
 #include <functional>
 #include <memory>
 #include <string>
@@ -83,6 +83,7 @@ struct SearchResult {
   /// The chosen rig's smallest margin over the sectors' angles: min(SC - threshold) over SC
   /// complete and floor (raster); +infinity without sectors.
   double margin = 0.0;
+  std::vector<double> margins;  ///< each sector's smallest margin, smallest first (leximin)
   long ties = 0;  ///< feasible rigs found at the optimum's cost (1: no tie to break)
   long nodes = 0;        ///< nodes of the search tree visited
   long evaluations = 0;  ///< rigs whose coverage was evaluated
