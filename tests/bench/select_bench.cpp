@@ -1,8 +1,16 @@
-// Selection on the bundled UR Cleaner catalog (8 slots, 31 slot options) with its initial
-// requirements: branch and bound to proven optimality, and brute force over every
-// assignment of the same problem for the ratio. Counters report nodes, rigs evaluated and
-// the time per evaluated rig. Run through scripts/bench.sh select.
+// Selection with the UR Cleaner's initial requirements: on the bundled catalog (8 slots, 31
+// slot options), branch and bound to proven optimality and brute force over every
+// assignment of the same problem for the ratio; on the bundled pose-range catalog (159
+// options) and on the same with finer steps (303 options, written here), branch and bound
+// alone (brute force would visit 10^13 assignments), for the growth. Counters report
+// nodes, rigs evaluated and the time per evaluated rig. Run through scripts/bench.sh select.
 #include <benchmark/benchmark.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
@@ -13,8 +21,33 @@ namespace {
 
 using namespace rigdesign;
 
+// The pose-range catalog with finer steps on every range: 303 slot options.
+std::string finer_catalog() {
+  std::ifstream in(RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner_pose_ranges.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::pair<const char*, const char*> finer[] = {
+      {"sensor_library: ../../sensors.yaml", "sensor_library: " RIGDESIGN_SOURCE_DIR "/sensors.yaml"},
+      {"{min: 10, max: 40, step: 5}", "{min: 10, max: 40, step: 2}"},
+      {"{min: 0.10, max: 0.30, step: 0.05}", "{min: 0.10, max: 0.30, step: 0.02}"},
+      {"{min: 1.04, max: 1.24, step: 0.1}", "{min: 1.04, max: 1.24, step: 0.04}"},
+      {"{min: 10, max: 30, step: 10}", "{min: 10, max: 30, step: 5}"}};
+  for (const auto& [from, to] : finer) {
+    for (std::size_t at = yaml.find(from); at != std::string::npos; at = yaml.find(from, at)) {
+      yaml.replace(at, std::strlen(from), to);
+      at += std::strlen(to);
+    }
+  }
+  const std::string path = (std::filesystem::temp_directory_path() / "rigdesign_bench_303.yaml").string();
+  std::ofstream(path) << yaml;
+  return path;
+}
+
 struct Bundled {
-  model::Catalog catalog = io::load_catalog(RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner.yaml");
+  explicit Bundled(const std::string& file = RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner.yaml")
+      : catalog(io::load_catalog(file)) {}
+  model::Catalog catalog;
   model::SensorLibrary library = io::load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
   model::Requirements requirements =
       io::load_requirements(RIGDESIGN_SOURCE_DIR "/rigs/requirements/ur_cleaner.yaml");
@@ -26,6 +59,16 @@ struct Bundled {
 
 const Bundled& bundled() {
   static const Bundled instance;
+  return instance;
+}
+
+const Bundled& pose_ranges() {
+  static const Bundled instance(RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner_pose_ranges.yaml");
+  return instance;
+}
+
+const Bundled& finer_pose_ranges() {
+  static const Bundled instance(finer_catalog());
   return instance;
 }
 
@@ -49,6 +92,23 @@ void BM_BranchAndBound(benchmark::State& state) {
   report(state, result);
 }
 
+void BM_BranchAndBoundPoseRanges159(benchmark::State& state) {
+  select::SearchResult result;
+  for (auto _ : state) result = select::branch_and_bound(pose_ranges().problem);
+  report(state, result);
+}
+
+void BM_BranchAndBoundPoseRanges303(benchmark::State& state) {
+  select::SearchResult result;
+  for (auto _ : state) result = select::branch_and_bound(finer_pose_ranges().problem);
+  report(state, result);
+}
+
+void BM_SelectPoseRanges159(benchmark::State& state) {
+  const Bundled& b = pose_ranges();
+  for (auto _ : state) benchmark::DoNotOptimize(select::select_cheapest(b.space, b.requirements));
+}
+
 void BM_BruteForce(benchmark::State& state) {
   select::SearchResult result;
   for (auto _ : state) result = select::brute_force(bundled().problem);
@@ -66,6 +126,21 @@ BENCHMARK(BM_RasteriseCatalog)
     ->ReportAggregatesOnly();
 BENCHMARK(BM_BranchAndBound)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly();
 BENCHMARK(BM_SelectWithExactVerification)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_BranchAndBoundPoseRanges159)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_BranchAndBoundPoseRanges303)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_SelectPoseRanges159)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Repetitions(3)
