@@ -85,6 +85,34 @@ select::SearchProblem random_problem(std::mt19937& rng) {
   return problem;
 }
 
+// A hand-made problem of one angle on a 4 x 2 grid (8 cells, 4 floor columns), a free link
+// and one 100 USD CPU: the tests below fill its slots.
+const geometry::RasterGrid kHandGrid{4, 2};
+
+select::SearchProblem one_angle_problem() {
+  select::SearchProblem problem;
+  problem.grids = {kHandGrid};
+  problem.transfer = {{"onboard", 1e9, 0, {}}};
+  problem.cpus = {{"cpu", 4.0, 100, {}}};
+  return problem;
+}
+
+// An option covering cells [first_cell, end_cell) (column-major) and, if asked, every floor
+// column.
+select::SearchOption hand_option(double price, int first_cell, int end_cell, bool floor,
+                                 double cpu = 0.0) {
+  select::SearchOption o;
+  o.price = price;
+  o.cpu = cpu;
+  geometry::SectionRaster raster(kHandGrid);
+  for (int cell = first_cell; cell < end_cell; ++cell)
+    raster.set_column_run(cell / kHandGrid.rows, cell % kHandGrid.rows, cell % kHandGrid.rows + 1);
+  if (floor)
+    for (int c = 0; c < kHandGrid.columns; ++c) raster.set_floor(c);
+  o.sections = std::make_shared<const std::vector<geometry::SectionRaster>>(1, raster);
+  return o;
+}
+
 }  // namespace
 
 TEST_CASE("branch and bound finds the brute-force optimum on 200 random small catalogs") {
@@ -126,22 +154,8 @@ TEST_CASE("of two rigs of equal cost the one with the larger margin wins") {
   // angle the first covers cells 2..7 of 8 (75 %), the second cells 0..6 (87.5 %); neither
   // holds the other, so neither dominates. Threshold 50 %: both are feasible and cost the
   // same; margins 25 and 37.5 points: the second wins, and the search reports the tie.
-  const geometry::RasterGrid grid{4, 2};
-  select::SearchProblem problem;
-  problem.grids = {grid};
-  problem.transfer = {{"onboard", 1e9, 0, {}}};
-  problem.cpus = {{"cpu", 4.0, 100, {}}};
-  const auto option = [&](int first_cell, int end_cell) {
-    select::SearchOption o;
-    o.price = 200;
-    geometry::SectionRaster raster(grid);
-    for (int cell = first_cell; cell < end_cell; ++cell)
-      raster.set_column_run(cell / grid.rows, cell % grid.rows, cell % grid.rows + 1);
-    for (int c = 0; c < grid.columns; ++c) raster.set_floor(c);
-    o.sections = std::make_shared<const std::vector<geometry::SectionRaster>>(1, raster);
-    return o;
-  };
-  problem.slots = {{option(2, 8), option(0, 7)}};
+  select::SearchProblem problem = one_angle_problem();
+  problem.slots = {{hand_option(200, 2, 8, true), hand_option(200, 0, 7, true)}};
   problem.sectors = {{{0}, 0.5, 0.0}};
   const select::SearchResult bounded = select::branch_and_bound(problem);
   REQUIRE(bounded.found);
@@ -156,28 +170,14 @@ TEST_CASE("of two rigs of equal cost the one with the larger margin wins") {
 TEST_CASE("an option its slot's other option dominates is never tried") {
   // Same price; the second covers cells 0..6, a superset of the first's 0..5: the first can
   // never be the better choice, so it is left out, and the answer is unchanged.
-  const geometry::RasterGrid grid{4, 2};
-  select::SearchProblem problem;
-  problem.grids = {grid};
-  problem.transfer = {{"onboard", 1e9, 0, {}}};
-  problem.cpus = {{"cpu", 4.0, 100, {}}};
-  const auto option = [&](int end_cell, double cpu) {
-    select::SearchOption o;
-    o.price = 200;
-    o.cpu = cpu;
-    geometry::SectionRaster raster(grid);
-    for (int cell = 0; cell < end_cell; ++cell)
-      raster.set_column_run(cell / grid.rows, cell % grid.rows, cell % grid.rows + 1);
-    o.sections = std::make_shared<const std::vector<geometry::SectionRaster>>(1, raster);
-    return o;
-  };
-  problem.slots = {{option(6, 0.5), option(7, 0.5)}};
+  select::SearchProblem problem = one_angle_problem();
+  problem.slots = {{hand_option(200, 0, 6, false, 0.5), hand_option(200, 0, 7, false, 0.5)}};
   problem.sectors = {{{0}, 0.5, 0.0}};
   select::SearchResult bounded = select::branch_and_bound(problem);
   CHECK(bounded.dominated == 1);
   CHECK(bounded.choice == std::vector<int>{1});
   // A superset that loads the CPU more does not dominate: both are tried.
-  problem.slots = {{option(6, 0.5), option(7, 0.6)}};
+  problem.slots = {{hand_option(200, 0, 6, false, 0.5), hand_option(200, 0, 7, false, 0.6)}};
   bounded = select::branch_and_bound(problem);
   CHECK(bounded.dominated == 0);
   CHECK(bounded.ties == 2);
@@ -220,24 +220,8 @@ TEST_CASE("a robust rig needs a second sensor where one suffices otherwise") {
   // slot 1 a 150 USD one covering 5 of 8. Alone the cheap one suffices (100 USD + CPU 100);
   // surviving any single failure at the same threshold needs both: each alone still
   // meets 50 % (75 % and 62.5 %), so the robust optimum is 250 USD + CPU 100.
-  const geometry::RasterGrid grid{4, 2};
-  select::SearchProblem problem;
-  problem.grids = {grid};
-  problem.transfer = {{"onboard", 1e9, 0, {}}};
-  problem.cpus = {{"cpu", 4.0, 100, {}}};
-  const auto option = [&](double price, int covered_cells) {
-    select::SearchOption o;
-    o.price = price;
-    geometry::SectionRaster raster(grid);
-    for (int c = 0; c < grid.columns; ++c) {
-      const int rows = std::min(grid.rows, std::max(0, covered_cells - c * grid.rows));
-      if (rows > 0) raster.set_column_run(c, 0, rows);
-      raster.set_floor(c);
-    }
-    o.sections = std::make_shared<const std::vector<geometry::SectionRaster>>(1, raster);
-    return o;
-  };
-  problem.slots = {{option(100, 6)}, {option(150, 5)}};
+  select::SearchProblem problem = one_angle_problem();
+  problem.slots = {{hand_option(100, 0, 6, true)}, {hand_option(150, 0, 5, true)}};
   problem.sectors = {{{0}, 0.5, 0.0}};
   CHECK(select::branch_and_bound(problem).cost.total == 200);
   problem.robustness.single_failure = true;
