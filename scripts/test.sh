@@ -5,7 +5,10 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh"
 build="$root/build/sanitize"
+# -O1 -g1: the optimisation AddressSanitizer's documentation recommends and line tables for
+# its reports; compiles about 40 % faster than -O2 -g (CI's build was 27 of its 32 minutes).
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIGDESIGN_SANITIZE=ON \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DRIGDESIGN_WERROR=ON -DRIGDESIGN_BUILD_TESTS=ON
 cmake --build "$build" -j"$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
