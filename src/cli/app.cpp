@@ -1,6 +1,7 @@
 #include "app.hpp"
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
 
 #include "command.hpp"
@@ -20,11 +21,24 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   app.require_subcommand(1);
   app.set_version_flag("--version", "rigdesign 0.1.0");
   const std::vector<Command> commands = {
-      setup_metrics(app),   setup_check(app),    setup_coverage(app),
-      setup_select(app),    setup_filter(app),   setup_simulate(app),
-      setup_occupancy(app), setup_localize(app), setup_costmap(app),
-      setup_export(app)};
+      setup_metrics(app), setup_check(app),    setup_coverage(app),  setup_select(app),
+      setup_filter(app),  setup_simulate(app), setup_occupancy(app), setup_localize(app),
+      setup_costmap(app), setup_export(app)};
 
+  // CLI11 would say only that the word "was not expected": name it and list the commands.
+  if (!args.empty() && !args.front().empty() && args.front().front() != '-') {
+    bool known = false;
+    std::string names;
+    for (const Command& command : commands) {
+      known = known || command.app->get_name() == args.front();
+      names += (names.empty() ? "" : ", ") + command.app->get_name();
+    }
+    if (!known) {
+      err << "(command line): command: unknown subcommand '" << args.front()
+          << "' (expected one of " << names << ")\n";
+      return kBadInput;
+    }
+  }
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
   try {
     app.parse(reversed);
@@ -39,6 +53,12 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   } catch (const model::InputError& error) {
     for (const model::Diagnostic& diagnostic : error.diagnostics())
       err << diagnostic.message() << '\n';
+    return kBadInput;
+  } catch (const std::filesystem::filesystem_error& error) {
+    // Commands check their output folders first (io::prepare_output_folder); this is the
+    // backstop for a path that changes under a running command.
+    err << (error.path1().empty() ? std::string("(file system)") : error.path1().string()) << ": "
+        << error.code().message() << '\n';
     return kBadInput;
   }
   return kBadInput;

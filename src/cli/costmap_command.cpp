@@ -15,6 +15,8 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
+#include "number_checks.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
 #include "rigdesign/io/atomic_write.hpp"
@@ -134,7 +136,7 @@ VariantRun run_variant(const CostmapOptions& options, const RigInputs& inputs,
   params.costmap.layer = variant.layer;
   params.costmap.use_hit_layer = variant.hit_layer;
   VariantRun run{variant, {}, folder, 0};
-  std::filesystem::create_directories(folder + "/frames");
+  io::prepare_output_folder(folder + "/frames", "--out");
   const costmap::HeightBand band{params.ground_clearance, inputs.rig.body.height};
   std::vector<model::TriangleMesh> moved;
   costmap::CostGrid last_master;
@@ -293,6 +295,7 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
   const scenarios::ScenarioDefinition scenario =
       scenarios::make_costmap_scenario(options.scenario, options.seed);
   const std::string folder = options.out.empty() ? "costmap/" + options.scenario : options.out;
+  io::prepare_output_folder(folder, "--out");
   out << inputs.rig.name << " in scenario " << scenario.name << " (seed " << options.seed
       << "): " << scenario.description << "\n";
   out << "  " << model::format_number(params.costmap.resolution) << " m cells, "
@@ -344,13 +347,18 @@ Command setup_costmap(CLI::App& parent) {
   app->add_flag("--no-hit-layer", options->no_hit_layer, "Run without paper 1's Hit Layer");
   app->add_flag("--compare", options->compare,
                 "Run both layers with and without the Hit Layer and print a table");
-  app->add_option("--resolution", options->resolution, "Cell side [m] (default 0.05)");
-  app->add_option("--window", options->window, "Rolling window side [m] (default 6)");
-  app->add_option("--speed", options->speed, "Driving speed [m/s] (default 0.4)");
+  app->add_option("--resolution", options->resolution, "Cell side [m] (default 0.05)")
+      ->check(positive_up_to(1.0, "a cell side in (0, 1] m"));
+  app->add_option("--window", options->window, "Rolling window side [m] (default 6)")
+      ->check(positive_up_to(100.0, "a window side in (0, 100] m"));
+  app->add_option("--speed", options->speed, "Driving speed [m/s] (default 0.4)")
+      ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
   app->add_option("--update-rate", options->update_rate,
-                  "Sensing, costmap and planning rate [Hz] (default 5)");
+                  "Sensing, costmap and planning rate [Hz] (default 5)")
+      ->check(positive_up_to(100.0, "a rate in (0, 100] Hz"));
   app->add_option("--frame-every", options->frame_every,
-                  "Write a PNG frame every N updates (default 5, 0: none)");
+                  "Write a PNG frame every N updates (default 5, 0: none)")
+      ->check(finite_in(0, 100000, "0 (none) or an update count"));
   app->add_option("--seed", options->seed, "Seed of the scene and the sensor noise (default 1)");
   app->add_option("--out", options->out, "Output folder (default costmap/<scenario>)");
   return {app, [options](std::ostream& out, std::ostream&) { return run_costmap(*options, out); }};

@@ -10,12 +10,16 @@
 #include "command.hpp"
 #include "coverage_files.hpp"
 #include "inputs.hpp"
+#include "number_checks.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::cli {
 namespace {
+
+constexpr double kFinestCoverageStepDeg = 0.05;
 
 struct CoverageOptions {
   std::string rig;
@@ -29,8 +33,10 @@ struct CoverageOptions {
 };
 
 int run_coverage(const CoverageOptions& options, std::ostream& out) {
-  require_option(options.step_deg > 0 && options.step_deg <= 45, "--step",
-                 "is " + model::format_number(options.step_deg), "degrees in (0, 45]");
+  // 7200 angles at the finest step: the exact path cuts every mount's FOV at each of them.
+  require_option(options.step_deg >= kFinestCoverageStepDeg && options.step_deg <= 45, "--step",
+                 "is " + model::format_number(options.step_deg) + ", out of range",
+                 "degrees in [0.05, 45]");
   for (const double angle : options.angles_deg) {
     require_option(std::isfinite(angle), "--angles", "has a value that is not a number",
                    "comma-separated degrees, e.g. 0,45,90");
@@ -39,10 +45,7 @@ int run_coverage(const CoverageOptions& options, std::ostream& out) {
   const std::string folder = options.out.empty()
                                  ? "coverage/" + std::filesystem::path(options.rig).stem().string()
                                  : options.out;
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  require_option(!error, "--out", "cannot create folder '" + folder + "': " + error.message(),
-                 "a writable folder");
+  io::prepare_output_folder(folder, "--out");
 
   metrics::CoverageSettings settings;
   settings.step = model::deg_to_rad(options.step_deg);
@@ -84,8 +87,10 @@ Command setup_coverage(CLI::App& parent) {
   app->add_option("--out", options->out, "Output folder (default: coverage/<rig file name>)");
   app->add_option("--angles", options->angles_deg,
                   "Azimuths of the cross-section images, degrees (default 0,45,90,180)")
-      ->delimiter(',');
-  app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)");
+      ->delimiter(',')
+      ->check(finite_in(-360, 360, "degrees in [-360, 360]"));
+  app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)")
+      ->check(finite_in(0.05, 45, "degrees in [0.05, 45]"));
   app->add_option("--requirements", options->requirements,
                   "Requirements whose sector thresholds are drawn (default: the rig's)");
   app->add_option("--sensors", options->sensors, "Sensor library");

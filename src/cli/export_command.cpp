@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "deployment_report.hpp"
 #include "inputs.hpp"
+#include "number_checks.hpp"
 #include "rigdesign/deploy/deployment.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
 
@@ -65,12 +66,15 @@ Command setup_export(CLI::App& parent) {
   app->add_option("--cloud-topic", options->deploy.cloud_topic,
                   "Topic of 3D sensors, {mount} is the mount id (default /{mount}/points)");
   app->add_option("--max-speed", options->deploy.max_speed,
-                  "Robot speed [m/s] for the Hit Layer rule (default: the requirements' R5)");
+                  "Robot speed [m/s] for the Hit Layer rule (default: the requirements' R5)")
+      ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
   app->add_option("--min-speed", options->deploy.min_speed,
                   "Slowest driving speed [m/s] the Hit Layer must outlast a blind gap at "
-                  "(default 0.25, nav2 Regulated Pure Pursuit's regulated minimum)");
+                  "(default 0.25, nav2 Regulated Pure Pursuit's regulated minimum)")
+      ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
   app->add_option("--update-rate", options->deploy.update_rate,
-                  "Local costmap update rate [Hz] (default 5, nav2's)");
+                  "Local costmap update rate [Hz] (default 5, nav2's)")
+      ->check(positive_up_to(100.0, "a rate in (0, 100] Hz"));
   return {app, [options](std::ostream& out, std::ostream&) { return run_export(*options, out); }};
 }
 

@@ -13,6 +13,7 @@
 #include "command.hpp"
 #include "inputs.hpp"
 #include "machine_info.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/filters/pipeline_timing.hpp"
 #include "rigdesign/io/atomic_write.hpp"
@@ -139,6 +140,7 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
 int run_filter(const FilterOptions& options, std::ostream& out) {
   require_option(options.repeat >= 1 && options.repeat <= 10000, "--repeat", "is out of range",
                  "1 to 10000 runs");
+  if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
   const model::Pipeline pipeline = pipeline_named(options.pipeline);
   if (!options.scene.empty()) {
     require_option(!options.rig.empty() && options.clouds.empty(), "--scene",
@@ -184,7 +186,13 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
                                              : mount->T_robot_sensor;
       cloud = model::transform_cloud(cloud, T_robot_cloud);
     }
-    const filters::PipelineTiming timing = filters::time_pipeline(pipeline, cloud, options.repeat);
+    const filters::PipelineTiming timing = [&] {
+      try {
+        return filters::time_pipeline(pipeline, cloud, options.repeat);
+      } catch (const model::InputError& error) {  // a stage refused this cloud: name it
+        throw error.in_file(path);
+      }
+    }();
     const double total_median = timing.total.median;
     nlohmann::json stages = nlohmann::json::array();
     TextTable table;
@@ -231,7 +239,7 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
       }
     }
     if (!options.out.empty()) {
-      std::filesystem::create_directories(options.out);
+      io::prepare_output_folder(options.out, "--out");
       const std::string written = options.out + "/" + std::filesystem::path(path).stem().string() +
                                   "_" + pipeline.name + ".pcd";
       io::write_cloud(written, result, io::CloudEncoding::binary);

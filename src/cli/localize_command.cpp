@@ -10,7 +10,9 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "number_checks.hpp"
 #include "localize_report.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/logs/co2_log_reader.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
@@ -27,7 +29,7 @@ namespace {
 void write_plots(const std::string& folder, const std::string& stem,
                  const render::LocalizePlot& plot, nlohmann::json* report, std::ostream& out,
                  bool json) {
-  std::filesystem::create_directories(folder);
+  io::prepare_output_folder(folder, "--out");
   for (const char* extension : {".png", ".svg"}) {
     const std::string file = folder + "/" + stem + extension;
     render::plot_localization(plot, file);
@@ -59,7 +61,7 @@ int run_scenario(const LocalizeOptions& options, std::ostream& out) {
   }
   if (!options.out.empty()) {
     const std::string stem = scenario.name + "_seed" + std::to_string(options.seed);
-    std::filesystem::create_directories(options.out);
+    io::prepare_output_folder(options.out, "--out");
     io::write_file_atomically(options.out + "/" + stem + "_rssi.csv",
                               io::to_rssi_csv(scenario.log));
     io::write_file_atomically(options.out + "/" + stem + "_truth.csv",
@@ -119,6 +121,7 @@ int run_localize(const LocalizeOptions& options, std::ostream& out) {
                  "--log FILE... or --scenario NAME [--seed S]");
   require_option(options.params.path_loss.exponent > 0, "--exponent", "must be positive",
                  "a path-loss exponent, e.g. 2.5");
+  if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
   if (!options.scenario.empty()) {
     if (options.scenario != "all")
       localize::make_scenario(options.scenario, {});  // unknown names fail here, exit 2
@@ -144,44 +147,58 @@ Command setup_localize(CLI::App& parent) {
                   "Synthetic scenario: loop, corner, room, hallway (all with --table)");
   app->add_option("--seed", options->seed, "Seed of the synthetic scenario (default 1)");
   app->add_flag("--table", options->table, "Accuracy table over seeds 1..--seeds, every method");
-  app->add_option("--seeds", options->seeds, "Seeds for --table (default 20)");
+  app->add_option("--seeds", options->seeds, "Seeds for --table (default 20)")
+      ->check(finite_in(1, 10000, "1 to 10000 seeds"));
   app->add_option("--method", options->method,
                   "wls (paper 4), nls (range fit, default), map (object map), all");
   app->add_option("--truth", options->truth, "Emitter ground truth CSV (bssid,x,y,z) for the KPIs");
   app->add_option("--gas-truth", options->gas_truth,
                   "SubT ground-truth JSON (gt_*.json) to score gas detections");
   app->add_option("--rssi-at-1m", options->params.path_loss.rssi_at_1m_dbm,
-                  "Assumed RSSI at 1 m [dBm] (default -45)");
+                  "Assumed RSSI at 1 m [dBm] (default -45)")
+      ->check(finite_in(-120, 30, "a level in [-120, 30] dBm"));
   app->add_option("--exponent", options->params.path_loss.exponent,
-                  "Assumed path-loss exponent (default 2.5)");
+                  "Assumed path-loss exponent (default 2.5)")
+      ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"));
   app->add_option("--cutoff", options->params.path_loss.cutoff_dbm,
-                  "Drop readings below this [dBm] (default -80)");
+                  "Drop readings below this [dBm] (default -80)")
+      ->check(finite_in(-150, 0, "a level in [-150, 0] dBm"));
   app->add_flag("--fit-exponent", options->params.fit.estimate_exponent,
                 "nls also fits the path-loss exponent");
   app->add_option("--huber", options->params.fit.huber_db,
-                  "nls Huber threshold [dB] (0: least squares)");
+                  "nls Huber threshold [dB] (0: least squares)")
+      ->check(finite_in(0, 100, "0 or a threshold in (0, 100] dB"));
   app->add_option("--level-prior", options->params.fit.level_prior_db,
-                  "nls prior sigma on the 1 m level [dB] (default 4; 0: none)");
+                  "nls prior sigma on the 1 m level [dB] (default 4; 0: none)")
+      ->check(finite_in(0, 100, "0 or a sigma in (0, 100] dB"));
   app->add_flag("--cutoff-model", options->params.fit.model_cutoff,
                 "nls: model the cut-off as a truncation (experimental)");
   app->add_flag("!--no-correlation", options->params.fit.correlated_shadowing,
                 "nls: treat chunks as independent (no effective-sample weighting)");
   app->add_option("--acceptable-error", options->kpi.acceptable_error,
-                  "Error counted as a detection, for C [m] (default 5)");
+                  "Error counted as a detection, for C [m] (default 5)")
+      ->check(positive_up_to(1000.0, "a distance in (0, 1000] m"));
   app->add_option("--shadowing", options->scenario_params.shadowing_db,
-                  "Scenario shadowing sigma [dB] (default 6)");
+                  "Scenario shadowing sigma [dB] (default 6)")
+      ->check(finite_in(0, 30, "a sigma in [0, 30] dB"));
   app->add_option("--tx-offset", options->scenario_params.tx_offset_db,
-                  "Scenario phone level minus the assumed one [dB]");
+                  "Scenario phone level minus the assumed one [dB]")
+      ->check(finite_in(-60, 60, "an offset in [-60, 60] dB"));
   app->add_option("--wall-loss", options->scenario_params.wall_attenuation_db,
-                  "Scenario loss per wall [dB] (default 8)");
+                  "Scenario loss per wall [dB] (default 8)")
+      ->check(finite_in(0, 60, "a loss in [0, 60] dB"));
   app->add_option("--time-constant", options->gas.time_constant,
-                  "CO2 sensor time constant for the lag correction [s]");
+                  "CO2 sensor time constant for the lag correction [s]")
+      ->check(finite_in(0, 3600, "a time constant in [0, 3600] s"));
   app->add_option("--sample-period", options->gas.sample_period,
-                  "Seconds per reading of an untimed CO2 log (default 1)");
+                  "Seconds per reading of an untimed CO2 log (default 1)")
+      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
   app->add_option("--threshold", options->gas.fixed_threshold_ppm,
-                  "Fixed CO2 threshold [ppm] (default 1800)");
+                  "Fixed CO2 threshold [ppm] (default 1800)")
+      ->check(positive_up_to(1e6, "a concentration in (0, 1e6] ppm"));
   app->add_option("--mad-factor", options->gas.mad_factor,
-                  "k of the relative CO2 threshold median + k MAD (default 6)");
+                  "k of the relative CO2 threshold median + k MAD (default 6)")
+      ->check(positive_up_to(1000.0, "a factor in (0, 1000]"));
   app->add_flag("--json", options->json, "Print JSON");
   app->add_option("--out", options->out,
                   "Write plots (PNG and SVG) and, for a scenario, its log and truth here");

@@ -14,6 +14,8 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
+#include "number_checks.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -216,6 +218,7 @@ void print_tables(const std::vector<occupancy::OccupancyRun>& runs,
 
 int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
   check_options(options);
+  if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
   const model::Scene scene = sim::make_scene(options.scene, options.seed);
   require_option(!scene.moving.empty(), "--scene",
@@ -270,8 +273,6 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
                               {"missed_clears", runs[i].missed_clears}});
   }
   if (!options.out.empty()) {
-    std::error_code error;
-    std::filesystem::create_directories(options.out, error);
     const std::filesystem::path folder(options.out);
     io::write_file_atomically((folder / "occupancy_frames.csv").string(), frames_csv(runs));
     io::write_file_atomically((folder / "occupancy_summary.json").string(), report.dump(2) + "\n");
@@ -308,12 +309,16 @@ Command setup_occupancy(CLI::App& parent) {
       ->required();
   app->add_option("--scene", options->scene, "Scene with a moving person (default cell)");
   app->add_option("--rate", options->rate,
-                  "Frames per second; every sensor records each frame (default 5)");
-  app->add_option("--duration", options->duration, "Seconds to run (default 96: two laps)");
+                  "Frames per second; every sensor records each frame (default 5)")
+      ->check(positive_up_to(100.0, "a rate in (0, 100] Hz"));
+  app->add_option("--duration", options->duration, "Seconds to run (default 96: two laps)")
+      ->check(positive_up_to(3600.0, "a duration in (0, 3600] s"));
   app->add_option("--moving-until", options->moving_until,
-                  "The robot counts as moving before this time [s], standing after (default 48)");
+                  "The robot counts as moving before this time [s], standing after (default 48)")
+      ->check(finite_in(0, 3600, "a time in [0, 3600] s"));
   app->add_option("--voxels", options->voxels,
-                  "Voxel lengths to sweep [m] (default 0.05 0.1 0.15 0.2)");
+                  "Voxel lengths to sweep [m] (default 0.05 0.1 0.15 0.2)")
+      ->check(finite_in(0.01, 1.0, "voxel lengths in [0.01, 1] m"));
   app->add_option("--persistence", options->persistence,
                   "Persistence settings: none, paper or sweep (default)")
       ->check(CLI::IsMember({"none", "paper", "sweep"}));
@@ -321,7 +326,8 @@ Command setup_occupancy(CLI::App& parent) {
                   "nav2 costmap parameter file: Hit Layer (for --persistence paper), voxel "
                   "column, robot radius, observation source (docs/costmap.md)");
   app->add_option("--camera-stride", options->camera_stride,
-                  "Keep every n-th camera pixel row and column (default 1)");
+                  "Keep every n-th camera pixel row and column (default 1)")
+      ->check(finite_in(1, 64, "a stride from 1 to 64"));
   app->add_option("--robot-radius", options->robot_radius,
                   "Robot radius for the planner grid's truth [m] (default 0.3)");
   app->add_option(

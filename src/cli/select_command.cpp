@@ -15,6 +15,8 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
+#include "number_checks.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
@@ -24,6 +26,8 @@
 
 namespace rigdesign::cli {
 namespace {
+
+constexpr double kFinestSelectStepDeg = 0.25;
 
 struct SelectOptions {
   std::string catalog;
@@ -58,10 +62,13 @@ model::RobustnessRequirement robustness_option(const std::vector<std::string>& v
 }
 
 int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
-  require_option(options.budget > 0, "--budget", "is missing or not positive",
-                 "the budget in US dollars, > 0");
-  require_option(options.step_deg > 0 && options.step_deg <= 45, "--step", "is out of range",
-                 "degrees in (0, 45]");
+  require_option(options.budget > 0 && std::isfinite(options.budget), "--budget",
+                 "is missing, not positive or not finite", "the budget in US dollars, > 0");
+  // Below a quarter degree the rasters of a 300-option catalog outgrow memory (1440 angles
+  // take about 4x the default's 360).
+  require_option(options.step_deg >= kFinestSelectStepDeg && options.step_deg <= 45, "--step",
+                 "is " + model::format_number(options.step_deg) + ", out of range",
+                 "degrees in [0.25, 45]");
   const model::Catalog catalog = io::load_catalog(options.catalog);
   const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
   io::check_catalog_references(catalog, library).throw_if_errors();
@@ -78,6 +85,11 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
     policy = io::load_policy(options.policy);
     select::check_policy(requirements, policy);  // a wrong step fails before any search
   }
+
+  const std::string folder =
+      options.out.empty() ? "selection/" + std::filesystem::path(options.catalog).stem().string()
+                          : options.out;
+  io::prepare_output_folder(folder, "--out");  // before the search, not after it
 
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
   metrics::CoverageSettings settings;
@@ -98,9 +110,6 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
         if (!options.json) report.print_iteration(iteration, out);
       },
       progress);
-  const std::string folder =
-      options.out.empty() ? "selection/" + std::filesystem::path(options.catalog).stem().string()
-                          : options.out;
   const std::vector<std::string> written = report.write_files(outcome, folder, !options.no_renders);
   if (options.json) {
     out << report.to_json(outcome, written).dump(2) << '\n';
@@ -123,7 +132,8 @@ Command setup_select(CLI::App& parent) {
       ->required();
   app->add_option("--requirements", options->requirements, "Application requirements R1-R8")
       ->required();
-  app->add_option("--budget", options->budget, "Budget in US dollars")->required();
+  app->add_option("--budget", options->budget, "Budget in US dollars")
+      ->check(positive_up_to(1e9, "a budget in US dollars, > 0"))->required();
   app->add_option("--policy", options->policy,
                   "Relaxation policy: the order in which requirements may be relaxed");
   app->add_option("--sensors", options->sensors, "Sensor library (default: the catalog's)");
@@ -134,7 +144,8 @@ Command setup_select(CLI::App& parent) {
                   "Failures the rig must survive: n-1 (any one sensor) and/or a lighting "
                   "condition (every sensor not immune to it fails); overrides the requirements' "
                   "robustness");
-  app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)");
+  app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)")
+      ->check(finite_in(0.25, 45, "degrees in [0.25, 45]"));
   app->add_flag("--json", options->json, "Print JSON instead of the trace");
   app->add_flag("--no-renders", options->no_renders, "Skip the chosen rig's coverage pictures");
   return {app, [options](std::ostream& out, std::ostream& err) {

@@ -10,6 +10,7 @@
 #include "coverage_files.hpp"
 #include "deployment_report.hpp"
 #include "json_report.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/yaml_writers.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
@@ -264,15 +265,7 @@ std::vector<std::string> SelectReport::write_files(const select::RelaxationOutco
   const select::RelaxationIteration* pick = chosen(outcome);
   std::vector<std::string> written;
   if (pick == nullptr) return written;
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) {
-    throw model::InputError(
-        model::Diagnostic{{"(command line)", 0, 0},
-                          "--out",
-                          "cannot create folder '" + folder + "': " + error.message(),
-                          "a writable folder"});
-  }
+  io::prepare_output_folder(folder, "--out");
   const std::filesystem::path library =
       std::filesystem::absolute(space_.library().file).lexically_normal();
   const std::string library_from_folder = std::filesystem::absolute(library)
@@ -313,7 +306,7 @@ std::vector<std::string> SelectReport::write_files(const select::RelaxationOutco
   written.insert(written.end(), margins.begin(), margins.end());
   if (renders) {
     const std::string coverage_folder = folder + "/coverage";
-    std::filesystem::create_directories(coverage_folder, error);
+    io::prepare_output_folder(coverage_folder, "--out");
     model::Rig rig = pick->selection.rig;
     rig.file = rig_file;
     const std::vector<std::string> pictures = write_coverage_files(

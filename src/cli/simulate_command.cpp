@@ -10,6 +10,7 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
 
@@ -39,6 +40,7 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
   settings.sensor_frame = options.frame == "sensor";
   const std::string folder =
       options.out.empty() ? "simulation/" + scene_label(options.scene) : options.out;
+  io::prepare_output_folder(folder, "--out");
   const std::string extension = options.format == "ply" ? ".ply" : ".pcd";
   const io::CloudEncoding encoding =
       options.format == "pcd-ascii" ? io::CloudEncoding::ascii : io::CloudEncoding::binary;
@@ -49,7 +51,7 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
     const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
     const std::vector<model::PointCloud> clouds =
         sim::simulate_mount(scene, mount, mode, i, options.frames, options.seed, settings);
-    std::filesystem::create_directories(folder + "/" + mount.id);
+    io::prepare_output_folder(folder + "/" + mount.id, "--out");
     std::size_t points = 0;
     for (std::size_t k = 0; k < clouds.size(); ++k) {
       io::write_cloud(folder + "/" + mount.id + "/frame_" + std::to_string(k) + extension,

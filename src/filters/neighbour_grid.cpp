@@ -23,8 +23,7 @@ float select_smallest(float* values, std::size_t n, std::size_t k) {
 
 }  // namespace
 
-NeighbourGrid::NeighbourGrid(const std::vector<model::Point3f>& points, double cell)
-    : cell_(static_cast<float>(cell)) {
+NeighbourGrid::NeighbourGrid(const std::vector<model::Point3f>& points, double cell) {
   low_ = Eigen::Array3f::Constant(kInfinity);
   Eigen::Array3f high = -low_;
   for (const model::Point3f& p : points) {
@@ -32,12 +31,14 @@ NeighbourGrid::NeighbourGrid(const std::vector<model::Point3f>& points, double c
     high = high.max(p.array());
   }
   if (points.empty()) low_ = high = Eigen::Array3f::Zero();
-  auto extent = [&] { return ((high - low_) / cell_).floor().cast<int>() + 1; };
-  dims_ = extent();
-  while (static_cast<double>(dims_.x()) * dims_.y() * dims_.z() > kMaxCells) {
-    cell_ *= 1.5f;
-    dims_ = extent();
-  }
+  // A cell wider than the cloud is the cloud; one too small to be a float is the smallest
+  // float (then grown below). Cell counts are taken in double so no extent overflows an int.
+  const double widest = std::max(1e-3, static_cast<double>((high - low_).maxCoeff()));
+  cell_ = static_cast<float>(std::clamp(cell, double{std::numeric_limits<float>::min()}, widest));
+  const Eigen::Array3d span = (high - low_).cast<double>();
+  auto cells_per_axis = [&] { return (span / static_cast<double>(cell_)).floor() + 1.0; };
+  while (cells_per_axis().prod() > kMaxCells) cell_ *= 1.5f;
+  dims_ = cells_per_axis().cast<int>();
   const std::size_t cells = static_cast<std::size_t>(dims_.x()) * dims_.y() * dims_.z();
   cell_start_.assign(cells + 1, 0);
   std::vector<Eigen::Array3i> point_cell(points.size());

@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "rigdesign/model/input_error.hpp"
 
@@ -27,15 +26,25 @@ void write_file_atomically(const std::string& path, const std::string& contents)
   const int descriptor = ::mkstemp(temporary.data());
   if (descriptor < 0)
     fail(path, std::string("cannot create a file beside it: ") + std::strerror(errno));
-  ::close(descriptor);
-  {
-    std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
-    stream << contents;
-    stream.flush();
-    if (!stream) {
-      std::remove(temporary.c_str());
-      fail(path, "cannot write");
+  // write(2) rather than a stream, so a full disk is reported as such (ENOSPC), not as a
+  // bare failure; close(2) is checked too, as some file systems report errors only there.
+  const char* next = contents.data();
+  std::size_t left = contents.size();
+  int failure = 0;
+  while (left > 0) {
+    const ssize_t written = ::write(descriptor, next, left);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) {
+      failure = written < 0 ? errno : EIO;
+      break;
     }
+    next += written;
+    left -= static_cast<std::size_t>(written);
+  }
+  if (::close(descriptor) != 0 && failure == 0) failure = errno;
+  if (failure != 0) {
+    ::unlink(temporary.c_str());
+    fail(path, std::string("cannot write: ") + std::strerror(failure));
   }
   std::error_code error;
   fs::permissions(temporary,

@@ -51,9 +51,9 @@ ObjectMapResult object_map(const std::vector<Chunk>& chunks, const GeometryAnaly
   ObjectMap& map = result.map;
   map.cell = params.cell;
   const model::Vec2 extent = high - low;
-  if (extent.x() * extent.y() / (map.cell * map.cell) > params.max_cells) {
-    map.cell = std::sqrt(extent.x() * extent.y() / params.max_cells);
-  }
+  // At most max_cells in all, also when the path is long and thin (one row of cells).
+  map.cell = std::max({map.cell, std::sqrt(extent.x() * extent.y() / params.max_cells),
+                       extent.maxCoeff() / params.max_cells});
   map.origin = low;
   map.width = static_cast<int>(std::ceil(extent.x() / map.cell));
   map.height = static_cast<int>(std::ceil(extent.y() / map.cell));

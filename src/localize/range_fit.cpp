@@ -2,9 +2,10 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
-#include <unordered_map>
 
 #include "db_domain_model.hpp"
 #include "rigdesign/localize/wls_multilateration.hpp"
@@ -35,15 +36,15 @@ std::vector<Observation> observations_of(const std::vector<Chunk>& chunks) {
 }
 
 // Chunks merged into cells of `size`: the grid scores candidates on these, not every chunk.
+// Positions are finite and within the readers' coordinate limit, so cell indices fit.
 std::vector<Chunk> coarsen(const std::vector<Chunk>& chunks, double size) {
-  std::unordered_map<long long, std::size_t> index_of;
+  std::map<std::array<long long, 3>, std::size_t> index_of;
   std::vector<Chunk> merged;
   for (const Chunk& chunk : chunks) {
     const model::Vec3 p = chunk.position();
-    const long long key = (static_cast<long long>(std::floor(p.x() / size)) * 1000003LL +
-                           static_cast<long long>(std::floor(p.y() / size))) *
-                              1000003LL +
-                          static_cast<long long>(std::floor(p.z() / size));
+    const std::array<long long, 3> key = {static_cast<long long>(std::floor(p.x() / size)),
+                                          static_cast<long long>(std::floor(p.y() / size)),
+                                          static_cast<long long>(std::floor(p.z() / size))};
     const auto [it, inserted] = index_of.try_emplace(key, merged.size());
     if (inserted) merged.emplace_back();
     Chunk& cell = merged[it->second];
@@ -188,6 +189,7 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
   // cheaply; the residuals of all chunks at the best one measure the correlation.
   const std::vector<Solution> first =
       distinct(solve_from(starts, coarse, model, params.max_iterations));
+  if (first.empty()) return result;  // no start gave a finite cost: no hypothesis
   std::vector<Observation> weighted = observations;
   model.cutoff = path_loss.cutoff_dbm;
   if (params.correlated_shadowing || params.level_prior_db > 0 || params.model_cutoff) {
@@ -207,6 +209,7 @@ RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalys
   // On a circle the best point's inverse is the twin of an unknown level: search it too.
   if (geometry.circular && model.fit_level) refined.push_back(geometry.inverse(first.front().q));
   std::vector<Solution> solutions = solve_from(refined, weighted, model, params.max_iterations);
+  if (solutions.empty()) return result;  // no start gave a finite cost: no hypothesis
   const Solution best = solutions.front();
   // On collinear chunks the mirror of the best minimum fits exactly as well: make sure it is
   // among the candidates even when no start led there.

@@ -30,6 +30,14 @@ InputError::InputError(std::vector<Diagnostic> diagnostics)
 InputError::InputError(Diagnostic diagnostic)
     : InputError(std::vector<Diagnostic>{std::move(diagnostic)}) {}
 
+InputError InputError::in_file(const std::string& file) const {
+  std::vector<Diagnostic> located = diagnostics_;
+  for (Diagnostic& diagnostic : located) {
+    if (diagnostic.where.file.empty()) diagnostic.where = {file, 0, 0};
+  }
+  return InputError(std::move(located));
+}
+
 void Diagnostics::error(SourceLocation where, std::string field, std::string problem,
                         std::string expected) {
   items_.push_back({std::move(where), std::move(field), std::move(problem), std::move(expected),

@@ -133,6 +133,19 @@ TEST_CASE("statistical outlier removal: duplicates, far loners and fewer points 
     CHECK(filters::statistical_outlier_inliers(cloud_of(points), params) ==
           brute_force_inliers(points, 10));
   }
+  // Issue 16: cells no grid can hold (a length_error, then undefined casts) and a loner at the
+  // readers' coordinate limit change the speed, never the answer.
+  for (const double cell : {1e-30, 1e-300, 1e30, 1e300}) {
+    model::StatisticalOutlierParams params;
+    params.cell = cell;
+    CHECK(filters::statistical_outlier_inliers(cloud_of(points), params) ==
+          brute_force_inliers(points, 10));
+  }
+  std::vector<model::Point3f> with_far_loner = points;
+  with_far_loner.emplace_back(1e8f, -1e8f, 1e8f);
+  const std::vector<std::uint32_t> kept = filters::statistical_outlier_inliers(cloud_of(with_far_loner));
+  CHECK(kept == brute_force_inliers(with_far_loner, 10));
+  CHECK(kept.back() != with_far_loner.size() - 1);  // the loner goes
   const std::vector<model::Point3f> few = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}, {9, 9, 9}};
   CHECK(filters::statistical_outlier_inliers(cloud_of(few)) ==
         brute_force_inliers(few, 10));  // k > n - 1

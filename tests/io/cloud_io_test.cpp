@@ -26,7 +26,8 @@ model::PointCloud small_cloud() {
   cloud.points = {{0.1f, -0.2f, 0.3f},
                   {1.0f / 3.0f, 2.0f / 3.0f, -1.0e-7f},
                   {123456.789f, -9.87654e-3f, 42.0f},
-                  {3.4e38f, -1.17549435e-38f, 0.0f}};
+                  // the largest magnitude read_cloud accepts, the smallest normal float
+                  {-1.0e8f, -1.17549435e-38f, 0.0f}};
   cloud.origin = {1.5f, -2.25f, 0.125f};
   cloud.orientation = Eigen::Quaternionf(0.9f, 0.1f, -0.3f, 0.2f).normalized();
   return cloud;
@@ -105,6 +106,31 @@ TEST_CASE("clouds survive a round trip through every format and encoding") {
     CHECK(read.origin == original.origin);
     CHECK(read.orientation.coeffs().isApprox(original.orientation.coeffs(), 1e-6f));
   }
+}
+
+TEST_CASE("a point beyond 1e8 m is refused with the file and its index, never filtered") {
+  // Issue 16: one point at x = 3e19 crashed the outlier filter's neighbour grid.
+  TempFolder folder;
+  model::PointCloud cloud = small_cloud();
+  cloud.points[2].x() = 3e19f;
+  for (const char* name : {"far.pcd", "far.ply"}) {
+    for (const io::CloudEncoding encoding : {io::CloudEncoding::ascii, io::CloudEncoding::binary}) {
+      const std::string path = folder.path() + "/" + name;
+      io::write_cloud(path, cloud, encoding);
+      try {
+        io::read_cloud(path);
+        FAIL("read_cloud accepted a point at 3e19 m");
+      } catch (const model::InputError& error) {
+        const std::string message = error.diagnostics().front().message();
+        CHECK(message.find(path + ": point 2: lies at (3e+19,") == 0);
+        CHECK(message.find("beyond +-1e+08 m") != std::string::npos);
+      }
+    }
+  }
+  // Just inside the limit is a cloud like any other.
+  cloud.points[2].x() = -1e8f;
+  io::write_cloud(folder.path() + "/near.pcd", cloud, io::CloudEncoding::binary);
+  CHECK(io::read_cloud(folder.path() + "/near.pcd").size() == cloud.size());
 }
 
 TEST_CASE("non-finite points are dropped and counted, empty clouds are valid") {

@@ -37,6 +37,9 @@ class InputError : public std::runtime_error {
   explicit InputError(std::vector<Diagnostic> diagnostics);
   explicit InputError(Diagnostic diagnostic);
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+  /// The same findings, those that name no file (an algorithm's refusal of its input)
+  /// pointed at `file`: the CLI knows which input the algorithm was given.
+  InputError in_file(const std::string& file) const;
 
  private:
   std::vector<Diagnostic> diagnostics_;

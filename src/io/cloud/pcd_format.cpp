@@ -168,6 +168,7 @@ model::PointCloud parse_pcd(const std::string& path, std::string_view bytes,
     }
   }
   report.dropped_non_finite = collected.dropped_non_finite;
+  collected.require_in_range(path);
   return std::move(collected).into_cloud(header.origin, header.orientation);
 }
 

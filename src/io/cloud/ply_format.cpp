@@ -119,6 +119,7 @@ model::PointCloud parse_ply(const std::string& path, std::string_view bytes,
     read_binary_body(path, bytes, header, collected);
   }
   report.dropped_non_finite = collected.dropped_non_finite;
+  collected.require_in_range(path);
   return std::move(collected).into_cloud(header.origin, header.orientation);
 }
 

@@ -5,6 +5,9 @@
 #include <cstring>
 #include <limits>
 
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
+
 namespace rigdesign::io {
 namespace {
 
@@ -41,10 +44,26 @@ float read_coordinate(const char* at, CoordinateType type) {
 
 void CollectedPoints::keep_if_finite(const model::Point3f& point) {
   if (point.allFinite()) {
+    if (!first_far_index && point.cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      first_far_index = points.size() + dropped_non_finite;
+      first_far = point;
+    }
     points.push_back(point);
   } else {
     ++dropped_non_finite;
   }
+}
+
+void CollectedPoints::require_in_range(const std::string& path) const {
+  if (!first_far_index) return;
+  const auto coordinate = [](float value) { return model::format_number(value, 6); };
+  throw model::InputError(model::Diagnostic{
+      {path, 0, 0},
+      "point " + std::to_string(*first_far_index),
+      "lies at (" + coordinate(first_far.x()) + ", " + coordinate(first_far.y()) + ", " +
+          coordinate(first_far.z()) + ") m, beyond +-" + model::format_number(kMaxCoordinate) +
+          " m on some axis",
+      "coordinates within +-1e8 m (shift a geo-referenced cloud to a local origin first)"});
 }
 
 float narrow_to_float(double value) {

@@ -5,9 +5,12 @@
 // the stride is the value's own size. Private to io.
 #include <array>
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
+#include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/point_cloud.hpp"
 
 namespace rigdesign::io {
@@ -21,13 +24,21 @@ struct CoordinateColumn {
   CoordinateType type = CoordinateType::float32;
 };
 
+using model::kMaxCoordinate;
+
 /// Finite points and how many were dropped for a NaN or infinite coordinate.
 struct CollectedPoints {
   std::vector<model::Point3f> points;
   std::size_t dropped_non_finite = 0;
+  /// The first finite point beyond model::kMaxCoordinate, by its index in the file.
+  std::optional<std::size_t> first_far_index;
+  model::Point3f first_far;
 
   /// Keeps `point` when all three coordinates are finite, counts it as dropped otherwise.
   void keep_if_finite(const model::Point3f& point);
+
+  /// Throws InputError naming `path` and the first point beyond kMaxCoordinate, if any.
+  void require_in_range(const std::string& path) const;
 
   /// The cloud of the kept points with the file's sensor pose.
   model::PointCloud into_cloud(const model::Point3f& origin,

@@ -8,6 +8,8 @@
 #include <map>
 #include <sstream>
 
+#include "io/file_bytes.hpp"
+#include "io/text_encoding.hpp"
 #include "rigdesign/model/format_number.hpp"
 
 namespace rigdesign::io {
@@ -56,18 +58,10 @@ std::string unknown_key_problem(const std::string& key, const std::vector<std::s
 }  // namespace
 
 YAML::Node load_yaml_file(const std::string& path) {
-  std::ifstream stream(path);
-  if (!stream) {
-    throw model::InputError(
-        model::Diagnostic{{path, 0, 0},
-                          "file",
-                          std::string("cannot be opened: ") + std::strerror(errno),
-                          "a readable YAML file"});
-  }
-  std::stringstream contents;
-  contents << stream.rdbuf();
+  const std::string text = read_file_bytes(path, "a readable YAML file");
+  require_utf8(text, path);
   try {
-    return YAML::Load(contents.str());
+    return YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw model::InputError(model::Diagnostic{{path, e.mark.line + 1, e.mark.column + 1},
                                               "(syntax)",

@@ -90,7 +90,7 @@ localize::Co2Log parse_untimed(const std::vector<Line>& lines, const std::string
 }  // namespace
 
 localize::Co2Log parse_co2_log(const std::string& text, const std::string& file) {
-  const auto lines = csv::content_lines(text);
+  const auto lines = csv::content_lines(text, file);
   if (lines.empty()) {
     throw model::InputError(model::Diagnostic{
         {file, 0, 0},

@@ -6,6 +6,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/file_bytes.hpp"
+#include "io/text_encoding.hpp"
+#include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io::csv {
@@ -23,7 +26,8 @@ Field trimmed(const std::string& line, std::size_t begin, std::size_t end) {
 
 }  // namespace
 
-std::vector<Line> content_lines(const std::string& text) {
+std::vector<Line> content_lines(const std::string& text, const std::string& file) {
+  require_utf8(text, file);
   std::vector<Line> lines;
   std::size_t begin = 0;
   int number = 0;
@@ -82,6 +86,13 @@ double parse_number(const Field& field, const model::SourceLocation& where,
     throw model::InputError(
         model::Diagnostic{where, name, "'" + field.text + "' is not finite", "a finite number"});
   }
+  // Position columns share the clouds' limit, so cell keys and maps built on them stay sized.
+  const bool coordinate = name == "x" || name == "y" || name == "z";
+  if (coordinate && std::abs(value) > model::kMaxCoordinate) {
+    throw model::InputError(model::Diagnostic{
+        where, name, "'" + field.text + "' m lies beyond +-1e8 m",
+        "coordinates within +-1e8 m (shift geo-referenced positions to a local origin)"});
+  }
   return value;
 }
 
@@ -97,13 +108,7 @@ std::size_t require_column(const std::vector<Field>& header, const std::string& 
 }
 
 std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw model::InputError(
-        model::Diagnostic{{path, 0, 0}, "file", "cannot be opened for reading", "a readable file"});
-  std::ostringstream contents;
-  contents << in.rdbuf();
-  return contents.str();
+  return read_file_bytes(path, "a readable text file");
 }
 
 }  // namespace rigdesign::io::csv

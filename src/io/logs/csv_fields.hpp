@@ -20,8 +20,9 @@ struct Line {
   int number = 0;
 };
 
-/// Lines of `text` without blank lines and '#' comments; CR before LF removed.
-std::vector<Line> content_lines(const std::string& text);
+/// Lines of `text` without blank lines and '#' comments; CR before LF removed. Throws
+/// InputError naming `file` when the text is not UTF-8.
+std::vector<Line> content_lines(const std::string& text, const std::string& file);
 
 /// Fields separated by `separator` (',' for CSV; ' ' means runs of spaces or tabs).
 std::vector<Field> split_fields(const std::string& line, char separator);

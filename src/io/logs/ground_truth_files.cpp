@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "io/text_encoding.hpp"
 #include "io/logs/csv_fields.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -22,7 +23,7 @@ model::SourceLocation location_of(const YAML::Node& node, const std::string& fil
 
 std::vector<localize::EmitterTruth> parse_emitter_truth(const std::string& text,
                                                         const std::string& file) {
-  const auto lines = csv::content_lines(text);
+  const auto lines = csv::content_lines(text, file);
   if (lines.empty())
     throw model::InputError(
         model::Diagnostic{{file, 0, 0}, "data", "is empty", std::string("a header ") + kHeader});
@@ -73,6 +74,7 @@ std::string to_emitter_truth_csv(const std::vector<localize::EmitterTruth>& trut
 
 std::vector<localize::Artifact> read_artifacts(const std::string& path) {
   const std::string text = csv::read_text_file(path);
+  require_utf8(text, path);
   YAML::Node root;
   try {
     root = YAML::Load(text);

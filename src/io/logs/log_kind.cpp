@@ -6,7 +6,7 @@
 namespace rigdesign::io {
 
 LogKind log_kind_of(const std::string& text, const std::string& file) {
-  const auto lines = csv::content_lines(text);
+  const auto lines = csv::content_lines(text, file);
   if (lines.empty()) {
     throw model::InputError(model::Diagnostic{
         {file, 0, 0}, "data", "is empty", "an RSSI log (t,x,y,z,bssid,rssi) or a CO2 log"});

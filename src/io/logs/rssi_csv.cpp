@@ -18,7 +18,7 @@ constexpr int kDigits = 10;  // enough to reproduce positions to 0.1 um and RSSI
 }  // namespace
 
 localize::RssiLog parse_rssi_csv(const std::string& text, const std::string& file) {
-  const auto lines = csv::content_lines(text);
+  const auto lines = csv::content_lines(text, file);
   if (lines.empty()) {
     throw model::InputError(model::Diagnostic{
         {file, 0, 0}, "data", "is empty", std::string("a header '") + kHeader + "' and readings"});

@@ -2,9 +2,11 @@
 
 #include <tinyxml2.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "io/text_encoding.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io::xml {
@@ -74,6 +76,11 @@ const std::string* Node::attribute(const std::string& key) const {
 
 Node parse_file(const std::string& path, const model::SourceLocation& named_at,
                 const std::string& field) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throw model::InputError(model::Diagnostic{named_at, field, "names '" + path + "', a folder",
+                                              "an existing URDF or xacro file"});
+  }
   std::ifstream stream(path, std::ios::binary);
   if (!stream) {
     throw model::InputError(model::Diagnostic{named_at, field,
@@ -86,6 +93,7 @@ Node parse_file(const std::string& path, const model::SourceLocation& named_at,
 }
 
 Node parse_text(const std::string& text, const std::string& file) {
+  require_utf8(text, file);
   tinyxml2::XMLDocument document(true, tinyxml2::COLLAPSE_WHITESPACE);
   if (document.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
     const char* detail = document.ErrorStr();

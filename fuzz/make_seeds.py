@@ -1,0 +1,170 @@
+#!/usr/bin/env python3
+"""Writes small synthetic seed inputs for the fuzz targets whose bundled files are too large
+to mutate quickly or do not exist (clouds in every PCD/PLY encoding, tiny meshes, a PGM map,
+logs, pipelines). scripts/fuzz.sh adds the bundled files (rigs/, sensors.yaml, data/) beside
+them. Usage: make_seeds.py OUT_FOLDER"""
+import os
+import struct
+import sys
+
+
+def lzf_compress(data: bytes) -> bytes:
+    """LZF as liblzf writes it: literal runs (control < 32) and back references (length in the
+    control's top 3 bits, 7 = one more length byte), offsets up to 8191."""
+    out = bytearray()
+    literals = bytearray()
+    table = {}
+    i = 0
+
+    def flush():
+        while literals:
+            run = literals[:32]
+            out.append(len(run) - 1)
+            out.extend(run)
+            del literals[:32]
+
+    while i < len(data):
+        key = data[i:i + 3]
+        ref = table.get(key) if len(key) == 3 else None
+        if len(key) == 3:
+            table[key] = i
+        if ref is not None and 0 < i - ref - 1 < 8192:
+            length = 3
+            while i + length < len(data) and length < 264 and data[ref + length] == data[i + length]:
+                length += 1
+            flush()
+            offset = i - ref - 1
+            encoded = length - 2
+            if encoded < 7:
+                out.append((encoded << 5) | (offset >> 8))
+            else:
+                out.append((7 << 5) | (offset >> 8))
+                out.append(encoded - 7)
+            out.append(offset & 0xFF)
+            i += length
+        else:
+            literals.append(data[i])
+            i += 1
+    flush()
+    return bytes(out)
+
+
+POINTS = [(0.5 * i, -0.25 * i, 0.1 * (i % 3), 0x00FF8000 + i) for i in range(12)]
+POINTS[5] = (float("nan"), float("nan"), float("nan"), 0)
+
+
+def pcd_header(data: str, width: int, height: int) -> bytes:
+    return ("# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z rgb\n"
+            "SIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\n"
+            f"WIDTH {width}\nHEIGHT {height}\nVIEWPOINT 0 0 0 1 0 0 0\n"
+            f"POINTS {width * height}\nDATA {data}\n").encode()
+
+
+def pcd_seeds():
+    ascii_body = "".join(f"{x} {y} {z} {c}\n" for x, y, z, c in POINTS).encode()
+    yield "ascii.pcd", pcd_header("ascii", 12, 1) + ascii_body
+    binary = b"".join(struct.pack("<fffI", *p) for p in POINTS)
+    yield "binary_organized.pcd", pcd_header("binary", 4, 3) + binary
+    # binary_compressed stores each field's column in turn, then compresses (PCL's layout).
+    columns = b"".join(
+        b"".join(struct.pack("<f" if k < 3 else "<I", p[k]) for p in POINTS) for k in range(4))
+    packed = lzf_compress(columns)
+    yield "binary_compressed.pcd", (pcd_header("binary_compressed", 12, 1) +
+                                    struct.pack("<II", len(packed), len(columns)) + packed)
+    yield "xyz_double.pcd", (
+        b"VERSION .7\nFIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 1\n"
+        b"POINTS 2\nDATA binary\n" + struct.pack("<6d", 1, 2, 3, -1, -2, -3))
+
+
+def ply_seeds():
+    head = "ply\nformat {} 1.0\ncomment seed\nelement vertex 12\nproperty float x\n" \
+           "property float y\nproperty float z\nproperty uchar intensity\n" \
+           "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    body = "".join(f"{x} {y} {z} {i}\n" for i, (x, y, z, _) in enumerate(POINTS)) + "3 0 1 2\n"
+    yield "ascii.ply", (head.format("ascii") + body).encode()
+    for name, order in (("binary_little_endian", "<"), ("binary_big_endian", ">")):
+        data = b"".join(struct.pack(order + "fffB", x, y, z, i & 0xFF)
+                        for i, (x, y, z, _) in enumerate(POINTS))
+        data += struct.pack(order + "Biii", 3, 0, 1, 2)
+        yield f"{name}.ply", head.format(name).encode() + data
+
+
+TETRA = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+FACES = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+
+
+def mesh_seeds():
+    obj = "".join(f"v {x} {y} {z}\n" for x, y, z in TETRA)
+    obj += "vn 0 0 1\nvt 0 0\n" + "".join(f"f {a+1}/1/1 {b+1}//1 {c+1}\n" for a, b, c in FACES)
+    yield "mesh_obj", "tetra.obj", obj.encode()
+    off = "OFF\n4 4 6\n" + "".join(f"{x} {y} {z}\n" for x, y, z in TETRA)
+    off += "".join(f"3 {a} {b} {c}\n" for a, b, c in FACES)
+    yield "mesh_off", "tetra.off", off.encode()
+    ply = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n")
+    ply += "".join(f"{x} {y} {z}\n" for x, y, z in TETRA)
+    ply += "".join(f"3 {a} {b} {c}\n" for a, b, c in FACES)
+    yield "mesh_ply", "tetra.ply", ply.encode()
+    stl = "solid tetra\n"
+    for face in FACES:
+        stl += "facet normal 0 0 0\nouter loop\n"
+        stl += "".join("vertex {} {} {}\n".format(*TETRA[v]) for v in face)
+        stl += "endloop\nendfacet\n"
+    yield "mesh_stl", "tetra_ascii.stl", (stl + "endsolid tetra\n").encode()
+    binary = b"\0" * 80 + struct.pack("<I", len(FACES))
+    for face in FACES:
+        binary += struct.pack("<3f", 0, 0, 0)
+        binary += b"".join(struct.pack("<3f", *TETRA[v]) for v in face) + b"\0\0"
+    yield "mesh_stl", "tetra_binary.stl", binary
+
+
+def other_seeds():
+    yield "map_pgm", "map.pgm", b"P5\n# seed\n4 3\n255\n" + bytes([254, 0, 205, 254] * 3)
+    yield "rssi_csv", "rssi.csv", (
+        "t,x,y,z,bssid,rssi\n" + "".join(
+            f"{i},{0.1 * i},{-0.05 * i},0.4,02:00:00:00:00:01,{-60 - i}\n" for i in range(10))
+    ).encode()
+    yield "co2_csv", "co2.txt", "".join(
+        f"{50 + 0.3 * i} {0.8 - 0.2 * i} {499 - i}.0\n" for i in range(10)).encode()
+    yield "emitter_truth_csv", "truth.csv", b"bssid,x,y,z\n02:00:00:00:00:01,3.5,-2,1.2\n"
+    yield "artifacts_json", "artifacts.json", (
+        b'{"artifacts": [{"id": 1, "type": "gas", "x": 14.3, "y": 43.5, "z": 2.0},'
+        b' {"id": 2, "type": "vent", "x": -10.4, "y": 53.0, "z": 2.9}]}\n')
+    yield "pipeline_yaml", "pipeline.yaml", (
+        b"name: mine\nstages:\n  - voxel_grid: {leaf: 0.05}\n  - statistical_outlier\n"
+        b"  - floor_removal_2: {ransac: {max_tilt_deg: 10}}\n")
+    yield "filtering_loads_yaml", "loads.yaml", (
+        b'machine: "seed"\npipeline: "P2"\nsensors:\n'
+        b"  - {sensor: azure_kinect_dk, seconds_per_point: 1.0e-8}\n")
+    yield "robot_urdf", "box.urdf", (
+        b'<?xml version="1.0"?>\n<robot name="r">\n <link name="base_footprint"/>\n'
+        b' <link name="base_link"><collision><origin xyz="0 0 0.1"/><geometry>'
+        b'<box size="0.4 0.3 0.2"/></geometry></collision></link>\n'
+        b' <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_link"/>'
+        b'<origin xyz="0 0 0.05" rpy="0 0 1.5708"/></joint>\n</robot>\n')
+    yield "robot_xacro", "box.urdf.xacro", (
+        b'<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        b' <xacro:property name="h" value="0.2"/>\n <xacro:arg name="tall" default="false"/>\n'
+        b' <xacro:macro name="box" params="name z:=0 *origin">\n'
+        b'  <link name="${name}"><collision><xacro:insert_block name="origin"/><geometry>'
+        b'<box size="0.4 0.3 ${h * 2 if z > 0 else h}"/></geometry></collision></link>\n'
+        b' </xacro:macro>\n <link name="base_footprint"/>\n'
+        b' <xacro:box name="base_link" z="1"><origin xyz="0 0 ${radians(90) / pi}"/></xacro:box>\n'
+        b' <xacro:if value="$(arg tall)"><link name="tower"/></xacro:if>\n'
+        b' <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_link"/>'
+        b'</joint>\n</robot>\n')
+
+
+def main():
+    out = sys.argv[1]
+    seeds = [("cloud_pcd",) + s for s in pcd_seeds()] + [("cloud_ply",) + s for s in ply_seeds()]
+    seeds += list(mesh_seeds()) + list(other_seeds())
+    for target, name, data in seeds:
+        os.makedirs(os.path.join(out, target), exist_ok=True)
+        with open(os.path.join(out, target, name), "wb") as f:
+            f.write(data)
+    print(f"make_seeds: {len(seeds)} seeds in {out}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,11 @@
+// Fuzz target: a nav2 costmap parameter file (costmap --params, occupancy --params).
+#include "fuzz_input.hpp"
+#include "rigdesign/io/config/costmap_params_loader.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string path = rigdesign::fuzz::input_file(data, size, "costmap.yaml");
+  return rigdesign::fuzz::expect_input_errors([&] {
+    rigdesign::io::load_costmap_params(path, rigdesign::costmap::CostmapParams{},
+                                       rigdesign::costmap::ObservationSource{});
+  });
+}

@@ -1,0 +1,8 @@
+// Fuzz target: a rig file (rigs/*.yaml).
+#include "fuzz_input.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string path = rigdesign::fuzz::input_file(data, size, "rig.yaml");
+  return rigdesign::fuzz::expect_input_errors([&] { rigdesign::io::load_rig(path); });
+}
