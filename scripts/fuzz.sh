@@ -4,17 +4,22 @@
 #   scripts/fuzz.sh                      # list the targets
 #   scripts/fuzz.sh TARGET [SECONDS]     # one campaign (default 600 s); the corpus grows in
 #                                        # build/fuzz/corpus/TARGET and is kept between runs
-#   scripts/fuzz.sh --all [SECONDS]      # every target for SECONDS each (default 15), two at a
-#                                        # time: what CI runs. Exit 1 on any finding.
+#   scripts/fuzz.sh --all [SECONDS]      # every target of rigdesign's own readers for SECONDS
+#                                        # each (default 15), two at a time: what CI runs.
+#                                        # Exit 1 on any finding.
 # A finding (crash, leak, undefined behaviour, timeout, out-of-memory, an uncaught exception or
 # an error message without a file) leaves its input in build/fuzz/findings/.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build/fuzz"
-targets=(rig_yaml sensors_yaml requirements_yaml catalog_yaml policy_yaml scene_yaml
+own_targets=(rig_yaml sensors_yaml requirements_yaml catalog_yaml policy_yaml scene_yaml
   pipeline_yaml costmap_params_yaml filtering_loads_yaml artifacts_json cloud_pcd cloud_ply
-  mesh_obj mesh_off mesh_ply mesh_stl mesh_dae robot_urdf robot_xacro rssi_csv co2_csv
-  emitter_truth_csv map_pgm)
+  mesh_obj mesh_off mesh_ply robot_urdf robot_xacro rssi_csv co2_csv emitter_truth_csv map_pgm)
+# Formats parsed by assimp: rigdesign only checks what comes out. assimp 5.2's own parsers
+# allocate without bound on some corrupt COLLADA files (docs/fuzzing.md), so these run in
+# campaigns (scripts/fuzz.sh mesh_dae 600), not in CI, where they would fail at random.
+assimp_targets=(mesh_stl mesh_dae)
+targets=("${own_targets[@]}" "${assimp_targets[@]}")
 
 if [ $# -eq 0 ]; then
   printf '%s\n' "${targets[@]}"
@@ -101,7 +106,7 @@ if [ "$1" = "--all" ]; then
   build_fuzzers
   export -f run_target bundled_seeds dictionary_of
   export root build
-  printf '%s\n' "${targets[@]}" |
+  printf '%s\n' "${own_targets[@]}" |
     xargs -P"$(nproc)" -I{} bash -c 'run_target "$1" "$2"' _ {} "$seconds"
   exit $?
 fi

@@ -3,9 +3,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <array>
+#include <cmath>
 
 #include "io/text_encoding.hpp"
 #include "io/logs/csv_fields.hpp"
+#include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 
@@ -82,7 +84,7 @@ std::vector<localize::Artifact> read_artifacts(const std::string& path) {
     throw model::InputError(model::Diagnostic{
         {path, error.mark.line + 1, error.mark.column + 1}, "document", error.msg, "JSON"});
   }
-  const YAML::Node list = root["artifacts"];
+  const YAML::Node list = root.IsMap() ? root["artifacts"] : YAML::Node();
   if (!list || !list.IsSequence()) {
     throw model::InputError(model::Diagnostic{
         {path, 1, 1}, "artifacts", "is missing or not a list", "{\"artifacts\": [...]}"});
@@ -90,24 +92,37 @@ std::vector<localize::Artifact> read_artifacts(const std::string& path) {
   std::vector<localize::Artifact> artifacts;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const YAML::Node item = list[i];
-    const std::string prefix = "artifacts[" + std::to_string(i) + "].";
+    const std::string prefix = "artifacts[" + std::to_string(i) + "]";
+    if (!item.IsMap()) {
+      throw model::InputError(model::Diagnostic{location_of(item, path), prefix, "is not a map",
+                                                "{\"id\": 1, \"type\": ..., \"x\": ..., ...}"});
+    }
     localize::Artifact artifact;
     const auto scalar = [&](const char* key) {
       const YAML::Node node = item[key];
       if (!node || !node.IsScalar()) {
-        throw model::InputError(
-            model::Diagnostic{location_of(item, path), prefix + key, "is missing", "a value"});
+        throw model::InputError(model::Diagnostic{location_of(item, path), prefix + "." + key,
+                                                  "is missing", "a value"});
       }
       return node;
+    };
+    const auto coordinate = [&](const char* key) {
+      const YAML::Node node = scalar(key);
+      const double value = node.as<double>();
+      if (!std::isfinite(value) || std::abs(value) > model::kMaxCoordinate) {
+        throw model::InputError(model::Diagnostic{location_of(node, path), prefix + "." + key,
+                                                  "is " + node.Scalar(),
+                                                  "a coordinate within +-1e8 m"});
+      }
+      return value;
     };
     try {
       artifact.id = scalar("id").as<int>();
       artifact.type = scalar("type").as<std::string>();
-      artifact.position = {scalar("x").as<double>(), scalar("y").as<double>(),
-                           scalar("z").as<double>()};
+      artifact.position = {coordinate("x"), coordinate("y"), coordinate("z")};
     } catch (const YAML::BadConversion& error) {
       throw model::InputError(model::Diagnostic{{path, error.mark.line + 1, error.mark.column + 1},
-                                                prefix + "x/y/z/id",
+                                                prefix + ".x/y/z/id",
                                                 "is not a number",
                                                 "numbers for id, x, y, z"});
     }

@@ -6,6 +6,7 @@
 
 #include <assimp/Importer.hpp>
 #include <filesystem>
+#include <new>
 
 #include "rigdesign/model/input_error.hpp"
 
@@ -27,9 +28,14 @@ model::TriangleMesh load_mesh_with_assimp(const std::string& path,
   // Only triangles matter: drop points and lines, so they never reach the occluder.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                  aiProcess_PreTransformVertices | aiProcess_SortByPType);
+  const aiScene* scene = nullptr;
+  try {
+    scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                        aiProcess_PreTransformVertices | aiProcess_SortByPType);
+  } catch (const std::bad_alloc&) {
+    // Some corrupt COLLADA files make assimp 5.2 reserve for counts the file cannot hold.
+    fail("'" + path + "' cannot be read: assimp ran out of memory on it (a corrupt file?)");
+  }
   if (!scene) fail("'" + path + "' cannot be read: " + importer.GetErrorString());
   model::TriangleMesh mesh;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
