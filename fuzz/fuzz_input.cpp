@@ -75,4 +75,6 @@ void require_clear_message(const model::InputError& error) {
 // assimp 5.2 (Debian 12) leaks a few objects on some malformed STL and COLLADA files; the
 // leaks are inside the library, which rigdesign cannot fix. Only allocations made there are
 // suppressed: leaks in rigdesign's own code are still findings.
-extern "C" const char* __lsan_default_suppressions() { return "leak:libassimp.so\n"; }
+extern "C" const char* __lsan_default_suppressions() {
+  return "leak:libassimp.so\n";
+}

@@ -16,7 +16,9 @@ packages=(
   liburdfdom-dev                         # mount poses from a robot's URDF
   libtinyxml2-dev                        # xacro robot descriptions, parsed with line numbers
   libassimp-dev                          # collision meshes of robot descriptions (STL, COLLADA, OBJ)
-  python3                                # an independent XML parser for the JUnit test
+  python3                                # an independent XML parser for the JUnit test; fuzz seeds
+  clang libclang-rt-14-dev               # libFuzzer and its runtime for the fuzz targets (fuzz/)
+  llvm                                   # llvm-symbolizer: readable stacks in fuzz findings
   libbenchmark-dev                       # Google Benchmark for scripts/bench.sh
   fonts-dejavu-core                      # the font Cairo draws labels with
 )

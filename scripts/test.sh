@@ -14,3 +14,6 @@ cmake --build "$build" -j"$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
+# Every reader of user files under libFuzzer (clang, ASan + UBSan) for a bounded time each:
+# any crash, leak, undefined behaviour, timeout or unclear error fails the run (docs/fuzzing.md).
+"$root/scripts/fuzz.sh" --all 10

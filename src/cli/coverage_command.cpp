@@ -11,7 +11,7 @@
 #include "coverage_files.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
-#include "rigdesign/io/output_folder.hpp"
+#include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
@@ -45,7 +45,7 @@ int run_coverage(const CoverageOptions& options, std::ostream& out) {
   const std::string folder = options.out.empty()
                                  ? "coverage/" + std::filesystem::path(options.rig).stem().string()
                                  : options.out;
-  io::prepare_output_folder(folder, "--out");
+  io::StagedFolder staged(folder, "--out");  // the old pictures or the new set, never a mix
 
   metrics::CoverageSettings settings;
   settings.step = model::deg_to_rad(options.step_deg);
@@ -55,8 +55,9 @@ int run_coverage(const CoverageOptions& options, std::ostream& out) {
   const metrics::RigCoverage coverage =
       metrics::compute_coverage(inputs.rig, inputs.library, sectors, settings);
 
-  const std::vector<std::string> written = write_coverage_files(
-      inputs.rig, inputs.library, coverage, options.angles_deg, folder, !options.no_3d);
+  const std::vector<std::string> written = staged.final_names(write_coverage_files(
+      inputs.rig, inputs.library, coverage, options.angles_deg, staged.path(), !options.no_3d));
+  staged.commit();
 
   out << inputs.rig.name << ": SC complete min "
       << model::format_number(coverage.complete.min * 100, 3) << " %, mean "

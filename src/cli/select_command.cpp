@@ -16,10 +16,10 @@
 #include "command.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
-#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
+#include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/select/relaxation.hpp"
 #include "select_report.hpp"
@@ -55,8 +55,10 @@ model::RobustnessRequirement robustness_option(const std::vector<std::string>& v
                    "unknown failure '" + value + "'",
                    "n-1 (any one sensor) or a lighting condition: " +
                        model::join(model::names_of(model::kLightConditionNames)));
-    if (condition) robust.condition = *condition;
-    else robust.single_failure = true;
+    if (condition)
+      robust.condition = *condition;
+    else
+      robust.single_failure = true;
   }
   return robust;
 }
@@ -73,7 +75,8 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
   io::check_catalog_references(catalog, library).throw_if_errors();
   model::Requirements requirements = io::load_requirements(options.requirements);
-  if (!options.robust.empty()) requirements.robustness = robustness_option(options.robust, requirements);
+  if (!options.robust.empty())
+    requirements.robustness = robustness_option(options.robust, requirements);
   if (requirements.robustness && requirements.robustness->single_failure) {
     require_option(catalog.slots.size() >= 2, "--robust",
                    "n-1 with a catalog of " + std::to_string(catalog.slots.size()) +
@@ -89,7 +92,8 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   const std::string folder =
       options.out.empty() ? "selection/" + std::filesystem::path(options.catalog).stem().string()
                           : options.out;
-  io::prepare_output_folder(folder, "--out");  // before the search, not after it
+  // Checked before the search, not after it; filled only when the run completes.
+  io::StagedFolder staged(folder, "--out");
 
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
   metrics::CoverageSettings settings;
@@ -110,7 +114,9 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
         if (!options.json) report.print_iteration(iteration, out);
       },
       progress);
-  const std::vector<std::string> written = report.write_files(outcome, folder, !options.no_renders);
+  const std::vector<std::string> written =
+      staged.final_names(report.write_files(outcome, staged, !options.no_renders));
+  staged.commit();
   if (options.json) {
     out << report.to_json(outcome, written).dump(2) << '\n';
   } else {
@@ -133,7 +139,8 @@ Command setup_select(CLI::App& parent) {
   app->add_option("--requirements", options->requirements, "Application requirements R1-R8")
       ->required();
   app->add_option("--budget", options->budget, "Budget in US dollars")
-      ->check(positive_up_to(1e9, "a budget in US dollars, > 0"))->required();
+      ->check(positive_up_to(1e9, "a budget in US dollars, > 0"))
+      ->required();
   app->add_option("--policy", options->policy,
                   "Relaxation policy: the order in which requirements may be relaxed");
   app->add_option("--sensors", options->sensors, "Sensor library (default: the catalog's)");

@@ -10,10 +10,11 @@
 #include "coverage_files.hpp"
 #include "deployment_report.hpp"
 #include "json_report.hpp"
-#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/yaml_writers.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/output_folder.hpp"
+#include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/render/margin_plot.hpp"
 #include "rigdesign/render/pareto_plot.hpp"
@@ -77,11 +78,11 @@ std::string describe(const select::PoseRefinement& refinement) {
     moves += (moves.empty() ? "" : ", ") + axis.mount + " " + kAxisNames[axis.axis] + " " +
              axis_value(axis.axis, axis.grid) + " -> " + axis_value(axis.axis, axis.refined);
   }
-  std::string verdict =
-      refinement.accepted ? "confirmed on the exact path: the rig written uses these poses"
-      : refinement.refined_margin > refinement.grid_margin
-          ? "the exact path turned it down: the grid poses stand"
-          : "no move widened the margin: the grid poses stand";
+  std::string verdict = refinement.accepted
+                            ? "confirmed on the exact path: the rig written uses these poses"
+                        : refinement.refined_margin > refinement.grid_margin
+                            ? "the exact path turned it down: the grid poses stand"
+                            : "no move widened the margin: the grid poses stand";
   return moves + "; smallest margin " + model::format_number(100 * refinement.grid_margin, 3) +
          " -> " + model::format_number(100 * refinement.refined_margin, 3) + " points (" +
          std::to_string(refinement.evaluations) + " rigs), " + verdict;
@@ -92,8 +93,8 @@ std::string describe(const select::Selection& selection, const model::Catalog& c
   std::string text;
   for (const select::CatalogOption* option : selection.chosen) {
     const model::MountingSlot& slot = catalog.slots[option->slot];
-    text += (text.empty() ? "" : ", ") + slot.id + ": " + option->sensor->id + "/" +
-            option->mode->id;
+    text +=
+        (text.empty() ? "" : ", ") + slot.id + ": " + option->sensor->id + "/" + option->mode->id;
     const std::string& label = slot.poses[option->pose].label;
     if (!label.empty()) text += " at " + label;
   }
@@ -135,10 +136,12 @@ void SelectReport::print_iteration(const select::RelaxationIteration& iteration,
         << (iteration.within_budget ? "WITHIN BUDGET" : "over budget") << '\n';
     out << "      " << describe(selection, space_.catalog()) << '\n';
     for (const select::FailureImpact& failure : selection.failures) {
-      out << "      survives: " << failure.failure << " (every sector still met on the exact path)\n";
+      out << "      survives: " << failure.failure
+          << " (every sector still met on the exact path)\n";
     }
     if (selection.cost_without_robustness) {
-      out << "      robustness costs " << usd(selection.cost.total - *selection.cost_without_robustness)
+      out << "      robustness costs "
+          << usd(selection.cost.total - *selection.cost_without_robustness)
           << ": the cheapest rig without it costs " << usd(*selection.cost_without_robustness)
           << '\n';
     }
@@ -251,21 +254,22 @@ std::vector<std::string> SelectReport::write_margin_plots(const select::Relaxati
     curve.grid_choice = grid_values[kPitch] * kDeg;
     curve.refined = values[kPitch] * kDeg;
     const std::string path = folder + "/margin_" + selection.rig.mounts[m].id + "_pitch.png";
-    render::plot_margin_curve(
-        curve, selection.rig.mounts[m].id + " (" + selection.chosen[m]->sensor->id +
-                   "): SC margin against pitch, the rest of the rig as chosen",
-        path);
+    render::plot_margin_curve(curve,
+                              selection.rig.mounts[m].id + " (" + selection.chosen[m]->sensor->id +
+                                  "): SC margin against pitch, the rest of the rig as chosen",
+                              path);
     written.push_back(path);
   }
   return written;
 }
 
 std::vector<std::string> SelectReport::write_files(const select::RelaxationOutcome& outcome,
-                                                   const std::string& folder, bool renders) const {
+                                                   const io::StagedFolder& staged,
+                                                   bool renders) const {
+  const std::string& folder = staged.path();
   const select::RelaxationIteration* pick = chosen(outcome);
   std::vector<std::string> written;
   if (pick == nullptr) return written;
-  io::prepare_output_folder(folder, "--out");
   const std::filesystem::path library =
       std::filesystem::absolute(space_.library().file).lexically_normal();
   const std::string library_from_folder = std::filesystem::absolute(library)
@@ -308,14 +312,14 @@ std::vector<std::string> SelectReport::write_files(const select::RelaxationOutco
     const std::string coverage_folder = folder + "/coverage";
     io::prepare_output_folder(coverage_folder, "--out");
     model::Rig rig = pick->selection.rig;
-    rig.file = rig_file;
+    rig.file = staged.final_name(rig_file);
     const std::vector<std::string> pictures = write_coverage_files(
         rig, space_.library(), pick->selection.coverage, {0, 45, 90, 180}, coverage_folder, true);
     written.insert(written.end(), pictures.begin(), pictures.end());
   }
   // What the chosen rig means for its ROS 2 stack, as `rigdesign export` writes it.
   model::Rig rig = pick->selection.rig;
-  rig.file = rig_file;
+  rig.file = staged.final_name(rig_file);
   const deploy::Deployment deployment =
       deploy::plan_deployment(rig, space_.library(), &pick->requirements, {});
   const std::vector<std::string> deployed = io::write_deployment(
@@ -359,9 +363,13 @@ nlohmann::json SelectReport::to_json(const select::RelaxationOutcome& outcome,
       if (refinement.tried) {
         nlohmann::json axes = nlohmann::json::array();
         for (const select::RefinedAxis& axis : refinement.axes) {
-          axes.push_back({{"mount", axis.mount}, {"axis", kAxisNames[axis.axis]},
-                          {"low", axis.low}, {"high", axis.high}, {"grid", axis.grid},
-                          {"refined", axis.refined}, {"unit", axis.axis < 3 ? "m" : "rad"}});
+          axes.push_back({{"mount", axis.mount},
+                          {"axis", kAxisNames[axis.axis]},
+                          {"low", axis.low},
+                          {"high", axis.high},
+                          {"grid", axis.grid},
+                          {"refined", axis.refined},
+                          {"unit", axis.axis < 3 ? "m" : "rad"}});
         }
         item["refinement"] = {{"accepted", refinement.accepted},
                               {"grid_margin", refinement.grid_margin},

@@ -8,6 +8,10 @@
 
 #include "rigdesign/select/relaxation.hpp"
 
+namespace rigdesign::io {
+class StagedFolder;
+}
+
 namespace rigdesign::cli {
 
 class SelectReport {
@@ -19,9 +23,10 @@ class SelectReport {
   void print_iteration(const select::RelaxationIteration& iteration, std::ostream& out);
   void print_summary(const select::RelaxationOutcome& outcome,
                      const std::vector<std::string>& written, std::ostream& out) const;
-  /// Writes the chosen rig, final requirements, Pareto plot and renders; returns the paths.
+  /// Writes the chosen rig, final requirements, Pareto plot and renders into the staging
+  /// folder; returns their paths there (staged.final_names gives where they end up).
   std::vector<std::string> write_files(const select::RelaxationOutcome& outcome,
-                                       const std::string& folder, bool renders) const;
+                                       const io::StagedFolder& staged, bool renders) const;
   nlohmann::json to_json(const select::RelaxationOutcome& outcome,
                          const std::vector<std::string>& written) const;
 

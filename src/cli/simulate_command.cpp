@@ -10,12 +10,17 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
-#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
+#include "rigdesign/io/output_folder.hpp"
+#include "rigdesign/io/staged_folder.hpp"
+#include "rigdesign/model/format_number.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
 
 namespace rigdesign::cli {
 namespace {
+
+// Clouds one `simulate` run may write: a typo in --frames must not fill the disk.
+constexpr double kMaxSimulationBytes = 2e9;
 
 struct SimulateOptions {
   std::string rig;
@@ -40,21 +45,34 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
   settings.sensor_frame = options.frame == "sensor";
   const std::string folder =
       options.out.empty() ? "simulation/" + scene_label(options.scene) : options.out;
-  io::prepare_output_folder(folder, "--out");
   const std::string extension = options.format == "ply" ? ".ply" : ".pcd";
   const io::CloudEncoding encoding =
       options.format == "pcd-ascii" ? io::CloudEncoding::ascii : io::CloudEncoding::binary;
+  // Bounded before any work: at most the datasheet's points per frame, 12 bytes each in
+  // binary (x y z floats), about 30 in ascii.
+  double bytes = 0.0;
+  for (const model::Mount& mount : inputs.rig.mounts) {
+    const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
+    bytes += mode.points_per_frame * options.frames *
+             (encoding == io::CloudEncoding::ascii ? 30.0 : 12.0);
+  }
+  require_option(bytes <= kMaxSimulationBytes, "--frames",
+                 std::to_string(options.frames) + " frames of this rig would write about " +
+                     model::format_number(bytes / 1e9, 3) + " GB",
+                 "at most 2 GB of clouds (they are held in memory per sensor): fewer frames");
+  io::StagedFolder staged(folder, "--out");
   out << inputs.rig.name << " in the " << options.scene << " scene (seed " << options.seed << "), "
-      << options.frames << " frame(s) per sensor, " << options.frame << " frame\n";
+      << options.frames << " frame(s) per sensor, " << options.frame << " frame, at most "
+      << model::format_number(bytes / 1e6, 3) << " MB\n";
   for (std::size_t i = 0; i < inputs.rig.mounts.size(); ++i) {
     const model::Mount& mount = inputs.rig.mounts[i];
     const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
     const std::vector<model::PointCloud> clouds =
         sim::simulate_mount(scene, mount, mode, i, options.frames, options.seed, settings);
-    io::prepare_output_folder(folder + "/" + mount.id, "--out");
+    io::prepare_output_folder(staged.path() + "/" + mount.id, "--out");
     std::size_t points = 0;
     for (std::size_t k = 0; k < clouds.size(); ++k) {
-      io::write_cloud(folder + "/" + mount.id + "/frame_" + std::to_string(k) + extension,
+      io::write_cloud(staged.path() + "/" + mount.id + "/frame_" + std::to_string(k) + extension,
                       clouds[k], encoding);
       points += clouds[k].size();
     }
@@ -62,6 +80,7 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
         << "): " << points / clouds.size() << " points per frame -> " << folder << "/" << mount.id
         << "/\n";
   }
+  staged.commit();
   return kOk;
 }
 

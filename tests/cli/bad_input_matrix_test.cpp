@@ -82,60 +82,92 @@ std::vector<MatrixCase> option_cases() {
   const std::string rig = source_path("rigs/ur_cleaner.yaml");
   const std::string catalog = source_path("rigs/catalogs/ur_cleaner.yaml");
   const std::string requirements = source_path("rigs/requirements/ur_cleaner.yaml");
-  const std::vector<std::string> select = {"select", "--catalog", catalog, "--requirements",
-                                           requirements, "--out", "{out}"};
+  const std::vector<std::string> select = {"select",     "--catalog", catalog, "--requirements",
+                                           requirements, "--out",     "{out}"};
   const auto with = [](std::vector<std::string> base, std::vector<std::string> more) {
     base.insert(base.end(), more.begin(), more.end());
     return base;
   };
   const std::vector<std::string> localize = {"localize", "--scenario", "corner", "--out", "{out}"};
-  const std::vector<std::string> costmap = {"costmap", "--rig", rig, "--scenario", "stationary",
-                                            "--out", "{out}"};
+  const std::vector<std::string> costmap = {"costmap",    "--rig", rig,    "--scenario",
+                                            "stationary", "--out", "{out}"};
   const std::vector<std::string> occupancy = {"occupancy", "--rig", source_path("rigs/cell.yaml"),
                                               "--out", "{out}"};
   return {
-      {"select --budget inf (issue 16: hung in the Pareto plot)", {},
-       with(select, {"--budget", "inf"}), "--budget: is inf"},
-      {"select --budget 1e309 (issue 16)", {}, with(select, {"--budget", "1e309"}),
+      {"select --budget inf (issue 16: hung in the Pareto plot)",
+       {},
+       with(select, {"--budget", "inf"}),
+       "--budget: is inf"},
+      {"select --budget 1e309 (issue 16)",
+       {},
+       with(select, {"--budget", "1e309"}),
        "--budget: is 1e309"},
       {"select --budget nan", {}, with(select, {"--budget", "nan"}), "--budget: is nan"},
       {"select --budget -5", {}, with(select, {"--budget", "-5"}), "--budget: is -5"},
-      {"select --step 1e-9 (issue 16: angle count overflowed)", {},
-       with(select, {"--budget", "3000", "--step", "1e-9"}), "--step: is 1e-9"},
-      {"coverage --step 1e-9 (issue 16)", {}, {"coverage", rig, "--step", "1e-9", "--out", "{out}"},
+      {"select --step 1e-9 (issue 16: angle count overflowed)",
+       {},
+       with(select, {"--budget", "3000", "--step", "1e-9"}),
        "--step: is 1e-9"},
-      {"coverage --step nan", {}, {"coverage", rig, "--step", "nan", "--out", "{out}"},
+      {"coverage --step 1e-9 (issue 16)",
+       {},
+       {"coverage", rig, "--step", "1e-9", "--out", "{out}"},
+       "--step: is 1e-9"},
+      {"coverage --step nan",
+       {},
+       {"coverage", rig, "--step", "nan", "--out", "{out}"},
        "--step: is nan"},
-      {"coverage --angles with nan", {}, {"coverage", rig, "--angles", "0,nan", "--out", "{out}"},
+      {"coverage --angles with nan",
+       {},
+       {"coverage", rig, "--angles", "0,nan", "--out", "{out}"},
        "--angles: is nan"},
-      {"localize --rssi-at-1m nan (issue 16: segfault)", {}, with(localize, {"--rssi-at-1m", "nan"}),
+      {"localize --rssi-at-1m nan (issue 16: segfault)",
+       {},
+       with(localize, {"--rssi-at-1m", "nan"}),
        "--rssi-at-1m: is nan"},
-      {"localize --cutoff nan (issue 16)", {}, with(localize, {"--cutoff", "nan"}),
+      {"localize --cutoff nan (issue 16)",
+       {},
+       with(localize, {"--cutoff", "nan"}),
        "--cutoff: is nan"},
-      {"localize --huber negative (issue 16)", {}, with(localize, {"--huber", "-1"}),
+      {"localize --huber negative (issue 16)",
+       {},
+       with(localize, {"--huber", "-1"}),
        "--huber: is -1"},
-      {"localize --mad-factor nan (issue 16)", {}, with(localize, {"--mad-factor", "nan"}),
+      {"localize --mad-factor nan (issue 16)",
+       {},
+       with(localize, {"--mad-factor", "nan"}),
        "--mad-factor: is nan"},
-      {"localize --time-constant negative (issue 16)", {},
-       with(localize, {"--time-constant", "-3"}), "--time-constant: is -3"},
+      {"localize --time-constant negative (issue 16)",
+       {},
+       with(localize, {"--time-constant", "-3"}),
+       "--time-constant: is -3"},
       {"localize --exponent 0", {}, with(localize, {"--exponent", "0"}), "--exponent: is 0"},
       {"localize --seeds 0", {}, with(localize, {"--seeds", "0"}), "--seeds: is 0"},
       {"costmap --speed inf (issue 16)", {}, with(costmap, {"--speed", "inf"}), "--speed: is inf"},
       {"costmap --resolution 0", {}, with(costmap, {"--resolution", "0"}), "--resolution: is 0"},
-      {"costmap --update-rate nan", {}, with(costmap, {"--update-rate", "nan"}),
+      {"costmap --update-rate nan",
+       {},
+       with(costmap, {"--update-rate", "nan"}),
        "--update-rate: is nan"},
       {"costmap --window -6", {}, with(costmap, {"--window", "-6"}), "--window: is -6"},
       {"occupancy --voxels 0", {}, with(occupancy, {"--voxels", "0"}), "--voxels: is 0"},
       {"occupancy --rate inf", {}, with(occupancy, {"--rate", "inf"}), "--rate: is inf"},
       {"occupancy --duration -1", {}, with(occupancy, {"--duration", "-1"}), "--duration: is -1"},
       {"simulate --frames 0", {}, {"simulate", rig, "--frames", "0", "--out", "{out}"}, "--frames"},
-      {"simulate --dropout 1", {}, {"simulate", rig, "--dropout", "1", "--out", "{out}"},
+      {"simulate --dropout 1",
+       {},
+       {"simulate", rig, "--dropout", "1", "--out", "{out}"},
        "--dropout"},
-      {"filter --repeat 0", {{"c.pcd", kPcd}},
-       {"filter", "--cloud", "{dir}/c.pcd", "--repeat", "0", "--out", "{out}"}, "--repeat"},
-      {"export --max-speed nan", {}, {"export", rig, "--to", "{out}", "--max-speed", "nan"},
+      {"filter --repeat 0",
+       {{"c.pcd", kPcd}},
+       {"filter", "--cloud", "{dir}/c.pcd", "--repeat", "0", "--out", "{out}"},
+       "--repeat"},
+      {"export --max-speed nan",
+       {},
+       {"export", rig, "--to", "{out}", "--max-speed", "nan"},
        "--max-speed: is nan"},
-      {"an unknown subcommand is named (issue 16)", {}, {"frobnicate", rig},
+      {"an unknown subcommand is named (issue 16)",
+       {},
+       {"frobnicate", rig},
        "unknown subcommand 'frobnicate'"},
   };
 }
@@ -147,19 +179,32 @@ std::vector<MatrixCase> output_cases() {
   const InputFile blocker{"blocker", "a regular file where a folder is wanted\n"};
   const std::string named = "--out: '{dir}/blocker/out' cannot be created: Not a directory";
   return {
-      {"simulate --out under a file", {blocker},
-       {"simulate", rig, "--scene", "corridor", "--out", "{dir}/blocker/out"}, named},
-      {"filter --out under a file", {blocker, {"c.pcd", kPcd}},
-       {"filter", "--cloud", "{dir}/c.pcd", "--out", "{dir}/blocker/out"}, named},
-      {"localize --out under a file", {blocker},
-       {"localize", "--scenario", "corner", "--out", "{dir}/blocker/out"}, named},
-      {"costmap --out under a file", {blocker},
-       {"costmap", "--rig", rig, "--scenario", "stationary", "--out", "{dir}/blocker/out"}, named},
-      {"coverage --out under a file", {blocker}, {"coverage", rig, "--out", "{dir}/blocker/out"},
+      {"simulate --out under a file",
+       {blocker},
+       {"simulate", rig, "--scene", "corridor", "--out", "{dir}/blocker/out"},
        named},
-      {"occupancy --out under a file", {blocker},
-       {"occupancy", "--rig", source_path("rigs/cell.yaml"), "--out", "{dir}/blocker/out"}, named},
-      {"select --out under a file fails before the search (issue 16: after 28-43 s)", {blocker},
+      {"filter --out under a file",
+       {blocker, {"c.pcd", kPcd}},
+       {"filter", "--cloud", "{dir}/c.pcd", "--out", "{dir}/blocker/out"},
+       named},
+      {"localize --out under a file",
+       {blocker},
+       {"localize", "--scenario", "corner", "--out", "{dir}/blocker/out"},
+       named},
+      {"costmap --out under a file",
+       {blocker},
+       {"costmap", "--rig", rig, "--scenario", "stationary", "--out", "{dir}/blocker/out"},
+       named},
+      {"coverage --out under a file",
+       {blocker},
+       {"coverage", rig, "--out", "{dir}/blocker/out"},
+       named},
+      {"occupancy --out under a file",
+       {blocker},
+       {"occupancy", "--rig", source_path("rigs/cell.yaml"), "--out", "{dir}/blocker/out"},
+       named},
+      {"select --out under a file fails before the search (issue 16: after 28-43 s)",
+       {blocker},
        {"select", "--catalog", source_path("rigs/catalogs/ur_cleaner.yaml"), "--requirements",
         source_path("rigs/requirements/ur_cleaner.yaml"), "--budget", "3000", "--out",
         "{dir}/blocker/out"},
@@ -176,31 +221,33 @@ std::vector<MatrixCase> file_cases() {
   const std::string catalog = source_path("rigs/catalogs/ur_cleaner.yaml");
   const std::string sensors = source_path("sensors.yaml");
   const auto select_catalog = [&](const std::string& path) {
-    return std::vector<std::string>{"select", "--catalog", path, "--requirements", requirements,
-                                    "--sensors", sensors, "--budget", "3000", "--out", "{out}"};
+    return std::vector<std::string>{"select",     "--catalog", path,    "--requirements",
+                                    requirements, "--sensors", sensors, "--budget",
+                                    "3000",       "--out",     "{out}"};
   };
   const auto log_case = [](const std::string& name, const std::string& text,
                            const std::string& named) {
-    return MatrixCase{name, {{"log.csv", text}},
-                      {"localize", "--log", "{dir}/log.csv", "--out", "{out}"}, named};
+    return MatrixCase{
+        name, {{"log.csv", text}}, {"localize", "--log", "{dir}/log.csv", "--out", "{out}"}, named};
   };
   const auto cloud_case = [](const std::string& name, const std::string& file,
                              const std::string& text, const std::string& named) {
-    return MatrixCase{name, {{file, text}},
-                      {"filter", "--cloud", "{dir}/" + file, "--out", "{out}"}, named};
+    return MatrixCase{
+        name, {{file, text}}, {"filter", "--cloud", "{dir}/" + file, "--out", "{out}"}, named};
   };
   // A rig beside the bundled library, its name in Latin-1 (issue 16: uncaught
   // nlohmann::type_error 316 in the JSON reports).
-  const std::string latin1_rig =
-      replaced(rig_text, "name: UR Cleaner", "name: K\xe4rcher cleaner");
-  const std::string latin1_at = "{dir}/rig.yaml:" +
-                                std::to_string(line_of(latin1_rig, "name: K")) + ":8: (encoding)";
+  const std::string latin1_rig = replaced(rig_text, "name: UR Cleaner", "name: K\xe4rcher cleaner");
+  const std::string latin1_at =
+      "{dir}/rig.yaml:" + std::to_string(line_of(latin1_rig, "name: K")) + ":8: (encoding)";
   const std::string pose_ranges_with_library =
       replaced(catalog_text, "sensor_library: ../../sensors.yaml", "sensor_library: " + sensors);
   const auto catalog_case = [&](const std::string& name, const std::string& from,
                                 const std::string& to, const std::string& field) {
     const std::string text = replaced(pose_ranges_with_library, from, to);
-    return MatrixCase{name, {{"catalog.yaml", text}}, select_catalog("{dir}/catalog.yaml"),
+    return MatrixCase{name,
+                      {{"catalog.yaml", text}},
+                      select_catalog("{dir}/catalog.yaml"),
                       at_line("{dir}/catalog.yaml", text, to) + field};
   };
   const std::string bad_policy = replaced(policy_text, "{relax: robot_speed.max_speed, to: 0.8}",
@@ -208,17 +255,26 @@ std::vector<MatrixCase> file_cases() {
   const std::string bad_requirements =
       replaced(requirements_text, "max_speed: 1.0", "max_speed: .nan");
   return {
-      {"check --format json on a Latin-1 rig name (issue 16)", {{"rig.yaml", latin1_rig}},
-       {"check", "{dir}/rig.yaml", "--format", "json"}, latin1_at},
-      {"metrics --json on a Latin-1 rig name (issue 16)", {{"rig.yaml", latin1_rig}},
-       {"metrics", "{dir}/rig.yaml", "--json"}, latin1_at},
+      {"check --format json on a Latin-1 rig name (issue 16)",
+       {{"rig.yaml", latin1_rig}},
+       {"check", "{dir}/rig.yaml", "--format", "json"},
+       latin1_at},
+      {"metrics --json on a Latin-1 rig name (issue 16)",
+       {{"rig.yaml", latin1_rig}},
+       {"metrics", "{dir}/rig.yaml", "--json"},
+       latin1_at},
       {"a folder given as the rig", {}, {"metrics", "{dir}"}, "{dir}: file: is a folder"},
-      {"a folder given as --requirements", {},
+      {"a folder given as --requirements",
+       {},
        {"metrics", source_path("rigs/ur_cleaner.yaml"), "--requirements", "{dir}"},
        "{dir}: file: is a folder"},
-      {"a folder given as a cloud", {}, {"filter", "--cloud", "{dir}", "--out", "{out}"},
+      {"a folder given as a cloud",
+       {},
+       {"filter", "--cloud", "{dir}", "--out", "{out}"},
        "is neither a .pcd nor a .ply file"},
-      {"a missing rig", {}, {"metrics", "{dir}/nope.yaml"},
+      {"a missing rig",
+       {},
+       {"metrics", "{dir}/nope.yaml"},
        "{dir}/nope.yaml: file: cannot be opened: No such file or directory"},
       cloud_case("a cloud with a point at x = 3e19 (issue 16: SIGSEGV in the outlier filter)",
                  "far.pcd", replaced(kPcd, "1 2 3\n", "3e19 2 3\n"),
@@ -236,7 +292,8 @@ std::vector<MatrixCase> file_cases() {
       cloud_case("an empty cloud file", "e.pcd", "", "{dir}/e.pcd"),
       log_case("an RSSI log 1e15 m long (issue 16: length_error in the object map)",
                replaced(kRssi, "2,1.0,0.2", "2,1e15,0.2"), "{dir}/log.csv:4:3: x: '1e15' m lies"),
-      log_case("an RSSI log with a Latin-1 BSSID", replaced(kRssi, "-61", "-61\n3,1,1,0.4,caf\xe9,-62"),
+      log_case("an RSSI log with a Latin-1 BSSID",
+               replaced(kRssi, "-61", "-61\n3,1,1,0.4,caf\xe9,-62"),
                "{dir}/log.csv:4:14: (encoding)"),
       log_case("an RSSI log with nan dBm", replaced(kRssi, "-62", "nan"),
                "{dir}/log.csv:4:33: rssi"),
@@ -251,15 +308,18 @@ std::vector<MatrixCase> file_cases() {
                    "{min: 40, max: 10, step: 5}", ""),
       catalog_case("a pose range whose step does not divide it", "{min: 10, max: 40, step: 5}",
                    "{min: 10, max: 40, step: 7}", ""),
-      {"a policy step relaxing an unknown requirement", {{"policy.yaml", bad_policy}},
+      {"a policy step relaxing an unknown requirement",
+       {{"policy.yaml", bad_policy}},
        {"select", "--catalog", catalog, "--requirements", requirements, "--policy",
         "{dir}/policy.yaml", "--budget", "3000", "--out", "{out}"},
        at_line("{dir}/policy.yaml", bad_policy, "top_speed")},
-      {"a requirement that is nan", {{"req.yaml", bad_requirements}},
+      {"a requirement that is nan",
+       {{"req.yaml", bad_requirements}},
        {"select", "--catalog", catalog, "--requirements", "{dir}/req.yaml", "--budget", "3000",
         "--out", "{out}"},
        at_line("{dir}/req.yaml", bad_requirements, ".nan")},
-      {"a pipeline with a leaf of 0", {{"c.pcd", kPcd}, {"p.yaml", "name: p\nstages:\n  - voxel_grid: {leaf: 0}\n"}},
+      {"a pipeline with a leaf of 0",
+       {{"c.pcd", kPcd}, {"p.yaml", "name: p\nstages:\n  - voxel_grid: {leaf: 0}\n"}},
        {"filter", "--cloud", "{dir}/c.pcd", "--pipeline", "{dir}/p.yaml", "--out", "{out}"},
        "{dir}/p.yaml:3:"},
       {"a pipeline with an unknown stage",
@@ -272,8 +332,9 @@ std::vector<MatrixCase> file_cases() {
        {"filter", "--cloud", "{dir}/wide.pcd", "--pipeline", "{dir}/p.yaml", "--out", "{out}"},
        "{dir}/wide.pcd: voxel_grid.leaf: is too small"},
       {"costmap parameters with an unknown key",
-       {{"params.yaml", "local_costmap:\n  local_costmap:\n    ros__parameters:\n"
-                        "      resolution: 0.05\n      rezolution: 0.05\n"}},
+       {{"params.yaml",
+         "local_costmap:\n  local_costmap:\n    ros__parameters:\n"
+         "      resolution: 0.05\n      rezolution: 0.05\n"}},
        {"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario", "stationary",
         "--params", "{dir}/params.yaml", "--out", "{out}"},
        "{dir}/params.yaml:5:"},
@@ -283,7 +344,8 @@ std::vector<MatrixCase> file_cases() {
        {"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario", "stationary",
         "--params", "{dir}/params.yaml", "--out", "{out}"},
        "{dir}/params.yaml:4:"},
-      {"a sensors.yaml in Latin-1", {{"sensors.yaml", replaced(bundled("sensors.yaml"), "name: ", "name: \xb5")}},
+      {"a sensors.yaml in Latin-1",
+       {{"sensors.yaml", replaced(bundled("sensors.yaml"), "name: ", "name: \xb5")}},
        {"metrics", source_path("rigs/ur_cleaner.yaml"), "--sensors", "{dir}/sensors.yaml"},
        "{dir}/sensors.yaml:"},
       {"a scene file naming a mesh that does not exist",
@@ -317,19 +379,25 @@ void check_case(const MatrixCase& bad) {
 
 TEST_CASE("bad input matrix: options") {
   for (const MatrixCase& bad : option_cases()) {
-    DYNAMIC_SECTION(bad.name) { check_case(bad); }
+    DYNAMIC_SECTION(bad.name) {
+      check_case(bad);
+    }
   }
 }
 
 TEST_CASE("bad input matrix: output folders") {
   for (const MatrixCase& bad : output_cases()) {
-    DYNAMIC_SECTION(bad.name) { check_case(bad); }
+    DYNAMIC_SECTION(bad.name) {
+      check_case(bad);
+    }
   }
 }
 
 TEST_CASE("bad input matrix: files") {
   for (const MatrixCase& bad : file_cases()) {
-    DYNAMIC_SECTION(bad.name) { check_case(bad); }
+    DYNAMIC_SECTION(bad.name) {
+      check_case(bad);
+    }
   }
 }
 

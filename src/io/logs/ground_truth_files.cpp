@@ -5,8 +5,8 @@
 #include <array>
 #include <cmath>
 
-#include "io/text_encoding.hpp"
 #include "io/logs/csv_fields.hpp"
+#include "io/text_encoding.hpp"
 #include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"

@@ -1,0 +1,211 @@
+// Issue 16, faults: a run killed with SIGKILL at any point leaves the previous outputs or the
+// complete new set (never a truncated file, never a mix), and a full disk gives exit 2 with
+// the cause and leaves nothing behind. Runs the CLI in a forked child so it can be killed.
+#include <signal.h>
+#include <sys/mount.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "rigdesign/io/cloud/cloud_io.hpp"
+#include "support/cli_runner.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign;
+using namespace rigdesign::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Snapshot = std::map<std::string, std::string>;  // relative path -> bytes
+
+std::string bytes_of(const fs::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  std::stringstream bytes;
+  bytes << stream.rdbuf();
+  return bytes.str();
+}
+
+// Every regular file under `folder`, the staging marker included.
+Snapshot snapshot(const fs::path& folder) {
+  Snapshot files;
+  std::error_code error;
+  if (!fs::exists(folder, error)) return files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    if (entry.is_regular_file())
+      files[fs::relative(entry.path(), folder).string()] = bytes_of(entry.path());
+  }
+  return files;
+}
+
+// Whether a file is whole by its own format's rules, independently of the writer.
+bool parses(const std::string& name, const std::string& bytes) {
+  const auto ends_with = [&](const std::string& tail) {
+    return bytes.size() >= tail.size() &&
+           bytes.compare(bytes.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  const std::string extension = fs::path(name).extension().string();
+  if (extension == ".png") {  // signature first, IEND chunk with its CRC last
+    return bytes.rfind("\x89PNG\r\n\x1a\n", 0) == 0 &&
+           ends_with(std::string("IEND\xae\x42\x60\x82", 8));
+  }
+  if (extension == ".svg") return ends_with("</svg>\n") || ends_with("</svg>");
+  if (extension == ".json" || extension == ".yaml") {
+    try {
+      YAML::Load(bytes);
+      return !bytes.empty();
+    } catch (const YAML::Exception&) {
+      return false;
+    }
+  }
+  if (extension == ".csv") return !bytes.empty() && bytes.back() == '\n';
+  if (extension == ".pcd") {
+    const fs::path copy = fs::temp_directory_path() /
+                          ("rigdesign_fault_check_" + std::to_string(::getpid()) + ".pcd");
+    std::ofstream(copy, std::ios::binary) << bytes;
+    try {
+      io::read_cloud(copy.string());
+      fs::remove(copy);
+      return true;
+    } catch (...) {
+      fs::remove(copy);
+      return false;
+    }
+  }
+  return name == ".rigdesign-output";
+}
+
+// Names of the files that differ between two snapshots, for the failure message.
+std::string differences(const Snapshot& a, const Snapshot& b) {
+  std::string names;
+  for (const auto& [name, bytes] : a) {
+    const auto other = b.find(name);
+    if (other == b.end() || other->second != bytes) names += name + " ";
+  }
+  for (const auto& [name, bytes] : b) {
+    if (a.count(name) == 0) names += name + " ";
+  }
+  return names;
+}
+
+// Runs the CLI in a child and kills it with SIGKILL after `delay` (it may finish first).
+void run_and_kill(const std::vector<std::string>& args, std::chrono::microseconds delay) {
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    const CliResult result = run_cli(args);
+    ::_exit(result.exit_code);
+  }
+  std::this_thread::sleep_for(delay);
+  ::kill(child, SIGKILL);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+}
+
+// One whole run in a fresh child process, as from a shell: Cairo numbers the glyphs of its
+// SVGs per process, so only runs in fresh processes give byte-identical sets.
+void run_in_child(const std::vector<std::string>& args) {
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) ::_exit(run_cli(args).exit_code);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  REQUIRE(WIFEXITED(status));
+  REQUIRE(WEXITSTATUS(status) == 0);
+}
+
+void check_kills(const std::vector<std::string>& old_args, const std::vector<std::string>& new_args,
+                 const std::string& folder) {
+  // The two complete sets, made without interruption.
+  run_in_child(old_args);
+  const Snapshot old_set = snapshot(folder);
+  const auto start = std::chrono::steady_clock::now();
+  run_in_child(new_args);
+  const auto full_run = std::chrono::steady_clock::now() - start;
+  const Snapshot new_set = snapshot(folder);
+  REQUIRE(!old_set.empty());
+  REQUIRE(!new_set.empty());
+  REQUIRE(old_set != new_set);
+  for (const auto& [name, bytes] : new_set) CHECK(parses(name, bytes));
+
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<double> share(0.0, 1.2);
+  int kept_old = 0, got_new = 0;
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    run_in_child(old_args);
+    INFO("differing: " << differences(snapshot(folder), old_set));
+    REQUIRE(snapshot(folder) == old_set);
+    const auto delay = std::chrono::duration_cast<std::chrono::microseconds>(full_run * share(rng));
+    run_and_kill(new_args, delay);
+    const Snapshot after = snapshot(folder);
+    INFO("killed after " << delay.count() << " us of a "
+                         << std::chrono::duration_cast<std::chrono::microseconds>(full_run).count()
+                         << " us run");
+    CHECK((after == old_set || after == new_set));
+    kept_old += after == old_set ? 1 : 0;
+    got_new += after == new_set ? 1 : 0;
+    // A killed run's staging folder is hidden beside the output and removed by the next run.
+    run_in_child(new_args);
+    CHECK(snapshot(folder) == new_set);
+  }
+  CHECK(kept_old + got_new == 6);
+}
+
+}  // namespace
+
+TEST_CASE("kill -9 during coverage leaves the old pictures or the complete new set") {
+  TempFolder folder;
+  const std::string out = folder.path() + "/coverage";
+  check_kills(
+      {"coverage", source_path("rigs/elektron.yaml"), "--out", out, "--raster", "--no-3d"},
+      {"coverage", source_path("rigs/ur_cleaner.yaml"), "--out", out, "--raster", "--no-3d"}, out);
+  // Nothing else was left beside the folder: staging folders of killed runs are gone.
+  int entries = 0;
+  for (const auto& entry : fs::directory_iterator(folder.path())) entries += entry.exists() ? 1 : 0;
+  CHECK(entries == 1);
+}
+
+TEST_CASE("kill -9 during simulate leaves the old clouds or the complete new set") {
+  TempFolder folder;
+  const std::string out = folder.path() + "/clouds";
+  const std::string rig = source_path("rigs/elektron.yaml");
+  check_kills(
+      {"simulate", rig, "--scene", "corridor", "--frames", "1", "--seed", "1", "--out", out},
+      {"simulate", rig, "--scene", "corridor", "--frames", "2", "--seed", "2", "--out", out}, out);
+}
+
+TEST_CASE("a full disk is exit 2 with the cause, and leaves the previous outputs whole") {
+  TempFolder folder;
+  const std::string disk = folder.path() + "/small_disk";
+  fs::create_directories(disk);
+  // A 256 KiB tmpfs holds the old outputs of a small run but not a new coverage set.
+  if (::mount("tmpfs", disk.c_str(), "tmpfs", 0, "size=256k") != 0) {
+    WARN("cannot mount a tmpfs here (needs root): the full-disk case was not run");
+    return;
+  }
+  const std::string out = disk + "/out";
+  std::ofstream(out + "_placeholder") << "";
+  fs::create_directories(out);
+  std::ofstream(out + "/.rigdesign-output") << "previous run\n";
+  std::ofstream(out + "/coverage.csv") << "angle,complete\n0,0.5\n";
+  const Snapshot before = snapshot(out);
+  const CliResult result =
+      run_cli({"coverage", source_path("rigs/ur_cleaner.yaml"), "--out", out, "--raster"});
+  INFO(result.err);
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("No space left on device") != std::string::npos);
+  CHECK(snapshot(out) == before);
+  int entries = 0;
+  for (const auto& entry : fs::directory_iterator(disk)) entries += entry.exists() ? 1 : 0;
+  CHECK(entries == 2);  // the folder and the placeholder: no staging folder, no temp file
+  ::umount(disk.c_str());
+}
