@@ -1,9 +1,7 @@
 // Issue 16, faults: a run killed with SIGKILL at any point leaves the previous outputs or the
 // complete new set (never a truncated file, never a mix), and a full disk gives exit 2 with
 // the cause and leaves nothing behind. Runs the CLI in a forked child so it can be killed.
-#include <signal.h>
 #include <sys/mount.h>
-#include <sys/wait.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
@@ -14,10 +12,10 @@
 #include <map>
 #include <random>
 #include <sstream>
-#include <thread>
 
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "support/cli_runner.hpp"
+#include "support/run_in_child.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;
@@ -25,27 +23,6 @@ using namespace rigdesign::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-using Snapshot = std::map<std::string, std::string>;  // relative path -> bytes
-
-std::string bytes_of(const fs::path& file) {
-  std::ifstream stream(file, std::ios::binary);
-  std::stringstream bytes;
-  bytes << stream.rdbuf();
-  return bytes.str();
-}
-
-// Every regular file under `folder`, the staging marker included.
-Snapshot snapshot(const fs::path& folder) {
-  Snapshot files;
-  std::error_code error;
-  if (!fs::exists(folder, error)) return files;
-  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
-    if (entry.is_regular_file())
-      files[fs::relative(entry.path(), folder).string()] = bytes_of(entry.path());
-  }
-  return files;
-}
 
 // Whether a file is whole by its own format's rules, independently of the writer.
 bool parses(const std::string& name, const std::string& bytes) {
@@ -84,52 +61,13 @@ bool parses(const std::string& name, const std::string& bytes) {
   return name == ".rigdesign-output";
 }
 
-// Names of the files that differ between two snapshots, for the failure message.
-std::string differences(const Snapshot& a, const Snapshot& b) {
-  std::string names;
-  for (const auto& [name, bytes] : a) {
-    const auto other = b.find(name);
-    if (other == b.end() || other->second != bytes) names += name + " ";
-  }
-  for (const auto& [name, bytes] : b) {
-    if (a.count(name) == 0) names += name + " ";
-  }
-  return names;
-}
-
-// Runs the CLI in a child and kills it with SIGKILL after `delay` (it may finish first).
-void run_and_kill(const std::vector<std::string>& args, std::chrono::microseconds delay) {
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {
-    const CliResult result = run_cli(args);
-    ::_exit(result.exit_code);
-  }
-  std::this_thread::sleep_for(delay);
-  ::kill(child, SIGKILL);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-}
-
-// One whole run in a fresh child process, as from a shell: Cairo numbers the glyphs of its
-// SVGs per process, so only runs in fresh processes give byte-identical sets.
-void run_in_child(const std::vector<std::string>& args) {
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) ::_exit(run_cli(args).exit_code);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  REQUIRE(WIFEXITED(status));
-  REQUIRE(WEXITSTATUS(status) == 0);
-}
-
 void check_kills(const std::vector<std::string>& old_args, const std::vector<std::string>& new_args,
                  const std::string& folder) {
   // The two complete sets, made without interruption.
-  run_in_child(old_args);
+  REQUIRE(run_in_child(old_args) == 0);
   const Snapshot old_set = snapshot(folder);
   const auto start = std::chrono::steady_clock::now();
-  run_in_child(new_args);
+  REQUIRE(run_in_child(new_args) == 0);
   const auto full_run = std::chrono::steady_clock::now() - start;
   const Snapshot new_set = snapshot(folder);
   REQUIRE(!old_set.empty());
@@ -141,7 +79,7 @@ void check_kills(const std::vector<std::string>& old_args, const std::vector<std
   std::uniform_real_distribution<double> share(0.0, 1.2);
   int kept_old = 0, got_new = 0;
   for (int attempt = 0; attempt < 6; ++attempt) {
-    run_in_child(old_args);
+    REQUIRE(run_in_child(old_args) == 0);
     INFO("differing: " << differences(snapshot(folder), old_set));
     REQUIRE(snapshot(folder) == old_set);
     const auto delay = std::chrono::duration_cast<std::chrono::microseconds>(full_run * share(rng));
@@ -154,7 +92,7 @@ void check_kills(const std::vector<std::string>& old_args, const std::vector<std
     kept_old += after == old_set ? 1 : 0;
     got_new += after == new_set ? 1 : 0;
     // A killed run's staging folder is hidden beside the output and removed by the next run.
-    run_in_child(new_args);
+    REQUIRE(run_in_child(new_args) == 0);
     CHECK(snapshot(folder) == new_set);
   }
   CHECK(kept_old + got_new == 6);
