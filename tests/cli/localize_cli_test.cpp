@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
@@ -77,4 +79,52 @@ TEST_CASE("localize: the bundled example log reads and its phone is found within
   REQUIRE(emitters.size() == 3);  // wls, nls, map
   CHECK(emitters[1]["method"] == "nls");
   CHECK(emitters[1]["kpis"]["detected"] == true);
+}
+
+namespace {
+
+// The log with every position moved by (dx, dy): UTM eastings and northings.
+std::string shifted_log(const std::string& csv, double dx, double dy) {
+  std::istringstream lines(csv);
+  std::string line, result;
+  std::getline(lines, line);
+  result = line + "\n";  // t,x,y,z,bssid,rssi
+  while (std::getline(lines, line)) {
+    std::vector<std::string> cells;
+    std::stringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    REQUIRE(cells.size() == 6);
+    std::ostringstream moved;
+    moved.precision(17);
+    moved << cells[0] << ',' << std::stod(cells[1]) + dx << ',' << std::stod(cells[2]) + dy << ','
+          << cells[3] << ',' << cells[4] << ',' << cells[5] << '\n';
+    result += moved.str();
+  }
+  return result;
+}
+
+}  // namespace
+
+TEST_CASE("localize: a log in UTM coordinates gives the same estimate, moved (issue 16)",
+          "[localize]") {
+  // Issue 16: x near 1e7 overflowed a signed cell key (UBSan) and still returned a result.
+  const double dx = 5.5e6, dy = 9.9e6;  // a northing near UTM's upper end
+  TempFolder folder;
+  std::ifstream stream(source_path("data/localize/corner_rssi.csv"));
+  std::stringstream original;
+  original << stream.rdbuf();
+  const std::string moved = folder.write("utm.csv", shifted_log(original.str(), dx, dy));
+  const auto estimate = [](const std::string& log) {
+    const CliResult result = run_cli({"localize", "--log", log, "--json"});
+    INFO(result.err);
+    REQUIRE(result.exit_code == 0);
+    const nlohmann::json json = nlohmann::json::parse(result.out);
+    return json["logs"][0]["emitters"][0]["hypotheses"][0]["position"];
+  };
+  const nlohmann::json local = estimate(source_path("data/localize/corner_rssi.csv"));
+  const nlohmann::json utm = estimate(moved);
+  // Positions near 1e7 m carry about 2e-9 m of double rounding per reading: the fit moves
+  // by far less than a centimetre.
+  CHECK(utm[0].get<double>() - dx == Approx(local[0].get<double>()).margin(0.01));
+  CHECK(utm[1].get<double>() - dy == Approx(local[1].get<double>()).margin(0.01));
 }
