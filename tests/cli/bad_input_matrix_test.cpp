@@ -294,6 +294,10 @@ std::vector<MatrixCase> file_cases() {
                  "property float z\nend_header\n0 0 0\n",
                  "{dir}/f.ply:2:"),
       cloud_case("an empty cloud file", "e.pcd", "", "{dir}/e.pcd"),
+      {"a PCD header in Latin-1 (its names reach filter --json)",
+       {{"l.pcd", replaced(kPcd, "# .PCD v0.7", "# .PCD v0.7 K\xe4rcher")}},
+       {"filter", "--cloud", "{dir}/l.pcd", "--json", "--out", "{out}"},
+       "{dir}/l.pcd:1:14: (encoding)"},
       log_case("an RSSI log 1e15 m long (issue 16: length_error in the object map)",
                replaced(kRssi, "2,1.0,0.2", "2,1e15,0.2"), "{dir}/log.csv:4:3: x: '1e15' m lies"),
       log_case("an RSSI log with a Latin-1 BSSID",
@@ -312,6 +316,15 @@ std::vector<MatrixCase> file_cases() {
                    "{min: 40, max: 10, step: 5}", ""),
       catalog_case("a pose range whose step does not divide it", "{min: 10, max: 40, step: 5}",
                    "{min: 10, max: 40, step: 7}", ""),
+      {"a catalog whose rasters would outgrow memory is refused before rasterising",
+       {{"catalog.yaml", replaced(pose_ranges_with_library, "{min: 10, max: 40, step: 5}",
+                                  "{min: 10, max: 40, step: 0.1}")}},
+       [&] {
+         std::vector<std::string> args = select_catalog("{dir}/catalog.yaml");
+         args.insert(args.end(), {"--step", "0.25"});  // 1440 angles per option
+         return args;
+       }(),
+       "--catalog: {dir}/catalog.yaml has "},
       {"a policy step relaxing an unknown requirement",
        {{"policy.yaml", bad_policy}},
        {"select", "--catalog", catalog, "--requirements", requirements, "--policy",

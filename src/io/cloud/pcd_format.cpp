@@ -9,6 +9,7 @@
 #include "io/cloud/pcd_header.hpp"
 #include "io/cloud/point_body_writer.hpp"
 #include "io/cloud/point_columns.hpp"
+#include "io/text_encoding.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -150,6 +151,8 @@ std::string header_text(const model::PointCloud& cloud, CloudEncoding encoding) 
 model::PointCloud parse_pcd(const std::string& path, std::string_view bytes,
                             CloudReadReport& report) {
   const PcdHeader header = parse_pcd_header(path, bytes);
+  // Field and property names reach the JSON reports: the header must be text (UTF-8).
+  require_utf8(bytes.substr(0, header.body_offset), path);
   report.format = "pcd " + to_string(header.encoding);
   report.points_in_file = header.points;
   for (std::size_t f = 0; f < header.fields.size(); ++f) {

@@ -7,6 +7,7 @@
 #include "io/cloud/ply_header.hpp"
 #include "io/cloud/point_body_writer.hpp"
 #include "io/cloud/point_columns.hpp"
+#include "io/text_encoding.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -103,6 +104,8 @@ void read_ascii_body(const std::string& path, std::string_view bytes, const PlyH
 model::PointCloud parse_ply(const std::string& path, std::string_view bytes,
                             CloudReadReport& report) {
   const PlyHeader header = parse_ply_header(path, bytes);
+  // Field and property names reach the JSON reports: the header must be text (UTF-8).
+  require_utf8(bytes.substr(0, header.body_offset), path);
   const PlyElement& vertex = header.elements[header.vertex_element];
   report.format = "ply " + to_string(header.encoding);
   report.points_in_file = vertex.count;

@@ -18,6 +18,10 @@
 namespace rigdesign::io {
 namespace {
 
+// Triangles a scene may hold: the ray caster's tree takes on the order of 100 bytes per
+// triangle (estimate), so 1e7 is about a gigabyte; the bundled lab has under a hundred.
+constexpr double kMaxSceneTriangles = 1e7;
+
 using io::MapReader;
 using io::Need;
 
@@ -200,6 +204,15 @@ model::Scene load_scene_file(const std::string& yaml_path) {
   if (declared == 0 && !diagnostics.has_errors()) {
     top.require(false, "static", "the scene has no objects",
                 "at least one object under static or moving");
+  }
+  // Every frame ray-casts against every triangle's tree node: bounded before any simulation.
+  std::size_t triangles = 0;
+  for (const auto& object : scene.objects) triangles += object.mesh.triangles.size();
+  for (const auto& object : scene.moving) triangles += object.mesh.triangles.size();
+  if (static_cast<double>(triangles) > kMaxSceneTriangles) {
+    top.require(false, "static",
+                "the scene's meshes hold " + std::to_string(triangles) + " triangles",
+                "at most 1e7 triangles in all (decimate the meshes)");
   }
   top.text("note", Need::optional);
   top.reject_unknown_keys();
