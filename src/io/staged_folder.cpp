@@ -59,11 +59,18 @@ void move_files_into(const fs::path& from, const fs::path& to) {
 
 StagedFolder::StagedFolder(std::string folder, std::string option)
     : folder_(std::move(folder)), option_(std::move(option)) {
-  fs::path final_path = fs::path(folder_).lexically_normal();
+  // Absolute, so "." and "out/" name a folder with a parent to stage beside.
+  std::error_code error;
+  fs::path final_path = fs::absolute(folder_, error).lexically_normal();
   if (final_path.filename().empty()) final_path = final_path.parent_path();  // "out/"
+  if (error || !final_path.has_parent_path() || final_path == final_path.root_path()) {
+    throw model::InputError(model::Diagnostic{{"(command line)", 0, 0},
+                                              option_,
+                                              "'" + folder_ + "' has no parent folder to stage in",
+                                              "a folder below the file system's root"});
+  }
   const fs::path parent = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
   const std::string name = final_path.filename().string();
-  std::error_code error;
   fs::create_directories(parent, error);
   if (error) {
     throw model::InputError(
@@ -116,7 +123,8 @@ void StagedFolder::commit() {
   if (!fs::exists(target_, error)) {
     if (::rename(staging_.c_str(), target_.c_str()) != 0)
       fail(std::string("cannot take the new outputs: ") + std::strerror(errno));
-  } else if (replaceable(target_)) {
+  } else if (replaceable(target_) && !fs::equivalent(target_, fs::current_path(), error)) {
+    // (The working folder is filled in place: exchanging it would leave the shell in the old one.)
     // One atomic step: readers see the old folder or the new one (Linux renameat2).
     if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) != 0)
       fail(std::string("cannot take the new outputs: ") + std::strerror(errno));
