@@ -5,6 +5,8 @@
 #include <functional>
 #include <map>
 
+#include "rigdesign/io/cloud/cloud_io.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
@@ -17,6 +19,8 @@ namespace {
 const std::map<std::string, std::function<void(const std::string&)>>& readers() {
   static const std::map<std::string, std::function<void(const std::string&)>> table = {
       {"artifacts_json", [](const std::string& path) { io::read_artifacts(path); }},
+      {"rig_yaml", [](const std::string& path) { io::load_rig(path); }},
+      {"cloud_pcd", [](const std::string& path) { io::read_cloud(path); }},
   };
   return table;
 }

@@ -252,6 +252,19 @@ PcdHeader parse_pcd_header(const std::string& path, std::string_view bytes) {
   header.body_offset = raw.body_offset;
   header.fields = read_fields(raw);
   header.record_size = record_size(header.fields);
+  // No point can be longer than the file: each value takes at least one byte (binary) or two
+  // (ascii: a digit and a separator). A fuzzed COUNT of 4e9 otherwise made the ascii reader
+  // name four billion values.
+  std::size_t values = 0;
+  for (const PcdField& field : header.fields) values += field.count;
+  if (header.record_size > bytes.size() || values > bytes.size()) {
+    const KeywordLine& line = raw.has("COUNT") ? raw.lines.at("COUNT") : raw.lines.at("FIELDS");
+    throw_header_error(path, line.line, "COUNT",
+                       "one point would take " + std::to_string(header.record_size) +
+                           " bytes, more than the whole file (" + std::to_string(bytes.size()) +
+                           " bytes)",
+                       "COUNT values that fit the file");
+  }
   header.xyz_fields = find_xyz(raw, header.fields);
   header.width = single_count(raw, "WIDTH");
   header.height = single_count(raw, "HEIGHT");

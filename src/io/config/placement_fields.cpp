@@ -194,6 +194,11 @@ std::map<std::string, std::string> read_text_map(MapReader& reader, const std::s
     return values;
   }
   for (const auto& entry : node) {
+    if (!entry.first.IsScalar()) {  // a map or list used as a key (`{a: 1}: x`)
+      reader.diagnostics().error(location_of(entry.first, reader.file()), reader.field(key),
+                                 "has a key that is not a single value", expected);
+      continue;
+    }
     if (!entry.second.IsScalar()) {
       reader.diagnostics().error(location_of(entry.second, reader.file()),
                                  reader.field(key) + "." + entry.first.as<std::string>(),
