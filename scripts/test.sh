@@ -9,7 +9,7 @@ build="$root/build/sanitize"
 # its reports; compiles about 40 % faster than -O2 -g (CI's build was 27 of its 32 minutes).
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIGDESIGN_SANITIZE=ON \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  -DRIGDESIGN_WERROR=ON -DRIGDESIGN_BUILD_TESTS=ON
+  -DRIGDESIGN_WERROR=ON -DRIGDESIGN_BUILD_TESTS=ON -DRIGDESIGN_UNITY_BUILD=ON
 cmake --build "$build" -j"$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

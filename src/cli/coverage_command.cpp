@@ -19,6 +19,7 @@
 namespace rigdesign::cli {
 namespace {
 
+// 7200 angles at the finest step: the exact path cuts every mount's FOV at each of them.
 constexpr double kFinestCoverageStepDeg = 0.05;
 
 struct CoverageOptions {
@@ -33,14 +34,6 @@ struct CoverageOptions {
 };
 
 int run_coverage(const CoverageOptions& options, std::ostream& out) {
-  // 7200 angles at the finest step: the exact path cuts every mount's FOV at each of them.
-  require_option(options.step_deg >= kFinestCoverageStepDeg && options.step_deg <= 45, "--step",
-                 "is " + model::format_number(options.step_deg) + ", out of range",
-                 "degrees in [0.05, 45]");
-  for (const double angle : options.angles_deg) {
-    require_option(std::isfinite(angle), "--angles", "has a value that is not a number",
-                   "comma-separated degrees, e.g. 0,45,90");
-  }
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
   const std::string folder = options.out.empty()
                                  ? "coverage/" + std::filesystem::path(options.rig).stem().string()
@@ -91,7 +84,7 @@ Command setup_coverage(CLI::App& parent) {
       ->delimiter(',')
       ->check(finite_in(-360, 360, "degrees in [-360, 360]"));
   app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)")
-      ->check(finite_in(0.05, 45, "degrees in [0.05, 45]"));
+      ->check(finite_in(kFinestCoverageStepDeg, 45, "degrees in [0.05, 45]"));
   app->add_option("--requirements", options->requirements,
                   "Requirements whose sector thresholds are drawn (default: the rig's)");
   app->add_option("--sensors", options->sensors, "Sensor library");

@@ -138,6 +138,10 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
         report.summary = rig_summary(inputs);
         report.diagnostics = inputs.warnings;
         if (inputs.requirements) {
+          // Deployment files are read before the coverage is computed: a typo in them is
+          // reported at once, not after the slowest step.
+          std::optional<deploy::DeployedConfig> config;
+          if (!deployment.empty()) config = load_deployment(deployment, inputs.rig);
           const metrics::ResultantMetrics metrics =
               metrics::compute_resultant(inputs.rig, inputs.library);
           std::optional<metrics::RigCoverage> coverage;
@@ -147,11 +151,10 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
           }
           report.results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements,
                                                           coverage ? &*coverage : nullptr);
-          if (!deployment.empty()) {
-            const deploy::DeployedConfig config = load_deployment(deployment, inputs.rig);
-            for (metrics::RequirementResult& result : deploy::check_deployment(
-                     inputs.rig, inputs.library, *inputs.requirements, config,
-                     coverage ? &*coverage : nullptr)) {
+          if (config) {
+            for (metrics::RequirementResult& result :
+                 deploy::check_deployment(inputs.rig, inputs.library, *inputs.requirements, *config,
+                                          coverage ? &*coverage : nullptr)) {
               report.results.push_back(std::move(result));
             }
           }

@@ -28,6 +28,8 @@
 namespace rigdesign::cli {
 namespace {
 
+// Below a quarter degree the rasters of a 300-option catalog outgrow memory (1440 angles
+// take about 4x the default's 360).
 constexpr double kFinestSelectStepDeg = 0.25;
 // Option-angles the rasters may hold (about 4.6 kB each measured: 496 MB for 303 x 360).
 constexpr double kMaxOptionAngles = 1e6;
@@ -68,13 +70,6 @@ model::RobustnessRequirement robustness_option(const std::vector<std::string>& v
 }
 
 int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
-  require_option(options.budget > 0 && std::isfinite(options.budget), "--budget",
-                 "is missing, not positive or not finite", "the budget in US dollars, > 0");
-  // Below a quarter degree the rasters of a 300-option catalog outgrow memory (1440 angles
-  // take about 4x the default's 360).
-  require_option(options.step_deg >= kFinestSelectStepDeg && options.step_deg <= 45, "--step",
-                 "is " + model::format_number(options.step_deg) + ", out of range",
-                 "degrees in [0.25, 45]");
   const model::Catalog catalog = io::load_catalog(options.catalog);
   const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
   io::check_catalog_references(catalog, library).throw_if_errors();
@@ -101,16 +96,7 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
 
   // Every option is rasterised at every angle before the search: bounded before that work.
   // 303 options x 360 angles took 496 MB on the bundled robot (README, selection search).
-  double options_total = 0.0;
-  for (const model::MountingSlot& slot : catalog.slots) {
-    double modes = 0.0;
-    for (const model::CandidateSensor& candidate : catalog.sensors) {
-      if (std::find(slot.allowed_sensors.begin(), slot.allowed_sensors.end(),
-                    candidate.sensor_id) != slot.allowed_sensors.end())
-        modes += static_cast<double>(candidate.mode_ids.size());
-    }
-    options_total += modes * static_cast<double>(slot.poses.size());
-  }
+  const double options_total = static_cast<double>(select::count_catalog_options(catalog));
   const double option_angles = options_total * std::ceil(360.0 / options.step_deg);
   require_option(option_angles <= kMaxOptionAngles, "--catalog",
                  options.catalog + " has " + model::format_number(options_total) +
@@ -179,7 +165,7 @@ Command setup_select(CLI::App& parent) {
                   "condition (every sensor not immune to it fails); overrides the requirements' "
                   "robustness");
   app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)")
-      ->check(finite_in(0.25, 45, "degrees in [0.25, 45]"));
+      ->check(finite_in(kFinestSelectStepDeg, 45, "degrees in [0.25, 45]"));
   app->add_flag("--json", options->json, "Print JSON instead of the trace");
   app->add_flag("--no-renders", options->no_renders, "Skip the chosen rig's coverage pictures");
   return {app, [options](std::ostream& out, std::ostream& err) {

@@ -27,7 +27,7 @@ namespace {
 std::string usd(double value) {
   return fixed(value, 0) + " USD";
 }
-std::string percent(double share) {
+std::string percent_digits(double share) {
   return model::format_number(share * 100, 3);
 }
 
@@ -58,8 +58,8 @@ std::string describe(const select::SatisficingTargets& targets) {
       text += " " + to_string(condition);
   }
   for (const model::SectorRequirement& sector : targets.sectors) {
-    text += ", SC " + sector.name + " >= " + percent(sector.min_complete_coverage) + "/" +
-            percent(sector.min_floor_coverage) + " %";
+    text += ", SC " + sector.name + " >= " + percent_digits(sector.min_complete_coverage) + "/" +
+            percent_digits(sector.min_floor_coverage) + " %";
   }
   return text;
 }
@@ -198,8 +198,8 @@ void SelectReport::print_summary(const select::RelaxationOutcome& outcome,
     if (pick->selection.refinement.accepted)
       out << "  refined poses: " << describe(pick->selection.refinement) << '\n';
     const metrics::RigCoverage& coverage = pick->selection.coverage;
-    out << "  SC complete mean " << percent(coverage.complete.mean) << " %, floor mean "
-        << percent(coverage.floor.mean) << " % (exact path)\n";
+    out << "  SC complete mean " << percent_digits(coverage.complete.mean) << " %, floor mean "
+        << percent_digits(coverage.floor.mean) << " % (exact path)\n";
   } else {
     out << "\nThe policy is exhausted: no rig within " << usd(budget_) << ".\n";
     if (pick != nullptr) {

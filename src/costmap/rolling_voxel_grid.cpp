@@ -54,4 +54,9 @@ std::vector<VoxelKey> RollingVoxelGrid::keys_in_state(VoxelState state) const {
   return keys;
 }
 
+void sort_unique(std::vector<VoxelKey>& keys) {
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+}
+
 }  // namespace rigdesign::costmap

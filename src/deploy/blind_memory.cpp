@@ -10,17 +10,15 @@
 namespace rigdesign::deploy {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Along-track position x of an obstacle at lateral offset `lateral` seen at azimuth `angle`
 // (folded into [0, pi]: the rule is the same on both sides).
 double along(double lateral, double angle) {
-  return lateral / std::tan(std::clamp(angle, 1e-6, kPi - 1e-6));
+  return lateral / std::tan(std::clamp(angle, 1e-6, std::numbers::pi - 1e-6));
 }
 
 double folded(double theta) {
   const double a = model::wrap_angle(theta);
-  return a > kPi ? 2 * kPi - a : a;
+  return a > std::numbers::pi ? 2 * std::numbers::pi - a : a;
 }
 
 // Blind azimuths: where none of the floor is seen (a cable or a foot there is invisible); for
@@ -48,7 +46,8 @@ Pass pass_from(const std::vector<metrics::AngleCoverage>& angles, const std::vec
   const double a_enter = folded(angles[enter].theta);
   const double lateral = angles[enter].r;
   const double x_enter = along(lateral, a_enter);
-  const double x_leave = a_leave >= kPi - 1.5 * step ? -lateral : along(lateral, a_leave);
+  const double x_leave =
+      a_leave >= std::numbers::pi - 1.5 * step ? -lateral : along(lateral, a_leave);
   // The seen run before the gap, walking towards the front.
   int seen = 0;
   for (int j = 1; j < n; ++j) {
@@ -83,7 +82,7 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
   // Start the walk at a seen azimuth so that every gap is a whole run.
   int start = 0;
   while (blind[start]) ++start;
-  const double step = 2 * kPi / n;
+  const double step = 2 * std::numbers::pi / n;
   const auto pass = [&](int enter, bool left, double a_leave) {
     return pass_from(angles, blind, enter, left, a_leave, step, coverage.distance);
   };
@@ -102,14 +101,16 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
     const double first = angles[i].theta;
     const double last = first + (length - 1) * step;
     const int last_index = (start + k - 1) % n;
-    const bool across_back = first <= kPi + 1e-9 && last >= kPi - 1e-9;
-    const bool across_front = last >= 2 * kPi - 1e-9;
+    const bool across_back = first <= std::numbers::pi + 1e-9 && last >= std::numbers::pi - 1e-9;
+    const bool across_front = last >= 2 * std::numbers::pi - 1e-9;
     std::vector<Pass> passes;
     if (across_back) {
-      if (first < kPi - 1e-9) passes.push_back(pass(i, true, kPi));
-      if (last > kPi + 1e-9) passes.push_back(pass(last_index, false, kPi));
+      if (first < std::numbers::pi - 1e-9) passes.push_back(pass(i, true, std::numbers::pi));
+      if (last > std::numbers::pi + 1e-9)
+        passes.push_back(pass(last_index, false, std::numbers::pi));
     } else if (!across_front) {
-      passes.push_back(last < kPi ? pass(i, true, folded(last)) : pass(last_index, false, folded(first)));
+      passes.push_back(last < std::numbers::pi ? pass(i, true, folded(last))
+                                               : pass(last_index, false, folded(first)));
     }
     if (passes.empty()) continue;
     const Pass& longest = *std::max_element(
@@ -121,8 +122,8 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
     gap.to = last;
     gap.keep_distance = longest.keep;
     gap.seen_distance = longest.seen;
-    gap.reaches_back =
-        across_back || (last < kPi ? folded(last) : folded(first)) >= kPi - 1.5 * step;
+    gap.reaches_back = across_back || (last < std::numbers::pi ? folded(last) : folded(first)) >=
+                                          std::numbers::pi - 1.5 * step;
     memory.gaps.push_back(gap);
   }
   for (std::size_t g = 0; g < memory.gaps.size(); ++g) {

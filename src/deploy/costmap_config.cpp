@@ -13,7 +13,6 @@
 namespace rigdesign::deploy {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Directions sampled per FOV angle when looking for the steepest downward ray.
 constexpr int kFovSamples = 65;
 // A hull this close to its circumscribed circle's area is given as robot_radius.
@@ -41,7 +40,7 @@ double steepest_down(const model::SensorMode& mode, const model::Mat3& R_robot_s
           break;
         case model::FovShape::cone: {
           const double polar = (v + 0.5) * fov.horizontal / 2;
-          const double around = 2 * u * kPi;
+          const double around = 2 * u * std::numbers::pi;
           direction = model::Vec3(std::cos(polar), std::sin(polar) * std::cos(around),
                                   std::sin(polar) * std::sin(around));
           break;
@@ -80,7 +79,8 @@ void set_footprint(const model::RobotBody& body, CostmapConfig& config) {
   const model::PolygonRadii radii = model::polygon_radii(hull);
   const double outer = radii.circumscribed;
   const bool round = body.footprint.empty() &&
-                     (!body.has_parts() || std::abs(model::signed_area(hull)) >= kRoundShare * kPi * outer * outer);
+                     (!body.has_parts() || std::abs(model::signed_area(hull)) >=
+                                               kRoundShare * std::numbers::pi * outer * outer);
   config.robot_radius = round && !body.has_parts() ? body.radius : outer;
   config.inscribed_radius = round && !body.has_parts() ? body.radius : radii.inscribed;
   if (!round) config.footprint = hull;

@@ -9,7 +9,7 @@ namespace rigdesign::filters {
 namespace {
 
 // Cells beyond this count make the dense grid too large: the cell grows instead.
-constexpr double kMaxCells = 16e6;
+constexpr double kMaxGridCells = 16e6;
 // The next query's pre-filter: the previous k-th squared distance times this. Wide enough that
 // a neighbour in cell order almost always has k survivors, narrow enough that few survive.
 constexpr float kBoundWidening = 1.6f;
@@ -37,7 +37,7 @@ NeighbourGrid::NeighbourGrid(const std::vector<model::Point3f>& points, double c
   cell_ = static_cast<float>(std::clamp(cell, double{std::numeric_limits<float>::min()}, widest));
   const Eigen::Array3d span = (high - low_).cast<double>();
   auto cells_per_axis = [&] { return (span / static_cast<double>(cell_)).floor() + 1.0; };
-  while (cells_per_axis().prod() > kMaxCells) cell_ *= 1.5f;
+  while (cells_per_axis().prod() > kMaxGridCells) cell_ *= 1.5f;
   dims_ = cells_per_axis().cast<int>();
   const std::size_t cells = static_cast<std::size_t>(dims_.x()) * dims_.y() * dims_.z();
   cell_start_.assign(cells + 1, 0);

@@ -10,7 +10,7 @@ namespace rigdesign::geometry {
 namespace {
 
 // Pieces of a line shorter than this [m or line parameter] are not tested on their own.
-constexpr double kPiece = 1e-12;
+constexpr double kShortestPiece = 1e-12;
 
 // Roots of the quadratic |c + t w|^2 - radius^2 = 0.
 void append_sphere_roots(const model::Vec3& c, const model::Vec3& w, double radius,
@@ -266,7 +266,7 @@ IntervalSet MountedFov::covered_along(const model::Vec3& start, const model::Vec
   for (const double cut : cuts) {
     if (cut <= previous) continue;
     const double next = std::min(cut, t_max);
-    if (next - previous > kPiece) {
+    if (next - previous > kShortestPiece) {
       const model::Vec3 mid = start + 0.5 * (previous + next) * direction;
       if (in_fov(R_sensor_robot_ * (mid - origin_)) &&
           !(may_be_occluded_ && body_->blocks(origin_, mid))) {

@@ -10,11 +10,6 @@ namespace {
 // voxel, well under the spacing of the sensors' end points at the cell's distances.
 constexpr double kSamplesPerVoxel = 4.0;
 
-void sort_unique(std::vector<costmap::VoxelKey>& keys) {
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-}
-
 }  // namespace
 
 costmap::VoxelKey VoxelLattice::key_at(const model::Vec3& p_world) const {
@@ -43,7 +38,7 @@ std::vector<costmap::VoxelKey> voxelise_surface(const model::TriangleMesh& mesh,
       }
     }
   }
-  sort_unique(keys);
+  costmap::sort_unique(keys);
   return keys;
 }
 

@@ -15,11 +15,6 @@ double ratio(std::size_t numerator, std::size_t denominator) {
                           : static_cast<double>(numerator) / static_cast<double>(denominator);
 }
 
-void sort_unique(std::vector<costmap::VoxelKey>& keys) {
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-}
-
 void require_same_size(std::size_t a, std::size_t b, const char* what) {
   if (a != b) throw std::invalid_argument(std::string(what) + ": the masks differ in size");
 }
@@ -67,8 +62,8 @@ Scores mean_scores(std::span<const Scores> frames) {
 
 ConfusionCounts compare_voxel_sets(std::vector<costmap::VoxelKey> predicted,
                                    std::vector<costmap::VoxelKey> truth) {
-  sort_unique(predicted);
-  sort_unique(truth);
+  costmap::sort_unique(predicted);
+  costmap::sort_unique(truth);
   std::vector<costmap::VoxelKey> common;
   std::set_intersection(predicted.begin(), predicted.end(), truth.begin(), truth.end(),
                         std::back_inserter(common));
@@ -91,9 +86,9 @@ ConfusionCounts compare_masks(std::span<const std::uint8_t> predicted,
 
 MissCauses split_misses(std::vector<costmap::VoxelKey> predicted,
                         std::vector<costmap::VoxelKey> truth, std::vector<costmap::VoxelKey> seen) {
-  sort_unique(predicted);
-  sort_unique(truth);
-  sort_unique(seen);
+  costmap::sort_unique(predicted);
+  costmap::sort_unique(truth);
+  costmap::sort_unique(seen);
   std::vector<costmap::VoxelKey> missed;
   std::set_difference(truth.begin(), truth.end(), predicted.begin(), predicted.end(),
                       std::back_inserter(missed));

@@ -2,6 +2,7 @@
 
 #include <cairo-svg.h>
 
+#include <memory>
 #include <stdexcept>
 
 #include "rigdesign/io/atomic_write.hpp"
@@ -35,23 +36,32 @@ void paint(cairo_surface_t* surface, const std::function<void(cairo_t*)>& draw) 
 
 void draw_to_file(const std::string& path, int width, int height,
                   const std::function<void(cairo_t*)>& draw) {
-  std::string bytes;
+  // Destroyed on every path, a throwing `draw` included.
+  using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
   if (ends_with(path, ".svg")) {
-    cairo_surface_t* surface =
-        cairo_svg_surface_create_for_stream(append_to_string, &bytes, width, height);
-    paint(surface, draw);
-    cairo_surface_finish(surface);
-    cairo_surface_destroy(surface);
-  } else {
-    cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
-    paint(surface, draw);
-    const cairo_status_t status =
-        cairo_surface_write_to_png_stream(surface, append_to_string, &bytes);
-    cairo_surface_destroy(surface);
-    if (status != CAIRO_STATUS_SUCCESS) {
-      throw std::runtime_error(std::string("PNG encoding failed: ") +
-                               cairo_status_to_string(status));
+    std::string bytes;
+    {
+      const Surface surface(
+          cairo_svg_surface_create_for_stream(append_to_string, &bytes, width, height),
+          cairo_surface_destroy);
+      paint(surface.get(), draw);
+      cairo_surface_finish(surface.get());
     }
+    io::write_file_atomically(path, bytes);
+    return;
+  }
+  const Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height),
+                        cairo_surface_destroy);
+  paint(surface.get(), draw);
+  write_surface_png(surface.get(), path);
+}
+
+void write_surface_png(cairo_surface_t* surface, const std::string& path) {
+  std::string bytes;
+  const cairo_status_t status =
+      cairo_surface_write_to_png_stream(surface, append_to_string, &bytes);
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error(std::string("PNG encoding failed: ") + cairo_status_to_string(status));
   }
   io::write_file_atomically(path, bytes);
 }

@@ -15,6 +15,10 @@ namespace rigdesign::render {
 void draw_to_file(const std::string& path, int width, int height,
                   const std::function<void(cairo_t*)>& draw);
 
+/// Encodes an image surface as PNG and writes it to `path` atomically; the caller keeps the
+/// surface. Throws std::runtime_error when cairo cannot encode it.
+void write_surface_png(cairo_surface_t* surface, const std::string& path);
+
 void set_colour(cairo_t* cairo, const Rgb& colour, double alpha = 1.0);
 
 enum class Anchor { left, centre, right };

@@ -5,17 +5,9 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "rigdesign/io/atomic_write.hpp"
+#include "cairo_canvas.hpp"
 
 namespace rigdesign::render {
-namespace {
-
-cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
-
-}  // namespace
 
 void write_png_rgba(const std::string& path, int width, int height,
                     const std::vector<std::uint8_t>& rgba) {
@@ -36,13 +28,13 @@ void write_png_rgba(const std::string& path, int width, int height,
     }
   }
   cairo_surface_mark_dirty(surface);
-  std::string png;
-  const cairo_status_t status = cairo_surface_write_to_png_stream(surface, append_to_string, &png);
-  cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS) {
-    throw std::runtime_error(std::string("PNG encoding failed: ") + cairo_status_to_string(status));
+  try {
+    write_surface_png(surface, path);
+  } catch (...) {
+    cairo_surface_destroy(surface);
+    throw;
   }
-  io::write_file_atomically(path, png);
+  cairo_surface_destroy(surface);
 }
 
 }  // namespace rigdesign::render

@@ -29,7 +29,7 @@ constexpr double kFrameMargin = 0.04;      // blank border, as a share of the fr
 constexpr double kDepthSlack = 1.0;        // [m] beyond the farthest vertex, for the clip box
 constexpr float kGridLineWidth = 1.0F;     // [output px]
 constexpr float kAxisLineWidth = 2.0F;     // [output px]
-constexpr Rgb kGridColour{0.80, 0.80, 0.80};
+constexpr Rgb kFloorGridColour{0.80, 0.80, 0.80};
 constexpr std::array<Rgb, 3> kAxisColours = {{{0.85, 0.10, 0.10},    // x red
                                               {0.10, 0.60, 0.10},    // y green
                                               {0.10, 0.20, 0.85}}};  // z blue
@@ -205,7 +205,7 @@ void set_up_pipeline(const Camera& camera, int width, int height) {
 void draw_floor_grid(double grid_half) {
   glDisable(GL_LIGHTING);
   glLineWidth(kGridLineWidth * kSupersample);
-  glColor3d(kGridColour.r, kGridColour.g, kGridColour.b);
+  glColor3d(kFloorGridColour.r, kFloorGridColour.g, kFloorGridColour.b);
   const int cells = static_cast<int>(std::floor(grid_half / kGridSpacing));
   glBegin(GL_LINES);
   for (int k = -cells; k <= cells; ++k) {

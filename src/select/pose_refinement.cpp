@@ -12,7 +12,7 @@
 namespace rigdesign::select {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kUnboundedMargin = std::numeric_limits<double>::infinity();
 // The compass search halves its steps from half a grid step down to 1/32 of one, and stops
 // after this many rigs at the latest.
 constexpr int kHalvings = 5;
@@ -57,7 +57,7 @@ struct RasterMargins::State {
                   const std::vector<geometry::SectionRaster>* replaced, std::size_t at,
                   std::vector<double>& out) const {
     for (const LocalSector& sector : over) {
-      double margin = kInfinity;
+      double margin = kUnboundedMargin;
       for (const std::size_t i : sector.angles) {
         geometry::SectionRaster seen(grids[i]);
         for (std::size_t m = 0; m < rasters.size(); ++m) {
@@ -149,7 +149,7 @@ std::vector<double> RasterMargins::sector_margins_with(std::size_t mount, const 
 namespace {
 
 double smallest(const std::vector<double>& margins) {
-  return margins.empty() ? kInfinity : margins.front();
+  return margins.empty() ? kUnboundedMargin : margins.front();
 }
 
 bool wider(const std::vector<double>& candidate, const std::vector<double>& incumbent) {

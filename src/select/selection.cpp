@@ -1,5 +1,6 @@
 #include "rigdesign/select/selection.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -25,7 +26,24 @@ bool meets_alone(const CatalogOption& option, const SatisficingTargets& targets)
   return true;
 }
 
+bool slot_allows(const model::MountingSlot& slot, const std::string& sensor_id) {
+  return std::find(slot.allowed_sensors.begin(), slot.allowed_sensors.end(), sensor_id) !=
+         slot.allowed_sensors.end();
+}
+
 }  // namespace
+
+std::size_t count_catalog_options(const model::Catalog& catalog) {
+  std::size_t count = 0;
+  for (const model::MountingSlot& slot : catalog.slots) {
+    std::size_t modes = 0;
+    for (const model::CandidateSensor& candidate : catalog.sensors) {
+      if (slot_allows(slot, candidate.sensor_id)) modes += candidate.mode_ids.size();
+    }
+    count += modes * slot.poses.size();
+  }
+  return count;
+}
 
 std::vector<model::SectorRequirement> robust_sectors(const SatisficingTargets& targets) {
   std::vector<model::SectorRequirement> sectors = targets.sectors;
@@ -114,10 +132,7 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
       mount.id = slot.id;
       mount.T_robot_sensor = slot.poses[p].T_robot_sensor;
       for (const model::CandidateSensor& candidate : catalog.sensors) {
-        if (std::find(slot.allowed_sensors.begin(), slot.allowed_sensors.end(),
-                      candidate.sensor_id) == slot.allowed_sensors.end()) {
-          continue;
-        }
+        if (!slot_allows(slot, candidate.sensor_id)) continue;
         const model::Sensor* sensor = library.find(candidate.sensor_id);
         for (const std::string& mode_id : candidate.mode_ids) {
           CatalogOption option;

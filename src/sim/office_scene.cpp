@@ -21,11 +21,11 @@ namespace {
 // high (a common office ceiling height).
 constexpr double kRoomLength = 8.0;
 constexpr double kRoomWidth = 6.0;
-constexpr double kWallHeight = 2.6;
-constexpr double kWallThickness = 0.1;
+constexpr double kOfficeWallHeight = 2.6;
+constexpr double kOfficeWallThickness = 0.1;
 
 // Robot [m]: on the room's centre line, 1.2 m from the back wall, facing +x into the room.
-constexpr double kRobotX = 1.2;
+constexpr double kOfficeRobotX = 1.2;
 
 // Furniture slots [m]: 3 x 3 slots of 1.8 m from x = 2.4 (1.2 m ahead of the robot) to the
 // far wall's 0.2 m aisle, and across y in [-2.7, 2.7] (0.3 m aisles along the side walls).
@@ -88,14 +88,16 @@ model::Pose3 place_in_slot(int slot, double half_x, double half_y, double yaw,
 void add_room(model::Scene& scene) {
   add_object(scene, "floor",
              floor_rectangle({{0, -kRoomWidth / 2}, {kRoomLength, kRoomWidth / 2}}, 0));
-  const double t = kWallThickness;
+  const double t = kOfficeWallThickness;
   const double y = kRoomWidth / 2;
   // The side walls run past the end walls so the corners are closed.
-  add_object(scene, "wall_back", aligned_box({-t, -y, 0}, {0, y, kWallHeight}));
+  add_object(scene, "wall_back", aligned_box({-t, -y, 0}, {0, y, kOfficeWallHeight}));
   add_object(scene, "wall_front",
-             aligned_box({kRoomLength, -y, 0}, {kRoomLength + t, y, kWallHeight}));
-  add_object(scene, "wall_left", aligned_box({-t, y, 0}, {kRoomLength + t, y + t, kWallHeight}));
-  add_object(scene, "wall_right", aligned_box({-t, -y - t, 0}, {kRoomLength + t, -y, kWallHeight}));
+             aligned_box({kRoomLength, -y, 0}, {kRoomLength + t, y, kOfficeWallHeight}));
+  add_object(scene, "wall_left",
+             aligned_box({-t, y, 0}, {kRoomLength + t, y + t, kOfficeWallHeight}));
+  add_object(scene, "wall_right",
+             aligned_box({-t, -y - t, 0}, {kRoomLength + t, -y, kOfficeWallHeight}));
 }
 
 }  // namespace
@@ -103,7 +105,7 @@ void add_room(model::Scene& scene) {
 model::Scene make_office_scene(std::uint64_t seed) {
   model::Scene scene;
   scene.name = "office";
-  scene.T_world_robot = floor_pose(kRobotX, 0, 0);
+  scene.T_world_robot = floor_pose(kOfficeRobotX, 0, 0);
   add_room(scene);
 
   std::mt19937_64 rng(seed);

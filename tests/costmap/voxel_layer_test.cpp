@@ -32,7 +32,8 @@ costmap::VoxelLayerParams band() {
   return params;
 }
 
-model::PointCloud cloud_from(const model::Point3f& origin, std::vector<model::Point3f> points) {
+model::PointCloud cloud_seen_from(const model::Point3f& origin,
+                                  std::vector<model::Point3f> points) {
   model::PointCloud cloud;
   cloud.origin = origin;
   cloud.points = std::move(points);
@@ -77,7 +78,7 @@ std::set<std::array<int, 3>> voxels_crossed(const model::Vec3& a, const model::V
 TEST_CASE("the voxel layer clears a ray's voxels and marks its end voxel", "[costmap]") {
   costmap::VoxelLayer layer(unit_window(), band());
   // Along +x in row y = 5, layer z = 2: from voxel 0 to voxel 7.
-  const model::PointCloud cloud = cloud_from({0.05f, 0.55f, 0.25f}, {{0.75f, 0.55f, 0.25f}});
+  const model::PointCloud cloud = cloud_seen_from({0.05f, 0.55f, 0.25f}, {{0.75f, 0.55f, 0.25f}});
   layer.insert(observe(cloud));
   using S = costmap::VoxelState;
   CHECK(row_states(layer, 5, 2) == std::vector<S>{S::free, S::free, S::free, S::free, S::free,
@@ -95,7 +96,7 @@ TEST_CASE("the voxel walk visits exactly the voxels a segment crosses", "[costma
     costmap::VoxelLayer layer(unit_window(), band());
     const model::Vec3 a(xy(rng), xy(rng), z(rng));
     const model::Vec3 b(xy(rng), xy(rng), z(rng));
-    const model::PointCloud cloud = cloud_from(a.cast<float>(), {b.cast<float>()});
+    const model::PointCloud cloud = cloud_seen_from(a.cast<float>(), {b.cast<float>()});
     costmap::CloudObservation observation = observe(cloud);
     observation.source.marking = false;
     observation.source.raytrace_max_range = 10.0;
@@ -120,12 +121,13 @@ TEST_CASE("a cloud cannot clear its own new marks: clear every ray, then mark", 
   // The ray to the far point (voxel 7) passes through the near point's voxel 3; the near
   // point comes first, so marking point by point would let the far ray erase it.
   const model::PointCloud both =
-      cloud_from({0.05f, 0.55f, 0.25f}, {{0.35f, 0.55f, 0.25f}, {0.75f, 0.55f, 0.25f}});
+      cloud_seen_from({0.05f, 0.55f, 0.25f}, {{0.35f, 0.55f, 0.25f}, {0.75f, 0.55f, 0.25f}});
   layer.insert(observe(both));
   CHECK(layer.grid().state(3, 5, 2) == costmap::VoxelState::occupied);
   CHECK(layer.grid().state(7, 5, 2) == costmap::VoxelState::occupied);
   // A later cloud whose ray crosses voxel 3 clears it: marks only outlive their own cloud.
-  const model::PointCloud far_only = cloud_from({0.05f, 0.55f, 0.25f}, {{0.75f, 0.55f, 0.25f}});
+  const model::PointCloud far_only =
+      cloud_seen_from({0.05f, 0.55f, 0.25f}, {{0.75f, 0.55f, 0.25f}});
   layer.insert(observe(far_only));
   CHECK(layer.grid().state(3, 5, 2) == costmap::VoxelState::free);
   CHECK(layer.grid().state(7, 5, 2) == costmap::VoxelState::occupied);
@@ -134,7 +136,7 @@ TEST_CASE("a cloud cannot clear its own new marks: clear every ray, then mark", 
 TEST_CASE("ranges and the height band limit marking and clearing", "[costmap]") {
   costmap::VoxelLayer layer(unit_window(), band());
   const model::PointCloud cloud =
-      cloud_from({0.05f, 0.55f, 0.25f}, {{0.95f, 0.55f, 0.25f}, {0.05f, 0.25f, 0.02f}});
+      cloud_seen_from({0.05f, 0.55f, 0.25f}, {{0.95f, 0.55f, 0.25f}, {0.05f, 0.25f, 0.02f}});
   costmap::CloudObservation observation = observe(cloud);
   observation.source.obstacle_max_range = 0.5;    // the far point (0.9 m away) does not mark
   observation.source.raytrace_max_range = 0.62;   // clearing stops at x = 0.67, in voxel 6
@@ -185,12 +187,12 @@ TEST_CASE("the 2D obstacle layer clears under a ray that passes over a low obsta
   costmap::ObstacleLayer layer(unit_window(), costmap::ObstacleLayerParams{true});
   // A low camera marks the foam edge at x = 0.35; then a lidar at 1 m sees the wall at
   // x = 0.75 over it: in 2D its ray crosses the foam's cell and clears it.
-  const model::PointCloud camera = cloud_from({0.05f, 0.55f, 0.3f}, {{0.35f, 0.55f, 0.4f}});
+  const model::PointCloud camera = cloud_seen_from({0.05f, 0.55f, 0.3f}, {{0.35f, 0.55f, 0.4f}});
   layer.update(std::vector<costmap::CloudObservation>{observe(camera)});
   CHECK(layer.grid().at(3, 5) == costmap::cost::kLethal);
   CHECK(layer.grid().at(1, 5) == costmap::cost::kFree);
   CHECK(layer.grid().at(5, 5) == costmap::cost::kUnknown);
-  const model::PointCloud lidar = cloud_from({0.05f, 0.55f, 1.0f}, {{0.75f, 0.55f, 1.0f}});
+  const model::PointCloud lidar = cloud_seen_from({0.05f, 0.55f, 1.0f}, {{0.75f, 0.55f, 1.0f}});
   layer.update(std::vector<costmap::CloudObservation>{observe(lidar)});
   CHECK(layer.grid().at(3, 5) == costmap::cost::kFree);
   CHECK(layer.grid().at(7, 5) == costmap::cost::kLethal);
@@ -204,7 +206,7 @@ TEST_CASE("the 2D obstacle layer clears under a ray that passes over a low obsta
 
 TEST_CASE("observations in the robot frame are placed by T_world_cloud", "[costmap]") {
   costmap::VoxelLayer layer(unit_window(), band());
-  const model::PointCloud robot_frame = cloud_from({0.0f, 0.0f, 0.25f}, {{0.3f, 0.0f, 0.25f}});
+  const model::PointCloud robot_frame = cloud_seen_from({0.0f, 0.0f, 0.25f}, {{0.3f, 0.0f, 0.25f}});
   costmap::CloudObservation observation = observe(robot_frame);
   // Robot at (0.55, 0.15) facing +y: the point 0.3 m ahead lands at (0.55, 0.45, 0.25).
   observation.T_world_cloud =

@@ -14,7 +14,7 @@ using namespace rigdesign;
 using namespace rigdesign::test;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180;
+constexpr double kRadiansPerDegree = std::numbers::pi / 180;
 }  // namespace
 
 TEST_CASE("self-filters: a scanner on a bracket sees the face behind it", "[deploy]") {
@@ -31,12 +31,12 @@ TEST_CASE("self-filters: a scanner on a bracket sees the face behind it", "[depl
     CHECK(filter.rays == 1452);
     CHECK(std::abs(filter.body_hits - 1452 / 4) <= 2);
     REQUIRE(filter.bands.size() == 2);
-    const double step = 0.248 * kDeg;
+    const double step = 0.248 * kRadiansPerDegree;
     // Bands reach half a step past the outermost hit rays; -135 and 135 deg are their inner
     // ends, -180 and 180 deg (and a little beyond) the outer ones.
     CHECK(filter.bands[0].lower < -std::numbers::pi + 1e-12);
-    CHECK(filter.bands[0].upper == Approx(-135 * kDeg).margin(step));
-    CHECK(filter.bands[1].lower == Approx(135 * kDeg).margin(step));
+    CHECK(filter.bands[0].upper == Approx(-135 * kRadiansPerDegree).margin(step));
+    CHECK(filter.bands[1].lower == Approx(135 * kRadiansPerDegree).margin(step));
     CHECK(filter.bands[1].upper > std::numbers::pi - step);
   }
 }
@@ -66,7 +66,7 @@ mounts:
   // 1800 columns of 0.2 deg, 5 of the 16 beams hit.
   CHECK(filter.body_hits == 5 * 1800);
   REQUIRE(filter.boxes.size() == 1);
-  const double reach = 0.2 / std::tan(7 * kDeg);
+  const double reach = 0.2 / std::tan(7 * kRadiansPerDegree);
   CHECK(reach == Approx(1.6289).epsilon(1e-4));
   CHECK(filter.padding == Approx(0.09));
   CHECK(filter.boxes[0].max.x() == Approx(reach + 0.09).margin(1e-6));

@@ -9,6 +9,8 @@
 #include <functional>
 
 #include "rigdesign/model/input_error.hpp"
+#include "support/box_mesh.hpp"
+#include "support/input_errors.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;
@@ -18,16 +20,6 @@ namespace {
 
 const model::Vec3& corner(const model::TriangleMesh& mesh, int index) {
   return mesh.vertices.at(static_cast<std::size_t>(index));
-}
-
-double total_area(const model::TriangleMesh& mesh) {
-  double area = 0;
-  for (const auto& t : mesh.triangles) {
-    area += 0.5 * (corner(mesh, t[1]) - corner(mesh, t[0]))
-                      .cross(corner(mesh, t[2]) - corner(mesh, t[0]))
-                      .norm();
-  }
-  return area;
 }
 
 // Divergence theorem: positive when every face winds counter-clockwise seen from outside.
@@ -49,7 +41,7 @@ const int kCubeQuads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
 void check_unit_cube(const model::TriangleMesh& mesh) {
   CHECK(mesh.vertices.size() == 8);
   CHECK(mesh.triangles.size() == 12);
-  CHECK(total_area(mesh) == Approx(6.0));
+  CHECK(test::surface_area(mesh) == Approx(6.0));
   CHECK(signed_volume(mesh) == Approx(1.0));
 }
 
@@ -61,20 +53,10 @@ std::string bytes_of(T value) {
 }
 
 // The InputError message `load` throws, or "" when it throws none.
-std::string error_of(const std::function<void()>& load) {
-  try {
-    load();
-  } catch (const model::InputError& error) {
-    UNSCOPED_INFO(error.what());  // shown when a check on it fails
-    return error.what();
-  }
-  return "";
-}
-
 std::string load_error(const TempFolder& folder, const std::string& name,
                        const std::string& contents) {
   const std::string path = folder.write(name, contents);
-  return error_of([&] { io::load_mesh(path); });
+  return test::input_error_of([&] { io::load_mesh(path); });
 }
 
 std::string cube_ply_ascii_header() {
@@ -182,7 +164,7 @@ TEST_CASE("polygons are split into a fan around their first corner", "[mesh_scen
   CHECK(pentagon.triangles[1] == std::array<int, 3>{0, 2, 3});
   CHECK(pentagon.triangles[2] == std::array<int, 3>{0, 3, 4});
   // Shoelace area of the (convex) pentagon: (0 + 2 + 5 + 3 + 0) / 2 = 5 m^2.
-  CHECK(total_area(pentagon) == Approx(5.0));
+  CHECK(test::surface_area(pentagon) == Approx(5.0));
 }
 
 TEST_CASE("negative OBJ indices count back from the latest vertex", "[mesh_scene]") {
@@ -196,7 +178,7 @@ TEST_CASE("negative OBJ indices count back from the latest vertex", "[mesh_scene
   const model::TriangleMesh mesh = io::load_mesh(folder.write("cube.obj", text));
   CHECK(mesh.vertices.size() == 24);
   CHECK(mesh.triangles.size() == 12);
-  CHECK(total_area(mesh) == Approx(6.0));
+  CHECK(test::surface_area(mesh) == Approx(6.0));
   CHECK(signed_volume(mesh) == Approx(1.0));
   CHECK(mesh.triangles[2] == std::array<int, 3>{4, 5, 6});  // second quad: vertices 5..8
 }
@@ -290,7 +272,7 @@ TEST_CASE("bad mesh files name the file, line, column and field", "[mesh_scene]"
           0);
   }
   SECTION("a missing file") {
-    const std::string message = error_of([&] { io::load_mesh(dir + "absent.obj"); });
+    const std::string message = test::input_error_of([&] { io::load_mesh(dir + "absent.obj"); });
     CHECK(message.find(dir + "absent.obj: file: cannot be opened") == 0);
   }
 }

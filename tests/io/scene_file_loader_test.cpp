@@ -8,7 +8,9 @@
 #include <numbers>
 
 #include "rigdesign/model/input_error.hpp"
+#include "support/box_mesh.hpp"
 #include "support/cli_runner.hpp"
+#include "support/input_errors.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;
@@ -21,17 +23,6 @@ const std::string kCubeObj =
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
     "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 1 5 8 4\nf 2 3 7 6\n";
 
-double total_area(const model::TriangleMesh& mesh) {
-  double area = 0;
-  for (const auto& t : mesh.triangles) {
-    const model::Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
-    const model::Vec3& b = mesh.vertices[static_cast<std::size_t>(t[1])];
-    const model::Vec3& c = mesh.vertices[static_cast<std::size_t>(t[2])];
-    area += 0.5 * (b - a).cross(c - a).norm();
-  }
-  return area;
-}
-
 // Heading [deg] of a pose's x axis about +z.
 double yaw_deg(const model::Pose3& T) {
   const model::Vec3 x_axis = T.linear().col(0);
@@ -42,16 +33,6 @@ void check_position(const model::Pose3& T, double x, double y, double z) {
   CHECK(T.translation().x() == Approx(x).margin(1e-12));
   CHECK(T.translation().y() == Approx(y).margin(1e-12));
   CHECK(T.translation().z() == Approx(z).margin(1e-12));
-}
-
-std::string error_of(const std::function<void()>& load) {
-  try {
-    load();
-  } catch (const model::InputError& error) {
-    UNSCOPED_INFO(error.what());  // shown when a check on it fails
-    return error.what();
-  }
-  return "";
 }
 
 // A scene file with the cube mesh beside it; `moving` is the body of one moving object.
@@ -80,8 +61,8 @@ static:
   const model::TriangleMesh& big = scene.objects[0].mesh;
   CHECK(scene.objects[0].name == "big");
   CHECK((big.vertices[1] - model::Vec3(1, 4, 0)).norm() < 1e-12);
-  CHECK(total_area(big) == Approx(24.0));  // 6 faces of 2 x 2 m
-  CHECK(total_area(scene.objects[1].mesh) == Approx(6.0));
+  CHECK(test::surface_area(big) == Approx(24.0));  // 6 faces of 2 x 2 m
+  CHECK(test::surface_area(scene.objects[1].mesh) == Approx(6.0));
   check_position(scene.T_world_robot, 1, 2, 0);
   CHECK(yaw_deg(scene.T_world_robot) == Approx(90));
 }
@@ -175,7 +156,7 @@ TEST_CASE("the bundled lab scene loads with its room, table and two walkers", "[
   CHECK(scene.objects[0].name == "room");
   CHECK(scene.objects[1].name == "table");
   // Room: 6 x 4 m floor and walls 2.5 m high around 20 m of perimeter, no ceiling.
-  CHECK(total_area(scene.objects[0].mesh) == Approx(6 * 4 + 20 * 2.5));
+  CHECK(test::surface_area(scene.objects[0].mesh) == Approx(6 * 4 + 20 * 2.5));
   // Every part of the scene stays inside the room at any time of the loops.
   for (double t = 0; t < 30; t += 0.5) {
     model::Vec2 farthest = model::Vec2::Zero();
@@ -192,7 +173,7 @@ TEST_CASE("bad scene files name the file, line, column and field", "[mesh_scene]
   TempFolder folder;
   const std::string yaml = folder.path() + "/scene.yaml";
   const auto error_with = [&](const std::string& moving) {
-    return error_of([&] { io::load_scene_file(scene_with_moving(folder, moving)); });
+    return test::input_error_of([&] { io::load_scene_file(scene_with_moving(folder, moving)); });
   };
   SECTION("waypoint times not increasing") {
     const std::string message = error_with(R"(    trajectory:
@@ -220,7 +201,7 @@ TEST_CASE("bad scene files name the file, line, column and field", "[mesh_scene]
   SECTION("a mesh file that does not exist") {
     const std::string path =
         folder.write("scene.yaml", "name: t\nstatic:\n  - name: room\n    mesh: rooms/room.obj\n");
-    const std::string message = error_of([&] { io::load_scene_file(path); });
+    const std::string message = test::input_error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(yaml + ":4:11: static[0].mesh: file '") == 0);
     CHECK(message.find("does not exist") != std::string::npos);
   }
@@ -228,14 +209,14 @@ TEST_CASE("bad scene files name the file, line, column and field", "[mesh_scene]
     folder.write("room.stl", "solid\n");
     const std::string path =
         folder.write("scene.yaml", "name: t\nstatic:\n  - {name: room, mesh: room.stl}\n");
-    const std::string message = error_of([&] { io::load_scene_file(path); });
+    const std::string message = test::input_error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(yaml + ":3:24: static[0].mesh: 'room.stl' is not a mesh file") == 0);
   }
   SECTION("a problem inside the mesh names the mesh file's line") {
     folder.write("room.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
     const std::string path =
         folder.write("scene.yaml", "name: t\nstatic:\n  - {name: room, mesh: room.obj}\n");
-    const std::string message = error_of([&] { io::load_scene_file(path); });
+    const std::string message = test::input_error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(folder.path() + "/room.obj:4:7: f: refers to vertex 4") == 0);
   }
   SECTION("duplicate names and unknown fields are all reported") {
@@ -245,14 +226,14 @@ static:
   - {name: a, mesh: cube.obj}
   - {name: a, mesh: cube.obj, colour: red}
 )");
-    const std::string message = error_of([&] { io::load_scene_file(path); });
+    const std::string message = test::input_error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(yaml + ":4:12: static[1].name: duplicate object name 'a'") !=
           std::string::npos);
     CHECK(message.find(yaml + ":4:31: static[1].colour: unknown field") != std::string::npos);
   }
   SECTION("a scene without objects") {
     const std::string path = folder.write("scene.yaml", "name: t\nstatic: []\n");
-    const std::string message = error_of([&] { io::load_scene_file(path); });
+    const std::string message = test::input_error_of([&] { io::load_scene_file(path); });
     CHECK(message.find(yaml + ":2:9: static: the scene has no objects") == 0);
   }
 }

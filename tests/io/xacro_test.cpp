@@ -29,7 +29,7 @@ std::string text(const std::string& expression, const std::map<std::string, Valu
   return io::xacro::to_text(eval(expression, names));
 }
 
-std::string error_of(const std::function<void()>& run) {
+std::string first_error_of(const std::function<void()>& run) {
   try {
     run();
   } catch (const model::InputError& error) {
@@ -157,7 +157,7 @@ TEST_CASE("the expander: properties, macros with blocks, conditions, includes, a
     request.args = {{"side", "right"}};
     request.environment = {{"WITH_MISSING_ACCESSORY", "1"}};
     // The accessory's include is now opened, and its package does not exist.
-    const std::string message = error_of([&] { io::load_robot_description(request); });
+    const std::string message = first_error_of([&] { io::load_robot_description(request); });
     CHECK(message.find("robot.urdf.xacro:15") != std::string::npos);
     CHECK(message.find("package 'package_nobody_has' not found") != std::string::npos);
     request.environment.clear();
@@ -256,7 +256,7 @@ TEST_CASE("ROS's xacro is used when it is on PATH, with the rig's arguments and 
     folder.write("bin/xacro",
                  "#!/bin/sh\necho 'undefined substitution argument gazebo' >&2\nexit 2\n");
     std::filesystem::permissions(script, std::filesystem::perms::owner_all);
-    const std::string message = error_of([&] { run(); });
+    const std::string message = first_error_of([&] { run(); });
     CHECK(message.find("undefined substitution argument gazebo") != std::string::npos);
   }
   SECTION("expander: builtin ignores it") {

@@ -21,8 +21,6 @@ using Catch::Matchers::WithinRel;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 model::SensorMode pyramid_mode(double horizontal_deg, double vertical_deg, double min_range,
                                double max_range) {
   model::SensorMode mode;
@@ -147,8 +145,8 @@ TEST_CASE("a pyramid FOV mesh stays inside its angles and range, far cap at the 
 TEST_CASE("a 360-degree band mesh reaches both elevation limits all round") {
   const model::SensorMode vlp16 = band_mode(model::FovShape::band, 360, -15, 15, 0.9, 100);
   const model::TriangleMesh mesh = render::fov_mesh(vlp16, model::Pose3::Identity(), 4.0);
-  double lowest = kPi;
-  double highest = -kPi;
+  double lowest = std::numbers::pi;
+  double highest = -std::numbers::pi;
   int behind = 0;
   for (const model::Vec3& q : mesh.vertices) {
     const double elevation = std::asin(q.z() / q.norm());
@@ -168,7 +166,8 @@ TEST_CASE("FOV mesh volumes match the spherical-shell sectors they tessellate") 
     const double half_apex = model::deg_to_rad(30);
     const model::TriangleMesh mesh =
         render::fov_mesh(cone_mode(60, 0.0, 2.0), T_robot_sensor, 10.0);
-    const double exact = shell_sector_volume(2 * kPi * (1 - std::cos(half_apex)), 0.0, 2.0);
+    const double exact =
+        shell_sector_volume(2 * std::numbers::pi * (1 - std::cos(half_apex)), 0.0, 2.0);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
@@ -176,7 +175,8 @@ TEST_CASE("FOV mesh volumes match the spherical-shell sectors they tessellate") 
     const double half_apex = model::deg_to_rad(45);
     const model::TriangleMesh mesh =
         render::fov_mesh(cone_mode(90, 0.3, 2.5), T_robot_sensor, 10.0);
-    const double exact = shell_sector_volume(2 * kPi * (1 - std::cos(half_apex)), 0.3, 2.5);
+    const double exact =
+        shell_sector_volume(2 * std::numbers::pi * (1 - std::cos(half_apex)), 0.3, 2.5);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
@@ -184,7 +184,8 @@ TEST_CASE("FOV mesh volumes match the spherical-shell sectors they tessellate") 
     const model::TriangleMesh mesh = render::fov_mesh(
         band_mode(model::FovShape::band, 360, -15, 15, 0.9, 100), T_robot_sensor, 4.0);
     const double exact = shell_sector_volume(
-        2 * kPi * (std::sin(model::deg_to_rad(15)) - std::sin(model::deg_to_rad(-15))), 0.9, 4.0);
+        2 * std::numbers::pi * (std::sin(model::deg_to_rad(15)) - std::sin(model::deg_to_rad(-15))),
+        0.9, 4.0);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
@@ -192,7 +193,7 @@ TEST_CASE("FOV mesh volumes match the spherical-shell sectors they tessellate") 
     const model::TriangleMesh mesh = render::fov_mesh(
         band_mode(model::FovShape::band, 360, -30, 90, 0.0, 3.0), T_robot_sensor, 10.0);
     const double exact =
-        shell_sector_volume(2 * kPi * (1 - std::sin(model::deg_to_rad(-30))), 0, 3.0);
+        shell_sector_volume(2 * std::numbers::pi * (1 - std::sin(model::deg_to_rad(-30))), 0, 3.0);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
@@ -224,7 +225,7 @@ TEST_CASE("body meshes are closed prisms with the body's volume") {
   SECTION("cylinder") {
     const model::TriangleMesh mesh = geometry::body_mesh(cylinder_body(0.45, 1.2));
     CHECK(is_closed_and_oriented(mesh));
-    CHECK_THAT(enclosed_volume(mesh), WithinRel(kPi * 0.45 * 0.45 * 1.2, 0.01));
+    CHECK_THAT(enclosed_volume(mesh), WithinRel(std::numbers::pi * 0.45 * 0.45 * 1.2, 0.01));
   }
   SECTION("rectangle footprint, exactly") {
     model::RobotBody body;

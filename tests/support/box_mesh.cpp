@@ -13,4 +13,15 @@ model::TriangleMesh box_mesh(const model::Vec3& low, const model::Vec3& high) {
   return mesh;
 }
 
+double surface_area(const model::TriangleMesh& mesh) {
+  double area = 0;
+  for (const auto& t : mesh.triangles) {
+    const model::Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
+    const model::Vec3& b = mesh.vertices[static_cast<std::size_t>(t[1])];
+    const model::Vec3& c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return area;
+}
+
 }  // namespace rigdesign::test

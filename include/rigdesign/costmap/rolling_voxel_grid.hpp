@@ -21,6 +21,9 @@ struct VoxelKey {
   friend auto operator<=>(const VoxelKey&, const VoxelKey&) = default;
 };
 
+/// Sorts `keys` and drops repeats: voxel sets are kept as sorted vectors.
+void sort_unique(std::vector<VoxelKey>& keys);
+
 class RollingVoxelGrid {
  public:
   RollingVoxelGrid() = default;

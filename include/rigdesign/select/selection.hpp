@@ -41,6 +41,10 @@ struct CatalogOption {
   std::shared_ptr<const std::vector<geometry::SectionRaster>> sections;  ///< per angle of the space
 };
 
+/// How many options a catalog gives: per slot, its poses times the modes of the sensors it
+/// allows. Known before any rasterising, so `select` can bound the work it is about to do.
+std::size_t count_catalog_options(const model::Catalog& catalog);
+
 /// Every option of a catalog rasterised once; searches for different requirements reuse it.
 class SelectionSpace {
  public:

@@ -61,7 +61,7 @@ void read_ascii_points(const std::string& path, LineCursor& cursor, const AsciiL
       if (!is_number) {
         throw_data_error(
             path, cursor.line_number(),
-            which + ": " + layout.value_names[i] + " is " + quoted(words[i]) + ", not a number",
+            which + ": " + layout.value_names[i] + " is " + quote_word(words[i]) + ", not a number",
             expected);
       }
     }

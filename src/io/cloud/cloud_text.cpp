@@ -91,7 +91,7 @@ std::string format_float(float value) {
   return std::string(buffer, end);
 }
 
-std::string quoted(std::string_view word) {
+std::string quote_word(std::string_view word) {
   std::string text = "'";
   for (std::size_t i = 0; i < word.size() && i < kLongestQuotedWord; ++i) {
     const unsigned char c = static_cast<unsigned char>(word[i]);

@@ -51,7 +51,7 @@ std::string format_float(float value);
 
 /// `word` in quotes for a message, cut to a readable length, with unprintable bytes shown as
 /// '?' (a binary file handed over as a header shows up as garbage otherwise).
-std::string quoted(std::string_view word);
+std::string quote_word(std::string_view word);
 
 /// Throws InputError for a header problem at `line` (column 1) of `path`; `field` is the
 /// header keyword concerned.

@@ -48,7 +48,7 @@ RawHeader read_keyword_lines(const std::string& path, std::string_view bytes) {
     const std::string keyword(words[0]);
     if (std::find(kKeywords.begin(), kKeywords.end(), keyword) == kKeywords.end()) {
       throw_header_error(path, cursor.line_number(), "header",
-                         "unknown keyword " + quoted(words[0]), kKeywordList);
+                         "unknown keyword " + quote_word(words[0]), kKeywordList);
     }
     if (raw.has(keyword)) {
       throw_header_error(
@@ -116,15 +116,15 @@ std::vector<PcdField> read_fields(const RawHeader& raw) {
   for (std::size_t i = 0; i < n; ++i) {
     PcdField& field = fields[i];
     field.name = names.values[i];
-    const std::string which = " of field " + quoted(field.name);
+    const std::string which = " of field " + quote_word(field.name);
     const auto size = parse_count(sizes[i]);
     if (!size || *size == 0) {
       throw_header_error(raw.path, size_line.line, "SIZE",
-                         quoted(sizes[i]) + which + " is not a size", "1, 2, 4 or 8 bytes");
+                         quote_word(sizes[i]) + which + " is not a size", "1, 2, 4 or 8 bytes");
     }
     if (types[i].size() != 1 || std::string("FIU").find(types[i][0]) == std::string::npos) {
       throw_header_error(raw.path, type_line.line, "TYPE",
-                         quoted(types[i]) + which + " is not a type", "F, I or U");
+                         quote_word(types[i]) + which + " is not a type", "F, I or U");
     }
     if (!valid_size_for_type(types[i][0], *size)) {
       throw_header_error(raw.path, type_line.line, "TYPE",
@@ -134,7 +134,8 @@ std::vector<PcdField> read_fields(const RawHeader& raw) {
     const auto count = parse_count(counts[i]);
     if (!count || *count == 0) {
       throw_header_error(raw.path, count_line ? count_line->line : names.line, "COUNT",
-                         quoted(counts[i]) + which + " is not a positive count", "an integer >= 1");
+                         quote_word(counts[i]) + which + " is not a positive count",
+                         "an integer >= 1");
     }
     field.size = *size;
     field.type = types[i][0];
@@ -164,7 +165,7 @@ std::array<std::size_t, 3> find_xyz(const RawHeader& raw, const std::vector<PcdF
     for (std::size_t j = 0; j < i; ++j) {
       if (fields[i].name == fields[j].name && fields[i].name != "_") {
         throw_header_error(raw.path, names.line, "FIELDS",
-                           "names field " + quoted(fields[i].name) + " twice",
+                           "names field " + quote_word(fields[i].name) + " twice",
                            "distinct field names");
       }
     }
@@ -208,7 +209,7 @@ void read_viewpoint(const RawHeader& raw, PcdHeader& header) {
     const auto value = parse_float(entry.values[i]);
     if (!value || !std::isfinite(*value)) {
       throw_header_error(raw.path, entry.line, "VIEWPOINT",
-                         quoted(entry.values[i]) + " is not a finite number", expected);
+                         quote_word(entry.values[i]) + " is not a finite number", expected);
     }
     values[i] = *value;
   }
@@ -227,7 +228,7 @@ PcdEncoding read_encoding(const RawHeader& raw) {
   if (value == "binary") return PcdEncoding::binary;
   if (value == "binary_compressed") return PcdEncoding::binary_compressed;
   throw_header_error(raw.path, entry.line, "DATA",
-                     value.empty() ? "needs one encoding" : "unknown encoding " + quoted(value),
+                     value.empty() ? "needs one encoding" : "unknown encoding " + quote_word(value),
                      "DATA ascii, binary or binary_compressed");
 }
 

@@ -54,7 +54,7 @@ class HeaderParser {
       } else if (keyword == "property") {
         read_property(words);
       } else if (keyword != "obj_info") {
-        fail("header", "unknown keyword " + quoted(keyword), kKeywordList);
+        fail("header", "unknown keyword " + quote_word(keyword), kKeywordList);
       }
     }
     fail("end_header", "the header ends without an end_header line", "end_header");
@@ -84,7 +84,7 @@ class HeaderParser {
     } else if (words[1] == "binary_big_endian") {
       fail("format", "binary_big_endian is not supported", expected);
     } else {
-      fail("format", "unknown encoding " + quoted(words[1]), expected);
+      fail("format", "unknown encoding " + quote_word(words[1]), expected);
     }
     has_format_ = true;
   }
@@ -112,7 +112,7 @@ class HeaderParser {
 
   PlyScalar scalar(std::string_view name) const {
     const auto type = scalar_named(name);
-    if (!type) fail("property", "unknown type " + quoted(name), kTypeList);
+    if (!type) fail("property", "unknown type " + quote_word(name), kTypeList);
     return *type;
   }
 
@@ -166,13 +166,13 @@ class HeaderParser {
       if (property.is_list) {
         throw_header_error(
             path_, property.line, "property",
-            "list property " + quoted(property.name) + " in element vertex is not supported",
+            "list property " + quote_word(property.name) + " in element vertex is not supported",
             "scalar vertex properties");
       }
       for (std::size_t j = 0; j < i; ++j) {
         if (properties[j].name == property.name) {
           throw_header_error(path_, property.line, "property",
-                             "vertex property " + quoted(property.name) + " is given twice",
+                             "vertex property " + quote_word(property.name) + " is given twice",
                              "distinct property names");
         }
       }

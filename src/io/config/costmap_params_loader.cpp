@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "io/config/field_checks.hpp"
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/polygon_area.hpp"
@@ -36,18 +37,6 @@ void ignore(MapReader& m, const std::vector<std::string>& keys) {
   for (const std::string& key : keys) m.has(key);  // asking marks a key as known
 }
 
-void read(MapReader& m, const std::string& key, double& value, const std::string& expected) {
-  if (const auto v = m.number(key, Need::optional, expected)) value = *v;
-}
-
-void read(MapReader& m, const std::string& key, bool& value) {
-  if (const auto v = m.boolean(key, Need::optional)) value = *v;
-}
-
-void read(MapReader& m, const std::string& key, int& value, const std::string& expected) {
-  if (const auto v = m.integer(key, Need::optional, expected)) value = *v;
-}
-
 // nav2 writes `observation_sources: front_camera top_lidar`; a YAML list is taken too.
 std::vector<std::string> source_names(MapReader& m) {
   const YAML::Node node = m.node("observation_sources");
@@ -65,12 +54,12 @@ std::vector<std::string> source_names(MapReader& m) {
 }
 
 costmap::ObservationSource read_source(MapReader& m, costmap::ObservationSource source) {
-  read(m, "marking", source.marking);
-  read(m, "clearing", source.clearing);
-  read(m, "obstacle_min_range", source.obstacle_min_range, kMetres);
-  read(m, "obstacle_max_range", source.obstacle_max_range, kMetres);
-  read(m, "raytrace_min_range", source.raytrace_min_range, kMetres);
-  read(m, "raytrace_max_range", source.raytrace_max_range, kMetres);
+  read_if_present(m, "marking", source.marking);
+  read_if_present(m, "clearing", source.clearing);
+  read_if_present(m, "obstacle_min_range", source.obstacle_min_range, kMetres);
+  read_if_present(m, "obstacle_max_range", source.obstacle_max_range, kMetres);
+  read_if_present(m, "raytrace_min_range", source.raytrace_min_range, kMetres);
+  read_if_present(m, "raytrace_max_range", source.raytrace_max_range, kMetres);
   for (const auto& [key, value] :
        {std::pair<const char*, double>{"obstacle_min_range", source.obstacle_min_range},
         {"obstacle_max_range", source.obstacle_max_range},
@@ -78,8 +67,8 @@ costmap::ObservationSource read_source(MapReader& m, costmap::ObservationSource 
         {"raytrace_max_range", source.raytrace_max_range}}) {
     m.require(value >= 0.0, key, "is negative", kMetres);
   }
-  read(m, "min_obstacle_height", source.min_obstacle_height, "a world height in metres");
-  read(m, "max_obstacle_height", source.max_obstacle_height, "a world height in metres");
+  read_if_present(m, "min_obstacle_height", source.min_obstacle_height, "a world height in metres");
+  read_if_present(m, "max_obstacle_height", source.max_obstacle_height, "a world height in metres");
   m.require(source.obstacle_min_range <= source.obstacle_max_range, "obstacle_min_range",
             "is above obstacle_max_range", "obstacle_min_range <= obstacle_max_range");
   m.require(source.min_obstacle_height <= source.max_obstacle_height, "min_obstacle_height",
@@ -92,20 +81,20 @@ costmap::ObservationSource read_source(MapReader& m, costmap::ObservationSource 
 // An obstacle or voxel layer: its sources, and for the voxel layer its column.
 void read_obstacle_layer(MapReader& m, bool voxel, const costmap::ObservationSource& defaults,
                          CostmapParamsFile& file) {
-  read(m, "track_unknown_space", file.costmap.obstacle.track_unknown_space);
+  read_if_present(m, "track_unknown_space", file.costmap.obstacle.track_unknown_space);
   if (voxel) {
     costmap::VoxelLayerParams& v = file.costmap.voxel;
-    read(m, "origin_z", v.z_min, "the column's bottom in metres");
-    read(m, "z_resolution", v.z_resolution, "a voxel height in metres, > 0");
+    read_if_present(m, "origin_z", v.z_min, "the column's bottom in metres");
+    read_if_present(m, "z_resolution", v.z_resolution, "a voxel height in metres, > 0");
     int z_voxels = 0;
-    read(m, "z_voxels", z_voxels, "a voxel count, > 0");
+    read_if_present(m, "z_voxels", z_voxels, "a voxel count, > 0");
     if (m.has("z_voxels")) {
       m.require(z_voxels > 0, "z_voxels", "must be > 0", "a voxel count, > 0");
       v.z_max = v.z_min + z_voxels * v.z_resolution;
     }
-    read(m, "unknown_threshold", v.unknown_threshold, "a voxel count, >= 0");
+    read_if_present(m, "unknown_threshold", v.unknown_threshold, "a voxel count, >= 0");
     int mark_threshold = 0;
-    read(m, "mark_threshold", mark_threshold, "0");
+    read_if_present(m, "mark_threshold", mark_threshold, "0");
     m.require(mark_threshold == 0, "mark_threshold", "is not 0",
               "0: one occupied voxel marks its column (the only rule rigdesign models)");
   }
@@ -124,18 +113,19 @@ void read_obstacle_layer(MapReader& m, bool voxel, const costmap::ObservationSou
 }
 
 void read_hit_layer(MapReader& m, costmap::HitLayerParams& hit) {
-  read(m, "hit", hit.hit, "a count added per update, > 0");
-  read(m, "hit_max", hit.hit_max, "the count's ceiling, >= hit");
-  read(m, "d_threshold", hit.d_threshold, "metres the robot must move to count as moving");
-  read(m, "d_duration", hit.d_duration, "seconds over which the motion is judged");
+  read_if_present(m, "hit", hit.hit, "a count added per update, > 0");
+  read_if_present(m, "hit_max", hit.hit_max, "the count's ceiling, >= hit");
+  read_if_present(m, "d_threshold", hit.d_threshold,
+                  "metres the robot must move to count as moving");
+  read_if_present(m, "d_duration", hit.d_duration, "seconds over which the motion is judged");
   ignore(m, {"plugin", "enabled"});
   m.reject_unknown_keys();
 }
 
 void read_inflation_layer(MapReader& m, costmap::InflationParams& inflation) {
-  read(m, "inflation_radius", inflation.inflation_radius, kMetres);
-  read(m, "cost_scaling_factor", inflation.cost_scaling_factor, "a rate in 1/m, > 0");
-  read(m, "inflate_unknown", inflation.inflate_unknown);
+  read_if_present(m, "inflation_radius", inflation.inflation_radius, kMetres);
+  read_if_present(m, "cost_scaling_factor", inflation.cost_scaling_factor, "a rate in 1/m, > 0");
+  read_if_present(m, "inflate_unknown", inflation.inflate_unknown);
   ignore(m, {"plugin", "enabled"});
   m.reject_unknown_keys();
 }
@@ -274,11 +264,11 @@ CostmapParamsFile load_costmap_params(const std::string& path,
   }
   CostmapParamsFile file{defaults, {}, {}, false, {}};
   costmap::CostmapParams& p = file.costmap;
-  read(m, "resolution", p.resolution, "a cell side in metres, > 0");
-  read(m, "width", p.size_x, "the window's side along x in metres, > 0");
-  read(m, "height", p.size_y, "the window's side along y in metres, > 0");
+  read_if_present(m, "resolution", p.resolution, "a cell side in metres, > 0");
+  read_if_present(m, "width", p.size_x, "the window's side along x in metres, > 0");
+  read_if_present(m, "height", p.size_y, "the window's side along y in metres, > 0");
   if (m.has("robot_radius")) {
-    read(m, "robot_radius", p.robot_radius, kMetres);
+    read_if_present(m, "robot_radius", p.robot_radius, kMetres);
     p.inflation.inscribed_radius = p.robot_radius;  // a round robot: nav2 does the same
   }
   if (m.has("footprint")) read_footprint(m, file);

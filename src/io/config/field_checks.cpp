@@ -4,6 +4,20 @@
 
 namespace rigdesign::io {
 
+void read_if_present(MapReader& reader, const std::string& key, double& value,
+                     const std::string& expected) {
+  if (const auto v = reader.number(key, Need::optional, expected)) value = *v;
+}
+
+void read_if_present(MapReader& reader, const std::string& key, int& value,
+                     const std::string& expected) {
+  if (const auto v = reader.integer(key, Need::optional, expected)) value = *v;
+}
+
+void read_if_present(MapReader& reader, const std::string& key, bool& value) {
+  if (const auto v = reader.boolean(key, Need::optional)) value = *v;
+}
+
 double positive(MapReader& reader, const std::string& key, Need need, const std::string& expected) {
   const auto value = reader.number(key, need, expected);
   if (!value) return 0.0;

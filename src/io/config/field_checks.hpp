@@ -11,6 +11,13 @@
 namespace rigdesign::io {
 
 /// A number > 0.
+/// Sets `value` from `key` when the file has it; leaves the caller's default otherwise.
+void read_if_present(MapReader& reader, const std::string& key, double& value,
+                     const std::string& expected);
+void read_if_present(MapReader& reader, const std::string& key, int& value,
+                     const std::string& expected);
+void read_if_present(MapReader& reader, const std::string& key, bool& value);
+
 double positive(MapReader& reader, const std::string& key, Need need, const std::string& expected);
 /// A number >= 0.
 double non_negative(MapReader& reader, const std::string& key, Need need,

@@ -17,10 +17,6 @@ namespace {
 using io::MapReader;
 using io::Need;
 
-void read(MapReader& m, const std::string& key, double& value, const std::string& expected) {
-  if (const auto v = m.number(key, Need::optional, expected)) value = *v;
-}
-
 void read_positive(MapReader& m, const std::string& key, double& value,
                    const std::string& expected) {
   if (m.has(key)) value = io::positive(m, key, Need::required, expected);
@@ -53,8 +49,8 @@ model::PassThroughParams read_pass_through(MapReader& m) {
   model::PassThroughParams params;
   if (const auto axis = m.choice("axis", Need::optional, {"x", "y", "z"}))
     params.axis = static_cast<int>(*axis);
-  read(m, "min", params.min, "metres");
-  read(m, "max", params.max, "metres");
+  read_if_present(m, "min", params.min, "metres");
+  read_if_present(m, "max", params.max, "metres");
   m.require(params.min <= params.max, "min", "is above max", "min <= max");
   if (const auto negative = m.boolean("negative", Need::optional)) params.negative = *negative;
   m.reject_unknown_keys();
@@ -76,7 +72,7 @@ void read_stage_fields(MapReader& m, model::StatisticalOutlierParams& params) {
     m.require(*k > 0, "neighbours", "must be > 0", "a neighbour count N, > 0");
     params.neighbours = *k;
   }
-  read(m, "std_multiplier", params.std_multiplier, "M, a number of standard deviations");
+  read_if_present(m, "std_multiplier", params.std_multiplier, "M, a number of standard deviations");
   read_positive(m, "cell", params.cell, "the neighbour grid cell in metres, > 0");
   m.reject_unknown_keys();
 }
@@ -104,8 +100,8 @@ void read_stage_fields(MapReader& m, model::FloorRemoval2Params& params) {
 }
 
 void read_stage_fields(MapReader& m, model::NegativeObstacleParams& params) {
-  read(m, "below", params.below, "metres (negative: below the floor)");
-  read(m, "virtual_height", params.virtual_height, "metres");
+  read_if_present(m, "below", params.below, "metres (negative: below the floor)");
+  read_if_present(m, "virtual_height", params.virtual_height, "metres");
   m.reject_unknown_keys();
 }
 

@@ -20,7 +20,7 @@ void write_comment(std::ostringstream& out, const std::string& comment) {
   for (std::string line; std::getline(lines, line);) out << "# " << line << '\n';
 }
 
-std::string quoted(const std::string& text) {
+std::string yaml_quoted(const std::string& text) {
   std::string escaped = "\"";
   for (const char c : text) {
     if (c == '"' || c == '\\') escaped += '\\';
@@ -35,9 +35,9 @@ std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library
                         const std::string& requirements, const std::string& comment) {
   std::ostringstream out;
   write_comment(out, comment);
-  out << "name: " << quoted(rig.name) << '\n';
-  if (!sensor_library.empty()) out << "sensor_library: " << quoted(sensor_library) << '\n';
-  if (!requirements.empty()) out << "requirements: " << quoted(requirements) << '\n';
+  out << "name: " << yaml_quoted(rig.name) << '\n';
+  if (!sensor_library.empty()) out << "sensor_library: " << yaml_quoted(sensor_library) << '\n';
+  if (!requirements.empty()) out << "requirements: " << yaml_quoted(requirements) << '\n';
   out << "body:\n  height: " << number(rig.body.height) << '\n';
   if (rig.body.footprint.empty()) {
     out << "  radius: " << number(rig.body.radius) << '\n';
@@ -54,8 +54,8 @@ std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library
   for (const model::Mount& mount : rig.mounts) {
     const model::Vec3 xyz = mount.T_robot_sensor.translation();
     const model::Vec3 rpy = model::rpy_from_rotation(mount.T_robot_sensor.linear());
-    out << "  - id: " << quoted(mount.id) << "\n    sensor: " << quoted(mount.sensor_id)
-        << "\n    mode: " << quoted(mount.mode_id) << "\n    pose: {xyz: [" << number(xyz.x())
+    out << "  - id: " << yaml_quoted(mount.id) << "\n    sensor: " << yaml_quoted(mount.sensor_id)
+        << "\n    mode: " << yaml_quoted(mount.mode_id) << "\n    pose: {xyz: [" << number(xyz.x())
         << ", " << number(xyz.y()) << ", " << number(xyz.z()) << "], rpy_deg: ["
         << number(model::rad_to_deg(rpy.x())) << ", " << number(model::rad_to_deg(rpy.y())) << ", "
         << number(model::rad_to_deg(rpy.z())) << "]}\n";
@@ -70,7 +70,7 @@ std::string requirements_to_yaml(const model::Requirements& requirements,
                                  const std::string& comment) {
   std::ostringstream out;
   write_comment(out, comment);
-  out << "name: " << quoted(requirements.name) << '\n';
+  out << "name: " << yaml_quoted(requirements.name) << '\n';
   if (requirements.body_radius && requirements.body_height) {
     out << "body: {radius: " << number(*requirements.body_radius)
         << ", height: " << number(*requirements.body_height) << "}\n";
@@ -78,7 +78,7 @@ std::string requirements_to_yaml(const model::Requirements& requirements,
   if (!requirements.sectors.empty()) {
     out << "sectors:\n";
     for (const model::SectorRequirement& sector : requirements.sectors) {
-      out << "  - {name: " << quoted(sector.name)
+      out << "  - {name: " << yaml_quoted(sector.name)
           << ", from_deg: " << number(model::rad_to_deg(sector.from))
           << ", to_deg: " << number(model::rad_to_deg(sector.to))
           << ", min_complete_coverage: " << number(sector.min_complete_coverage)
@@ -117,7 +117,7 @@ std::string requirements_to_yaml(const model::Requirements& requirements,
     if (!robust.sectors.empty()) {
       out << "  sectors:\n";
       for (const model::SectorRequirement& sector : robust.sectors) {
-        out << "    - {name: " << quoted(sector.name)
+        out << "    - {name: " << yaml_quoted(sector.name)
             << ", min_complete_coverage: " << number(sector.min_complete_coverage)
             << ", min_floor_coverage: " << number(sector.min_floor_coverage) << "}\n";
       }
@@ -131,14 +131,14 @@ std::string filtering_loads_to_yaml(const model::FilteringLoads& loads,
                                     const std::string& comment) {
   std::ostringstream out;
   write_comment(out, comment);
-  out << "machine: " << quoted(loads.machine) << '\n';
-  out << "pipeline: " << quoted(loads.pipeline) << '\n';
-  if (!loads.scene.empty()) out << "scene: " << quoted(loads.scene) << '\n';
+  out << "machine: " << yaml_quoted(loads.machine) << '\n';
+  out << "pipeline: " << yaml_quoted(loads.pipeline) << '\n';
+  if (!loads.scene.empty()) out << "scene: " << yaml_quoted(loads.scene) << '\n';
   if (loads.frames > 0) out << "frames: " << loads.frames << '\n';
   out << "sensors:\n";
   for (const model::FilteringLoad& load : loads.sensors) {
-    out << "  - sensor: " << quoted(load.sensor_id) << '\n';
-    if (!load.mode_id.empty()) out << "    mode: " << quoted(load.mode_id) << '\n';
+    out << "  - sensor: " << yaml_quoted(load.sensor_id) << '\n';
+    if (!load.mode_id.empty()) out << "    mode: " << yaml_quoted(load.mode_id) << '\n';
     out << "    seconds_per_point: " << model::format_number(load.seconds_per_point, 6) << '\n';
     out << "    points_per_frame: " << model::format_number(load.points_per_frame, 8) << '\n';
     out << "    median_seconds_per_frame: "

@@ -6,10 +6,6 @@
 namespace rigdesign::io {
 namespace {
 
-std::string number(double value) {
-  return model::exact_number(value);
-}
-
 std::string boolean(bool value) {
   return value ? "true" : "false";
 }
@@ -22,7 +18,8 @@ void write_comment(std::ostringstream& out, const std::string& text, const std::
 std::string footprint_text(const std::vector<model::Vec2>& footprint) {
   std::string text = "\"[";
   for (std::size_t i = 0; i < footprint.size(); ++i) {
-    text += (i ? ", [" : "[") + number(footprint[i].x()) + ", " + number(footprint[i].y()) + "]";
+    text += (i ? ", [" : "[") + model::exact_number(footprint[i].x()) + ", " +
+            model::exact_number(footprint[i].y()) + "]";
   }
   return text + "]\"";
 }
@@ -38,7 +35,7 @@ void write_layers(std::ostringstream& out, const deploy::CostmapConfig& config,
                   const std::string& in) {
   const costmap::CostmapParams& p = config.costmap;
   if (config.footprint.empty()) {
-    out << in << "robot_radius: " << number(config.robot_radius) << '\n';
+    out << in << "robot_radius: " << model::exact_number(config.robot_radius) << '\n';
   } else {
     out << in << "footprint: " << footprint_text(config.footprint) << '\n';
   }
@@ -49,8 +46,8 @@ void write_layers(std::ostringstream& out, const deploy::CostmapConfig& config,
   out << l << "enabled: true\n";
   if (voxel) {
     out << l << "publish_voxel_map: true\n";
-    out << l << "origin_z: " << number(p.voxel.z_min) << '\n';
-    out << l << "z_resolution: " << number(p.voxel.z_resolution) << '\n';
+    out << l << "origin_z: " << model::exact_number(p.voxel.z_min) << '\n';
+    out << l << "z_resolution: " << model::exact_number(p.voxel.z_resolution) << '\n';
     out << l << "z_voxels: "
         << static_cast<int>((p.voxel.z_max - p.voxel.z_min) / p.voxel.z_resolution + 0.5) << '\n';
     out << l << "unknown_threshold: " << p.voxel.unknown_threshold << '\n';
@@ -68,17 +65,17 @@ void write_layers(std::ostringstream& out, const deploy::CostmapConfig& config,
     out << k << "sensor_frame: " << source.sensor_frame << '\n';
     out << k << "marking: " << boolean(s.marking) << '\n';
     out << k << "clearing: " << boolean(s.clearing) << '\n';
-    out << k << "obstacle_min_range: " << number(s.obstacle_min_range)
+    out << k << "obstacle_min_range: " << model::exact_number(s.obstacle_min_range)
         << "  # the sensor's min range\n";
-    out << k << "obstacle_max_range: " << number(s.obstacle_max_range)
+    out << k << "obstacle_max_range: " << model::exact_number(s.obstacle_max_range)
         << "  # reaches the area's far edge (distance of interest)\n";
-    out << k << "raytrace_min_range: " << number(s.raytrace_min_range)
+    out << k << "raytrace_min_range: " << model::exact_number(s.raytrace_min_range)
         << "  # its blind near zone is remembered, not cleared\n";
-    out << k << "raytrace_max_range: " << number(s.raytrace_max_range) << '\n';
-    out << k << "min_obstacle_height: " << number(s.min_obstacle_height)
+    out << k << "raytrace_max_range: " << model::exact_number(s.raytrace_max_range) << '\n';
+    out << k << "min_obstacle_height: " << model::exact_number(s.min_obstacle_height)
         << "  # floor flatness + 6 sigma of a floor return's height ("
         << model::format_number(source.floor_height_error, 3) << " m)\n";
-    out << k << "max_obstacle_height: " << number(s.max_obstacle_height)
+    out << k << "max_obstacle_height: " << model::exact_number(s.max_obstacle_height)
         << "  # top of the area to perceive\n";
   }
   out << in << "hit_layer:\n";
@@ -87,14 +84,15 @@ void write_layers(std::ostringstream& out, const deploy::CostmapConfig& config,
   out << l << "enabled: true\n";
   out << l << "hit: " << p.hit.hit << '\n';
   out << l << "hit_max: " << p.hit.hit_max << '\n';
-  out << l << "d_threshold: " << number(p.hit.d_threshold) << '\n';
-  out << l << "d_duration: " << number(p.hit.d_duration) << '\n';
+  out << l << "d_threshold: " << model::exact_number(p.hit.d_threshold) << '\n';
+  out << l << "d_duration: " << model::exact_number(p.hit.d_duration) << '\n';
   out << in << "inflation_layer:\n";
   out << l << "plugin: \"nav2_costmap_2d::InflationLayer\"\n";
   out << l << "enabled: true\n";
-  out << l << "inflation_radius: " << number(p.inflation.inflation_radius)
+  out << l << "inflation_radius: " << model::exact_number(p.inflation.inflation_radius)
       << "  # circumscribed radius + 0.1 m\n";
-  out << l << "cost_scaling_factor: " << number(p.inflation.cost_scaling_factor) << '\n';
+  out << l << "cost_scaling_factor: " << model::exact_number(p.inflation.cost_scaling_factor)
+      << '\n';
 }
 
 }  // namespace
@@ -110,15 +108,15 @@ std::string nav2_costmap_text(const deploy::CostmapConfig& config, const std::st
   out << in << "update_frequency: 5.0\n" << in << "publish_frequency: 2.0\n";
   out << in << "global_frame: odom\n" << in << "robot_base_frame: " << config.robot_base_frame << '\n';
   out << in << "rolling_window: true\n";
-  out << in << "width: " << number(p.size_x) << "  # twice the distance of interest\n";
-  out << in << "height: " << number(p.size_y) << '\n';
-  out << in << "resolution: " << number(p.resolution) << '\n';
+  out << in << "width: " << model::exact_number(p.size_x) << "  # twice the distance of interest\n";
+  out << in << "height: " << model::exact_number(p.size_y) << '\n';
+  out << in << "resolution: " << model::exact_number(p.resolution) << '\n';
   out << in << "plugins: [" << plugins << "]\n";
   write_layers(out, config, in);
   out << "global_costmap:\n  global_costmap:\n    ros__parameters:\n";
   out << in << "update_frequency: 1.0\n" << in << "publish_frequency: 1.0\n";
   out << in << "global_frame: map\n" << in << "robot_base_frame: " << config.robot_base_frame << '\n';
-  out << in << "resolution: " << number(p.resolution) << '\n';
+  out << in << "resolution: " << model::exact_number(p.resolution) << '\n';
   out << in << "track_unknown_space: true\n";
   out << in << "plugins: [\"static_layer\", " << plugins << "]\n";
   out << in << "static_layer:\n";

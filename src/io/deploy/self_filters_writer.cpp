@@ -5,14 +5,6 @@
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::io {
-namespace {
-
-std::string number(double value) {
-  return model::exact_number(value);
-}
-
-}  // namespace
-
 std::string self_filters_text(const std::vector<deploy::SelfFilter>& filters,
                               const std::string& box_frame, const model::Pose3& T_robot_box_frame,
                               const std::string& header) {
@@ -37,8 +29,8 @@ std::string self_filters_text(const std::vector<deploy::SelfFilter>& filters,
             << model::format_number(model::rad_to_deg(band.upper), 4) << " deg\n";
         out << "      type: laser_filters/LaserScanAngularBoundsFilterInPlace\n";
         out << "      params:\n";
-        out << "        lower_angle: " << number(band.lower) << '\n';
-        out << "        upper_angle: " << number(band.upper) << '\n';
+        out << "        lower_angle: " << model::exact_number(band.lower) << '\n';
+        out << "        upper_angle: " << model::exact_number(band.upper) << '\n';
         out << "        replace_with_nan: true\n";
       }
     }
@@ -53,9 +45,12 @@ std::string self_filters_text(const std::vector<deploy::SelfFilter>& filters,
         out << filter.mount_id << "_self_filter_" << i + 1 << ":  # " << box.part << ", "
             << box.hits << " rays\n  ros__parameters:\n";
         out << "    input_frame: " << box_frame << '\n';
-        out << "    min_x: " << number(low.x()) << "\n    max_x: " << number(high.x()) << '\n';
-        out << "    min_y: " << number(low.y()) << "\n    max_y: " << number(high.y()) << '\n';
-        out << "    min_z: " << number(low.z()) << "\n    max_z: " << number(high.z()) << '\n';
+        out << "    min_x: " << model::exact_number(low.x())
+            << "\n    max_x: " << model::exact_number(high.x()) << '\n';
+        out << "    min_y: " << model::exact_number(low.y())
+            << "\n    max_y: " << model::exact_number(high.y()) << '\n';
+        out << "    min_z: " << model::exact_number(low.z())
+            << "\n    max_z: " << model::exact_number(high.z()) << '\n';
         out << "    negative: true\n    keep_organized: false\n";
       }
     }

@@ -10,12 +10,12 @@ namespace rigdesign::io {
 namespace {
 
 // Exact, except that rounding residue below 1e-15 (and -0) is written as 0 for the reader.
-std::string number(double value) {
+std::string xacro_number(double value) {
   return model::exact_number(std::abs(value) < 1e-15 ? 0.0 : value);
 }
 
 std::string triple(const model::Vec3& v) {
-  return number(v.x()) + " " + number(v.y()) + " " + number(v.z());
+  return xacro_number(v.x()) + " " + xacro_number(v.y()) + " " + xacro_number(v.z());
 }
 
 void write_header(std::ostringstream& out, const std::string& header) {

@@ -12,7 +12,7 @@ namespace {
 using csv::Field;
 using csv::Line;
 
-constexpr const char* kHeader = "t,x,y,z,co2_ppm";
+constexpr const char* kCo2Header = "t,x,y,z,co2_ppm";
 
 void check_ppm(double ppm, const model::SourceLocation& where) {
   if (ppm < 0.0) {
@@ -27,7 +27,7 @@ localize::Co2Log parse_csv(const std::vector<Line>& lines, const std::string& fi
   const std::array<std::string, 5> names = {"t", "x", "y", "z", "co2_ppm"};
   std::array<std::size_t, 5> index{};
   for (std::size_t i = 0; i < names.size(); ++i) {
-    index[i] = csv::require_column(header, names[i], file, lines.front().number, kHeader);
+    index[i] = csv::require_column(header, names[i], file, lines.front().number, kCo2Header);
   }
   localize::Co2Log log;
   log.source = file;
@@ -41,7 +41,7 @@ localize::Co2Log parse_csv(const std::vector<Line>& lines, const std::string& fi
                               names[i],
                               "is missing: the line has " + std::to_string(fields.size()) + " of " +
                                   std::to_string(header.size()) + " fields",
-                              std::string("one field per header column (") + kHeader + ")"});
+                              std::string("one field per header column (") + kCo2Header + ")"});
       }
       const Field& f = fields[index[i]];
       values[i] = csv::parse_number(f, {file, lines[l].number, f.column}, names[i]);
@@ -74,7 +74,7 @@ localize::Co2Log parse_untimed(const std::vector<Line>& lines, const std::string
                             fields.size() > names.size() ? "line" : names[fields.size()],
                             "has " + std::to_string(fields.size()) + " fields",
                             "three whitespace-separated numbers 'x y co2_ppm', or a CSV header " +
-                                std::string(kHeader)});
+                                std::string(kCo2Header)});
     }
     std::array<double, 3> values{};
     for (std::size_t i = 0; i < names.size(); ++i) {
@@ -96,7 +96,7 @@ localize::Co2Log parse_co2_log(const std::string& text, const std::string& file)
         {file, 0, 0},
         "data",
         "is empty",
-        std::string("a CSV header '") + kHeader + "' and readings, or lines 'x y co2_ppm'"});
+        std::string("a CSV header '") + kCo2Header + "' and readings, or lines 'x y co2_ppm'"});
   }
   if (lines.front().text.find(',') != std::string::npos) return parse_csv(lines, file);
   return parse_untimed(lines, file);

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "io/config/yaml_reader.hpp"
 #include "io/logs/csv_fields.hpp"
 #include "io/text_encoding.hpp"
 #include "rigdesign/model/coordinate_limit.hpp"
@@ -14,12 +15,7 @@
 namespace rigdesign::io {
 namespace {
 
-constexpr const char* kHeader = "bssid,x,y,z";
-
-model::SourceLocation location_of(const YAML::Node& node, const std::string& file) {
-  const YAML::Mark mark = node.Mark();
-  return {file, mark.line + 1, mark.column + 1};
-}
+constexpr const char* kTruthHeader = "bssid,x,y,z";
 
 }  // namespace
 
@@ -27,13 +23,13 @@ std::vector<localize::EmitterTruth> parse_emitter_truth(const std::string& text,
                                                         const std::string& file) {
   const auto lines = csv::content_lines(text, file);
   if (lines.empty())
-    throw model::InputError(
-        model::Diagnostic{{file, 0, 0}, "data", "is empty", std::string("a header ") + kHeader});
+    throw model::InputError(model::Diagnostic{
+        {file, 0, 0}, "data", "is empty", std::string("a header ") + kTruthHeader});
   const auto header = csv::split_fields(lines.front().text, ',');
   const std::array<std::string, 4> names = {"bssid", "x", "y", "z"};
   std::array<std::size_t, 4> index{};
   for (std::size_t i = 0; i < names.size(); ++i) {
-    index[i] = csv::require_column(header, names[i], file, lines.front().number, kHeader);
+    index[i] = csv::require_column(header, names[i], file, lines.front().number, kTruthHeader);
   }
   std::vector<localize::EmitterTruth> truth;
   for (std::size_t l = 1; l < lines.size(); ++l) {
@@ -45,7 +41,7 @@ std::vector<localize::EmitterTruth> parse_emitter_truth(const std::string& text,
             model::Diagnostic{{file, lines[l].number, static_cast<int>(lines[l].text.size()) + 1},
                               names[i],
                               "is missing",
-                              std::string("one field per header column (") + kHeader + ")"});
+                              std::string("one field per header column (") + kTruthHeader + ")"});
       }
       const auto& f = fields[index[i]];
       if (i == 0) {
@@ -65,7 +61,7 @@ std::vector<localize::EmitterTruth> read_emitter_truth(const std::string& path) 
 }
 
 std::string to_emitter_truth_csv(const std::vector<localize::EmitterTruth>& truth) {
-  std::string text = std::string(kHeader) + "\n";
+  std::string text = std::string(kTruthHeader) + "\n";
   for (const localize::EmitterTruth& item : truth) {
     text += item.bssid + "," + model::format_number(item.position.x(), 10) + "," +
             model::format_number(item.position.y(), 10) + "," +

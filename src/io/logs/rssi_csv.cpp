@@ -12,7 +12,7 @@ namespace {
 
 using csv::Field;
 
-constexpr const char* kHeader = "t,x,y,z,bssid,rssi";
+constexpr const char* kRssiHeader = "t,x,y,z,bssid,rssi";
 constexpr int kDigits = 10;  // enough to reproduce positions to 0.1 um and RSSI exactly
 
 }  // namespace
@@ -20,14 +20,17 @@ constexpr int kDigits = 10;  // enough to reproduce positions to 0.1 um and RSSI
 localize::RssiLog parse_rssi_csv(const std::string& text, const std::string& file) {
   const auto lines = csv::content_lines(text, file);
   if (lines.empty()) {
-    throw model::InputError(model::Diagnostic{
-        {file, 0, 0}, "data", "is empty", std::string("a header '") + kHeader + "' and readings"});
+    throw model::InputError(
+        model::Diagnostic{{file, 0, 0},
+                          "data",
+                          "is empty",
+                          std::string("a header '") + kRssiHeader + "' and readings"});
   }
   const auto header = csv::split_fields(lines.front().text, ',');
   const std::array<std::string, 6> names = {"t", "x", "y", "z", "bssid", "rssi"};
   std::array<std::size_t, 6> index{};
   for (std::size_t i = 0; i < names.size(); ++i) {
-    index[i] = csv::require_column(header, names[i], file, lines.front().number, kHeader);
+    index[i] = csv::require_column(header, names[i], file, lines.front().number, kRssiHeader);
   }
   localize::RssiLog log;
   log.source = file;
@@ -43,7 +46,7 @@ localize::RssiLog parse_rssi_csv(const std::string& text, const std::string& fil
                               names[column],
                               "is missing: the line has " + std::to_string(fields.size()) + " of " +
                                   std::to_string(header.size()) + " fields",
-                              std::string("one field per header column (") + kHeader + ")"});
+                              std::string("one field per header column (") + kRssiHeader + ")"});
       }
       return fields[index[column]];
     };
@@ -90,7 +93,7 @@ localize::RssiLog read_rssi_log(const std::string& path) {
 }
 
 std::string to_rssi_csv(const localize::RssiLog& log) {
-  std::string text = std::string(kHeader) + "\n";
+  std::string text = std::string(kRssiHeader) + "\n";
   for (const localize::RssiReading& r : log.readings) {
     text += model::format_number(r.t, kDigits) + "," +
             model::format_number(r.position.x(), kDigits) + "," +

@@ -13,8 +13,8 @@
 namespace rigdesign::io {
 namespace {
 
-constexpr const char* kVertexForm = "v x y z [w] (finite numbers, metres)";
-constexpr const char* kFaceForm = "f v1 v2 v3 ... with corners i, i/j, i/j/k or i//k";
+constexpr const char* kObjVertexForm = "v x y z [w] (finite numbers, metres)";
+constexpr const char* kObjFaceForm = "f v1 v2 v3 ... with corners i, i/j, i/j/k or i//k";
 // x, y, z plus an optional w or an r g b colour some exporters append.
 constexpr std::size_t kMostVertexValues = 6;
 
@@ -57,13 +57,14 @@ class ObjReader {
   void read_vertex(std::string_view line) {
     if (words_.size() < 4 || words_.size() > 1 + kMostVertexValues) {
       fail(line, words_[0], "v", "has " + std::to_string(words_.size() - 1) + " value(s)",
-           kVertexForm);
+           kObjVertexForm);
     }
     model::Vec3 vertex;
     for (std::size_t i = 1; i < words_.size(); ++i) {
       const auto value = parse_double(words_[i]);
       if (!value || !std::isfinite(*value)) {
-        fail(line, words_[i], "v", quoted(words_[i]) + " is not a finite number", kVertexForm);
+        fail(line, words_[i], "v", quote_word(words_[i]) + " is not a finite number",
+             kObjVertexForm);
       }
       if (i <= 3) vertex[static_cast<Eigen::Index>(i - 1)] = *value;
     }
@@ -76,7 +77,7 @@ class ObjReader {
   void read_face(std::string_view line) {
     if (words_.size() < 4) {
       fail(line, words_[0], "f", "has " + std::to_string(words_.size() - 1) + " corner(s)",
-           kFaceForm + std::string(" (at least 3 corners)"));
+           kObjFaceForm + std::string(" (at least 3 corners)"));
     }
     corners_.clear();
     for (std::size_t i = 1; i < words_.size(); ++i)
@@ -88,8 +89,8 @@ class ObjReader {
     const std::string_view text = corner.substr(0, corner.find('/'));
     std::int64_t index = 0;
     if (!parse_index(text, index) || index == 0) {
-      fail(line, corner, "f", "corner " + quoted(corner) + " has no vertex index",
-           kFaceForm + std::string(" (i a non-zero integer)"));
+      fail(line, corner, "f", "corner " + quote_word(corner) + " has no vertex index",
+           kObjFaceForm + std::string(" (i a non-zero integer)"));
     }
     const auto count = static_cast<std::int64_t>(mesh_.vertices.size());
     if (index < 0) {

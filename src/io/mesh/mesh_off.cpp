@@ -15,8 +15,8 @@ namespace rigdesign::io {
 namespace {
 
 constexpr const char* kCountsForm = "OFF, then 'vertices faces [edges]' as integers >= 0";
-constexpr const char* kVertexForm = "x y z (finite numbers, metres), one vertex per line";
-constexpr const char* kFaceForm = "n i0 ... i(n-1): n >= 3 corners, 0-based vertex indices";
+constexpr const char* kOffVertexForm = "x y z (finite numbers, metres), one vertex per line";
+constexpr const char* kOffFaceForm = "n i0 ... i(n-1): n >= 3 corners, 0-based vertex indices";
 
 bool is_off_keyword(std::string_view word) {
   return word.size() >= 3 && word.substr(word.size() - 3) == "OFF";
@@ -81,7 +81,7 @@ class OffReader {
     for (std::size_t i = 0; i < given; ++i) {
       const auto count = parse_count(words_[first + i]);
       if (!count) {
-        fail(line_, words_[first + i], "counts", quoted(words_[first + i]) + " is not a count",
+        fail(line_, words_[first + i], "counts", quote_word(words_[first + i]) + " is not a count",
              kCountsForm);
       }
       if (i < 2) *targets[i] = *count;
@@ -91,16 +91,17 @@ class OffReader {
   void read_vertex(std::size_t index) {
     const std::string field = "vertex[" + std::to_string(index) + "]";
     need_line(field, "vertex " + std::to_string(index) + " of " + std::to_string(vertex_count_),
-              kVertexForm);
+              kOffVertexForm);
     if (words_.size() < 3) {
       fail(line_, words_[0], field, "has " + std::to_string(words_.size()) + " value(s)",
-           kVertexForm);
+           kOffVertexForm);
     }
     model::Vec3 vertex;
     for (std::size_t i = 0; i < words_.size(); ++i) {
       const auto value = parse_double(words_[i]);
       if (!value || (i < 3 && !std::isfinite(*value))) {
-        fail(line_, words_[i], field, quoted(words_[i]) + " is not a finite number", kVertexForm);
+        fail(line_, words_[i], field, quote_word(words_[i]) + " is not a finite number",
+             kOffVertexForm);
       }
       if (i < 3) vertex[static_cast<Eigen::Index>(i)] = *value;
     }
@@ -110,23 +111,23 @@ class OffReader {
   void read_face(std::size_t index) {
     const std::string field = "face[" + std::to_string(index) + "]";
     need_line(field, "face " + std::to_string(index) + " of " + std::to_string(face_count_),
-              kFaceForm);
+              kOffFaceForm);
     const auto corners = parse_count(words_[0]);
     if (!corners || *corners < 3) {
-      fail(line_, words_[0], field, "corner count " + quoted(words_[0]) + " is not 3 or more",
-           kFaceForm);
+      fail(line_, words_[0], field, "corner count " + quote_word(words_[0]) + " is not 3 or more",
+           kOffFaceForm);
     }
     if (words_.size() - 1 < *corners) {
       fail(line_, words_[0], field,
            "lists " + std::to_string(words_.size() - 1) + " of its " + std::to_string(*corners) +
                " corners",
-           kFaceForm);
+           kOffFaceForm);
     }
     corners_.clear();
     for (std::size_t i = 1; i <= *corners; ++i) {
       std::int64_t vertex = 0;
       if (!parse_index(words_[i], vertex)) {
-        fail(line_, words_[i], field, quoted(words_[i]) + " is not an integer", kFaceForm);
+        fail(line_, words_[i], field, quote_word(words_[i]) + " is not an integer", kOffFaceForm);
       }
       if (vertex < 0 || static_cast<std::uint64_t>(vertex) >= vertex_count_) {
         fail(line_, words_[i], field,

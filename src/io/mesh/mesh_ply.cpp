@@ -34,9 +34,10 @@ FaceLayout face_layout(const std::string& path, const PlyHeader& header) {
       const PlyProperty& property = element.properties[p];
       if (property.name != "vertex_indices" && property.name != "vertex_index") continue;
       if (!property.is_list || !is_integer(property.type)) {
-        throw_mesh_error(path, property.line, 1, "property",
-                         "face property " + quoted(property.name) + " is not a list of integers",
-                         "property list uchar int vertex_indices (or uint items)");
+        throw_mesh_error(
+            path, property.line, 1, "property",
+            "face property " + quote_word(property.name) + " is not a list of integers",
+            "property list uchar int vertex_indices (or uint items)");
       }
       return {&element, p};
     }

@@ -58,7 +58,7 @@ void AsciiPlyRecords::read(const PlyElement& element, std::size_t index, std::si
     std::int64_t length = 0;
     if (!parse_index(length_text, length) || length < 0) {
       fail(record, column(line, length_text), ply_field(element, index, property.name),
-           "list length " + quoted(length_text) + " is not a count", "an integer >= 0");
+           "list length " + quote_word(length_text) + " is not a count", "an integer >= 0");
     }
     if (p == wanted) record.list_at = column(line, length_text);
     for (std::int64_t i = 0; i < length; ++i) {
@@ -70,7 +70,7 @@ void AsciiPlyRecords::read(const PlyElement& element, std::size_t index, std::si
       std::int64_t item = 0;
       if (!parse_index(text, item)) {
         fail(record, column(line, text), ply_field(element, index, property.name),
-             quoted(text) + " is not an integer", "vertex indices: integers from 0");
+             quote_word(text) + " is not an integer", "vertex indices: integers from 0");
       }
       record.items.push_back(item);
       record.item_at.push_back(column(line, text));
@@ -104,7 +104,7 @@ double AsciiPlyRecords::number(const PlyRecord& record, std::string_view line,
   const auto value = parse_double(text);
   if (!value) {
     fail(record, column(line, text), ply_field(element, record.index, property.name),
-         quoted(text) + " is not a number", "a number");
+         quote_word(text) + " is not a number", "a number");
   }
   return *value;
 }

@@ -4,8 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
+#include "io/file_bytes.hpp"
 #include "io/text_encoding.hpp"
 #include "rigdesign/model/input_error.hpp"
 
@@ -81,15 +81,13 @@ Node parse_file(const std::string& path, const model::SourceLocation& named_at,
     throw model::InputError(model::Diagnostic{named_at, field, "names '" + path + "', a folder",
                                               "an existing URDF or xacro file"});
   }
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) {
+  if (!std::ifstream(path, std::ios::binary)) {
     throw model::InputError(model::Diagnostic{named_at, field,
                                               "names '" + path + "', which cannot be read",
                                               "an existing URDF or xacro file"});
   }
-  std::stringstream bytes;
-  bytes << stream.rdbuf();
-  return parse_text(bytes.str(), path);
+  // The shared reader: bounded size, pipes and read errors reported against the file itself.
+  return parse_text(read_file_bytes(path, "a URDF or xacro file"), path);
 }
 
 Node parse_text(const std::string& text, const std::string& file) {
