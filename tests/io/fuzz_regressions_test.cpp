@@ -6,6 +6,8 @@
 #include <map>
 
 #include "rigdesign/io/cloud/cloud_io.hpp"
+#include "rigdesign/io/config/catalog_loader.hpp"
+#include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -21,6 +23,11 @@ const std::map<std::string, std::function<void(const std::string&)>>& readers() 
       {"artifacts_json", [](const std::string& path) { io::read_artifacts(path); }},
       {"rig_yaml", [](const std::string& path) { io::load_rig(path); }},
       {"cloud_pcd", [](const std::string& path) { io::read_cloud(path); }},
+      {"catalog_yaml", [](const std::string& path) { io::load_catalog(path); }},
+      {"costmap_params_yaml",
+       [](const std::string& path) {
+         io::load_costmap_params(path, costmap::CostmapParams{}, costmap::ObservationSource{});
+       }},
   };
   return table;
 }

@@ -81,4 +81,12 @@ TEST_CASE("pose ranges: bad ranges are errors at the range", "[io][select]") {
              Catch::Contains("inside the body for every value"));
   CHECK_THAT(error_of("{xyz: [0.46, 0, {min: 0.2, max: 0.8}]}"),
              Catch::Contains("xyz[2].step") && Catch::Contains("missing"));
+  // Found by fuzzing: 0.1 to 7.8e8 m in steps of 0.05 names 1.6e10 values (an int overflow);
+  // refused before any is made.
+  CHECK_THAT(error_of("{xyz: [0.46, 0, {min: 0.1, max: 777777770.3, step: 0.05}]}"),
+             Catch::Contains("xyz[2].step") && Catch::Contains("gives 1.56e+10 values") &&
+                 Catch::Contains("at most 400 poses per slot"));
+  // 21 x 21 positions: more than a slot may hold.
+  CHECK_THAT(error_of("{xyz: [{min: 0.5, max: 2.5, step: 0.1}, {min: -1, max: 1, step: 0.1}, 0.5]}"),
+             Catch::Contains("441 poses in one slot"));
 }

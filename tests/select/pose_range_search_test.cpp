@@ -61,6 +61,8 @@ TEST_CASE("pose ranges: branch and bound equals brute force on a rasterised cata
   TempFolder folder;
   const model::Catalog catalog = io::load_catalog(folder.write("c.yaml", pose_range_catalog()));
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
+  // select's bound on its work counts the options before rasterising them: the same 34.
+  REQUIRE(select::count_catalog_options(catalog) == 34);
   metrics::CoverageSettings settings;
   settings.step = 10.0 * std::numbers::pi / 180.0;  // 36 angles
   settings.raster_cell = 0.02;

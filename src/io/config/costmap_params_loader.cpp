@@ -158,6 +158,8 @@ YAML::Node node_at(const YAML::Node& node, const std::string& key_path) {
     if (!current.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
     const YAML::Node& parent = current;
     const YAML::Node child = parent[part];
+    // A missing key gives an invalid node, which reset() would throw on (found by fuzzing).
+    if (!child.IsDefined()) return YAML::Node(YAML::NodeType::Undefined);
     current.reset(child);
   }
   return current;

@@ -1,5 +1,6 @@
 // Pose ranges of catalog slots (issue 15): xyz and rpy_deg elements that are ranges.
 #include <cmath>
+#include <string>
 
 #include "io/config/placement_fields.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -57,6 +58,15 @@ Axis read_axis(MapReader& pose, const YAML::Node& element, const std::string& fi
                   "a step that divides the range, so that max is one of the values");
     return axis;
   }
+  // Bounded before the values are made: a step of 0.05 over 7.8e8 m would name 1.6e10 of
+  // them (found by fuzzing: the count overflowed int).
+  if (whole + 1 > static_cast<double>(kMaxSlotPoses)) {
+    range.require(false, "step",
+                  "gives " + model::format_number(whole + 1, 3) + " values from " +
+                      model::format_number(*low) + " to " + model::format_number(*high),
+                  "at most " + std::to_string(kMaxSlotPoses) + " poses per slot (a coarser step)");
+    return axis;
+  }
   for (int i = 0; i <= static_cast<int>(whole); ++i) axis.values.push_back(*low + i * *step);
   axis.varies = axis.values.size() > 1;
   return axis;
@@ -104,13 +114,14 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
                "an x-forward pose (frame: body, the default)");
   pose.reject_unknown_keys();
   if (!valid) return {{model::Pose3::Identity(), ""}};
-  std::size_t count = 1;
-  for (const Axis& axis : axes) count *= axis.values.size();
-  if (count > kMaxSlotPoses) {
-    pose.require(false, "xyz", std::to_string(count) + " poses in one slot",
+  double poses_named = 1.0;  // in double: six axes of 400 values overflow 64 bits
+  for (const Axis& axis : axes) poses_named *= static_cast<double>(axis.values.size());
+  if (poses_named > static_cast<double>(kMaxSlotPoses)) {
+    pose.require(false, "xyz", model::format_number(poses_named, 3) + " poses in one slot",
                  "at most " + std::to_string(kMaxSlotPoses) + " (coarser steps, or more slots)");
     return {{model::Pose3::Identity(), ""}};
   }
+  const auto count = static_cast<std::size_t>(poses_named);
   // Angles in radians from here on (SI in code).
   const auto si = [](int axis, double value) { return axis < 3 ? value : model::deg_to_rad(value); };
   for (int i = 0; i < 6; ++i) {
