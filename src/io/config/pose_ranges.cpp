@@ -114,7 +114,7 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
                "an x-forward pose (frame: body, the default)");
   pose.reject_unknown_keys();
   if (!valid) return {{model::Pose3::Identity(), ""}};
-  double poses_named = 1.0;  // in double: six axes of 400 values overflow 64 bits
+  double poses_named = 1.0;  // at most 400^6 = 4.1e15 (axes are bounded above): exact in double
   for (const Axis& axis : axes) poses_named *= static_cast<double>(axis.values.size());
   if (poses_named > static_cast<double>(kMaxSlotPoses)) {
     pose.require(false, "xyz", model::format_number(poses_named, 3) + " poses in one slot",
