@@ -1,29 +1,31 @@
 #!/usr/bin/env bash
-# Builds the benchmarks (Release, no sanitizers) and runs them; prints medians.
-#   scripts/bench.sh                 # every benchmark
-#   scripts/bench.sh coverage        # one benchmark binary
-#   scripts/bench.sh filters         # ours vs PCL (installs libpcl-dev first)
-#   scripts/bench.sh occupancy       # ours vs OctoMap on the cell (installs liboctomap-dev first)
+# Builds the benchmarks (Release, no sanitizers) and runs them; prints medians, with the
+# machine and its load, so one run regenerates every speed table of the README.
+#   scripts/bench.sh                 # every benchmark (installs the PCL and OctoMap peers first)
+#   scripts/bench.sh coverage        # one Google Benchmark binary: coverage, select, costmap, localize
+#   scripts/bench.sh filters         # ours vs PCL (as shipped and serial), and the growth curve
+#   scripts/bench.sh occupancy       # ours vs OctoMap on the cell
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+only="${1:-}"
 "$root/scripts/setup.sh" >&2
-if [ "${1:-}" = "filters" ]; then "$root/scripts/install-pcl.sh" >&2; fi
-if [ "${1:-}" = "occupancy" ]; then "$root/scripts/install-octomap.sh" >&2; fi
+if [ -z "$only" ] || [ "$only" = "filters" ]; then "$root/scripts/install-pcl.sh" >&2; fi
+if [ -z "$only" ] || [ "$only" = "occupancy" ]; then "$root/scripts/install-octomap.sh" >&2; fi
 build="$root/build/bench"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRIGDESIGN_BUILD_TESTS=OFF \
-  -DRIGDESIGN_BUILD_BENCHMARKS=ON >/dev/null
+  -DRIGDESIGN_BUILD_BENCHMARKS=ON -DRIGDESIGN_UNITY_BUILD=ON >/dev/null
 cmake --build "$build" -j"$(nproc)" >/dev/null
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)," \
+  "load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)"
 for bench in "$build"/tests/bench/*_bench; do
   name="$(basename "$bench" _bench)"
-  if [ "$name" = "filters_vs_pcl" ]; then
-    if [ $# -eq 0 ] || [ "$1" = "filters" ]; then "$bench"; fi
-    continue
-  fi
-  if [ "$name" = "occupancy_vs_octomap" ]; then
-    if [ $# -eq 0 ] || [ "$1" = "occupancy" ]; then "$bench"; fi
-    continue
-  fi
-  if [ $# -gt 0 ] && [ "$1" != "$name" ]; then continue; fi
-  "$bench" --benchmark_format=console
+  case "$name" in
+    filters_vs_pcl | filters_scaling)  # plain tables, no Google Benchmark
+      if [ -z "$only" ] || [ "$only" = "filters" ]; then "$bench"; fi ;;
+    occupancy_vs_octomap)
+      if [ -z "$only" ] || [ "$only" = "occupancy" ]; then "$bench"; fi ;;
+    *)
+      if [ -z "$only" ] || [ "$only" = "$name" ]; then "$bench" --benchmark_format=console; fi ;;
+  esac
 done
+echo "load average after the run: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -41,6 +41,7 @@ struct FilterOptions {
   std::string out;
   std::string write_loads;
   int repeat = 10;
+  int threads = 0;  // 0: as the pipeline says (1 unless its file sets threads)
   bool json = false;
 };
 
@@ -141,7 +142,13 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
   require_option(options.repeat >= 1 && options.repeat <= 10000, "--repeat", "is out of range",
                  "1 to 10000 runs");
   if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
-  const model::Pipeline pipeline = pipeline_named(options.pipeline);
+  model::Pipeline pipeline = pipeline_named(options.pipeline);
+  if (options.threads != 0) {
+    require_option(options.threads >= 1 && options.threads <= model::kMaxFilterThreads,
+                   "--threads", "is out of range",
+                   "1 to " + std::to_string(model::kMaxFilterThreads) + " threads");
+    pipeline = filters::with_threads(pipeline, options.threads);
+  }
   if (!options.scene.empty()) {
     require_option(!options.rig.empty() && options.clouds.empty(), "--scene",
                    "needs --rig and no --cloud", "--rig RIG --scene NAME [--frames N]");
@@ -280,6 +287,9 @@ Command setup_filter(CLI::App& parent) {
       ->check(CLI::IsMember({"auto", "optical", "sensor", "robot"}));
   app->add_option("--repeat", options->repeat,
                   "Runs per cloud for the timing statistics (default 10)");
+  app->add_option("--threads", options->threads,
+                  "Threads for the neighbour search of every statistical_outlier stage "
+                  "(default: the pipeline's, 1; the output is the same for any count)");
   app->add_option("--out", options->out, "Write the filtered clouds (binary PCD) here");
   app->add_option(
       "--write-loads", options->write_loads,

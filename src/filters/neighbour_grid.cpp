@@ -1,5 +1,7 @@
 #include "filters/neighbour_grid.hpp"
 
+#include "filters/distances_below.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,15 +17,63 @@ constexpr double kMaxGridCells = 16e6;
 constexpr float kBoundWidening = 1.6f;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-/// The k smallest of values[0, n) moved to the front (unordered); returns the k-th.
-float select_smallest(float* values, std::size_t n, std::size_t k) {
-  std::nth_element(values, values + (k - 1), values + n);
-  return values[k - 1];
+/// The median of three values, branch-free.
+float median_of_three(float a, float b, float c) {
+  return std::max(std::min(a, b), std::min(std::max(a, b), c));
+}
+
+/// The k smallest of values[0, n) moved to the front (unordered); returns the largest of them.
+/// `scratch` holds n floats. Quickselect with a branch-free partition: a query keeps about 20
+/// candidates for k = 10, and a partition that branches on every comparison of such a short,
+/// random array (nth_element's) mispredicts half of them; here each value is written to both
+/// ends of `scratch` and only the count of its side advances. Values equal to the pivot are
+/// interchangeable (only their values are returned), so ties need no order.
+float keep_smallest(float* values, std::size_t n, std::size_t k, float* scratch) {
+  std::size_t taken = 0;  // values[0, taken) are among the k smallest
+  std::size_t count = n;  // values[taken, taken + count) are undecided
+  float kth = 0.0f;
+  while (taken < k) {
+    float* window = values + taken;
+    const std::size_t need = k - taken;
+    if (need == count) {
+      kth = std::max(kth, *std::max_element(window, window + count));
+      break;
+    }
+    const float pivot = median_of_three(window[0], window[count / 2], window[count - 1]);
+    std::size_t less = 0, greater = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      const float v = window[i];
+      scratch[less] = v;
+      less += v < pivot ? 1 : 0;
+      scratch[count - 1 - greater] = v;
+      greater += v > pivot ? 1 : 0;
+    }
+    std::copy(scratch, scratch + less, window);
+    if (need <= less) {  // all k are below the pivot
+      count = less;
+      continue;
+    }
+    // Every value below the pivot is taken, then as many pivot copies as are needed and
+    // exist; the pivot is one of the values, so at least one.
+    const std::size_t equal = count - less - greater;
+    const std::size_t pivots = std::min(need - less, equal);
+    std::fill(window + less, window + less + pivots, pivot);
+    taken += less + pivots;
+    kth = pivot;
+    std::copy(scratch + (count - greater), scratch + count, values + taken);
+    count = greater;
+  }
+  return kth;
 }
 
 }  // namespace
 
 NeighbourGrid::NeighbourGrid(const std::vector<model::Point3f>& points, double cell) {
+  build(points, cell);
+}
+
+void NeighbourGrid::build(const std::vector<model::Point3f>& points, double cell) {
+  occupied_ = 0;
   low_ = Eigen::Array3f::Constant(kInfinity);
   Eigen::Array3f high = -low_;
   for (const model::Point3f& p : points) {
@@ -39,35 +89,39 @@ NeighbourGrid::NeighbourGrid(const std::vector<model::Point3f>& points, double c
   auto cells_per_axis = [&] { return (span / static_cast<double>(cell_)).floor() + 1.0; };
   while (cells_per_axis().prod() > kMaxGridCells) cell_ *= 1.5f;
   dims_ = cells_per_axis().cast<int>();
+  inverse_cell_ = 1.0f / cell_;
   const std::size_t cells = static_cast<std::size_t>(dims_.x()) * dims_.y() * dims_.z();
+  // Counting sort by cell: counts, then their running sums (each cell's end), then every point
+  // placed counting down from its cell's end, which leaves each entry at its cell's start.
   cell_start_.assign(cells + 1, 0);
-  std::vector<Eigen::Array3i> point_cell(points.size());
-  std::vector<std::uint32_t> point_cell_index(points.size());
+  std::vector<std::uint32_t>& point_cell_index = point_cell_index_;
+  point_cell_index.resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
-    point_cell[i] = ((points[i].array() - low_) / cell_).floor().cast<int>().min(dims_ - 1);
-    point_cell_index[i] = static_cast<std::uint32_t>(cell_of(point_cell[i]));
-    ++cell_start_[point_cell_index[i] + 1];
+    point_cell_index[i] = static_cast<std::uint32_t>(cell_of(cell_index(points[i].array())));
+    ++cell_start_[point_cell_index[i]];
   }
   for (std::size_t c = 0; c < cells; ++c) {
-    occupied_ += cell_start_[c + 1] != 0 ? 1 : 0;
-    cell_start_[c + 1] += cell_start_[c];
+    occupied_ += cell_start_[c] != 0 ? 1 : 0;
+    if (c > 0) cell_start_[c] += cell_start_[c - 1];
   }
-  std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+  cell_start_[cells] = static_cast<std::uint32_t>(points.size());
   sorted_.resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    sorted_[fill[point_cell_index[i]]++] = static_cast<std::uint32_t>(i);
+  for (std::size_t i = points.size(); i-- > 0;) {
+    sorted_[--cell_start_[point_cell_index[i]]] = static_cast<std::uint32_t>(i);
   }
   x_.resize(points.size());
   y_.resize(points.size());
   z_.resize(points.size());
-  sorted_cell_.resize(points.size());
   for (std::size_t rank = 0; rank < points.size(); ++rank) {
     const model::Point3f& p = points[sorted_[rank]];
     x_[rank] = p.x();
     y_[rank] = p.y();
     z_[rank] = p.z();
-    sorted_cell_[rank] = point_cell[sorted_[rank]];
   }
+}
+
+Eigen::Array3i NeighbourGrid::cell_index(const Eigen::Array3f& position) const {
+  return ((position - low_) * inverse_cell_).floor().cast<int>().max(0).min(dims_ - 1);
 }
 
 std::size_t NeighbourGrid::cell_of(const Eigen::Array3i& cell) const {
@@ -79,26 +133,54 @@ double NeighbourGrid::mean_occupancy() const {
                         : static_cast<double>(sorted_.size()) / static_cast<double>(occupied_);
 }
 
-std::size_t NeighbourGrid::append_distances(const model::Point3f& p, std::uint32_t begin,
-                                            std::uint32_t end, std::vector<float>& out,
-                                            std::size_t size) const {
-  if (out.size() < size + (end - begin)) out.resize(2 * (size + (end - begin)));
-  const float* __restrict xs = x_.data() + begin;
-  const float* __restrict ys = y_.data() + begin;
-  const float* __restrict zs = z_.data() + begin;
-  float* __restrict squared = out.data() + size;
-  const float px = p.x(), py = p.y(), pz = p.z();
-  for (std::uint32_t i = 0; i < end - begin; ++i) {  // vectorised by the compiler
-    const float dx = xs[i] - px, dy = ys[i] - py, dz = zs[i] - pz;
-    squared[i] = dx * dx + dy * dy + dz * dz;
+std::size_t NeighbourGrid::gather_below(std::uint32_t rank, float radius, float bound,
+                                        std::vector<float>& out) const {
+  const model::Point3f p(x_[rank], y_[rank], z_[rank]);
+  const Eigen::Array3f position = p.array();
+  // Truncation, not floor(): negative indices clamp to 0 either way, and the upper ends
+  // are never negative (p lies in the grid); floorf is a call on CPUs without SSE 4.1.
+  const Eigen::Array3i from = ((position - radius - low_) * inverse_cell_).cast<int>().max(0);
+  const Eigen::Array3i to = ((position + radius - low_) * inverse_cell_).cast<int>().min(dims_ - 1);
+  const auto gap = [&](int axis, int index) {  // from p to the cell's slab along one axis
+    const float lower = low_[axis] + static_cast<float>(index) * cell_;
+    return std::max({0.0f, lower - position[axis], position[axis] - (lower + cell_)});
+  };
+  // Appends the run [begin, end) of the cell order, which the vector version reads in lanes.
+  std::size_t kept = 0;
+  const auto append = [&](std::uint32_t begin, std::uint32_t end) {
+    constexpr std::size_t kLanes = 8;
+    if (out.size() < kept + (end - begin) + kLanes) out.resize(2 * (kept + (end - begin) + kLanes));
+    kept += append_distances_below(x_.data() + begin, y_.data() + begin, z_.data() + begin,
+                                   end - begin, p.x(), p.y(), p.z(), bound, out.data() + kept);
+  };
+  for (int z = from.z(); z <= to.z(); ++z) {
+    const float z_gap = gap(2, z);
+    const float z_room = radius * radius - z_gap * z_gap;
+    if (z_room < 0) continue;
+    for (int y = from.y(); y <= to.y(); ++y) {
+      const float y_gap = gap(1, y);
+      const float room = z_room - y_gap * y_gap;
+      if (room < 0) continue;
+      const float chord = std::sqrt(room);
+      const int x0 =
+          std::max(from.x(), static_cast<int>((p.x() - chord - low_.x()) * inverse_cell_));
+      const int x1 = std::min(to.x(), static_cast<int>((p.x() + chord - low_.x()) * inverse_cell_));
+      if (x0 > x1) continue;
+      const std::uint32_t begin = cell_start_[cell_of({x0, y, z})];
+      const std::uint32_t end = cell_start_[cell_of({x1, y, z}) + 1];
+      if (rank >= begin && rank < end) {  // the query point itself is no neighbour
+        append(begin, rank);
+        append(rank + 1, end);
+      } else {
+        append(begin, end);
+      }
+    }
   }
-  return size + (end - begin);
+  return kept;
 }
 
 void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch) const {
-  const model::Point3f p(x_[rank], y_[rank], z_[rank]);
-  const Eigen::Array3f position = p.array();
-  std::vector<float>& candidates = scratch.distances;
+  const Eigen::Array3f position(x_[rank], y_[rank], z_[rank]);
   std::vector<float>& answer = scratch.nearest;
   const std::size_t others_in_cloud = sorted_.size() - 1;
   const std::size_t wanted = std::min(static_cast<std::size_t>(k), others_in_cloud);
@@ -110,52 +192,17 @@ void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch
     // row, each row trimmed to the ball's chord. The ball is taken a hair larger than the
     // bound so float rounding in the cell test cannot drop a point the distance test keeps.
     const float radius = std::sqrt(bound) * (1.0f + 1e-5f) + 1e-7f;
-    // Truncation, not floor(): negative indices clamp to 0 either way, and the upper ends
-    // are never negative (p lies in the grid); floorf is a call on CPUs without SSE 4.1.
-    const Eigen::Array3i from = ((position - radius - low_) / cell_).cast<int>().max(0);
-    const Eigen::Array3i to = ((position + radius - low_) / cell_).cast<int>().min(dims_ - 1);
-    const auto gap = [&](int axis, int index) {  // from p to the cell's slab along one axis
-      const float lower = low_[axis] + static_cast<float>(index) * cell_;
-      return std::max({0.0f, lower - position[axis], position[axis] - (lower + cell_)});
-    };
-    std::size_t size = 0;
-    std::size_t self = std::numeric_limits<std::size_t>::max();
-    for (int z = from.z(); z <= to.z(); ++z) {
-      const float z_gap = gap(2, z);
-      const float z_room = radius * radius - z_gap * z_gap;
-      if (z_room < 0) continue;
-      for (int y = from.y(); y <= to.y(); ++y) {
-        const float y_gap = gap(1, y);
-        const float room = z_room - y_gap * y_gap;
-        if (room < 0) continue;
-        const float chord = std::sqrt(room);
-        const int x0 = std::max(from.x(), static_cast<int>((p.x() - chord - low_.x()) / cell_));
-        const int x1 = std::min(to.x(), static_cast<int>((p.x() + chord - low_.x()) / cell_));
-        if (x0 > x1) continue;
-        const std::uint32_t begin = cell_start_[cell_of({x0, y, z})];
-        const std::uint32_t end = cell_start_[cell_of({x1, y, z}) + 1];
-        if (rank >= begin && rank < end) self = size + (rank - begin);
-        size = append_distances(p, begin, end, candidates, size);
-      }
-    }
-    if (self < size) candidates[self] = kInfinity;
-    if (answer.size() < size) answer.resize(size);
-    std::size_t survivors = 0;
-    for (std::size_t i = 0; i < size; ++i) {  // branch-free compaction below the bound
-      answer[survivors] = candidates[i];
-      survivors += candidates[i] < bound ? 1 : 0;
-    }
+    std::size_t survivors = gather_below(rank, radius, bound, answer);
     // Index ranges spanning the grid do not mean the ball holds it: rows are trimmed.
     const Eigen::Array3f high = low_ + dims_.cast<float>() * cell_;
     const bool whole_grid =
         radius * radius >= (position - low_).max(high - position).square().sum();
     if (survivors >= wanted || whole_grid) {
       if (survivors < wanted) {  // the ball holds the whole grid: every other point counts
-        std::copy(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(size),
-                  answer.begin());
-        survivors = size;
+        survivors = gather_below(rank, radius, kInfinity, answer);
       }
-      const float kth = select_smallest(answer.data(), survivors, wanted);
+      if (scratch.distances.size() < survivors) scratch.distances.resize(survivors);
+      const float kth = keep_smallest(answer.data(), survivors, wanted, scratch.distances.data());
       answer.resize(wanted);
       scratch.bound = kth * kBoundWidening;
       return;
@@ -164,8 +211,12 @@ void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch
   }
 }
 
-NeighbourGrid grid_for(const std::vector<model::Point3f>& points, int per_cell) {
-  if (points.size() < 2) return NeighbourGrid(points, 1.0);
+void build_grid_for(const std::vector<model::Point3f>& points, int per_cell,
+                    NeighbourGrid& grid) {
+  if (points.size() < 2) {
+    grid.build(points, 1.0);
+    return;
+  }
   Eigen::Array3f low = points.front().array();
   Eigen::Array3f high = low;
   for (const model::Point3f& p : points) {
@@ -176,11 +227,11 @@ NeighbourGrid grid_for(const std::vector<model::Point3f>& points, int per_cell) 
   // Points on surfaces: spacing ~ diagonal / sqrt(n). The grid built on that guess is kept
   // when its occupancy is within a factor 2 of the aim, else rebuilt once from it.
   const double guess = 2.0 * diagonal / std::sqrt(static_cast<double>(points.size()));
-  NeighbourGrid grid(points, guess);
+  grid.build(points, guess);
   const double occupancy = grid.mean_occupancy();
-  if (occupancy >= 0.5 * per_cell && occupancy <= 2.0 * per_cell) return grid;
+  if (occupancy >= 0.5 * per_cell && occupancy <= 2.0 * per_cell) return;
   const double refined = occupancy > 0 ? guess * std::sqrt(per_cell / occupancy) : guess;
-  return NeighbourGrid(points, std::max(refined, diagonal * 1e-6));
+  grid.build(points, std::max(refined, diagonal * 1e-6));
 }
 
 }  // namespace rigdesign::filters

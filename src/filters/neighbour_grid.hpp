@@ -17,15 +17,20 @@ namespace rigdesign::filters {
 
 /// Reusable buffers of one thread's queries, and the bound carried from query to query.
 struct NeighbourScratch {
-  std::vector<float> distances;  ///< squared, every candidate of the current query (capacity)
+  std::vector<float> distances;  ///< the k-selection's scratch (capacity)
   std::vector<float> nearest;    ///< squared, the answer's k smallest (unordered)
   float bound = 0.0f;            ///< squared distance: the previous answer's k-th, widened
 };
 
 class NeighbourGrid {
  public:
+  NeighbourGrid() = default;
   /// `cell` > 0 [m].
   NeighbourGrid(const std::vector<model::Point3f>& points, double cell);
+
+  /// Rebuilds the grid over `points`, reusing this grid's memory (a filter run per frame
+  /// allocates nothing once its clouds stop growing).
+  void build(const std::vector<model::Point3f>& points, double cell);
 
   /// The squared distances to the k nearest other points of the point at position `rank` of
   /// the grid's cell order, unordered, in `scratch.nearest` (fewer when the cloud has fewer
@@ -40,23 +45,27 @@ class NeighbourGrid {
   double mean_occupancy() const;
 
  private:
+  /// The cell holding `position`, clamped to the grid.
+  Eigen::Array3i cell_index(const Eigen::Array3f& position) const;
   std::size_t cell_of(const Eigen::Array3i& cell) const;
-  /// Writes the squared distances from p to every point ranked [begin, end) at out[size...],
-  /// growing `out` when needed; returns the new size.
-  std::size_t append_distances(const model::Point3f& p, std::uint32_t begin, std::uint32_t end,
-                               std::vector<float>& out, std::size_t size) const;
+  /// Writes to `out` (grown when needed) the squared distances below `bound` from the point
+  /// ranked `rank` to every other point in the cells a ball of `radius` around it touches;
+  /// returns how many.
+  std::size_t gather_below(std::uint32_t rank, float radius, float bound,
+                           std::vector<float>& out) const;
 
-  float cell_;
-  Eigen::Array3f low_;
-  Eigen::Array3i dims_;
+  float cell_ = 1.0f;
+  float inverse_cell_ = 1.0f;  // cell indices are taken by this one product, everywhere
+  Eigen::Array3f low_ = Eigen::Array3f::Zero();
+  Eigen::Array3i dims_ = Eigen::Array3i::Ones();
   std::vector<std::uint32_t> cell_start_;  // prefix sums, size cells + 1
   std::vector<std::uint32_t> sorted_;      // point indices grouped by cell
   std::vector<float> x_, y_, z_;           // the points in that order, one array per axis
-  std::vector<Eigen::Array3i> sorted_cell_;
+  std::vector<std::uint32_t> point_cell_index_;  // build's scratch, kept for reuse
   std::size_t occupied_ = 0;
 };
 
-/// A grid whose occupied cells hold about `per_cell` points (surfaces assumed).
-NeighbourGrid grid_for(const std::vector<model::Point3f>& points, int per_cell);
+/// Builds `grid` so its occupied cells hold about `per_cell` points (surfaces assumed).
+void build_grid_for(const std::vector<model::Point3f>& points, int per_cell, NeighbourGrid& grid);
 
 }  // namespace rigdesign::filters

@@ -59,6 +59,13 @@ std::optional<model::Pipeline> preset_pipeline(const std::string& name) {
   return std::nullopt;
 }
 
+model::Pipeline with_threads(model::Pipeline pipeline, int threads) {
+  for (model::StageParams& stage : pipeline.stages) {
+    if (auto* sor = std::get_if<model::StatisticalOutlierParams>(&stage)) sor->threads = threads;
+  }
+  return pipeline;
+}
+
 model::PointCloud run_stage(const model::StageParams& stage, const model::PointCloud& cloud) {
   return std::visit([&](const auto& params) { return run(params, cloud); }, stage);
 }

@@ -1,6 +1,10 @@
 #include "rigdesign/filters/statistical_outlier.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <functional>
+#include <thread>
 
 #include "filters/neighbour_grid.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -28,19 +32,58 @@ std::vector<std::uint32_t> statistical_outlier_inliers(
     for (std::uint32_t i = 0; i < cloud.size(); ++i) kept.push_back(i);
     return kept;
   }
-  const filters::NeighbourGrid grid = params.cell > 0
-                                          ? filters::NeighbourGrid(cloud.points, params.cell)
-                                          : filters::grid_for(cloud.points, params.neighbours);
-  std::vector<double> mean_distance(cloud.size());
-  filters::NeighbourScratch scratch;
+  // The grid and the per-point means live from call to call on each thread: a pipeline run
+  // per frame then allocates nothing here once its clouds stop growing.
+  thread_local NeighbourGrid this_threads_grid;
+  thread_local std::vector<double> this_threads_means;
+  // Plain references: the helper threads below must reach this thread's instances, and a
+  // thread_local named inside the lambda would be the helper's own.
+  NeighbourGrid& grid = this_threads_grid;
+  std::vector<double>& mean_distance = this_threads_means;
+  if (params.cell > 0) {
+    grid.build(cloud.points, params.cell);
+  } else {
+    build_grid_for(cloud.points, params.neighbours, grid);
+  }
+  mean_distance.resize(cloud.size());
+  // Queries go in chunks of the cell order (neighbouring queries keep their cells in cache),
+  // taken from a shared counter: a thread slowed by other work on its core takes fewer chunks,
+  // so two threads on a loaded machine are not held back by the slower one. Each point's mean
+  // is written by whichever thread answers it.
+  constexpr std::uint32_t kChunk = 4096;
+  const auto points = static_cast<std::uint32_t>(cloud.size());
+  std::atomic<std::uint32_t> next_chunk{0};
+  const auto answer = [&](NeighbourScratch& scratch) {
+    for (;;) {
+      const std::uint32_t from = next_chunk.fetch_add(kChunk, std::memory_order_relaxed);
+      if (from >= points) return;
+      const std::uint32_t to = std::min(points, from + kChunk);
+      scratch.bound = 0.0f;
+      for (std::uint32_t rank = from; rank < to; ++rank) {
+        grid.nearest(rank, params.neighbours, scratch);
+        double total = 0.0;
+        for (const float d2 : scratch.nearest) total += std::sqrt(static_cast<double>(d2));
+        mean_distance[grid.index_at(rank)] = total / static_cast<double>(scratch.nearest.size());
+      }
+    }
+  };
+  const std::size_t threads = std::clamp<std::size_t>(
+      cloud.size() / model::kMinPointsPerFilterThread, 1,
+      static_cast<std::size_t>(std::clamp(params.threads, 1, model::kMaxFilterThreads)));
+  if (threads == 1) {
+    thread_local NeighbourScratch scratch;
+    answer(scratch);
+  } else {
+    std::vector<NeighbourScratch> scratches(threads);
+    std::vector<std::thread> helpers;
+    for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(answer, std::ref(scratches[t]));
+    answer(scratches[0]);
+    for (std::thread& helper : helpers) helper.join();
+  }
+  // Summed in input order whatever the thread count, so the threshold is the same bit for bit.
   double sum = 0.0;
   double sum_squares = 0.0;
-  for (std::uint32_t rank = 0; rank < cloud.size(); ++rank) {  // in the grid's cell order
-    grid.nearest(rank, params.neighbours, scratch);
-    double total = 0.0;
-    for (const float d2 : scratch.nearest) total += std::sqrt(static_cast<double>(d2));
-    const double mean = total / static_cast<double>(scratch.nearest.size());
-    mean_distance[grid.index_at(rank)] = mean;
+  for (const double mean : mean_distance) {
     sum += mean;
     sum_squares += mean * mean;
   }

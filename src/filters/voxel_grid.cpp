@@ -26,6 +26,38 @@ struct Accumulator {
   std::uint32_t count = 0;    // 0 marks an empty slot
 };
 
+/// The hash table's memory, kept by each thread from call to call. Every slot is empty between
+/// calls (SlotsCleared empties the used ones on the way out, whatever happens), so a call
+/// clears nothing up front.
+struct VoxelScratch {
+  std::vector<Accumulator> table, spare;
+  std::vector<std::uint32_t> occupied;  // the used slots of `table`, in first-seen order
+  std::size_t last_voxels = 0;          // the previous call's voxel count
+
+  /// The first `n` slots of the table, grown (with empty slots) when needed.
+  Accumulator* slots(std::size_t n) {
+    if (table.size() < n) table.resize(n);
+    return table.data();
+  }
+  Accumulator* spare_slots(std::size_t n) {
+    if (spare.size() < n) spare.resize(n);
+    return spare.data();
+  }
+  /// The spare, filled by a grow, becomes the table; the emptied table the spare.
+  Accumulator* swap_slots() {
+    table.swap(spare);
+    return table.data();
+  }
+};
+
+struct SlotsCleared {
+  VoxelScratch& scratch;
+  ~SlotsCleared() {
+    for (const std::uint32_t slot : scratch.occupied) scratch.table[slot] = Accumulator{};
+    scratch.occupied.clear();
+  }
+};
+
 /// Spreads packed keys over the table: the high half folded into the low one, then one
 /// multiply by 2^64 / golden ratio; callers take the product's high bits.
 std::uint64_t mix(std::uint64_t key) {
@@ -130,33 +162,49 @@ model::PointCloud voxel_grid(const model::PointCloud& cloud, const model::VoxelG
                           "a larger leaf, or a cloud nearer the origin"});
   }
   const Eigen::Array4i first4 = lowest.cast<int>();
-  // Open addressing on the packed voxel key, sums accumulated in place. The table starts at
-  // twice a quarter of the points (clouds shrink about tenfold at 3 cm), or twice the voxels
-  // the bounding box holds if fewer, and doubles when half full.
+  // Open addressing on the packed voxel key, sums accumulated in place, in a table that lives
+  // from call to call on each thread (a per-frame filter allocates nothing, and a table larger
+  // than glibc's mmap threshold is not handed back and faulted in again on every call). It is
+  // sized from the previous call's voxel count (frames alike), or on a first call from a quarter
+  // of the points (clouds shrink about tenfold at 3 cm), at most twice the voxels the bounding
+  // box holds, and doubles when half full.
+  thread_local VoxelScratch scratch;
+  const SlotsCleared cleanup{scratch};
   const Eigen::Array3d spans = last - first + 1.0;
   const double box_voxels = spans.x() * spans.y() * spans.z();
-  const double expected = std::min(static_cast<double>(cloud.size()) / 4, box_voxels);
+  const double guess = scratch.last_voxels > 0 ? static_cast<double>(scratch.last_voxels)
+                                               : static_cast<double>(cloud.size()) / 4;
+  const double expected = std::min(guess, box_voxels);
   int bits = 10;
   while (static_cast<double>(std::size_t{1} << bits) < 2 * expected && bits < 24) ++bits;
-  std::vector<Accumulator> table(std::size_t{1} << bits);
-  std::vector<std::uint32_t> occupied;
+  Accumulator* table = scratch.slots(std::size_t{1} << bits);
+  std::vector<std::uint32_t>& occupied = scratch.occupied;
   const auto home = [&](std::uint64_t key) {
     return static_cast<std::size_t>(mix(key) >> (64 - bits));
   };
+  const auto find = [&](std::uint64_t key) {
+    const std::size_t mask = (std::size_t{1} << bits) - 1;
+    std::size_t slot = home(key);
+    while (table[slot].count != 0 && table[slot].key != key) slot = (slot + 1) & mask;
+    return slot;
+  };
   const auto grow = [&] {
     ++bits;
-    std::vector<Accumulator> bigger(std::size_t{1} << bits);
+    Accumulator* bigger = scratch.spare_slots(std::size_t{1} << bits);
+    const std::size_t mask = (std::size_t{1} << bits) - 1;
     for (std::uint32_t& slot : occupied) {
       std::size_t moved = home(table[slot].key);
-      while (bigger[moved].count != 0) moved = (moved + 1) & (bigger.size() - 1);
+      while (bigger[moved].count != 0) moved = (moved + 1) & mask;
       bigger[moved] = table[slot];
+      table[slot] = Accumulator{};
       slot = static_cast<std::uint32_t>(moved);
     }
-    table.swap(bigger);
+    table = scratch.swap_slots();
   };
   // A point's key is computed a few points ahead of its turn, in a small ring, so the table
   // slot it will touch can be prefetched: the table is larger than the cache and a miss costs
-  // more than the rest of the work.
+  // more than the rest of the work. Consecutive points of a scan mostly share a voxel: the
+  // last voxel is kept at hand and the table is not searched for them.
   constexpr std::size_t kAhead = 16;  // a power of two
   const std::size_t points = cloud.size();
   const auto key_at = [&](std::size_t i) {
@@ -166,33 +214,40 @@ model::PointCloud voxel_grid(const model::PointCloud& cloud, const model::VoxelG
   };
   std::uint64_t ahead[kAhead];
   for (std::size_t i = 0; i < std::min(kAhead, points); ++i) ahead[i] = key_at(i);
+  std::uint64_t last_key = 0;
+  Accumulator* voxel = nullptr;
   for (std::size_t i = 0; i < points; ++i) {
     const std::uint64_t key = ahead[i % kAhead];
     if (i + kAhead < points) {
       ahead[i % kAhead] = key_at(i + kAhead);
       __builtin_prefetch(&table[home(ahead[i % kAhead])], 1);
     }
-    const std::size_t mask = table.size() - 1;
-    std::size_t slot = home(key);
-    while (table[slot].count != 0 && table[slot].key != key) slot = (slot + 1) & mask;
-    Accumulator& voxel = table[slot];
-    if (voxel.count == 0) {
-      voxel.key = key;
-      occupied.push_back(static_cast<std::uint32_t>(slot));
+    if (voxel == nullptr || key != last_key) {
+      std::size_t slot = find(key);
+      if (table[slot].count == 0) {  // a new voxel: the table doubles first if half full
+        if ((occupied.size() + 1) * 2 > (std::size_t{1} << bits)) {
+          grow();
+          slot = find(key);
+        }
+        table[slot].key = key;
+        occupied.push_back(static_cast<std::uint32_t>(slot));
+      }
+      voxel = &table[slot];
+      last_key = key;
     }
     const model::Point3f& p = cloud.points[i];
-    voxel.x += p.x();
-    voxel.y += p.y();
-    voxel.z += p.z();
-    ++voxel.count;
-    if (voxel.count == 1 && occupied.size() * 2 > table.size()) grow();
+    voxel->x += p.x();
+    voxel->y += p.y();
+    voxel->z += p.z();
+    ++voxel->count;
   }
   result.points.reserve(occupied.size());
   for (const std::uint32_t filled : occupied) {
-    const Accumulator& voxel = table[filled];
-    const float n = static_cast<float>(voxel.count);
-    result.points.emplace_back(voxel.x / n, voxel.y / n, voxel.z / n);
+    const Accumulator& sums = table[filled];
+    const float n = static_cast<float>(sums.count);
+    result.points.emplace_back(sums.x / n, sums.y / n, sums.z / n);
   }
+  scratch.last_voxels = occupied.size();
   return result;
 }
 

@@ -25,7 +25,16 @@ void set_bits(std::vector<std::uint64_t>& words, std::size_t first, std::size_t 
   }
 }
 
-std::size_t popcount(const std::vector<std::uint64_t>& words) {
+// Generic x86-64 has no POPCNT instruction, so std::popcount becomes a libgcc call per word;
+// a second copy compiled for POPCNT is chosen at load time where the CPU has it (one binary
+// for every x86-64 machine).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define RIGDESIGN_POPCNT_CLONES __attribute__((target_clones("popcnt", "default")))
+#else
+#define RIGDESIGN_POPCNT_CLONES
+#endif
+
+RIGDESIGN_POPCNT_CLONES std::size_t popcount(const std::vector<std::uint64_t>& words) {
   std::size_t total = 0;
   for (const std::uint64_t word : words) total += static_cast<std::size_t>(std::popcount(word));
   return total;
@@ -77,7 +86,7 @@ double SectionRaster::floor_share() const {
 
 namespace {
 
-std::size_t union_popcount(const std::vector<std::uint64_t>& a,
+RIGDESIGN_POPCNT_CLONES std::size_t union_popcount(const std::vector<std::uint64_t>& a,
                            const std::vector<std::uint64_t>& b) {
   std::size_t total = 0;
   for (std::size_t i = 0; i < a.size(); ++i)

@@ -156,16 +156,20 @@ class BranchAndBound {
   }
 
   // Adds option o of slot k to the union at the searched angles, saving what it changes.
+  // The saved words are a stack that only grows to the deepest path's size: no per-node
+  // allocation, no zero-fill.
   void add(std::size_t k, int o) {
     const std::uint64_t* bits = classes_.bits(k, o);
     for (const int a : searched_span_[k][o]) {
-      saved_counts_.push_back(counts_[a]);
-      saved_words_.insert(saved_words_.end(), union_.begin() + static_cast<long>(classes_.begin(a)),
-                          union_.begin() + static_cast<long>(classes_.end(a)));
-      const CellCounts gain = classes_.count_new(a, bits, union_.data());
-      counts_[a].cells += gain.cells;
-      counts_[a].floor += gain.floor;
-      for (std::size_t w = classes_.begin(a); w < classes_.end(a); ++w) union_[w] |= bits[w];
+      const std::size_t angle = static_cast<std::size_t>(a);
+      saved_counts_.push_back(counts_[angle]);
+      const std::size_t words = classes_.end(angle) - classes_.begin(angle);
+      if (saved_words_.size() < saved_top_ + words) saved_words_.resize(2 * (saved_top_ + words));
+      const CellCounts gain =
+          classes_.merge(angle, bits, union_.data(), saved_words_.data() + saved_top_);
+      saved_top_ += words;
+      counts_[angle].cells += gain.cells;
+      counts_[angle].floor += gain.floor;
     }
   }
 
@@ -176,9 +180,9 @@ class BranchAndBound {
       counts_[a] = saved_counts_.back();
       saved_counts_.pop_back();
       const std::size_t words = classes_.end(a) - classes_.begin(a);
-      std::copy(saved_words_.end() - static_cast<long>(words), saved_words_.end(),
-                union_.begin() + static_cast<long>(classes_.begin(a)));
-      saved_words_.resize(saved_words_.size() - words);
+      saved_top_ -= words;
+      std::copy_n(saved_words_.begin() + static_cast<long>(saved_top_), words,
+                  union_.begin() + static_cast<long>(classes_.begin(a)));
     }
   }
 
@@ -344,7 +348,8 @@ class BranchAndBound {
   std::vector<std::vector<double>> cheapest_floor_;
   std::vector<std::uint64_t> union_;
   std::vector<CellCounts> counts_;
-  std::vector<std::uint64_t> saved_words_;
+  std::vector<std::uint64_t> saved_words_;  // a stack: [0, saved_top_) in use
+  std::size_t saved_top_ = 0;
   std::vector<CellCounts> saved_counts_;
   std::vector<std::uint64_t> scratch_;
   std::vector<int> choice_;

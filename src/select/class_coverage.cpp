@@ -148,4 +148,20 @@ CellCounts ClassCoverage::count_new(std::size_t angle, const std::uint64_t* bits
   return counts;
 }
 
+CellCounts ClassCoverage::merge(std::size_t angle, const std::uint64_t* bits,
+                                std::uint64_t* words, std::uint64_t* saved) const {
+  CellCounts counts;
+  for (std::size_t w = begin_[angle]; w < begin_[angle + 1]; ++w) {
+    const std::uint64_t had = words[w];
+    *saved++ = had;
+    words[w] = had | bits[w];
+    for (std::uint64_t x = bits[w] & ~had; x != 0; x &= x - 1) {
+      const std::size_t c = w * kWordBits + static_cast<std::size_t>(std::countr_zero(x));
+      counts.cells += cell_weight_[c];
+      counts.floor += floor_weight_[c];
+    }
+  }
+  return counts;
+}
+
 }  // namespace rigdesign::select

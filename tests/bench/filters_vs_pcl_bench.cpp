@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "openmp_regions.hpp"
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
@@ -34,16 +35,13 @@ using PclCloud = pcl::PointCloud<pcl::PointXYZ>;
 
 constexpr int kRuns = 15;
 
-double median_seconds(const std::function<std::size_t()>& run, std::size_t& points_out) {
-  std::vector<double> times;
-  for (int i = 0; i < kRuns; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    points_out = run();
-    times.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
 }
 
 PclCloud::Ptr to_pcl(const model::PointCloud& cloud) {
@@ -143,65 +141,100 @@ PclCloud::Ptr pcl_floor_2(const PclCloud::Ptr& in) {
   return out;
 }
 
+/// One stage or pipeline: ours, PCL as shipped, and PCL with its OpenMP regions run inline on
+/// the calling thread (the fair peer: same algorithm, one thread, no per-query team start).
 struct Row {
   std::string name;
-  double ours;
-  double theirs;
-  std::size_t ours_points;
-  std::size_t theirs_points;
+  double ours = 0, shipped = 0, serial = 0;  // medians [s]
+  std::size_t ours_points = 0, pcl_points = 0;
+  double regions_per_call = 0;  // PCL's OpenMP regions per call
 };
+
+/// Times `ours` and `pcl` in interleaved rounds (ours, PCL shipped, PCL serial, the order
+/// rotated each round) so a change of load during the run falls on all three alike.
+Row measure(const std::string& name, const std::function<std::size_t()>& ours,
+            const std::function<std::size_t()>& pcl) {
+  Row row;
+  row.name = name;
+  std::vector<double> times[3];
+  const auto run = [&](int contender) {
+    if (contender > 0) {
+      bench::set_openmp_regions(contender == 1 ? bench::OpenMpRegions::shipped
+                                               : bench::OpenMpRegions::inline_serial);
+    }
+    const std::uint64_t regions_before = bench::openmp_regions_entered();
+    const auto start = std::chrono::steady_clock::now();
+    const std::size_t points = contender == 0 ? ours() : pcl();
+    times[contender].push_back(seconds_since(start));
+    if (contender == 0) row.ours_points = points;
+    if (contender > 0) {
+      if (row.pcl_points != 0 && row.pcl_points != points) {
+        std::printf("  %s: PCL's point count differs between its modes (%zu, %zu)\n",
+                    name.c_str(), row.pcl_points, points);
+      }
+      row.pcl_points = points;
+      row.regions_per_call =
+          static_cast<double>(bench::openmp_regions_entered() - regions_before);
+    }
+  };
+  for (int round = 0; round < kRuns; ++round) {
+    for (int i = 0; i < 3; ++i) run((round + i) % 3);
+  }
+  bench::set_openmp_regions(bench::OpenMpRegions::shipped);
+  row.ours = median(times[0]);
+  row.shipped = median(times[1]);
+  row.serial = median(times[2]);
+  return row;
+}
 
 void print(const std::string& cloud_name, std::size_t points, const std::vector<Row>& rows) {
   std::printf("\n%s (%zu points)\n", cloud_name.c_str(), points);
-  std::printf("  %-22s %10s %10s %8s %12s %12s\n", "stage", "ours ms", "PCL ms", "PCL/ours",
-              "ours points", "PCL points");
+  std::printf("  %-24s %9s %9s %9s %8s %8s %9s %9s %9s\n", "stage", "ours ms", "PCL ms",
+              "PCL1 ms", "PCL/ours", "PCL1/ours", "ours pts", "PCL pts", "regions");
   for (const Row& r : rows) {
-    std::printf("  %-22s %10.2f %10.2f %8.2f %12zu %12zu\n", r.name.c_str(), r.ours * 1e3,
-                r.theirs * 1e3, r.theirs / r.ours, r.ours_points, r.theirs_points);
+    std::printf("  %-24s %9.2f %9.2f %9.2f %8.2f %9.2f %9zu %9zu %9.0f\n", r.name.c_str(),
+                r.ours * 1e3, r.shipped * 1e3, r.serial * 1e3, r.shipped / r.ours,
+                r.serial / r.ours, r.ours_points, r.pcl_points, r.regions_per_call);
   }
 }
 
 void compare(const std::string& name, const model::PointCloud& cloud) {
   const PclCloud::Ptr input = to_pcl(cloud);
   std::vector<Row> rows;
-  std::size_t a = 0, b = 0;
   const model::PointCloud voxelised = filters::voxel_grid(cloud);
   const PclCloud::Ptr pcl_voxelised = pcl_voxel(input, 0.03f);
-  double ours = median_seconds([&] { return filters::voxel_grid(cloud).size(); }, a);
-  double theirs = median_seconds([&] { return pcl_voxel(input, 0.03f)->size(); }, b);
-  rows.push_back({"voxel_grid 3 cm", ours, theirs, a, b});
-  ours = median_seconds([&] { return filters::statistical_outlier_removal(voxelised).size(); }, a);
-  theirs = median_seconds([&] { return pcl_sor(pcl_voxelised)->size(); }, b);
-  rows.push_back({"SOR on voxelised", ours, theirs, a, b});
-  ours = median_seconds([&] { return filters::pass_through(cloud).size(); }, a);
-  theirs = median_seconds([&] { return pcl_pass(input, false)->size(); }, b);
-  rows.push_back({"pass_through z", ours, theirs, a, b});
-  ours = median_seconds([&] { return filters::fit_plane_ransac(voxelised).inliers.size(); }, a);
-  theirs = median_seconds(
+  rows.push_back(measure(
+      "voxel_grid 3 cm", [&] { return filters::voxel_grid(cloud).size(); },
+      [&] { return pcl_voxel(input, 0.03f)->size(); }));
+  rows.push_back(measure(
+      "SOR on voxelised", [&] { return filters::statistical_outlier_removal(voxelised).size(); },
+      [&] { return pcl_sor(pcl_voxelised)->size(); }));
+  rows.push_back(measure(
+      "pass_through z", [&] { return filters::pass_through(cloud).size(); },
+      [&] { return pcl_pass(input, false)->size(); }));
+  rows.push_back(measure(
+      "RANSAC plane (voxelised)",
+      [&] { return filters::fit_plane_ransac(voxelised).inliers.size(); },
       [&] {
         pcl::ModelCoefficients c;
         return pcl_plane(pcl_voxelised, c)->indices.size();
-      },
-      b);
-  rows.push_back({"RANSAC plane (voxelised)", ours, theirs, a, b});
-  ours = median_seconds([&] { return filters::remove_floor_1(voxelised).size(); }, a);
-  theirs = median_seconds([&] { return pcl_floor_1(pcl_voxelised)->size(); }, b);
-  rows.push_back({"floor_removal_1", ours, theirs, a, b});
-  ours = median_seconds([&] { return filters::remove_floor_2(voxelised).size(); }, a);
-  theirs = median_seconds([&] { return pcl_floor_2(pcl_voxelised)->size(); }, b);
-  rows.push_back({"floor_removal_2", ours, theirs, a, b});
-  for (const char* pipeline : {"P2", "P3", "P4"}) {
+      }));
+  rows.push_back(measure(
+      "floor_removal_1", [&] { return filters::remove_floor_1(voxelised).size(); },
+      [&] { return pcl_floor_1(pcl_voxelised)->size(); }));
+  rows.push_back(measure(
+      "floor_removal_2", [&] { return filters::remove_floor_2(voxelised).size(); },
+      [&] { return pcl_floor_2(pcl_voxelised)->size(); }));
+  for (const std::string pipeline : {"P2", "P3", "P4"}) {
     const model::Pipeline p = *filters::preset_pipeline(pipeline);
-    ours = median_seconds([&] { return filters::run_pipeline(p, cloud).size(); }, a);
-    theirs = median_seconds(
+    rows.push_back(measure(
+        "pipeline " + pipeline, [&] { return filters::run_pipeline(p, cloud).size(); },
         [&] {
           const PclCloud::Ptr v = pcl_voxel(input, 0.03f);
-          if (std::string(pipeline) == "P2") return pcl_floor_1(pcl_sor(v))->size();
-          if (std::string(pipeline) == "P3") return pcl_sor(pcl_floor_1(v))->size();
+          if (pipeline == "P2") return pcl_floor_1(pcl_sor(v))->size();
+          if (pipeline == "P3") return pcl_sor(pcl_floor_1(v))->size();
           return pcl_floor_2(pcl_sor(v))->size();
-        },
-        b);
-    rows.push_back({std::string("pipeline ") + pipeline, ours, theirs, a, b});
+        }));
   }
   print(name, cloud.size(), rows);
 }
@@ -224,8 +257,12 @@ model::PointCloud mounted(const model::PointCloud& optical) {
 
 int main() {
   const std::string folder = std::string(RIGDESIGN_SOURCE_DIR) + "/../shared/data/real";
-  std::printf("ours vs PCL %s, single thread, %d runs per figure (medians)\n", PCL_VERSION_PRETTY,
-              kRuns);
+  std::printf(
+      "ours vs PCL %s, single thread, %d interleaved rounds per figure (medians).\n"
+      "PCL: as shipped (an OpenMP region per neighbour query); PCL1: the same code with its\n"
+      "OpenMP regions run inline on the calling thread (the fair peer); regions: PCL's OpenMP\n"
+      "regions per call.\n",
+      PCL_VERSION_PRETTY, kRuns);
   {  // A simulated Azure Kinect NFOV unbinned frame of the office, from the UR Cleaner's front.
     const model::SensorLibrary library =
         io::load_sensor_library(std::string(RIGDESIGN_SOURCE_DIR) + "/sensors.yaml");

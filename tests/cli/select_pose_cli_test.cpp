@@ -40,7 +40,7 @@ cpus:
 )";
 }
 
-const char* const kRequirements = R"(name: Poses app
+const char* const kPoseRequirements = R"(name: Poses app
 body: {radius: 0.3, height: 0.8}
 sectors:
   - {name: front, from_deg: -10, to_deg: 10, min_complete_coverage: 0.3, min_floor_coverage: 0.5}
@@ -53,7 +53,7 @@ struct PoseSetup {
   TempFolder folder;
   std::string catalog, requirements, out;
   explicit PoseSetup(const std::string& front_pitch = "{min: 0, max: 40, step: 10}",
-                     const std::string& requirements_text = kRequirements) {
+                     const std::string& requirements_text = kPoseRequirements) {
     catalog = folder.write("catalog.yaml", pose_catalog(front_pitch));
     requirements = folder.write("req.yaml", requirements_text);
     out = folder.path() + "/out";
@@ -174,7 +174,7 @@ transfer:
 cpus:
   - {id: small, cores: 3.0, price_usd: 300}
 )");
-  const std::string requirements = folder.write("req.yaml", kRequirements);
+  const std::string requirements = folder.write("req.yaml", kPoseRequirements);
   const CliResult result =
       run_cli({"select", "--catalog", catalog, "--requirements", requirements, "--budget", "5000",
                "--robust", "n-1", "--step", "10", "--no-renders", "--out", folder.path() + "/out"});

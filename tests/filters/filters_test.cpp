@@ -5,60 +5,13 @@
 
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/model/input_error.hpp"
+#include "support/clouds.hpp"
 
 using namespace rigdesign;
 
-namespace {
-
-model::PointCloud cloud_of(std::vector<model::Point3f> points) {
-  model::PointCloud cloud;
-  cloud.points = std::move(points);
-  return cloud;
-}
-
-// A floor patch on a regular grid with Gaussian height noise.
-std::vector<model::Point3f> noisy_floor(double size, double spacing, double sigma,
-                                        std::mt19937& rng) {
-  std::normal_distribution<float> noise(0.0f, static_cast<float>(sigma));
-  std::vector<model::Point3f> points;
-  for (double x = -size / 2; x < size / 2; x += spacing) {
-    for (double y = -size / 2; y < size / 2; y += spacing) {
-      points.emplace_back(static_cast<float>(x), static_cast<float>(y), noise(rng));
-    }
-  }
-  return points;
-}
-
-// SOR's inliers by brute force: PCL's definition (mean distance to the k nearest others,
-// kept when within mean + 1 sample standard deviation), written independently.
-std::vector<std::uint32_t> brute_force_inliers(const std::vector<model::Point3f>& points, int k) {
-  std::vector<double> mean(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    std::vector<double> d;
-    for (std::size_t j = 0; j < points.size(); ++j) {
-      if (j != i) d.push_back((points[i] - points[j]).cast<double>().norm());
-    }
-    const std::size_t used = std::min(d.size(), static_cast<std::size_t>(k));
-    std::partial_sort(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(used), d.end());
-    double sum = 0;
-    for (std::size_t n = 0; n < used; ++n) sum += d[n];
-    mean[i] = sum / static_cast<double>(used);
-  }
-  double sum = 0, squares = 0;
-  for (const double m : mean) {
-    sum += m;
-    squares += m * m;
-  }
-  const double n = static_cast<double>(mean.size());
-  const double threshold = sum / n + std::sqrt((squares - sum * sum / n) / (n - 1));
-  std::vector<std::uint32_t> expected;
-  for (std::uint32_t i = 0; i < mean.size(); ++i) {
-    if (mean[i] <= threshold) expected.push_back(i);
-  }
-  return expected;
-}
-
-}  // namespace
+using test::brute_force_inliers;
+using test::cloud_of;
+using test::noisy_floor;
 
 TEST_CASE("voxel grid returns each voxel's centroid") {
   // Leaf 1 m: (0.1, 0.1, 0.1) and (0.3, 0.5, 0.2) share voxel (0, 0, 0), centroid

@@ -50,3 +50,26 @@ TEST_CASE("an unknown stage names the registered ones", "[filters][io]") {
     CHECK(d.expected.find("negative_obstacles") != std::string::npos);
   }
 }
+
+TEST_CASE("statistical_outlier reads a thread count and refuses one out of range", "[filters][io]") {
+  TempFolder folder;
+  const model::Pipeline two = io::load_pipeline(folder.write(
+      "two.yaml", "name: two\nstages:\n  - statistical_outlier: {neighbours: 8, threads: 2}\n"));
+  REQUIRE(two.stages.size() == 1);
+  CHECK(std::get<model::StatisticalOutlierParams>(two.stages[0]).threads == 2);
+  CHECK(std::get<model::StatisticalOutlierParams>(filters::with_threads(two, 3).stages[0])
+            .threads == 3);
+  for (const std::string bad : {"0", "65", "two"}) {
+    const std::string path = folder.write(
+        "bad.yaml", "name: bad\nstages:\n  - statistical_outlier:\n      threads: " + bad + "\n");
+    try {
+      io::load_pipeline(path);
+      FAIL("loaded threads: " << bad);
+    } catch (const model::InputError& error) {
+      const model::Diagnostic& d = error.diagnostics().front();
+      CHECK(d.where.line == 4);
+      CHECK(d.field.find("threads") != std::string::npos);
+      CHECK(d.expected == "a thread count, 1 to 64");
+    }
+  }
+}

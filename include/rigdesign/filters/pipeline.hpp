@@ -26,6 +26,9 @@ struct StageRun {
   double seconds = 0.0;
 };
 
+/// The pipeline with every stage that can use threads (statistical_outlier) set to `threads`.
+model::Pipeline with_threads(model::Pipeline pipeline, int threads);
+
 /// Runs the stages in order; `runs` receives one entry per stage.
 model::PointCloud run_pipeline(const model::Pipeline& pipeline, const model::PointCloud& input,
                                std::vector<StageRun>* runs = nullptr);

@@ -42,7 +42,14 @@ struct StatisticalOutlierParams {
   /// [m] grid cell of the neighbour search; 0 picks one from the cloud (about N points per
   /// occupied cell). Only speed depends on it, never the result.
   double cell = 0.0;
+  /// Threads for the neighbour queries (1 to kMaxFilterThreads); the result is the same for
+  /// any count. Each thread takes at least kMinPointsPerFilterThread points: below that, a
+  /// thread's start costs more than its share of the queries saves.
+  int threads = 1;
 };
+
+inline constexpr int kMaxFilterThreads = 64;
+inline constexpr std::size_t kMinPointsPerFilterThread = 8000;
 
 struct RansacPlaneParams {
   int iterations = 100;     ///< I: the most hypotheses tried

@@ -74,6 +74,13 @@ void read_stage_fields(MapReader& m, model::StatisticalOutlierParams& params) {
   }
   read_if_present(m, "std_multiplier", params.std_multiplier, "M, a number of standard deviations");
   read_positive(m, "cell", params.cell, "the neighbour grid cell in metres, > 0");
+  const std::string threads_form =
+      "a thread count, 1 to " + std::to_string(model::kMaxFilterThreads);
+  if (const auto threads = m.integer("threads", Need::optional, threads_form)) {
+    m.require(*threads >= 1 && *threads <= model::kMaxFilterThreads, "threads",
+              "is " + std::to_string(*threads), threads_form);
+    params.threads = *threads;
+  }
   m.reject_unknown_keys();
 }
 
