@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -134,32 +135,22 @@ Frames simulate(const model::Scene& scene, const std::vector<occupancy::CellSens
   return frames;
 }
 
-// Best of `repeats` whole passes over the frames [s]: the least disturbed by other load.
-template <class Insert>
-double best_seconds(int repeats, Insert insert) {
-  double best = 1e300;
-  for (int r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    insert();
-    best = std::min(
-        best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  return best;
+// Whole passes over the frames, timed in interleaved rounds (ours, OctoMap), medians.
+constexpr int kThroughputRounds = 7;
+
+double seconds_of(const std::function<void()>& insert) {
+  const auto start = std::chrono::steady_clock::now();
+  insert();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median_of(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
 }
 
 void throughput(const model::Scene& scene, const std::vector<occupancy::CellSensor>& sensors) {
   const Frames frames = simulate(scene, sensors, 20, 5.0);
-  const double octomap_s = best_seconds(3, [&] {
-    octomap::OcTree tree(kResolution);
-    for (const auto& clouds : frames.clouds) {
-      for (const model::PointCloud& cloud : clouds) {
-        octomap::Pointcloud scan;
-        for (const model::Point3f& p : cloud.points) scan.push_back(p.x(), p.y(), p.z());
-        tree.insertPointCloud(
-            scan, octomap::point3d(cloud.origin.x(), cloud.origin.y(), cloud.origin.z()), -1.0);
-      }
-    }
-  });
   // The same rays whole: a window holding every ray (8 x 8 m, z 0-3 m, above every sensor),
   // no range limit, every end point marks.
   costmap::GridWindow window = occupancy::centred_window(8.0, kResolution);
@@ -170,18 +161,37 @@ void throughput(const model::Scene& scene, const std::vector<occupancy::CellSens
   source.obstacle_max_range = source.raytrace_max_range = 1e9;
   source.min_obstacle_height = -1e9;
   source.max_obstacle_height = 1e9;
-  const double ours_s = best_seconds(3, [&] {
+  const auto octomap_run = [&] {
+    octomap::OcTree tree(kResolution);
+    for (const auto& clouds : frames.clouds) {
+      for (const model::PointCloud& cloud : clouds) {
+        octomap::Pointcloud scan;
+        for (const model::Point3f& p : cloud.points) scan.push_back(p.x(), p.y(), p.z());
+        tree.insertPointCloud(
+            scan, octomap::point3d(cloud.origin.x(), cloud.origin.y(), cloud.origin.z()), -1.0);
+      }
+    }
+  };
+  const auto ours_run = [&] {
     costmap::VoxelLayer layer(window, params);
     for (const auto& clouds : frames.clouds) {
       for (const model::PointCloud& cloud : clouds)
         layer.insert({&cloud, model::Pose3::Identity(), source});
     }
-  });
+  };
+  // Interleaved rounds, medians: a change of load during the run falls on both alike.
+  std::vector<double> octomap_times, ours_times;
+  for (int round = 0; round < kThroughputRounds; ++round) {
+    octomap_times.push_back(seconds_of(octomap_run));
+    ours_times.push_back(seconds_of(ours_run));
+  }
+  const double octomap_s = median_of(octomap_times);
+  const double ours_s = median_of(ours_times);
   const double points = static_cast<double>(frames.points);
   std::printf(
-      "\nInsertion throughput, %zu frames (%.0f points), 0.1 m, full rays, one thread, best of "
-      "3:\n",
-      frames.clouds.size(), points);
+      "\nInsertion throughput, %zu frames (%.0f points), 0.1 m, full rays, one thread, median "
+      "of %d interleaved rounds:\n",
+      frames.clouds.size(), points, kThroughputRounds);
   std::printf("| mapper | s | points/s |\n|---|---|---|\n");
   std::printf("| OctoMap insertPointCloud | %.3f | %.2f M |\n", octomap_s,
               points / octomap_s / 1e6);

@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <array>
+#include <map>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -31,6 +33,71 @@ TEST_CASE("voxel grid returns each voxel's centroid") {
   CHECK(filters::voxel_grid(straddling, params).size() == 1);
   params.grid_offset = Eigen::Vector3d(0.5, 0.5, 0.5);
   CHECK(filters::voxel_grid(straddling, params).size() == 2);
+}
+
+namespace {
+
+/// Voxel centroids by a std::map: PCL's voxel index floor((p - offset) / leaf) taken in float
+/// as PCL does, sums in float in input order; sorted, to compare as sets.
+std::vector<model::Point3f> map_voxel_centroids(const std::vector<model::Point3f>& points,
+                                                float leaf) {
+  struct Sums {
+    float x = 0, y = 0, z = 0;
+    int n = 0;
+  };
+  std::map<std::array<int, 3>, Sums> voxels;
+  const float inverse = 1.0f / leaf;
+  for (const model::Point3f& p : points) {
+    Sums& s = voxels[{static_cast<int>(std::floor(p.x() * inverse)),
+                      static_cast<int>(std::floor(p.y() * inverse)),
+                      static_cast<int>(std::floor(p.z() * inverse))}];
+    s.x += p.x();
+    s.y += p.y();
+    s.z += p.z();
+    ++s.n;
+  }
+  std::vector<model::Point3f> centroids;
+  for (const auto& [index, s] : voxels) {
+    const float n = static_cast<float>(s.n);
+    centroids.emplace_back(s.x / n, s.y / n, s.z / n);
+  }
+  std::sort(centroids.begin(), centroids.end(), [](const auto& a, const auto& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  });
+  return centroids;
+}
+
+std::vector<model::Point3f> sorted(std::vector<model::Point3f> points) {
+  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  });
+  return points;
+}
+
+}  // namespace
+
+TEST_CASE("voxel grid equals a map of voxel sums on clouds of every size, call after call") {
+  // The table keeps its memory between calls and sizes itself from the previous call: a large
+  // cloud (the table doubles several times), then a small one, then a shuffled one (no scan
+  // order for the recent-voxel cache to exploit), then the large one again.
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f);
+  std::vector<model::Point3f> large;
+  for (int i = 0; i < 60000; ++i) large.emplace_back(coordinate(rng), coordinate(rng), 0.1f * coordinate(rng));
+  std::vector<model::Point3f> small(large.begin(), large.begin() + 500);
+  std::vector<model::Point3f> scan;  // rows of a scan: consecutive points share voxels
+  for (int row = 0; row < 200; ++row) {
+    for (int column = 0; column < 300; ++column)
+      scan.emplace_back(0.004f * static_cast<float>(column), 0.004f * static_cast<float>(row), 1.0f);
+  }
+  std::vector<model::Point3f> shuffled = scan;
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  model::VoxelGridParams params;
+  params.leaf = 0.03;
+  for (const std::vector<model::Point3f>* points : {&large, &small, &scan, &shuffled, &large}) {
+    const model::PointCloud result = filters::voxel_grid(cloud_of(*points), params);
+    CHECK(sorted(result.points) == map_voxel_centroids(*points, 0.03f));
+  }
 }
 
 TEST_CASE("voxel grid refuses a leaf that is not positive or would overflow voxel indices") {
