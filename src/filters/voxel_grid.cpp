@@ -1,7 +1,6 @@
 #include "rigdesign/filters/voxel_grid.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #if defined(__SSE2__)
@@ -37,13 +36,11 @@ std::uint64_t mix(std::uint64_t key) {
 /// from the top bits of mix(), doubling when half full) mapping each key to its sums, which
 /// are stored densely in first-seen order. Its memory is kept from call to call (a per-frame
 /// filter allocates nothing, and a table beyond glibc's mmap threshold is not handed back and
-/// faulted in again on every call). Why this layout, measured on clouds of 0.25-4 M points:
-/// - slots carry the pass they were written in, so a new pass empties the table by counting,
-///   not by touching the slots it used (scattered over a table larger than the caches);
-/// - the sums, dense and in first-seen order, are read back sequentially;
-/// - a scan's consecutive points fall in the voxels of its last few rows: the slots of recent
-///   keys sit in a small direct-mapped cache (64 KiB) in front of the table, so most points
-///   never search the table at all.
+/// faulted in again on every call). Why this layout, measured on clouds of 0.25-4 M points
+/// (scripts/bench.sh filters): slots carry the pass they were written in, so a new pass empties
+/// the table by counting, not by touching the slots it used (scattered over a table larger
+/// than the caches); the sums, dense and in first-seen order, are read back sequentially. (A
+/// direct-mapped cache of recent keys in front of the table was tried: slower at every size.)
 class VoxelTable {
  public:
   /// Starts a pass with room for about `expected` voxels.
@@ -57,17 +54,12 @@ class VoxelTable {
     if (table_.size() < (std::size_t{1} << bits_)) table_.resize(std::size_t{1} << bits_);
     sums_.clear();
     keys_.clear();
-    recent_.fill({kNoKey, 0});
   }
 
-  void prefetch(std::uint64_t key) const {
-    if (recent_[recent_index(key)].key != key) __builtin_prefetch(&table_[home(key)]);
-  }
+  void prefetch(std::uint64_t key) const { __builtin_prefetch(&table_[home(key)]); }
 
   /// The sums of `key`'s voxel, created empty if new.
   Sums& at(std::uint64_t key) {
-    Recent& recent = recent_[recent_index(key)];
-    if (recent.key == key) return sums_[recent.voxel];
     std::size_t slot = find(key);
     if (table_[slot].pass != pass_) {  // a new voxel: the table doubles first if half full
       if ((sums_.size() + 1) * 2 > (std::size_t{1} << bits_)) {
@@ -78,7 +70,6 @@ class VoxelTable {
       sums_.emplace_back();
       keys_.push_back(key);
     }
-    recent = {key, table_[slot].voxel};
     return sums_[table_[slot].voxel];
   }
 
@@ -98,17 +89,6 @@ class VoxelTable {
     std::uint32_t pass = 0;  // the pass that wrote it; any other: empty
     std::uint32_t voxel = 0;
   };
-  struct Recent {
-    std::uint64_t key;
-    std::uint32_t voxel;
-  };
-  static constexpr int kRecentBits = 12;
-  // A key no voxel has (voxel keys use 63 bits), so an empty entry never matches.
-  static constexpr std::uint64_t kNoKey = ~std::uint64_t{0};
-
-  static std::size_t recent_index(std::uint64_t key) {
-    return static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ULL) >> (64 - kRecentBits));
-  }
   std::size_t home(std::uint64_t key) const {
     return static_cast<std::size_t>(mix(key) >> (64 - bits_));
   }
@@ -130,13 +110,11 @@ class VoxelTable {
       while (table_[slot].pass == pass_) slot = (slot + 1) & mask;
       table_[slot] = {keys_[voxel], pass_, static_cast<std::uint32_t>(voxel)};
     }
-    // The recent cache holds voxel numbers, which do not move.
   }
 
   std::vector<Slot> table_;  // the first 2^bits_ slots are this pass's table
   std::vector<Sums> sums_;   // per voxel, first-seen order
   std::vector<std::uint64_t> keys_;  // per voxel, first-seen order
-  std::array<Recent, std::size_t{1} << kRecentBits> recent_{};
   std::uint32_t pass_ = 0;
   int bits_ = 10;
 };
@@ -268,7 +246,8 @@ model::PointCloud voxel_grid(const model::PointCloud& cloud, const model::VoxelG
     ++voxel.count;
   };
   // A point's key is computed a few points ahead of its turn, in a small ring, so the slot it
-  // will touch can be prefetched when it is not among the recent voxels.
+  // will touch can be prefetched: the table is larger than the cache and a miss costs more
+  // than the rest of the work.
   table.start(expected);
   constexpr std::size_t kAhead = 16;  // a power of two
   std::uint64_t ahead[kAhead];

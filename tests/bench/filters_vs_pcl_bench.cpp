@@ -255,7 +255,9 @@ model::PointCloud mounted(const model::PointCloud& optical) {
 
 }  // namespace
 
-int main() {
+// Usage: filters_vs_pcl_bench [cloud]  (a PCD file name, or "simulated"; default every cloud)
+int main(int argc, char** argv) {
+  const std::string only = argc > 1 ? argv[1] : "";
   const std::string folder = std::string(RIGDESIGN_SOURCE_DIR) + "/../shared/data/real";
   std::printf(
       "ours vs PCL %s, single thread, %d interleaved rounds per figure (medians).\n"
@@ -263,7 +265,8 @@ int main() {
       "OpenMP regions run inline on the calling thread (the fair peer); regions: PCL's OpenMP\n"
       "regions per call.\n",
       PCL_VERSION_PRETTY, kRuns);
-  {  // A simulated Azure Kinect NFOV unbinned frame of the office, from the UR Cleaner's front.
+  if (only.empty() || only == "simulated") {
+    // A simulated Azure Kinect NFOV unbinned frame of the office, from the UR Cleaner's front.
     const model::SensorLibrary library =
         io::load_sensor_library(std::string(RIGDESIGN_SOURCE_DIR) + "/sensors.yaml");
     const model::Rig rig =
@@ -277,6 +280,7 @@ int main() {
   for (const char* file :
        {"office1.pcd", "five_people.pcd", "table_scene_mug_stereo_textured.pcd",
         "kinect_frame_20121214T142255.814212.pcd", "milk_cartoon_all_small_clorox.pcd"}) {
+    if (!only.empty() && only != file) continue;
     const std::string path = folder + "/" + file;
     if (!std::filesystem::exists(path)) {
       std::printf("%s: not found, skipped\n", path.c_str());
