@@ -6,6 +6,7 @@
 #include <functional>
 #include <thread>
 
+#include "filters/idle_cores.hpp"
 #include "filters/neighbour_grid.hpp"
 #include "rigdesign/model/input_error.hpp"
 
@@ -67,9 +68,11 @@ std::vector<std::uint32_t> statistical_outlier_inliers(
       }
     }
   };
-  const std::size_t threads = std::clamp<std::size_t>(
+  // At most the threads asked for, the points allow, and cores are idle now (see idle_cores).
+  std::size_t threads = std::clamp<std::size_t>(
       cloud.size() / model::kMinPointsPerFilterThread, 1,
       static_cast<std::size_t>(std::clamp(params.threads, 1, model::kMaxFilterThreads)));
+  if (threads > 1) threads = std::min(threads, static_cast<std::size_t>(1 + idle_cores()));
   if (threads == 1) {
     thread_local NeighbourScratch scratch;
     answer(scratch);

@@ -43,8 +43,9 @@ struct StatisticalOutlierParams {
   /// occupied cell). Only speed depends on it, never the result.
   double cell = 0.0;
   /// Threads for the neighbour queries (1 to kMaxFilterThreads); the result is the same for
-  /// any count. Each thread takes at least kMinPointsPerFilterThread points: below that, a
-  /// thread's start costs more than its share of the queries saves.
+  /// any count. Each thread takes at least kMinPointsPerFilterThread points (below that, a
+  /// thread's start costs more than its share of the queries saves), and no more threads
+  /// start than cores are idle at the time (a busy core only time-slices them).
   int threads = 1;
 };
 

@@ -10,6 +10,9 @@
 
 namespace rigdesign::io {
 
+/// Values of a cloud header's sensor viewpoint, in PCD and PLY alike: tx ty tz qw qx qy qz.
+inline constexpr std::size_t kViewpointValues = 7;
+
 /// Walks a byte buffer line by line. Keeps the 1-based number of the line last returned and
 /// the offset of the first byte after it, where a binary body starts once the header ends.
 class LineCursor {

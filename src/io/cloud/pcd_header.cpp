@@ -11,9 +11,8 @@ namespace {
 
 const std::vector<std::string> kKeywords = {"VERSION", "FIELDS", "SIZE",      "TYPE",   "COUNT",
                                             "WIDTH",   "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
-constexpr const char* kKeywordList =
+constexpr const char* kPcdKeywordList =
     "one of VERSION, FIELDS, SIZE, TYPE, COUNT, WIDTH, HEIGHT, VIEWPOINT, POINTS, DATA";
-constexpr std::size_t kViewpointValues = 7;  // tx ty tz qw qx qy qz
 
 // A header line as written: its keyword's values and where it stands.
 struct KeywordLine {
@@ -48,7 +47,7 @@ RawHeader read_keyword_lines(const std::string& path, std::string_view bytes) {
     const std::string keyword(words[0]);
     if (std::find(kKeywords.begin(), kKeywords.end(), keyword) == kKeywords.end()) {
       throw_header_error(path, cursor.line_number(), "header",
-                         "unknown keyword " + quote_word(words[0]), kKeywordList);
+                         "unknown keyword " + quote_word(words[0]), kPcdKeywordList);
     }
     if (raw.has(keyword)) {
       throw_header_error(

@@ -11,11 +11,10 @@
 namespace rigdesign::io {
 namespace {
 
-constexpr const char* kKeywordList =
+constexpr const char* kPlyKeywordList =
     "one of format, comment, obj_info, element, property, end_header";
 constexpr const char* kTypeList =
     "char, uchar, short, ushort, int, uint, float, double (or int8 ... float64)";
-constexpr std::size_t kViewpointValues = 7;  // tx ty tz qw qx qy qz
 
 // Both the original names and the sized aliases later writers use.
 const std::vector<std::pair<std::string_view, PlyScalar>> kTypeNames = {
@@ -54,7 +53,7 @@ class HeaderParser {
       } else if (keyword == "property") {
         read_property(words);
       } else if (keyword != "obj_info") {
-        fail("header", "unknown keyword " + quote_word(keyword), kKeywordList);
+        fail("header", "unknown keyword " + quote_word(keyword), kPlyKeywordList);
       }
     }
     fail("end_header", "the header ends without an end_header line", "end_header");
