@@ -1,11 +1,11 @@
 #include "filters/neighbour_grid.hpp"
 
-#include "filters/distances_below.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+
+#include "filters/distances_below.hpp"
 
 namespace rigdesign::filters {
 namespace {
@@ -145,13 +145,28 @@ std::size_t NeighbourGrid::gather_below(std::uint32_t rank, float radius, float 
     const float lower = low_[axis] + static_cast<float>(index) * cell_;
     return std::max({0.0f, lower - position[axis], position[axis] - (lower + cell_)});
   };
-  // Appends the run [begin, end) of the cell order, which the vector version reads in lanes.
+  // The rows' runs of the cell order go to the distance kernel in batches (one call per
+  // query unless the ball spans more rows than a batch holds).
+  constexpr std::size_t kBatch = 64;
+  constexpr std::size_t kLanes = 8;  // the vector kernel stores whole lanes past its last value
+  IndexRun runs[kBatch];
+  std::size_t batched = 0;
+  std::size_t batched_points = 0;
   std::size_t kept = 0;
+  const auto flush = [&] {
+    if (out.size() < kept + batched_points + kLanes) {
+      out.resize(2 * (kept + batched_points + kLanes));
+    }
+    kept += append_distances_below(x_.data(), y_.data(), z_.data(), runs, batched, p.x(), p.y(),
+                                   p.z(), bound, out.data() + kept);
+    batched = 0;
+    batched_points = 0;
+  };
   const auto append = [&](std::uint32_t begin, std::uint32_t end) {
-    constexpr std::size_t kLanes = 8;
-    if (out.size() < kept + (end - begin) + kLanes) out.resize(2 * (kept + (end - begin) + kLanes));
-    kept += append_distances_below(x_.data() + begin, y_.data() + begin, z_.data() + begin,
-                                   end - begin, p.x(), p.y(), p.z(), bound, out.data() + kept);
+    if (begin == end) return;
+    if (batched == kBatch) flush();
+    runs[batched++] = {begin, end};
+    batched_points += end - begin;
   };
   for (int z = from.z(); z <= to.z(); ++z) {
     const float z_gap = gap(2, z);
@@ -164,7 +179,8 @@ std::size_t NeighbourGrid::gather_below(std::uint32_t rank, float radius, float 
       const float chord = std::sqrt(room);
       const int x0 =
           std::max(from.x(), static_cast<int>((p.x() - chord - low_.x()) * inverse_cell_));
-      const int x1 = std::min(to.x(), static_cast<int>((p.x() + chord - low_.x()) * inverse_cell_));
+      const int x1 =
+          std::min(to.x(), static_cast<int>((p.x() + chord - low_.x()) * inverse_cell_));
       if (x0 > x1) continue;
       const std::uint32_t begin = cell_start_[cell_of({x0, y, z})];
       const std::uint32_t end = cell_start_[cell_of({x1, y, z}) + 1];
@@ -176,6 +192,7 @@ std::size_t NeighbourGrid::gather_below(std::uint32_t rank, float radius, float 
       }
     }
   }
+  flush();
   return kept;
 }
 
@@ -211,8 +228,7 @@ void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch
   }
 }
 
-void build_grid_for(const std::vector<model::Point3f>& points, int per_cell,
-                    NeighbourGrid& grid) {
+void build_grid_for(const std::vector<model::Point3f>& points, int per_cell, NeighbourGrid& grid) {
   if (points.size() < 2) {
     grid.build(points, 1.0);
     return;

@@ -55,6 +55,7 @@ std::vector<std::uint32_t> statistical_outlier_inliers(
   const auto points = static_cast<std::uint32_t>(cloud.size());
   std::atomic<std::uint32_t> next_chunk{0};
   const auto answer = [&](NeighbourScratch& scratch) {
+    std::vector<double> roots;
     for (;;) {
       const std::uint32_t from = next_chunk.fetch_add(kChunk, std::memory_order_relaxed);
       if (from >= points) return;
@@ -62,9 +63,15 @@ std::vector<std::uint32_t> statistical_outlier_inliers(
       scratch.bound = 0.0f;
       for (std::uint32_t rank = from; rank < to; ++rank) {
         grid.nearest(rank, params.neighbours, scratch);
+        const std::size_t found = scratch.nearest.size();
+        // The roots in one loop the compiler vectorises, then summed in order as before.
+        roots.resize(found);
+        for (std::size_t i = 0; i < found; ++i) {
+          roots[i] = std::sqrt(static_cast<double>(scratch.nearest[i]));
+        }
         double total = 0.0;
-        for (const float d2 : scratch.nearest) total += std::sqrt(static_cast<double>(d2));
-        mean_distance[grid.index_at(rank)] = total / static_cast<double>(scratch.nearest.size());
+        for (const double root : roots) total += root;
+        mean_distance[grid.index_at(rank)] = total / static_cast<double>(found);
       }
     }
   };

@@ -112,8 +112,8 @@ class VoxelTable {
     }
   }
 
-  std::vector<Slot> table_;  // the first 2^bits_ slots are this pass's table
-  std::vector<Sums> sums_;   // per voxel, first-seen order
+  std::vector<Slot> table_;          // the first 2^bits_ slots are this pass's table
+  std::vector<Sums> sums_;           // per voxel, first-seen order
   std::vector<std::uint64_t> keys_;  // per voxel, first-seen order
   std::uint32_t pass_ = 0;
   int bits_ = 10;

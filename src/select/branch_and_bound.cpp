@@ -28,9 +28,13 @@ struct Need {
 std::int64_t smallest_count_meeting(double threshold, std::int64_t total) {
   // share = count / total is monotone in count: start near the answer, then settle it with
   // the same floating-point comparison meets() makes.
-  std::int64_t count = std::clamp<std::int64_t>(
-      static_cast<std::int64_t>(std::floor((threshold - kThresholdSlack) * static_cast<double>(total))) - 1, 0, total);
-  while (count <= total && !meets(static_cast<double>(count) / static_cast<double>(total), threshold))
+  std::int64_t count =
+      std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((threshold - kThresholdSlack) *
+                                                                    static_cast<double>(total))) -
+                                   1,
+                               0, total);
+  while (count <= total &&
+         !meets(static_cast<double>(count) / static_cast<double>(total), threshold))
     ++count;
   while (count > 0 && meets(static_cast<double>(count - 1) / static_cast<double>(total), threshold))
     --count;
@@ -43,7 +47,8 @@ std::vector<Need> needs_of(const std::vector<SearchSector>& sectors, const Class
     const SearchSector& sector = sectors[s];
     for (const int a : sector.angles) {
       const CellCounts total = classes.total(static_cast<std::size_t>(a));
-      needs.push_back({s, static_cast<std::size_t>(a), smallest_count_meeting(sector.min_complete, total.cells),
+      needs.push_back({s, static_cast<std::size_t>(a),
+                       smallest_count_meeting(sector.min_complete, total.cells),
                        smallest_count_meeting(sector.min_floor, total.floor), sector.min_complete,
                        sector.min_floor});
     }
@@ -111,7 +116,8 @@ class BranchAndBound {
           if (alone.floor > 0) cheapest_floor_[k][a] = std::min(cheapest_floor_[k][a], price);
         }
       }
-      for (std::size_t a = 0; a < angles; ++a) rest_counts_[k][a] = classes_.count(a, rest_[k].data());
+      for (std::size_t a = 0; a < angles; ++a)
+        rest_counts_[k][a] = classes_.count(a, rest_[k].data());
     }
     union_.assign(words, 0);
     scratch_.assign(words, 0);
@@ -194,7 +200,8 @@ class BranchAndBound {
     for (std::size_t k = 0; k < choice_.size(); ++k) {
       if (choice_[k] < 0 || dropped(k)) continue;
       const std::uint64_t* bits = classes_.bits(k, choice_[k]);
-      for (std::size_t w = classes_.begin(angle); w < classes_.end(angle); ++w) scratch_[w] |= bits[w];
+      for (std::size_t w = classes_.begin(angle); w < classes_.end(angle); ++w)
+        scratch_[w] |= bits[w];
     }
     return classes_.count(angle, scratch_.data());
   }
@@ -230,12 +237,10 @@ class BranchAndBound {
     for (const Need& need : needs_) {
       const CellCounts total = classes_.total(need.angle);
       const CellCounts& have = counts_[need.angle];
-      margins[need.sector] =
-          std::min({margins[need.sector],
-                    static_cast<double>(have.cells) / static_cast<double>(total.cells) -
-                        need.min_complete,
-                    static_cast<double>(have.floor) / static_cast<double>(total.floor) -
-                        need.min_floor});
+      margins[need.sector] = std::min(
+          {margins[need.sector],
+           static_cast<double>(have.cells) / static_cast<double>(total.cells) - need.min_complete,
+           static_cast<double>(have.floor) / static_cast<double>(total.floor) - need.min_floor});
     }
     std::sort(margins.begin(), margins.end());
     return margins;
@@ -282,9 +287,11 @@ class BranchAndBound {
       const CellCounts& have = counts_[need.angle];
       if (met(have, need)) continue;
       const CellCounts& rest = rest_counts_[depth][need.angle];
-      if (have.cells + rest.cells < need.cells || have.floor + rest.floor < need.floor) return false;
+      if (have.cells + rest.cells < need.cells || have.floor + rest.floor < need.floor)
+        return false;
       const CellCounts gain = classes_.count_new(need.angle, rest_[depth].data(), union_.data());
-      if (have.cells + gain.cells < need.cells || have.floor + gain.floor < need.floor) return false;
+      if (have.cells + gain.cells < need.cells || have.floor + gain.floor < need.floor)
+        return false;
       if (have.cells < need.cells) extra = std::max(extra, cheapest_cells_[depth][need.angle]);
       if (have.floor < need.floor) extra = std::max(extra, cheapest_floor_[depth][need.angle]);
     }

@@ -117,7 +117,8 @@ ClassCoverage::ClassCoverage(const SearchProblem& problem) {
     bits.assign(words(), 0);
     for (std::size_t a = 0; a < angles; ++a) {
       if (local[g][a].empty()) continue;
-      std::copy(local[g][a].begin(), local[g][a].end(), bits.begin() + static_cast<long>(begin_[a]));
+      std::copy(local[g][a].begin(), local[g][a].end(),
+                bits.begin() + static_cast<long>(begin_[a]));
       spans_[options[g].slot][options[g].option].push_back(static_cast<int>(a));
     }
   }
@@ -148,8 +149,8 @@ CellCounts ClassCoverage::count_new(std::size_t angle, const std::uint64_t* bits
   return counts;
 }
 
-CellCounts ClassCoverage::merge(std::size_t angle, const std::uint64_t* bits,
-                                std::uint64_t* words, std::uint64_t* saved) const {
+CellCounts ClassCoverage::merge(std::size_t angle, const std::uint64_t* bits, std::uint64_t* words,
+                                std::uint64_t* saved) const {
   CellCounts counts;
   for (std::size_t w = begin_[angle]; w < begin_[angle + 1]; ++w) {
     const std::uint64_t had = words[w];

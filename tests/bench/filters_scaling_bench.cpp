@@ -63,7 +63,8 @@ model::PointCloud tiled(const model::PointCloud& cloud, int tiles, unsigned seed
     const model::Point3f shift(static_cast<float>(t % 4) * pitch.x(),
                                static_cast<float>(t / 4) * pitch.y(), 0.0f);
     for (const model::Point3f& p : cloud.points) {
-      out.points.push_back(p + shift + model::Point3f(jitter(random), jitter(random), jitter(random)));
+      out.points.push_back(p + shift +
+                           model::Point3f(jitter(random), jitter(random), jitter(random)));
     }
   }
   return out;
@@ -151,11 +152,12 @@ void thread_table(const model::PointCloud& base, int rounds) {
         std::printf("  %-5s %6d %-14s %10.2f %10.2f %8.2f %9zu\n", stage, tiles,
                     loaded ? "1 core busy" : "idle", a * 1e3, b * 1e3, b / a, points);
       };
-      row("SOR",
-          [&] { return filters::statistical_outlier_removal(voxelised, one).size(); },
+      row(
+          "SOR", [&] { return filters::statistical_outlier_removal(voxelised, one).size(); },
           [&] { return filters::statistical_outlier_removal(voxelised, two).size(); },
           voxelised.size());
-      row("P2", [&] { return filters::run_pipeline(p2, cloud).size(); },
+      row(
+          "P2", [&] { return filters::run_pipeline(p2, cloud).size(); },
           [&] { return filters::run_pipeline(p2_two, cloud).size(); }, cloud.size());
     }
   }
@@ -175,8 +177,8 @@ int main(int argc, char** argv) {
   const model::PointCloud base = mounted(io::read_cloud(path));
   std::printf("filter stages on office1.pcd tiled (jittered, seed 1), one thread, median of %d\n",
               rounds);
-  std::printf("  %-16s %6s %10s %10s %10s %8s\n", "stage", "tiles", "points in", "ms",
-              "ns/point", "vs 1x");
+  std::printf("  %-16s %6s %10s %10s %10s %8s\n", "stage", "tiles", "points in", "ms", "ns/point",
+              "vs 1x");
   for (const Stage& stage : stages()) {
     if (only_stage != "all" && only_stage != stage.name) continue;
     double first_per_point = 0;

@@ -169,12 +169,11 @@ Row measure(const std::string& name, const std::function<std::size_t()>& ours,
     if (contender == 0) row.ours_points = points;
     if (contender > 0) {
       if (row.pcl_points != 0 && row.pcl_points != points) {
-        std::printf("  %s: PCL's point count differs between its modes (%zu, %zu)\n",
-                    name.c_str(), row.pcl_points, points);
+        std::printf("  %s: PCL's point count differs between its modes (%zu, %zu)\n", name.c_str(),
+                    row.pcl_points, points);
       }
       row.pcl_points = points;
-      row.regions_per_call =
-          static_cast<double>(bench::openmp_regions_entered() - regions_before);
+      row.regions_per_call = static_cast<double>(bench::openmp_regions_entered() - regions_before);
     }
   };
   for (int round = 0; round < kRuns; ++round) {
@@ -189,8 +188,8 @@ Row measure(const std::string& name, const std::function<std::size_t()>& ours,
 
 void print(const std::string& cloud_name, std::size_t points, const std::vector<Row>& rows) {
   std::printf("\n%s (%zu points)\n", cloud_name.c_str(), points);
-  std::printf("  %-24s %9s %9s %9s %8s %8s %9s %9s %9s\n", "stage", "ours ms", "PCL ms",
-              "PCL1 ms", "PCL/ours", "PCL1/ours", "ours pts", "PCL pts", "regions");
+  std::printf("  %-24s %9s %9s %9s %8s %8s %9s %9s %9s\n", "stage", "ours ms", "PCL ms", "PCL1 ms",
+              "PCL/ours", "PCL1/ours", "ours pts", "PCL pts", "regions");
   for (const Row& r : rows) {
     std::printf("  %-24s %9.2f %9.2f %9.2f %8.2f %9.2f %9zu %9zu %9.0f\n", r.name.c_str(),
                 r.ours * 1e3, r.shipped * 1e3, r.serial * 1e3, r.shipped / r.ours,

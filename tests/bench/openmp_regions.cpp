@@ -30,9 +30,13 @@ GompParallel libgomp_parallel() {
 
 }  // namespace
 
-void set_openmp_regions(OpenMpRegions regions_mode) { mode = regions_mode; }
+void set_openmp_regions(OpenMpRegions regions_mode) {
+  mode = regions_mode;
+}
 
-std::uint64_t openmp_regions_entered() { return regions; }
+std::uint64_t openmp_regions_entered() {
+  return regions;
+}
 
 }  // namespace rigdesign::bench
 
