@@ -19,6 +19,7 @@ namespace rigdesign::filters {
 struct NeighbourScratch {
   std::vector<float> distances;  ///< the k-selection's scratch (capacity)
   std::vector<float> nearest;    ///< squared, the answer's k smallest (unordered)
+  std::vector<double> roots;     ///< the caller's: square roots of `nearest`
   float bound = 0.0f;            ///< squared distance: the previous answer's k-th, widened
 };
 

@@ -55,7 +55,7 @@ std::vector<std::uint32_t> statistical_outlier_inliers(
   const auto points = static_cast<std::uint32_t>(cloud.size());
   std::atomic<std::uint32_t> next_chunk{0};
   const auto answer = [&](NeighbourScratch& scratch) {
-    std::vector<double> roots;
+    std::vector<double>& roots = scratch.roots;
     for (;;) {
       const std::uint32_t from = next_chunk.fetch_add(kChunk, std::memory_order_relaxed);
       if (from >= points) return;

@@ -19,31 +19,17 @@
 #include <thread>
 #include <vector>
 
+#include "front_camera_cloud.hpp"
 #include "rigdesign/filters/pass_through.hpp"
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/filters/ransac_plane.hpp"
 #include "rigdesign/filters/voxel_grid.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
-#include "rigdesign/model/rotation.hpp"
-#include "rigdesign/model/units.hpp"
 
 namespace {
 
 using namespace rigdesign;
 
-/// The cloud from the camera's optical frame to the UR Cleaner's front mount (0.46 m ahead,
-/// 0.75 m up, 25 deg down), as in filters_vs_pcl_bench, so the floor stages find a floor.
-model::PointCloud mounted(const model::PointCloud& optical) {
-  model::Pose3 body_from_optical = model::Pose3::Identity();
-  body_from_optical.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  const model::Pose3 T_robot_sensor = model::pose_from_xyz_rpy(
-      model::Vec3(0.46, 0, 0.75), model::Vec3(0, model::deg_to_rad(25), 0));
-  const Eigen::Isometry3f T = (T_robot_sensor * body_from_optical).cast<float>();
-  model::PointCloud moved;
-  for (const model::Point3f& p : optical.points) moved.points.push_back(T * p);
-  moved.origin = T.translation();
-  return moved;
-}
 
 /// `tiles` copies of `cloud` on a grid of the floor (4 per row), 0.5 m apart beyond its
 /// extent, every point jittered by up to 1 mm per axis.
@@ -174,7 +160,7 @@ int main(int argc, char** argv) {
     std::printf("%s: not found\n", path.c_str());
     return 1;
   }
-  const model::PointCloud base = mounted(io::read_cloud(path));
+  const model::PointCloud base = bench::as_front_camera(io::read_cloud(path));
   std::printf("filter stages on office1.pcd tiled (jittered, seed 1), one thread, median of %d\n",
               rounds);
   std::printf("  %-16s %6s %10s %10s %10s %8s\n", "stage", "tiles", "points in", "ms", "ns/point",

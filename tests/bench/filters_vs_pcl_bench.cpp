@@ -18,13 +18,12 @@
 #include <string>
 #include <vector>
 
+#include "front_camera_cloud.hpp"
 #include "openmp_regions.hpp"
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
-#include "rigdesign/model/rotation.hpp"
-#include "rigdesign/model/units.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
 #include "rigdesign/sim/scene_library.hpp"
 
@@ -238,19 +237,6 @@ void compare(const std::string& name, const model::PointCloud& cloud) {
   print(name, cloud.size(), rows);
 }
 
-// A real cloud from a camera's optical frame, placed as the UR Cleaner's front camera
-// (0.46 m ahead, 0.75 m up, pitched 25 deg down) so the floor stages have a robot frame.
-model::PointCloud mounted(const model::PointCloud& optical) {
-  model::Pose3 body_from_optical = model::Pose3::Identity();
-  body_from_optical.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  const model::Pose3 T_robot_sensor = model::pose_from_xyz_rpy(
-      model::Vec3(0.46, 0, 0.75), model::Vec3(0, model::deg_to_rad(25), 0));
-  const Eigen::Isometry3f T = (T_robot_sensor * body_from_optical).cast<float>();
-  model::PointCloud moved;
-  for (const model::Point3f& p : optical.points) moved.points.push_back(T * p);
-  moved.origin = T.translation();
-  return moved;
-}
 
 }  // namespace
 
@@ -285,7 +271,7 @@ int main(int argc, char** argv) {
       std::printf("%s: not found, skipped\n", path.c_str());
       continue;
     }
-    compare(file, mounted(io::read_cloud(path)));
+    compare(file, bench::as_front_camera(io::read_cloud(path)));
   }
   return 0;
 }
