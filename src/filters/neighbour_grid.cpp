@@ -68,10 +68,6 @@ float keep_smallest(float* values, std::size_t n, std::size_t k, float* scratch)
 
 }  // namespace
 
-NeighbourGrid::NeighbourGrid(const std::vector<model::Point3f>& points, double cell) {
-  build(points, cell);
-}
-
 void NeighbourGrid::build(const std::vector<model::Point3f>& points, double cell) {
   occupied_ = 0;
   low_ = Eigen::Array3f::Constant(kInfinity);

@@ -25,12 +25,8 @@ struct NeighbourScratch {
 
 class NeighbourGrid {
  public:
-  NeighbourGrid() = default;
-  /// `cell` > 0 [m].
-  NeighbourGrid(const std::vector<model::Point3f>& points, double cell);
-
-  /// Rebuilds the grid over `points`, reusing this grid's memory (a filter run per frame
-  /// allocates nothing once its clouds stop growing).
+  /// Builds the grid over `points` in cells of `cell` > 0 [m], reusing this grid's memory (a filter
+  /// run per frame allocates nothing once its clouds stop growing).
   void build(const std::vector<model::Point3f>& points, double cell);
 
   /// The squared distances to the k nearest other points of the point at position `rank` of
@@ -59,9 +55,9 @@ class NeighbourGrid {
   float inverse_cell_ = 1.0f;  // cell indices are taken by this one product, everywhere
   Eigen::Array3f low_ = Eigen::Array3f::Zero();
   Eigen::Array3i dims_ = Eigen::Array3i::Ones();
-  std::vector<std::uint32_t> cell_start_;  // prefix sums, size cells + 1
-  std::vector<std::uint32_t> sorted_;      // point indices grouped by cell
-  std::vector<float> x_, y_, z_;           // the points in that order, one array per axis
+  std::vector<std::uint32_t> cell_start_;        // prefix sums, size cells + 1
+  std::vector<std::uint32_t> sorted_;            // point indices grouped by cell
+  std::vector<float> x_, y_, z_;                 // the points in that order, one array per axis
   std::vector<std::uint32_t> point_cell_index_;  // build's scratch, kept for reuse
   std::size_t occupied_ = 0;
 };

@@ -124,14 +124,18 @@ ClassCoverage::ClassCoverage(const SearchProblem& problem) {
   }
 }
 
+void ClassCoverage::add_weights(std::size_t word, std::uint64_t classes, CellCounts& counts) const {
+  for (std::uint64_t x = classes; x != 0; x &= x - 1) {
+    const std::size_t c = word * kWordBits + static_cast<std::size_t>(std::countr_zero(x));
+    counts.cells += cell_weight_[c];
+    counts.floor += floor_weight_[c];
+  }
+}
+
 CellCounts ClassCoverage::count(std::size_t angle, const std::uint64_t* bits) const {
   CellCounts counts;
   for (std::size_t w = begin_[angle]; w < begin_[angle + 1]; ++w) {
-    for (std::uint64_t x = bits[w]; x != 0; x &= x - 1) {
-      const std::size_t c = w * kWordBits + static_cast<std::size_t>(std::countr_zero(x));
-      counts.cells += cell_weight_[c];
-      counts.floor += floor_weight_[c];
-    }
+    add_weights(w, bits[w], counts);
   }
   return counts;
 }
@@ -140,11 +144,7 @@ CellCounts ClassCoverage::count_new(std::size_t angle, const std::uint64_t* bits
                                     const std::uint64_t* known) const {
   CellCounts counts;
   for (std::size_t w = begin_[angle]; w < begin_[angle + 1]; ++w) {
-    for (std::uint64_t x = bits[w] & ~known[w]; x != 0; x &= x - 1) {
-      const std::size_t c = w * kWordBits + static_cast<std::size_t>(std::countr_zero(x));
-      counts.cells += cell_weight_[c];
-      counts.floor += floor_weight_[c];
-    }
+    add_weights(w, bits[w] & ~known[w], counts);
   }
   return counts;
 }
@@ -156,11 +156,7 @@ CellCounts ClassCoverage::merge(std::size_t angle, const std::uint64_t* bits, st
     const std::uint64_t had = words[w];
     *saved++ = had;
     words[w] = had | bits[w];
-    for (std::uint64_t x = bits[w] & ~had; x != 0; x &= x - 1) {
-      const std::size_t c = w * kWordBits + static_cast<std::size_t>(std::countr_zero(x));
-      counts.cells += cell_weight_[c];
-      counts.floor += floor_weight_[c];
-    }
+    add_weights(w, bits[w] & ~had, counts);
   }
   return counts;
 }

@@ -30,7 +30,6 @@ namespace {
 
 using namespace rigdesign;
 
-
 /// `tiles` copies of `cloud` on a grid of the floor (4 per row), 0.5 m apart beyond its
 /// extent, every point jittered by up to 1 mm per axis.
 model::PointCloud tiled(const model::PointCloud& cloud, int tiles, unsigned seed) {

@@ -53,6 +53,9 @@ class ClassCoverage {
   CellCounts total(std::size_t angle) const { return totals_[angle]; }
 
  private:
+  /// Adds the cells and floor columns of the classes set in `classes`, word `word`.
+  void add_weights(std::size_t word, std::uint64_t classes, CellCounts& counts) const;
+
   std::vector<std::size_t> begin_;
   std::size_t classes_ = 0;
   std::vector<std::uint32_t> cell_weight_;   // per class bit (word * 64 + bit)
