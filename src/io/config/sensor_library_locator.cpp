@@ -1,6 +1,9 @@
 #include "rigdesign/io/config/sensor_library_locator.hpp"
 
+#include <cstdlib>
 #include <filesystem>
+
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io {
 
@@ -10,8 +13,44 @@ std::string resolve_beside(const std::string& file, const std::string& relative)
   return (std::filesystem::path(file).parent_path() / path).lexically_normal().string();
 }
 
+namespace {
+
+constexpr const char* kDataFolderVariable = "RIGDESIGN_DATA_DIR";
+
+/// The running executable's folder; empty when /proc is not mounted.
+std::filesystem::path executable_folder() {
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  return error ? std::filesystem::path() : executable.parent_path();
+}
+
+}  // namespace
+
+std::string bundled_data_folder() {
+  const char* variable = std::getenv(kDataFolderVariable);
+  if (variable != nullptr && *variable != '\0') return variable;
+  const std::filesystem::path folder = executable_folder();
+  if (folder.empty()) return {};
+  return (folder.parent_path() / "share" / "rigdesign").string();
+}
+
 std::string bundled_sensor_library() {
-  return (std::filesystem::path(RIGDESIGN_DATA_DIR) / "sensors.yaml").string();
+  const std::string folder = bundled_data_folder();
+  const std::filesystem::path library = std::filesystem::path(folder) / "sensors.yaml";
+  std::error_code not_there;
+  if (!folder.empty() && std::filesystem::is_regular_file(library, not_there)) {
+    return library.string();
+  }
+  const char* variable = std::getenv(kDataFolderVariable);
+  const std::string looked =
+      folder.empty() ? "no executable path (/proc/self/exe unreadable)" : library.string();
+  throw model::InputError(model::Diagnostic{
+      model::SourceLocation{library.string(), 0, 0}, "sensor library",
+      "no bundled sensors.yaml at " + looked +
+          (variable != nullptr && *variable != '\0' ? " (from $RIGDESIGN_DATA_DIR)"
+                                                    : " (share/rigdesign beside the executable)"),
+      "set RIGDESIGN_DATA_DIR to the folder holding sensors.yaml (e.g. "
+      "<prefix>/share/rigdesign), or pass --sensors FILE"});
 }
 
 std::string locate_sensor_library(const model::Rig& rig, const std::string& explicit_path) {

@@ -14,7 +14,14 @@ std::string locate_sensor_library(const model::Rig& rig, const std::string& expl
 /// `relative` resolved against the folder of `file` (absolute paths are kept).
 std::string resolve_beside(const std::string& file, const std::string& relative);
 
-/// The bundled sensors.yaml.
+/// The folder of rigdesign's bundled data (sensors.yaml, rigs/): $RIGDESIGN_DATA_DIR when set,
+/// else share/rigdesign beside the folder of the running executable (bin/ when installed, the
+/// build tree's src/ and tests/, where CMake links share/rigdesign to the sources). Never a
+/// path compiled in, so an installed prefix can move.
+std::string bundled_data_folder();
+
+/// The bundled sensors.yaml: bundled_data_folder()/sensors.yaml. Throws model::InputError
+/// naming the places it looked when there is none.
 std::string bundled_sensor_library();
 
 }  // namespace rigdesign::io

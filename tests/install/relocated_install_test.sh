@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the build to a temporary prefix, moves the prefix, and runs the moved binary from
+# another folder: it must find its bundled sensor library beside itself (share/rigdesign), not
+# through any path of the build. Usage: relocated_install_test.sh BUILD_DIR
+set -euo pipefail
+build="$1"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+cmake --install "$build" --prefix "$work/first" >/dev/null
+mv "$work/first" "$work/moved"
+prefix="$work/moved"
+[ -x "$prefix/bin/rigdesign" ] || fail "no bin/rigdesign in the prefix"
+[ -f "$prefix/share/rigdesign/sensors.yaml" ] || fail "no share/rigdesign/sensors.yaml"
+[ -f "$prefix/share/rigdesign/rigs/robots/SOURCES.md" ] || fail "robot licence notices not installed"
+
+# A user's rig in a folder with no sensors.yaml above it: the bundled library is the fallback.
+mkdir "$work/elsewhere"
+cp "$prefix/share/rigdesign/rigs/delivery_amr.yaml" "$work/elsewhere/"
+cd "$work/elsewhere"
+out="$("$prefix/bin/rigdesign" metrics delivery_amr.yaml)" || fail "metrics exited $?"
+grep -qF "sensors from $prefix/share/rigdesign/sensors.yaml" <<<"$out" \
+  || fail "library not found beside the moved binary: $(head -1 <<<"$out")"
+# Sensor cost from the library's text: Livox Mid-360 560 + RealSense D455 419 + Hokuyo
+# UST-10LX 1600 USD.
+grep -qE "C_s = 2579 USD" <<<"$out" || fail "sensor cost is not 2579 USD"
+
+# A bundled rig that reaches its robot description through a relative path, run from here.
+"$prefix/bin/rigdesign" metrics "$prefix/share/rigdesign/rigs/turtlebot4.yaml" >/dev/null \
+  || fail "bundled turtlebot4 rig did not run from the moved prefix"
+
+# $RIGDESIGN_DATA_DIR wins; a folder without a library is a clear input error (exit 2).
+mkdir "$work/empty"
+set +e
+RIGDESIGN_DATA_DIR="$work/empty" "$prefix/bin/rigdesign" metrics delivery_amr.yaml \
+  >/dev/null 2>"$work/error.txt"
+status=$?
+set -e
+[ "$status" -eq 2 ] || fail "missing library: exit $status, expected 2"
+grep -qF "$work/empty/sensors.yaml" "$work/error.txt" || fail "error does not name the path"
+grep -qF "RIGDESIGN_DATA_DIR" "$work/error.txt" || fail "error does not name the variable"
+echo "relocated install: ok"
