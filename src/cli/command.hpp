@@ -29,5 +29,6 @@ Command setup_localize(CLI::App& parent);
 Command setup_occupancy(CLI::App& parent);
 Command setup_costmap(CLI::App& parent);
 Command setup_export(CLI::App& parent);
+Command setup_sensors(CLI::App& parent);
 
 }  // namespace rigdesign::cli

@@ -167,3 +167,16 @@ TEST_CASE("a misspelt field is named with the field it was probably meant to be"
                         "'distance_of_interest'?) (expected one of: distance_of_interest, id, "
                         "mode, note, pose, sensor)") != std::string::npos);
 }
+
+TEST_CASE("pose.rpy (URDF's radians habit) is pointed at rpy_deg") {
+  TempFolder folder;
+  folder.write("sensors.yaml", kLibrary);
+  folder.write("req.yaml", kRequirements);
+  std::string text = kRig;
+  const std::string from = "rpy_deg: [0, 20, 0]";
+  text.replace(text.find(from), from.size(), "rpy: [0, 0.349, 0]");
+  const CliResult result = run_cli({"metrics", folder.write("rig.yaml", text)});
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("mounts[0].pose.rpy: unknown field (did you mean 'rpy_deg'?)") !=
+        std::string::npos);
+}

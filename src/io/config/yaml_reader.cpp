@@ -10,6 +10,7 @@
 
 #include "io/file_bytes.hpp"
 #include "io/text_encoding.hpp"
+#include "rigdesign/model/closest_name.hpp"
 #include "rigdesign/model/format_number.hpp"
 
 namespace rigdesign::io {
@@ -26,32 +27,8 @@ std::string describe_kind(const YAML::Node& node) {
   return "?";
 }
 
-// Edit distance, to suggest the known key a misspelt one was meant to be.
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 std::string unknown_key_problem(const std::string& key, const std::vector<std::string>& allowed) {
-  std::string closest;
-  std::size_t best = key.size() / 3 + 1;  // suggest only near misses
-  for (const std::string& candidate : allowed) {
-    const std::size_t distance = edit_distance(key, candidate);
-    if (distance < best) {
-      best = distance;
-      closest = candidate;
-    }
-  }
+  const std::string closest = model::closest_name(key, allowed);
   return closest.empty() ? "unknown field" : "unknown field (did you mean '" + closest + "'?)";
 }
 

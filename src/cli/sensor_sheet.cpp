@@ -1,0 +1,158 @@
+#include "sensor_sheet.hpp"
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/units.hpp"
+#include "text_table.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+std::string degrees(double radians) {
+  return model::format_number(model::rad_to_deg(radians), 4);
+}
+
+std::string resolution_text(const model::SensorMode& mode) {
+  std::string text = model::format_number(model::rad_to_deg(mode.angular_resolution_h), 3);
+  if (mode.angular_resolution_v) {
+    text += " x " + model::format_number(model::rad_to_deg(*mode.angular_resolution_v), 3);
+  }
+  return text;
+}
+
+std::string light_text(const model::LightImmunity& light) {
+  std::string text;
+  for (const model::LightCondition condition : model::kLightConditions) {
+    if (light.immune_to(condition)) text += (text.empty() ? "" : ",") + model::to_string(condition);
+  }
+  return text.empty() ? "none" : text;
+}
+
+std::string noise_text(const model::NoiseModel& noise) {
+  std::string text;
+  auto term = [&text](double value, const std::string& unit) {
+    if (value == 0.0) return;
+    text += (text.empty() ? "" : " + ") + model::format_number(value, 4) + unit;
+  };
+  term(noise.a, " m");
+  term(noise.b, " d");
+  term(noise.c, " d^2/m");
+  return text.empty() ? "0" : text;
+}
+
+std::string where_text(const model::SourceLocation& where) { return model::to_string(where); }
+
+}  // namespace
+
+std::string fov_text(const model::FieldOfView& fov) {
+  switch (fov.shape) {
+    case model::FovShape::pyramid: return degrees(fov.horizontal) + " x " + degrees(fov.vertical);
+    case model::FovShape::cone: return "cone " + degrees(fov.horizontal);
+    case model::FovShape::band:
+      return degrees(fov.horizontal) + " (" + degrees(fov.elevation_min) + ".." +
+             degrees(fov.elevation_max) + ")";
+    case model::FovShape::planar: return degrees(fov.horizontal) + " planar";
+  }
+  return "?";
+}
+
+void print_sensor_sheet(const model::Sensor& sensor, const model::SensorLibrary& library,
+                        std::ostream& out) {
+  out << sensor.id << ": " << sensor.name << "\n"
+      << "  technology  " << model::to_string(sensor.technology) << "\n"
+      << "  price       " << model::format_number(sensor.price.usd, 8) << " USD ("
+      << sensor.price.year << ", " << model::to_string(sensor.price.basis) << ": "
+      << sensor.price.source << ")\n"
+      << "  source      " << sensor.source << "\n"
+      << "  defined at  " << where_text(sensor.where) << " (library " << library.file << ")\n\n";
+  TextTable table;
+  table.add_column("mode", TextTable::Align::left);
+  table.add_column("FOV [deg]", TextTable::Align::right);
+  table.add_column("range [m]", TextTable::Align::right);
+  table.add_column("rate [Hz]", TextTable::Align::right);
+  table.add_column("step [deg]", TextTable::Align::right);
+  table.add_column("points/frame", TextTable::Align::right);
+  table.add_column("Mpoints/s", TextTable::Align::right);
+  table.add_column("MB/s", TextTable::Align::right);
+  table.add_column("sigma 1 m / max [mm]", TextTable::Align::right);
+  table.add_column("works in", TextTable::Align::left);
+  table.add_column("driver [cores]", TextTable::Align::right);
+  for (const model::SensorMode& mode : sensor.modes) {
+    const double points_per_second = mode.points_per_frame * mode.frequency;
+    table.add_row({mode.id, fov_text(mode.fov),
+                   model::format_number(mode.min_range, 3) + "-" +
+                       model::format_number(mode.max_range, 4),
+                   model::format_number(mode.frequency, 4), resolution_text(mode),
+                   fixed(mode.points_per_frame, 0), fixed(points_per_second / 1e6, 3),
+                   fixed(mode.bytes_per_frame * mode.frequency / 1e6, 2),
+                   fixed(1e3 * mode.noise.sigma(1.0), 1) + " / " +
+                       fixed(1e3 * mode.noise.sigma(mode.max_range), 1),
+                   light_text(mode.light),
+                   fixed(mode.driver_cpu.load(points_per_second), 3) +
+                       (mode.driver_cpu.basis == model::Basis::estimate ? "*" : " ")});
+  }
+  table.print(out, "  ");
+  out << "\n  noise sigma(d) per mode: ";
+  std::string previous;
+  for (const model::SensorMode& mode : sensor.modes) {
+    const std::string text = noise_text(mode.noise);
+    if (text != previous) out << (previous.empty() ? "" : "; ") << mode.id << " " << text;
+    previous = text;
+  }
+  out << "\n  * driver load is an estimate (no vendor publishes it; sensors.yaml header)\n";
+  for (const model::SensorMode& mode : sensor.modes) {
+    if (!mode.driver_cpu.note.empty()) {
+      out << "  driver note: " << mode.driver_cpu.note << "\n";
+      break;
+    }
+  }
+}
+
+nlohmann::json sensor_json(const model::Sensor& sensor, const model::SensorLibrary& library) {
+  nlohmann::json modes = nlohmann::json::array();
+  for (const model::SensorMode& mode : sensor.modes) {
+    nlohmann::json fov{{"shape", model::to_string(mode.fov.shape)},
+                       {"horizontal_deg", model::rad_to_deg(mode.fov.horizontal)}};
+    if (mode.fov.shape == model::FovShape::band) {
+      fov["elevation_min_deg"] = model::rad_to_deg(mode.fov.elevation_min);
+      fov["elevation_max_deg"] = model::rad_to_deg(mode.fov.elevation_max);
+    } else {
+      fov["vertical_deg"] = model::rad_to_deg(mode.fov.vertical);
+    }
+    nlohmann::json resolution{model::rad_to_deg(mode.angular_resolution_h)};
+    if (mode.angular_resolution_v) resolution.push_back(model::rad_to_deg(*mode.angular_resolution_v));
+    modes.push_back({{"id", mode.id},
+                     {"fov", fov},
+                     {"range", {{"min", mode.min_range}, {"max", mode.max_range}}},
+                     {"frequency", mode.frequency},
+                     {"angular_resolution_deg", resolution},
+                     {"points_per_frame", mode.points_per_frame},
+                     {"points_per_second", mode.points_per_frame * mode.frequency},
+                     {"bytes_per_second", mode.bytes_per_frame * mode.frequency},
+                     {"noise", {{"a", mode.noise.a}, {"b", mode.noise.b}, {"c", mode.noise.c}}},
+                     {"light",
+                      {{"dark", mode.light.dark},
+                       {"indoor", mode.light.indoor},
+                       {"sunlight", mode.light.sunlight}}},
+                     {"driver_cpu",
+                      {{"cores", mode.driver_cpu.cores},
+                       {"seconds_per_point", mode.driver_cpu.seconds_per_point},
+                       {"basis", model::to_string(mode.driver_cpu.basis)}}}});
+  }
+  return {{"id", sensor.id},
+          {"name", sensor.name},
+          {"technology", model::to_string(sensor.technology)},
+          {"source", sensor.source},
+          {"price",
+           {{"usd", sensor.price.usd},
+            {"year", sensor.price.year},
+            {"basis", model::to_string(sensor.price.basis)},
+            {"source", sensor.price.source}}},
+          {"defined_at", where_text(sensor.where)},
+          {"library", library.file},
+          {"modes", modes}};
+}
+
+}  // namespace rigdesign::cli
