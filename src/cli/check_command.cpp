@@ -1,5 +1,5 @@
 // `rigdesign check FILE... [--requirements FILE] [--nav2 FILE] [--filters [MOUNT=]FILE]...
-// [--format text|json|junit] [--output FILE]`:
+// [--format text|json|junit|github] [--output FILE]`:
 // validates rig, sensor and requirement files for CI and judges rigs against requirements.
 // Exit 0 when all pass, 1 when a requirement fails, 2 when any input is invalid.
 #include <CLI/CLI.hpp>
@@ -38,6 +38,8 @@ int run_check(const CheckOptions& options, std::ostream& out) {
     text = format_json(reports, exit_code);
   } else if (options.format == "junit") {
     text = format_junit(reports);
+  } else if (options.format == "github") {
+    text = format_github(reports);
   } else {
     text = format_text(reports);
   }
@@ -67,8 +69,12 @@ Command setup_check(CLI::App& parent) {
   app->add_option("--filters", options->deployment.filters,
                   "Self-filter file (laser_filters chains, pcl_ros crop boxes), FILE or "
                   "MOUNT=FILE; repeatable. Fails when a filter hides a required sector");
-  app->add_option("--format", options->format, "Report format")
-      ->check(CLI::IsMember({"text", "json", "junit"}));
+  app->add_option("--format", options->format,
+                  "Report format: text; json; junit (file, line, time, measured value and "
+                  "margin per requirement); github (workflow-command annotations on the rig's "
+                  "lines)")
+      ->check(CLI::IsMember({"text", "json", "junit", "github"}))
+      ->capture_default_str();
   app->add_option("--output", options->output,
                   "Write the report to this file (atomically) instead of standard output");
   return {app, [options](std::ostream& out, std::ostream&) { return run_check(*options, out); }};

@@ -13,6 +13,7 @@
 #include <ostream>
 
 #include "app.hpp"
+#include "progress_line.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
@@ -130,7 +131,7 @@ nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig
   return json;
 }
 
-VariantRun run_variant(const CostmapOptions& options, const RigInputs& inputs,
+VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const RigInputs& inputs,
                        const scenarios::ScenarioDefinition& scenario, const Variant& variant,
                        const std::string& folder, scenarios::ScenarioParams params) {
   params.costmap.layer = variant.layer;
@@ -159,8 +160,10 @@ VariantRun run_variant(const CostmapOptions& options, const RigInputs& inputs,
   std::vector<double> marking_ranges;
   for (const costmap::ObservationSource& source : scenarios::mount_sources_of(inputs.rig, params))
     marking_ranges.push_back(source.obstacle_max_range);
+  ProgressLine progress(err, "costmap: " + variant.label(), "s simulated (at most)");
   run.result = scenarios::run_scenario(
       scenario, inputs.rig, inputs.library, params, [&](const scenarios::ScenarioStep& step) {
+        progress.update(std::round(step.time * 10) / 10, scenario.max_duration);
         trail.push_back(step.pose.position);
         last_master = step.costmap->master();
         last_obstacles = step.costmap->obstacle_grid();
@@ -260,7 +263,7 @@ std::string window_text(const costmap::CostmapParams& costmap) {
   return model::format_number(costmap.size_x) + " x " + model::format_number(costmap.size_y);
 }
 
-int run_costmap(const CostmapOptions& options, std::ostream& out) {
+int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& err) {
   const std::vector<std::string>& names = scenarios::costmap_scenario_names();
   require_option(std::find(names.begin(), names.end(), options.scenario) != names.end(),
                  "--scenario", "unknown scenario '" + options.scenario + "'",
@@ -317,7 +320,7 @@ int run_costmap(const CostmapOptions& options, std::ostream& out) {
   nlohmann::json all = nlohmann::json::array();
   for (const Variant& variant : variants) {
     const std::string variant_folder = options.compare ? folder + "/" + variant.name() : folder;
-    runs.push_back(run_variant(options, inputs, scenario, variant, variant_folder, params));
+    runs.push_back(run_variant(err, options, inputs, scenario, variant, variant_folder, params));
     print_run(out, runs.back());
     all.push_back(summary_json(options, inputs.rig, runs.back(), params));
   }
@@ -337,7 +340,7 @@ Command setup_costmap(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("costmap",
                                         "Drive the rig's robot through a scenario with the "
                                         "costmap, planner and follower in the loop");
-  app->add_option("--rig", options->rig, "Rig file")->required();
+  app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
   app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
   app->add_option("--scenario", options->scenario, "wall_following or stationary")->required();
   app->add_option("--params", options->params,
@@ -361,7 +364,9 @@ Command setup_costmap(CLI::App& parent) {
       ->check(finite_in(0, 100000, "0 (none) or an update count"));
   app->add_option("--seed", options->seed, "Seed of the scene and the sensor noise (default 1)");
   app->add_option("--out", options->out, "Output folder (default costmap/<scenario>)");
-  return {app, [options](std::ostream& out, std::ostream&) { return run_costmap(*options, out); }};
+  return {app, [options](std::ostream& out, std::ostream& err) {
+            return run_costmap(*options, out, err);
+          }};
 }
 
 }  // namespace rigdesign::cli

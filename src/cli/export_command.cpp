@@ -53,7 +53,7 @@ Command setup_export(CLI::App& parent) {
       "export",
       "Write the rig's ROS 2 configuration: sensors.urdf.xacro, nav2_costmap.yaml, "
       "self_filters.yaml");
-  app->add_option("rig", options->rig, "Rig file")->required();
+  app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
   app->add_option("--to", options->to, "Output folder (created if missing)")->required();
   app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
   app->add_option("--requirements", options->requirements,

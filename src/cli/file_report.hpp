@@ -17,6 +17,11 @@ struct FileReport {
   std::string summary;  ///< one line on what was checked
   std::vector<model::Diagnostic> diagnostics;
   std::vector<metrics::RequirementResult> results;
+  /// Wall time [s] of reading the file (and what it pulls in), and per result the time of the
+  /// computation its verdict rests on (shared computations, such as the coverage cut that
+  /// every R2 sector uses, are counted in each result that uses them).
+  double load_seconds = 0.0;
+  std::vector<double> result_seconds;
 
   bool invalid() const;
   bool failing() const;
@@ -35,6 +40,11 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
 
 std::string format_text(const std::vector<FileReport>& reports);
 std::string format_json(const std::vector<FileReport>& reports, int exit_code);
+/// JUnit XML: a testcase per file and per requirement, with file, line, time, and the
+/// measured value, requirement and margin in system-out.
 std::string format_junit(const std::vector<FileReport>& reports);
+/// GitHub Actions workflow commands: an ::error annotation per invalid input and failed
+/// requirement, ::warning per warning, at the rig line that causes it.
+std::string format_github(const std::vector<FileReport>& reports);
 
 }  // namespace rigdesign::cli

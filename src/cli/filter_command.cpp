@@ -278,7 +278,7 @@ Command setup_filter(CLI::App& parent) {
   app->add_option("--seed", options->seed, "Seed of the simulated scene and noise (default 1)");
   app->add_option("--pipeline", options->pipeline,
                   "P1, P2, P3, P4 or a pipeline YAML file (default P4)");
-  app->add_option("--rig", options->rig, "Rig whose mount recorded the clouds");
+  app->add_option("rig,--rig", options->rig, "Rig whose mount recorded the clouds (positional or --rig)");
   app->add_option("--mount", options->mount,
                   "Mount id in --rig: moves the clouds into the robot frame");
   app->add_option("--frame", options->frame,

@@ -115,7 +115,7 @@ int run_logs(const LocalizeOptions& options, std::ostream& out) {
   return kOk;
 }
 
-int run_localize(const LocalizeOptions& options, std::ostream& out) {
+int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.logs.empty() != options.scenario.empty(), "--log",
                  "give either --log FILE... or --scenario NAME",
                  "--log FILE... or --scenario NAME [--seed S]");
@@ -125,7 +125,7 @@ int run_localize(const LocalizeOptions& options, std::ostream& out) {
   if (!options.scenario.empty()) {
     if (options.scenario != "all")
       localize::make_scenario(options.scenario, {});  // unknown names fail here, exit 2
-    if (options.table) return run_table(options, out);
+    if (options.table) return run_table(options, out, err);
     require_option(options.scenario != "all", "--scenario", "'all' needs --table",
                    "a scenario name");
     return run_scenario(options, out);
@@ -202,7 +202,9 @@ Command setup_localize(CLI::App& parent) {
   app->add_flag("--json", options->json, "Print JSON");
   app->add_option("--out", options->out,
                   "Write plots (PNG and SVG) and, for a scenario, its log and truth here");
-  return {app, [options](std::ostream& out, std::ostream&) { return run_localize(*options, out); }};
+  return {app, [options](std::ostream& out, std::ostream& err) {
+            return run_localize(*options, out, err);
+          }};
 }
 
 }  // namespace rigdesign::cli

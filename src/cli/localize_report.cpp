@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "app.hpp"
+#include "progress_line.hpp"
 #include "command.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
 #include "rigdesign/localize/accuracy_table.hpp"
@@ -127,7 +128,7 @@ std::vector<localize::LocalizeMethod> methods_of(const LocalizeOptions& options)
           localize::LocalizeMethod::map};
 }
 
-int run_table(const LocalizeOptions& options, std::ostream& out) {
+int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.seeds >= 1 && options.seeds <= 10000, "--seeds", "is out of range",
                  "1 to 10000");
   std::vector<std::string> scenarios = {options.scenario};
@@ -145,10 +146,18 @@ int run_table(const LocalizeOptions& options, std::ostream& out) {
                            {"shadowing_db", options.scenario_params.shadowing_db},
                            {"tx_offset_db", options.scenario_params.tx_offset_db},
                            {"rows", nlohmann::json::array()}};
+  ProgressLine progress(err, "localize: accuracy table", "runs");
+  const double runs = static_cast<double>(scenarios.size()) * options.seeds;
+  double done_before = 0.0;
   for (const std::string& scenario : scenarios) {
-    for (const localize::AccuracyRow& row :
-         localize::accuracy_table(scenario, options.seeds, options.scenario_params, methods,
-                                  options.params, options.kpi)) {
+    const auto on_seed = [&](double seeds_done, double) {
+      progress.update(done_before + seeds_done, runs);
+    };
+    const std::vector<localize::AccuracyRow> rows =
+        localize::accuracy_table(scenario, options.seeds, options.scenario_params, methods,
+                                 options.params, options.kpi, on_seed);
+    done_before += options.seeds;
+    for (const localize::AccuracyRow& row : rows) {
       table.add_row({row.scenario, to_string(row.method), std::to_string(row.runs),
                      fixed(row.final_error.mean, 2), fixed(row.final_error.median, 2),
                      fixed(row.final_error.rms, 2), fixed(row.nearest_error.mean, 2),

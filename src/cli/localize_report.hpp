@@ -49,6 +49,6 @@ nlohmann::json report_gas(const localize::Co2Log& log, const LocalizeOptions& op
                           render::LocalizePlot* plot, std::ostream& out);
 
 /// The accuracy table over seeds (--table).
-int run_table(const LocalizeOptions& options, std::ostream& out);
+int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace rigdesign::cli

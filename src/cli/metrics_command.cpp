@@ -258,7 +258,7 @@ Command setup_metrics(CLI::App& parent) {
   auto options = std::make_shared<MetricsOptions>();
   CLI::App* app = parent.add_subcommand(
       "metrics", "Per-sensor and resultant F, R, N, L, bandwidth, driver CPU load and cost");
-  app->add_option("rig", options->rig, "Rig file (rigs/*.yaml)")->required();
+  app->add_option("rig,--rig", options->rig, "Rig file (rigs/*.yaml; positional or --rig)")->required();
   app->add_option("--requirements", options->requirements,
                   "Application requirements R1-R8 to judge the rig against (default: the "
                   "file the rig names)");

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "app.hpp"
+#include "progress_line.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
@@ -216,7 +217,7 @@ void print_tables(const std::vector<occupancy::OccupancyRun>& runs,
   cell.print(out, "  ");
 }
 
-int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
+int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostream& err) {
   check_options(options);
   if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
@@ -248,6 +249,9 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out) {
   const auto owned = occupancy::make_sweep_mappers(grid, model::SourceLocation{"(command line)"});
   std::vector<occupancy::OccupancyMapper*> mappers;
   for (const auto& mapper : owned) mappers.push_back(mapper.get());
+  ProgressLine progress(err, "occupancy: " + std::to_string(mappers.size()) + " mapper(s)",
+                        "frames");
+  params.progress = [&progress](double done, double total) { progress.update(done, total); };
   const std::vector<occupancy::OccupancyRun> runs =
       occupancy::evaluate_occupancy(scene, sensors, mappers, params);
 
@@ -304,8 +308,8 @@ Command setup_occupancy(CLI::App& parent) {
   auto options = std::make_shared<OccupancyOptions>();
   CLI::App* app =
       parent.add_subcommand("occupancy", "Score occupancy mapping on the dynamic cell (paper 3)");
-  app->add_option("--rig", options->rig,
-                  "Rig of the cell's fixed sensors (its robot frame is the cell frame)")
+  app->add_option("rig,--rig", options->rig,
+                  "Rig of the cell's fixed sensors (its robot frame is the cell frame; positional or --rig)")
       ->required();
   app->add_option("--scene", options->scene, "Scene with a moving person (default cell)");
   app->add_option("--rate", options->rate,
@@ -335,10 +339,13 @@ Command setup_occupancy(CLI::App& parent) {
       "Points below this height [m] clear but never mark; truth starts here (default 0.1)");
   app->add_option("--seed", options->seed, "Seed of the range noise (default 1)");
   app->add_option("--out", options->out,
-                  "Folder for occupancy_frames.csv, occupancy_summary.json, occupancy_pareto.png");
+                  "Folder for occupancy_frames.csv, occupancy_summary.json, occupancy_pareto.png "
+                  "(default: none, the table on standard output only)");
   app->add_flag("--json", options->json, "Print JSON");
   return {app,
-          [options](std::ostream& out, std::ostream&) { return run_occupancy(*options, out); }};
+          [options](std::ostream& out, std::ostream& err) {
+            return run_occupancy(*options, out, err);
+          }};
 }
 
 }  // namespace rigdesign::cli

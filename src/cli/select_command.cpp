@@ -2,7 +2,6 @@
 // the cheapest rig of a catalog meeting the requirements (paper 1, section 2, Fig. 1); when
 // it costs more than the budget, relax the requirements in the policy's order, showing
 // every step. Exit 0 with a rig within budget, 1 when the policy runs out, 2 on bad input.
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -14,6 +13,7 @@
 #include <ostream>
 
 #include "app.hpp"
+#include "progress_line.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
@@ -106,27 +106,31 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
                      model::format_number(option_angles * kBytesPerOptionAngle / 1e9, 2) + " GB)",
                  "at most 1e6 option-angles: fewer pose values or a coarser --step");
 
-  const bool terminal = ::isatty(STDERR_FILENO) == 1;
   metrics::CoverageSettings settings;
   settings.step = options.step_deg * 3.141592653589793 / 180.0;
-  if (terminal)
-    err << "rasterising " << options_total << " slot options at " << options.step_deg
-        << " deg steps...\n";
+  ProgressLine progress(err, "select: rasterising " + model::format_number(options_total) +
+                                 " slot options", "");
+  progress.update_share(0.0, "at " + model::format_number(options.step_deg) + " deg steps");
   const select::SelectionSpace space(catalog, library, settings);
-  const auto progress = [&](const select::SearchProgress& at) {
-    if (terminal)
-      err << "\r  search: " << at.nodes << " nodes, about " << std::lround(100 * at.fraction)
-          << " % of the tree" << std::flush;
+  // The relaxation loop runs at most one search per policy step, plus the first.
+  const std::size_t searches = policy.steps.size() + 1;
+  std::size_t search = 1;
+  progress.retitle("select: search 1 of at most " + std::to_string(searches));
+  const auto on_search = [&](const select::SearchProgress& at) {
+    progress.update_share(at.fraction, std::to_string(at.nodes) + " nodes, share of the tree");
   };
   SelectReport report(space, requirements, policy, options.budget);
   if (!options.json) report.print_header(out);
   const select::RelaxationOutcome outcome = select::select_within_budget(
       space, requirements, policy, options.budget,
       [&](const select::RelaxationIteration& iteration) {
-        if (terminal) err << "\r" << std::string(40, ' ') << "\r";
+        ++search;
+        progress.retitle("select: search " + std::to_string(search) + " of at most " +
+                         std::to_string(searches));
+        progress.clear();
         if (!options.json) report.print_iteration(iteration, out);
       },
-      progress);
+      on_search);
   const std::vector<std::string> written =
       staged.final_names(report.write_files(outcome, staged, !options.no_renders));
   staged.commit();

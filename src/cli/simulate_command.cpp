@@ -8,6 +8,7 @@
 #include <ostream>
 
 #include "app.hpp"
+#include "progress_line.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
@@ -33,7 +34,7 @@ struct SimulateOptions {
   double dropout = 0.0;
 };
 
-int run_simulate(const SimulateOptions& options, std::ostream& out) {
+int run_simulate(const SimulateOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.frames >= 1 && options.frames <= 100000, "--frames", "is out of range",
                  "1 to 100000");
   require_option(options.dropout >= 0 && options.dropout < 1, "--dropout", "is out of range",
@@ -64,7 +65,10 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
   out << inputs.rig.name << " in the " << options.scene << " scene (seed " << options.seed << "), "
       << options.frames << " frame(s) per sensor, " << options.frame << " frame, at most "
       << model::format_number(bytes / 1e6, 3) << " MB\n";
+  ProgressLine progress(err, "simulate: " + std::to_string(options.frames) + " frame(s) each",
+                        "sensors");
   for (std::size_t i = 0; i < inputs.rig.mounts.size(); ++i) {
+    progress.update(static_cast<double>(i), static_cast<double>(inputs.rig.mounts.size()));
     const model::Mount& mount = inputs.rig.mounts[i];
     const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
     const std::vector<model::PointCloud> clouds =
@@ -76,6 +80,7 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
                       clouds[k], encoding);
       points += clouds[k].size();
     }
+    progress.clear();
     out << "  " << mount.id << " (" << mount.sensor_id << "/" << mount.mode_id
         << "): " << points / clouds.size() << " points per frame -> " << folder << "/" << mount.id
         << "/\n";
@@ -90,19 +95,21 @@ Command setup_simulate(CLI::App& parent) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* app = parent.add_subcommand(
       "simulate", "Simulate what each mounted sensor records in a synthetic scene");
-  app->add_option("rig", options->rig, "Rig file")->required();
+  app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
   app->add_option(
       "--scene", options->scene,
       "office, corridor, stairs, wall_following, cell, or a scene file (default office)");
   app->add_option("--frames", options->frames, "Frames per sensor (default 1)");
   app->add_option("--seed", options->seed, "Seed of the scene and the sensor noise (default 1)");
   app->add_option("--out", options->out, "Output folder (default simulation/<scene>)");
-  app->add_option("--format", options->format, "pcd (binary), pcd-ascii or ply")
+  app->add_option("--format", options->format, "pcd (binary), pcd-ascii or ply (default pcd)")
       ->check(CLI::IsMember({"pcd", "pcd-ascii", "ply"}));
   app->add_option("--frame", options->frame, "robot or sensor frame (default robot)")
       ->check(CLI::IsMember({"robot", "sensor"}));
   app->add_option("--dropout", options->dropout, "Share of rays that return nothing (default 0)");
-  return {app, [options](std::ostream& out, std::ostream&) { return run_simulate(*options, out); }};
+  return {app, [options](std::ostream& out, std::ostream& err) {
+            return run_simulate(*options, out, err);
+          }};
 }
 
 }  // namespace rigdesign::cli

@@ -119,6 +119,7 @@ void check_sources(const model::Rig& rig, const model::Requirements& requirement
                                              source->max_obstacle_height_where);
     band.unit = "m";
     band.required = top;
+    band.bound = metrics::Bound::at_least;
     band.actual = s.max_obstacle_height;
     band.limiting_mounts = {mount.id};
     if (s.max_obstacle_height < top - 1e-9) {
@@ -131,6 +132,7 @@ void check_sources(const model::Rig& rig, const model::Requirements& requirement
       band.field = band.metric = "min_obstacle_height";
       band.where = source->min_obstacle_height_where;
       band.required = *requirements.smallest_obstacle;
+      band.bound = metrics::Bound::at_most;
       band.actual = s.min_obstacle_height;
       band.verdict = metrics::Verdict::fail;
       band.explanation = "min_obstacle_height " + model::format_number(s.min_obstacle_height, 4) +
@@ -170,6 +172,7 @@ std::vector<metrics::RequirementResult> check_deployment(const model::Rig& rig,
     metrics::RequirementResult r =
         result("D3", "deployed coverage: " + before.sector.name, "sectors", "SC", before.sector.where);
     r.required = before.sector.min_complete_coverage;
+    r.bound = metrics::Bound::at_least;
     r.actual = after.complete.min;
     const double lost = loss(before, after);
     r.explanation = "complete min " + percent(before.complete.min) + " -> " +

@@ -8,7 +8,8 @@ namespace rigdesign::localize {
 std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
                                         ScenarioParams scenario_params,
                                         const std::vector<LocalizeMethod>& methods,
-                                        const LocalizeParams& params, const KpiParams& kpi) {
+                                        const LocalizeParams& params, const KpiParams& kpi,
+                                        const model::ProgressCallback& progress) {
   struct Collected {
     std::vector<double> final_errors, nearest_errors, amounts;
     int detected = 0, twins = 0, unsolved = 0;
@@ -32,6 +33,7 @@ std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
       c.detected += kpis.detected ? 1 : 0;
       c.twins += estimate.hypotheses.size() > 1 ? 1 : 0;
     }
+    if (progress) progress(seed, seeds);
   }
   std::vector<AccuracyRow> rows;
   for (std::size_t m = 0; m < methods.size(); ++m) {

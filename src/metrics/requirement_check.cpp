@@ -33,6 +33,7 @@ RequirementResult minimum_frequency(RequirementResult result, double required,
                                     const std::string& derivation,
                                     const ResultantMetrics& metrics) {
   result.required = required;
+  result.bound = Bound::at_least;
   result.actual = metrics.frequency.value;
   result.verdict = verdict(metrics.frequency.value >= required);
   result.limiting_mounts = metrics.frequency.mounts;
@@ -73,6 +74,7 @@ void check_sectors(const model::Requirements& requirements, const RigCoverage* c
     }
     const SectorCoverage& measured = coverage->sectors[i];
     result.required = sector.min_complete_coverage;
+    result.bound = Bound::at_least;
     result.actual = measured.complete.min;
     result.verdict = verdict(measured.pass);
     result.explanation = "over " + model::format_number(model::rad_to_deg(sector.from)) + ".." +
@@ -92,6 +94,7 @@ void check_range(const model::Rig& rig, const model::Requirements& requirements,
   RequirementResult result =
       named("R3", "range", "range.distance", "d", "m", requirements.range_where);
   result.required = requirements.distance;
+  result.bound = Bound::at_least;
   result.actual = rig.distance_of_interest;
   result.verdict = verdict(rig.distance_of_interest + 1e-9 >= requirements.distance);
   result.explanation = "the rig's distance of interest must reach the application's d = " +
@@ -130,6 +133,7 @@ void check_resolution(const ResultantMetrics& metrics, const model::Requirements
   RequirementResult result = named("R6", "smallest obstacle", "smallest_obstacle.size", "R", "m",
                                    requirements.smallest_obstacle_where);
   result.required = *requirements.smallest_obstacle;
+  result.bound = Bound::at_most;
   result.actual = metrics.point_spacing.value;
   result.verdict = verdict(metrics.point_spacing.value <= *requirements.smallest_obstacle);
   result.limiting_mounts = metrics.point_spacing.mounts;
@@ -146,6 +150,7 @@ void check_noise(const ResultantMetrics& metrics, const model::Requirements& req
   RequirementResult result =
       named("R7", "accuracy", "accuracy.max_noise", "N", "m", requirements.accuracy_where);
   result.required = *requirements.max_noise;
+  result.bound = Bound::at_most;
   result.actual = metrics.noise.value;
   result.verdict = verdict(metrics.noise.value <= *requirements.max_noise);
   result.limiting_mounts = metrics.noise.mounts;
@@ -175,7 +180,36 @@ void check_lighting(const ResultantMetrics& metrics, const model::Requirements& 
   results.push_back(std::move(result));
 }
 
+// The rig's line behind each verdict: the first limiting mount's `mode` (the mode sets F, R, N
+// and L), else the rig itself (coverage, body, distance of interest come from the whole rig).
+void locate_in_rig(const model::Rig& rig, std::vector<RequirementResult>& results) {
+  for (RequirementResult& result : results) {
+    result.rig_where = rig.where;
+    if (result.limiting_mounts.empty()) continue;
+    for (const model::Mount& mount : rig.mounts) {
+      if (mount.id == result.limiting_mounts.front()) {
+        result.rig_where = mount.mode_where.file.empty() ? mount.where : mount.mode_where;
+        break;
+      }
+    }
+  }
+}
+
 }  // namespace
+
+std::optional<double> RequirementResult::margin() const {
+  if (!required || !actual) return std::nullopt;
+  switch (bound) {
+    case Bound::at_least: return *actual - *required;
+    case Bound::at_most: return *required - *actual;
+    case Bound::none: return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+const model::SourceLocation& RequirementResult::annotated_where() const {
+  return rig_where.file.empty() ? where : rig_where;
+}
 
 std::vector<RequirementResult> evaluate_requirements(const model::Rig& rig,
                                                      const ResultantMetrics& metrics,
@@ -189,6 +223,7 @@ std::vector<RequirementResult> evaluate_requirements(const model::Rig& rig,
   check_resolution(metrics, requirements, results);
   check_noise(metrics, requirements, results);
   check_lighting(metrics, requirements, results);
+  locate_in_rig(rig, results);
   return results;
 }
 

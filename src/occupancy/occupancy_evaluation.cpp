@@ -238,6 +238,7 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
       }
       runs[m].frames.push_back(frame);
     }
+    if (params.progress) params.progress(k + 1, frames);
   }
   for (std::size_t m = 0; m < mappers.size(); ++m) {
     OccupancyRun& run = runs[m];

@@ -45,6 +45,9 @@ TEST_CASE("check exits 1 when a requirement fails and names the binding requirem
   CHECK(result.exit_code == 1);
   CHECK(result.out.find("robot_speed: fail: R5 robot speed: F = 10 Hz") != std::string::npos);
   CHECK(result.out.find("[set by top]") != std::string::npos);
+  // The finding points at the rig's line that causes it: the mode of the 10 Hz spinner.
+  CHECK(result.out.find(files.rig + ":" + std::to_string(line_of(kRig, "mode: s10")) +
+                        ":11: robot_speed: fail") != std::string::npos);
 }
 
 TEST_CASE("check --requirements overrides the file the rig names") {
@@ -119,4 +122,47 @@ TEST_CASE("check --output replaces the file whole") {
   const std::string written = read_file(report);
   CHECK(written.find("stale") == std::string::npos);
   CHECK(written.find("requirements: 7 pass, 0 fail, 0 not evaluated") != std::string::npos);
+}
+
+TEST_CASE("check --format junit gives each case its file, line, time, measured value and margin") {
+  // 2 m/s with 10 cm between frames needs 20 Hz; the 10 Hz spinner misses by 10 Hz, -50 %.
+  CheckFolder files(with("max_speed: 1.0", "max_speed: 2.0"));
+  const std::string report = files.folder.path() + "/report.xml";
+  CHECK(run_cli({"check", files.rig, "--format", "junit", "--output", report}).exit_code == 1);
+  const std::string script = files.folder.write("cases.py", R"py(import sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+rig, mode_line = sys.argv[2], sys.argv[3]
+cases = {c.get("name"): c for c in root.iter("testcase")}
+r5 = cases["R5 robot speed"]
+assert r5.get("file") == rig, r5.get("file")
+assert r5.get("line") == mode_line, (r5.get("line"), mode_line)
+assert float(r5.get("time")) >= 0.0
+assert r5.find("failure") is not None
+out = r5.find("system-out").text
+assert "F = 10 Hz, required >= 20 Hz, margin -10 Hz (-50 %)" in out, out
+assert "set by: top" in out, out
+# R7 passes: N = 30 mm against 50 mm, 20 mm (40 %) to spare.
+r7 = cases["R7 accuracy"]
+assert r7.find("failure") is None
+assert "N = 0.03 m, required <= 0.05 m, margin +0.02 m (+40 %)" in r7.find("system-out").text
+for case in root.iter("testcase"):
+    assert case.get("file") and case.get("time") is not None, case.get("name")
+)py");
+  const std::string command = "python3 " + script + " " + report + " " + files.rig + " " +
+                              std::to_string(line_of(kRig, "mode: s10"));
+  CHECK(std::system(command.c_str()) == 0);
+}
+
+TEST_CASE("check --format github annotates the rig's line with the failed requirement") {
+  CheckFolder files(with("max_speed: 1.0", "max_speed: 2.0"));
+  const CliResult result = run_cli({"check", files.rig, "--format", "github"});
+  CHECK(result.exit_code == 1);
+  const std::string expected = "::error file=" + files.rig + ",line=" +
+                               std::to_string(line_of(kRig, "mode: s10")) +
+                               ",col=11,title=rigdesign R5 robot speed::F = 10 Hz, required >= "
+                               "20 Hz, margin -10 Hz (-50 %25)";
+  INFO(result.out);
+  CHECK(result.out.find(expected) != std::string::npos);
+  // One annotation: the only failure.
+  CHECK(result.out.find("::error") == result.out.rfind("::error"));
 }

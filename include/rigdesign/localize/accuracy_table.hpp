@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/model/progress.hpp"
 #include "rigdesign/localize/emitter_localizer.hpp"
 #include "rigdesign/localize/kpis.hpp"
 #include "rigdesign/localize/log_generator.hpp"
@@ -23,11 +24,13 @@ struct AccuracyRow {
   int unsolved_runs = 0;            ///< runs without an estimate (not in the error statistics)
 };
 
-/// One row per method, seeds 1..`seeds` (the params' seed is replaced).
+/// One row per method, seeds 1..`seeds` (the params' seed is replaced). `progress` hears
+/// (seeds done, seeds) after each seed.
 std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
                                         ScenarioParams scenario_params,
                                         const std::vector<LocalizeMethod>& methods,
                                         const LocalizeParams& params = {},
-                                        const KpiParams& kpi = {});
+                                        const KpiParams& kpi = {},
+                                        const model::ProgressCallback& progress = {});
 
 }  // namespace rigdesign::localize

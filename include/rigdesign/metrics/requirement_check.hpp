@@ -14,6 +14,9 @@ namespace rigdesign::metrics {
 
 enum class Verdict { pass, fail, not_evaluated };
 
+/// Which side of `required` passes: the margin's sign convention.
+enum class Bound { none, at_least, at_most };
+
 struct RequirementResult {
   std::string id;      ///< "R5"
   std::string title;   ///< "robot speed"
@@ -26,6 +29,17 @@ struct RequirementResult {
   std::string explanation;      ///< one sentence: how required was derived, what failed
   std::string field;            ///< the requirement's key in its file, e.g. "robot_speed"
   model::SourceLocation where;  ///< the requirement in its file
+  Bound bound = Bound::none;
+  /// Where in the rig file the rig causes this verdict (the limiting mount's mode, or the rig
+  /// itself for coverage and body); empty when the finding is about another file (a nav2
+  /// parameter). CI annotations go here: the rig is what a reviewer changes.
+  model::SourceLocation rig_where;
+
+  /// actual - required for at-least bounds, required - actual for at-most ones: positive is
+  /// headroom, negative how far it misses. Empty without both values or a bound.
+  std::optional<double> margin() const;
+  /// rig_where when set, else where.
+  const model::SourceLocation& annotated_where() const;
 };
 
 /// `coverage` judges R2's sectors; computed with requirements.sectors (compute_coverage).

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/model/progress.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/scene.hpp"
 #include "rigdesign/model/sensor.hpp"
@@ -48,6 +49,8 @@ struct OccupancyEvalParams {
   /// sim::decimated_mode's camera stride (1: every pixel): ray casting a full camera frame is
   /// the evaluation's slowest step. Lidars are never decimated.
   int camera_stride = 1;
+  /// Called after every frame with (frames done, frames in all).
+  model::ProgressCallback progress;
 };
 
 /// One frame of one mapper.

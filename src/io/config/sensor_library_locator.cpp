@@ -63,8 +63,10 @@ std::string locate_sensor_library(const model::Rig& rig, const std::string& expl
     const fs::path candidate = folder / "sensors.yaml";
     std::error_code not_there;  // a missing file is the normal case, not an error
     if (fs::is_regular_file(candidate, not_there)) {
+      // Shown relative to the working folder when it lies inside it, else absolute.
       const fs::path shown = fs::relative(candidate, fs::current_path(), not_there);
-      return not_there || shown.empty() ? candidate.string() : shown.string();
+      const bool inside = !not_there && !shown.empty() && *shown.begin() != "..";
+      return inside ? shown.string() : candidate.string();
     }
     if (folder == folder.root_path()) break;
   }
