@@ -9,7 +9,9 @@
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/coverage_plots.hpp"
 #include "rigdesign/geometry/body_mesh.hpp"
+#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
+#include "rigdesign/render/view_3d_figure.hpp"
 #include "rigdesign/render/palette.hpp"
 
 namespace rigdesign::cli {
@@ -43,8 +45,7 @@ std::string coverage_csv(const metrics::RigCoverage& coverage) {
 }
 
 std::vector<std::pair<render::Viewpoint, std::string>> views_3d() {
-  return {{render::Viewpoint::isometric, "view_isometric.png"},
-          {render::Viewpoint::top, "view_top.png"}};
+  return {{render::Viewpoint::isometric, "view_isometric"}, {render::Viewpoint::top, "view_top"}};
 }
 
 std::vector<std::string> write_coverage_files(const model::Rig& rig,
@@ -69,8 +70,10 @@ std::vector<std::string> write_coverage_files(const model::Rig& rig,
     render::draw_section(view, rig.name, path(name + ".svg"));
   }
   if (with_3d) {
-    for (const auto& [viewpoint, name] : views_3d())
-      render_rig_3d(rig, library, viewpoint, path(name));
+    for (const auto& [viewpoint, name] : views_3d()) {
+      render_rig_3d(rig, library, viewpoint, path(name + ".png"));
+      render_rig_3d(rig, library, viewpoint, path(name + ".svg"));
+    }
   }
   io::write_file_atomically(path("coverage.csv"), coverage_csv(coverage));
   io::write_file_atomically(path("coverage.json"), to_json(coverage, true).dump(2) + "\n");
@@ -81,16 +84,28 @@ void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,
                    render::Viewpoint viewpoint, const std::string& path) {
   std::vector<render::ColouredMesh> meshes;
   meshes.push_back({geometry::body_mesh(rig.body), render::kBodyColour, 1.0});
+  render::View3dOverlay overlay;
+  overlay.title = rig.name + ": what each sensor sees, to d = " +
+                  model::format_number(rig.distance_of_interest) + " m (" +
+                  (viewpoint == render::Viewpoint::top ? "top view" : "isometric view") + ")";
+  overlay.subtitle =
+      "each volume is cut where the body blocks the sensor's rays, as the coverage numbers count it";
+  // The same occluder the coverage engine uses, so the picture agrees with the numbers.
+  const geometry::BodyOccluder body(rig.body);
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
     const model::Mount& mount = rig.mounts[i];
     const model::SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    meshes.push_back({render::fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest),
+    meshes.push_back({render::visible_fov_mesh(mode, mount.T_robot_sensor,
+                                               rig.distance_of_interest, body),
                       render::sensor_colour(i), 0.35});
+    overlay.legend.push_back({render::sensor_colour(i), mount.id + ": " + mount.sensor_id + " / " +
+                                                            mount.mode_id});
+    overlay.labels.push_back({mount.T_robot_sensor.translation(), mount.id, render::sensor_colour(i)});
   }
   render::View3dSettings settings;
   settings.viewpoint = viewpoint;
   settings.extent = 0.0;  // fit the FOV volumes, which reach past d from off-centre mounts
-  render::render_view_3d(meshes, settings, path);
+  render::render_view_3d(meshes, settings, overlay, path);
 }
 
 }  // namespace rigdesign::cli

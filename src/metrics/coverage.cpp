@@ -95,6 +95,7 @@ SectionView section_view(const model::Rig& rig, const model::SensorLibrary& libr
   view.frame = geometry::section_frame(body, theta, rig.distance_of_interest);
   for (const PlacedMount& mount : mounts) {
     view.mount_ids.push_back(mount.mount->id);
+    view.mount_sensors.push_back(mount.mount->sensor_id);
     view.polygons.push_back(geometry::section_polygons(mount.fov, view.frame, tessellation));
     view.floors.push_back(geometry::floor_coverage(mount.fov, view.frame));
     view.origins.push_back(mount.fov.origin());
@@ -118,7 +119,10 @@ RigCoverage compute_coverage(const model::Rig& rig, const model::SensorLibrary& 
   result.exact = settings.exact;
   result.distance = rig.distance_of_interest;
   result.height = rig.body.area_top();
-  for (const PlacedMount& mount : mounts) result.mount_ids.push_back(mount.mount->id);
+  for (const PlacedMount& mount : mounts) {
+    result.mount_ids.push_back(mount.mount->id);
+    result.mount_sensors.push_back(mount.mount->sensor_id);
+  }
 
   const int steps = std::max(1, static_cast<int>(std::lround(kTwoPi / settings.step)));
   // Per angle, each mount's raster: kept for the N-1 table.

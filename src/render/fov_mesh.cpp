@@ -59,12 +59,30 @@ model::Vec3 direction(model::FovShape shape, double u, double v) {
   return model::Vec3::UnitX();
 }
 
+// [rad] the visible volume's grid: fine enough that a cut by the body (a top plate shadowing
+// beams a few degrees down) falls within a couple of degrees of where the coverage engine has it.
+constexpr double kVisibleMeshStep = 2.0 * kPi / 180.0;
+
+// How far along `direction` the sensor sees before the body, up to `reach` [m]. The open
+// segment from the origin passes through the body for every length beyond the first hit, so
+// bisection on BodyOccluder::blocks finds it (to 2^-30 of the reach).
+double visible_reach(const geometry::BodyOccluder& body, const model::Vec3& origin,
+                     const model::Vec3& direction, double reach) {
+  if (!body.blocks(origin, origin + direction * reach)) return reach;
+  double clear = 0.0, blocked = reach;
+  for (int i = 0; i < 30; ++i) {
+    const double middle = 0.5 * (clear + blocked);
+    (body.blocks(origin, origin + direction * middle) ? blocked : clear) = middle;
+  }
+  return clear;
+}
+
 int segments_for(double span, double wider_span) {
   const double share = span / wider_span;
   return std::max(1, static_cast<int>(std::ceil(kSegmentsOnWiderAngle * share - kAngleTolerance)));
 }
 
-AngleGrid angle_grid(const model::FieldOfView& fov) {
+AngleGrid angle_grid(const model::FieldOfView& fov, double max_step) {
   AngleGrid grid;
   grid.shape = fov.shape;
   switch (fov.shape) {
@@ -101,6 +119,10 @@ AngleGrid angle_grid(const model::FieldOfView& fov) {
   if (wider_span > 0) {
     grid.columns = segments_for(u_span, wider_span);
     grid.rows = segments_for(v_span, wider_span);
+  }
+  if (max_step > 0) {
+    grid.columns = std::max(grid.columns, static_cast<int>(std::ceil(u_span / max_step)));
+    grid.rows = std::max(grid.rows, static_cast<int>(std::ceil(v_span / max_step)));
   }
   return grid;
 }
@@ -206,8 +228,26 @@ model::TriangleMesh fov_mesh(const model::SensorMode& mode, const model::Pose3& 
   const double near_radius = std::max(0.0, mode.min_range);
   const double far_radius = std::min(mode.max_range, truncate_at);
   if (!(far_radius > near_radius)) return {};
-  const AngleGrid grid = angle_grid(mode.fov);
+  const AngleGrid grid = angle_grid(mode.fov, 0.0);
   return ShellBuilder(grid, T_robot_sensor).build(near_radius, far_radius);
+}
+
+model::TriangleMesh visible_fov_mesh(const model::SensorMode& mode,
+                                     const model::Pose3& T_robot_sensor, double truncate_at,
+                                     const geometry::BodyOccluder& body) {
+  const double near_radius = std::max(0.0, mode.min_range);
+  const double far_radius = std::min(mode.max_range, truncate_at);
+  if (!(far_radius > near_radius)) return {};
+  const AngleGrid grid = angle_grid(mode.fov, kVisibleMeshStep);
+  model::TriangleMesh mesh = ShellBuilder(grid, T_robot_sensor).build(near_radius, far_radius);
+  const model::Vec3 origin = T_robot_sensor.translation();
+  for (model::Vec3& vertex : mesh.vertices) {
+    const double reach = (vertex - origin).norm();
+    if (reach <= 0.0) continue;
+    const model::Vec3 direction = (vertex - origin) / reach;
+    vertex = origin + direction * visible_reach(body, origin, direction, reach);
+  }
+  return mesh;
 }
 
 }  // namespace rigdesign::render

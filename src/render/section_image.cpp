@@ -173,6 +173,10 @@ void draw_section(const metrics::SectionView& view, const std::string& rig_name,
           cairo,
           view.mount_ids[i] + "  " + model::format_number(area / frame.area() * 100, 3) + " %",
           legend_x + 30, y, 13);
+      if (i < view.mount_sensors.size()) {
+        set_colour(cairo, kInkColour, 0.7);
+        draw_text(cairo, view.mount_sensors[i], legend_x + 30, y += 15, 11);
+      }
     }
     y += 34;
     set_colour(cairo, kFloorColour);

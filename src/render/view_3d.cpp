@@ -369,10 +369,25 @@ std::vector<std::uint8_t> render_view_3d_pixels(const std::vector<ColouredMesh>&
   return downsample_top_down(context.pixels(), settings.width, settings.height);
 }
 
-void render_view_3d(const std::vector<ColouredMesh>& meshes, const View3dSettings& settings,
-                    const std::string& png_path) {
-  write_png_rgba(png_path, settings.width, settings.height,
-                 render_view_3d_pixels(meshes, settings));
+std::pair<double, double> ViewProjection::pixel(const model::Vec3& p_robot) const {
+  const model::Vec3 eye = R_eye_robot * p_robot - centre_eye;
+  return {(eye.x() / half_width + 1.0) * 0.5 * width, (1.0 - eye.y() / half_height) * 0.5 * height};
+}
+
+ViewProjection view_projection(const std::vector<ColouredMesh>& meshes,
+                               const View3dSettings& settings) {
+  const Eigen::AlignedBox3d content = content_box(meshes);
+  const Camera camera =
+      frame_camera(meshes, settings, framed_box(content, floor_half_width(content, settings.extent)));
+  ViewProjection projection;
+  projection.R_eye_robot = camera.R_eye_robot;
+  projection.centre_eye = camera.centre_eye;
+  projection.half_width = camera.half_width;
+  projection.half_height = camera.half_height;
+  projection.width = settings.width;
+  projection.height = settings.height;
+  projection.grid_spacing = kGridSpacing;
+  return projection;
 }
 
 }  // namespace rigdesign::render

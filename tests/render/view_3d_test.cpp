@@ -1,4 +1,4 @@
-#include "rigdesign/render/view_3d.hpp"
+#include "rigdesign/render/view_3d_figure.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -343,4 +343,32 @@ TEST_CASE("render_view_3d_pixels rejects an empty image") {
   render::View3dSettings settings;
   settings.width = 0;
   CHECK_THROWS_AS(render::render_view_3d_pixels({}, settings), std::invalid_argument);
+}
+
+TEST_CASE("the visible FOV volume stops at the top plate, as the coverage numbers do") {
+  // The UR Cleaner's VLP-16: 1.04 m up on a 0.45 m x 1.0 m cylinder. Beams steeper than
+  // atan(0.04 / 0.45) = 5.08 deg down land on the plate; the rest reach d = 3.5 m.
+  const model::RobotBody body = cylinder_body(0.45, 1.0);
+  const geometry::BodyOccluder occluder(body);
+  const model::SensorMode mode = band_mode(model::FovShape::band, 360, -15, 15, 0.9, 100);
+  const model::Pose3 mount = model::pose_from_xyz_rpy(model::Vec3(0, 0, 1.04), model::Vec3::Zero());
+  const model::TriangleMesh mesh = render::visible_fov_mesh(mode, mount, 3.5, occluder);
+  REQUIRE(!mesh.vertices.empty());
+  const double cut = std::atan(0.04 / 0.45);
+  int shadowed = 0, clear = 0;
+  for (const model::Vec3& vertex : mesh.vertices) {
+    const model::Vec3 ray = vertex - mount.translation();
+    const double reach = ray.norm();
+    const double elevation = std::asin(ray.z() / reach);
+    if (elevation < -cut - model::deg_to_rad(1.5)) {
+      ++shadowed;  // on the plate: at its height, inside its rim
+      CHECK(vertex.z() >= 1.0 - 1e-6);
+      CHECK(std::hypot(vertex.x(), vertex.y()) <= 0.45 + 1e-6);
+    } else if (elevation > -cut + model::deg_to_rad(1.5)) {
+      ++clear;  // the near or the far cap, untouched
+      CHECK((std::abs(reach - 0.9) < 1e-6 || std::abs(reach - 3.5) < 1e-6));
+    }
+  }
+  CHECK(shadowed > 100);
+  CHECK(clear > 100);
 }

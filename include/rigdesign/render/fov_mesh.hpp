@@ -5,6 +5,7 @@
 #include <array>
 #include <vector>
 
+#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
@@ -23,6 +24,14 @@ namespace rigdesign::render {
 /// Returns an empty mesh when the range interval is empty. Deterministic.
 model::TriangleMesh fov_mesh(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
                              double truncate_at);
+
+/// fov_mesh with what the body hides cut away: every vertex is pulled along its ray from the
+/// sensor origin back to where the body first blocks it, so the volume is what the sensor
+/// sees, as the coverage engine counts it (a lidar on a top plate loses the beams the plate
+/// shadows). Tessellated at 2 deg at most, so the cut lands where it is.
+model::TriangleMesh visible_fov_mesh(const model::SensorMode& mode,
+                                     const model::Pose3& T_robot_sensor, double truncate_at,
+                                     const geometry::BodyOccluder& body);
 
 
 }  // namespace rigdesign::render

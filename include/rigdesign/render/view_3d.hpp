@@ -3,6 +3,7 @@
 /// grid and the robot frame's axes, drawn with an orthographic projection (OSMesa, so no
 /// display is needed).
 #include <cstdint>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -43,8 +44,23 @@ struct View3dSettings {
 std::vector<std::uint8_t> render_view_3d_pixels(const std::vector<ColouredMesh>& meshes,
                                                 const View3dSettings& settings);
 
-/// render_view_3d_pixels, written as a PNG to `png_path` (atomically, see write_png_rgba).
-void render_view_3d(const std::vector<ColouredMesh>& meshes, const View3dSettings& settings,
-                    const std::string& png_path);
+/// Where render_view_3d_pixels puts a point of the robot frame on the image, for labels and
+/// scale bars drawn over it.
+struct ViewProjection {
+  model::Mat3 R_eye_robot = model::Mat3::Identity();
+  model::Vec3 centre_eye = model::Vec3::Zero();
+  double half_width = 1.0;   ///< [m]
+  double half_height = 1.0;  ///< [m]
+  int width = 1;             ///< [px]
+  int height = 1;            ///< [px]
+  /// Pixel (x right, y down, origin top left) of `p_robot`.
+  std::pair<double, double> pixel(const model::Vec3& p_robot) const;
+  /// Orthographic: a length parallel to the image plane, e.g. along the image's x axis, which
+  /// is horizontal in both viewpoints [px/m].
+  double pixels_per_metre() const { return width / (2.0 * half_width); }
+  double grid_spacing = 1.0;  ///< [m] the floor grid's cell
+};
+ViewProjection view_projection(const std::vector<ColouredMesh>& meshes,
+                               const View3dSettings& settings);
 
 }  // namespace rigdesign::render
