@@ -193,6 +193,7 @@ VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const R
   frame.trail.push_back(frame.robot);
   frame.title = title + ": " + (run.result.collided ? "collision" : "no collision");
   render::draw_costmap_frame(frame, folder + "/final.png");
+  render::draw_costmap_frame(frame, folder + "/final.svg");
   io::write_map_files(io::to_occupancy_map(last_master), folder + "/master.yaml");
   io::write_map_files(io::to_occupancy_map(last_obstacles), folder + "/obstacles.yaml");
   io::write_file_atomically(folder + "/summary.json",

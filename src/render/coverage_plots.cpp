@@ -289,16 +289,6 @@ void plot_sc_polar(const metrics::RigCoverage& coverage, const std::string& rig_
       set_colour(cairo, kInkColour);
       draw_text(cairo, std::to_string(degrees), lx, ly + 5, 13, Anchor::centre);
     }
-    // Percent labels between two spokes, on a white patch so the curves cannot hide them.
-    for (int percent = 25; percent <= 100; percent += 25) {
-      const auto [x, y] = at(model::deg_to_rad(-22.5), percent / 100.0);
-      cairo_set_source_rgba(cairo, 1, 1, 1, 0.85);
-      cairo_rectangle(cairo, x + 1, y - 14, 34, 14);
-      cairo_fill(cairo);
-      set_colour(cairo, kInkColour);
-      draw_text(cairo, std::to_string(percent) + " %", x + 3, y - 3, 11);
-    }
-
     const double dash[] = {7.0, 5.0};
     cairo_set_line_width(cairo, 2);
     for (const metrics::SectorCoverage& sector : coverage.sectors) {
@@ -355,6 +345,16 @@ void plot_sc_polar(const metrics::RigCoverage& coverage, const std::string& rig_
       cairo_stroke(cairo);
       cairo_set_dash(cairo, nullptr, 0, 0);
     }
+    // Percent labels between two spokes, on a white patch so the curves cannot hide them.
+    for (int percent = 25; percent <= 100; percent += 25) {
+      const auto [x, y] = at(model::deg_to_rad(-22.5), percent / 100.0);
+      cairo_set_source_rgba(cairo, 1, 1, 1, 0.85);
+      cairo_rectangle(cairo, x + 1, y - 14, 34, 14);
+      cairo_fill(cairo);
+      set_colour(cairo, kInkColour);
+      draw_text(cairo, std::to_string(percent) + " %", x + 3, y - 3, 11);
+    }
+
     const auto [fx, fy] = at(0.0, ring_outer + 0.3);
     set_colour(cairo, kInkColour);
     draw_text(cairo, "forward (x)", fx, fy + 4, 13, Anchor::centre, true);

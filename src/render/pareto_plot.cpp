@@ -101,14 +101,18 @@ void plot_pareto(const std::vector<select::ExploredRig>& explored, double budget
     cairo_line_to(cairo, x(budget), bottom);
     cairo_stroke(cairo);
     cairo_set_dash(cairo, nullptr, 0, 0);
-    draw_text(cairo, "budget " + model::format_number(budget, 6), x(budget) + 6, top + 16, 13);
+    draw_text(cairo, "budget " + model::format_number(budget, 6) + " USD", x(budget) + 6, top + 16,
+              13);
     if (chosen_cost > 0) {
       cairo_new_sub_path(cairo);
       cairo_arc(cairo, x(chosen_cost), y(chosen_coverage), 8, 0, 2 * std::numbers::pi);
       cairo_set_line_width(cairo, 2.5);
       cairo_stroke(cairo);
-      draw_text(cairo, "chosen", x(chosen_cost) + 11, y(chosen_coverage) - 8, 13, Anchor::left,
-                true);
+      // Over the budget (the policy ran out) the rig is the cheapest valid one, not a choice.
+      draw_text(cairo,
+                chosen_cost <= budget ? "chosen (cheapest valid rig)"
+                                      : "cheapest valid rig: OVER BUDGET",
+                x(chosen_cost) + 11, y(chosen_coverage) - 8, 13, Anchor::left, true);
     }
     // Legend.
     double ly = bottom - 50;

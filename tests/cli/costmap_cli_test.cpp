@@ -45,9 +45,11 @@ TEST_CASE("costmap CLI: outcome, frames, map files and summary", "[scenario]") {
   CHECK(result.out.find("collision: none") != std::string::npos);
   CHECK(result.out.find("minimum clearance") != std::string::npos);
   CHECK(result.out.find("median") != std::string::npos);
-  // 6 m / 0.05 m = 120 cells a side at 4 px per cell, plus the 28 px title band.
-  CHECK(png_size(read_all(out + "/final.png")) == std::pair<int, int>(480, 508));
-  CHECK(png_size(read_all(out + "/frames/frame_0000.png")) == std::pair<int, int>(480, 508));
+  // 6 m / 0.05 m = 120 cells a side at 4 px per cell (480 px), with a 48 px axis margin and
+  // a 290 px legend beside it, a 28 px title band and a 40 px axis band under it.
+  const std::pair<int, int> size(48 + 480 + 290, 28 + 480 + 40);
+  CHECK(png_size(read_all(out + "/final.png")) == size);
+  CHECK(png_size(read_all(out + "/frames/frame_0000.png")) == size);
   const io::OccupancyMap map = io::read_map_files(out + "/master.yaml");
   CHECK(map.width == 120);
   CHECK(map.height == 120);

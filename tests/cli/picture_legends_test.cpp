@@ -84,3 +84,25 @@ TEST_CASE("coverage pictures name every mounted sensor in their SVG legends") {
   }
   CHECK(scale_bar);
 }
+
+TEST_CASE("a costmap frame has a cost legend, axes, a scale bar and names every sensor") {
+  const std::string rig = source_path("rigs/ur_cleaner.yaml");
+  TempFolder folder;
+  const std::string out = folder.path() + "/cm";
+  const CliResult result = run_cli({"costmap", rig, "--scenario", "wall_following", "--out", out,
+                                    "--frame-every", "0"});
+  REQUIRE(result.exit_code == 0);
+  // The final frame as SVG: the same drawing routine, chosen by the extension.
+  REQUIRE(std::ifstream(out + "/final.png").good());
+  const std::string words = svg_words(out + "/final.svg");
+  for (const char* legend : {"254 lethal: obstacle", "253 inscribed", "0 free", "255 unknown",
+                             "kept by the Hit Layer only", "planned path", "driven trail",
+                             "x [m] (world)", "y [m]", "1 m"}) {
+    INFO(legend);
+    CHECK(words.find(legend) != std::string::npos);
+  }
+  for (const MountNames& mount : mounts_of(rig)) {
+    INFO(mount.id);
+    CHECK(words.find(mount.id + ": " + mount.sensor) != std::string::npos);
+  }
+}

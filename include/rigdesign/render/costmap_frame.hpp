@@ -22,6 +22,7 @@ struct FovWedge {
   double half_angle = 0.0;                 ///< [rad]; >= pi draws a disc
   double range = 0.0;                      ///< [m]
   std::size_t colour = 0;                  ///< index into sensor_colour
+  std::string label;                       ///< "mount: sensor", for the legend
 };
 
 /// Each mount's horizontal view on the floor with the robot at `pose`, as far as the nearer of
