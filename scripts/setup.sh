@@ -21,6 +21,7 @@ packages=(
   llvm                                   # llvm-symbolizer: readable stacks in fuzz findings
   libbenchmark-dev                       # Google Benchmark for scripts/bench.sh
   fonts-dejavu-core                      # the font Cairo draws labels with
+  chromium                               # headless browser: the test that renders `report`'s page
 )
 
 missing=()

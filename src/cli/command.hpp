@@ -30,5 +30,6 @@ Command setup_occupancy(CLI::App& parent);
 Command setup_costmap(CLI::App& parent);
 Command setup_export(CLI::App& parent);
 Command setup_sensors(CLI::App& parent);
+Command setup_report(CLI::App& parent);
 
 }  // namespace rigdesign::cli

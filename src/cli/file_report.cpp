@@ -50,23 +50,6 @@ std::string bound_text(metrics::Bound bound) {
   return "";
 }
 
-// "F = 15 Hz, required >= 14.29 Hz, margin +0.7143 Hz (+5 %)", or "" without numbers.
-std::string measured_text(const metrics::RequirementResult& result) {
-  if (!result.actual) return "";
-  std::string text = result.metric + " = " + value_text(*result.actual, result.unit);
-  if (result.required) {
-    text += ", required " + bound_text(result.bound) + value_text(*result.required, result.unit);
-  }
-  if (const std::optional<double> margin = result.margin()) {
-    text += ", margin " + std::string(*margin >= 0 ? "+" : "") + value_text(*margin, result.unit);
-    if (*result.required != 0.0) {
-      const double share = 100.0 * *margin / std::abs(*result.required);
-      text += " (" + std::string(share >= 0 ? "+" : "") + model::format_number(share, 3) + " %)";
-    }
-  }
-  return text;
-}
-
 std::string result_line(const metrics::RequirementResult& result) {
   std::string text = to_string(result.annotated_where()) + ": " + result.field + ": " +
                      to_string(result.verdict) + ": " + result.id + " " + result.title;
@@ -108,6 +91,30 @@ std::size_t count(const std::vector<metrics::RequirementResult>& results,
 }
 
 }  // namespace
+
+// "F = 15 Hz, required >= 14.29 Hz, margin +0.7143 Hz (+5 %)", or "" without numbers.
+std::string measured_text(const metrics::RequirementResult& result) {
+  if (!result.actual) return "";
+  if (result.metric == "SC" && result.unit.empty()) {  // shares read as percent
+    metrics::RequirementResult percent = result;
+    percent.unit = "%";
+    percent.actual = *result.actual * 100;
+    if (result.required) percent.required = *result.required * 100;
+    return measured_text(percent);
+  }
+  std::string text = result.metric + " = " + value_text(*result.actual, result.unit);
+  if (result.required) {
+    text += ", required " + bound_text(result.bound) + value_text(*result.required, result.unit);
+  }
+  if (const std::optional<double> margin = result.margin()) {
+    text += ", margin " + std::string(*margin >= 0 ? "+" : "") + value_text(*margin, result.unit);
+    if (*result.required != 0.0) {
+      const double share = 100.0 * *margin / std::abs(*result.required);
+      text += " (" + std::string(share >= 0 ? "+" : "") + model::format_number(share, 3) + " %)";
+    }
+  }
+  return text;
+}
 
 bool FileReport::invalid() const {
   return std::any_of(diagnostics.begin(), diagnostics.end(), [](const model::Diagnostic& d) {

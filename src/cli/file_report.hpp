@@ -38,6 +38,9 @@ struct DeploymentFiles {
 FileReport check_file(const std::string& path, const std::string& sensors_path,
                       const std::string& requirements_path, const DeploymentFiles& deployment = {});
 
+/// "F = 10 Hz, required >= 20 Hz, margin -10 Hz (-50 %)", or "" without a measured value.
+std::string measured_text(const metrics::RequirementResult& result);
+
 std::string format_text(const std::vector<FileReport>& reports);
 std::string format_json(const std::vector<FileReport>& reports, int exit_code);
 /// JUnit XML: a testcase per file and per requirement, with file, line, time, and the

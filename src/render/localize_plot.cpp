@@ -49,15 +49,40 @@ Rgb colour_of(PlotMarkerKind kind) {
 
 void plot_localization(const LocalizePlot& plot, const std::string& path, int width, int height) {
   render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
-    const double left = 70, top = 60, right = width - 150.0, bottom = height - 60.0;
     model::Vec2 low = model::Vec2::Constant(1e300), high = model::Vec2::Constant(-1e300);
     const auto extend = [&](const model::Vec2& p) {
       low = low.cwiseMin(p);
       high = high.cwiseMax(p);
     };
+    // The region of interest is where the robot went (and the walls), with a margin of half
+    // its size (5 m at least): a wild estimate 150 m away must not shrink the path to a dot.
     for (const model::Vec3& p : plot.path) extend(p.head<2>());
-    for (const PlotMarker& m : plot.markers) extend(m.position.head<2>());
+    for (const auto& [a, b] : plot.walls) {
+      extend(a);
+      extend(b);
+    }
+    if (low.x() > high.x()) {
+      for (const PlotMarker& m : plot.markers) extend(m.position.head<2>());
+    }
     if (low.x() > high.x()) low = high = model::Vec2::Zero();
+    const double margin = std::max(5.0, 0.5 * (high - low).maxCoeff());
+    const model::Vec2 region_low = low - model::Vec2::Constant(margin);
+    const model::Vec2 region_high = high + model::Vec2::Constant(margin);
+    const auto in_region = [&](const model::Vec2& p) {
+      return (p.array() >= region_low.array()).all() && (p.array() <= region_high.array()).all();
+    };
+    std::vector<const PlotMarker*> outside;
+    for (const PlotMarker& m : plot.markers) {
+      if (in_region(m.position.head<2>())) {
+        extend(m.position.head<2>());
+      } else {
+        outside.push_back(&m);
+      }
+    }
+    const double left = 70, top = 60, right = width - 150.0;
+    // Room under the x axis for a note per marker left out.
+    const double bottom =
+        height - 60.0 - (outside.empty() ? 0.0 : 15.0 * static_cast<double>(outside.size() + 1) + 8);
     const model::Vec2 centre = 0.5 * (low + high);
     const double span = std::max({high.x() - low.x(),
                                   (high.y() - low.y()) * (right - left) / (bottom - top), 1.0}) *
@@ -97,8 +122,12 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       set_colour(cairo, kInkColour);
       draw_text(cairo, model::format_number(y, 6), left - 6, px({0, y}).y() + 4, 12, Anchor::right);
     }
-    draw_text(cairo, "x [m]", (left + right) / 2, height - 18.0, 13, Anchor::centre);
+    draw_text(cairo, "x [m]", (left + right) / 2, bottom + 36, 13, Anchor::centre);
     draw_text(cairo, "y [m]", 20, top - 10, 13, Anchor::left);
+    // Walls, path and markers stay in the frame (a 2-sigma ellipse can reach far out).
+    cairo_save(cairo);
+    cairo_rectangle(cairo, left, top, right - left, bottom - top);
+    cairo_clip(cairo);
     set_colour(cairo, kWall);
     cairo_set_line_width(cairo, 4);
     for (const auto& [a, b] : plot.walls) {
@@ -123,6 +152,7 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       cairo_fill(cairo);
     }
     for (const PlotMarker& marker : plot.markers) {
+      if (std::find(outside.begin(), outside.end(), &marker) != outside.end()) continue;
       const model::Vec2 p = px(marker.position.head<2>());
       set_colour(cairo, colour_of(marker.kind));
       cairo_set_line_width(cairo, 2);
@@ -156,6 +186,48 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
         set_colour(cairo, kInkColour);
         draw_text(cairo, marker.label, p.x() + 9, p.y() - 9, 12);
       }
+    }
+    cairo_restore(cairo);
+    // Markers outside the region: an arrow on the frame's edge toward each, and a note of
+    // where they are, so nothing is dropped silently.
+    double note_y = bottom + 58;
+    if (!outside.empty()) {
+      set_colour(cairo, kInkColour);
+      draw_text(cairo,
+                std::to_string(outside.size()) +
+                    " marker(s) beyond the region shown (the path plus a margin of " +
+                    model::format_number(margin, 3) + " m), not to scale:",
+                left, note_y, 11, Anchor::left, true);
+    }
+    for (const PlotMarker* marker : outside) {
+      const model::Vec2 target = px(marker->position.head<2>());
+      const model::Vec2 middle((left + right) / 2, (top + bottom) / 2);
+      const model::Vec2 towards = (target - middle).normalized();
+      // Where the ray from the middle leaves the plot frame.
+      const double reach = std::min(
+          std::abs(towards.x()) > 1e-9 ? ((towards.x() > 0 ? right : left) - middle.x()) / towards.x()
+                                       : 1e300,
+          std::abs(towards.y()) > 1e-9 ? ((towards.y() > 0 ? bottom : top) - middle.y()) / towards.y()
+                                       : 1e300);
+      const model::Vec2 tip = middle + towards * (reach - 4);
+      const model::Vec2 side(-towards.y(), towards.x());
+      const model::Vec2 base = tip - towards * 16;
+      set_colour(cairo, colour_of(marker->kind));
+      cairo_move_to(cairo, tip.x(), tip.y());
+      cairo_line_to(cairo, base.x() + side.x() * 7, base.y() + side.y() * 7);
+      cairo_line_to(cairo, base.x() - side.x() * 7, base.y() - side.y() * 7);
+      cairo_close_path(cairo);
+      cairo_fill(cairo);
+      const std::string where = "(" + model::format_number(marker->position.x(), 4) + ", " +
+                                model::format_number(marker->position.y(), 4) + ") m";
+      set_colour(cairo, kInkColour);
+      draw_text(cairo, (marker->label.empty() ? std::string("marker") : marker->label) + " " + where,
+                base.x() - towards.x() * 60, base.y() - towards.y() * 14, 11, Anchor::centre);
+      note_y += 15;
+      draw_text(cairo,
+                "  " + (marker->label.empty() ? std::string("marker") : marker->label) + " at " +
+                    where,
+                left, note_y, 11);
     }
     // Legend and colour bar.
     double ly = top + 10;

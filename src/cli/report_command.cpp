@@ -1,0 +1,113 @@
+// `rigdesign report RIG [--out DIR] [--requirements FILE] [--sensors FILE] [--step DEG]`: one
+// self-contained HTML page explaining the rig (verdicts with margins, metrics with limiting
+// sensors, SC plots, cross-sections, 3D views, N-1 table, costs), with the pictures beside it.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+#include "app.hpp"
+#include "command.hpp"
+#include "coverage_files.hpp"
+#include "html_report.hpp"
+#include "inputs.hpp"
+#include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/staged_folder.hpp"
+#include "rigdesign/metrics/requirement_check.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+struct ReportOptions {
+  std::string rig;
+  std::string out;
+  std::string requirements;
+  std::string sensors;
+  double step_deg = 1.0;
+};
+
+std::string read_text(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << file.rdbuf();
+  return bytes.str();
+}
+
+int run_report(const ReportOptions& options, std::ostream& out) {
+  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
+  const std::string folder = options.out.empty()
+                                 ? "report/" + std::filesystem::path(options.rig).stem().string()
+                                 : options.out;
+  io::StagedFolder staged(folder, "--out");
+
+  metrics::CoverageSettings settings;
+  settings.step = model::deg_to_rad(options.step_deg);
+  const std::vector<model::SectorRequirement> sectors =
+      inputs.requirements ? inputs.requirements->sectors : std::vector<model::SectorRequirement>{};
+  const metrics::RigCoverage coverage =
+      metrics::compute_coverage(inputs.rig, inputs.library, sectors, settings);
+  const metrics::ResultantMetrics resultant = metrics::compute_resultant(inputs.rig, inputs.library);
+  ReportContent content;
+  content.inputs = &inputs;
+  content.metrics = &resultant;
+  content.coverage = &coverage;
+  if (inputs.requirements) {
+    content.results =
+        metrics::evaluate_requirements(inputs.rig, resultant, *inputs.requirements, &coverage);
+  }
+
+  const std::string figures = staged.path() + "/figures";
+  std::filesystem::create_directories(figures);
+  const std::vector<double> angles = {0, 90, 180, 270};
+  write_coverage_files(inputs.rig, inputs.library, coverage, angles, figures, true);
+  const auto add = [&](const std::string& id, const std::string& file, const std::string& caption) {
+    content.figures.push_back({id, caption, read_text(figures + "/" + file)});
+  };
+  add("sc-cartesian", "sc_cartesian.svg",
+      "Spatial Coverage at every azimuth: SC complete and floor, requirement sectors shaded, "
+      "and per sensor the angles where it sees the cross-section.");
+  add("sc-polar", "sc_polar.svg", "The same seen from above, forward up.");
+  for (const double degrees : angles) {
+    const std::string name = model::format_number(degrees);
+    add("section-" + name, "section_" + name + ".svg",
+        "Cross-section at theta = " + name + " deg: each sensor's region, the body, the floor seen.");
+  }
+  add("view-isometric", "view_isometric.svg",
+      "What each sensor sees to d, cut where the body blocks it (isometric).");
+  add("view-top", "view_top.svg", "The same from above.");
+
+  const std::string page = staged.path() + "/report.html";
+  io::write_file_atomically(page, html_report(content));
+  staged.commit();
+  out << inputs.rig.name << ": report " << staged.final_name(page) << " (self-contained; pictures "
+      << "also in " << staged.final_name(figures) << ")\n";
+  std::size_t failed = 0;
+  for (const metrics::RequirementResult& result : content.results) {
+    failed += result.verdict == metrics::Verdict::fail ? 1 : 0;
+  }
+  return failed == 0 ? kOk : kRequirementFails;
+}
+
+}  // namespace
+
+Command setup_report(CLI::App& parent) {
+  auto options = std::make_shared<ReportOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "report",
+      "One self-contained HTML page per rig: verdicts with margins, metrics, SC plots, "
+      "sections, 3D views, N-1, costs (exit 1 when a requirement fails)");
+  app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
+  app->add_option("--out", options->out, "Output folder (default report/<rig file name>)");
+  app->add_option("--requirements", options->requirements,
+                  "Requirements (default: the file the rig names)");
+  app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's, or bundled)");
+  app->add_option("--step", options->step_deg, "Azimuth step of the coverage cut [deg]")
+      ->check(CLI::Range(0.1, 45.0))
+      ->capture_default_str();
+  return {app, [options](std::ostream& out, std::ostream&) { return run_report(*options, out); }};
+}
+
+}  // namespace rigdesign::cli
