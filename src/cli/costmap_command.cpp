@@ -13,16 +13,16 @@
 #include <ostream>
 
 #include "app.hpp"
-#include "progress_line.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
-#include "rigdesign/io/output_folder.hpp"
+#include "progress_line.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/io/maps/map_files.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/render/costmap_frame.hpp"
 #include "rigdesign/scenarios/scenario_runner.hpp"

@@ -77,7 +77,8 @@ Command setup_coverage(CLI::App& parent) {
   auto options = std::make_shared<CoverageOptions>();
   CLI::App* app = parent.add_subcommand(
       "coverage", "Spatial coverage curves, cross-sections and 3D FOV views (PNG, SVG, CSV, JSON)");
-  app->add_option("rig,--rig", options->rig, "Rig file (rigs/*.yaml; positional or --rig)")->required();
+  app->add_option("rig,--rig", options->rig, "Rig file (rigs/*.yaml; positional or --rig)")
+      ->required();
   app->add_option("--out", options->out, "Output folder (default: coverage/<rig file name>)");
   app->add_option("--angles", options->angles_deg,
                   "Azimuths of the cross-section images, degrees (default 0,45,90,180)")

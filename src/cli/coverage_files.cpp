@@ -4,15 +4,15 @@
 #include <sstream>
 
 #include "json_report.hpp"
+#include "rigdesign/geometry/body_mesh.hpp"
+#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/coverage_plots.hpp"
-#include "rigdesign/geometry/body_mesh.hpp"
-#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
-#include "rigdesign/render/view_3d_figure.hpp"
 #include "rigdesign/render/palette.hpp"
+#include "rigdesign/render/view_3d_figure.hpp"
 
 namespace rigdesign::cli {
 
@@ -89,18 +89,20 @@ void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,
                   model::format_number(rig.distance_of_interest) + " m (" +
                   (viewpoint == render::Viewpoint::top ? "top view" : "isometric view") + ")";
   overlay.subtitle =
-      "each volume is cut where the body blocks the sensor's rays, as the coverage numbers count it";
+      "each volume is cut where the body blocks the sensor's rays, as the coverage numbers count "
+      "it";
   // The same occluder the coverage engine uses, so the picture agrees with the numbers.
   const geometry::BodyOccluder body(rig.body);
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
     const model::Mount& mount = rig.mounts[i];
     const model::SensorMode& mode = *library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    meshes.push_back({render::visible_fov_mesh(mode, mount.T_robot_sensor,
-                                               rig.distance_of_interest, body),
-                      render::sensor_colour(i), 0.35});
-    overlay.legend.push_back({render::sensor_colour(i), mount.id + ": " + mount.sensor_id + " / " +
-                                                            mount.mode_id});
-    overlay.labels.push_back({mount.T_robot_sensor.translation(), mount.id, render::sensor_colour(i)});
+    meshes.push_back(
+        {render::visible_fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest, body),
+         render::sensor_colour(i), 0.35});
+    overlay.legend.push_back(
+        {render::sensor_colour(i), mount.id + ": " + mount.sensor_id + " / " + mount.mode_id});
+    overlay.labels.push_back(
+        {mount.T_robot_sensor.translation(), mount.id, render::sensor_colour(i)});
   }
   render::View3dSettings settings;
   settings.viewpoint = viewpoint;

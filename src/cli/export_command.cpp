@@ -35,8 +35,7 @@ int run_export(const ExportOptions& options, std::ostream& out) {
   require_option(options.deploy.update_rate > 0.0 && options.deploy.update_rate <= 100.0,
                  "--update-rate", "is out of range", "0 < rate <= 100 Hz");
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
-  const model::Requirements* requirements =
-      inputs.requirements ? &*inputs.requirements : nullptr;
+  const model::Requirements* requirements = inputs.requirements ? &*inputs.requirements : nullptr;
   const deploy::Deployment deployment =
       deploy::plan_deployment(inputs.rig, inputs.library, requirements, options.deploy);
   const std::vector<std::string> written = io::write_deployment(

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "command.hpp"
@@ -20,6 +20,7 @@
 #include "rigdesign/io/deploy/self_filters_loader.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/xml_text.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -68,26 +69,25 @@ std::string result_line(const metrics::RequirementResult& result) {
   return text;
 }
 
-std::string xml_escape(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    switch (c) {
-      case '&': escaped += "&amp;"; break;
-      case '<': escaped += "&lt;"; break;
-      case '>': escaped += "&gt;"; break;
-      case '"': escaped += "&quot;"; break;
-      case '\'': escaped += "&apos;"; break;
-      default: escaped += c;
-    }
-  }
-  return escaped;
-}
-
 std::size_t count(const std::vector<metrics::RequirementResult>& results,
                   metrics::Verdict verdict) {
   return static_cast<std::size_t>(
       std::count_if(results.begin(), results.end(),
                     [&](const metrics::RequirementResult& r) { return r.verdict == verdict; }));
+}
+
+// "check: 3 file(s), 0 invalid; requirements: 7 pass, 1 fail, 0 not evaluated".
+std::string check_summary(const std::vector<FileReport>& reports) {
+  std::size_t invalid = 0, pass = 0, fail = 0, skipped = 0;
+  for (const FileReport& report : reports) {
+    invalid += report.invalid() ? 1 : 0;
+    pass += count(report.results, metrics::Verdict::pass);
+    fail += count(report.results, metrics::Verdict::fail);
+    skipped += count(report.results, metrics::Verdict::not_evaluated);
+  }
+  return "check: " + std::to_string(reports.size()) + " file(s), " + std::to_string(invalid) +
+         " invalid; requirements: " + std::to_string(pass) + " pass, " + std::to_string(fail) +
+         " fail, " + std::to_string(skipped) + " not evaluated\n";
 }
 
 }  // namespace
@@ -134,8 +134,9 @@ deploy::DeployedConfig load_deployment(const DeploymentFiles& files, const model
     const std::size_t equals = spec.find('=');
     const std::string mount = equals == std::string::npos ? "" : spec.substr(0, equals);
     const std::string file = equals == std::string::npos ? spec : spec.substr(equals + 1);
-    const bool known = mount.empty() || std::any_of(rig.mounts.begin(), rig.mounts.end(),
-                                                    [&](const model::Mount& m) { return m.id == mount; });
+    const bool known =
+        mount.empty() || std::any_of(rig.mounts.begin(), rig.mounts.end(),
+                                     [&](const model::Mount& m) { return m.id == mount; });
     require_option(known, "--filters", "'" + mount + "' is no mount of " + rig.file,
                    "FILE, or MOUNT=FILE for a mount of the rig");
     for (deploy::DeployedFilter& filter : io::load_self_filters(file, mount, rig))
@@ -235,21 +236,14 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
 
 std::string format_text(const std::vector<FileReport>& reports) {
   std::ostringstream out;
-  std::size_t invalid = 0, pass = 0, fail = 0, skipped = 0;
   for (const FileReport& report : reports) {
     if (!report.invalid()) out << report.file << ": " << report.summary << '\n';
     for (const model::Diagnostic& diagnostic : report.diagnostics)
       out << diagnostic.message() << '\n';
     for (const metrics::RequirementResult& result : report.results)
       out << result_line(result) << '\n';
-    invalid += report.invalid() ? 1 : 0;
-    pass += count(report.results, metrics::Verdict::pass);
-    fail += count(report.results, metrics::Verdict::fail);
-    skipped += count(report.results, metrics::Verdict::not_evaluated);
   }
-  out << "check: " << reports.size() << " file(s), " << invalid
-      << " invalid; requirements: " << pass << " pass, " << fail << " fail, " << skipped
-      << " not evaluated\n";
+  out << check_summary(reports);
   return out.str();
 }
 
@@ -283,7 +277,7 @@ std::string seconds_text(double seconds) {
 // file="..." line="..." as the JUnit readers of GitLab, Jenkins and GitHub's test reporters take
 // them (the Ant schema has no such attributes; the xunit/pytest dialect does).
 std::string location_attributes(const model::SourceLocation& where) {
-  std::string text = " file=\"" + xml_escape(where.file) + "\"";
+  std::string text = " file=\"" + model::xml_escaped(where.file) + "\"";
   if (where.line > 0) text += " line=\"" + std::to_string(where.line) + "\"";
   return text;
 }
@@ -306,15 +300,15 @@ std::string format_junit(const std::vector<FileReport>& reports) {
     all_errors += errors;
     all_skipped += skipped;
     all_seconds += seconds;
-    const std::string name = xml_escape(report.file);
+    const std::string name = model::xml_escaped(report.file);
     suites << "  <testsuite name=\"" << name << "\" tests=\"" << tests << "\" failures=\""
            << failures << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\""
            << seconds_text(seconds) << "\">\n";
-    const model::SourceLocation validity_where =
-        report.invalid() && !report.diagnostics.empty() ? report.diagnostics.front().where
-                                                        : model::SourceLocation{report.file, 0, 0};
+    const model::SourceLocation validity_where = report.invalid() && !report.diagnostics.empty()
+                                                     ? report.diagnostics.front().where
+                                                     : model::SourceLocation{report.file, 0, 0};
     suites << "    <testcase classname=\"" << name << "\" name=\"valid "
-           << xml_escape(report.kind ? to_string(*report.kind) : "file") << "\""
+           << model::xml_escaped(report.kind ? to_string(*report.kind) : "file") << "\""
            << location_attributes(validity_where) << " time=\"" << seconds_text(report.load_seconds)
            << "\">\n";
     if (report.invalid()) {
@@ -322,24 +316,24 @@ std::string format_junit(const std::vector<FileReport>& reports) {
       for (const model::Diagnostic& d : report.diagnostics) body += d.message() + "\n";
       const std::string first =
           report.diagnostics.empty() ? "" : report.diagnostics.front().message();
-      suites << "      <error type=\"invalid input\" message=\"" << xml_escape(first) << "\">"
-             << xml_escape(body) << "</error>\n";
+      suites << "      <error type=\"invalid input\" message=\"" << model::xml_escaped(first)
+             << "\">" << model::xml_escaped(body) << "</error>\n";
     } else if (!report.summary.empty()) {
-      suites << "      <system-out>" << xml_escape(report.summary) << "</system-out>\n";
+      suites << "      <system-out>" << model::xml_escaped(report.summary) << "</system-out>\n";
     }
     suites << "    </testcase>\n";
     for (std::size_t i = 0; i < report.results.size(); ++i) {
       const metrics::RequirementResult& result = report.results[i];
       const double result_seconds = i < report.result_seconds.size() ? report.result_seconds[i] : 0;
       suites << "    <testcase classname=\"" << name << "\" name=\""
-             << xml_escape(result.id + " " + result.title) << "\""
+             << model::xml_escaped(result.id + " " + result.title) << "\""
              << location_attributes(result.annotated_where()) << " time=\""
              << seconds_text(result_seconds) << "\">\n";
       if (result.verdict == metrics::Verdict::fail) {
         suites << "      <failure type=\"requirement\" message=\""
-               << xml_escape(result_line(result)) << "\"/>\n";
+               << model::xml_escaped(result_line(result)) << "\"/>\n";
       } else if (result.verdict == metrics::Verdict::not_evaluated) {
-        suites << "      <skipped message=\"" << xml_escape(result.explanation) << "\"/>\n";
+        suites << "      <skipped message=\"" << model::xml_escaped(result.explanation) << "\"/>\n";
       }
       std::string out = measured_text(result);
       out += (out.empty() ? "" : "\n") + result.explanation;
@@ -347,7 +341,7 @@ std::string format_junit(const std::vector<FileReport>& reports) {
         out += "\nset by: " + model::join(result.limiting_mounts);
       }
       out += "\nrequirement: " + to_string(result.where);
-      suites << "      <system-out>" << xml_escape(out) << "</system-out>\n";
+      suites << "      <system-out>" << model::xml_escaped(out) << "</system-out>\n";
       suites << "    </testcase>\n";
     }
     std::string warnings;
@@ -355,7 +349,7 @@ std::string format_junit(const std::vector<FileReport>& reports) {
       if (d.severity == model::Severity::warning) warnings += d.message() + "\n";
     }
     if (!warnings.empty())
-      suites << "    <system-out>" << xml_escape(warnings) << "</system-out>\n";
+      suites << "    <system-out>" << model::xml_escaped(warnings) << "</system-out>\n";
     suites << "  </testsuite>\n";
   }
   std::ostringstream xml;
@@ -397,7 +391,6 @@ void annotate(std::ostream& out, const std::string& level, const model::SourceLo
 
 std::string format_github(const std::vector<FileReport>& reports) {
   std::ostringstream out;
-  std::size_t invalid = 0, pass = 0, fail = 0, skipped = 0;
   for (const FileReport& report : reports) {
     for (const model::Diagnostic& d : report.diagnostics) {
       annotate(out, d.severity == model::Severity::error ? "error" : "warning", d.where,
@@ -408,19 +401,14 @@ std::string format_github(const std::vector<FileReport>& reports) {
       if (result.verdict != metrics::Verdict::fail) continue;
       std::string message = measured_text(result);
       message += (message.empty() ? "" : "; ") + result.explanation;
-      if (!result.limiting_mounts.empty()) message += " [set by " + model::join(result.limiting_mounts) + "]";
+      if (!result.limiting_mounts.empty())
+        message += " [set by " + model::join(result.limiting_mounts) + "]";
       message += "\nrequirement at " + to_string(result.where);
       annotate(out, "error", result.annotated_where(),
                "rigdesign " + result.id + " " + result.title, message);
     }
-    invalid += report.invalid() ? 1 : 0;
-    pass += count(report.results, metrics::Verdict::pass);
-    fail += count(report.results, metrics::Verdict::fail);
-    skipped += count(report.results, metrics::Verdict::not_evaluated);
   }
-  out << "check: " << reports.size() << " file(s), " << invalid
-      << " invalid; requirements: " << pass << " pass, " << fail << " fail, " << skipped
-      << " not evaluated\n";
+  out << check_summary(reports);
   return out.str();
 }
 

@@ -13,13 +13,13 @@
 #include "command.hpp"
 #include "inputs.hpp"
 #include "machine_info.hpp"
-#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/filters/pipeline_timing.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/io/config/pipeline_loader.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/metrics/mount_metrics.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/optical_frame.hpp"
@@ -144,8 +144,8 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
   if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
   model::Pipeline pipeline = pipeline_named(options.pipeline);
   if (options.threads != 0) {
-    require_option(options.threads >= 1 && options.threads <= model::kMaxFilterThreads,
-                   "--threads", "is out of range",
+    require_option(options.threads >= 1 && options.threads <= model::kMaxFilterThreads, "--threads",
+                   "is out of range",
                    "1 to " + std::to_string(model::kMaxFilterThreads) + " threads");
     pipeline = filters::with_threads(pipeline, options.threads);
   }
@@ -185,8 +185,9 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
     }
     // Clouds arrive as drivers publish them (and as `simulate --frame sensor` writes them):
     // a camera's in its optical frame, a lidar's in its x-forward frame.
-    const std::string frame =
-        options.frame != "auto" ? options.frame : (mode && mode->is_camera() ? "optical" : "sensor");
+    const std::string frame = options.frame != "auto"
+                                  ? options.frame
+                                  : (mode && mode->is_camera() ? "optical" : "sensor");
     if (mount != nullptr && frame != "robot") {
       const model::Pose3 T_robot_cloud = frame == "optical"
                                              ? mount->T_robot_sensor * model::T_sensor_optical()
@@ -278,12 +279,14 @@ Command setup_filter(CLI::App& parent) {
   app->add_option("--seed", options->seed, "Seed of the simulated scene and noise (default 1)");
   app->add_option("--pipeline", options->pipeline,
                   "P1, P2, P3, P4 or a pipeline YAML file (default P4)");
-  app->add_option("rig,--rig", options->rig, "Rig whose mount recorded the clouds (positional or --rig)");
+  app->add_option("rig,--rig", options->rig,
+                  "Rig whose mount recorded the clouds (positional or --rig)");
   app->add_option("--mount", options->mount,
                   "Mount id in --rig: moves the clouds into the robot frame");
-  app->add_option("--frame", options->frame,
-                  "Frame the clouds are in (with --mount): auto (default: optical for a camera, sensor for "
-                  "a lidar, as drivers publish them), optical, sensor or robot")
+  app->add_option(
+         "--frame", options->frame,
+         "Frame the clouds are in (with --mount): auto (default: optical for a camera, sensor for "
+         "a lidar, as drivers publish them), optical, sensor or robot")
       ->check(CLI::IsMember({"auto", "optical", "sensor", "robot"}));
   app->add_option("--repeat", options->repeat,
                   "Runs per cloud for the timing statistics (default 10)");

@@ -1,27 +1,15 @@
 #include "html_report.hpp"
 
+#include <fstream>
 #include <sstream>
 
 #include "file_report.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/xml_text.hpp"
 #include "text_table.hpp"
 
 namespace rigdesign::cli {
 namespace {
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 void replace_all(std::string& text, const std::string& from, const std::string& to) {
   for (std::size_t at = text.find(from); at != std::string::npos;
@@ -30,9 +18,13 @@ void replace_all(std::string& text, const std::string& from, const std::string& 
   }
 }
 
-std::string mm(double metres) { return fixed(metres * 1000, 1); }
+std::string mm(double metres) {
+  return fixed(metres * 1000, 1);
+}
 
-std::string yes_no(bool value) { return value ? "yes" : "<b class=\"fail\">no</b>"; }
+std::string yes_no(bool value) {
+  return value ? "yes" : "<b class=\"fail\">no</b>";
+}
 
 constexpr const char* kStyle = R"(
 body { font-family: "DejaVu Sans", sans-serif; margin: 2em auto; max-width: 1250px; color: #222; }
@@ -45,7 +37,8 @@ figure { margin: 1em 0; } figcaption { font-size: 0.9em; color: #555; }
 svg { max-width: 100%; height: auto; } .meta { color: #555; font-size: 0.9em; }
 )";
 
-void verdict_table(std::ostringstream& html, const std::vector<metrics::RequirementResult>& results) {
+void verdict_table(std::ostringstream& html,
+                   const std::vector<metrics::RequirementResult>& results) {
   html << "<section id=\"verdicts\"><h2>Requirements</h2>\n";
   if (results.empty()) {
     html << "<p>No requirements: the rig names none and none were given.</p></section>\n";
@@ -59,12 +52,13 @@ void verdict_table(std::ostringstream& html, const std::vector<metrics::Requirem
     const std::string css = result.verdict == metrics::Verdict::pass   ? "pass"
                             : result.verdict == metrics::Verdict::fail ? "fail"
                                                                        : "skip";
-    html << "<tr><td class=\"text\">" << escaped(result.id + " " + result.title)
-         << "</td><td class=\"text " << css << "\">" << escaped(verdict) << "</td><td class=\"text\">"
-         << escaped(measured_text(result)) << "</td><td class=\"text\">"
-         << escaped(model::join(result.limiting_mounts)) << "</td><td class=\"text\">"
-         << escaped(model::to_string(result.annotated_where())) << "</td><td class=\"text\">"
-         << escaped(result.explanation) << "</td></tr>\n";
+    html << "<tr><td class=\"text\">" << model::xml_escaped(result.id + " " + result.title)
+         << "</td><td class=\"text " << css << "\">" << model::xml_escaped(verdict)
+         << "</td><td class=\"text\">" << model::xml_escaped(measured_text(result))
+         << "</td><td class=\"text\">" << model::xml_escaped(model::join(result.limiting_mounts))
+         << "</td><td class=\"text\">"
+         << model::xml_escaped(model::to_string(result.annotated_where()))
+         << "</td><td class=\"text\">" << model::xml_escaped(result.explanation) << "</td></tr>\n";
   }
   html << "</table></section>\n";
 }
@@ -76,8 +70,9 @@ void metrics_table(std::ostringstream& html, const metrics::ResultantMetrics& me
           "<th>indoor</th><th>sun</th><th>B [MB/s]</th><th>U<sub>p</sub> [cores]</th>"
           "<th>price [USD]</th></tr>\n";
   for (const metrics::MountMetrics& mount : metrics.mounts) {
-    html << "<tr><td class=\"text\">" << escaped(mount.mount_id) << "</td><td class=\"text\">"
-         << escaped(mount.sensor_id + " / " + mount.mode_id) << "</td><td>"
+    html << "<tr><td class=\"text\">" << model::xml_escaped(mount.mount_id)
+         << "</td><td class=\"text\">"
+         << model::xml_escaped(mount.sensor_id + " / " + mount.mode_id) << "</td><td>"
          << fixed(mount.distance, 2) << "</td><td>" << fixed(mount.frequency, 1) << "</td><td>"
          << mm(mount.point_spacing) << "</td><td>" << mm(mount.noise) << "</td><td>"
          << yes_no(mount.light.dark) << "</td><td>" << yes_no(mount.light.indoor) << "</td><td>"
@@ -91,8 +86,8 @@ void metrics_table(std::ostringstream& html, const metrics::ResultantMetrics& me
           "<th class=\"text\">limiting sensors</th></tr>\n";
   const auto row = [&](const std::string& name, const std::string& value,
                        const std::vector<std::string>& mounts) {
-    html << "<tr><td class=\"text\">" << name << "</td><td>" << escaped(value)
-         << "</td><td class=\"text\">" << escaped(model::join(mounts)) << "</td></tr>\n";
+    html << "<tr><td class=\"text\">" << name << "</td><td>" << model::xml_escaped(value)
+         << "</td><td class=\"text\">" << model::xml_escaped(model::join(mounts)) << "</td></tr>\n";
   };
   row("F, slowest", fixed(metrics.frequency.value, 1) + " Hz", metrics.frequency.mounts);
   row("R, coarsest", mm(metrics.point_spacing.value) + " mm", metrics.point_spacing.mounts);
@@ -108,11 +103,12 @@ void cost_table(std::ostringstream& html, const metrics::ResultantMetrics& metri
   html << "<section id=\"cost\"><h2>Cost model inputs (paper 1, eqs. 1-7)</h2>\n<table>"
           "<tr><th class=\"text\">item</th><th>value</th></tr>\n";
   for (const metrics::MountMetrics& mount : metrics.mounts) {
-    html << "<tr><td class=\"text\">" << escaped(mount.mount_id + ": " + mount.sensor_id)
+    html << "<tr><td class=\"text\">" << model::xml_escaped(mount.mount_id + ": " + mount.sensor_id)
          << "</td><td>" << fixed(mount.price, 0) << " USD"
          << (mount.price_basis == model::Basis::estimate ? " (estimate)" : "") << "</td></tr>\n";
   }
-  html << "<tr><th class=\"text\">sensor cost C<sub>s</sub></th><th>" << fixed(metrics.sensor_cost, 0)
+  html << "<tr><th class=\"text\">sensor cost C<sub>s</sub></th><th>"
+       << fixed(metrics.sensor_cost, 0)
        << " USD</th></tr>\n<tr><td class=\"text\">bandwidth B</td><td>"
        << fixed(metrics.bandwidth / 1e6, 2) << " MB/s (" << fixed(metrics.bandwidth * 8 / 1e6, 1)
        << " Mbit/s)</td></tr>\n<tr><td class=\"text\">driver CPU load U<sub>p</sub></td><td>"
@@ -130,7 +126,7 @@ void n_minus_one_table(std::ostringstream& html, const metrics::RigCoverage& cov
        << fixed(coverage.floor.min * 100, 1) << "</td><td>" << fixed(coverage.floor.mean * 100, 1)
        << "</td></tr>\n";
   for (const metrics::MountLoss& loss : coverage.without_each) {
-    html << "<tr><td class=\"text\">" << escaped(loss.mount_id) << "</td><td>"
+    html << "<tr><td class=\"text\">" << model::xml_escaped(loss.mount_id) << "</td><td>"
          << fixed(loss.complete.min * 100, 1) << "</td><td>" << fixed(loss.complete.mean * 100, 1)
          << "</td><td>" << fixed(loss.floor.min * 100, 1) << "</td><td>"
          << fixed(loss.floor.mean * 100, 1) << "</td></tr>\n";
@@ -139,6 +135,30 @@ void n_minus_one_table(std::ostringstream& html, const metrics::RigCoverage& cov
 }
 
 }  // namespace
+
+std::vector<ReportFigure> coverage_figures(const std::string& folder,
+                                           const std::vector<double>& angles_deg) {
+  std::vector<ReportFigure> figures;
+  const auto add = [&](const std::string& id, const std::string& file, const std::string& caption) {
+    std::ifstream stream(folder + "/" + file, std::ios::binary);
+    std::stringstream bytes;
+    bytes << stream.rdbuf();
+    figures.push_back({id, caption, bytes.str()});
+  };
+  add("sc-cartesian", "sc_cartesian.svg",
+      "Spatial Coverage at every azimuth: SC complete and floor, requirement sectors shaded, "
+      "and per sensor the angles where it sees the cross-section.");
+  add("sc-polar", "sc_polar.svg", "The same seen from above, forward up.");
+  for (const double degrees : angles_deg) {
+    const std::string name = model::format_number(degrees);
+    add("section-" + name, "section_" + name + ".svg",
+        "Cross-section at theta = " + name + " deg: each sensor's region, the body, the floor seen.");
+  }
+  add("view-isometric", "view_isometric.svg",
+      "What each sensor sees to d, cut where the body blocks it (isometric).");
+  add("view-top", "view_top.svg", "The same from above.");
+  return figures;
+}
 
 std::string inline_svg(const std::string& svg, const std::string& prefix) {
   std::string text = svg;
@@ -153,13 +173,17 @@ std::string html_report(const ReportContent& content) {
   const RigInputs& inputs = *content.inputs;
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
-       << escaped("rigdesign report: " + inputs.rig.name) << "</title>\n<style>" << kStyle
-       << "</style>\n</head>\n<body>\n<h1>" << escaped(inputs.rig.name) << "</h1>\n<p class=\"meta\">"
-       << "rig " << escaped(inputs.rig.file) << "; sensors from " << escaped(inputs.library.file);
-  if (inputs.requirements) html << "; requirements " << escaped(inputs.requirements->file);
-  html << "; body r = " << model::format_number(inputs.rig.body.radius) << " m, h = "
-       << model::format_number(inputs.rig.body.height) << " m; distance of interest d = "
-       << model::format_number(inputs.rig.distance_of_interest) << " m. Written by rigdesign "
+       << model::xml_escaped("rigdesign report: " + inputs.rig.name) << "</title>\n<style>"
+       << kStyle << "</style>\n</head>\n<body>\n<h1>" << model::xml_escaped(inputs.rig.name)
+       << "</h1>\n<p class=\"meta\">"
+       << "rig " << model::xml_escaped(inputs.rig.file) << "; sensors from "
+       << model::xml_escaped(inputs.library.file);
+  if (inputs.requirements)
+    html << "; requirements " << model::xml_escaped(inputs.requirements->file);
+  html << "; body r = " << model::format_number(inputs.rig.body.radius)
+       << " m, h = " << model::format_number(inputs.rig.body.height)
+       << " m; distance of interest d = " << model::format_number(inputs.rig.distance_of_interest)
+       << " m. Written by rigdesign "
        << "0.1.0.</p>\n";
   std::size_t failed = 0;
   for (const metrics::RequirementResult& result : content.results) {
@@ -172,13 +196,17 @@ std::string html_report(const ReportContent& content) {
        << "</b>; SC complete min " << fixed(content.coverage->complete.min * 100, 1) << " %, mean "
        << fixed(content.coverage->complete.mean * 100, 1) << " %.</p>\n";
   verdict_table(html, content.results);
+  for (const ReportSection& section : content.sections) {
+    html << "<section id=\"" << section.id << "\"><h2>" << model::xml_escaped(section.title)
+         << "</h2>\n" << section.html << "</section>\n";
+  }
   metrics_table(html, *content.metrics);
   html << "<section id=\"figures\"><h2>Coverage pictures</h2>\n";
   for (std::size_t i = 0; i < content.figures.size(); ++i) {
     const ReportFigure& figure = content.figures[i];
     html << "<figure id=\"" << figure.id << "\">\n"
          << inline_svg(figure.svg, "f" + std::to_string(i) + "-") << "\n<figcaption>"
-         << escaped(figure.caption) << "</figcaption></figure>\n";
+         << model::xml_escaped(figure.caption) << "</figcaption></figure>\n";
   }
   html << "</section>\n";
   n_minus_one_table(html, *content.coverage);

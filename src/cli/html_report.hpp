@@ -18,13 +18,26 @@ struct ReportFigure {
   std::string svg;
 };
 
+/// A section of its own, e.g. a selection's trace: HTML the caller built (escaped already).
+struct ReportSection {
+  std::string id;
+  std::string title;
+  std::string html;
+};
+
 struct ReportContent {
   const RigInputs* inputs = nullptr;
   const metrics::ResultantMetrics* metrics = nullptr;
   const metrics::RigCoverage* coverage = nullptr;
   std::vector<metrics::RequirementResult> results;
   std::vector<ReportFigure> figures;
+  std::vector<ReportSection> sections;  ///< after the verdicts
 };
+
+/// The coverage pictures write_coverage_files put in `folder` (sections at `angles_deg`), read
+/// back for the page, with their captions.
+std::vector<ReportFigure> coverage_figures(const std::string& folder,
+                                           const std::vector<double>& angles_deg);
 
 std::string html_report(const ReportContent& content);
 

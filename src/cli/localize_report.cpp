@@ -6,8 +6,8 @@
 #include <ostream>
 
 #include "app.hpp"
-#include "progress_line.hpp"
 #include "command.hpp"
+#include "progress_line.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
 #include "rigdesign/localize/accuracy_table.hpp"
 #include "rigdesign/localize/co2_log.hpp"

@@ -12,7 +12,6 @@
 #include "inputs.hpp"
 #include "json_report.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
-#include "rigdesign/metrics/coverage_findings.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/coverage_findings.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
@@ -187,8 +186,7 @@ void print_text(const RigInputs& inputs, const metrics::ResultantMetrics& metric
   if (metrics.any_estimate) out << "  * estimate, not a datasheet or measured value\n";
   print_coverage(coverage, out);
   for (const model::Diagnostic& warning : inputs.warnings) out << warning.message() << '\n';
-  for (const model::Diagnostic& finding :
-       metrics::coverage_findings(rig, metrics, coverage)) {
+  for (const model::Diagnostic& finding : metrics::coverage_findings(rig, metrics, coverage)) {
     out << finding.message() << '\n';
   }
   if (results.empty()) return;
@@ -258,7 +256,8 @@ Command setup_metrics(CLI::App& parent) {
   auto options = std::make_shared<MetricsOptions>();
   CLI::App* app = parent.add_subcommand(
       "metrics", "Per-sensor and resultant F, R, N, L, bandwidth, driver CPU load and cost");
-  app->add_option("rig,--rig", options->rig, "Rig file (rigs/*.yaml; positional or --rig)")->required();
+  app->add_option("rig,--rig", options->rig, "Rig file (rigs/*.yaml; positional or --rig)")
+      ->required();
   app->add_option("--requirements", options->requirements,
                   "Application requirements R1-R8 to judge the rig against (default: the "
                   "file the rig names)");

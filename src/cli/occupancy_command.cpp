@@ -12,13 +12,13 @@
 #include <sstream>
 
 #include "app.hpp"
-#include "progress_line.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
-#include "rigdesign/io/output_folder.hpp"
+#include "progress_line.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/costmap_params_loader.hpp"
+#include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/statistics.hpp"
 #include "rigdesign/occupancy/occupancy_evaluation.hpp"
@@ -308,8 +308,9 @@ Command setup_occupancy(CLI::App& parent) {
   auto options = std::make_shared<OccupancyOptions>();
   CLI::App* app =
       parent.add_subcommand("occupancy", "Score occupancy mapping on the dynamic cell (paper 3)");
-  app->add_option("rig,--rig", options->rig,
-                  "Rig of the cell's fixed sensors (its robot frame is the cell frame; positional or --rig)")
+  app->add_option(
+         "rig,--rig", options->rig,
+         "Rig of the cell's fixed sensors (its robot frame is the cell frame; positional or --rig)")
       ->required();
   app->add_option("--scene", options->scene, "Scene with a moving person (default cell)");
   app->add_option("--rate", options->rate,
@@ -342,8 +343,7 @@ Command setup_occupancy(CLI::App& parent) {
                   "Folder for occupancy_frames.csv, occupancy_summary.json, occupancy_pareto.png "
                   "(default: none, the table on standard output only)");
   app->add_flag("--json", options->json, "Print JSON");
-  return {app,
-          [options](std::ostream& out, std::ostream& err) {
+  return {app, [options](std::ostream& out, std::ostream& err) {
             return run_occupancy(*options, out, err);
           }};
 }

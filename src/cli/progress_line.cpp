@@ -36,7 +36,9 @@ ProgressLine::ProgressLine(std::ostream& err, std::string task, std::string unit
   last_shown_ = started_;
 }
 
-ProgressLine::~ProgressLine() { clear(); }
+ProgressLine::~ProgressLine() {
+  clear();
+}
 
 void ProgressLine::clear() {
   if (mode_ == Mode::terminal && shown_) {
@@ -46,7 +48,9 @@ void ProgressLine::clear() {
   }
 }
 
-void ProgressLine::retitle(std::string task) { task_ = std::move(task); }
+void ProgressLine::retitle(std::string task) {
+  task_ = std::move(task);
+}
 
 std::string ProgressLine::line(const std::string& count, double share) const {
   const double elapsed =
@@ -64,8 +68,8 @@ std::string ProgressLine::line(const std::string& count, double share) const {
 void ProgressLine::update(double done, double total) {
   const double share = total > 0 ? done / total : 1.0;
   if (mode_ == Mode::off) return;
-  show(model::format_number(done, 10) + "/" + model::format_number(total, 10) + " " + unit_,
-       share, done >= total);
+  show(model::format_number(done, 10) + "/" + model::format_number(total, 10) + " " + unit_, share,
+       done >= total);
 }
 
 void ProgressLine::update_share(double share, const std::string& detail) {

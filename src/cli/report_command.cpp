@@ -3,10 +3,8 @@
 // sensors, SC plots, cross-sections, 3D views, N-1 table, costs), with the pictures beside it.
 #include <CLI/CLI.hpp>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <ostream>
-#include <sstream>
 
 #include "app.hpp"
 #include "command.hpp"
@@ -29,13 +27,6 @@ struct ReportOptions {
   double step_deg = 1.0;
 };
 
-std::string read_text(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::stringstream bytes;
-  bytes << file.rdbuf();
-  return bytes.str();
-}
-
 int run_report(const ReportOptions& options, std::ostream& out) {
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
   const std::string folder = options.out.empty()
@@ -49,7 +40,8 @@ int run_report(const ReportOptions& options, std::ostream& out) {
       inputs.requirements ? inputs.requirements->sectors : std::vector<model::SectorRequirement>{};
   const metrics::RigCoverage coverage =
       metrics::compute_coverage(inputs.rig, inputs.library, sectors, settings);
-  const metrics::ResultantMetrics resultant = metrics::compute_resultant(inputs.rig, inputs.library);
+  const metrics::ResultantMetrics resultant =
+      metrics::compute_resultant(inputs.rig, inputs.library);
   ReportContent content;
   content.inputs = &inputs;
   content.metrics = &resultant;
@@ -63,21 +55,7 @@ int run_report(const ReportOptions& options, std::ostream& out) {
   std::filesystem::create_directories(figures);
   const std::vector<double> angles = {0, 90, 180, 270};
   write_coverage_files(inputs.rig, inputs.library, coverage, angles, figures, true);
-  const auto add = [&](const std::string& id, const std::string& file, const std::string& caption) {
-    content.figures.push_back({id, caption, read_text(figures + "/" + file)});
-  };
-  add("sc-cartesian", "sc_cartesian.svg",
-      "Spatial Coverage at every azimuth: SC complete and floor, requirement sectors shaded, "
-      "and per sensor the angles where it sees the cross-section.");
-  add("sc-polar", "sc_polar.svg", "The same seen from above, forward up.");
-  for (const double degrees : angles) {
-    const std::string name = model::format_number(degrees);
-    add("section-" + name, "section_" + name + ".svg",
-        "Cross-section at theta = " + name + " deg: each sensor's region, the body, the floor seen.");
-  }
-  add("view-isometric", "view_isometric.svg",
-      "What each sensor sees to d, cut where the body blocks it (isometric).");
-  add("view-top", "view_top.svg", "The same from above.");
+  content.figures = coverage_figures(figures, angles);
 
   const std::string page = staged.path() + "/report.html";
   io::write_file_atomically(page, html_report(content));

@@ -13,10 +13,10 @@
 #include <ostream>
 
 #include "app.hpp"
-#include "progress_line.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
+#include "progress_line.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
@@ -108,8 +108,8 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
 
   metrics::CoverageSettings settings;
   settings.step = options.step_deg * 3.141592653589793 / 180.0;
-  ProgressLine progress(err, "select: rasterising " + model::format_number(options_total) +
-                                 " slot options", "");
+  ProgressLine progress(
+      err, "select: rasterising " + model::format_number(options_total) + " slot options", "");
   progress.update_share(0.0, "at " + model::format_number(options.step_deg) + " deg steps");
   const select::SelectionSpace space(catalog, library, settings);
   // The relaxation loop runs at most one search per policy step, plus the first.

@@ -3,19 +3,25 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "app.hpp"
 #include "coverage_files.hpp"
 #include "deployment_report.hpp"
+#include "html_report.hpp"
 #include "json_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/yaml_writers.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/staged_folder.hpp"
+#include "rigdesign/metrics/requirement_check.hpp"
+#include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/xml_text.hpp"
 #include "rigdesign/render/margin_plot.hpp"
 #include "rigdesign/render/pareto_plot.hpp"
 #include "rigdesign/select/pose_refinement.hpp"
@@ -313,9 +319,14 @@ std::vector<std::string> SelectReport::write_files(const select::RelaxationOutco
     io::prepare_output_folder(coverage_folder, "--out");
     model::Rig rig = pick->selection.rig;
     rig.file = staged.final_name(rig_file);
+    const std::vector<double> angles = {0, 45, 90, 180};
     const std::vector<std::string> pictures = write_coverage_files(
-        rig, space_.library(), pick->selection.coverage, {0, 45, 90, 180}, coverage_folder, true);
+        rig, space_.library(), pick->selection.coverage, angles, coverage_folder, true);
     written.insert(written.end(), pictures.begin(), pictures.end());
+    const std::string page = folder + "/report.html";
+    io::write_file_atomically(page, selection_page(outcome, *pick, rig, coverage_folder, angles,
+                                                   folder + "/pareto.svg"));
+    written.push_back(page);
   }
   // What the chosen rig means for its ROS 2 stack, as `rigdesign export` writes it.
   model::Rig rig = pick->selection.rig;
@@ -326,6 +337,62 @@ std::vector<std::string> SelectReport::write_files(const select::RelaxationOutco
       folder + "/deploy", rig, deployment, deployment_header(rig, &pick->requirements));
   written.insert(written.end(), deployed.begin(), deployed.end());
   return written;
+}
+
+std::string SelectReport::selection_page(const select::RelaxationOutcome& outcome,
+                                         const select::RelaxationIteration& pick,
+                                         const model::Rig& rig,
+                                         const std::string& coverage_folder,
+                                         const std::vector<double>& angles,
+                                         const std::string& pareto_svg) const {
+  RigInputs inputs;
+  inputs.rig = rig;
+  inputs.library = space_.library();
+  inputs.requirements = pick.requirements;
+  const metrics::ResultantMetrics resultant = metrics::compute_resultant(rig, inputs.library);
+  ReportContent content;
+  content.inputs = &inputs;
+  content.metrics = &resultant;
+  content.coverage = &pick.selection.coverage;
+  content.results =
+      metrics::evaluate_requirements(rig, resultant, pick.requirements, &pick.selection.coverage);
+  content.figures = coverage_figures(coverage_folder, angles);
+
+  // The trace: what each relaxation step asked and what the cheapest rig then cost.
+  std::ostringstream trace;
+  trace << "<p>Catalog " << model::xml_escaped(space_.catalog().file) << ", budget "
+        << usd(budget_) << ", policy "
+        << model::xml_escaped(policy_.file.empty() ? std::string("none") : policy_.file)
+        << ".</p>\n<table><tr><th>#</th><th class=\"text\">relaxed</th><th class=\"text\">"
+           "needs</th><th>cost [USD]</th><th class=\"text\">within budget</th><th>nodes</th>"
+           "<th>seconds</th></tr>\n";
+  for (std::size_t i = 0; i < outcome.iterations.size(); ++i) {
+    const select::RelaxationIteration& it = outcome.iterations[i];
+    trace << "<tr><td>" << i << "</td><td class=\"text\">"
+          << model::xml_escaped(it.relaxed.empty() ? "-" : it.relaxed) << "</td><td class=\"text\">"
+          << model::xml_escaped(describe(it.targets)) << "</td><td>"
+          << (it.selection.found ? fixed(it.selection.cost.total, 0) : "none") << "</td><td class=\""
+          << (it.within_budget ? "text pass\">yes" : "text fail\">no") << "</td><td>"
+          << it.selection.search.nodes << "</td><td>" << fixed(it.selection.seconds, 2)
+          << "</td></tr>\n";
+  }
+  const select::CostBreakdown& cost = pick.selection.cost;
+  trace << "</table>\n<table><tr><th class=\"text\">chosen rig's cost</th><th>USD</th></tr>\n"
+        << "<tr><td class=\"text\">sensors</td><td>" << fixed(cost.sensors, 0) << "</td></tr>\n"
+        << "<tr><td class=\"text\">transfer: " << model::xml_escaped(cost.transfer_id)
+        << "</td><td>" << fixed(cost.transfer, 0) << "</td></tr>\n<tr><td class=\"text\">CPU: "
+        << model::xml_escaped(cost.cpu_id) << "</td><td>" << fixed(cost.cpu, 0)
+        << "</td></tr>\n<tr><th class=\"text\">total</th><th>" << fixed(cost.total, 0)
+        << "</th></tr>\n</table>\n<p>" << model::xml_escaped(describe(pick.selection, space_.catalog()))
+        << "</p>\n";
+  std::ifstream pareto(pareto_svg, std::ios::binary);
+  std::stringstream pareto_text;
+  pareto_text << pareto.rdbuf();
+  trace << "<figure id=\"pareto\">" << inline_svg(pareto_text.str(), "pareto-")
+        << "<figcaption>Cost against mean coverage of the rigs meeting the requirements of the "
+           "chosen step.</figcaption></figure>\n";
+  content.sections.push_back({"selection", "Selection trace", trace.str()});
+  return html_report(content);
 }
 
 nlohmann::json SelectReport::to_json(const select::RelaxationOutcome& outcome,

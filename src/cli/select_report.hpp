@@ -31,6 +31,12 @@ class SelectReport {
                          const std::vector<std::string>& written) const;
 
  private:
+  /// The chosen rig's report page (html_report) with the relaxation trace, cost breakdown and
+  /// Pareto plot as a section of its own.
+  std::string selection_page(const select::RelaxationOutcome& outcome,
+                             const select::RelaxationIteration& pick, const model::Rig& rig,
+                             const std::string& coverage_folder, const std::vector<double>& angles,
+                             const std::string& pareto_svg) const;
   std::vector<std::string> write_margin_plots(const select::RelaxationIteration& pick,
                                               const std::string& folder) const;
 

@@ -42,7 +42,9 @@ std::string noise_text(const model::NoiseModel& noise) {
   return text.empty() ? "0" : text;
 }
 
-std::string where_text(const model::SourceLocation& where) { return model::to_string(where); }
+std::string where_text(const model::SourceLocation& where) {
+  return model::to_string(where);
+}
 
 }  // namespace
 
@@ -81,17 +83,17 @@ void print_sensor_sheet(const model::Sensor& sensor, const model::SensorLibrary&
   table.add_column("driver [cores]", TextTable::Align::right);
   for (const model::SensorMode& mode : sensor.modes) {
     const double points_per_second = mode.points_per_frame * mode.frequency;
-    table.add_row({mode.id, fov_text(mode.fov),
-                   model::format_number(mode.min_range, 3) + "-" +
-                       model::format_number(mode.max_range, 4),
-                   model::format_number(mode.frequency, 4), resolution_text(mode),
-                   fixed(mode.points_per_frame, 0), fixed(points_per_second / 1e6, 3),
-                   fixed(mode.bytes_per_frame * mode.frequency / 1e6, 2),
-                   fixed(1e3 * mode.noise.sigma(1.0), 1) + " / " +
-                       fixed(1e3 * mode.noise.sigma(mode.max_range), 1),
-                   light_text(mode.light),
-                   fixed(mode.driver_cpu.load(points_per_second), 3) +
-                       (mode.driver_cpu.basis == model::Basis::estimate ? "*" : " ")});
+    table.add_row(
+        {mode.id, fov_text(mode.fov),
+         model::format_number(mode.min_range, 3) + "-" + model::format_number(mode.max_range, 4),
+         model::format_number(mode.frequency, 4), resolution_text(mode),
+         fixed(mode.points_per_frame, 0), fixed(points_per_second / 1e6, 3),
+         fixed(mode.bytes_per_frame * mode.frequency / 1e6, 2),
+         fixed(1e3 * mode.noise.sigma(1.0), 1) + " / " +
+             fixed(1e3 * mode.noise.sigma(mode.max_range), 1),
+         light_text(mode.light),
+         fixed(mode.driver_cpu.load(points_per_second), 3) +
+             (mode.driver_cpu.basis == model::Basis::estimate ? "*" : " ")});
   }
   table.print(out, "  ");
   out << "\n  noise sigma(d) per mode: ";
@@ -122,7 +124,8 @@ nlohmann::json sensor_json(const model::Sensor& sensor, const model::SensorLibra
       fov["vertical_deg"] = model::rad_to_deg(mode.fov.vertical);
     }
     nlohmann::json resolution{model::rad_to_deg(mode.angular_resolution_h)};
-    if (mode.angular_resolution_v) resolution.push_back(model::rad_to_deg(*mode.angular_resolution_v));
+    if (mode.angular_resolution_v)
+      resolution.push_back(model::rad_to_deg(*mode.angular_resolution_v));
     modes.push_back({{"id", mode.id},
                      {"fov", fov},
                      {"range", {{"min", mode.min_range}, {"max", mode.max_range}}},

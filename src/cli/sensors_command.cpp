@@ -121,12 +121,12 @@ void print_list(const std::vector<const model::Sensor*>& sensors, const SensorsO
       rate_low = std::min(rate_low, mode->frequency);
       rate_high = std::max(rate_high, mode->frequency);
     }
-    table.add_row({sensor->id, model::to_string(sensor->technology), fov_text(modes.front()->fov),
-                   span(range_low, range_high, 1), span(rate_low, rate_high, 1),
-                   std::to_string(modes.size()) + "/" + std::to_string(sensor->modes.size()),
-                   fixed(sensor->price.usd, 0) +
-                       (sensor->price.basis == model::Basis::estimate ? "*" : " "),
-                   sensor->name});
+    table.add_row(
+        {sensor->id, model::to_string(sensor->technology), fov_text(modes.front()->fov),
+         span(range_low, range_high, 1), span(rate_low, rate_high, 1),
+         std::to_string(modes.size()) + "/" + std::to_string(sensor->modes.size()),
+         fixed(sensor->price.usd, 0) + (sensor->price.basis == model::Basis::estimate ? "*" : " "),
+         sensor->name});
   }
   table.print(out, "  ");
   out << "\n  modes: those meeting --min-range/--min-rate/--min-fov-deg, of all; "
@@ -139,9 +139,8 @@ int run_sensors(const SensorsOptions& options, std::ostream& out) {
       options.sensors.empty() ? io::bundled_sensor_library() : options.sensors);
   for (const std::string& technology : options.technologies) {
     const std::vector<std::string> names = model::names_of(model::kTechnologyNames);
-    require_option(std::find(names.begin(), names.end(), technology) != names.end(),
-                   "--technology", "unknown technology '" + technology + "'",
-                   "one of " + model::join(names));
+    require_option(std::find(names.begin(), names.end(), technology) != names.end(), "--technology",
+                   "unknown technology '" + technology + "'", "one of " + model::join(names));
   }
   if (!options.sensor.empty()) {
     const model::Sensor* sensor = library.find(options.sensor);

@@ -8,9 +8,9 @@
 #include <ostream>
 
 #include "app.hpp"
-#include "progress_line.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
+#include "progress_line.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/staged_folder.hpp"

@@ -71,7 +71,8 @@ std::vector<Setting> settings_of(const model::Rig& rig, const model::SensorLibra
 void add_limits(model::MountLimits& into, const model::MountLimits& limits) {
   if (limits.min_range) into.min_range = std::max(into.min_range.value_or(0.0), *limits.min_range);
   if (limits.max_range) {
-    into.max_range = into.max_range ? std::min(*into.max_range, *limits.max_range) : *limits.max_range;
+    into.max_range =
+        into.max_range ? std::min(*into.max_range, *limits.max_range) : *limits.max_range;
   }
   into.excluded_azimuths.insert(into.excluded_azimuths.end(), limits.excluded_azimuths.begin(),
                                 limits.excluded_azimuths.end());
@@ -91,14 +92,16 @@ model::Rig limited(const model::Rig& rig, const std::vector<const Setting*>& set
 
 // SC lost in a sector: the larger of the complete and floor minimum's drops.
 double loss(const metrics::SectorCoverage& design, const metrics::SectorCoverage& deployed) {
-  return std::max(design.complete.min - deployed.complete.min, design.floor.min - deployed.floor.min);
+  return std::max(design.complete.min - deployed.complete.min,
+                  design.floor.min - deployed.floor.min);
 }
 
 void check_sources(const model::Rig& rig, const model::Requirements& requirements,
                    const DeployedConfig& config, std::vector<metrics::RequirementResult>& results) {
   for (const model::Mount& mount : rig.mounts) {
-    const auto source = std::find_if(config.sources.begin(), config.sources.end(),
-                                     [&](const DeployedSource& s) { return s.mount_id == mount.id; });
+    const auto source =
+        std::find_if(config.sources.begin(), config.sources.end(),
+                     [&](const DeployedSource& s) { return s.mount_id == mount.id; });
     metrics::RequirementResult r = result("D1", "observation source for " + mount.id,
                                           "observation_sources", "source", mount.where);
     if (source == config.sources.end()) {
@@ -114,9 +117,9 @@ void check_sources(const model::Rig& rig, const model::Requirements& requirement
     results.push_back(r);
     const costmap::ObservationSource& s = source->source;
     const double top = rig.body.area_top();
-    metrics::RequirementResult band = result("D2", "height band of " + mount.id,
-                                             "max_obstacle_height", "max_obstacle_height",
-                                             source->max_obstacle_height_where);
+    metrics::RequirementResult band =
+        result("D2", "height band of " + mount.id, "max_obstacle_height", "max_obstacle_height",
+               source->max_obstacle_height_where);
     band.unit = "m";
     band.required = top;
     band.bound = metrics::Bound::at_least;
@@ -162,15 +165,16 @@ std::vector<metrics::RequirementResult> check_deployment(const model::Rig& rig,
   std::vector<const Setting*> all;
   for (const Setting& setting : settings) all.push_back(&setting);
   const metrics::RigCoverage own_design =
-      design ? metrics::RigCoverage{} : metrics::compute_coverage(rig, library, requirements.sectors);
+      design ? metrics::RigCoverage{}
+             : metrics::compute_coverage(rig, library, requirements.sectors);
   const std::vector<metrics::SectorCoverage>& designed = (design ? *design : own_design).sectors;
   const metrics::RigCoverage deployed =
       metrics::compute_coverage(limited(rig, all), library, requirements.sectors);
   for (std::size_t k = 0; k < requirements.sectors.size(); ++k) {
     const metrics::SectorCoverage& before = designed[k];
     const metrics::SectorCoverage& after = deployed.sectors[k];
-    metrics::RequirementResult r =
-        result("D3", "deployed coverage: " + before.sector.name, "sectors", "SC", before.sector.where);
+    metrics::RequirementResult r = result("D3", "deployed coverage: " + before.sector.name,
+                                          "sectors", "SC", before.sector.where);
     r.required = before.sector.min_complete_coverage;
     r.bound = metrics::Bound::at_least;
     r.actual = after.complete.min;

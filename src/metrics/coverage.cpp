@@ -27,9 +27,9 @@ std::vector<PlacedMount> place_mounts(const model::Rig& rig, const model::Sensor
   for (const model::Mount& mount : rig.mounts) {
     const model::SensorMode* mode = &library.resolved_mode(mount.sensor_id, mount.mode_id);
     const double distance = rig.distance_for(mount);
-    placed.push_back({&mount, mode, geometry::MountedFov(*mode, mount.T_robot_sensor, body, mount.limits),
-                      ray_spacing(distance, mode->worst_angular_resolution()),
-                      mode->noise.sigma(distance)});
+    placed.push_back(
+        {&mount, mode, geometry::MountedFov(*mode, mount.T_robot_sensor, body, mount.limits),
+         ray_spacing(distance, mode->worst_angular_resolution()), mode->noise.sigma(distance)});
   }
   return placed;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/model/xml_text.hpp"
 
 namespace rigdesign::render {
 namespace {
@@ -45,27 +46,13 @@ SvgText* svg_text_of(cairo_t* cairo) {
   return static_cast<SvgText*>(cairo_surface_get_user_data(cairo_get_target(cairo), &svg_text_key));
 }
 
-std::string xml_text(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    switch (c) {
-      case '&': escaped += "&amp;"; break;
-      case '<': escaped += "&lt;"; break;
-      case '>': escaped += "&gt;"; break;
-      case '"': escaped += "&quot;"; break;
-      default: escaped += c;
-    }
-  }
-  return escaped;
-}
-
 std::string svg_text_element(cairo_t* cairo, const std::string& text, double x, double y,
                              double size, Anchor anchor, bool bold) {
   cairo_matrix_t m;
   cairo_get_matrix(cairo, &m);
   double red = 0, green = 0, blue = 0, alpha = 1;
   cairo_pattern_get_rgba(cairo_get_source(cairo), &red, &green, &blue, &alpha);
-  const char* text_anchor = anchor == Anchor::centre ? "middle"
+  const char* text_anchor = anchor == Anchor::centre  ? "middle"
                             : anchor == Anchor::right ? "end"
                                                       : "start";
   char head[512];
@@ -73,11 +60,10 @@ std::string svg_text_element(cairo_t* cairo, const std::string& text, double x, 
                 "<text transform=\"matrix(%.6g %.6g %.6g %.6g %.6g %.6g)\" x=\"%.6g\" y=\"%.6g\" "
                 "font-family=\"DejaVu Sans, sans-serif\" font-size=\"%.6g\"%s "
                 "text-anchor=\"%s\" fill=\"rgb(%d,%d,%d)\" fill-opacity=\"%.3g\">",
-                m.xx, m.yx, m.xy, m.yy, m.x0, m.y0, x, y, size,
-                bold ? " font-weight=\"bold\"" : "", text_anchor,
-                static_cast<int>(red * 255 + 0.5), static_cast<int>(green * 255 + 0.5),
+                m.xx, m.yx, m.xy, m.yy, m.x0, m.y0, x, y, size, bold ? " font-weight=\"bold\"" : "",
+                text_anchor, static_cast<int>(red * 255 + 0.5), static_cast<int>(green * 255 + 0.5),
                 static_cast<int>(blue * 255 + 0.5), alpha);
-  return head + xml_text(text) + "</text>";
+  return head + model::xml_escaped(text) + "</text>";
 }
 
 }  // namespace

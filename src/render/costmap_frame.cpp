@@ -16,7 +16,7 @@ using render::draw_text;
 using render::draw_to_file;
 using render::set_colour;
 
-constexpr int kTitleHeight = 28;   // [px]
+constexpr int kTitleHeight = 28;        // [px]
 constexpr int kFrameAxisMargin = 48;    // [px] left of the map: y tick labels
 constexpr int kFrameBottomMargin = 40;  // [px] below the map: x tick labels
 constexpr int kFrameLegendWidth = 290;  // [px] right of the map
@@ -45,8 +45,8 @@ Rgb colour_of(std::uint8_t cost) {
 // Map axes in world metres, a scale bar, and the legend: what each colour and line means and
 // which sensor each wedge belongs to.
 void draw_frame_furniture(cairo_t* cairo, const CostmapFrame& frame,
-                          const costmap::GridWindow& window, double pixels_per_metre,
-                          int map_width, int map_height) {
+                          const costmap::GridWindow& window, double pixels_per_metre, int map_width,
+                          int map_height) {
   const double left = kFrameAxisMargin, top = kTitleHeight;
   const double right = left + map_width, bottom = top + map_height;
   const model::Vec2 origin = window.origin();
@@ -56,8 +56,8 @@ void draw_frame_furniture(cairo_t* cairo, const CostmapFrame& frame,
   cairo_stroke(cairo);
   // Ticks every whole metre (every 2 m on a wide map).
   const double step = map_width / pixels_per_metre > 12 ? 2.0 : 1.0;
-  for (double x = std::ceil(origin.x() / step) * step; (x - origin.x()) * pixels_per_metre <= map_width;
-       x += step) {
+  for (double x = std::ceil(origin.x() / step) * step;
+       (x - origin.x()) * pixels_per_metre <= map_width; x += step) {
     const double at = left + (x - origin.x()) * pixels_per_metre;
     cairo_move_to(cairo, at, bottom);
     cairo_line_to(cairo, at, bottom + 5);

@@ -229,11 +229,13 @@ void plot_sc_cartesian(const metrics::RigCoverage& coverage, const std::string& 
     }
     y += 30;
     set_colour(cairo, kInkColour);
-    draw_text(cairo, "complete: min " + model::format_number(coverage.complete.min * 100, 3) +
-                         " %, mean " + model::format_number(coverage.complete.mean * 100, 3) + " %",
+    draw_text(cairo,
+              "complete: min " + model::format_number(coverage.complete.min * 100, 3) +
+                  " %, mean " + model::format_number(coverage.complete.mean * 100, 3) + " %",
               legend_x, y, 12);
-    draw_text(cairo, "floor: min " + model::format_number(coverage.floor.min * 100, 3) +
-                         " %, mean " + model::format_number(coverage.floor.mean * 100, 3) + " %",
+    draw_text(cairo,
+              "floor: min " + model::format_number(coverage.floor.min * 100, 3) + " %, mean " +
+                  model::format_number(coverage.floor.mean * 100, 3) + " %",
               legend_x, y += 17, 12);
     draw_text(cairo, coverage.exact ? "exact path (CGAL)" : "raster path", legend_x, y += 17, 12);
   });

@@ -82,7 +82,8 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
     const double left = 70, top = 60, right = width - 150.0;
     // Room under the x axis for a note per marker left out.
     const double bottom =
-        height - 60.0 - (outside.empty() ? 0.0 : 15.0 * static_cast<double>(outside.size() + 1) + 8);
+        height - 60.0 -
+        (outside.empty() ? 0.0 : 15.0 * static_cast<double>(outside.size() + 1) + 8);
     const model::Vec2 centre = 0.5 * (low + high);
     const double span = std::max({high.x() - low.x(),
                                   (high.y() - low.y()) * (right - left) / (bottom - top), 1.0}) *
@@ -204,11 +205,13 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       const model::Vec2 middle((left + right) / 2, (top + bottom) / 2);
       const model::Vec2 towards = (target - middle).normalized();
       // Where the ray from the middle leaves the plot frame.
-      const double reach = std::min(
-          std::abs(towards.x()) > 1e-9 ? ((towards.x() > 0 ? right : left) - middle.x()) / towards.x()
-                                       : 1e300,
-          std::abs(towards.y()) > 1e-9 ? ((towards.y() > 0 ? bottom : top) - middle.y()) / towards.y()
-                                       : 1e300);
+      const double reach =
+          std::min(std::abs(towards.x()) > 1e-9
+                       ? ((towards.x() > 0 ? right : left) - middle.x()) / towards.x()
+                       : 1e300,
+                   std::abs(towards.y()) > 1e-9
+                       ? ((towards.y() > 0 ? bottom : top) - middle.y()) / towards.y()
+                       : 1e300);
       const model::Vec2 tip = middle + towards * (reach - 4);
       const model::Vec2 side(-towards.y(), towards.x());
       const model::Vec2 base = tip - towards * 16;
@@ -221,13 +224,14 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       const std::string where = "(" + model::format_number(marker->position.x(), 4) + ", " +
                                 model::format_number(marker->position.y(), 4) + ") m";
       set_colour(cairo, kInkColour);
-      draw_text(cairo, (marker->label.empty() ? std::string("marker") : marker->label) + " " + where,
+      draw_text(cairo,
+                (marker->label.empty() ? std::string("marker") : marker->label) + " " + where,
                 base.x() - towards.x() * 60, base.y() - towards.y() * 14, 11, Anchor::centre);
       note_y += 15;
-      draw_text(cairo,
-                "  " + (marker->label.empty() ? std::string("marker") : marker->label) + " at " +
-                    where,
-                left, note_y, 11);
+      draw_text(
+          cairo,
+          "  " + (marker->label.empty() ? std::string("marker") : marker->label) + " at " + where,
+          left, note_y, 11);
     }
     // Legend and colour bar.
     double ly = top + 10;

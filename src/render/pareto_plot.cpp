@@ -109,10 +109,10 @@ void plot_pareto(const std::vector<select::ExploredRig>& explored, double budget
       cairo_set_line_width(cairo, 2.5);
       cairo_stroke(cairo);
       // Over the budget (the policy ran out) the rig is the cheapest valid one, not a choice.
-      draw_text(cairo,
-                chosen_cost <= budget ? "chosen (cheapest valid rig)"
-                                      : "cheapest valid rig: OVER BUDGET",
-                x(chosen_cost) + 11, y(chosen_coverage) - 8, 13, Anchor::left, true);
+      draw_text(
+          cairo,
+          chosen_cost <= budget ? "chosen (cheapest valid rig)" : "cheapest valid rig: OVER BUDGET",
+          x(chosen_cost) + 11, y(chosen_coverage) - 8, 13, Anchor::left, true);
     }
     // Legend.
     double ly = bottom - 50;

@@ -377,8 +377,8 @@ std::pair<double, double> ViewProjection::pixel(const model::Vec3& p_robot) cons
 ViewProjection view_projection(const std::vector<ColouredMesh>& meshes,
                                const View3dSettings& settings) {
   const Eigen::AlignedBox3d content = content_box(meshes);
-  const Camera camera =
-      frame_camera(meshes, settings, framed_box(content, floor_half_width(content, settings.extent)));
+  const Camera camera = frame_camera(
+      meshes, settings, framed_box(content, floor_half_width(content, settings.extent)));
   ViewProjection projection;
   projection.R_eye_robot = camera.R_eye_robot;
   projection.centre_eye = camera.centre_eye;

@@ -129,7 +129,8 @@ TEST_CASE("check --format junit gives each case its file, line, time, measured v
   CheckFolder files(with("max_speed: 1.0", "max_speed: 2.0"));
   const std::string report = files.folder.path() + "/report.xml";
   CHECK(run_cli({"check", files.rig, "--format", "junit", "--output", report}).exit_code == 1);
-  const std::string script = files.folder.write("cases.py", R"py(import sys, xml.etree.ElementTree as ET
+  const std::string script =
+      files.folder.write("cases.py", R"py(import sys, xml.etree.ElementTree as ET
 root = ET.parse(sys.argv[1]).getroot()
 rig, mode_line = sys.argv[2], sys.argv[3]
 cases = {c.get("name"): c for c in root.iter("testcase")}
@@ -157,8 +158,8 @@ TEST_CASE("check --format github annotates the rig's line with the failed requir
   CheckFolder files(with("max_speed: 1.0", "max_speed: 2.0"));
   const CliResult result = run_cli({"check", files.rig, "--format", "github"});
   CHECK(result.exit_code == 1);
-  const std::string expected = "::error file=" + files.rig + ",line=" +
-                               std::to_string(line_of(kRig, "mode: s10")) +
+  const std::string expected = "::error file=" + files.rig +
+                               ",line=" + std::to_string(line_of(kRig, "mode: s10")) +
                                ",col=11,title=rigdesign R5 robot speed::F = 10 Hz, required >= "
                                "20 Hz, margin -10 Hz (-50 %25)";
   INFO(result.out);

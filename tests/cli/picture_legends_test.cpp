@@ -28,9 +28,8 @@ std::string svg_words(const std::string& path) {
     const std::size_t end = svg.find("</text>", start);
     REQUIRE(end != std::string::npos);
     std::string text = svg.substr(start, end - start);
-    for (const auto& [entity, character] :
-         {std::pair{"&lt;", "<"}, std::pair{"&gt;", ">"}, std::pair{"&quot;", "\""},
-          std::pair{"&amp;", "&"}}) {
+    for (const auto& [entity, character] : {std::pair{"&lt;", "<"}, std::pair{"&gt;", ">"},
+                                            std::pair{"&quot;", "\""}, std::pair{"&amp;", "&"}}) {
       for (std::size_t at = text.find(entity); at != std::string::npos; at = text.find(entity))
         text.replace(at, std::string(entity).size(), character);
     }
@@ -89,8 +88,8 @@ TEST_CASE("a costmap frame has a cost legend, axes, a scale bar and names every 
   const std::string rig = source_path("rigs/ur_cleaner.yaml");
   TempFolder folder;
   const std::string out = folder.path() + "/cm";
-  const CliResult result = run_cli({"costmap", rig, "--scenario", "wall_following", "--out", out,
-                                    "--frame-every", "0"});
+  const CliResult result =
+      run_cli({"costmap", rig, "--scenario", "wall_following", "--out", out, "--frame-every", "0"});
   REQUIRE(result.exit_code == 0);
   // The final frame as SVG: the same drawing routine, chosen by the extension.
   REQUIRE(std::ifstream(out + "/final.png").good());

@@ -32,7 +32,8 @@ int chromium(const std::string& profile, const std::string& action, const std::s
       "chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
       "--disable-background-networking --disable-component-update --disable-sync "
       "--hide-scrollbars --window-size=1280,2400 --enable-logging=stderr --v=0 "
-      "--user-data-dir=" + profile + " " + action + " file://" + page + " >" + out + " 2>" + log;
+      "--user-data-dir=" +
+      profile + " " + action + " file://" + page + " >" + out + " 2>" + log;
   return std::system(command.c_str());
 }
 
@@ -58,8 +59,9 @@ TEST_CASE("report writes one self-contained page that headless Chromium renders"
   const std::string log = folder.path() + "/chromium.log";
   REQUIRE(chromium(folder.path() + "/profile-dom", "--dump-dom", page, dom, log) == 0);
   const std::string rendered = report_file_text(dom);
-  for (const char* id : {"id=\"verdicts\"", "id=\"metrics\"", "id=\"sc-cartesian\"", "id=\"sc-polar\"",
-                         "id=\"section-0\"", "id=\"view-isometric\"", "id=\"n-1\"", "id=\"cost\""}) {
+  for (const char* id :
+       {"id=\"verdicts\"", "id=\"metrics\"", "id=\"sc-cartesian\"", "id=\"sc-polar\"",
+        "id=\"section-0\"", "id=\"view-isometric\"", "id=\"n-1\"", "id=\"cost\""}) {
     INFO(id);
     CHECK(rendered.find(id) != std::string::npos);
   }
@@ -94,7 +96,8 @@ TEST_CASE("report writes one self-contained page that headless Chromium renders"
       const int r = (pixel >> 16) & 255, g = (pixel >> 8) & 255, b = pixel & 255;
       inked += (r + g + b < 600) ? 1 : 0;
       // The SC complete curve's blue, (0.12, 0.35, 0.75) x 255.
-      curve_blue += (std::abs(r - 31) < 25 && std::abs(g - 89) < 25 && std::abs(b - 191) < 25) ? 1 : 0;
+      curve_blue +=
+          (std::abs(r - 31) < 25 && std::abs(g - 89) < 25 && std::abs(b - 191) < 25) ? 1 : 0;
     }
   }
   cairo_surface_destroy(surface);

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
@@ -174,4 +176,27 @@ TEST_CASE("select: bad input is exit 2 with the file and line") {
     CHECK(result.err.find("slots[1].allows") != std::string::npos);
     CHECK(result.err.find("allows no candidate sensor") != std::string::npos);
   }
+}
+
+TEST_CASE("select --out writes the chosen rig's report page with the relaxation trace") {
+  const SmallSetup setup;
+  const std::string out = setup.folder.path() + "/rendered";
+  const CliResult result =
+      run_cli({"select", "--catalog", setup.catalog, "--requirements", setup.requirements,
+               "--policy", setup.policy, "--budget", "100000", "--step", "10", "--out", out});
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  std::ifstream file(out + "/report.html");
+  REQUIRE(file.good());
+  std::stringstream bytes;
+  bytes << file.rdbuf();
+  const std::string page = bytes.str();
+  CHECK(page.find("id=\"selection\"") != std::string::npos);
+  CHECK(page.find("Selection trace") != std::string::npos);
+  CHECK(page.find("id=\"pareto\"") != std::string::npos);
+  CHECK(page.find("id=\"sc-cartesian\"") != std::string::npos);
+  // 1 m/s at 5 cm per frame needs 20 Hz: only the D435 (30 Hz) is fast enough; the pico
+  // flexx runs at 15 Hz and the RPLIDAR at 10 Hz.
+  CHECK(page.find("realsense_d435") != std::string::npos);
+  CHECK(page.find("onboard") != std::string::npos);       // the transfer item
 }

@@ -13,7 +13,9 @@ using namespace rigdesign::test;
 
 namespace {
 
-YAML::Node bundled_library() { return YAML::LoadFile(source_path("sensors.yaml")); }
+YAML::Node bundled_library() {
+  return YAML::LoadFile(source_path("sensors.yaml"));
+}
 
 // A mode field, from the mode or else the sensor's mode_defaults (the schema's inheritance).
 YAML::Node mode_field(const YAML::Node& sensor, const YAML::Node& mode, const std::string& key) {
@@ -37,11 +39,12 @@ TEST_CASE("the bundled library holds at least 35 sensors, the ones ROS robots ca
   CHECK(ids.size() >= 35);
   // Issue 18's list, in the library's ids.
   for (const char* id :
-       {"oakd_pro", "oakd_lite", "oakd_s2", "realsense_d405", "realsense_d415", "realsense_l515",
-        "zed_x", "orbbec_gemini2", "orbbec_gemini335", "rplidar_a1m8", "rplidar_s2", "rplidar_s3",
-        "robotis_lds01", "robotis_lds02", "hokuyo_uam01", "hokuyo_utm30lx", "sick_tim571",
-        "sick_microscan3", "sick_nanoscan3", "ouster_os0", "ouster_os2", "hesai_xt32",
-        "hesai_pandarqt64", "velodyne_vlp32c", "livox_avia", "livox_hap", "unitree_l1"}) {
+       {"oakd_pro",       "oakd_lite",   "oakd_s2",          "realsense_d405",   "realsense_d415",
+        "realsense_l515", "zed_x",       "orbbec_gemini2",   "orbbec_gemini335", "rplidar_a1m8",
+        "rplidar_s2",     "rplidar_s3",  "robotis_lds01",    "robotis_lds02",    "hokuyo_uam01",
+        "hokuyo_utm30lx", "sick_tim571", "sick_microscan3",  "sick_nanoscan3",   "ouster_os0",
+        "ouster_os2",     "hesai_xt32",  "hesai_pandarqt64", "velodyne_vlp32c",  "livox_avia",
+        "livox_hap",      "unitree_l1"}) {
     INFO(id);
     CHECK(ids.count(id) == 1);
   }
@@ -69,8 +72,8 @@ TEST_CASE("sensors --technology --min-range keeps exactly the sensors the file s
     }
   }
   REQUIRE(expected.size() >= 4);
-  const CliResult result = run_cli(
-      {"sensors", "--technology", "lidar_2d", "--min-range", "20", "--format", "json"});
+  const CliResult result =
+      run_cli({"sensors", "--technology", "lidar_2d", "--min-range", "20", "--format", "json"});
   REQUIRE(result.exit_code == 0);
   CHECK(ids_in(nlohmann::json::parse(result.out)) == expected);
 }

@@ -41,8 +41,8 @@ TEST_CASE("a localize plot keeps its axes on the path and lists what lies beyond
     plot.path.emplace_back(std::min(s, 10.0), 0.0, 0.0);
     plot.path.emplace_back(10.0, std::min(s, 10.0), 0.0);
   }
-  plot.markers.push_back({model::Vec3(5, 5, 0), Eigen::Matrix2d::Zero(), "truth",
-                          render::PlotMarkerKind::truth});
+  plot.markers.push_back(
+      {model::Vec3(5, 5, 0), Eigen::Matrix2d::Zero(), "truth", render::PlotMarkerKind::truth});
   plot.markers.push_back({model::Vec3(150, -3, 0), Eigen::Matrix2d::Identity(), "wild",
                           render::PlotMarkerKind::estimate});
   const test::TempFolder folder;
@@ -56,7 +56,8 @@ TEST_CASE("a localize plot keeps its axes on the path and lists what lies beyond
     listed = listed || text.find("wild at (150, -3) m") != std::string::npos;
     char* end = nullptr;
     const double value = std::strtod(text.c_str(), &end);
-    if (!text.empty() && end == text.c_str() + text.size()) largest_tick = std::max(largest_tick, value);
+    if (!text.empty() && end == text.c_str() + text.size())
+      largest_tick = std::max(largest_tick, value);
   }
   CHECK(noted);
   CHECK(listed);

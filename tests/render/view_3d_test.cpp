@@ -1,5 +1,3 @@
-#include "rigdesign/render/view_3d_figure.hpp"
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -9,10 +7,11 @@
 #include <numbers>
 #include <utility>
 
+#include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
-#include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
+#include "rigdesign/render/view_3d_figure.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;

@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "rigdesign/model/progress.hpp"
 #include "rigdesign/localize/emitter_localizer.hpp"
 #include "rigdesign/localize/kpis.hpp"
 #include "rigdesign/localize/log_generator.hpp"
+#include "rigdesign/model/progress.hpp"
 
 namespace rigdesign::localize {
 

@@ -66,8 +66,8 @@ struct MountLoss {
 struct RigCoverage {
   std::vector<std::string> mount_ids;
   std::vector<std::string> mount_sensors;  ///< per mount, its sensor id (pictures' legends)
-  double distance = 0.0;  ///< d [m]
-  double height = 0.0;    ///< h [m]
+  double distance = 0.0;                   ///< d [m]
+  double height = 0.0;                     ///< h [m]
   std::vector<AngleCoverage> angles;
   CoverageSummary complete;
   CoverageSummary floor;
@@ -89,7 +89,7 @@ RigCoverage compute_coverage(const model::Rig& rig, const model::SensorLibrary& 
 struct SectionView {
   geometry::SectionFrame frame;
   std::vector<std::string> mount_ids;
-  std::vector<std::string> mount_sensors;  ///< per mount, its sensor id
+  std::vector<std::string> mount_sensors;                 ///< per mount, its sensor id
   std::vector<std::vector<geometry::Polygon2>> polygons;  ///< per mount, (rho, z)
   std::vector<geometry::IntervalSet> floors;              ///< per mount, rho intervals at z = 0
   std::vector<model::Vec3> origins;  ///< per mount, sensor origin (robot frame)

@@ -33,5 +33,4 @@ model::TriangleMesh visible_fov_mesh(const model::SensorMode& mode,
                                      const model::Pose3& T_robot_sensor, double truncate_at,
                                      const geometry::BodyOccluder& body);
 
-
 }  // namespace rigdesign::render

@@ -3,8 +3,8 @@
 /// grid and the robot frame's axes, drawn with an orthographic projection (OSMesa, so no
 /// display is needed).
 #include <cstdint>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rigdesign/render/fov_mesh.hpp"

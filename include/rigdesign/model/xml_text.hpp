@@ -1,0 +1,11 @@
+#pragma once
+/// Text made safe inside XML and HTML: element content and attribute values alike (JUnit
+/// reports, SVG <text>, the HTML report).
+#include <string>
+
+namespace rigdesign::model {
+
+/// `text` with & < > " ' replaced by their entities.
+std::string xml_escaped(const std::string& text);
+
+}  // namespace rigdesign::model
