@@ -16,6 +16,8 @@ for rig in ur_cleaner elektron delivery_amr; do
   rm -rf "renders/$rig"
   ./build/release/src/rigdesign coverage "rigs/$rig.yaml" --out "renders/$rig" --angles 0,45,90,180
 done
+# The README shows the 3D views as PNG; their SVG twins embed the same pixels (large).
+trap 'rm -f renders/*/view_*.svg' EXIT
 # Real robots from their descriptions: the TurtleBot 4 (58 deg: behind a tower standoff, as
 # the RPLIDAR sees it) and the Jackal.
 rm -rf renders/turtlebot4 renders/jackal
@@ -25,7 +27,7 @@ rm -rf renders/turtlebot4 renders/jackal
 rm -rf renders/costmap
 ./build/release/src/rigdesign costmap --rig rigs/ur_cleaner.yaml --scenario wall_following --compare \
   --out renders/costmap
-rm -rf renders/costmap/*/frames
+rm -rf renders/costmap/*/frames renders/costmap/*/final.svg
 # Paper 3's cell: the occupancy sweep's Pareto plot and summary.
 rm -rf renders/occupancy
 ./build/release/src/rigdesign occupancy --rig rigs/cell.yaml --scene cell --out renders/occupancy

@@ -11,6 +11,7 @@
 #include "coverage_files.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
+#include "progress_line.hpp"
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -33,7 +34,7 @@ struct CoverageOptions {
   bool no_3d = false;
 };
 
-int run_coverage(const CoverageOptions& options, std::ostream& out) {
+int run_coverage(const CoverageOptions& options, std::ostream& out, std::ostream& err) {
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
   const std::string folder = options.out.empty()
                                  ? "coverage/" + std::filesystem::path(options.rig).stem().string()
@@ -45,12 +46,19 @@ int run_coverage(const CoverageOptions& options, std::ostream& out) {
   settings.exact = !options.raster;
   const std::vector<model::SectorRequirement> sectors =
       inputs.requirements ? inputs.requirements->sectors : std::vector<model::SectorRequirement>{};
+  // Two steps of similar length on the bundled rigs: the cut at every angle, the pictures.
+  ProgressLine progress(
+      err,
+      "coverage: cut at every " + model::format_number(options.step_deg) + " deg, then pictures",
+      "steps");
+  progress.update(0, 2);
   const metrics::RigCoverage coverage =
       metrics::compute_coverage(inputs.rig, inputs.library, sectors, settings);
-
+  progress.update(1, 2);
   const std::vector<std::string> written = staged.final_names(write_coverage_files(
       inputs.rig, inputs.library, coverage, options.angles_deg, staged.path(), !options.no_3d));
   staged.commit();
+  progress.clear();
 
   out << inputs.rig.name << ": SC complete min "
       << model::format_number(coverage.complete.min * 100, 3) << " %, mean "
@@ -91,7 +99,9 @@ Command setup_coverage(CLI::App& parent) {
   app->add_option("--sensors", options->sensors, "Sensor library");
   app->add_flag("--raster", options->raster, "Use the fast raster path for the curves");
   app->add_flag("--no-3d", options->no_3d, "Skip the OSMesa 3D views");
-  return {app, [options](std::ostream& out, std::ostream&) { return run_coverage(*options, out); }};
+  return {app, [options](std::ostream& out, std::ostream& err) {
+            return run_coverage(*options, out, err);
+          }};
 }
 
 }  // namespace rigdesign::cli

@@ -13,6 +13,7 @@
 #include "command.hpp"
 #include "inputs.hpp"
 #include "machine_info.hpp"
+#include "progress_line.hpp"
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/filters/pipeline_timing.hpp"
 #include "rigdesign/io/atomic_write.hpp"
@@ -76,7 +77,7 @@ void write_loads(const std::string& path, const model::FilteringLoads& measured,
 // Every mount of the rig in a synthetic scene: its frames through the pipeline, and the
 // filtering load U_f = median time per frame x frame rate (paper 1, eq. 5).
 int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pipeline,
-                        std::ostream& out) {
+                        std::ostream& out, std::ostream& err) {
   const RigInputs inputs = load_rig_inputs(options.rig, "", "");
   require_option(options.frames >= 1 && options.frames <= 10000, "--frames", "is out of range",
                  "1 to 10000");
@@ -92,9 +93,13 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
                            {"frames", options.frames},
                            {"mounts", nlohmann::json::array()}};
   double total_load = 0.0;
+  ProgressLine progress(
+      err, "filter: simulate and time " + std::to_string(options.frames) + " frame(s) each",
+      "sensors");
   model::FilteringLoads measured{
       describe_machine(), pipeline.name, options.scene, options.frames, {}, {}};
   for (std::size_t i = 0; i < inputs.rig.mounts.size(); ++i) {
+    progress.update(static_cast<double>(i), static_cast<double>(inputs.rig.mounts.size()));
     const model::Mount& mount = inputs.rig.mounts[i];
     const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
     const std::vector<model::PointCloud> clouds =
@@ -121,6 +126,7 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
                      median,
                      {}});
   }
+  progress.clear();  // the report follows on standard output
   if (!options.write_loads.empty()) write_loads(options.write_loads, measured, inputs.rig.file);
   report["total_filtering_load_cores"] = total_load;
   if (options.json) {
@@ -138,7 +144,7 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
   return kOk;
 }
 
-int run_filter(const FilterOptions& options, std::ostream& out) {
+int run_filter(const FilterOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.repeat >= 1 && options.repeat <= 10000, "--repeat", "is out of range",
                  "1 to 10000 runs");
   if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
@@ -152,7 +158,7 @@ int run_filter(const FilterOptions& options, std::ostream& out) {
   if (!options.scene.empty()) {
     require_option(!options.rig.empty() && options.clouds.empty(), "--scene",
                    "needs --rig and no --cloud", "--rig RIG --scene NAME [--frames N]");
-    return run_filter_on_scene(options, pipeline, out);
+    return run_filter_on_scene(options, pipeline, out, err);
   }
   require_option(!options.clouds.empty(), "--cloud", "is missing",
                  "--cloud FILE..., or --rig RIG --scene NAME");
@@ -298,7 +304,9 @@ Command setup_filter(CLI::App& parent) {
       "--write-loads", options->write_loads,
       "With --scene: write each sensor's measured load to this file (catalogs read it)");
   app->add_flag("--json", options->json, "Print JSON");
-  return {app, [options](std::ostream& out, std::ostream&) { return run_filter(*options, out); }};
+  return {app, [options](std::ostream& out, std::ostream& err) {
+            return run_filter(*options, out, err);
+          }};
 }
 
 }  // namespace rigdesign::cli

@@ -179,6 +179,7 @@ int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& e
                                 {"unsolved_runs", row.unsolved_runs}});
     }
   }
+  progress.clear();  // the table follows on standard output
   if (options.json) {
     out << report.dump(2) << '\n';
     return kOk;

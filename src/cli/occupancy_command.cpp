@@ -254,6 +254,7 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
   params.progress = [&progress](double done, double total) { progress.update(done, total); };
   const std::vector<occupancy::OccupancyRun> runs =
       occupancy::evaluate_occupancy(scene, sensors, mappers, params);
+  progress.clear();  // the report follows on standard output
 
   std::vector<render::ParetoPoint> points;
   nlohmann::json report = {{"rig", inputs.rig.name},

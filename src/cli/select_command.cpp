@@ -131,6 +131,7 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
         if (!options.json) report.print_iteration(iteration, out);
       },
       on_search);
+  progress.clear();
   const std::vector<std::string> written =
       staged.final_names(report.write_files(outcome, staged, !options.no_renders));
   staged.commit();
