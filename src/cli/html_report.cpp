@@ -46,7 +46,8 @@ void verdict_table(std::ostringstream& html,
   }
   html << "<table><tr><th class=\"text\">requirement</th><th class=\"text\">verdict</th>"
           "<th class=\"text\">measured, required, margin</th><th class=\"text\">set by</th>"
-          "<th class=\"text\">rig line</th><th class=\"text\">how it is judged</th></tr>\n";
+          "<th class=\"text\">where (rig line, else requirement)</th><th class=\"text\">how it is "
+          "judged</th></tr>\n";
   for (const metrics::RequirementResult& result : results) {
     const std::string verdict = to_string(result.verdict);
     const std::string css = result.verdict == metrics::Verdict::pass   ? "pass"
@@ -152,7 +153,8 @@ std::vector<ReportFigure> coverage_figures(const std::string& folder,
   for (const double degrees : angles_deg) {
     const std::string name = model::format_number(degrees);
     add("section-" + name, "section_" + name + ".svg",
-        "Cross-section at theta = " + name + " deg: each sensor's region, the body, the floor seen.");
+        "Cross-section at theta = " + name +
+            " deg: each sensor's region, the body, the floor seen.");
   }
   add("view-isometric", "view_isometric.svg",
       "What each sensor sees to d, cut where the body blocks it (isometric).");
@@ -198,7 +200,8 @@ std::string html_report(const ReportContent& content) {
   verdict_table(html, content.results);
   for (const ReportSection& section : content.sections) {
     html << "<section id=\"" << section.id << "\"><h2>" << model::xml_escaped(section.title)
-         << "</h2>\n" << section.html << "</section>\n";
+         << "</h2>\n"
+         << section.html << "</section>\n";
   }
   metrics_table(html, *content.metrics);
   html << "<section id=\"figures\"><h2>Coverage pictures</h2>\n";
