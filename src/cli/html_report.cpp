@@ -1,9 +1,9 @@
 #include "html_report.hpp"
 
-#include <fstream>
 #include <sstream>
 
 #include "file_report.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/xml_text.hpp"
 #include "text_table.hpp"
@@ -141,10 +141,7 @@ std::vector<ReportFigure> coverage_figures(const std::string& folder,
                                            const std::vector<double>& angles_deg) {
   std::vector<ReportFigure> figures;
   const auto add = [&](const std::string& id, const std::string& file, const std::string& caption) {
-    std::ifstream stream(folder + "/" + file, std::ios::binary);
-    std::stringstream bytes;
-    bytes << stream.rdbuf();
-    figures.push_back({id, caption, bytes.str()});
+    figures.push_back({id, caption, io::read_file_bytes(folder + "/" + file, "an SVG picture")});
   };
   add("sc-cartesian", "sc_cartesian.svg",
       "Spatial Coverage at every azimuth: SC complete and floor, requirement sectors shaded, "

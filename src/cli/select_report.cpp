@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <sstream>
 
 #include "app.hpp"
 #include "coverage_files.hpp"
@@ -16,6 +15,7 @@
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/yaml_writers.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
@@ -324,8 +324,8 @@ std::vector<std::string> SelectReport::write_files(const select::RelaxationOutco
         rig, space_.library(), pick->selection.coverage, angles, coverage_folder, true);
     written.insert(written.end(), pictures.begin(), pictures.end());
     const std::string page = folder + "/report.html";
-    io::write_file_atomically(page, selection_page(outcome, *pick, rig, coverage_folder, angles,
-                                                   folder + "/pareto.svg"));
+    io::write_file_atomically(
+        page, selection_page(outcome, *pick, rig, coverage_folder, angles, folder + "/pareto.svg"));
     written.push_back(page);
   }
   // What the chosen rig means for its ROS 2 stack, as `rigdesign export` writes it.
@@ -341,8 +341,7 @@ std::vector<std::string> SelectReport::write_files(const select::RelaxationOutco
 
 std::string SelectReport::selection_page(const select::RelaxationOutcome& outcome,
                                          const select::RelaxationIteration& pick,
-                                         const model::Rig& rig,
-                                         const std::string& coverage_folder,
+                                         const model::Rig& rig, const std::string& coverage_folder,
                                          const std::vector<double>& angles,
                                          const std::string& pareto_svg) const {
   RigInputs inputs;
@@ -360,8 +359,8 @@ std::string SelectReport::selection_page(const select::RelaxationOutcome& outcom
 
   // The trace: what each relaxation step asked and what the cheapest rig then cost.
   std::ostringstream trace;
-  trace << "<p>Catalog " << model::xml_escaped(space_.catalog().file) << ", budget "
-        << usd(budget_) << ", policy "
+  trace << "<p>Catalog " << model::xml_escaped(space_.catalog().file) << ", budget " << usd(budget_)
+        << ", policy "
         << model::xml_escaped(policy_.file.empty() ? std::string("none") : policy_.file)
         << ".</p>\n<table><tr><th>#</th><th class=\"text\">relaxed</th><th class=\"text\">"
            "needs</th><th>cost [USD]</th><th class=\"text\">within budget</th><th>nodes</th>"
@@ -371,24 +370,22 @@ std::string SelectReport::selection_page(const select::RelaxationOutcome& outcom
     trace << "<tr><td>" << i << "</td><td class=\"text\">"
           << model::xml_escaped(it.relaxed.empty() ? "-" : it.relaxed) << "</td><td class=\"text\">"
           << model::xml_escaped(describe(it.targets)) << "</td><td>"
-          << (it.selection.found ? fixed(it.selection.cost.total, 0) : "none") << "</td><td class=\""
-          << (it.within_budget ? "text pass\">yes" : "text fail\">no") << "</td><td>"
-          << it.selection.search.nodes << "</td><td>" << fixed(it.selection.seconds, 2)
-          << "</td></tr>\n";
+          << (it.selection.found ? fixed(it.selection.cost.total, 0) : "none")
+          << "</td><td class=\"" << (it.within_budget ? "text pass\">yes" : "text fail\">no")
+          << "</td><td>" << it.selection.search.nodes << "</td><td>"
+          << fixed(it.selection.seconds, 2) << "</td></tr>\n";
   }
   const select::CostBreakdown& cost = pick.selection.cost;
   trace << "</table>\n<table><tr><th class=\"text\">chosen rig's cost</th><th>USD</th></tr>\n"
         << "<tr><td class=\"text\">sensors</td><td>" << fixed(cost.sensors, 0) << "</td></tr>\n"
         << "<tr><td class=\"text\">transfer: " << model::xml_escaped(cost.transfer_id)
-        << "</td><td>" << fixed(cost.transfer, 0) << "</td></tr>\n<tr><td class=\"text\">CPU: "
-        << model::xml_escaped(cost.cpu_id) << "</td><td>" << fixed(cost.cpu, 0)
-        << "</td></tr>\n<tr><th class=\"text\">total</th><th>" << fixed(cost.total, 0)
-        << "</th></tr>\n</table>\n<p>" << model::xml_escaped(describe(pick.selection, space_.catalog()))
-        << "</p>\n";
-  std::ifstream pareto(pareto_svg, std::ios::binary);
-  std::stringstream pareto_text;
-  pareto_text << pareto.rdbuf();
-  trace << "<figure id=\"pareto\">" << inline_svg(pareto_text.str(), "pareto-")
+        << "</td><td>" << fixed(cost.transfer, 0)
+        << "</td></tr>\n<tr><td class=\"text\">CPU: " << model::xml_escaped(cost.cpu_id)
+        << "</td><td>" << fixed(cost.cpu, 0) << "</td></tr>\n<tr><th class=\"text\">total</th><th>"
+        << fixed(cost.total, 0) << "</th></tr>\n</table>\n<p>"
+        << model::xml_escaped(describe(pick.selection, space_.catalog())) << "</p>\n";
+  trace << "<figure id=\"pareto\">"
+        << inline_svg(io::read_file_bytes(pareto_svg, "an SVG picture"), "pareto-")
         << "<figcaption>Cost against mean coverage of the rigs meeting the requirements of the "
            "chosen step.</figcaption></figure>\n";
   content.sections.push_back({"selection", "Selection trace", trace.str()});

@@ -1,4 +1,4 @@
-#include "io/file_bytes.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 
 #include <cerrno>
 #include <cstring>

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "io/cloud/cloud_formats.hpp"
-#include "io/file_bytes.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/model/input_error.hpp"
 

@@ -8,7 +8,7 @@
 #include <map>
 #include <sstream>
 
-#include "io/file_bytes.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "io/text_encoding.hpp"
 #include "rigdesign/model/closest_name.hpp"
 #include "rigdesign/model/format_number.hpp"

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/file_bytes.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "io/text_encoding.hpp"
 #include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/input_error.hpp"

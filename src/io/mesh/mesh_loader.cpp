@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "io/file_bytes.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "io/mesh/mesh_formats.hpp"
 #include "rigdesign/model/input_error.hpp"
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/file_bytes.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "io/text_encoding.hpp"
 #include "rigdesign/model/input_error.hpp"
 

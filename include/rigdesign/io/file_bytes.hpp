@@ -1,5 +1,6 @@
 #pragma once
-// A whole file read in one go, for the binary-capable readers (clouds, meshes). Private to io.
+// A whole file read in one go: the binary-capable readers (clouds, meshes) and the pages that
+// inline written pictures.
 #include <string>
 
 namespace rigdesign::io {
