@@ -3,6 +3,7 @@
 // the KPIs against ground truth, a top-view plot, and `--seeds N --table` for the accuracy
 // study across seeds (docs/localize.md).
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -17,6 +18,7 @@
 #include "rigdesign/io/logs/ground_truth_files.hpp"
 #include "rigdesign/io/logs/log_kind.hpp"
 #include "rigdesign/io/logs/rssi_csv.hpp"
+#include "rigdesign/io/logs/walls_csv.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -66,7 +68,10 @@ int run_scenario(const LocalizeOptions& options, std::ostream& out) {
                               io::to_rssi_csv(scenario.log));
     io::write_file_atomically(options.out + "/" + stem + "_truth.csv",
                               io::to_emitter_truth_csv(scenario.truth));
-    if (!options.json) out << "  wrote " << options.out + "/" + stem + "_rssi.csv and _truth.csv\n";
+    io::write_file_atomically(options.out + "/" + stem + "_walls.csv",
+                              io::to_walls_csv(scenario.walls));
+    if (!options.json)
+      out << "  wrote " << options.out + "/" + stem + "_rssi.csv, _truth.csv and _walls.csv\n";
     write_plots(options.out, stem, plot, &report, out, options.json);
   }
   if (options.json) out << report.dump(2) << '\n';
@@ -115,6 +120,8 @@ int run_logs(const LocalizeOptions& options, std::ostream& out) {
   return kOk;
 }
 
+int run_resolved(const LocalizeOptions& options, std::ostream& out, std::ostream& err);
+
 int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.logs.empty() != options.scenario.empty(), "--log",
                  "give either --log FILE... or --scenario NAME",
@@ -122,6 +129,20 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   require_option(options.params.path_loss.exponent > 0, "--exponent", "must be positive",
                  "a path-loss exponent, e.g. 2.5");
   if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
+  LocalizeOptions resolved = options;
+  require_option(options.prefer_side.empty() || options.prefer_side == "left" ||
+                     options.prefer_side == "right",
+                 "--prefer-side", "is '" + options.prefer_side + "'", "left or right");
+  resolved.params.prefer_side =
+      options.prefer_side == "left" ? 1 : options.prefer_side == "right" ? -1 : 0;
+  if (!std::isnan(options.floor_dbm)) resolved.params.scans.floor_dbm = options.floor_dbm;
+  if (!std::isnan(options.scan_period_s))
+    resolved.params.scans.scan_period_s = options.scan_period_s;
+  if (!options.walls.empty()) resolved.params.walls = io::read_walls_csv(options.walls);
+  return run_resolved(resolved, out, err);
+}
+
+int run_resolved(const LocalizeOptions& options, std::ostream& out, std::ostream& err) {
   if (!options.scenario.empty()) {
     if (options.scenario != "all")
       localize::make_scenario(options.scenario, {});  // unknown names fail here, exit 2
@@ -163,18 +184,32 @@ Command setup_localize(CLI::App& parent) {
   app->add_option("--cutoff", options->params.path_loss.cutoff_dbm,
                   "Drop readings below this [dBm] (default -80)")
       ->check(finite_in(-150, 0, "a level in [-150, 0] dBm"));
-  app->add_flag("--fit-exponent", options->params.fit.estimate_exponent,
-                "nls also fits the path-loss exponent");
-  app->add_option("--huber", options->params.fit.huber_db,
-                  "nls Huber threshold [dB] (0: least squares)")
-      ->check(finite_in(0, 100, "0 or a threshold in (0, 100] dB"));
   app->add_option("--level-prior", options->params.fit.level_prior_db,
-                  "nls prior sigma on the 1 m level [dB] (default 4; 0: none)")
-      ->check(finite_in(0, 100, "0 or a sigma in (0, 100] dB"));
-  app->add_flag("--cutoff-model", options->params.fit.model_cutoff,
-                "nls: model the cut-off as a truncation (experimental)");
+                  "nls: prior sd of the 1 m level about --rssi-at-1m [dB]")
+      ->capture_default_str()
+      ->check(positive_up_to(100.0, "a sd in (0, 100] dB"));
+  app->add_option("--exponent-prior", options->params.fit.exponent_prior,
+                  "nls: prior sd of the exponent about --exponent (0: fixed)")
+      ->capture_default_str()
+      ->check(finite_in(0, 10, "0 or a sd in (0, 10]"));
   app->add_flag("!--no-correlation", options->params.fit.correlated_shadowing,
-                "nls: treat chunks as independent (no effective-sample weighting)");
+                "nls: treat scans as independent (no tempering for correlated shadowing)");
+  app->add_option("--floor", options->floor_dbm,
+                  "Receiver floor [dBm]: unheard scans are below it (default: the log's "
+                  "'# floor_dbm:', else its weakest reading)")
+      ->check(finite_in(-200, 0, "a level in [-200, 0] dBm"));
+  app->add_option("--scan-period", options->scan_period_s,
+                  "Seconds between scans (default: the log's '# scan_period_s:', else its median "
+                  "step)")
+      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
+  app->add_option("--walls", options->walls,
+                  "Wall map CSV (x1,y1,x2,y2,attenuation_db) the range fit models");
+  app->add_option("--prefer-side", options->prefer_side,
+                  "List ambiguous hypotheses on this side of the path first: left or right");
+  app->add_option("--checkpoints", options->kpi.checkpoints,
+                  "Running-estimate checkpoints per log for the KPIs (0: final estimate only)")
+      ->capture_default_str()
+      ->check(finite_in(0, 1000, "0 to 1000 checkpoints"));
   app->add_option("--acceptable-error", options->kpi.acceptable_error,
                   "Error counted as a detection, for C [m] (default 5)")
       ->check(positive_up_to(1000.0, "a distance in (0, 1000] m"));

@@ -38,9 +38,95 @@ nlohmann::json to_json(const localize::Hypothesis& h) {
     covariance.push_back({h.covariance(r, 0), h.covariance(r, 1), h.covariance(r, 2)});
   return {{"position", to_json(h.position)},
           {"covariance", covariance},
+          {"probability", h.probability},
+          {"side", h.side > 0 ? "left" : h.side < 0 ? "right" : "on the path"},
           {"rssi_at_1m_dbm", h.rssi_at_1m_dbm},
+          {"rssi_at_1m_sd_db", h.level_sd_db},
           {"exponent", h.exponent},
+          {"exponent_sd", h.exponent_sd},
           {"cost", h.cost}};
+}
+
+double region_area(const localize::PositionPosterior& region) {
+  double cells = 0;
+  for (const double v : region.log_density)
+    if (v >= region.threshold) cells += 1;
+  return cells * region.cell * region.cell;
+}
+
+std::string side_name(int side) {
+  return side > 0 ? "left of the path" : side < 0 ? "right of the path" : "on the path";
+}
+
+// What the range fit used and found: scans, floor, noise, exponent.
+void report_fit(const localize::EmitterEstimate& estimate, const LocalizeOptions& options,
+                nlohmann::json* item, std::ostream& out) {
+  const localize::ScanSeries& s = *estimate.scans;
+  const localize::RangeFitResult& fit = estimate.fit;
+  const int unheard = s.unheard_logged + s.unheard_interpolated;
+  (*item)["scans"] = {{"heard", s.heard},
+                      {"unheard_logged", s.unheard_logged},
+                      {"unheard_interpolated", s.unheard_interpolated},
+                      {"unheard_unplaced", s.unheard_unplaced},
+                      {"floor_dbm", s.floor_dbm},
+                      {"floor_source", to_string(s.floor_source)},
+                      {"scan_period_s", s.scan_period_s}};
+  (*item)["noise"] = {{"sigma_db", fit.sigma_db},
+                      {"correlated_share", fit.correlated_share},
+                      {"correlation_length_m", fit.correlation_length},
+                      {"effective_share", fit.effective_share}};
+  (*item)["exponent_identified"] = fit.exponent_identified;
+  (*item)["ambiguous"] = estimate.ambiguous;
+  (*item)["tie_break"] = estimate.tie_break;
+  if (options.json) return;
+  out << "  scans: " << s.heard << " heard, " << unheard << " below the floor "
+      << fixed(s.floor_dbm, 1) << " dBm (" << to_string(s.floor_source) << ")";
+  if (s.unheard_interpolated > 0)
+    out << ", of which " << s.unheard_interpolated << " placed in straight gaps of the timeline";
+  if (s.unheard_unplaced > 0)
+    out << "; " << s.unheard_unplaced
+        << " missed scans in gaps across bends left out (log them as lines with an empty rssi)";
+  out << "; scan period " << model::format_number(s.scan_period_s, 3) << " s\n";
+  out << "  noise: sigma " << fixed(fit.sigma_db, 1) << " dB per scan, "
+      << fixed(100.0 * fit.correlated_share, 0) << " % of it correlated over "
+      << fixed(fit.correlation_length, 2) << " m along the path: "
+      << fixed(fit.effective_share, 3) << " independent samples per scan\n";
+  if (!estimate.hypotheses.empty() && options.params.fit.exponent_prior > 0) {
+    const localize::Hypothesis& h = estimate.hypotheses.front();
+    if (fit.exponent_identified) {
+      out << "  exponent " << fixed(h.exponent, 2) << " +- " << fixed(h.exponent_sd, 2)
+          << " (estimated: the path's spread of distances tells it)\n";
+    } else {
+      out << "  exponent fixed at " << model::format_number(options.params.path_loss.exponent)
+          << ": not identifiable on this path (its distances to the emitter hardly vary; a "
+             "path with near and far scans would tell it)\n";
+    }
+  }
+}
+
+// The 95 % region and, for ambiguous hypotheses, why their order is not evidence.
+void report_region(const localize::EmitterEstimate& estimate, const LocalizeOptions& options,
+                   nlohmann::json* item, std::ostream& out) {
+  if (estimate.region) {
+    (*item)["region"] = {{"mass", estimate.region->credible_mass},
+                         {"area_m2", region_area(*estimate.region)}};
+  }
+  if (options.json) return;
+  if (estimate.ambiguous) {
+    const auto& h = estimate.hypotheses;
+    out << "  ambiguous: hypotheses 1 and 2 are indistinguishable (probabilities "
+        << fixed(h[0].probability, 2) << " and " << fixed(h[1].probability, 2)
+        << ", closer than a 95 % likelihood-ratio test can separate); "
+        << (estimate.tie_break.empty()
+                ? "their order is not evidence: --prefer-side left|right or --walls FILE can break "
+                  "the tie"
+                : "listed by " + estimate.tie_break)
+        << '\n';
+  }
+  if (estimate.region) {
+    out << "  " << fixed(100.0 * estimate.region->credible_mass, 0) << " % region: "
+        << fixed(region_area(*estimate.region), 1) << " m^2 (highest posterior density)\n";
+  }
 }
 
 }  // namespace
@@ -64,16 +150,19 @@ nlohmann::json report_emitter(const localize::RssiLog& log, int emitter,
                            {"collinear", g.collinear},
                            {"lateral_spread_m", g.lateral_spread},
                            {"height_spread_m", g.height_spread}}},
-                         {"twin", estimate.twin},
                          {"hypotheses", nlohmann::json::array()}};
   for (const localize::Hypothesis& h : estimate.hypotheses)
     item["hypotheses"].push_back(to_json(h));
-  if (method == localize::LocalizeMethod::nls) item["residual_sigma_db"] = estimate.sigma_db;
   if (!options.json) {
     out << "emitter " << estimate.bssid << " (" << to_string(method) << "): " << estimate.readings
-        << " readings, " << estimate.used << " at or above "
-        << model::format_number(options.params.path_loss.cutoff_dbm) << " dBm, "
-        << estimate.chunks.size() << " chunks\n";
+        << " log lines";
+    if (method == localize::LocalizeMethod::nls) {
+      out << " (every scan, heard or not)\n";
+    } else {
+      out << ", " << estimate.used << " heard at or above "
+          << model::format_number(options.params.path_loss.cutoff_dbm) << " dBm (paper 4's cut-off), "
+          << estimate.chunks.size() << " chunks\n";
+    }
     out << "  geometry: "
         << (g.dimensions == 3
                 ? "3D"
@@ -82,22 +171,37 @@ nlohmann::json report_emitter(const localize::RssiLog& log, int emitter,
                               " m): mirror image unresolved"
                         : "")
         << '\n';
-    if (estimate.hypotheses.empty()) out << "  no estimate: too few chunks or a singular system\n";
+  }
+  if (estimate.scans) report_fit(estimate, options, &item, out);
+  if (!options.json) {
+    if (estimate.hypotheses.empty())
+      out << "  no estimate: nothing heard, too few chunks or a singular system\n";
+    const bool nls = method == localize::LocalizeMethod::nls;
+    const int shown_dimensions = nls ? 2 : g.dimensions;  // the range fit is horizontal
     for (std::size_t i = 0; i < estimate.hypotheses.size(); ++i) {
       const localize::Hypothesis& h = estimate.hypotheses[i];
-      out << "  " << (i == 0 ? "estimate" : "twin    ") << ' ' << xyz(h.position, g.dimensions)
-          << " m, sigma x " << fixed(std::sqrt(h.covariance(0, 0)), 2) << " y "
+      out << "  " << (nls ? "hypothesis " + std::to_string(i + 1) : std::string("estimate"))
+          << (nls ? " (p " + fixed(h.probability, 2) + ", " + side_name(h.side) + ")"
+                  : std::string())
+          << ' ' << xyz(h.position, shown_dimensions) << " m, sd x "
+          << fixed(std::sqrt(h.covariance(0, 0)), 2) << " y "
           << fixed(std::sqrt(h.covariance(1, 1)), 2)
-          << (g.dimensions == 3 ? " z " + fixed(std::sqrt(h.covariance(2, 2)), 2) : std::string())
-          << " m, a " << fixed(h.rssi_at_1m_dbm, 1) << " dBm, n " << fixed(h.exponent, 2) << '\n';
+          << (shown_dimensions == 3 ? " z " + fixed(std::sqrt(h.covariance(2, 2)), 2)
+                                    : std::string())
+          << " m, a " << fixed(h.rssi_at_1m_dbm, 1)
+          << (nls ? " +- " + fixed(h.level_sd_db, 1) : std::string()) << " dBm, n "
+          << fixed(h.exponent, 2) << '\n';
     }
   }
+  report_region(estimate, options, &item, out);
   if (truth) {
     const localize::EmitterKpis k =
         localize::evaluate_emitter(log, emitter, *truth, estimate, options.params, options.kpi);
     item["truth"] = to_json(*truth);
     item["kpis"] = {{"error_m", k.final_error},
                     {"nearest_hypothesis_error_m", k.nearest_hypothesis_error},
+                    {"expected_error_m", k.expected_error},
+                    {"in_region", k.in_region},
                     {"running_smallest_m", k.running.smallest},
                     {"running_mean_m", k.running.mean},
                     {"running_rms_m", k.running.rms},
@@ -107,11 +211,16 @@ nlohmann::json report_emitter(const localize::RssiLog& log, int emitter,
     if (!options.json) {
       out << "  truth " << xyz(*truth, g.dimensions) << ": error " << fixed(k.final_error, 2)
           << " m (nearest hypothesis " << fixed(k.nearest_hypothesis_error, 2)
-          << " m); running estimate smallest " << fixed(k.running.smallest, 2) << ", mean "
-          << fixed(k.running.mean, 2) << ", RMS " << fixed(k.running.rms, 2) << " m; C = "
-          << (k.data_amount ? std::to_string(*k.data_amount) + " readings" : std::string("never"))
-          << " (within " << model::format_number(options.kpi.acceptable_error) << " m); "
-          << (k.detected ? "detected" : "not detected") << '\n';
+          << " m, probability-weighted " << fixed(k.expected_error, 2) << " m); "
+          << (k.in_region ? "inside" : "outside") << " the stated 95 % region";
+      if (k.running.count > 0) {
+        out << "; running estimate smallest " << fixed(k.running.smallest, 2) << ", mean "
+            << fixed(k.running.mean, 2) << ", RMS " << fixed(k.running.rms, 2) << " m; C = "
+            << (k.data_amount ? std::to_string(*k.data_amount) + " readings"
+                              : std::string("never"))
+            << " (within " << model::format_number(options.kpi.acceptable_error) << " m)";
+      }
+      out << "; " << (k.detected ? "detected" : "not detected") << '\n';
     }
   }
   if (plot) render::add_estimate_markers(estimate, truth, *plot);
@@ -138,8 +247,8 @@ int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& e
   table.add_column("scenario", TextTable::Align::left);
   table.add_column("method", TextTable::Align::left);
   for (const char* header :
-       {"runs", "mean m", "median m", "RMSE m", "nearest mean", "nearest median", "C median",
-        "C reached", "detected %", "twins", "unsolved"}) {
+       {"runs", "mean m", "median m", "RMSE m", "expected mean", "nearest mean", "in 95 %",
+        "C median", "C reached", "detected %", "ambiguous", "unsolved"}) {
     table.add_column(header, TextTable::Align::right);
   }
   nlohmann::json report = {{"seeds", options.seeds},
@@ -160,10 +269,12 @@ int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& e
     for (const localize::AccuracyRow& row : rows) {
       table.add_row({row.scenario, to_string(row.method), std::to_string(row.runs),
                      fixed(row.final_error.mean, 2), fixed(row.final_error.median, 2),
-                     fixed(row.final_error.rms, 2), fixed(row.nearest_error.mean, 2),
-                     fixed(row.nearest_error.median, 2), fixed(row.median_data_amount, 0),
-                     std::to_string(row.reached), fixed(100.0 * row.detection_share, 0),
-                     std::to_string(row.twin_runs), std::to_string(row.unsolved_runs)});
+                     fixed(row.final_error.rms, 2), fixed(row.expected_error.mean, 2),
+                     fixed(row.nearest_error.mean, 2),
+                     std::to_string(row.in_region) + "/" + std::to_string(row.runs),
+                     fixed(row.median_data_amount, 0), std::to_string(row.reached),
+                     fixed(100.0 * row.detection_share, 0), std::to_string(row.ambiguous_runs),
+                     std::to_string(row.unsolved_runs)});
       report["rows"].push_back({{"scenario", row.scenario},
                                 {"method", to_string(row.method)},
                                 {"runs", row.runs},
@@ -175,7 +286,10 @@ int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& e
                                 {"data_amount_median", row.median_data_amount},
                                 {"data_amount_reached", row.reached},
                                 {"detection_share", row.detection_share},
-                                {"twin_runs", row.twin_runs},
+                                {"expected_mean_m", row.expected_error.mean},
+                                {"in_region_runs", row.in_region},
+                                {"multiple_hypothesis_runs", row.multiple_runs},
+                                {"ambiguous_runs", row.ambiguous_runs},
                                 {"unsolved_runs", row.unsolved_runs}});
     }
   }
@@ -186,8 +300,10 @@ int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& e
   }
   out << "accuracy over seeds 1.." << options.seeds << ", shadowing "
       << model::format_number(options.scenario_params.shadowing_db) << " dB, phone level offset "
-      << model::format_number(options.scenario_params.tx_offset_db) << " dB; errors of the best "
-      << "hypothesis (nearest: of the hypothesis nearest the truth); C in readings to reach "
+      << model::format_number(options.scenario_params.tx_offset_db) << " dB; errors of the first "
+      << "hypothesis (expected: probability-weighted over the hypotheses; nearest: of the one "
+      << "nearest the truth); in 95 %: runs whose truth lies in the stated region; C in "
+      << "readings to reach "
       << model::format_number(options.kpi.acceptable_error) << " m\n";
   table.print(out, "  ");
   return kOk;

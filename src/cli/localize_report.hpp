@@ -2,6 +2,7 @@
 // The parts of `rigdesign localize`'s report: one emitter, one CO2 log, the accuracy table,
 // each as text (to `out`) or JSON, with the plot's markers.
 #include <nlohmann/json.hpp>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -24,6 +25,10 @@ struct LocalizeOptions {
   bool table = false;
   std::string method;  // empty: nls for one run, every method for --table
   std::string truth;
+  std::string walls;        // --walls FILE: a wall map the range fit models
+  std::string prefer_side;  // --prefer-side left|right
+  double floor_dbm = std::numeric_limits<double>::quiet_NaN();      // --floor, NaN: not given
+  double scan_period_s = std::numeric_limits<double>::quiet_NaN();  // --scan-period
   std::string gas_truth;
   localize::LocalizeParams params;
   localize::ScenarioParams scenario_params;

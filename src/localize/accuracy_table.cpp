@@ -11,8 +11,8 @@ std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
                                         const LocalizeParams& params, const KpiParams& kpi,
                                         const model::ProgressCallback& progress) {
   struct Collected {
-    std::vector<double> final_errors, nearest_errors, amounts;
-    int detected = 0, twins = 0, unsolved = 0;
+    std::vector<double> final_errors, nearest_errors, expected_errors, amounts;
+    int detected = 0, multiple = 0, ambiguous = 0, unsolved = 0, in_region = 0;
   };
   std::vector<Collected> collected(methods.size());
   for (int seed = 1; seed <= seeds; ++seed) {
@@ -28,10 +28,13 @@ std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
       } else {
         c.final_errors.push_back(kpis.final_error);
         c.nearest_errors.push_back(kpis.nearest_hypothesis_error);
+        c.expected_errors.push_back(kpis.expected_error);
       }
+      c.in_region += kpis.in_region ? 1 : 0;
+      c.ambiguous += estimate.ambiguous ? 1 : 0;
       if (kpis.data_amount) c.amounts.push_back(*kpis.data_amount);
       c.detected += kpis.detected ? 1 : 0;
-      c.twins += estimate.hypotheses.size() > 1 ? 1 : 0;
+      c.multiple += estimate.hypotheses.size() > 1 ? 1 : 0;
     }
     if (progress) progress(seed, seeds);
   }
@@ -44,10 +47,13 @@ std::vector<AccuracyRow> accuracy_table(const std::string& scenario, int seeds,
     row.runs = seeds;
     row.final_error = error_stats(c.final_errors);
     row.nearest_error = error_stats(c.nearest_errors);
+    row.expected_error = error_stats(c.expected_errors);
+    row.in_region = c.in_region;
     row.median_data_amount = error_stats(c.amounts).median;
     row.reached = static_cast<int>(c.amounts.size());
     row.detection_share = seeds > 0 ? static_cast<double>(c.detected) / seeds : 0.0;
-    row.twin_runs = c.twins;
+    row.multiple_runs = c.multiple;
+    row.ambiguous_runs = c.ambiguous;
     row.unsolved_runs = c.unsolved;
     rows.push_back(row);
   }

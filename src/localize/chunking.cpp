@@ -46,7 +46,8 @@ std::vector<Chunk> chunk_readings(const RssiLog& log, int emitter, const PathLos
                                   const ChunkParams& params) {
   ChunkAccumulator accumulator(params);
   for (const RssiReading& reading : log.readings) {
-    if (reading.emitter != emitter || reading.rssi_dbm < path_loss.cutoff_dbm) continue;
+    if (reading.emitter != emitter || !reading.heard || reading.rssi_dbm < path_loss.cutoff_dbm)
+      continue;
     accumulator.add(reading.position, range_from_rssi(reading.rssi_dbm, path_loss),
                     reading.rssi_dbm);
   }

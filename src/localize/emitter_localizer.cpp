@@ -1,5 +1,8 @@
 #include "rigdesign/localize/emitter_localizer.hpp"
 
+#include <Eigen/Cholesky>
+#include <algorithm>
+
 #include "rigdesign/localize/wls_multilateration.hpp"
 
 namespace rigdesign::localize {
@@ -11,6 +14,24 @@ std::string to_string(LocalizeMethod method) {
 std::optional<LocalizeMethod> parse_localize_method(const std::string& name) {
   return model::value_in(kLocalizeMethodNames, name);
 }
+
+namespace {
+
+// Ambiguous hypotheses in the preferred side's order (stable: within a side, by probability).
+void break_tie(const LocalizeParams& params, EmitterEstimate* estimate) {
+  const int prefer_side = params.prefer_side;
+  if (!estimate->ambiguous || prefer_side == 0) return;
+  auto& hypotheses = estimate->hypotheses;
+  const double strongest = hypotheses.front().probability;
+  const auto tied_end = std::find_if(hypotheses.begin(), hypotheses.end(), [&](const Hypothesis& h) {
+    return h.probability < params.fit.ambiguity_ratio * strongest;
+  });
+  std::stable_partition(hypotheses.begin(), tied_end,
+                        [&](const Hypothesis& h) { return h.side == prefer_side; });
+  estimate->tie_break = std::string("--prefer-side ") + (prefer_side > 0 ? "left" : "right");
+}
+
+}  // namespace
 
 EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod method,
                                      const LocalizeParams& params) {
@@ -33,18 +54,17 @@ EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod m
       }
       break;
     }
-    case LocalizeMethod::nls: {
-      const RangeFitResult fit =
-          fit_ranges(estimate.chunks, estimate.geometry, params.path_loss, params.fit);
-      estimate.hypotheses = fit.hypotheses;
-      estimate.twin = fit.twin;
-      estimate.sigma_db = fit.sigma_db;
-      break;
-    }
+    case LocalizeMethod::nls:
+      break;  // needs the scans, not the chunks: localize_emitter runs it
     case LocalizeMethod::map: {
       ObjectMapResult result =
           object_map(estimate.chunks, estimate.geometry, params.path_loss, params.map);
       estimate.hypotheses.push_back(result.estimate);
+      if (result.map.width > 0) {
+        estimate.region = make_posterior(result.map.origin, result.map.cell, result.map.width,
+                                         result.map.height, result.map.log_probability,
+                                         params.fit.credible_mass);
+      }
       estimate.map = std::move(result.map);
       break;
     }
@@ -56,13 +76,37 @@ EmitterEstimate localize_emitter(const RssiLog& log, int emitter, LocalizeMethod
                                  const LocalizeParams& params) {
   EmitterEstimate estimate = estimate_from_chunks(
       chunk_readings(log, emitter, params.path_loss, params.chunking), method, params);
+  if (method == LocalizeMethod::nls) {
+    estimate.scans = scan_series(log, emitter, params.scans);
+    estimate.fit = fit_ranges(*estimate.scans, params.path_loss, params.fit, params.walls);
+    estimate.hypotheses = estimate.fit.hypotheses;
+    estimate.ambiguous = estimate.fit.ambiguous;
+    estimate.region = estimate.fit.posterior;
+    estimate.fit.posterior.reset();  // kept once, in region
+    break_tie(params, &estimate);
+  }
   estimate.bssid = log.emitters.at(static_cast<std::size_t>(emitter));
   for (const RssiReading& reading : log.readings) {
     if (reading.emitter != emitter) continue;
     ++estimate.readings;
-    if (reading.rssi_dbm >= params.path_loss.cutoff_dbm) ++estimate.used;
+    if (reading.heard && reading.rssi_dbm >= params.path_loss.cutoff_dbm) ++estimate.used;
   }
   return estimate;
+}
+
+bool in_stated_region(const EmitterEstimate& estimate, const model::Vec3& point) {
+  if (estimate.region) return estimate.region->contains(point.head<2>());
+  if (estimate.hypotheses.empty()) return false;
+  const Hypothesis& h = estimate.hypotheses.front();
+  const int d = estimate.geometry.dimensions;
+  const Eigen::MatrixXd covariance = h.covariance.topLeftCorner(d, d);
+  const Eigen::VectorXd offset = (point - h.position).head(d);
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(covariance);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
+      ldlt.vectorD().minCoeff() <= 0.0)
+    return false;
+  constexpr double kChi2_95[] = {0, 3.841, 5.991, 7.815};  // by degrees of freedom
+  return offset.dot(ldlt.solve(offset)) <= kChi2_95[d];
 }
 
 }  // namespace rigdesign::localize

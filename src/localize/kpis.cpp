@@ -25,7 +25,7 @@ std::vector<std::pair<int, double>> running_errors(const RssiLog& log, int emitt
     for (const RssiReading& reading : log.readings) {
       if (reading.emitter != emitter) continue;
       ++count;
-      if (!wls.add(reading.position, reading.rssi_dbm)) continue;
+      if (!reading.heard || !wls.add(reading.position, reading.rssi_dbm)) continue;
       if (const auto solution = wls.solve(dimensions)) {
         errors.emplace_back(count, position_error(solution->position, truth, dimensions));
       }
@@ -34,19 +34,28 @@ std::vector<std::pair<int, double>> running_errors(const RssiLog& log, int emitt
   }
   const int total = final_estimate.readings;
   const int checkpoints = std::max(1, std::min(kpi.checkpoints, total));
+  if (checkpoints <= 0 || kpi.checkpoints <= 0) return errors;
   ChunkAccumulator accumulator(params.chunking);
   int count = 0, next = 1;
-  for (const RssiReading& reading : log.readings) {
+  for (std::size_t line = 0; line < log.readings.size(); ++line) {
+    const RssiReading& reading = log.readings[line];
     if (reading.emitter != emitter) continue;
     ++count;
-    if (reading.rssi_dbm >= params.path_loss.cutoff_dbm) {
+    if (reading.heard && reading.rssi_dbm >= params.path_loss.cutoff_dbm) {
       accumulator.add(reading.position, range_from_rssi(reading.rssi_dbm, params.path_loss),
                       reading.rssi_dbm);
     }
     if (count * checkpoints < next * total) continue;
     ++next;
-    const EmitterEstimate estimate =
-        estimate_from_chunks(accumulator.chunks(), final_estimate.method, params);
+    EmitterEstimate estimate;
+    if (final_estimate.method == LocalizeMethod::nls) {
+      // The range fit reads scans, heard or not: the log as it stood after this reading.
+      RssiLog prefix = log;
+      prefix.readings.resize(line + 1);
+      estimate = localize_emitter(prefix, emitter, LocalizeMethod::nls, params);
+    } else {
+      estimate = estimate_from_chunks(accumulator.chunks(), final_estimate.method, params);
+    }
     if (!estimate.hypotheses.empty()) {
       errors.emplace_back(count,
                           position_error(estimate.hypotheses.front().position, truth, dimensions));
@@ -97,16 +106,22 @@ EmitterKpis evaluate_emitter(const RssiLog& log, int emitter, const model::Vec3&
                          ? static_cast<double>(final_estimate.used) / final_estimate.readings
                          : 0.0;
   if (final_estimate.hypotheses.empty()) {
-    kpis.final_error = kpis.nearest_hypothesis_error = std::numeric_limits<double>::infinity();
+    kpis.final_error = kpis.nearest_hypothesis_error = kpis.expected_error =
+        std::numeric_limits<double>::infinity();
   } else {
     kpis.final_error =
         position_error(final_estimate.hypotheses.front().position, truth, dimensions);
     kpis.nearest_hypothesis_error = kpis.final_error;
+    double weighted = 0.0, probability = 0.0;
     for (const Hypothesis& h : final_estimate.hypotheses) {
-      kpis.nearest_hypothesis_error =
-          std::min(kpis.nearest_hypothesis_error, position_error(h.position, truth, dimensions));
+      const double error = position_error(h.position, truth, dimensions);
+      kpis.nearest_hypothesis_error = std::min(kpis.nearest_hypothesis_error, error);
+      weighted += h.probability * error;
+      probability += h.probability;
     }
+    kpis.expected_error = probability > 0 ? weighted / probability : kpis.final_error;
   }
+  kpis.in_region = in_stated_region(final_estimate, truth);
   kpis.detected = kpis.final_error <= kpi.acceptable_error;
   const auto errors = running_errors(log, emitter, truth, final_estimate, params, kpi);
   std::vector<double> values;

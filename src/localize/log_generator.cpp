@@ -73,33 +73,11 @@ Layout hallway_layout() {
   return layout;
 }
 
-bool segments_cross(const model::Vec2& p, const model::Vec2& p2, const model::Vec2& q,
-                    const model::Vec2& q2) {
-  const auto cross = [](const model::Vec2& a, const model::Vec2& b) {
-    return a.x() * b.y() - a.y() * b.x();
-  };
-  const model::Vec2 r = p2 - p, s = q2 - q;
-  const double denominator = cross(r, s);
-  if (std::abs(denominator) < 1e-12) return false;  // parallel: grazing a wall costs nothing
-  const double t = cross(q - p, s) / denominator;
-  const double u = cross(q - p, r) / denominator;
-  return t >= 0 && t <= 1 && u >= 0 && u <= 1;
-}
-
 }  // namespace
 
 const std::vector<std::string>& scenario_names() {
   static const std::vector<std::string> names = {"loop", "corner", "room", "hallway"};
   return names;
-}
-
-double wall_loss_db(const std::vector<WallSegment>& walls, const model::Vec3& from,
-                    const model::Vec3& to) {
-  double loss = 0.0;
-  for (const WallSegment& wall : walls) {
-    if (segments_cross(from.head<2>(), to.head<2>(), wall.a, wall.b)) loss += wall.attenuation_db;
-  }
-  return loss;
 }
 
 Scenario make_scenario(const std::string& name, const ScenarioParams& params) {
@@ -126,6 +104,8 @@ Scenario make_scenario(const std::string& name, const ScenarioParams& params) {
   scenario.truth.push_back({kPhoneBssid, phone});
   scenario.log.source = "scenario " + name + " seed " + std::to_string(params.seed);
   scenario.log.emitters.push_back(kPhoneBssid);
+  scenario.log.floor_dbm = params.sensitivity_dbm;
+  scenario.log.scan_period_s = 1.0 / params.scan_rate;
   for (const model::Vec2& w : layout.waypoints)
     scenario.path.emplace_back(w.x(), w.y(), params.antenna_height);
 
@@ -149,10 +129,10 @@ Scenario make_scenario(const std::string& name, const ScenarioParams& params) {
       model::Vec3 logged = robot;
       logged.x() += params.position_noise * normal(random);
       logged.y() += params.position_noise * normal(random);
-      if (rssi >= params.sensitivity_dbm) {
-        // Radios report whole dBm.
-        scenario.log.readings.push_back({t, logged, 0, std::min(std::round(rssi), 0.0)});
-      }
+      // Radios report whole dBm; a scan below the floor is logged without a value.
+      const bool heard = rssi >= params.sensitivity_dbm;
+      scenario.log.readings.push_back(
+          {t, logged, 0, heard ? std::min(std::round(rssi), 0.0) : 0.0, heard});
       t += 1.0 / params.scan_rate;
     }
   }

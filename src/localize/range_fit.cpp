@@ -1,242 +1,273 @@
 #include "rigdesign/localize/range_fit.hpp"
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
-#include <numbers>
+#include <limits>
 
-#include "db_domain_model.hpp"
-#include "rigdesign/localize/wls_multilateration.hpp"
+#include "censored_likelihood.hpp"
+#include "posterior_search.hpp"
+#include "rigdesign/model/statistics.hpp"
+#include "shadowing_correlation.hpp"
 
 namespace rigdesign::localize {
 namespace {
 
-using detail::closed_form;
-using detail::levenberg_marquardt;
-using detail::Model;
-using detail::Observation;
-using detail::residual_stats;
-using detail::ResidualStats;
-using detail::Solution;
+using detail::CensoredLikelihood;
+using detail::LikelihoodSettings;
 
-constexpr int kGridStarts = 4;       // best local minima of the grid that seed the search
-constexpr double kMinSigma2 = 1e-6;  // [dB^2]
+constexpr double kFirstSigma = 6.0;  // [dB] shadowing sigma the first look assumes
+// Independent samples per scan the first look assumes: untempered, ten-centimetre scans would
+// outweigh the priors on level and exponent and send the first fit anywhere.
+constexpr double kFirstShare = 0.1;
+constexpr int kNoiseRounds = 2;  // looks that re-estimate sigma and the share before the last
+constexpr double kMinSigma = 0.5, kMaxSigma = 30.0;  // [dB] sigma's search interval
 
-std::vector<Observation> observations_of(const std::vector<Chunk>& chunks) {
-  double total = 0;
-  for (const Chunk& chunk : chunks) total += chunk.count;
-  const double mean = total / static_cast<double>(chunks.size());
-  std::vector<Observation> observations;
-  observations.reserve(chunks.size());
-  for (const Chunk& chunk : chunks)
-    observations.push_back({chunk.position(), chunk.mean_rssi(), chunk.count / mean});
-  return observations;
+detail::SearchBox search_box(const ScanSeries& series, const PathLossParams& path_loss,
+                             const RangeFitParams& params) {
+  detail::SearchBox box{model::Vec2::Constant(std::numeric_limits<double>::max()),
+                        model::Vec2::Constant(std::numeric_limits<double>::lowest())};
+  std::vector<double> ranges;
+  for (const Scan& scan : series.scans) {
+    box.low = box.low.cwiseMin(scan.position.head<2>());
+    box.high = box.high.cwiseMax(scan.position.head<2>());
+    if (scan.heard) ranges.push_back(range_from_rssi(scan.rssi_dbm, path_loss));
+  }
+  const double margin =
+      std::clamp(1.5 * model::median(ranges), params.min_margin, params.max_margin);
+  box.low -= model::Vec2::Constant(margin);
+  box.high += model::Vec2::Constant(margin);
+  return box;
 }
 
-// Chunks merged into cells of `size`: the grid scores candidates on these, not every chunk.
-// Positions are finite and within the readers' coordinate limit, so cell indices fit.
-std::vector<Chunk> coarsen(const std::vector<Chunk>& chunks, double size) {
-  std::map<std::array<long long, 3>, std::size_t> index_of;
-  std::vector<Chunk> merged;
-  for (const Chunk& chunk : chunks) {
-    const model::Vec3 p = chunk.position();
-    const std::array<long long, 3> key = {static_cast<long long>(std::floor(p.x() / size)),
-                                          static_cast<long long>(std::floor(p.y() / size)),
-                                          static_cast<long long>(std::floor(p.z() / size))};
-    const auto [it, inserted] = index_of.try_emplace(key, merged.size());
-    if (inserted) merged.emplace_back();
-    Chunk& cell = merged[it->second];
-    cell.position_sum += chunk.position_sum;
-    cell.range_sum += chunk.range_sum;
-    cell.rssi_sum += chunk.rssi_sum;
-    cell.count += chunk.count;
-  }
-  return merged;
-}
-
-// Local minima of the closed-form cost on a regular grid around the chunks, best first.
-std::vector<model::Vec3> grid_starts(const std::vector<Observation>& coarse, const Model& model,
-                                     const RangeFitParams& params, double margin) {
-  model::Vec3 low = model::Vec3::Constant(1e300), high = model::Vec3::Constant(-1e300);
-  for (const Observation& o : coarse) {
-    low = low.cwiseMin(o.p);
-    high = high.cwiseMax(o.p);
-  }
-  const int n = std::max(3, model.d == 3 ? params.grid_cells * 2 / 3 : params.grid_cells);
-  const int nz = model.d == 3 ? n : 1;
-  for (int k = 0; k < model.d; ++k) {
-    low(k) -= margin;
-    high(k) += margin;
-  }
-  const model::Vec3 cell = (high - low) / n;
-  const auto centre = [&](int i, int j, int k) {
-    model::Vec3 c(low.x() + (i + 0.5) * cell.x(), low.y() + (j + 0.5) * cell.y(), model.height);
-    if (model.d == 3) c.z() = low.z() + (k + 0.5) * cell.z();
-    return c;
+// Nelder-Mead on the profile log density from `start`: the grid's cell centre refined to the
+// continuous maximum. Two dimensions, so a few dozen evaluations.
+// The search stays in the box: the posterior is only evaluated (and normalised) there.
+model::Vec2 refine_peak(const CensoredLikelihood& likelihood, const model::Vec2& start,
+                        double size, const detail::SearchBox& box) {
+  const auto cost = [&](const model::Vec2& q) {
+    return -likelihood.profile(q.cwiseMax(box.low).cwiseMin(box.high)).log_density;
   };
-  std::vector<double> cost(static_cast<std::size_t>(n * n * nz));
-  const auto at = [&](int i, int j, int k) -> double& {
-    return cost[static_cast<std::size_t>((k * n + j) * n + i)];
-  };
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) at(i, j, k) = closed_form(coarse, centre(i, j, k), model).cost;
-  std::vector<std::pair<double, model::Vec3>> minima;
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        bool minimum = true;
-        for (int dk = -1; dk <= 1 && minimum; ++dk)
-          for (int dj = -1; dj <= 1 && minimum; ++dj)
-            for (int di = -1; di <= 1 && minimum; ++di) {
-              const int ii = i + di, jj = j + dj, kk = k + dk;
-              if ((di || dj || dk) && ii >= 0 && jj >= 0 && kk >= 0 && ii < n && jj < n &&
-                  kk < nz) {
-                minimum = at(i, j, k) <= at(ii, jj, kk);
-              }
-            }
-        if (minimum) minima.emplace_back(at(i, j, k), centre(i, j, k));
+  std::array<model::Vec2, 3> simplex = {start, start + model::Vec2(size, 0),
+                                        start + model::Vec2(0, size)};
+  std::array<double, 3> value{};
+  for (int i = 0; i < 3; ++i) value[i] = cost(simplex[i]);
+  for (int iteration = 0; iteration < 80; ++iteration) {
+    std::array<int, 3> order = {0, 1, 2};
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return value[a] < value[b]; });
+    const int best = order[0], middle = order[1], worst = order[2];
+    if ((simplex[worst] - simplex[best]).norm() < 1e-3) break;
+    const model::Vec2 centroid = 0.5 * (simplex[best] + simplex[middle]);
+    const model::Vec2 reflected = centroid + (centroid - simplex[worst]);
+    const double reflected_value = cost(reflected);
+    if (reflected_value < value[best]) {
+      const model::Vec2 expanded = centroid + 2.0 * (centroid - simplex[worst]);
+      const double expanded_value = cost(expanded);
+      if (expanded_value < reflected_value) {
+        simplex[worst] = expanded;
+        value[worst] = expanded_value;
+      } else {
+        simplex[worst] = reflected;
+        value[worst] = reflected_value;
       }
-  std::sort(minima.begin(), minima.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<model::Vec3> starts;
-  for (std::size_t i = 0; i < minima.size() && static_cast<int>(i) < kGridStarts; ++i)
-    starts.push_back(minima[i].second);
-  return starts;
-}
-
-// Solutions more than 0.5 m from every better one (the input sorted best first).
-std::vector<Solution> distinct(const std::vector<Solution>& sorted) {
-  constexpr double kSame = 0.5;  // [m]
-  std::vector<Solution> kept;
-  for (const Solution& s : sorted) {
-    if (std::none_of(kept.begin(), kept.end(),
-                     [&](const Solution& k) { return (k.q - s.q).norm() < kSame; })) {
-      kept.push_back(s);
+    } else if (reflected_value < value[middle]) {
+      simplex[worst] = reflected;
+      value[worst] = reflected_value;
+    } else {
+      const model::Vec2 contracted = centroid + 0.5 * (simplex[worst] - centroid);
+      const double contracted_value = cost(contracted);
+      if (contracted_value < value[worst]) {
+        simplex[worst] = contracted;
+        value[worst] = contracted_value;
+      } else {  // shrink towards the best
+        for (const int i : {middle, worst}) {
+          simplex[i] = simplex[best] + 0.5 * (simplex[i] - simplex[best]);
+          value[i] = cost(simplex[i]);
+        }
+      }
     }
   }
-  return kept;
+  const auto best = std::min_element(value.begin(), value.end()) - value.begin();
+  return simplex[static_cast<std::size_t>(best)].cwiseMax(box.low).cwiseMin(box.high);
 }
 
-// LM from every start, best first.
-std::vector<Solution> solve_from(const std::vector<model::Vec3>& starts,
-                                 const std::vector<Observation>& observations, const Model& model,
-                                 int max_iterations) {
-  std::vector<Solution> solutions;
-  for (const model::Vec3& q : starts) {
-    solutions.push_back(levenberg_marquardt(observations, model,
-                                            closed_form(observations, q, model), max_iterations));
+// sigma maximising the untempered likelihood (golden-section search on log sigma).
+double estimate_sigma(const CensoredLikelihood& likelihood, const model::Vec2& q, double level,
+                      double exponent) {
+  double low = std::log(kMinSigma), high = std::log(kMaxSigma);
+  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
+  const auto f = [&](double log_sigma) {
+    return -likelihood.log_likelihood(q, level, exponent, std::exp(log_sigma));
+  };
+  double x1 = high - golden * (high - low), x2 = low + golden * (high - low);
+  double f1 = f(x1), f2 = f(x2);
+  for (int i = 0; i < 50 && high - low > 1e-4; ++i) {
+    if (f1 < f2) {
+      high = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = high - golden * (high - low);
+      f1 = f(x1);
+    } else {
+      low = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = low + golden * (high - low);
+      f2 = f(x2);
+    }
   }
-  std::sort(solutions.begin(), solutions.end(),
-            [](const Solution& a, const Solution& b) { return a.cost < b.cost; });
-  return solutions;
+  return std::exp(0.5 * (low + high));
 }
 
-Hypothesis to_hypothesis(const Solution& s, const Model& model, double sigma2) {
-  Hypothesis h;
-  h.position = s.q;
-  h.rssi_at_1m_dbm = s.a;
-  h.exponent = s.n;
-  h.cost = s.cost;
-  const Eigen::MatrixXd covariance =
-      sigma2 * s.information.completeOrthogonalDecomposition().pseudoInverse();
-  h.covariance.topLeftCorner(model.d, model.d) = covariance.topLeftCorner(model.d, model.d);
-  return h;
+// Residual correlation along the path at the best fit (heard scans only).
+detail::ResidualCorrelation correlation_at(const ScanSeries& series,
+                                           const CensoredLikelihood& model,
+                                           const model::Vec2& q, double level, double exponent) {
+  std::vector<double> travelled, residuals;
+  std::vector<std::size_t> heard_index;
+  double s = 0.0;
+  for (std::size_t i = 0; i < series.scans.size(); ++i) {
+    const Scan& scan = series.scans[i];
+    if (i > 0) s += (scan.position - series.scans[i - 1].position).head<2>().norm();
+    travelled.push_back(s);
+    if (!scan.heard) continue;
+    const model::Vec2 p = scan.position.head<2>();
+    residuals.push_back(scan.rssi_dbm -
+                        (level - exponent * model.log_distance(q, p) - model.wall_loss(q, p)));
+    heard_index.push_back(i);
+  }
+  return detail::residual_correlation(travelled, residuals, heard_index);
+}
+
+// What the heard scans alone say about the exponent at q (level free): the tempered Fisher
+// information k / sigma^2 * sum c (L - mean L)^2 over the cells, L = 10 log10 d. A circle
+// around q has nearly one distance, a path past q many.
+double exponent_information(const std::vector<detail::ScanCell>& cells, const model::Vec2& q,
+                            const LikelihoodSettings& settings, const CensoredLikelihood& model) {
+  double count = 0.0, sum = 0.0, squares = 0.0;
+  for (const detail::ScanCell& cell : cells) {
+    if (cell.heard <= 0) continue;
+    const double L = model.log_distance(q, cell.position);
+    count += cell.heard;
+    sum += cell.heard * L;
+    squares += cell.heard * L * L;
+  }
+  if (count <= 0) return 0.0;
+  const double spread = squares - sum * sum / count;
+  return settings.effective_share * spread / (settings.sigma_db * settings.sigma_db);
 }
 
 }  // namespace
 
-RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalysis& geometry,
-                          const PathLossParams& path_loss, const RangeFitParams& params) {
+int side_of_path(const std::vector<Scan>& scans, const model::Vec2& point) {
+  if (scans.size() < 2) return 0;
+  std::size_t nearest = 0;
+  double nearest_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < scans.size(); ++i) {
+    const double d = (scans[i].position.head<2>() - point).squaredNorm();
+    if (d < nearest_distance) {
+      nearest_distance = d;
+      nearest = i;
+    }
+  }
+  // The direction of travel over a few scans either side: robust to position noise.
+  constexpr std::size_t kSpan = 5;
+  const std::size_t before = nearest >= kSpan ? nearest - kSpan : 0;
+  const std::size_t after = std::min(scans.size() - 1, nearest + kSpan);
+  const model::Vec2 direction =
+      (scans[after].position - scans[before].position).head<2>().normalized();
+  const model::Vec2 offset = point - scans[nearest].position.head<2>();
+  const double cross = direction.x() * offset.y() - direction.y() * offset.x();
+  constexpr double kOnPath = 0.01;  // [m]
+  return cross > kOnPath ? 1 : cross < -kOnPath ? -1 : 0;
+}
+
+RangeFitResult fit_ranges(const ScanSeries& series, const PathLossParams& path_loss,
+                          const RangeFitParams& params, const std::vector<WallSegment>& walls) {
   RangeFitResult result;
-  Model model;
-  model.d = geometry.dimensions;
-  model.fit_level = params.estimate_level;
-  model.fit_exponent = params.estimate_exponent;
-  model.a0 = path_loss.rssi_at_1m_dbm;
-  model.n0 = path_loss.exponent;
-  model.level_bound = params.level_bound_db;
-  model.height = geometry.centroid.z();
-  model.huber = params.huber_db;
-  const int parameters = model.parameters();
-  if (static_cast<int>(chunks.size()) <= parameters) return result;
-  const std::vector<Observation> observations = observations_of(chunks);
-  const std::vector<Chunk> merged = coarsen(chunks, params.coarse_chunk);
-  const std::vector<Observation> coarse = observations_of(merged);
+  if (series.heard == 0) return result;
+  LikelihoodSettings settings;
+  settings.floor_dbm = series.floor_dbm;
+  settings.sigma_db = kFirstSigma;
+  settings.effective_share = params.correlated_shadowing ? kFirstShare : 1.0;
+  settings.level_dbm = path_loss.rssi_at_1m_dbm;
+  settings.level_sd_db = params.level_prior_db;
+  settings.exponent = path_loss.exponent;
+  settings.exponent_sd = params.exponent_prior;
+  settings.vertical_offset = params.vertical_offset;
+  settings.path_prior_scale = params.path_prior_scale;
+  settings.walls = walls;
+  const detail::SearchBox box = search_box(series, path_loss, params);
 
-  std::vector<model::Vec3> starts;
-  double median_range = 0.0;
-  {
-    std::vector<double> ranges;
-    for (const Chunk& chunk : merged) ranges.push_back(chunk.mean_range());
-    std::nth_element(ranges.begin(), ranges.begin() + static_cast<long>(ranges.size() / 2),
-                     ranges.end());
-    median_range = ranges[ranges.size() / 2];
-  }
-  if (const auto linear = wls_multilateration(chunks, model.d, WlsReference::weighted_mean)) {
-    model::Vec3 q = linear->position;
-    if (model.d == 2) q.z() = model.height;
-    starts.push_back(q);
-    starts.push_back(geometry.mirror(q));
-  }
-  for (const model::Vec3& q :
-       grid_starts(coarse, model, params, std::max(params.grid_margin, median_range)))
-    starts.push_back(q);
-
-  // Pass 1 on the merged chunks, as if independent and without prior: finds the minima
-  // cheaply; the residuals of all chunks at the best one measure the correlation.
-  const std::vector<Solution> first =
-      distinct(solve_from(starts, coarse, model, params.max_iterations));
-  if (first.empty()) return result;  // no start gave a finite cost: no hypothesis
-  std::vector<Observation> weighted = observations;
-  model.cutoff = path_loss.cutoff_dbm;
-  if (params.correlated_shadowing || params.level_prior_db > 0 || params.model_cutoff) {
-    const ResidualStats stats = residual_stats(observations, model, first.front());
-    result.residual_correlation = stats.correlation;
+  // First looks with the exponent fixed: sigma and the share assumed, then measured at the best
+  // point found; then whether the data can tell the exponent there, and if so a look with it.
+  settings.exponent_sd = 0.0;
+  for (int round = 0; round < kNoiseRounds + 1; ++round) {
+    if (round == kNoiseRounds) {
+      if (!result.exponent_identified) break;
+      settings.exponent_sd = params.exponent_prior;
+    }
+    const detail::PosteriorSearch look = detail::search_posterior(
+        series.scans, settings, box, params.credible_mass, params.min_mode_separation, 2);
+    const CensoredLikelihood fine(detail::merge_scans(series.scans, look.finest_chunk), settings);
+    const model::Vec2 q = refine_peak(fine, look.modes.front().peak, look.posterior.cell, box);
+    detail::ProfilePoint at = fine.profile(q);
+    settings.sigma_db = estimate_sigma(fine, q, at.level_dbm, at.exponent);
+    at = CensoredLikelihood(fine.cells(), settings).profile(q);
     if (params.correlated_shadowing) {
-      const double share = (1.0 - stats.correlation) / (1.0 + stats.correlation);
-      for (Observation& o : weighted) o.w *= share;
+      const detail::ResidualCorrelation correlation =
+          correlation_at(series, fine, q, at.level_dbm, at.exponent);
+      settings.effective_share = correlation.effective_share;
+      result.correlated_share = correlation.correlated_share;
+      result.correlation_length = correlation.length;
     }
-    if (params.level_prior_db > 0)
-      model.prior_weight = stats.variance / (params.level_prior_db * params.level_prior_db);
-    if (params.model_cutoff) model.truncation_sigma = std::sqrt(stats.variance);
-  }
-  // Pass 2 from pass 1's minima: they move little when the weights change.
-  std::vector<model::Vec3> refined;
-  for (const Solution& s : first) refined.push_back(s.q);
-  // On a circle the best point's inverse is the twin of an unknown level: search it too.
-  if (geometry.circular && model.fit_level) refined.push_back(geometry.inverse(first.front().q));
-  std::vector<Solution> solutions = solve_from(refined, weighted, model, params.max_iterations);
-  if (solutions.empty()) return result;  // no start gave a finite cost: no hypothesis
-  const Solution best = solutions.front();
-  // On collinear chunks the mirror of the best minimum fits exactly as well: make sure it is
-  // among the candidates even when no start led there.
-  if (geometry.collinear) {
-    Solution mirrored = best;
-    mirrored.q = geometry.mirror(best.q);
-    solutions.push_back(levenberg_marquardt(weighted, model, mirrored, params.max_iterations));
-  }
-  double total_weight = 0;
-  for (const Observation& o : weighted) total_weight += o.w;
-  result.effective_chunks = total_weight;
-  const double dof = std::max(1.0, total_weight - parameters);
-  // A floor of (1 mdB)^2 keeps the twin test meaningful on noise-free data.
-  const double sigma2 = std::max(best.cost / dof, kMinSigma2);
-  result.sigma_db = std::sqrt(sigma2);
-  result.hypotheses.push_back(to_hypothesis(best, model, sigma2));
-  std::sort(solutions.begin() + 1, solutions.end(),
-            [](const Solution& a, const Solution& b) { return a.cost < b.cost; });
-  for (std::size_t i = 1; i < solutions.size(); ++i) {
-    const Solution& other = solutions[i];
-    if ((other.q - best.q).norm() < params.min_twin_separation) continue;
-    if ((other.cost - best.cost) / sigma2 < params.twin_chi2) {
-      result.hypotheses.push_back(to_hypothesis(other, model, sigma2));
-      result.twin = true;
+    if (round == kNoiseRounds - 1 && params.exponent_prior > 0) {
+      result.exponent_identified =
+          exponent_information(fine.cells(), q, settings, fine) * params.exponent_prior *
+              params.exponent_prior >=
+          params.identified_information;
     }
-    break;
   }
+  result.sigma_db = settings.sigma_db;
+  result.effective_share = settings.effective_share;
+
+  // The posterior with the measured sigma and effective share.
+  detail::PosteriorSearch search = detail::search_posterior(
+      series.scans, settings, box, params.credible_mass, params.min_mode_separation);
+  const CensoredLikelihood model(detail::merge_scans(series.scans, search.finest_chunk),
+                                 settings);
+  double height = 0.0;
+  for (const Scan& scan : series.scans) height += scan.position.z();
+  height /= static_cast<double>(series.scans.size());
+  for (const detail::PosteriorMode& mode : search.modes) {
+    if (mode.probability < params.min_reported_probability) continue;
+    const model::Vec2 peak = refine_peak(model, mode.peak, search.posterior.cell, box);
+    // Basins whose peaks refine to one point are one hypothesis.
+    const auto same = std::find_if(
+        result.hypotheses.begin(), result.hypotheses.end(), [&](const Hypothesis& other) {
+          return (other.position.head<2>() - peak).norm() < params.min_mode_separation;
+        });
+    if (same != result.hypotheses.end()) {
+      same->probability += mode.probability;
+      continue;
+    }
+    const detail::ProfilePoint point = model.profile(peak);
+    Hypothesis h;
+    h.position = model::Vec3(peak.x(), peak.y(), height);
+    h.covariance.topLeftCorner<2, 2>() = mode.covariance;
+    h.rssi_at_1m_dbm = point.level_dbm;
+    h.exponent = point.exponent;
+    h.level_sd_db = point.level_sd_db;
+    h.exponent_sd = point.exponent_sd;
+    h.cost = -point.log_density;
+    h.probability = mode.probability;
+    h.side = side_of_path(series.scans, peak);
+    result.hypotheses.push_back(h);
+  }
+  result.ambiguous =
+      result.hypotheses.size() >= 2 && result.hypotheses[1].probability >=
+                                           params.ambiguity_ratio * result.hypotheses[0].probability;
+  result.posterior = std::move(search.posterior);
   return result;
 }
 

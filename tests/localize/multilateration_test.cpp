@@ -5,6 +5,8 @@
 #include "rigdesign/localize/emitter_localizer.hpp"
 #include "rigdesign/localize/geometry_analysis.hpp"
 #include "rigdesign/localize/range_fit.hpp"
+#include "localize/censored_likelihood.hpp"
+#include "rigdesign/localize/scan_series.hpp"
 #include "rigdesign/localize/wls_multilateration.hpp"
 
 using namespace rigdesign;
@@ -94,16 +96,24 @@ TEST_CASE("noise-free ranges are recovered exactly in 2D by every linear variant
     REQUIRE(solution);
     CHECK((solution->position - emitter).norm() < 1e-6);
   }
+  // The range fit models a vertical offset between antenna and emitter; these readings have
+  // none, so the fit is told so, and the assumed level is 5 dB off: the fit finds -45 dBm.
   localize::RangeFitParams fit;
-  fit.level_prior_db = 0;        // the level is free: the fit must find -45 dBm by itself
+  fit.vertical_offset = 0.0;
+  fit.level_prior_db = 100;      // the level is free
+  fit.path_prior_scale = 0;      // no prior on the position
   model.rssi_at_1m_dbm = -40.0;  // assumed 5 dB off
-  const localize::RangeFitResult result = localize::fit_ranges(chunks, geometry, model, fit);
-  REQUIRE(result.hypotheses.size() == 1);
-  CHECK((result.hypotheses[0].position - emitter).norm() < 1e-4);
-  CHECK(result.hypotheses[0].rssi_at_1m_dbm == Approx(-45.0).margin(1e-4));
+  const localize::RangeFitResult result =
+      localize::fit_ranges(localize::scan_series(log, 0), model, fit);
+  REQUIRE_FALSE(result.hypotheses.empty());
+  CHECK((result.hypotheses[0].position.head<2>() - emitter.head<2>()).norm() < 1e-2);
+  CHECK(result.hypotheses[0].probability > 0.99);
+  CHECK(result.hypotheses[0].rssi_at_1m_dbm == Approx(-45.0).margin(0.05));
+  CHECK(result.posterior->contains(emitter.head<2>()));
 }
 
-TEST_CASE("noise-free ranges are recovered exactly in 3D from a path that climbs", "[localize]") {
+TEST_CASE("noise-free ranges are recovered exactly in 3D from a path that climbs (wls)",
+          "[localize]") {
   const model::Vec3 emitter(2.0, -1.0, 1.5);
   localize::PathLossParams model;
   std::vector<model::Vec3> helix;
@@ -118,9 +128,6 @@ TEST_CASE("noise-free ranges are recovered exactly in 3D from a path that climbs
   const auto linear = localize::wls_multilateration(chunks, 3);
   REQUIRE(linear);
   CHECK((linear->position - emitter).norm() < 1e-6);
-  const localize::RangeFitResult fit = localize::fit_ranges(chunks, geometry, model);
-  REQUIRE_FALSE(fit.hypotheses.empty());
-  CHECK((fit.hypotheses[0].position - emitter).norm() < 1e-4);
 }
 
 TEST_CASE("collinear positions are reported as degenerate, with both mirror images", "[localize]") {
@@ -133,19 +140,42 @@ TEST_CASE("collinear positions are reported as degenerate, with both mirror imag
       localize::localize_emitter(log, 0, localize::LocalizeMethod::wls);
   CHECK(wls.geometry.collinear);
   CHECK(wls.hypotheses.empty());  // the linear system is singular: no confident point
+  localize::LocalizeParams params;
+  params.fit.vertical_offset = 0.0;  // the readings have none
   const localize::EmitterEstimate nls =
-      localize::localize_emitter(log, 0, localize::LocalizeMethod::nls);
+      localize::localize_emitter(log, 0, localize::LocalizeMethod::nls, params);
   CHECK(nls.geometry.collinear);
   REQUIRE(nls.hypotheses.size() == 2);
-  CHECK(nls.twin);
-  const model::Vec3 mirror(2.0, -3.0, 0.4);
-  const model::Vec3& a = nls.hypotheses[0].position;
-  const model::Vec3& b = nls.hypotheses[1].position;
-  CHECK(std::min((a - emitter).norm() + (b - mirror).norm(),
-                 (a - mirror).norm() + (b - emitter).norm()) < 1e-3);
-  // Each hypothesis is well determined on its own: noise-free data leave it sub-centimetre
-  // (the residual sigma is floored at 1 mdB).
-  CHECK(nls.hypotheses[0].covariance.trace() < 1e-4);
+  // The two mirror images explain the data exactly alike: equal probabilities, and the result
+  // says so instead of ranking them.
+  CHECK(nls.ambiguous);
+  CHECK(nls.hypotheses[0].probability == Approx(0.5).margin(0.01));
+  CHECK(nls.hypotheses[1].probability == Approx(0.5).margin(0.01));
+  const model::Vec2 mirror(2.0, -3.0);
+  const model::Vec2 a = nls.hypotheses[0].position.head<2>();
+  const model::Vec2 b = nls.hypotheses[1].position.head<2>();
+  CHECK(std::min((a - emitter.head<2>()).norm() + (b - mirror).norm(),
+                 (a - mirror).norm() + (b - emitter.head<2>()).norm()) < 2e-2);
+  CHECK(nls.hypotheses[0].side == -nls.hypotheses[1].side);
+  // --prefer-side puts the left one (y > 0 for a robot driving along +x) first, then right.
+  for (const int side : {1, -1}) {
+    params.prefer_side = side;
+    const localize::EmitterEstimate preferred =
+        localize::localize_emitter(log, 0, localize::LocalizeMethod::nls, params);
+    REQUIRE(preferred.hypotheses.size() == 2);
+    CHECK(preferred.hypotheses[0].side == side);
+    CHECK(preferred.hypotheses[0].position.y() * side > 2.9);
+    CHECK(preferred.tie_break == (side > 0 ? "--prefer-side left" : "--prefer-side right"));
+  }
+  // A wall map breaks the tie with evidence: an 8 dB wall along y = 1.5 that the readings did
+  // not pass through rules out the phone behind it... so the phone is on the other side.
+  params.prefer_side = 0;
+  params.walls = {{{-30, -1.5}, {30, -1.5}, 8.0}};
+  const localize::EmitterEstimate walled =
+      localize::localize_emitter(log, 0, localize::LocalizeMethod::nls, params);
+  REQUIRE_FALSE(walled.hypotheses.empty());
+  CHECK_FALSE(walled.ambiguous);
+  CHECK((walled.hypotheses[0].position.head<2>() - emitter.head<2>()).norm() < 2e-2);
 }
 
 TEST_CASE("geometry: height spread decides 2D or 3D; the mirror reflects across the path",
@@ -173,20 +203,101 @@ TEST_CASE("a circular path with unknown level reports the inverse-point twin", "
     const double angle = 2 * 3.14159265358979 * i / 750;
     circle.emplace_back(12 * std::cos(angle), 12 * std::sin(angle), 0.4);
   }
-  const std::vector<localize::Chunk> chunks =
-      localize::chunk_readings(exact_log(circle, emitter, model), 0, model);
+  const localize::RssiLog log = exact_log(circle, emitter, model);
+  const std::vector<localize::Chunk> chunks = localize::chunk_readings(log, 0, model);
   const localize::GeometryAnalysis geometry = localize::analyse_geometry(chunks);
   REQUIRE(geometry.circular);
   CHECK(geometry.circle_radius == Approx(12.0).margin(1e-3));
   localize::RangeFitParams fit;
-  fit.level_prior_db = 0;
-  const localize::RangeFitResult result = localize::fit_ranges(chunks, geometry, model, fit);
-  REQUIRE(result.hypotheses.size() == 2);
-  CHECK(result.twin);
-  const model::Vec3 twin(36.0, 0.0, 0.4);
-  for (const localize::Hypothesis& h : result.hypotheses) {
-    const bool is_phone = (h.position - emitter).norm() < 1e-2;
-    CHECK((is_phone || (h.position - twin).norm() < 1e-2));
-    CHECK(h.rssi_at_1m_dbm == Approx(is_phone ? -45.0 : -45.0 + 25 * std::log10(3.0)).margin(1e-2));
+  fit.vertical_offset = 0.0;
+  fit.level_prior_db = 100;  // the level is free
+  fit.exponent_prior = 0;    // the exponent is known
+  fit.path_prior_scale = 0;
+  fit.min_margin = 30;  // the twin lies 24 m beyond the path
+  const localize::RangeFitResult result =
+      localize::fit_ranges(localize::scan_series(log, 0), model, fit);
+  REQUIRE(result.hypotheses.size() >= 2);
+  CHECK(result.ambiguous);
+  const model::Vec2 twin(36.0, 0.0);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const localize::Hypothesis& h = result.hypotheses[i];
+    const bool is_phone = (h.position.head<2>() - emitter.head<2>()).norm() < 5e-2;
+    CHECK((is_phone || (h.position.head<2>() - twin).norm() < 5e-2));
+    CHECK(h.rssi_at_1m_dbm ==
+          Approx(is_phone ? -45.0 : -45.0 + 25 * std::log10(3.0)).margin(0.05));
   }
+}
+
+TEST_CASE("scan series: missed scans are placed on straight gaps, left out across bends",
+          "[localize]") {
+  // One scan a second at 1 m/s: along +x to (10, 0), then along +y. Not heard at t = 4, 5, 6
+  // (a straight gap: chord 4 m in 4 s) and at t = 9, 10, 11 (around the corner: (8, 0) to
+  // (10, 2) is a chord of 2.83 m for 4 m driven).
+  localize::RssiLog log;
+  log.emitters = {"a"};
+  for (int t = 0; t <= 16; ++t) {
+    if ((t >= 4 && t <= 6) || (t >= 9 && t <= 11)) continue;
+    const model::Vec3 p = t <= 10 ? model::Vec3(t, 0, 0.4) : model::Vec3(10, t - 10, 0.4);
+    log.readings.push_back({static_cast<double>(t), p, 0, -60.0 - t});
+  }
+  log.readings.push_back({17.0, {10, 7, 0.4}, 0, 0.0, false});  // logged: scanned, not heard
+  const localize::ScanSeries series = localize::scan_series(log, 0);
+  CHECK(series.scan_period_s == 1.0);
+  CHECK(series.heard == 11);
+  CHECK(series.unheard_interpolated == 3);
+  CHECK(series.unheard_unplaced == 3);
+  CHECK(series.unheard_logged == 1);
+  // No floor given: the weakest reading, -76 dBm at t = 16.
+  CHECK(series.floor_source == localize::FloorSource::weakest_reading);
+  CHECK(series.floor_dbm == -76.0);
+  REQUIRE(series.scans.size() == 15);
+  CHECK_FALSE(series.scans[4].heard);
+  CHECK((series.scans[5].position - model::Vec3(5, 0, 0.4)).norm() < 1e-12);
+  // A floor from the log wins over the weakest reading, an option over both.
+  log.floor_dbm = -95.0;
+  CHECK(localize::scan_series(log, 0).floor_source == localize::FloorSource::log);
+  localize::ScanSeriesParams params;
+  params.floor_dbm = -90.0;
+  CHECK(localize::scan_series(log, 0, params).floor_dbm == -90.0);
+}
+
+TEST_CASE("censored likelihood: log Phi and the inverse Mills ratio at hand-checked points",
+          "[localize]") {
+  // Phi(-1) = 0.158655253931457, Phi(0) = 1/2, phi(0) = 1/sqrt(2 pi).
+  CHECK(localize::detail::log_normal_cdf(-1.0) == Approx(std::log(0.158655253931457)));
+  CHECK(localize::detail::inverse_mills_ratio(0.0) ==
+        Approx(2.0 / std::sqrt(2 * 3.14159265358979)));
+  // The tail expansions join erfc at z = -30 without a step (relative 1e-6).
+  CHECK(localize::detail::log_normal_cdf(-30.0001) ==
+        Approx(localize::detail::log_normal_cdf(-29.9999)).epsilon(1e-5));
+  CHECK(localize::detail::inverse_mills_ratio(-30.0001) ==
+        Approx(localize::detail::inverse_mills_ratio(-29.9999)).epsilon(1e-5));
+}
+
+TEST_CASE("unheard scans push the estimate away from where the emitter was not heard",
+          "[localize]") {
+  // A 60 m straight road; the phone 4 m beside x = 0 and a floor of -75 dBm: beyond about
+  // 10^(30 / 25) = 15.8 m the scans hear nothing. Those scans are known (empty-rssi lines), and
+  // with them the posterior puts no mass near the unheard stretches.
+  const model::Vec3 emitter(0.0, 4.0, 0.4);
+  localize::PathLossParams model;
+  localize::RssiLog log;
+  log.emitters = {"a"};
+  log.floor_dbm = -75.0;
+  for (int i = 0; i <= 600; ++i) {
+    const model::Vec3 p(-30.0 + 0.1 * i, 0.0, 0.4);
+    const double rssi = localize::rssi_at_range((emitter - p).norm(), model);
+    log.readings.push_back({0.1 * i, p, 0, rssi, rssi >= -75.0});
+  }
+  localize::LocalizeParams params;
+  params.fit.vertical_offset = 0.0;
+  const localize::EmitterEstimate estimate =
+      localize::localize_emitter(log, 0, localize::LocalizeMethod::nls, params);
+  REQUIRE(estimate.scans);
+  CHECK(estimate.scans->unheard_logged > 200);
+  REQUIRE_FALSE(estimate.hypotheses.empty());
+  for (const localize::Hypothesis& h : estimate.hypotheses)
+    CHECK(std::abs(h.position.x()) < 0.1);
+  CHECK_FALSE(estimate.region->contains({-20.0, 4.0}));
+  CHECK_FALSE(estimate.region->contains({20.0, -4.0}));
 }

@@ -17,10 +17,13 @@ struct AccuracyRow {
   int runs = 0;
   ErrorStats final_error;           ///< of the best hypothesis, across runs [m]
   ErrorStats nearest_error;         ///< of the hypothesis nearest the truth, across runs [m]
+  ErrorStats expected_error;        ///< probability-weighted over the hypotheses [m]
+  int in_region = 0;                ///< runs whose truth lies in the stated 95 % region
   double median_data_amount = 0.0;  ///< C over the runs that reached the acceptable error
   int reached = 0;                  ///< runs whose running estimate ever got within it
   double detection_share = 0.0;     ///< runs whose final estimate is within it
-  int twin_runs = 0;                ///< runs reporting two hypotheses
+  int multiple_runs = 0;            ///< runs reporting more than one hypothesis
+  int ambiguous_runs = 0;           ///< runs whose first two hypotheses are indistinguishable
   int unsolved_runs = 0;            ///< runs without an estimate (not in the error statistics)
 };
 

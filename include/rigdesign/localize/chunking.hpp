@@ -48,7 +48,7 @@ class ChunkAccumulator {
   std::unordered_map<std::uint64_t, std::size_t> index_of_;
 };
 
-/// The chunks of one emitter's readings at or above the cut-off, in order of first visit.
+/// The chunks of one emitter's heard readings at or above the cut-off, in order of first visit.
 std::vector<Chunk> chunk_readings(const RssiLog& log, int emitter, const PathLossParams& path_loss,
                                   const ChunkParams& params = {});
 

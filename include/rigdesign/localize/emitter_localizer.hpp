@@ -1,7 +1,9 @@
 #pragma once
 /// One emitter's position from a log by one of three methods: paper 4's linearised weighted
-/// least squares (`wls`), the dB-domain range fit (`nls`) or paper 4's object map (`map`),
-/// all on the same chunks of the readings at or above the cut-off.
+/// least squares (`wls`) and object map (`map`), both on the chunks of the readings at or
+/// above the cut-off as the paper does, and the range fit (`nls`) on every scan, heard or not.
+/// Each states a 95 % region: wls its Gaussian ellipse, map and nls the highest-density
+/// region of their grids.
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +15,8 @@
 #include "rigdesign/localize/path_loss.hpp"
 #include "rigdesign/localize/range_fit.hpp"
 #include "rigdesign/localize/rssi_log.hpp"
+#include "rigdesign/localize/scan_series.hpp"
+#include "rigdesign/localize/walls.hpp"
 #include "rigdesign/model/name_table.hpp"
 
 namespace rigdesign::localize {
@@ -34,8 +38,13 @@ struct LocalizeParams {
   PathLossParams path_loss;
   ChunkParams chunking;
   GeometryParams geometry;
+  ScanSeriesParams scans;
   RangeFitParams fit;
   ObjectMapParams map;
+  std::vector<WallSegment> walls;  ///< a map the range fit models (`--walls`)
+  /// +1 left, -1 right of the path (REP-103, facing the direction of travel): which of
+  /// ambiguous hypotheses to list first (`--prefer-side`); 0: none.
+  int prefer_side = 0;
 };
 
 struct EmitterEstimate {
@@ -45,13 +54,23 @@ struct EmitterEstimate {
   int used = 0;      ///< of which at or above the cut-off
   std::vector<Chunk> chunks;
   GeometryAnalysis geometry;
-  /// Best first; two when the geometry or the fit leaves a twin; empty when the method could
-  /// not solve (too few chunks, or a singular linear system).
+  /// Most probable first; empty when the method could not solve (too few chunks, a singular
+  /// linear system, nothing heard).
   std::vector<Hypothesis> hypotheses;
-  bool twin = false;
-  double sigma_db = 0.0;         ///< residual standard deviation per chunk (nls) [dB]
-  std::optional<ObjectMap> map;  ///< the probability grid (map)
+  /// The first two hypotheses are indistinguishable (nls): their order is not evidence.
+  bool ambiguous = false;
+  /// What put the first hypothesis first when ambiguous: "--prefer-side left", or empty.
+  std::string tie_break;
+  std::optional<ObjectMap> map;              ///< the probability grid (map)
+  std::optional<PositionPosterior> region;   ///< its grid with the 95 % region (nls, map)
+  std::optional<ScanSeries> scans;           ///< the scans the range fit used (nls)
+  RangeFitResult fit;                        ///< noise and exponent findings (nls)
 };
+
+/// Whether `point` lies in the estimate's stated 95 % region (wls: the first hypothesis'
+/// ellipse, chi-square 5.99 for 2 d.o.f.; nls and map: their highest-density region), with
+/// horizontal distances as everywhere when z is unobservable.
+bool in_stated_region(const EmitterEstimate& estimate, const model::Vec3& point);
 
 /// Runs `method` on one emitter's chunks (chunks and geometry as computed here).
 EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod method,

@@ -12,6 +12,13 @@ struct Hypothesis {
   double rssi_at_1m_dbm = 0.0;  ///< the 1 m level used or estimated [dBm]
   double exponent = 0.0;        ///< the path-loss exponent used or estimated
   double cost = 0.0;            ///< the estimator's objective at the position (lower is better)
+  /// Share of the posterior probability in this hypothesis' basin (1 for a single estimate).
+  double probability = 1.0;
+  double level_sd_db = 0.0;  ///< posterior sd of the 1 m level at the position (nls) [dB]
+  double exponent_sd = 0.0;  ///< posterior sd of the exponent (nls; 0 when fixed)
+  /// Side of the robot's path the position lies on, facing the direction of travel (REP-103:
+  /// +1 left, -1 right, 0 on it).
+  int side = 0;
 };
 
 }  // namespace rigdesign::localize

@@ -16,7 +16,7 @@ struct KpiParams {
   /// within 5 m).
   double acceptable_error = 5.0;
   /// For nls and map, the running estimate is recomputed at this many evenly spaced reading
-  /// counts (wls updates after every reading, in O(1)).
+  /// counts (wls updates after every reading, in O(1)); 0: final KPIs only.
   int checkpoints = 50;
 };
 
@@ -40,7 +40,11 @@ std::optional<int> data_amount(const std::vector<std::pair<int, double>>& errors
                                double acceptable);
 
 struct EmitterKpis {
-  double final_error = 0.0;               ///< of the best hypothesis at the end of the log [m]
+  double final_error = 0.0;               ///< of the first hypothesis at the end of the log [m]
+  /// Probability-weighted over the hypotheses: the error of the stated belief, which does not
+  /// depend on how ambiguous hypotheses happen to be ordered [m].
+  double expected_error = 0.0;
+  bool in_region = false;  ///< the truth lies in the stated 95 % region (in_stated_region)
   double nearest_hypothesis_error = 0.0;  ///< of whichever hypothesis is nearest the truth [m]
   ErrorStats running;                     ///< errors of the running estimate over the log
   std::optional<int> data_amount;         ///< C, in readings of this emitter

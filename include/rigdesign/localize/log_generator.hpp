@@ -11,14 +11,10 @@
 #include "rigdesign/localize/ground_truth.hpp"
 #include "rigdesign/localize/path_loss.hpp"
 #include "rigdesign/localize/rssi_log.hpp"
+#include "rigdesign/localize/walls.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 
 namespace rigdesign::localize {
-
-struct WallSegment {
-  model::Vec2 a, b;       ///< end points in the horizontal plane [m]
-  double attenuation_db;  ///< loss when the line of sight crosses it [dB]
-};
 
 struct ScenarioParams {
   std::uint64_t seed = 1;
@@ -33,7 +29,7 @@ struct ScenarioParams {
   double position_noise = 0.05;         ///< standard deviation of the logged x and y [m]
   double antenna_height = 0.4;          ///< robot antenna height [m]
   double emitter_height = 1.0;          ///< phone height [m]
-  double sensitivity_dbm = -90.0;       ///< the radio reports nothing weaker [dBm]
+  double sensitivity_dbm = -90.0;  ///< the radio reports nothing weaker: the log's floor [dBm]
 };
 
 struct Scenario {
@@ -50,9 +46,5 @@ const std::vector<std::string>& scenario_names();
 
 /// Throws InputError (field "--scenario") for an unknown name.
 Scenario make_scenario(const std::string& name, const ScenarioParams& params = {});
-
-/// Total attenuation of the walls crossed by the segment from `from` to `to` (x, y only) [dB].
-double wall_loss_db(const std::vector<WallSegment>& walls, const model::Vec3& from,
-                    const model::Vec3& to);
 
 }  // namespace rigdesign::localize

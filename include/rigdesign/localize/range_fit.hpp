@@ -1,64 +1,83 @@
 #pragma once
-/// The better estimator: maximum likelihood under log-normal shadowing, i.e. nonlinear least
-/// squares in the dB domain on the chunks' mean RSSI,
-///     m_j = a - 10 n log10 |q - p_j| + e_j,   e_j ~ N(0, sigma^2 / c_j),
-/// solved by Levenberg-Marquardt over (q, a[, n]). The 1 m level a (and optionally n) has a
-/// closed form for a fixed q, which scores start candidates cheaply: the weighted-mean
-/// linearised solution, its mirror across the path, and the local minima of a coarse grid.
-/// Distinct minima whose costs differ by less than a chi-square margin are all reported (a
-/// mirror twin on a straight path, the inverse-point twin of a circular path with unknown
-/// level), each with the covariance sigma^2 (J^T W J)^-1.
+/// The better estimator (`nls`): the posterior of the emitter's horizontal position under the
+/// log-distance model with log-normal shadowing, from every scan, heard or not:
+///     y = a - 10 n log10 d - W + e,  e ~ N(0, sigma^2),  a scan below the floor: y < floor
+/// (a Tobit likelihood: unheard scans say the emitter was far). The 1 m level a and the
+/// exponent n are estimated with Gaussian priors about the assumed values (the exponent only
+/// as far as the path's spread of distances allows: the fit says when the prior decides it);
+/// W is the loss of mapped walls (`--walls`), which can tell mirror images apart.
 ///
-/// Shadowing is correlated along the path, so 10 cm chunks are far from independent. A first
-/// fit measures the residuals' lag-1 autocorrelation rho between consecutive chunks; the
-/// second fit weights the chunks by the AR(1) effective-sample share (1 - rho) / (1 + rho),
-/// which makes the covariances and the twin test honest and gives a weak Gaussian prior on
-/// the 1 m level its proper say.
+/// Shadowing is correlated along the path, so the scans are not independent: a first fit
+/// measures the residuals' correlation along the path (a correlated share and a length, fitted
+/// to the empirical correlogram) and sigma (Tobit maximum likelihood), and the log-likelihood
+/// is tempered by the effective-sample share they imply. The posterior is evaluated on a grid
+/// refined where it matters (2 m, 0.5 m, 0.25 m); its modes are the hypotheses, each with the
+/// probability of its basin, and its highest-density region of 95 % is the stated uncertainty.
+/// Modes whose probabilities differ by less than what the noise can tell (likelihood-ratio
+/// test at 95 %: ratio above exp(-3.84 / 2)) are reported as ambiguous, not ranked.
+#include <optional>
 #include <vector>
 
-#include "rigdesign/localize/chunking.hpp"
-#include "rigdesign/localize/geometry_analysis.hpp"
 #include "rigdesign/localize/hypothesis.hpp"
 #include "rigdesign/localize/path_loss.hpp"
+#include "rigdesign/localize/position_posterior.hpp"
+#include "rigdesign/localize/scan_series.hpp"
+#include "rigdesign/localize/walls.hpp"
 
 namespace rigdesign::localize {
 
 struct RangeFitParams {
-  bool estimate_level = true;      ///< fit the 1 m level a (else PathLossParams' value)
-  bool estimate_exponent = false;  ///< also fit n (else PathLossParams' value)
-  /// The fitted level stays within this of the assumed one [dB]: phones differ by a few dB,
-  /// and without a bound a circular path lets a far-away twin with an implausibly strong
-  /// transmitter explain the data as well as the phone.
-  double level_bound_db = 15.0;
-  /// Standard deviation of the Gaussian prior on the 1 m level about the assumed one [dB]
-  /// (0: no prior). Phones' transmit powers and antennas differ by a few dB.
+  /// Prior sd of the 1 m level about PathLossParams' value [dB]: phones' transmit powers and
+  /// antennas differ by several dB.
   double level_prior_db = 4.0;
-  /// Weight chunks by the effective-sample share measured from the residuals (see above).
+  /// Prior sd of the exponent about PathLossParams' value (0: the exponent is fixed).
+  double exponent_prior = 0.5;
+  /// Prior on the position: the density falls as exp(-d / scale) with the distance d from the
+  /// robot's path [m] (0: uniform over the search box). Emitters worth finding lie near where a
+  /// robot explores; without it, a circling path lets a wide plateau of far positions (each
+  /// fitting with a strong transmitter) outweigh the emitter by its area alone.
+  double path_prior_scale = 10.0;
+  /// Height between the robot's antenna and the emitter, unknown, taken as this [m].
+  double vertical_offset = 0.6;
+  /// Temper the likelihood by the effective-sample share of correlated shadowing.
   bool correlated_shadowing = true;
-  /// Model the cut-off: a chunk near it survives only with favourable shadowing, so its
-  /// expected mean is the truncated-normal mean (sigma from the first fit's residuals).
-  bool model_cutoff = false;
-  /// Huber threshold on dB residuals [dB]; 0 means plain least squares. Robust against walls.
-  double huber_db = 0.0;
-  int max_iterations = 60;
-  /// A second minimum is reported when its cost exceeds the best by less than this many
-  /// sigma^2 (chi-square, 2 degrees of freedom, 95 %: 5.99).
-  double twin_chi2 = 5.99;
-  double min_twin_separation = 2.0;  ///< [m] closer minima are the same hypothesis
-  int grid_cells = 24;               ///< start grid cells per axis
-  double grid_margin = 15.0;         ///< [m] the grid extends this far beyond the chunks
-  double coarse_chunk = 1.0;         ///< [m] chunks merged to this size to score the grid
+  double credible_mass = 0.95;  ///< of the stated region
+  /// Two modes are ambiguous when the weaker has at least this share of the stronger's
+  /// probability (exp(-3.84 / 2): a likelihood-ratio test at 95 %, one degree of freedom).
+  double ambiguity_ratio = 0.1466;
+  double min_mode_separation = 2.0;       ///< [m] closer modes are one hypothesis
+  double min_reported_probability = 0.01; ///< weaker modes are not listed
+  /// The search grid reaches this far beyond the scans: at least `min_margin`, at most
+  /// `max_margin`, else 1.5 times the median distance the heard readings imply [m].
+  double min_margin = 10.0, max_margin = 40.0;
+  /// The exponent is estimated (with its prior) only where the heard scans' information about
+  /// it, at the first fit, is at least this many times the prior's (1: the data would halve the
+  /// prior's variance); elsewhere it is fixed at the assumed value (a circle around the
+  /// emitter has nearly one distance: a free exponent lets far points fit as well).
+  double identified_information = 1.0;
 };
 
 struct RangeFitResult {
-  std::vector<Hypothesis> hypotheses;  ///< best first; empty when there are too few chunks
-  bool twin = false;                   ///< more than one hypothesis fits about as well
-  double sigma_db = 0.0;               ///< residual standard deviation per chunk [dB]
-  double residual_correlation = 0.0;   ///< lag-1 autocorrelation of consecutive chunks' residuals
-  double effective_chunks = 0.0;       ///< chunks times the effective-sample share
+  /// By probability, strongest first; empty without heard scans.
+  std::vector<Hypothesis> hypotheses;
+  /// The first two hypotheses are indistinguishable (see RangeFitParams::ambiguity_ratio).
+  bool ambiguous = false;
+  double sigma_db = 0.0;             ///< per scan, shadowing and fading (Tobit ML) [dB]
+  double correlated_share = 0.0;     ///< of the residual variance that is correlated
+  double correlation_length = 0.0;   ///< of the correlated part along the path [m]
+  double effective_share = 1.0;      ///< independent samples per scan the tempering uses
+  /// The path's distances tell the exponent (see identified_information): it was estimated;
+  /// otherwise it was fixed at the assumed value.
+  bool exponent_identified = false;
+  std::optional<PositionPosterior> posterior;
 };
 
-RangeFitResult fit_ranges(const std::vector<Chunk>& chunks, const GeometryAnalysis& geometry,
-                          const PathLossParams& path_loss, const RangeFitParams& params = {});
+RangeFitResult fit_ranges(const ScanSeries& scans, const PathLossParams& path_loss,
+                          const RangeFitParams& params = {},
+                          const std::vector<WallSegment>& walls = {});
+
+/// The side of the path `point` lies on (+1 left, -1 right, 0 within 1 cm), facing the
+/// direction of travel at the scan nearest to it.
+int side_of_path(const std::vector<Scan>& scans, const model::Vec2& point);
 
 }  // namespace rigdesign::localize

@@ -45,6 +45,30 @@ std::vector<Line> content_lines(const std::string& text, const std::string& file
   return lines;
 }
 
+std::optional<Field> comment_directive(const std::string& text, const std::string& key,
+                                       int* line_number) {
+  std::size_t begin = 0;
+  int number = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    ++number;
+    const std::string line = text.substr(begin, end - begin);
+    begin = end + 1;
+    const std::size_t hash = line.find_first_not_of(" \t");
+    if (hash == std::string::npos || line[hash] != '#') continue;
+    const std::size_t name = line.find_first_not_of(" \t", hash + 1);
+    if (name == std::string::npos || line.compare(name, key.size(), key) != 0) continue;
+    const std::size_t colon = name + key.size();
+    if (colon >= line.size() || line[colon] != ':') continue;
+    std::size_t value_end = line.size();
+    if (value_end > colon && line[value_end - 1] == '\r') --value_end;
+    *line_number = number;
+    return trimmed(line, colon + 1, value_end);
+  }
+  return std::nullopt;
+}
+
 std::vector<Field> split_fields(const std::string& line, char separator) {
   std::vector<Field> fields;
   if (separator == ' ') {

@@ -1,6 +1,7 @@
 #pragma once
 // Splitting log lines into located fields and parsing numbers with file:line:column errors,
 // shared by the RSSI, CO2 and ground-truth readers. Private to src/localize.
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +35,11 @@ double parse_number(const Field& field, const model::SourceLocation& where,
 /// Index of `name` in the header, or throws InputError (line 1) listing what is required.
 std::size_t require_column(const std::vector<Field>& header, const std::string& name,
                            const std::string& file, int line, const std::string& expected_header);
+
+/// The value of a `# key: value` comment line (the first one), located for messages; empty
+/// when the text has none. Keys are matched whole and case-sensitively.
+std::optional<Field> comment_directive(const std::string& text, const std::string& key,
+                                       int* line_number);
 
 /// The whole file as a string; InputError (field "file") when it cannot be read.
 std::string read_text_file(const std::string& path);

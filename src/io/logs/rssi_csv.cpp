@@ -15,6 +15,35 @@ using csv::Field;
 constexpr const char* kRssiHeader = "t,x,y,z,bssid,rssi";
 constexpr int kDigits = 10;  // enough to reproduce positions to 0.1 um and RSSI exactly
 
+// `# floor_dbm: -95` and `# scan_period_s: 1`: what the receiver reports down to, and how
+// often it scans.
+void read_receiver_comments(const std::string& text, const std::string& file,
+                            localize::RssiLog* log) {
+  int line = 0;
+  if (const auto floor = csv::comment_directive(text, "floor_dbm", &line)) {
+    const double value = csv::parse_number(*floor, {file, line, floor->column}, "floor_dbm");
+    if (value > 0.0) {
+      throw model::InputError(
+          model::Diagnostic{{file, line, floor->column},
+                            "floor_dbm",
+                            "is " + model::format_number(value) + " dBm, above 0 dBm",
+                            "the weakest level the receiver reports, in dBm (<= 0), e.g. -95"});
+    }
+    log->floor_dbm = value;
+  }
+  if (const auto period = csv::comment_directive(text, "scan_period_s", &line)) {
+    const double value =
+        csv::parse_number(*period, {file, line, period->column}, "scan_period_s");
+    if (!(value > 0.0 && value <= 3600.0)) {
+      throw model::InputError(model::Diagnostic{{file, line, period->column},
+                                                "scan_period_s",
+                                                "is " + model::format_number(value) + " s",
+                                                "seconds between scans, in (0, 3600], e.g. 1"});
+    }
+    log->scan_period_s = value;
+  }
+}
+
 }  // namespace
 
 localize::RssiLog parse_rssi_csv(const std::string& text, const std::string& file) {
@@ -64,13 +93,16 @@ localize::RssiLog parse_rssi_csv(const std::string& text, const std::string& fil
                                                 "is empty",
                                                 "the emitter's BSSID, e.g. aa:bb:cc:dd:ee:ff"});
     }
-    reading.rssi_dbm = number_at(5);
+    // An empty rssi is a scan that did not hear the emitter (below the receiver's floor).
+    reading.heard = !field(5).text.empty();
+    reading.rssi_dbm = reading.heard ? number_at(5) : 0.0;
     if (reading.rssi_dbm > 0.0) {
       throw model::InputError(
           model::Diagnostic{{file, number, field(5).column},
                             "rssi",
                             "is " + model::format_number(reading.rssi_dbm) + " dBm, above 0 dBm",
-                            "a received power in dBm, <= 0"});
+                            "a received power in dBm, <= 0, or empty for a scan that did not hear "
+                            "the emitter"});
     }
     const auto [it, inserted] =
         emitter_of.try_emplace(bssid.text, static_cast<int>(log.emitters.size()));
@@ -85,6 +117,7 @@ localize::RssiLog parse_rssi_csv(const std::string& text, const std::string& fil
                           "has a header but no readings",
                           "at least one line t,x,y,z,bssid,rssi after the header"});
   }
+  read_receiver_comments(text, file, &log);
   return log;
 }
 
@@ -93,14 +126,18 @@ localize::RssiLog read_rssi_log(const std::string& path) {
 }
 
 std::string to_rssi_csv(const localize::RssiLog& log) {
-  std::string text = std::string(kRssiHeader) + "\n";
+  std::string text;
+  if (log.floor_dbm) text += "# floor_dbm: " + model::format_number(*log.floor_dbm, kDigits) + "\n";
+  if (log.scan_period_s)
+    text += "# scan_period_s: " + model::format_number(*log.scan_period_s, kDigits) + "\n";
+  text += std::string(kRssiHeader) + "\n";
   for (const localize::RssiReading& r : log.readings) {
     text += model::format_number(r.t, kDigits) + "," +
             model::format_number(r.position.x(), kDigits) + "," +
             model::format_number(r.position.y(), kDigits) + "," +
             model::format_number(r.position.z(), kDigits) + "," +
             log.emitters[static_cast<std::size_t>(r.emitter)] + "," +
-            model::format_number(r.rssi_dbm, kDigits) + "\n";
+            (r.heard ? model::format_number(r.rssi_dbm, kDigits) : std::string()) + "\n";
   }
   return text;
 }

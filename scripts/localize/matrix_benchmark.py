@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""The localisation test matrix: RSSI logs from an independent generator whose model differs from
+the range fit's assumptions (exponent 2.0-3.5, shadowing 3-8 dB as a 2D random field correlated
+over 0.5-5 m, fast fading 0-4 dB, phone level -48..-38 dBm against the assumed -45, a -95 dBm
+floor that drops or blank-marks weak scans), run through `rigdesign localize --method all`, and
+summarised per path class: mean error of each method, the better estimator's ratio to paper 4's
+WLS, and how often the truth lies in each method's stated 95 % region.
+
+Usage: matrix_benchmark.py RIGDESIGN [--runs-per-path 50] [--seed 1] [--out DIR] [--json FILE]
+                           [--extra ARG ...]
+Standard library only. The error of the range fit (nls) is its probability-weighted error over
+its hypotheses (the error of the stated belief: ambiguous hypotheses are not ranked by accident);
+paper 4's methods report one point.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+GENERATOR = os.path.join(HERE, "independent_rssi_generator.py")
+METHODS = ("wls", "nls", "map")
+
+
+def generate(out, runs, seed):
+    """Writes the matrix (logs, truth, walls, manifest.csv) into `out` and reads the manifest."""
+    subprocess.run([sys.executable, GENERATOR, "--matrix", str(runs), "--seed", str(seed),
+                    "--out", out], check=True)
+    with open(os.path.join(out, "manifest.csv"), newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def merged_truth(out, manifest):
+    """One truth file for every run (BSSIDs are unique per run), so one call reads all logs."""
+    path = os.path.join(out, "all_truth.csv")
+    with open(path, "w", newline="\n") as f:
+        f.write("bssid,x,y,z\n")
+        for run in manifest:
+            f.write(f"{run['bssid']},{run['phone_x']},{run['phone_y']},{run['phone_z']}\n")
+    return path
+
+
+def localize(rigdesign, out, manifest, truth, extra):
+    logs = [os.path.join(out, run["stem"] + "_rssi.csv") for run in manifest]
+    command = [rigdesign, "localize", "--method", "all", "--checkpoints", "0", "--json",
+               "--truth", truth] + extra
+    for log in logs:
+        command += ["--log", log]
+    started = time.perf_counter()
+    result = subprocess.run(command, check=True, capture_output=True, text=True)
+    return json.loads(result.stdout), time.perf_counter() - started
+
+
+def error_of(emitter):
+    """The method's error: probability-weighted over its hypotheses (inf when unsolved)."""
+    kpis = emitter.get("kpis", {})
+    value = kpis.get("expected_error_m")
+    return math.inf if value is None else float(value)
+
+
+def summarise(manifest, report):
+    rows = {}
+    for run, log in zip(manifest, report["logs"]):
+        for emitter in log["emitters"]:
+            key = (run["path"], emitter["method"])
+            row = rows.setdefault(key, {"errors": [], "first": [], "inside": 0, "runs": 0,
+                                        "ambiguous": 0})
+            row["runs"] += 1
+            row["errors"].append(error_of(emitter))
+            row["first"].append(float(emitter["kpis"]["error_m"] or math.inf)
+                                if emitter.get("kpis") else math.inf)
+            row["inside"] += 1 if emitter.get("kpis", {}).get("in_region") else 0
+            row["ambiguous"] += 1 if emitter.get("ambiguous") else 0
+    return rows
+
+
+def mean(values):
+    finite = [v for v in values if math.isfinite(v)]
+    return sum(finite) / len(finite) if finite else math.inf
+
+
+def median(values):
+    ordered = sorted(values)
+    n = len(ordered)
+    return (ordered[n // 2] if n % 2 else 0.5 * (ordered[n // 2 - 1] + ordered[n // 2])) if n else math.inf
+
+
+def wilson(successes, n, z=1.96):
+    """95 % Wilson interval of a proportion."""
+    if n == 0:
+        return (0.0, 1.0)
+    p = successes / n
+    centre = (p + z * z / (2 * n)) / (1 + z * z / n)
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+    return (centre - half, centre + half)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("rigdesign")
+    parser.add_argument("--runs-per-path", type=int, default=50)
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--out", help="keep the generated logs here (default: a temporary folder)")
+    parser.add_argument("--json", help="write the summary as JSON here")
+    parser.add_argument("--extra", nargs=argparse.REMAINDER, default=[],
+                        help="further arguments for rigdesign localize")
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as temporary:
+        out = args.out or temporary
+        os.makedirs(out, exist_ok=True)
+        manifest = generate(out, args.runs_per_path, args.seed)
+        report, seconds = localize(args.rigdesign, out, manifest, merged_truth(out, manifest),
+                                   args.extra)
+    rows = summarise(manifest, report)
+    paths = sorted({run["path"] for run in manifest}, key=["loop", "corner", "room", "hallway"].index)
+    print(f"{len(manifest)} logs ({args.runs_per_path} per path, seed {args.seed}); "
+          f"rigdesign localize --method all took {seconds:.1f} s")
+    print(f"{'path':8} {'method':6} {'runs':>4} {'mean m':>8} {'median m':>8} {'first mean':>10} "
+          f"{'in 95 %':>8} {'ambiguous':>9}")
+    summary = {"runs_per_path": args.runs_per_path, "seed": args.seed, "classes": {}}
+    totals = {m: {"errors": [], "inside": 0, "runs": 0} for m in METHODS}
+    for path in paths:
+        for method in METHODS:
+            row = rows[(path, method)]
+            totals[method]["errors"] += row["errors"]
+            totals[method]["inside"] += row["inside"]
+            totals[method]["runs"] += row["runs"]
+            print(f"{path:8} {method:6} {row['runs']:4d} {mean(row['errors']):8.2f} "
+                  f"{median(row['errors']):8.2f} {mean(row['first']):10.2f} "
+                  f"{row['inside']:4d}/{row['runs']:<3d} {row['ambiguous']:9d}")
+            summary["classes"].setdefault(path, {})[method] = {
+                "mean_m": mean(row["errors"]), "median_m": median(row["errors"]),
+                "first_mean_m": mean(row["first"]), "in_region": row["inside"],
+                "runs": row["runs"], "ambiguous": row["ambiguous"]}
+    print()
+    for path in paths:
+        ratio = mean(rows[(path, "nls")]["errors"]) / mean(rows[(path, "wls")]["errors"])
+        print(f"{path:8} nls / wls mean error = {ratio:.2f} (target <= 1.10)")
+        summary["classes"][path]["nls_over_wls"] = ratio
+    overall = mean(totals["nls"]["errors"]) / mean(totals["wls"]["errors"])
+    print(f"all      nls / wls mean error = {overall:.2f} (target <= 0.60)")
+    summary["nls_over_wls"] = overall
+    for method in METHODS:
+        inside, runs = totals[method]["inside"], totals[method]["runs"]
+        low, high = wilson(inside, runs)
+        print(f"{method}: truth in the stated 95 % region in {inside}/{runs} = "
+              f"{100.0 * inside / runs:.1f} % (95 % interval {100 * low:.1f}-{100 * high:.1f} %)")
+        summary.setdefault("coverage", {})[method] = inside / runs
+    if args.json:
+        with open(args.json, "w", newline="\n") as f:
+            json.dump(summary, f, indent=2)
+
+
+if __name__ == "__main__":
+    main()

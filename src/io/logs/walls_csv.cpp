@@ -1,0 +1,70 @@
+#include "rigdesign/io/logs/walls_csv.hpp"
+
+#include <array>
+
+#include "io/logs/csv_fields.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
+
+namespace rigdesign::io {
+namespace {
+
+constexpr const char* kWallsHeader = "x1,y1,x2,y2,attenuation_db";
+constexpr int kWallDigits = 10;
+
+}  // namespace
+
+std::vector<localize::WallSegment> parse_walls_csv(const std::string& text,
+                                                   const std::string& file) {
+  const auto lines = csv::content_lines(text, file);
+  if (lines.empty())
+    throw model::InputError(model::Diagnostic{
+        {file, 0, 0}, "data", "is empty", std::string("a header ") + kWallsHeader});
+  const auto header = csv::split_fields(lines.front().text, ',');
+  const std::array<std::string, 5> names = {"x1", "y1", "x2", "y2", "attenuation_db"};
+  std::array<std::size_t, 5> index{};
+  for (std::size_t i = 0; i < names.size(); ++i)
+    index[i] = csv::require_column(header, names[i], file, lines.front().number, kWallsHeader);
+  std::vector<localize::WallSegment> walls;
+  for (std::size_t l = 1; l < lines.size(); ++l) {
+    const auto fields = csv::split_fields(lines[l].text, ',');
+    std::array<double, 5> value{};
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (index[i] >= fields.size()) {
+        throw model::InputError(
+            model::Diagnostic{{file, lines[l].number, static_cast<int>(lines[l].text.size()) + 1},
+                              names[i],
+                              "is missing",
+                              std::string("one field per header column (") + kWallsHeader + ")"});
+      }
+      const auto& f = fields[index[i]];
+      value[i] = csv::parse_number(f, {file, lines[l].number, f.column}, names[i]);
+    }
+    if (value[4] < 0.0) {
+      const auto& f = fields[index[4]];
+      throw model::InputError(model::Diagnostic{{file, lines[l].number, f.column},
+                                                "attenuation_db",
+                                                "is " + model::format_number(value[4]) + " dB",
+                                                "a loss in dB, >= 0, e.g. 8"});
+    }
+    walls.push_back({{value[0], value[1]}, {value[2], value[3]}, value[4]});
+  }
+  return walls;
+}
+
+std::vector<localize::WallSegment> read_walls_csv(const std::string& path) {
+  return parse_walls_csv(csv::read_text_file(path), path);
+}
+
+std::string to_walls_csv(const std::vector<localize::WallSegment>& walls) {
+  std::string text = std::string(kWallsHeader) + "\n";
+  for (const localize::WallSegment& w : walls) {
+    text += model::format_number(w.a.x(), kWallDigits) + "," + model::format_number(w.a.y(), kWallDigits) +
+            "," + model::format_number(w.b.x(), kWallDigits) + "," +
+            model::format_number(w.b.y(), kWallDigits) + "," +
+            model::format_number(w.attenuation_db, kWallDigits) + "\n";
+  }
+  return text;
+}
+
+}  // namespace rigdesign::io

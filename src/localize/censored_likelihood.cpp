@@ -1,0 +1,220 @@
+#include "censored_likelihood.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <utility>
+
+namespace rigdesign::localize::detail {
+namespace {
+
+constexpr double kDeepTail = -30.0;  // below this z, the tail expansions replace erfc
+constexpr int kNewtonSteps = 12;
+
+// The censored cells of one position: count, log distance and wall loss.
+struct CensoredTerm {
+  double count, log_distance, wall;
+};
+
+}  // namespace
+
+double log_normal_cdf(double z) {
+  if (z > kDeepTail) return std::log(0.5 * std::erfc(-z / std::numbers::sqrt2));
+  // Mills' expansion: Phi(z) ~ phi(z) / -z (1 - 1/z^2).
+  return -0.5 * z * z - std::log(-z) - 0.5 * std::log(2 * std::numbers::pi) +
+         std::log1p(-1.0 / (z * z));
+}
+
+double inverse_mills_ratio(double z) {
+  if (z > kDeepTail) {
+    const double pdf = std::exp(-0.5 * z * z) / std::sqrt(2 * std::numbers::pi);
+    return pdf / (0.5 * std::erfc(-z / std::numbers::sqrt2));
+  }
+  return -z / (1.0 - 1.0 / (z * z));
+}
+
+std::vector<ScanCell> merge_scans(const std::vector<Scan>& scans, double size) {
+  std::map<std::pair<long long, long long>, std::size_t> index_of;
+  std::vector<ScanCell> cells;
+  std::vector<double> counts;
+  for (const Scan& scan : scans) {
+    const model::Vec2 p = scan.position.head<2>();
+    const std::pair<long long, long long> key = {static_cast<long long>(std::floor(p.x() / size)),
+                                                 static_cast<long long>(std::floor(p.y() / size))};
+    const auto [it, inserted] = index_of.try_emplace(key, cells.size());
+    if (inserted) {
+      cells.emplace_back();
+      counts.push_back(0.0);
+    }
+    ScanCell& cell = cells[it->second];
+    double& count = counts[it->second];
+    cell.position = (cell.position * count + p) / (count + 1.0);
+    count += 1.0;
+    if (scan.heard) {
+      cell.heard += 1.0;
+      cell.rssi_sum += scan.rssi_dbm;
+      cell.rssi_square_sum += scan.rssi_dbm * scan.rssi_dbm;
+    } else {
+      cell.unheard += 1.0;
+    }
+  }
+  return cells;
+}
+
+CensoredLikelihood::CensoredLikelihood(std::vector<ScanCell> cells, LikelihoodSettings settings)
+    : cells_(std::move(cells)), settings_(std::move(settings)) {}
+
+double CensoredLikelihood::log_distance(const model::Vec2& q, const model::Vec2& p) const {
+  const double h = settings_.vertical_offset;
+  return 5.0 * std::log10((q - p).squaredNorm() + h * h + 1e-6);  // 10 log10 d
+}
+
+double CensoredLikelihood::wall_loss(const model::Vec2& q, const model::Vec2& p) const {
+  return settings_.walls.empty() ? 0.0 : wall_loss_db(settings_.walls, p, q);
+}
+
+ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
+  const LikelihoodSettings& s = settings_;
+  const bool fit_exponent = s.exponent_sd > 0.0;
+  // Heard scans: the squared residuals are a quadratic in (a, n) whose coefficients are sums.
+  double C = 0, CL = 0, CLL = 0, Y = 0, YL = 0, Q = 0;
+  thread_local std::vector<CensoredTerm> censored;
+  censored.clear();
+  double nearest = std::numeric_limits<double>::infinity();  // squared, to the scans
+  for (const ScanCell& cell : cells_) {
+    nearest = std::min(nearest, (q - cell.position).squaredNorm());
+    const double L = log_distance(q, cell.position);
+    const double W = wall_loss(q, cell.position);
+    if (cell.heard > 0) {
+      const double y = cell.rssi_sum + cell.heard * W;  // sum of (y + W)
+      C += cell.heard;
+      CL += cell.heard * L;
+      CLL += cell.heard * L * L;
+      Y += y;
+      YL += L * y;
+      Q += cell.rssi_square_sum + 2 * W * cell.rssi_sum + cell.heard * W * W;
+    }
+    if (cell.unheard > 0) censored.push_back({cell.unheard, L, W});
+  }
+  const double k = s.effective_share;
+  const double inv_var = 1.0 / (s.sigma_db * s.sigma_db);
+  const double prior_a = 1.0 / (s.level_sd_db * s.level_sd_db);
+  const double prior_n = fit_exponent ? 1.0 / (s.exponent_sd * s.exponent_sd) : 0.0;
+
+  // The objective, its gradient and Hessian in (a, n).
+  const auto evaluate = [&](double a, double n, Eigen::Vector2d* g, Eigen::Matrix2d* H) {
+    const double squares = Q - 2 * a * Y + 2 * n * YL + a * a * C - 2 * a * n * CL + n * n * CLL;
+    double value = -0.5 * k * inv_var * squares;
+    Eigen::Vector2d grad(k * inv_var * (Y - a * C + n * CL),
+                         k * inv_var * (-YL + a * CL - n * CLL));
+    Eigen::Matrix2d hess;
+    hess << -C, CL, CL, -CLL;
+    hess *= k * inv_var;
+    for (const CensoredTerm& t : censored) {
+      const double z = (s.floor_dbm - a + n * t.log_distance + t.wall) / s.sigma_db;
+      value += k * t.count * log_normal_cdf(z);
+      const double lambda = inverse_mills_ratio(z);
+      const double kappa = lambda * (z + lambda);
+      const double scale = k * t.count / s.sigma_db;
+      grad(0) -= scale * lambda;
+      grad(1) += scale * lambda * t.log_distance;
+      const double curvature = k * t.count * kappa * inv_var;
+      hess(0, 0) -= curvature;
+      hess(0, 1) += curvature * t.log_distance;
+      hess(1, 0) += curvature * t.log_distance;
+      hess(1, 1) -= curvature * t.log_distance * t.log_distance;
+    }
+    value -= 0.5 * prior_a * (a - s.level_dbm) * (a - s.level_dbm);
+    grad(0) -= prior_a * (a - s.level_dbm);
+    hess(0, 0) -= prior_a;
+    if (fit_exponent) {
+      value -= 0.5 * prior_n * (n - s.exponent) * (n - s.exponent);
+      grad(1) -= prior_n * (n - s.exponent);
+      hess(1, 1) -= prior_n;
+    }
+    *g = grad;
+    *H = hess;
+    return value;
+  };
+
+  // Start: the heard scans alone (a linear least-squares problem with the priors).
+  double a = s.level_dbm, n = s.exponent;
+  if (fit_exponent) {
+    Eigen::Matrix2d A;
+    A << k * inv_var * C + prior_a, -k * inv_var * CL, -k * inv_var * CL,
+        k * inv_var * CLL + prior_n;
+    const Eigen::Vector2d b(k * inv_var * Y + prior_a * s.level_dbm,
+                            -k * inv_var * YL + prior_n * s.exponent);
+    const Eigen::Vector2d x = A.partialPivLu().solve(b);
+    a = x(0);
+    n = x(1);
+  } else {
+    a = (k * inv_var * (Y + n * CL) + prior_a * s.level_dbm) / (k * inv_var * C + prior_a);
+  }
+  Eigen::Vector2d g;
+  Eigen::Matrix2d H;
+  double value = evaluate(a, n, &g, &H);
+  for (int step = 0; step < kNewtonSteps; ++step) {
+    Eigen::Vector2d delta;
+    if (fit_exponent) {
+      delta = -H.partialPivLu().solve(g);
+    } else {
+      delta = Eigen::Vector2d(-g(0) / H(0, 0), 0.0);
+    }
+    // Concave, but a full Newton step can overshoot where log Phi bends: halve until it gains.
+    double factor = 1.0;
+    Eigen::Vector2d g_new;
+    Eigen::Matrix2d H_new;
+    double value_new = evaluate(a + delta(0), n + delta(1), &g_new, &H_new);
+    while (value_new < value - 1e-12 && factor > 1e-3) {
+      factor *= 0.5;
+      value_new = evaluate(a + factor * delta(0), n + factor * delta(1), &g_new, &H_new);
+    }
+    if (value_new < value - 1e-12) break;
+    a += factor * delta(0);
+    n += factor * delta(1);
+    value = value_new;
+    g = g_new;
+    H = H_new;
+    if (std::abs(factor * delta(0)) < 1e-6 && std::abs(factor * delta(1)) < 1e-8) break;
+  }
+  if (s.path_prior_scale > 0) value -= std::sqrt(nearest) / s.path_prior_scale;
+  ProfilePoint point;
+  point.level_dbm = a;
+  point.exponent = n;
+  if (fit_exponent) {
+    const Eigen::Matrix2d information = -H;
+    const double det = std::max(information.determinant(), 1e-300);
+    point.log_density = value - 0.5 * std::log(det);
+    const Eigen::Matrix2d covariance = information.inverse();
+    point.level_sd_db = std::sqrt(std::max(covariance(0, 0), 0.0));
+    point.exponent_sd = std::sqrt(std::max(covariance(1, 1), 0.0));
+  } else {
+    const double information = std::max(-H(0, 0), 1e-300);
+    point.log_density = value - 0.5 * std::log(information);
+    point.level_sd_db = std::sqrt(1.0 / information);
+  }
+  return point;
+}
+
+double CensoredLikelihood::log_likelihood(const model::Vec2& q, double level_dbm, double exponent,
+                                          double sigma_db) const {
+  double sum = 0.0;
+  for (const ScanCell& cell : cells_) {
+    const double mu =
+        level_dbm - exponent * log_distance(q, cell.position) - wall_loss(q, cell.position);
+    if (cell.heard > 0) {
+      const double squares =
+          cell.rssi_square_sum - 2 * mu * cell.rssi_sum + cell.heard * mu * mu;
+      sum += -cell.heard * std::log(sigma_db) - 0.5 * squares / (sigma_db * sigma_db);
+    }
+    if (cell.unheard > 0)
+      sum += cell.unheard * log_normal_cdf((settings_.floor_dbm - mu) / sigma_db);
+  }
+  return sum;
+}
+
+}  // namespace rigdesign::localize::detail
