@@ -126,7 +126,14 @@ def other_seeds():
     ).encode()
     yield "co2_csv", "co2.txt", "".join(
         f"{50 + 0.3 * i} {0.8 - 0.2 * i} {499 - i}.0\n" for i in range(10)).encode()
+    yield "rssi_csv", "rssi_unheard.csv", (
+        "# floor_dbm: -95\n# scan_period_s: 1\nt,x,y,z,bssid,rssi\n" + "".join(
+            f"{i},{0.1 * i},0,0.4,02:00:00:00:00:01,{'' if i % 3 else -90 - i}\n"
+            for i in range(10))
+    ).encode()
     yield "emitter_truth_csv", "truth.csv", b"bssid,x,y,z\n02:00:00:00:00:01,3.5,-2,1.2\n"
+    yield "walls_csv", "walls.csv", (
+        b"x1,y1,x2,y2,attenuation_db\n-3,2,-0.5,2,8\n-0.5,2,0.5,2,3\n0.5,2,3,2,8\n")
     yield "artifacts_json", "artifacts.json", (
         b'{"artifacts": [{"id": 1, "type": "gas", "x": 14.3, "y": 43.5, "z": 2.0},'
         b' {"id": 2, "type": "vent", "x": -10.4, "y": 53.0, "z": 2.9}]}\n')

@@ -15,7 +15,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build/fuzz"
 own_targets=(rig_yaml sensors_yaml requirements_yaml catalog_yaml policy_yaml scene_yaml
   pipeline_yaml costmap_params_yaml filtering_loads_yaml artifacts_json cloud_pcd cloud_ply
-  mesh_obj mesh_off mesh_ply robot_urdf robot_xacro rssi_csv co2_csv emitter_truth_csv map_pgm)
+  mesh_obj mesh_off mesh_ply robot_urdf robot_xacro rssi_csv co2_csv emitter_truth_csv walls_csv
+  map_pgm)
 # Formats parsed by assimp: rigdesign only checks what comes out. assimp 5.2's own parsers
 # allocate without bound on some corrupt COLLADA files (docs/fuzzing.md), so these run in
 # campaigns (scripts/fuzz.sh mesh_dae 600), not in CI, where they would fail at random.

@@ -170,9 +170,13 @@ PosteriorSearch search_posterior(const std::vector<Scan>& scans,
   double chunk = kLevels[0].chunk;
   for (int level = 1; level < std::min(levels, 3); ++level) {
     const int factor = std::max(1, static_cast<int>(std::lround(grid.cell / kLevels[level].cell)));
-    if (cells_to_refine(grid, kLevels[level - 1].keep, factor) > kMaxFineCells) break;
+    // A broad posterior keeps many cells: narrow the band until the finer grid stays bounded
+    // (the strongest local maxima are refined whatever the band).
+    double keep = kLevels[level - 1].keep;
+    while (keep > 1.0 && cells_to_refine(grid, keep, factor) > kMaxFineCells) keep *= 0.5;
+    if (cells_to_refine(grid, keep, factor) > kMaxFineCells) break;
     chunk = kLevels[level].chunk;
-    grid = refine(grid, kLevels[level - 1].keep, factor,
+    grid = refine(grid, keep, factor,
                   CensoredLikelihood(merge_scans(scans, chunk), settings));
   }
 
