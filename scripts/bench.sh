@@ -5,6 +5,8 @@
 #   scripts/bench.sh coverage        # one Google Benchmark binary: coverage, select, costmap, localize
 #   scripts/bench.sh filters         # ours vs PCL (as shipped and serial), and the growth curve
 #   scripts/bench.sh occupancy       # ours vs OctoMap on the cell
+#   scripts/bench.sh localize_matrix # the localisation test matrix (independent generator):
+#                                    # errors against paper 4's WLS and 95 % region coverage
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 only="${1:-}"
@@ -28,4 +30,10 @@ for bench in "$build"/tests/bench/*_bench; do
       if [ -z "$only" ] || [ "$only" = "$name" ]; then "$bench" --benchmark_format=console; fi ;;
   esac
 done
+if [ -z "$only" ] || [ "$only" = "localize_matrix" ]; then
+  for seed in 1 2; do
+    python3 "$root/scripts/localize/matrix_benchmark.py" "$build/src/rigdesign" \
+      --runs-per-path 50 --seed "$seed"
+  done
+fi
 echo "load average after the run: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -7,7 +7,7 @@ summarised per path class: mean error of each method, the better estimator's rat
 WLS, and how often the truth lies in each method's stated 95 % region.
 
 Usage: matrix_benchmark.py RIGDESIGN [--runs-per-path 50] [--seed 1] [--out DIR] [--json FILE]
-                           [--extra ARG ...]
+                           [--with-walls] [--extra ARG ...]
 Standard library only. The error of the range fit (nls) is its probability-weighted error over
 its hypotheses (the error of the stated belief: ambiguous hypotheses are not ranked by accident);
 paper 4's methods report one point.
@@ -45,15 +45,24 @@ def merged_truth(out, manifest):
     return path
 
 
-def localize(rigdesign, out, manifest, truth, extra):
-    logs = [os.path.join(out, run["stem"] + "_rssi.csv") for run in manifest]
+def localize(rigdesign, out, manifest, truth, extra, with_walls):
+    """One call over every log, or with the generator's wall maps one call per log (--walls)."""
     command = [rigdesign, "localize", "--method", "all", "--checkpoints", "0", "--json",
                "--truth", truth] + extra
-    for log in logs:
-        command += ["--log", log]
+    logs = [os.path.join(out, run["stem"] + "_rssi.csv") for run in manifest]
     started = time.perf_counter()
-    result = subprocess.run(command, check=True, capture_output=True, text=True)
-    return json.loads(result.stdout), time.perf_counter() - started
+    if not with_walls:
+        for log in logs:
+            command += ["--log", log]
+        result = subprocess.run(command, check=True, capture_output=True, text=True)
+        return json.loads(result.stdout), time.perf_counter() - started
+    report = {"logs": []}
+    for run, log in zip(manifest, logs):
+        walls = os.path.join(out, run["stem"] + "_walls.csv")
+        result = subprocess.run(command + ["--log", log, "--walls", walls], check=True,
+                                capture_output=True, text=True)
+        report["logs"] += json.loads(result.stdout)["logs"]
+    return report, time.perf_counter() - started
 
 
 def error_of(emitter):
@@ -69,13 +78,16 @@ def summarise(manifest, report):
         for emitter in log["emitters"]:
             key = (run["path"], emitter["method"])
             row = rows.setdefault(key, {"errors": [], "first": [], "inside": 0, "runs": 0,
-                                        "ambiguous": 0})
+                                        "ambiguous": 0, "levels": []})
             row["runs"] += 1
             row["errors"].append(error_of(emitter))
             row["first"].append(float(emitter["kpis"]["error_m"] or math.inf)
                                 if emitter.get("kpis") else math.inf)
             row["inside"] += 1 if emitter.get("kpis", {}).get("in_region") else 0
             row["ambiguous"] += 1 if emitter.get("ambiguous") else 0
+            level = emitter.get("kpis", {}).get("credible_level")
+            if level is not None:
+                row["levels"].append(float(level))
     return rows
 
 
@@ -107,6 +119,8 @@ def main():
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--out", help="keep the generated logs here (default: a temporary folder)")
     parser.add_argument("--json", help="write the summary as JSON here")
+    parser.add_argument("--with-walls", action="store_true",
+                        help="give the range fit each log's wall map (--walls)")
     parser.add_argument("--extra", nargs=argparse.REMAINDER, default=[],
                         help="further arguments for rigdesign localize")
     args = parser.parse_args()
@@ -115,21 +129,23 @@ def main():
         os.makedirs(out, exist_ok=True)
         manifest = generate(out, args.runs_per_path, args.seed)
         report, seconds = localize(args.rigdesign, out, manifest, merged_truth(out, manifest),
-                                   args.extra)
+                                   args.extra, args.with_walls)
     rows = summarise(manifest, report)
     paths = sorted({run["path"] for run in manifest}, key=["loop", "corner", "room", "hallway"].index)
-    print(f"{len(manifest)} logs ({args.runs_per_path} per path, seed {args.seed}); "
+    print(f"{len(manifest)} logs ({args.runs_per_path} per path, seed {args.seed}"
+          f"{', wall maps given' if args.with_walls else ''}); "
           f"rigdesign localize --method all took {seconds:.1f} s")
     print(f"{'path':8} {'method':6} {'runs':>4} {'mean m':>8} {'median m':>8} {'first mean':>10} "
           f"{'in 95 %':>8} {'ambiguous':>9}")
     summary = {"runs_per_path": args.runs_per_path, "seed": args.seed, "classes": {}}
-    totals = {m: {"errors": [], "inside": 0, "runs": 0} for m in METHODS}
+    totals = {m: {"errors": [], "inside": 0, "runs": 0, "levels": []} for m in METHODS}
     for path in paths:
         for method in METHODS:
             row = rows[(path, method)]
             totals[method]["errors"] += row["errors"]
             totals[method]["inside"] += row["inside"]
             totals[method]["runs"] += row["runs"]
+            totals[method]["levels"] += row["levels"]
             print(f"{path:8} {method:6} {row['runs']:4d} {mean(row['errors']):8.2f} "
                   f"{median(row['errors']):8.2f} {mean(row['first']):10.2f} "
                   f"{row['inside']:4d}/{row['runs']:<3d} {row['ambiguous']:9d}")
@@ -151,6 +167,13 @@ def main():
         print(f"{method}: truth in the stated 95 % region in {inside}/{runs} = "
               f"{100.0 * inside / runs:.1f} % (95 % interval {100 * low:.1f}-{100 * high:.1f} %)")
         summary.setdefault("coverage", {})[method] = inside / runs
+        levels = totals[method]["levels"]
+        if levels:
+            # Calibrated regions hold the truth at level q in a share q of the runs.
+            shares = {q: sum(1 for v in levels if v <= q) / len(levels) for q in (0.5, 0.9, 0.95)}
+            print("   truth within the highest-density region of " + ", ".join(
+                f"{int(100 * q)} %: {100 * share:.1f} %" for q, share in shares.items()))
+            summary.setdefault("calibration", {})[method] = shares
     if args.json:
         with open(args.json, "w", newline="\n") as f:
             json.dump(summary, f, indent=2)

@@ -133,8 +133,9 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   require_option(options.prefer_side.empty() || options.prefer_side == "left" ||
                      options.prefer_side == "right",
                  "--prefer-side", "is '" + options.prefer_side + "'", "left or right");
-  resolved.params.prefer_side =
-      options.prefer_side == "left" ? 1 : options.prefer_side == "right" ? -1 : 0;
+  resolved.params.prefer_side = options.prefer_side == "left"    ? 1
+                                : options.prefer_side == "right" ? -1
+                                                                 : 0;
   if (!std::isnan(options.floor_dbm)) resolved.params.scans.floor_dbm = options.floor_dbm;
   if (!std::isnan(options.scan_period_s))
     resolved.params.scans.scan_period_s = options.scan_period_s;
@@ -192,6 +193,11 @@ Command setup_localize(CLI::App& parent) {
                   "nls: prior sd of the exponent about --exponent (0: fixed)")
       ->capture_default_str()
       ->check(finite_in(0, 10, "0 or a sd in (0, 10]"));
+  app->add_option("--path-prior", options->params.fit.path_prior_scale,
+                  "nls: prior on the position falling as exp(-distance from the path / M) "
+                  "(0: uniform over the search box) [m]")
+      ->capture_default_str()
+      ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"));
   app->add_flag("!--no-correlation", options->params.fit.correlated_shadowing,
                 "nls: treat scans as independent (no tempering for correlated shadowing)");
   app->add_option("--floor", options->floor_dbm,

@@ -39,7 +39,9 @@ nlohmann::json to_json(const localize::Hypothesis& h) {
   return {{"position", to_json(h.position)},
           {"covariance", covariance},
           {"probability", h.probability},
-          {"side", h.side > 0 ? "left" : h.side < 0 ? "right" : "on the path"},
+          {"side", h.side > 0   ? "left"
+                   : h.side < 0 ? "right"
+                                : "on the path"},
           {"rssi_at_1m_dbm", h.rssi_at_1m_dbm},
           {"rssi_at_1m_sd_db", h.level_sd_db},
           {"exponent", h.exponent},
@@ -89,18 +91,17 @@ void report_fit(const localize::EmitterEstimate& estimate, const LocalizeOptions
   out << "; scan period " << model::format_number(s.scan_period_s, 3) << " s\n";
   out << "  noise: sigma " << fixed(fit.sigma_db, 1) << " dB per scan, "
       << fixed(100.0 * fit.correlated_share, 0) << " % of it correlated over "
-      << fixed(fit.correlation_length, 2) << " m along the path: "
-      << fixed(fit.effective_share, 3) << " independent samples per scan\n";
+      << fixed(fit.correlation_length, 2) << " m along the path: " << fixed(fit.effective_share, 3)
+      << " independent samples per scan\n";
   if (!estimate.hypotheses.empty() && options.params.fit.exponent_prior > 0) {
     const localize::Hypothesis& h = estimate.hypotheses.front();
-    if (fit.exponent_identified) {
-      out << "  exponent " << fixed(h.exponent, 2) << " +- " << fixed(h.exponent_sd, 2)
-          << " (estimated: the path's spread of distances tells it)\n";
-    } else {
-      out << "  exponent fixed at " << model::format_number(options.params.path_loss.exponent)
-          << ": not identifiable on this path (its distances to the emitter hardly vary; a "
-             "path with near and far scans would tell it)\n";
-    }
+    out << "  exponent " << fixed(h.exponent, 2) << " +- " << fixed(h.exponent_sd, 2)
+        << (fit.exponent_identified
+                ? " (the path's spread of distances tells it)\n"
+                : " (not identifiable on this path: its distances to the emitter hardly vary, so "
+                  "the estimate rests on the prior " +
+                      model::format_number(options.params.path_loss.exponent) + " +- " +
+                      model::format_number(options.params.fit.exponent_prior) + ")\n");
   }
 }
 
@@ -116,7 +117,7 @@ void report_region(const localize::EmitterEstimate& estimate, const LocalizeOpti
     const auto& h = estimate.hypotheses;
     out << "  ambiguous: hypotheses 1 and 2 are indistinguishable (probabilities "
         << fixed(h[0].probability, 2) << " and " << fixed(h[1].probability, 2)
-        << ", closer than a 95 % likelihood-ratio test can separate); "
+        << "; their fits are closer than a 95 % likelihood-ratio test can separate); "
         << (estimate.tie_break.empty()
                 ? "their order is not evidence: --prefer-side left|right or --walls FILE can break "
                   "the tie"
@@ -124,8 +125,9 @@ void report_region(const localize::EmitterEstimate& estimate, const LocalizeOpti
         << '\n';
   }
   if (estimate.region) {
-    out << "  " << fixed(100.0 * estimate.region->credible_mass, 0) << " % region: "
-        << fixed(region_area(*estimate.region), 1) << " m^2 (highest posterior density)\n";
+    out << "  " << fixed(100.0 * estimate.region->credible_mass, 0)
+        << " % region: " << fixed(region_area(*estimate.region), 1)
+        << " m^2 (highest posterior density)\n";
   }
 }
 
@@ -160,8 +162,8 @@ nlohmann::json report_emitter(const localize::RssiLog& log, int emitter,
       out << " (every scan, heard or not)\n";
     } else {
       out << ", " << estimate.used << " heard at or above "
-          << model::format_number(options.params.path_loss.cutoff_dbm) << " dBm (paper 4's cut-off), "
-          << estimate.chunks.size() << " chunks\n";
+          << model::format_number(options.params.path_loss.cutoff_dbm)
+          << " dBm (paper 4's cut-off), " << estimate.chunks.size() << " chunks\n";
     }
     out << "  geometry: "
         << (g.dimensions == 3
@@ -198,15 +200,17 @@ nlohmann::json report_emitter(const localize::RssiLog& log, int emitter,
     const localize::EmitterKpis k =
         localize::evaluate_emitter(log, emitter, *truth, estimate, options.params, options.kpi);
     item["truth"] = to_json(*truth);
-    item["kpis"] = {{"error_m", k.final_error},
-                    {"nearest_hypothesis_error_m", k.nearest_hypothesis_error},
-                    {"expected_error_m", k.expected_error},
-                    {"in_region", k.in_region},
-                    {"running_smallest_m", k.running.smallest},
-                    {"running_mean_m", k.running.mean},
-                    {"running_rms_m", k.running.rms},
-                    {"detected", k.detected},
-                    {"heard_share", k.heard_share}};
+    item["kpis"] = {
+        {"error_m", k.final_error},
+        {"nearest_hypothesis_error_m", k.nearest_hypothesis_error},
+        {"expected_error_m", k.expected_error},
+        {"in_region", k.in_region},
+        {"credible_level", k.credible_level ? nlohmann::json(*k.credible_level) : nlohmann::json()},
+        {"running_smallest_m", k.running.smallest},
+        {"running_mean_m", k.running.mean},
+        {"running_rms_m", k.running.rms},
+        {"detected", k.detected},
+        {"heard_share", k.heard_share}};
     item["kpis"]["data_amount"] = k.data_amount ? nlohmann::json(*k.data_amount) : nlohmann::json();
     if (!options.json) {
       out << "  truth " << xyz(*truth, g.dimensions) << ": error " << fixed(k.final_error, 2)
@@ -216,8 +220,7 @@ nlohmann::json report_emitter(const localize::RssiLog& log, int emitter,
       if (k.running.count > 0) {
         out << "; running estimate smallest " << fixed(k.running.smallest, 2) << ", mean "
             << fixed(k.running.mean, 2) << ", RMS " << fixed(k.running.rms, 2) << " m; C = "
-            << (k.data_amount ? std::to_string(*k.data_amount) + " readings"
-                              : std::string("never"))
+            << (k.data_amount ? std::to_string(*k.data_amount) + " readings" : std::string("never"))
             << " (within " << model::format_number(options.kpi.acceptable_error) << " m)";
       }
       out << "; " << (k.detected ? "detected" : "not detected") << '\n';
@@ -303,8 +306,7 @@ int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& e
       << model::format_number(options.scenario_params.tx_offset_db) << " dB; errors of the first "
       << "hypothesis (expected: probability-weighted over the hypotheses; nearest: of the one "
       << "nearest the truth); in 95 %: runs whose truth lies in the stated region; C in "
-      << "readings to reach "
-      << model::format_number(options.kpi.acceptable_error) << " m\n";
+      << "readings to reach " << model::format_number(options.kpi.acceptable_error) << " m\n";
   table.print(out, "  ");
   return kOk;
 }

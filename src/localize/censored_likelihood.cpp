@@ -13,6 +13,10 @@ namespace {
 
 constexpr double kDeepTail = -30.0;  // below this z, the tail expansions replace erfc
 constexpr int kNewtonSteps = 12;
+// Newton stops when a step moves the level and exponent less than this: far below what the
+// data tell (tenths of a dB, hundredths of the exponent).
+constexpr double kLevelTolerance = 1e-4;  // [dB]
+constexpr double kExponentTolerance = 1e-5;
 
 // The censored cells of one position: count, log distance and wall loss.
 struct CensoredTerm {
@@ -21,19 +25,24 @@ struct CensoredTerm {
 
 }  // namespace
 
-double log_normal_cdf(double z) {
-  if (z > kDeepTail) return std::log(0.5 * std::erfc(-z / std::numbers::sqrt2));
+NormalTail normal_tail(double z) {
+  if (z > kDeepTail) {
+    const double cdf = 0.5 * std::erfc(-z / std::numbers::sqrt2);
+    const double pdf = std::exp(-0.5 * z * z) / std::sqrt(2 * std::numbers::pi);
+    return {std::log(cdf), pdf / cdf};
+  }
   // Mills' expansion: Phi(z) ~ phi(z) / -z (1 - 1/z^2).
-  return -0.5 * z * z - std::log(-z) - 0.5 * std::log(2 * std::numbers::pi) +
-         std::log1p(-1.0 / (z * z));
+  return {-0.5 * z * z - std::log(-z) - 0.5 * std::log(2 * std::numbers::pi) +
+              std::log1p(-1.0 / (z * z)),
+          -z / (1.0 - 1.0 / (z * z))};
+}
+
+double log_normal_cdf(double z) {
+  return normal_tail(z).log_cdf;
 }
 
 double inverse_mills_ratio(double z) {
-  if (z > kDeepTail) {
-    const double pdf = std::exp(-0.5 * z * z) / std::sqrt(2 * std::numbers::pi);
-    return pdf / (0.5 * std::erfc(-z / std::numbers::sqrt2));
-  }
-  return -z / (1.0 - 1.0 / (z * z));
+  return normal_tail(z).inverse_mills;
 }
 
 std::vector<ScanCell> merge_scans(const std::vector<Scan>& scans, double size) {
@@ -64,8 +73,12 @@ std::vector<ScanCell> merge_scans(const std::vector<Scan>& scans, double size) {
   return cells;
 }
 
-CensoredLikelihood::CensoredLikelihood(std::vector<ScanCell> cells, LikelihoodSettings settings)
-    : cells_(std::move(cells)), settings_(std::move(settings)) {}
+MergedScans merge_for_search(const std::vector<Scan>& scans) {
+  return {merge_scans(scans, 1.0), merge_scans(scans, 0.5)};
+}
+
+CensoredLikelihood::CensoredLikelihood(std::span<const ScanCell> cells, LikelihoodSettings settings)
+    : cells_(cells), settings_(std::move(settings)) {}
 
 double CensoredLikelihood::log_distance(const model::Vec2& q, const model::Vec2& p) const {
   const double h = settings_.vertical_offset;
@@ -115,8 +128,9 @@ ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
     hess *= k * inv_var;
     for (const CensoredTerm& t : censored) {
       const double z = (s.floor_dbm - a + n * t.log_distance + t.wall) / s.sigma_db;
-      value += k * t.count * log_normal_cdf(z);
-      const double lambda = inverse_mills_ratio(z);
+      const NormalTail tail = normal_tail(z);
+      value += k * t.count * tail.log_cdf;
+      const double lambda = tail.inverse_mills;
       const double kappa = lambda * (z + lambda);
       const double scale = k * t.count / s.sigma_db;
       grad(0) -= scale * lambda;
@@ -179,7 +193,9 @@ ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
     value = value_new;
     g = g_new;
     H = H_new;
-    if (std::abs(factor * delta(0)) < 1e-6 && std::abs(factor * delta(1)) < 1e-8) break;
+    if (std::abs(factor * delta(0)) < kLevelTolerance &&
+        std::abs(factor * delta(1)) < kExponentTolerance)
+      break;
   }
   if (s.path_prior_scale > 0) value -= std::sqrt(nearest) / s.path_prior_scale;
   ProfilePoint point;
@@ -207,8 +223,7 @@ double CensoredLikelihood::log_likelihood(const model::Vec2& q, double level_dbm
     const double mu =
         level_dbm - exponent * log_distance(q, cell.position) - wall_loss(q, cell.position);
     if (cell.heard > 0) {
-      const double squares =
-          cell.rssi_square_sum - 2 * mu * cell.rssi_sum + cell.heard * mu * mu;
+      const double squares = cell.rssi_square_sum - 2 * mu * cell.rssi_sum + cell.heard * mu * mu;
       sum += -cell.heard * std::log(sigma_db) - 0.5 * squares / (sigma_db * sigma_db);
     }
     if (cell.unheard > 0)

@@ -10,6 +10,7 @@
 // them and log Phi is concave), so Newton's method profiles them out in a few steps; a Laplace
 // term approximates their marginalisation. Private to src/localize.
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "rigdesign/localize/scan_series.hpp"
@@ -29,6 +30,15 @@ struct ScanCell {
 
 // Cells of edge `size` [m], in order of first visit.
 std::vector<ScanCell> merge_scans(const std::vector<Scan>& scans, double size);
+
+// The scans merged once at the two sizes the search uses: 1 m cells for the coarse grids, 0.5 m
+// cells for the finest grid, the peaks and the noise (merging moves distances of a few metres
+// by centimetres).
+struct MergedScans {
+  std::vector<ScanCell> metre;
+  std::vector<ScanCell> half_metre;
+};
+MergedScans merge_for_search(const std::vector<Scan>& scans);
 
 struct LikelihoodSettings {
   double floor_dbm = -95.0;
@@ -55,7 +65,8 @@ struct ProfilePoint {
 
 class CensoredLikelihood {
  public:
-  CensoredLikelihood(std::vector<ScanCell> cells, LikelihoodSettings settings);
+  // `cells` must outlive the likelihood (it is read, not copied: the search builds many).
+  CensoredLikelihood(std::span<const ScanCell> cells, LikelihoodSettings settings);
 
   // Maximises over (a, n) for the emitter at q.
   ProfilePoint profile(const model::Vec2& q) const;
@@ -66,18 +77,24 @@ class CensoredLikelihood {
                         double sigma_db) const;
 
   const LikelihoodSettings& settings() const { return settings_; }
-  const std::vector<ScanCell>& cells() const { return cells_; }
+  std::span<const ScanCell> cells() const { return cells_; }
 
   // 10 log10 of the distance the model uses, and the walls' attenuation, for a scan at p.
   double log_distance(const model::Vec2& q, const model::Vec2& p) const;
   double wall_loss(const model::Vec2& q, const model::Vec2& p) const;
 
  private:
-  std::vector<ScanCell> cells_;
+  std::span<const ScanCell> cells_;
   LikelihoodSettings settings_;
 };
 
-// log Phi(z) and the inverse Mills ratio phi(z) / Phi(z), accurate far into the lower tail.
+// log Phi(z) and the inverse Mills ratio phi(z) / Phi(z), accurate far into the lower tail,
+// from one erfc.
+struct NormalTail {
+  double log_cdf;
+  double inverse_mills;
+};
+NormalTail normal_tail(double z);
 double log_normal_cdf(double z);
 double inverse_mills_ratio(double z);
 

@@ -17,17 +17,18 @@ std::optional<LocalizeMethod> parse_localize_method(const std::string& name) {
 
 namespace {
 
-// Ambiguous hypotheses in the preferred side's order (stable: within a side, by probability).
+// The most probable hypothesis on the preferred side that the data cannot tell from the first
+// moves to the front; the others keep their order.
 void break_tie(const LocalizeParams& params, EmitterEstimate* estimate) {
   const int prefer_side = params.prefer_side;
   if (!estimate->ambiguous || prefer_side == 0) return;
   auto& hypotheses = estimate->hypotheses;
-  const double strongest = hypotheses.front().probability;
-  const auto tied_end = std::find_if(hypotheses.begin(), hypotheses.end(), [&](const Hypothesis& h) {
-    return h.probability < params.fit.ambiguity_ratio * strongest;
-  });
-  std::stable_partition(hypotheses.begin(), tied_end,
-                        [&](const Hypothesis& h) { return h.side == prefer_side; });
+  const Hypothesis first = hypotheses.front();
+  const auto preferred =
+      std::find_if(hypotheses.begin(), hypotheses.end(), [&](const Hypothesis& h) {
+        return h.side == prefer_side && indistinguishable(first, h, params.fit);
+      });
+  if (preferred != hypotheses.end()) std::rotate(hypotheses.begin(), preferred, preferred + 1);
   estimate->tie_break = std::string("--prefer-side ") + (prefer_side > 0 ? "left" : "right");
 }
 
@@ -54,16 +55,15 @@ EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod m
       }
       break;
     }
-    case LocalizeMethod::nls:
-      break;  // needs the scans, not the chunks: localize_emitter runs it
+    case LocalizeMethod::nls: break;  // needs the scans, not the chunks: localize_emitter runs it
     case LocalizeMethod::map: {
       ObjectMapResult result =
           object_map(estimate.chunks, estimate.geometry, params.path_loss, params.map);
       estimate.hypotheses.push_back(result.estimate);
       if (result.map.width > 0) {
-        estimate.region = make_posterior(result.map.origin, result.map.cell, result.map.width,
-                                         result.map.height, result.map.log_probability,
-                                         params.fit.credible_mass);
+        estimate.region =
+            make_posterior(result.map.origin, result.map.cell, result.map.width, result.map.height,
+                           result.map.log_probability, params.fit.credible_mass);
       }
       estimate.map = std::move(result.map);
       break;
@@ -102,8 +102,7 @@ bool in_stated_region(const EmitterEstimate& estimate, const model::Vec3& point)
   const Eigen::MatrixXd covariance = h.covariance.topLeftCorner(d, d);
   const Eigen::VectorXd offset = (point - h.position).head(d);
   const Eigen::LDLT<Eigen::MatrixXd> ldlt(covariance);
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
-      ldlt.vectorD().minCoeff() <= 0.0)
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 0.0)
     return false;
   constexpr double kChi2_95[] = {0, 3.841, 5.991, 7.815};  // by degrees of freedom
   return offset.dot(ldlt.solve(offset)) <= kChi2_95[d];

@@ -50,8 +50,13 @@ std::vector<std::pair<int, double>> running_errors(const RssiLog& log, int emitt
     EmitterEstimate estimate;
     if (final_estimate.method == LocalizeMethod::nls) {
       // The range fit reads scans, heard or not: the log as it stood after this reading.
-      RssiLog prefix = log;
-      prefix.readings.resize(line + 1);
+      RssiLog prefix;
+      prefix.source = log.source;
+      prefix.emitters = log.emitters;
+      prefix.floor_dbm = log.floor_dbm;
+      prefix.scan_period_s = log.scan_period_s;
+      prefix.readings.assign(log.readings.begin(),
+                             log.readings.begin() + static_cast<std::ptrdiff_t>(line + 1));
       estimate = localize_emitter(prefix, emitter, LocalizeMethod::nls, params);
     } else {
       estimate = estimate_from_chunks(accumulator.chunks(), final_estimate.method, params);
@@ -122,6 +127,8 @@ EmitterKpis evaluate_emitter(const RssiLog& log, int emitter, const model::Vec3&
     kpis.expected_error = probability > 0 ? weighted / probability : kpis.final_error;
   }
   kpis.in_region = in_stated_region(final_estimate, truth);
+  if (final_estimate.region)
+    kpis.credible_level = final_estimate.region->credible_level(truth.head<2>());
   kpis.detected = kpis.final_error <= kpi.acceptable_error;
   const auto errors = running_errors(log, emitter, truth, final_estimate, params, kpi);
   std::vector<double> values;

@@ -11,15 +11,18 @@ namespace {
 constexpr double kUnevaluated = -std::numeric_limits<double>::infinity();
 
 struct Level {
-  double cell;     // [m]
-  double chunk;    // [m] the scans are merged at
-  double keep;     // cells within this of the best (log) are refined at the next level
+  double cell;            // [m]
+  bool half_metre;        // the scans merged at 0.5 m (else 1 m)
+  double keep;            // cells within this of the best (log) are refined at the next level
+  std::size_t max_cells;  // a finer grid would need more cells: stop refining here
 };
 
-// Coarse cells can sit a few metres from a sharp peak, so the first band is wide.
-constexpr Level kLevels[] = {{2.0, 1.0, 40.0}, {0.5, 0.5, 18.0}, {0.25, 0.25, 0.0}};
-constexpr int kMaxCoarseCells = 60;      // per axis: wider boxes get coarser first cells
-constexpr std::size_t kMaxFineCells = 60000;
+// Coarse cells can sit a few metres from a sharp peak, so the first band is wide. A posterior
+// broad enough to need many 0.25 m cells is drawn well enough at 0.5 m: the last level is only
+// for narrow ones. Scans merged at 1 m and 0.5 m move distances of a few metres by centimetres.
+constexpr Level kLevels[] = {
+    {2.0, false, 20.0, 0}, {1.0, false, 12.0, 60000}, {0.5, true, 0.0, 20000}};
+constexpr int kMaxCoarseCells = 60;        // per axis: wider boxes get coarser first cells
 constexpr std::size_t kRefinedMaxima = 8;  // coarse local maxima always refined
 
 struct Grid {
@@ -83,8 +86,8 @@ std::vector<char> cells_worth_refining(const Grid& coarse, double keep) {
 
 // The chosen cells of `coarse` (and their neighbours), each split into `factor` x `factor`
 // cells of the finer grid and evaluated there.
-Grid refine(const Grid& coarse, double keep, int factor, const CensoredLikelihood& likelihood) {
-  const std::vector<char> chosen = cells_worth_refining(coarse, keep);
+Grid refine(const Grid& coarse, const std::vector<char>& chosen, int factor,
+            const CensoredLikelihood& likelihood) {
   std::vector<char> kept(coarse.value.size(), 0);
   int low_c = coarse.columns, low_r = coarse.rows, high_c = -1, high_r = -1;
   for (int r = 0; r < coarse.rows; ++r)
@@ -119,10 +122,10 @@ Grid refine(const Grid& coarse, double keep, int factor, const CensoredLikelihoo
   return fine;
 }
 
-std::size_t cells_to_refine(const Grid& coarse, double keep, int factor) {
-  const std::vector<char> chosen = cells_worth_refining(coarse, keep);
+// Cells of the finer grid `chosen` leads to, with neighbours, at most.
+std::size_t cells_to_refine(const std::vector<char>& chosen, int factor) {
   const auto count = static_cast<std::size_t>(std::count(chosen.begin(), chosen.end(), 1));
-  return count * 9 * static_cast<std::size_t>(factor * factor);  // with neighbours, at most
+  return count * 9 * static_cast<std::size_t>(factor * factor);
 }
 
 // Each evaluated cell's basin: follow the steepest ascent among the 8 neighbours to a local
@@ -159,29 +162,34 @@ std::vector<int> basins(const Grid& grid) {
 
 }  // namespace
 
-PosteriorSearch search_posterior(const std::vector<Scan>& scans,
-                                 const LikelihoodSettings& settings, const SearchBox& box,
-                                 double credible_mass, double min_mode_separation, int levels) {
+PosteriorSearch search_posterior(const MergedScans& scans, const LikelihoodSettings& settings,
+                                 const SearchBox& box, double credible_mass,
+                                 double min_mode_separation, int levels) {
   const double extent = std::max(box.high.x() - box.low.x(), box.high.y() - box.low.y());
   const double first_cell = std::max(kLevels[0].cell, extent / kMaxCoarseCells);
-  Grid grid = evaluate_all(
-      CensoredLikelihood(merge_scans(scans, std::min(first_cell / 2, kLevels[0].chunk)), settings),
-      box, first_cell);
-  double chunk = kLevels[0].chunk;
+  const auto cells_of = [&](const Level& level) -> const std::vector<ScanCell>& {
+    return level.half_metre ? scans.half_metre : scans.metre;
+  };
+  Grid grid = evaluate_all(CensoredLikelihood(cells_of(kLevels[0]), settings), box, first_cell);
+  bool half_metre = kLevels[0].half_metre;
   for (int level = 1; level < std::min(levels, 3); ++level) {
     const int factor = std::max(1, static_cast<int>(std::lround(grid.cell / kLevels[level].cell)));
-    // A broad posterior keeps many cells: narrow the band until the finer grid stays bounded
-    // (the strongest local maxima are refined whatever the band).
+    const std::size_t max_cells = kLevels[level].max_cells;
     double keep = kLevels[level - 1].keep;
-    while (keep > 1.0 && cells_to_refine(grid, keep, factor) > kMaxFineCells) keep *= 0.5;
-    if (cells_to_refine(grid, keep, factor) > kMaxFineCells) break;
-    chunk = kLevels[level].chunk;
-    grid = refine(grid, keep, factor,
-                  CensoredLikelihood(merge_scans(scans, chunk), settings));
+    std::vector<char> chosen = cells_worth_refining(grid, keep);
+    // Out of the coarse grid, a very broad posterior keeps many cells: narrow the band until
+    // the finer grid stays bounded (the strongest local maxima are refined whatever the band).
+    while (level == 1 && keep > 1.0 && cells_to_refine(chosen, factor) > max_cells) {
+      keep *= 0.5;
+      chosen = cells_worth_refining(grid, keep);
+    }
+    if (cells_to_refine(chosen, factor) > max_cells) break;
+    half_metre = kLevels[level].half_metre;
+    grid = refine(grid, chosen, factor, CensoredLikelihood(cells_of(kLevels[level]), settings));
   }
 
   PosteriorSearch search;
-  search.finest_chunk = chunk;
+  search.finest_half_metre = half_metre;
   const double best = best_of(grid);
   const double area = grid.cell * grid.cell;
   std::vector<double> weight(grid.value.size(), 0.0);
@@ -226,6 +234,7 @@ PosteriorSearch search_posterior(const std::vector<Scan>& scans,
   }
   for (std::size_t k = 0; k < modes.size(); ++k) {
     modes[k].peak = centre_of(mode_peaks[k]);
+    modes[k].peak_log_density = grid.value[static_cast<std::size_t>(mode_peaks[k])];
     modes[k].probability = mass[k] / total;
     if (mass[k] > 0) modes[k].mean /= mass[k];
   }

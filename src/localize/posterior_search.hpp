@@ -15,16 +15,17 @@
 namespace rigdesign::localize::detail {
 
 struct PosteriorMode {
-  model::Vec2 peak = model::Vec2::Zero();  // centre of the densest cell [m]
-  double probability = 0.0;                // share of the posterior in the basin
-  model::Vec2 mean = model::Vec2::Zero();  // posterior mean within the basin [m]
+  model::Vec2 peak = model::Vec2::Zero();                // centre of the densest cell [m]
+  double peak_log_density = 0.0;                         // of that cell
+  double probability = 0.0;                              // share of the posterior in the basin
+  model::Vec2 mean = model::Vec2::Zero();                // posterior mean within the basin [m]
   Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();  // within the basin [m^2]
 };
 
 struct PosteriorSearch {
   PositionPosterior posterior;
   std::vector<PosteriorMode> modes;  // by probability, strongest first
-  double finest_chunk = 0.25;        // [m] the scans were merged at for the finest grid
+  bool finest_half_metre = false;    // the finest grid used the 0.5 m cells (else 1 m)
 };
 
 struct SearchBox {
@@ -32,9 +33,8 @@ struct SearchBox {
 };
 
 // `levels` > 1 refines; with 1 only the coarse grid is evaluated (a first look).
-PosteriorSearch search_posterior(const std::vector<Scan>& scans,
-                                 const LikelihoodSettings& settings, const SearchBox& box,
-                                 double credible_mass, double min_mode_separation,
-                                 int levels = 3);
+PosteriorSearch search_posterior(const MergedScans& scans, const LikelihoodSettings& settings,
+                                 const SearchBox& box, double credible_mass,
+                                 double min_mode_separation, int levels = 3);
 
 }  // namespace rigdesign::localize::detail

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <optional>
 
 #include "censored_likelihood.hpp"
 #include "posterior_search.hpp"
@@ -20,7 +22,13 @@ constexpr double kFirstSigma = 6.0;  // [dB] shadowing sigma the first look assu
 // Independent samples per scan the first look assumes: untempered, ten-centimetre scans would
 // outweigh the priors on level and exponent and send the first fit anywhere.
 constexpr double kFirstShare = 0.1;
-constexpr int kNoiseRounds = 2;  // looks that re-estimate sigma and the share before the last
+constexpr int kNoiseRounds = 1;  // looks with the exponent fixed that measure sigma and the share
+constexpr double kPeakTolerance = 0.01;  // [m] the simplex's size when a peak is refined
+// Modes whose densest cell lies within this of the best (log) are checked for a peak sharper
+// than the grid, however small their basin's share.
+constexpr double kSharpPeakBand = 30.0;
+constexpr std::size_t kMaxCandidates = 16;           // modes refined, strongest basins first
+constexpr double kCurvatureStep = 0.02;              // of a cell, for the Laplace curvature
 constexpr double kMinSigma = 0.5, kMaxSigma = 30.0;  // [dB] sigma's search interval
 
 detail::SearchBox search_box(const ScanSeries& series, const PathLossParams& path_loss,
@@ -43,8 +51,8 @@ detail::SearchBox search_box(const ScanSeries& series, const PathLossParams& pat
 // Nelder-Mead on the profile log density from `start`: the grid's cell centre refined to the
 // continuous maximum. Two dimensions, so a few dozen evaluations.
 // The search stays in the box: the posterior is only evaluated (and normalised) there.
-model::Vec2 refine_peak(const CensoredLikelihood& likelihood, const model::Vec2& start,
-                        double size, const detail::SearchBox& box) {
+model::Vec2 refine_peak(const CensoredLikelihood& likelihood, const model::Vec2& start, double size,
+                        const detail::SearchBox& box) {
   const auto cost = [&](const model::Vec2& q) {
     return -likelihood.profile(q.cwiseMax(box.low).cwiseMin(box.high)).log_density;
   };
@@ -56,7 +64,7 @@ model::Vec2 refine_peak(const CensoredLikelihood& likelihood, const model::Vec2&
     std::array<int, 3> order = {0, 1, 2};
     std::sort(order.begin(), order.end(), [&](int a, int b) { return value[a] < value[b]; });
     const int best = order[0], middle = order[1], worst = order[2];
-    if ((simplex[worst] - simplex[best]).norm() < 1e-3) break;
+    if ((simplex[worst] - simplex[best]).norm() < kPeakTolerance) break;
     const model::Vec2 centroid = 0.5 * (simplex[best] + simplex[middle]);
     const model::Vec2 reflected = centroid + (centroid - simplex[worst]);
     const double reflected_value = cost(reflected);
@@ -121,8 +129,8 @@ double estimate_sigma(const CensoredLikelihood& likelihood, const model::Vec2& q
 
 // Residual correlation along the path at the best fit (heard scans only).
 detail::ResidualCorrelation correlation_at(const ScanSeries& series,
-                                           const CensoredLikelihood& model,
-                                           const model::Vec2& q, double level, double exponent) {
+                                           const CensoredLikelihood& model, const model::Vec2& q,
+                                           double level, double exponent) {
   std::vector<double> travelled, residuals;
   std::vector<std::size_t> heard_index;
   double s = 0.0;
@@ -142,10 +150,10 @@ detail::ResidualCorrelation correlation_at(const ScanSeries& series,
 // What the heard scans alone say about the exponent at q (level free): the tempered Fisher
 // information k / sigma^2 * sum c (L - mean L)^2 over the cells, L = 10 log10 d. A circle
 // around q has nearly one distance, a path past q many.
-double exponent_information(const std::vector<detail::ScanCell>& cells, const model::Vec2& q,
-                            const LikelihoodSettings& settings, const CensoredLikelihood& model) {
+double exponent_information(const CensoredLikelihood& model, const model::Vec2& q) {
+  const LikelihoodSettings& settings = model.settings();
   double count = 0.0, sum = 0.0, squares = 0.0;
-  for (const detail::ScanCell& cell : cells) {
+  for (const detail::ScanCell& cell : model.cells()) {
     if (cell.heard <= 0) continue;
     const double L = model.log_distance(q, cell.position);
     count += cell.heard;
@@ -157,7 +165,61 @@ double exponent_information(const std::vector<detail::ScanCell>& cells, const mo
   return settings.effective_share * spread / (settings.sigma_db * settings.sigma_db);
 }
 
+// The best point of a first look (the coarse grid), refined.
+model::Vec2 best_point(const detail::MergedScans& merged, const LikelihoodSettings& settings,
+                       const detail::SearchBox& box, const RangeFitParams& params) {
+  const detail::PosteriorSearch look = detail::search_posterior(
+      merged, settings, box, params.credible_mass, params.min_mode_separation, 1);
+  const CensoredLikelihood model(merged.half_metre, settings);
+  return refine_peak(model, look.modes.front().peak, look.posterior.cell, box);
+}
+
+// sigma (Tobit maximum likelihood) and, unless switched off, the residuals' correlation and
+// the effective share it implies, with the emitter at q.
+void measure_noise(const ScanSeries& series, const detail::MergedScans& merged,
+                   const model::Vec2& q, const RangeFitParams& params, LikelihoodSettings* settings,
+                   RangeFitResult* result) {
+  const CensoredLikelihood model(merged.half_metre, *settings);
+  detail::ProfilePoint at = model.profile(q);
+  settings->sigma_db = estimate_sigma(model, q, at.level_dbm, at.exponent);
+  at = CensoredLikelihood(model.cells(), *settings).profile(q);
+  if (params.correlated_shadowing) {
+    const detail::ResidualCorrelation correlation =
+        correlation_at(series, model, q, at.level_dbm, at.exponent);
+    settings->effective_share = correlation.effective_share;
+    result->correlated_share = correlation.correlated_share;
+    result->correlation_length = correlation.length;
+  }
+}
+
+// The probability mass of a peak narrower than the grid's cells, by the Laplace approximation
+// (the log density's curvature by central differences): exp(peak - log total) 2 pi / sqrt(det);
+// empty when the peak is as wide as a cell, where the grid measures it.
+std::optional<double> laplace_share(const CensoredLikelihood& model, const model::Vec2& peak,
+                                    const PositionPosterior& posterior) {
+  const double h = kCurvatureStep * posterior.cell;
+  const auto f = [&](double dx, double dy) {
+    return model.profile(peak + model::Vec2(dx, dy)).log_density;
+  };
+  const double centre = f(0, 0);
+  Eigen::Matrix2d curvature;
+  curvature(0, 0) = (f(h, 0) - 2 * centre + f(-h, 0)) / (h * h);
+  curvature(1, 1) = (f(0, h) - 2 * centre + f(0, -h)) / (h * h);
+  curvature(0, 1) = curvature(1, 0) = (f(h, h) - f(h, -h) - f(-h, h) + f(-h, -h)) / (4 * h * h);
+  const Eigen::Matrix2d information = -curvature;
+  const double det = information.determinant();
+  if (!(information(0, 0) > 0 && det > 0)) return std::nullopt;
+  const Eigen::Matrix2d covariance = information.inverse();
+  const double widest = std::sqrt(std::max(covariance(0, 0), covariance(1, 1)));
+  if (widest >= posterior.cell) return std::nullopt;
+  return std::exp(centre - posterior.log_total) * 2 * std::numbers::pi / std::sqrt(det);
+}
+
 }  // namespace
+
+bool indistinguishable(const Hypothesis& a, const Hypothesis& b, const RangeFitParams& params) {
+  return std::abs(a.cost - b.cost) <= params.ambiguity_log_ratio;
+}
 
 int side_of_path(const std::vector<Scan>& scans, const model::Vec2& point) {
   if (scans.size() < 2) return 0;
@@ -199,74 +261,91 @@ RangeFitResult fit_ranges(const ScanSeries& series, const PathLossParams& path_l
   settings.walls = walls;
   const detail::SearchBox box = search_box(series, path_loss, params);
 
-  // First looks with the exponent fixed: sigma and the share assumed, then measured at the best
-  // point found; then whether the data can tell the exponent there, and if so a look with it.
+  // First looks with the exponent fixed (a robust start): sigma and the share assumed, then
+  // measured at the best point found; then once more with the exponent free under its prior.
   settings.exponent_sd = 0.0;
-  for (int round = 0; round < kNoiseRounds + 1; ++round) {
-    if (round == kNoiseRounds) {
-      if (!result.exponent_identified) break;
-      settings.exponent_sd = params.exponent_prior;
-    }
-    const detail::PosteriorSearch look = detail::search_posterior(
-        series.scans, settings, box, params.credible_mass, params.min_mode_separation, 2);
-    const CensoredLikelihood fine(detail::merge_scans(series.scans, look.finest_chunk), settings);
-    const model::Vec2 q = refine_peak(fine, look.modes.front().peak, look.posterior.cell, box);
-    detail::ProfilePoint at = fine.profile(q);
-    settings.sigma_db = estimate_sigma(fine, q, at.level_dbm, at.exponent);
-    at = CensoredLikelihood(fine.cells(), settings).profile(q);
-    if (params.correlated_shadowing) {
-      const detail::ResidualCorrelation correlation =
-          correlation_at(series, fine, q, at.level_dbm, at.exponent);
-      settings.effective_share = correlation.effective_share;
-      result.correlated_share = correlation.correlated_share;
-      result.correlation_length = correlation.length;
-    }
-    if (round == kNoiseRounds - 1 && params.exponent_prior > 0) {
-      result.exponent_identified =
-          exponent_information(fine.cells(), q, settings, fine) * params.exponent_prior *
-              params.exponent_prior >=
-          params.identified_information;
-    }
+  const detail::MergedScans merged = detail::merge_for_search(series.scans);
+  for (int round = 0; round < kNoiseRounds; ++round)
+    measure_noise(series, merged, best_point(merged, settings, box, params), params, &settings,
+                  &result);
+  if (params.exponent_prior > 0) {
+    settings.exponent_sd = params.exponent_prior;
+    measure_noise(series, merged, best_point(merged, settings, box, params), params, &settings,
+                  &result);
   }
   result.sigma_db = settings.sigma_db;
   result.effective_share = settings.effective_share;
 
   // The posterior with the measured sigma and effective share.
   detail::PosteriorSearch search = detail::search_posterior(
-      series.scans, settings, box, params.credible_mass, params.min_mode_separation);
-  const CensoredLikelihood model(detail::merge_scans(series.scans, search.finest_chunk),
+      merged, settings, box, params.credible_mass, params.min_mode_separation);
+  const CensoredLikelihood model(search.finest_half_metre ? merged.half_metre : merged.metre,
                                  settings);
   double height = 0.0;
   for (const Scan& scan : series.scans) height += scan.position.z();
   height /= static_cast<double>(series.scans.size());
+  // Each mode's probability: its basin's share of the grid, unless its peak is narrower than
+  // the cells, which then miss most of its mass: the Laplace mass at the refined peak instead.
+  struct Candidate {
+    const detail::PosteriorMode* mode;
+    model::Vec2 peak;
+    double probability;
+  };
+  std::vector<Candidate> candidates;
+  double grid_share = 0.0, corrected_share = 0.0;
+  const double best_cell = search.modes.front().peak_log_density;
   for (const detail::PosteriorMode& mode : search.modes) {
-    if (mode.probability < params.min_reported_probability) continue;
+    if (candidates.size() == kMaxCandidates) break;
+    if (mode.probability < params.min_reported_probability &&
+        mode.peak_log_density < best_cell - kSharpPeakBand)
+      continue;
     const model::Vec2 peak = refine_peak(model, mode.peak, search.posterior.cell, box);
+    double probability = mode.probability;
+    if (const auto laplace = laplace_share(model, peak, search.posterior))
+      probability = std::max(probability, *laplace);
+    grid_share += mode.probability;
+    corrected_share += probability;
+    candidates.push_back({&mode, peak, probability});
+  }
+  const double total_share = 1.0 - grid_share + corrected_share;
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.probability > b.probability; });
+  for (const Candidate& candidate : candidates) {
+    const double probability = candidate.probability / total_share;
+    const model::Vec2& peak = candidate.peak;
     // Basins whose peaks refine to one point are one hypothesis.
     const auto same = std::find_if(
         result.hypotheses.begin(), result.hypotheses.end(), [&](const Hypothesis& other) {
           return (other.position.head<2>() - peak).norm() < params.min_mode_separation;
         });
     if (same != result.hypotheses.end()) {
-      same->probability += mode.probability;
+      same->probability += probability;
       continue;
     }
+    if (probability < params.min_reported_probability) continue;
     const detail::ProfilePoint point = model.profile(peak);
     Hypothesis h;
     h.position = model::Vec3(peak.x(), peak.y(), height);
-    h.covariance.topLeftCorner<2, 2>() = mode.covariance;
+    h.covariance.topLeftCorner<2, 2>() = candidate.mode->covariance;
     h.rssi_at_1m_dbm = point.level_dbm;
     h.exponent = point.exponent;
     h.level_sd_db = point.level_sd_db;
     h.exponent_sd = point.exponent_sd;
     h.cost = -point.log_density;
-    h.probability = mode.probability;
+    h.probability = probability;
     h.side = side_of_path(series.scans, peak);
     result.hypotheses.push_back(h);
   }
-  result.ambiguous =
-      result.hypotheses.size() >= 2 && result.hypotheses[1].probability >=
-                                           params.ambiguity_ratio * result.hypotheses[0].probability;
+  // Whether the path's distances to the best hypothesis tell the exponent (a circle around it
+  // does not): otherwise its estimate rests on the prior, which the report says.
+  if (params.exponent_prior > 0 && !result.hypotheses.empty()) {
+    result.exponent_identified =
+        exponent_information(model, result.hypotheses.front().position.head<2>()) *
+            params.exponent_prior * params.exponent_prior >=
+        params.identified_information;
+  }
+  result.ambiguous = result.hypotheses.size() >= 2 &&
+                     indistinguishable(result.hypotheses[0], result.hypotheses[1], params);
   result.posterior = std::move(search.posterior);
   return result;
 }

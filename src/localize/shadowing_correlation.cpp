@@ -6,25 +6,26 @@
 namespace rigdesign::localize::detail {
 namespace {
 
-constexpr int kShares = 21;          // candidate correlated shares 0, 0.05, ..., 1
-constexpr int kLengths = 36;         // candidate L, log-spaced
-constexpr double kShortest = 0.05;   // [m]
-constexpr double kLongest = 40.0;    // [m]
-constexpr std::size_t kMaxSeries = 3000;  // longer residual series are thinned to this
+constexpr int kShares = 11;              // candidate correlated shares 0, 0.1, ..., 1
+constexpr int kLengths = 24;             // candidate L, log-spaced
+constexpr double kShortest = 0.05;       // [m]
+constexpr double kLongest = 40.0;        // [m]
+constexpr std::size_t kMaxSeries = 400;  // longer residual series are thinned to this
+constexpr double kRejected = 5.99 / 2;   // log-likelihood below the best that rejects a pair
 
 // Log-likelihood of the residuals (mean removed, variance `variance`) under correlated
-// shadowing of share `beta` and length `length` plus white fading: a Kalman filter over the
-// AR(1) state along the path (exact for this model; gaps of unheard scans just widen a step).
-double series_log_likelihood(const std::vector<double>& s, const std::vector<double>& r,
-                             double variance, double beta, double length) {
+// shadowing of share `beta` plus white fading, the step correlations `rho` (exp(-ds / L)) given:
+// a Kalman filter over the AR(1) state along the path (exact for this model; gaps of unheard
+// scans just widen a step).
+double series_log_likelihood(const std::vector<double>& rho, const std::vector<double>& r,
+                             double variance, double beta) {
   const double shadowing = beta * variance;
   const double fading = std::max((1.0 - beta) * variance, 1e-9 * variance);
   double mean = 0.0, spread = shadowing, sum = 0.0;
   for (std::size_t i = 0; i < r.size(); ++i) {
     if (i > 0) {
-      const double rho = std::exp(-(s[i] - s[i - 1]) / length);
-      mean *= rho;
-      spread = rho * rho * spread + shadowing * (1.0 - rho * rho);
+      mean *= rho[i];
+      spread = rho[i] * rho[i] * spread + shadowing * (1.0 - rho[i] * rho[i]);
     }
     const double innovation = r[i] - mean;
     const double total = spread + fading;
@@ -34,6 +35,17 @@ double series_log_likelihood(const std::vector<double>& s, const std::vector<dou
     spread *= 1.0 - gain;
   }
   return sum;
+}
+
+// sum_{i<j} exp(-(s_j - s_i) / L) in O(N): each term carries the previous one. The effective
+// share is then k = N / (N + 2 beta sum).
+double correlation_sum(const std::vector<double>& travelled, double length) {
+  double carried = 0.0, total = 0.0;
+  for (std::size_t j = 1; j < travelled.size(); ++j) {
+    carried = std::exp(-(travelled[j] - travelled[j - 1]) / length) * (carried + 1.0);
+    total += carried;
+  }
+  return total;
 }
 
 }  // namespace
@@ -59,32 +71,46 @@ ResidualCorrelation residual_correlation(const std::vector<double>& travelled,
     at.push_back(travelled[heard_index[i]]);
     value.push_back(residuals[i] - mean);
   }
-  // Maximum likelihood over a grid of (share, length): the correlogram of fitted residuals
-  // underestimates long lengths, the likelihood much less.
+  // The likelihood over a grid of (share, length): the correlogram of fitted residuals
+  // underestimates long lengths, the likelihood much less. The fit has soaked up part of the
+  // shadowing and a short series says little about long lengths, so the tempering uses the
+  // most correlated pair the residuals do not reject (likelihood ratio at 95 %, two degrees of
+  // freedom: within 5.99 / 2 of the best), not the best fit alone.
+  struct Candidate {
+    double beta, length, ll;
+  };
+  std::vector<Candidate> candidates;
   double best = -INFINITY;
-  for (int b = 0; b < kShares; ++b) {
-    const double beta = static_cast<double>(b) / (kShares - 1);
-    for (int c = 0; c < kLengths; ++c) {
-      const double length =
-          kShortest * std::pow(kLongest / kShortest, static_cast<double>(c) / (kLengths - 1));
-      const double ll = series_log_likelihood(at, value, variance, beta, length);
+  std::vector<double> rho(at.size(), 0.0);
+  for (int c = 0; c < kLengths; ++c) {
+    const double length =
+        kShortest * std::pow(kLongest / kShortest, static_cast<double>(c) / (kLengths - 1));
+    for (std::size_t i = 1; i < at.size(); ++i) rho[i] = std::exp(-(at[i] - at[i - 1]) / length);
+    // Share 0 (no correlated part) does not depend on the length: once, with the first.
+    for (int b = c == 0 ? 0 : 1; b < kShares; ++b) {
+      const double beta = static_cast<double>(b) / (kShares - 1);
+      const double ll = series_log_likelihood(rho, value, variance, beta);
+      candidates.push_back({beta, length, ll});
       if (ll > best) {
         best = ll;
         result.correlated_share = beta;
         result.length = length;
       }
-      if (b == 0) break;  // no correlated part: the length does not matter
     }
   }
-  if (result.length <= 0.0 || result.correlated_share <= 0.0) return result;
-  // sum_{i<j} exp(-(s_j - s_i) / L) over every scan in O(N): each term carries the previous.
-  double carried = 0.0, total = 0.0;
-  for (std::size_t j = 1; j < travelled.size(); ++j) {
-    carried = std::exp(-(travelled[j] - travelled[j - 1]) / result.length) * (carried + 1.0);
-    total += carried;
+  // k for every accepted pair; the pair sum depends on the length alone.
+  result.effective_share = 1.0;
+  double sum_length = -1.0, pair_sum = 0.0;
+  for (const Candidate& candidate : candidates) {
+    if (candidate.ll < best - kRejected || candidate.beta <= 0.0) continue;
+    if (candidate.length != sum_length) {
+      sum_length = candidate.length;
+      pair_sum = correlation_sum(travelled, candidate.length);
+    }
+    const double scans = static_cast<double>(travelled.size());
+    result.effective_share =
+        std::min(result.effective_share, scans / (scans + 2.0 * candidate.beta * pair_sum));
   }
-  const double scans = static_cast<double>(travelled.size());
-  result.effective_share = scans / (scans + 2.0 * result.correlated_share * total);
   return result;
 }
 

@@ -13,9 +13,11 @@
 namespace rigdesign::localize::detail {
 
 struct ResidualCorrelation {
-  double correlated_share = 0.0;  // beta
-  double length = 0.0;            // L [m]
-  double effective_share = 1.0;   // k
+  double correlated_share = 0.0;  // beta, the best fit
+  double length = 0.0;            // L [m], the best fit
+  // k: the smallest over the (beta, L) the residuals do not reject at 95 % (a short series
+  // pins long lengths down poorly, and the fit absorbs part of the shadowing).
+  double effective_share = 1.0;
 };
 
 // `travelled` is the distance along the path of every scan (heard or not) in time order;

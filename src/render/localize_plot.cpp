@@ -20,7 +20,9 @@ constexpr Rgb kAlternative{0.95, 0.55, 0.1};
 constexpr Rgb kTruth{0.1, 0.6, 0.2};
 constexpr Rgb kLagCorrected{0.55, 0.2, 0.75};
 constexpr Rgb kWall{0.3, 0.3, 0.3};
-constexpr Rgb kUnheard{0.62, 0.62, 0.62};  // scans below the receiver's floor
+constexpr Rgb kUnheard{0.62, 0.62, 0.62};
+constexpr Rgb kRegion{
+    0.95, 0.6, 0.2};  // a credible region, under the markers  // scans below the receiver's floor
 
 // Blue (low) through cyan and yellow to red (high).
 Rgb ramp(double share) {
@@ -130,6 +132,14 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
     cairo_save(cairo);
     cairo_rectangle(cairo, left, top, right - left, bottom - top);
     cairo_clip(cairo);
+    set_colour(cairo, kRegion, 0.35);
+    for (const model::Vec2& c : plot.region_cells) {
+      const model::Vec2 corner = px(c - model::Vec2::Constant(plot.region_cell / 2));
+      const model::Vec2 opposite = px(c + model::Vec2::Constant(plot.region_cell / 2));
+      cairo_rectangle(cairo, corner.x(), opposite.y(), opposite.x() - corner.x(),
+                      corner.y() - opposite.y());
+    }
+    cairo_fill(cairo);
     set_colour(cairo, kWall);
     cairo_set_line_width(cairo, 4);
     for (const auto& [a, b] : plot.walls) {
@@ -251,7 +261,7 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
     double ly = top + 10;
     const std::pair<PlotMarkerKind, const char*> entries[] = {
         {PlotMarkerKind::estimate, "estimate / detection"},
-        {PlotMarkerKind::alternative, "twin hypothesis"},
+        {PlotMarkerKind::alternative, "other hypothesis"},
         {PlotMarkerKind::lag_corrected, "lag-corrected"},
         {PlotMarkerKind::truth, "truth"}};
     for (const auto& [kind, label] : entries) {
@@ -261,6 +271,14 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       cairo_fill(cairo);
       set_colour(cairo, kInkColour);
       draw_text(cairo, label, right + 32, ly, 11);
+      ly += 20;
+    }
+    if (!plot.region_cells.empty()) {
+      set_colour(cairo, kRegion, 0.35);
+      cairo_rectangle(cairo, right + 17, ly - 9, 10, 10);
+      cairo_fill(cairo);
+      set_colour(cairo, kInkColour);
+      draw_text(cairo, plot.region_label, right + 32, ly, 11);
       ly += 20;
     }
     if (any_unheard) {

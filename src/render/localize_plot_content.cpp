@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "rigdesign/model/format_number.hpp"
+
 namespace rigdesign::render {
 
 namespace {
@@ -29,8 +31,7 @@ LocalizePlot rssi_plot(const localize::RssiLog& log, std::string title) {
       [](const localize::RssiReading& r) {
         return r.heard ? r.rssi_dbm : std::numeric_limits<double>::quiet_NaN();
       },
-      std::move(title),
-      "RSSI [dBm]");
+      std::move(title), "RSSI [dBm]");
 }
 
 LocalizePlot co2_plot(const localize::Co2Log& log, std::string title) {
@@ -47,9 +48,23 @@ void add_estimate_markers(const localize::EmitterEstimate& estimate,
                           const std::optional<model::Vec3>& truth, LocalizePlot& plot) {
   for (std::size_t i = 0; i < estimate.hypotheses.size(); ++i) {
     const localize::Hypothesis& h = estimate.hypotheses[i];
-    plot.markers.push_back({h.position, h.covariance.topLeftCorner<2, 2>(),
-                            to_string(estimate.method) + (i == 0 ? "" : " twin"),
-                            i == 0 ? PlotMarkerKind::estimate : PlotMarkerKind::alternative});
+    plot.markers.push_back(
+        {h.position, h.covariance.topLeftCorner<2, 2>(),
+         to_string(estimate.method) + (i == 0 ? "" : " hypothesis " + std::to_string(i + 1)),
+         i == 0 ? PlotMarkerKind::estimate : PlotMarkerKind::alternative});
+  }
+  // The range fit's credible region (one per plot: the first nls estimate drawn).
+  if (estimate.method == localize::LocalizeMethod::nls && estimate.region &&
+      plot.region_cells.empty()) {
+    const localize::PositionPosterior& region = *estimate.region;
+    for (int r = 0; r < region.rows; ++r)
+      for (int c = 0; c < region.columns; ++c)
+        if (region.log_density[static_cast<std::size_t>(r * region.columns + c)] >=
+            region.threshold)
+          plot.region_cells.push_back(region.centre(c, r));
+    plot.region_cell = region.cell;
+    plot.region_label = to_string(estimate.method) + " " +
+                        model::format_number(100 * region.credible_mass) + " % region";
   }
   const bool drawn =
       std::any_of(plot.markers.begin(), plot.markers.end(), [&](const PlotMarker& m) {

@@ -103,5 +103,6 @@ TEST_CASE("determinism: occupancy writes the same scores twice") {
 }
 
 TEST_CASE("determinism: localize on a scenario writes the same log, truth and plots twice") {
-  check_twice({"localize", "--scenario", "corner", "--seed", "3", "--out", "{out}"});
+  check_twice(
+      {"localize", "--scenario", "corner", "--seed", "3", "--checkpoints", "5", "--out", "{out}"});
 }

@@ -40,11 +40,14 @@ std::optional<int> data_amount(const std::vector<std::pair<int, double>>& errors
                                double acceptable);
 
 struct EmitterKpis {
-  double final_error = 0.0;               ///< of the first hypothesis at the end of the log [m]
+  double final_error = 0.0;  ///< of the first hypothesis at the end of the log [m]
   /// Probability-weighted over the hypotheses: the error of the stated belief, which does not
   /// depend on how ambiguous hypotheses happen to be ordered [m].
   double expected_error = 0.0;
   bool in_region = false;  ///< the truth lies in the stated 95 % region (in_stated_region)
+  /// The smallest credible level whose highest-density region holds the truth (nls, map): over
+  /// many runs, uniform in [0, 1] when the stated uncertainty is honest.
+  std::optional<double> credible_level;
   double nearest_hypothesis_error = 0.0;  ///< of whichever hypothesis is nearest the truth [m]
   ErrorStats running;                     ///< errors of the running estimate over the log
   std::optional<int> data_amount;         ///< C, in readings of this emitter

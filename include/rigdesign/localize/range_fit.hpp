@@ -36,38 +36,39 @@ struct RangeFitParams {
   /// robot's path [m] (0: uniform over the search box). Emitters worth finding lie near where a
   /// robot explores; without it, a circling path lets a wide plateau of far positions (each
   /// fitting with a strong transmitter) outweigh the emitter by its area alone.
-  double path_prior_scale = 10.0;
+  double path_prior_scale = 5.0;
   /// Height between the robot's antenna and the emitter, unknown, taken as this [m].
   double vertical_offset = 0.6;
   /// Temper the likelihood by the effective-sample share of correlated shadowing.
   bool correlated_shadowing = true;
   double credible_mass = 0.95;  ///< of the stated region
-  /// Two modes are ambiguous when the weaker has at least this share of the stronger's
-  /// probability (exp(-3.84 / 2): a likelihood-ratio test at 95 %, one degree of freedom).
-  double ambiguity_ratio = 0.1466;
-  double min_mode_separation = 2.0;       ///< [m] closer modes are one hypothesis
-  double min_reported_probability = 0.01; ///< weaker modes are not listed
+  /// Two hypotheses are indistinguishable when their peaks' (tempered) log posterior densities
+  /// differ by at most this: 3.84 / 2, a likelihood-ratio test at 95 %, one degree of freedom.
+  /// Their probabilities (basin masses) may still differ, e.g. by how wide each peak is.
+  double ambiguity_log_ratio = 1.92;
+  double min_mode_separation = 2.0;        ///< [m] closer modes are one hypothesis
+  double min_reported_probability = 0.01;  ///< weaker modes are not listed
   /// The search grid reaches this far beyond the scans: at least `min_margin`, at most
   /// `max_margin`, else 1.5 times the median distance the heard readings imply [m].
   double min_margin = 10.0, max_margin = 40.0;
-  /// The exponent is estimated (with its prior) only where the heard scans' information about
-  /// it, at the first fit, is at least this many times the prior's (1: the data would halve the
-  /// prior's variance); elsewhere it is fixed at the assumed value (a circle around the
-  /// emitter has nearly one distance: a free exponent lets far points fit as well).
+  /// The exponent counts as told by the path when the heard scans' information about it at the
+  /// best hypothesis is at least this many times the prior's (1: the data alone would halve the
+  /// prior's variance); otherwise the report says its estimate rests on the prior (a circle
+  /// around the emitter has nearly one distance).
   double identified_information = 1.0;
 };
 
 struct RangeFitResult {
   /// By probability, strongest first; empty without heard scans.
   std::vector<Hypothesis> hypotheses;
-  /// The first two hypotheses are indistinguishable (see RangeFitParams::ambiguity_ratio).
+  /// The first two hypotheses are indistinguishable (see indistinguishable()).
   bool ambiguous = false;
-  double sigma_db = 0.0;             ///< per scan, shadowing and fading (Tobit ML) [dB]
-  double correlated_share = 0.0;     ///< of the residual variance that is correlated
-  double correlation_length = 0.0;   ///< of the correlated part along the path [m]
-  double effective_share = 1.0;      ///< independent samples per scan the tempering uses
-  /// The path's distances tell the exponent (see identified_information): it was estimated;
-  /// otherwise it was fixed at the assumed value.
+  double sigma_db = 0.0;            ///< per scan, shadowing and fading (Tobit ML) [dB]
+  double correlated_share = 0.0;    ///< of the residual variance that is correlated
+  double correlation_length = 0.0;  ///< of the correlated part along the path [m]
+  double effective_share = 1.0;     ///< independent samples per scan the tempering uses
+  /// The path tells the exponent (see identified_information); otherwise its estimate rests on
+  /// the prior.
   bool exponent_identified = false;
   std::optional<PositionPosterior> posterior;
 };
@@ -75,6 +76,10 @@ struct RangeFitResult {
 RangeFitResult fit_ranges(const ScanSeries& scans, const PathLossParams& path_loss,
                           const RangeFitParams& params = {},
                           const std::vector<WallSegment>& walls = {});
+
+/// Whether the data cannot tell `a` from `b`: their peaks' costs (-log density) differ by at
+/// most RangeFitParams::ambiguity_log_ratio.
+bool indistinguishable(const Hypothesis& a, const Hypothesis& b, const RangeFitParams& params);
 
 /// The side of the path `point` lies on (+1 left, -1 right, 0 within 1 cm), facing the
 /// direction of travel at the scan nearest to it.

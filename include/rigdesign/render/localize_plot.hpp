@@ -1,7 +1,8 @@
 #pragma once
 /// Top view of a localisation run (PNG or SVG by extension): the robot's path coloured by the
-/// measured value (RSSI or CO2), walls, estimates with their 2-sigma ellipses, twins, the
-/// truth, gas detections and artifacts. Axes in metres, equal scale.
+/// measured value (RSSI or CO2; scans that heard nothing as grey rings), walls, the range fit's
+/// 95 % region, estimates with their 2-sigma ellipses, other hypotheses, the truth, gas
+/// detections and artifacts. Axes in metres, equal scale.
 #include <string>
 #include <vector>
 
@@ -25,6 +26,11 @@ struct LocalizePlot {
   std::string value_label;        ///< e.g. "RSSI [dBm]"
   std::vector<std::pair<model::Vec2, model::Vec2>> walls;
   std::vector<PlotMarker> markers;
+  /// Centres of the cells of a stated credible region (the range fit's 95 % region), each
+  /// `region_cell` metres wide; drawn as a shaded area under the markers.
+  std::vector<model::Vec2> region_cells;
+  double region_cell = 0.0;
+  std::string region_label;  ///< its legend entry, e.g. "nls 95 % region"
 };
 
 void plot_localization(const LocalizePlot& plot, const std::string& path, int width = 1000,

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "rigdesign/io/file_bytes.hpp"
 #include "io/text_encoding.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/input_error.hpp"
 
@@ -43,6 +43,36 @@ std::vector<Line> content_lines(const std::string& text, const std::string& file
     begin = end + 1;
   }
   return lines;
+}
+
+std::vector<Row> named_columns(const std::string& text, const std::string& file,
+                               const std::vector<std::string>& names,
+                               const std::string& expected_header) {
+  const auto lines = content_lines(text, file);
+  if (lines.empty())
+    throw model::InputError(
+        model::Diagnostic{{file, 0, 0}, "data", "is empty", "a header " + expected_header});
+  const auto header = split_fields(lines.front().text, ',');
+  std::vector<std::size_t> index;
+  for (const std::string& name : names)
+    index.push_back(require_column(header, name, file, lines.front().number, expected_header));
+  std::vector<Row> rows;
+  for (std::size_t l = 1; l < lines.size(); ++l) {
+    const auto fields = split_fields(lines[l].text, ',');
+    Row row{lines[l].number, {}};
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (index[i] >= fields.size()) {
+        throw model::InputError(
+            model::Diagnostic{{file, lines[l].number, static_cast<int>(lines[l].text.size()) + 1},
+                              names[i],
+                              "is missing",
+                              "one field per header column (" + expected_header + ")"});
+      }
+      row.fields.push_back(fields[index[i]]);
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
 }
 
 std::optional<Field> comment_directive(const std::string& text, const std::string& key,

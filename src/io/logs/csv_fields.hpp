@@ -36,6 +36,20 @@ double parse_number(const Field& field, const model::SourceLocation& where,
 std::size_t require_column(const std::vector<Field>& header, const std::string& name,
                            const std::string& file, int line, const std::string& expected_header);
 
+/// One data line of a table: its number and the fields of the asked-for columns, in the order
+/// they were asked for.
+struct Row {
+  int number = 0;
+  std::vector<Field> fields;
+};
+
+/// The data lines of a comma-separated table whose header (its first content line) names every
+/// one of `names`, in any order. InputError naming `file` for an empty text, a column missing
+/// from the header or a line without one of the columns (at the line's end).
+std::vector<Row> named_columns(const std::string& text, const std::string& file,
+                               const std::vector<std::string>& names,
+                               const std::string& expected_header);
+
 /// The value of a `# key: value` comment line (the first one), located for messages; empty
 /// when the text has none. Keys are matched whole and case-sensitively.
 std::optional<Field> comment_directive(const std::string& text, const std::string& key,

@@ -2,7 +2,6 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <array>
 #include <cmath>
 
 #include "io/config/yaml_reader.hpp"
@@ -21,35 +20,15 @@ constexpr const char* kTruthHeader = "bssid,x,y,z";
 
 std::vector<localize::EmitterTruth> parse_emitter_truth(const std::string& text,
                                                         const std::string& file) {
-  const auto lines = csv::content_lines(text, file);
-  if (lines.empty())
-    throw model::InputError(model::Diagnostic{
-        {file, 0, 0}, "data", "is empty", std::string("a header ") + kTruthHeader});
-  const auto header = csv::split_fields(lines.front().text, ',');
-  const std::array<std::string, 4> names = {"bssid", "x", "y", "z"};
-  std::array<std::size_t, 4> index{};
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    index[i] = csv::require_column(header, names[i], file, lines.front().number, kTruthHeader);
-  }
+  const std::vector<std::string> names = {"bssid", "x", "y", "z"};
   std::vector<localize::EmitterTruth> truth;
-  for (std::size_t l = 1; l < lines.size(); ++l) {
-    const auto fields = csv::split_fields(lines[l].text, ',');
+  for (const csv::Row& row : csv::named_columns(text, file, names, kTruthHeader)) {
     localize::EmitterTruth item;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      if (index[i] >= fields.size()) {
-        throw model::InputError(
-            model::Diagnostic{{file, lines[l].number, static_cast<int>(lines[l].text.size()) + 1},
-                              names[i],
-                              "is missing",
-                              std::string("one field per header column (") + kTruthHeader + ")"});
-      }
-      const auto& f = fields[index[i]];
-      if (i == 0) {
-        item.bssid = f.text;
-      } else {
-        item.position[static_cast<Eigen::Index>(i - 1)] =
-            csv::parse_number(f, {file, lines[l].number, f.column}, names[i]);
-      }
+    item.bssid = row.fields[0].text;
+    for (std::size_t i = 1; i < names.size(); ++i) {
+      const csv::Field& f = row.fields[i];
+      item.position[static_cast<Eigen::Index>(i - 1)] =
+          csv::parse_number(f, {file, row.number, f.column}, names[i]);
     }
     truth.push_back(item);
   }

@@ -16,33 +16,16 @@ constexpr int kWallDigits = 10;
 
 std::vector<localize::WallSegment> parse_walls_csv(const std::string& text,
                                                    const std::string& file) {
-  const auto lines = csv::content_lines(text, file);
-  if (lines.empty())
-    throw model::InputError(model::Diagnostic{
-        {file, 0, 0}, "data", "is empty", std::string("a header ") + kWallsHeader});
-  const auto header = csv::split_fields(lines.front().text, ',');
-  const std::array<std::string, 5> names = {"x1", "y1", "x2", "y2", "attenuation_db"};
-  std::array<std::size_t, 5> index{};
-  for (std::size_t i = 0; i < names.size(); ++i)
-    index[i] = csv::require_column(header, names[i], file, lines.front().number, kWallsHeader);
+  const std::vector<std::string> names = {"x1", "y1", "x2", "y2", "attenuation_db"};
   std::vector<localize::WallSegment> walls;
-  for (std::size_t l = 1; l < lines.size(); ++l) {
-    const auto fields = csv::split_fields(lines[l].text, ',');
+  for (const csv::Row& row : csv::named_columns(text, file, names, kWallsHeader)) {
     std::array<double, 5> value{};
     for (std::size_t i = 0; i < names.size(); ++i) {
-      if (index[i] >= fields.size()) {
-        throw model::InputError(
-            model::Diagnostic{{file, lines[l].number, static_cast<int>(lines[l].text.size()) + 1},
-                              names[i],
-                              "is missing",
-                              std::string("one field per header column (") + kWallsHeader + ")"});
-      }
-      const auto& f = fields[index[i]];
-      value[i] = csv::parse_number(f, {file, lines[l].number, f.column}, names[i]);
+      const csv::Field& f = row.fields[i];
+      value[i] = csv::parse_number(f, {file, row.number, f.column}, names[i]);
     }
     if (value[4] < 0.0) {
-      const auto& f = fields[index[4]];
-      throw model::InputError(model::Diagnostic{{file, lines[l].number, f.column},
+      throw model::InputError(model::Diagnostic{{file, row.number, row.fields[4].column},
                                                 "attenuation_db",
                                                 "is " + model::format_number(value[4]) + " dB",
                                                 "a loss in dB, >= 0, e.g. 8"});
@@ -59,8 +42,9 @@ std::vector<localize::WallSegment> read_walls_csv(const std::string& path) {
 std::string to_walls_csv(const std::vector<localize::WallSegment>& walls) {
   std::string text = std::string(kWallsHeader) + "\n";
   for (const localize::WallSegment& w : walls) {
-    text += model::format_number(w.a.x(), kWallDigits) + "," + model::format_number(w.a.y(), kWallDigits) +
-            "," + model::format_number(w.b.x(), kWallDigits) + "," +
+    text += model::format_number(w.a.x(), kWallDigits) + "," +
+            model::format_number(w.a.y(), kWallDigits) + "," +
+            model::format_number(w.b.x(), kWallDigits) + "," +
             model::format_number(w.b.y(), kWallDigits) + "," +
             model::format_number(w.attenuation_db, kWallDigits) + "\n";
   }
