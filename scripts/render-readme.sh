@@ -35,6 +35,7 @@ rm -f renders/occupancy/occupancy_frames.csv
 # Paper 4: a phone around a corner, and the hallway's two mirror hypotheses.
 rm -rf renders/localize
 for scenario in corner hallway; do
-  ./build/release/src/rigdesign localize --scenario "$scenario" --seed 1 --out "renders/localize/$scenario"
+  ./build/release/src/rigdesign localize --scenario "$scenario" --seed 1 --checkpoints 0 \
+    --out "renders/localize/$scenario"
   rm -f renders/localize/"$scenario"/*.svg renders/localize/"$scenario"/*.csv
 done

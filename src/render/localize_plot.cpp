@@ -57,13 +57,15 @@ void plot_localization(const LocalizePlot& plot, const std::string& path, int wi
       low = low.cwiseMin(p);
       high = high.cwiseMax(p);
     };
-    // The region of interest is where the robot went (and the walls), with a margin of half
-    // its size (5 m at least): a wild estimate 150 m away must not shrink the path to a dot.
+    // The region of interest is where the robot went (the walls, the credible region), with a
+    // margin of half its size (5 m at least): a wild estimate 150 m away must not shrink the
+    // path to a dot.
     for (const model::Vec3& p : plot.path) extend(p.head<2>());
     for (const auto& [a, b] : plot.walls) {
       extend(a);
       extend(b);
     }
+    for (const model::Vec2& c : plot.region_cells) extend(c);  // the stated region, whole
     if (low.x() > high.x()) {
       for (const PlotMarker& m : plot.markers) extend(m.position.head<2>());
     }

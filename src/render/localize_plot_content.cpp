@@ -1,6 +1,7 @@
 #include "rigdesign/render/localize_plot_content.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "rigdesign/model/format_number.hpp"
@@ -50,7 +51,10 @@ void add_estimate_markers(const localize::EmitterEstimate& estimate,
     const localize::Hypothesis& h = estimate.hypotheses[i];
     plot.markers.push_back(
         {h.position, h.covariance.topLeftCorner<2, 2>(),
-         to_string(estimate.method) + (i == 0 ? "" : " hypothesis " + std::to_string(i + 1)),
+         to_string(estimate.method) + (i == 0 ? "" : " hypothesis " + std::to_string(i + 1)) +
+             (estimate.hypotheses.size() > 1
+                  ? " (p " + model::format_number(std::round(100 * h.probability) / 100) + ")"
+                  : std::string()),
          i == 0 ? PlotMarkerKind::estimate : PlotMarkerKind::alternative});
   }
   // The range fit's credible region (one per plot: the first nls estimate drawn).

@@ -36,7 +36,7 @@ struct RangeFitParams {
   /// robot's path [m] (0: uniform over the search box). Emitters worth finding lie near where a
   /// robot explores; without it, a circling path lets a wide plateau of far positions (each
   /// fitting with a strong transmitter) outweigh the emitter by its area alone.
-  double path_prior_scale = 5.0;
+  double path_prior_scale = 3.0;
   /// Height between the robot's antenna and the emitter, unknown, taken as this [m].
   double vertical_offset = 0.6;
   /// Temper the likelihood by the effective-sample share of correlated shadowing.
