@@ -37,7 +37,8 @@ TEST_CASE("localize: a scenario written out reads back to the same estimate, wit
           "[localize]") {
   TempFolder folder;
   const CliResult generated = run_cli(
-      {"localize", "--scenario", "corner", "--seed", "3", "--json", "--out", folder.path()});
+      {"localize", "--scenario", "corner", "--seed", "3", "--checkpoints", "5", "--json", "--out",
+       folder.path()});
   INFO(generated.err);
   REQUIRE(generated.exit_code == 0);
   const auto report = nlohmann::json::parse(generated.out);
@@ -49,8 +50,9 @@ TEST_CASE("localize: a scenario written out reads back to the same estimate, wit
                            "corner_seed3_truth.csv"}) {
     CHECK(std::filesystem::exists(folder.path() + "/" + file));
   }
-  const CliResult read = run_cli({"localize", "--log", folder.path() + "/corner_seed3_rssi.csv",
-                                  "--truth", folder.path() + "/corner_seed3_truth.csv", "--json"});
+  const CliResult read =
+      run_cli({"localize", "--log", folder.path() + "/corner_seed3_rssi.csv", "--truth",
+               folder.path() + "/corner_seed3_truth.csv", "--checkpoints", "5", "--json"});
   REQUIRE(read.exit_code == 0);
   const auto again = nlohmann::json::parse(read.out)["logs"][0]["emitters"][0];
   for (int k = 0; k < 2; ++k) {
@@ -84,7 +86,8 @@ TEST_CASE("localize: the bundled example log reads and its phone is found within
           "[localize]") {
   const CliResult result =
       run_cli({"localize", "--log", source_path("data/localize/corner_rssi.csv"), "--truth",
-               source_path("data/localize/corner_truth.csv"), "--method", "all", "--json"});
+               source_path("data/localize/corner_truth.csv"), "--method", "all", "--checkpoints",
+               "5", "--json"});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   const auto emitters = nlohmann::json::parse(result.out)["logs"][0]["emitters"];
