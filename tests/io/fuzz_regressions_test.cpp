@@ -10,6 +10,7 @@
 #include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
+#include "rigdesign/io/robot/robot_description_loader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
 
@@ -27,6 +28,14 @@ const std::map<std::string, std::function<void(const std::string&)>>& readers() 
       {"costmap_params_yaml",
        [](const std::string& path) {
          io::load_costmap_params(path, costmap::CostmapParams{}, costmap::ObservationSource{});
+       }},
+      {"robot_urdf",
+       [](const std::string& path) {
+         io::RobotDescriptionRequest request;
+         request.path = path;
+         request.expander = io::RobotDescriptionRequest::Expander::builtin;
+         request.load_meshes = false;
+         io::load_robot_description(request);
        }},
   };
   return table;

@@ -217,6 +217,31 @@ TEST_CASE("bad robot descriptions: exit 2, file and line, nothing written") {
     folder.write("f.xacro", head + "\n<xacro:include filename=\"e.urdf.xacro\"/></robot>");
     check_fails("e.urdf.xacro", "f.xacro:3", "include cycle");
   }
+  // urdfdom would build these (its links own their children) and leak the cycle; the joint
+  // tree check names the joint and its line instead.
+  const auto joint = [](const std::string& name, const std::string& parent,
+                        const std::string& child) {
+    return "<joint name=\"" + name + "\" type=\"fixed\"><parent link=\"" + parent +
+           "\"/><child link=\"" + child + "\"/></joint>\n";
+  };
+  const std::string links =
+      "<robot name=\"r\">\n<link name=\"base_footprint\"/><link name=\"a\"/>"
+      "<link name=\"b\"/>\n";
+  SECTION("a joint whose child is its parent") {
+    folder.write("g.urdf",
+                 links + joint("j0", "base_footprint", "a") + joint("self", "b", "b") + "</robot>");
+    check_fails("g.urdf", "g.urdf:4", "joint 'self'.child: is 'b', its own parent link");
+  }
+  SECTION("a link that is the child of two joints") {
+    folder.write("h.urdf", links + joint("j0", "base_footprint", "a") +
+                               joint("j1", "base_footprint", "b") + joint("j2", "a", "b") +
+                               "</robot>");
+    check_fails("h.urdf", "h.urdf:5", "link 'b' is already the child of joint 'j1' (line 4)");
+  }
+  SECTION("joints that close a loop") {
+    folder.write("i.urdf", links + joint("ab", "a", "b") + joint("ba", "b", "a") + "</robot>");
+    check_fails("i.urdf", "i.urdf:4", "joint 'ba'.parent: closes a loop");
+  }
 }
 
 TEST_CASE("ROS's xacro is used when it is on PATH, with the rig's arguments and environment") {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "joint_tree.hpp"
 #include "package_locator.hpp"
 #include "rigdesign/io/mesh/assimp_mesh_loader.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -174,6 +175,7 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
     throw model::InputError(model::Diagnostic{
         tree.where, "robot", "the root element is <" + tree.name + ">", "a URDF <robot> element"});
   }
+  require_joint_tree(tree);
   urdf::ModelInterfaceSharedPtr urdf_model;
   std::string why;
   {
