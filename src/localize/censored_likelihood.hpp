@@ -94,7 +94,8 @@ struct NormalTail {
   double log_cdf;
   double inverse_mills;
 };
-NormalTail normal_tail(double z);
+NormalTail normal_tail(double z);        // tabulated where that is as exact (1e-9)
+NormalTail exact_normal_tail(double z);  // erfc, or Mills' expansion in the deep tail
 double log_normal_cdf(double z);
 double inverse_mills_ratio(double z);
 
