@@ -6,8 +6,8 @@
 #include <functional>
 #include <thread>
 
-#include "filters/idle_cores.hpp"
 #include "filters/neighbour_grid.hpp"
+#include "rigdesign/model/idle_cores.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::filters {
@@ -79,7 +79,7 @@ std::vector<std::uint32_t> statistical_outlier_inliers(
   std::size_t threads = std::clamp<std::size_t>(
       cloud.size() / model::kMinPointsPerFilterThread, 1,
       static_cast<std::size_t>(std::clamp(params.threads, 1, model::kMaxFilterThreads)));
-  if (threads > 1) threads = std::min(threads, static_cast<std::size_t>(1 + idle_cores()));
+  if (threads > 1) threads = std::min(threads, static_cast<std::size_t>(1 + model::idle_cores()));
   if (threads == 1) {
     thread_local NeighbourScratch scratch;
     answer(scratch);

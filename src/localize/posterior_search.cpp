@@ -1,9 +1,14 @@
 #include "posterior_search.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numeric>
+#include <thread>
+
+#include "rigdesign/model/idle_cores.hpp"
 
 namespace rigdesign::localize::detail {
 namespace {
@@ -36,6 +41,34 @@ struct Grid {
   double at(int c, int r) const { return value[static_cast<std::size_t>(r * columns + c)]; }
 };
 
+// The profile log density at the centres of `cells` (indices into grid->value). The grid's
+// points are independent, and they are most of the range fit's time: chunks of them go to this
+// thread and, when a core is idle, to helpers (each point's value is the same whichever thread
+// computes it, so the result does not depend on the number of threads).
+void evaluate_cells(const CensoredLikelihood& likelihood, const std::vector<int>& cells,
+                    Grid* grid) {
+  constexpr std::size_t kChunk = 64;
+  constexpr std::size_t kMaxThreads = 4;
+  std::atomic<std::size_t> next{0};
+  const auto work = [&] {
+    for (std::size_t begin = next.fetch_add(kChunk); begin < cells.size();
+         begin = next.fetch_add(kChunk)) {
+      for (std::size_t i = begin; i < std::min(cells.size(), begin + kChunk); ++i) {
+        const int cell = cells[i];
+        grid->value[static_cast<std::size_t>(cell)] =
+            likelihood.profile(grid->centre(cell % grid->columns, cell / grid->columns))
+                .log_density;
+      }
+    }
+  };
+  std::size_t threads = std::min(kMaxThreads, cells.size() / (4 * kChunk) + 1);
+  if (threads > 1) threads = std::min(threads, static_cast<std::size_t>(1 + model::idle_cores()));
+  std::vector<std::thread> helpers;
+  for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
+  work();
+  for (std::thread& helper : helpers) helper.join();
+}
+
 Grid evaluate_all(const CensoredLikelihood& likelihood, const SearchBox& box, double cell) {
   Grid grid;
   grid.origin = box.low;
@@ -43,9 +76,9 @@ Grid evaluate_all(const CensoredLikelihood& likelihood, const SearchBox& box, do
   grid.columns = std::max(1, static_cast<int>(std::ceil((box.high.x() - box.low.x()) / cell)));
   grid.rows = std::max(1, static_cast<int>(std::ceil((box.high.y() - box.low.y()) / cell)));
   grid.value.assign(static_cast<std::size_t>(grid.columns * grid.rows), kUnevaluated);
-  for (int r = 0; r < grid.rows; ++r)
-    for (int c = 0; c < grid.columns; ++c)
-      grid.at(c, r) = likelihood.profile(grid.centre(c, r)).log_density;
+  std::vector<int> cells(grid.value.size());
+  std::iota(cells.begin(), cells.end(), 0);
+  evaluate_cells(likelihood, cells, &grid);
   return grid;
 }
 
@@ -110,15 +143,17 @@ Grid refine(const Grid& coarse, const std::vector<char>& chosen, int factor,
   fine.columns = (high_c - low_c + 1) * factor;
   fine.rows = (high_r - low_r + 1) * factor;
   fine.value.assign(static_cast<std::size_t>(fine.columns * fine.rows), kUnevaluated);
+  std::vector<int> cells;
   for (int r = low_r; r <= high_r; ++r)
     for (int c = low_c; c <= high_c; ++c) {
       if (!kept[static_cast<std::size_t>(r * coarse.columns + c)]) continue;
       for (int sr = 0; sr < factor; ++sr)
         for (int sc = 0; sc < factor; ++sc) {
           const int fc = (c - low_c) * factor + sc, fr = (r - low_r) * factor + sr;
-          fine.at(fc, fr) = likelihood.profile(fine.centre(fc, fr)).log_density;
+          cells.push_back(fr * fine.columns + fc);
         }
     }
+  evaluate_cells(likelihood, cells, &fine);
   return fine;
 }
 

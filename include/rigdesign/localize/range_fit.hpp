@@ -11,7 +11,7 @@
 /// measures the residuals' correlation along the path (a correlated share and a length, fitted
 /// to the empirical correlogram) and sigma (Tobit maximum likelihood), and the log-likelihood
 /// is tempered by the effective-sample share they imply. The posterior is evaluated on a grid
-/// refined where it matters (2 m, 0.5 m, 0.25 m); its modes are the hypotheses, each with the
+/// refined where it matters (2 m, 1 m, 0.5 m); its modes are the hypotheses, each with the
 /// probability of its basin, and its highest-density region of 95 % is the stated uncertainty.
 /// Modes whose probabilities differ by less than what the noise can tell (likelihood-ratio
 /// test at 95 %: ratio above exp(-3.84 / 2)) are reported as ambiguous, not ranked.

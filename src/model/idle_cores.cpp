@@ -1,4 +1,4 @@
-#include "filters/idle_cores.hpp"
+#include "rigdesign/model/idle_cores.hpp"
 
 #include <sched.h>
 
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-namespace rigdesign::filters {
+namespace rigdesign::model {
 
 int idle_cores() {
   cpu_set_t allowed;
@@ -29,4 +29,4 @@ int idle_cores() {
   return std::max(0, cores - std::max(1, runnable));
 }
 
-}  // namespace rigdesign::filters
+}  // namespace rigdesign::model
