@@ -70,7 +70,8 @@ build_fuzzers() {
   "$root/scripts/setup.sh" >&2
   cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-    -DRIGDESIGN_FUZZ=ON -DRIGDESIGN_BUILD_TESTS=OFF -DRIGDESIGN_WERROR=ON >/dev/null
+    -DRIGDESIGN_FUZZ=ON -DRIGDESIGN_BUILD_TESTS=OFF -DRIGDESIGN_WERROR=ON \
+    -DRIGDESIGN_UNITY_BUILD=ON >/dev/null
   cmake --build "$build" --target rigdesign_fuzzers -j"$(nproc)" >&2
   python3 "$root/fuzz/make_seeds.py" "$build/seeds" >&2
 }
