@@ -23,8 +23,8 @@ double series_log_likelihood(const std::vector<double>& rho, const std::vector<d
   const double shadowing = beta * variance;
   const double fading = std::max((1.0 - beta) * variance, 1e-9 * variance);
   // The log of the innovation variances' product, taken every kLogEvery steps: a log per step
-  // was most of this function's time. Each variance lies within [1e-9, 1] of the residuals'
-  // variance, so eight of them multiplied stay far inside a double's range.
+  // was most of this function's time. Each variance divided by the residuals' lies in [1e-9, 1],
+  // so eight such ratios multiplied stay far inside a double's range.
   constexpr std::size_t kLogEvery = 8;
   double mean = 0.0, spread = shadowing, squares = 0.0, product = 1.0, log_product = 0.0;
   for (std::size_t i = 0; i < r.size(); ++i) {
