@@ -12,10 +12,9 @@
 namespace rigdesign::localize::detail {
 namespace {
 
-constexpr double kDeepTail = -30.0;
+constexpr double kDeepTail = -30.0;  // below this z, the tail expansions replace erfc
 // 10 log10 d = (5 / ln 10) ln d^2: glibc's log is faster than its log10, Eigen's faster still.
-constexpr double kFiveOverLn10 =
-    5.0 / std::numbers::ln10;  // below this z, the tail expansions replace erfc
+constexpr double kFiveOverLn10 = 5.0 / std::numbers::ln10;
 constexpr int kNewtonSteps = 12;
 // Newton stops when a step moves the level and exponent less than this: far below what the
 // data tell (tenths of a dB, hundredths of the exponent).
