@@ -1,6 +1,6 @@
 // Fuzz target: a nav2 costmap parameter file (costmap --params, occupancy --params).
 #include "fuzz_input.hpp"
-#include "rigdesign/io/config/costmap_params_loader.hpp"
+#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = rigdesign::fuzz::input_file(data, size, "costmap.yaml");

@@ -20,8 +20,8 @@
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
 #include "rigdesign/io/atomic_write.hpp"
-#include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/io/maps/map_files.hpp"
+#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/render/costmap_frame.hpp"
@@ -30,6 +30,10 @@
 
 namespace rigdesign::cli {
 namespace {
+
+// An update rate above the follower's control rate would update between its commands: the
+// one limit on --update-rate (scenarios::check_scenario_inputs holds the same rule).
+const double kControlRate = scenarios::ScenarioParams{}.control_rate;
 
 struct CostmapOptions {
   std::string rig;
@@ -251,9 +255,7 @@ void apply_params_file(const std::string& path, const model::Rig& rig,
   params.costmap = file.costmap;
   params.mount_sources = file.sources;
   for (const costmap::NamedObservationSource& named : file.sources) {
-    const bool known = std::any_of(rig.mounts.begin(), rig.mounts.end(),
-                                   [&](const model::Mount& m) { return m.id == named.name; });
-    require_option(known, "--params",
+    require_option(rig.find_mount(named.name) != nullptr, "--params",
                    path + ": observation source '" + named.name + "' names no mount of " + rig.file,
                    "observation sources named after the rig's mount ids");
   }
@@ -277,8 +279,6 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
   require_option(!options.window || *options.window > 0.0, "--window", "must be positive",
                  "a window side > 0 [m]");
   require_option(options.speed > 0.0, "--speed", "must be positive", "a speed > 0 [m/s]");
-  require_option(options.update_rate > 0.0 && options.update_rate <= 20.0, "--update-rate",
-                 "is out of range", "0 < rate <= 20 Hz (the control rate)");
   require_option(options.frame_every >= 0, "--frame-every", "must not be negative",
                  "0 (no frames) or a number of updates");
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, "");
@@ -359,7 +359,8 @@ Command setup_costmap(CLI::App& parent) {
       ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
   app->add_option("--update-rate", options->update_rate,
                   "Sensing, costmap and planning rate [Hz] (default 5)")
-      ->check(positive_up_to(100.0, "a rate in (0, 100] Hz"));
+      ->check(positive_up_to(kControlRate, "a rate in (0, " + model::format_number(kControlRate) +
+                                               "] Hz (the follower's control rate)"));
   app->add_option("--frame-every", options->frame_every,
                   "Write a PNG frame every N updates (default 5, 0: none)")
       ->check(finite_in(0, 100000, "0 (none) or an update count"));

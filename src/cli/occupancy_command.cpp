@@ -17,7 +17,7 @@
 #include "number_checks.hpp"
 #include "progress_line.hpp"
 #include "rigdesign/io/atomic_write.hpp"
-#include "rigdesign/io/config/costmap_params_loader.hpp"
+#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/statistics.hpp"

@@ -10,10 +10,6 @@
 namespace rigdesign::cli {
 namespace {
 
-std::string degrees(double radians) {
-  return model::format_number(model::rad_to_deg(radians), 4);
-}
-
 std::string resolution_text(const model::SensorMode& mode) {
   std::string text = model::format_number(model::rad_to_deg(mode.angular_resolution_h), 3);
   if (mode.angular_resolution_v) {
@@ -48,18 +44,6 @@ std::string where_text(const model::SourceLocation& where) {
 
 }  // namespace
 
-std::string fov_text(const model::FieldOfView& fov) {
-  switch (fov.shape) {
-    case model::FovShape::pyramid: return degrees(fov.horizontal) + " x " + degrees(fov.vertical);
-    case model::FovShape::cone: return "cone " + degrees(fov.horizontal);
-    case model::FovShape::band:
-      return degrees(fov.horizontal) + " (" + degrees(fov.elevation_min) + ".." +
-             degrees(fov.elevation_max) + ")";
-    case model::FovShape::planar: return degrees(fov.horizontal) + " planar";
-  }
-  return "?";
-}
-
 void print_sensor_sheet(const model::Sensor& sensor, const model::SensorLibrary& library,
                         std::ostream& out) {
   out << sensor.id << ": " << sensor.name << "\n"
@@ -84,7 +68,7 @@ void print_sensor_sheet(const model::Sensor& sensor, const model::SensorLibrary&
   for (const model::SensorMode& mode : sensor.modes) {
     const double points_per_second = mode.points_per_frame * mode.frequency;
     table.add_row(
-        {mode.id, fov_text(mode.fov),
+        {mode.id, mode.fov.shape().summary_deg(),
          model::format_number(mode.min_range, 3) + "-" + model::format_number(mode.max_range, 4),
          model::format_number(mode.frequency, 4), resolution_text(mode),
          fixed(mode.points_per_frame, 0), fixed(points_per_second / 1e6, 3),
@@ -115,13 +99,9 @@ void print_sensor_sheet(const model::Sensor& sensor, const model::SensorLibrary&
 nlohmann::json sensor_json(const model::Sensor& sensor, const model::SensorLibrary& library) {
   nlohmann::json modes = nlohmann::json::array();
   for (const model::SensorMode& mode : sensor.modes) {
-    nlohmann::json fov{{"shape", model::to_string(mode.fov.shape)},
-                       {"horizontal_deg", model::rad_to_deg(mode.fov.horizontal)}};
-    if (mode.fov.shape == model::FovShape::band) {
-      fov["elevation_min_deg"] = model::rad_to_deg(mode.fov.elevation_min);
-      fov["elevation_max_deg"] = model::rad_to_deg(mode.fov.elevation_max);
-    } else {
-      fov["vertical_deg"] = model::rad_to_deg(mode.fov.vertical);
+    nlohmann::json fov{{"shape", mode.fov.shape().name()}};
+    for (const model::NamedAngle& angle : mode.fov.shape().report_angles()) {
+      fov[std::string(angle.key)] = model::rad_to_deg(angle.radians);
     }
     nlohmann::json resolution{model::rad_to_deg(mode.angular_resolution_h)};
     if (mode.angular_resolution_v)

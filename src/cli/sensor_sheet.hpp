@@ -10,9 +10,6 @@
 
 namespace rigdesign::cli {
 
-/// "87 x 58", "360 (-15..15)" for a band, "270" for a planar scanner, "cone 90".
-std::string fov_text(const model::FieldOfView& fov);
-
 void print_sensor_sheet(const model::Sensor& sensor, const model::SensorLibrary& library,
                         std::ostream& out);
 nlohmann::json sensor_json(const model::Sensor& sensor, const model::SensorLibrary& library);

@@ -45,7 +45,7 @@ std::string lowercase(std::string text) {
 // 40 m at 10 Hz and 20 m at 20 Hz does not answer "40 m at 20 Hz".
 bool mode_matches(const model::SensorMode& mode, const SensorsOptions& options) {
   return mode.max_range >= options.min_range && mode.frequency >= options.min_rate &&
-         model::rad_to_deg(mode.fov.horizontal) >= options.min_fov_deg - 1e-9;
+         model::rad_to_deg(mode.fov.horizontal()) >= options.min_fov_deg - 1e-9;
 }
 
 std::vector<const model::SensorMode*> matching_modes(const model::Sensor& sensor,
@@ -122,7 +122,7 @@ void print_list(const std::vector<const model::Sensor*>& sensors, const SensorsO
       rate_high = std::max(rate_high, mode->frequency);
     }
     table.add_row(
-        {sensor->id, model::to_string(sensor->technology), fov_text(modes.front()->fov),
+        {sensor->id, model::to_string(sensor->technology), modes.front()->fov.shape().summary_deg(),
          span(range_low, range_high, 1), span(rate_low, rate_high, 1),
          std::to_string(modes.size()) + "/" + std::to_string(sensor->modes.size()),
          fixed(sensor->price.usd, 0) + (sensor->price.basis == model::Basis::estimate ? "*" : " "),

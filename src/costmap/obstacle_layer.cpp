@@ -1,6 +1,6 @@
 #include "rigdesign/costmap/obstacle_layer.hpp"
 
-#include "grid_traversal.hpp"
+#include "cloud_marking.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 
 namespace rigdesign::costmap {
@@ -33,13 +33,11 @@ void clear_cloud(const PlaneFrame& frame, std::uint8_t* cells,
   for (const model::Point3f& point : observation.cloud->points) {
     const model::Vec3 p_world = observation.T_world_cloud * point.cast<double>();
     if (!source.in_height_band(p_world.z())) continue;
-    const model::Vec3 ray = p_world - origin;
-    const double length = ray.norm();
-    if (!(length > source.raytrace_min_range)) continue;
-    const bool cut_short = length > source.raytrace_max_range;
-    GridPoint<2> a = frame.to_grid(origin + ray * (source.raytrace_min_range / length));
-    GridPoint<2> b = frame.to_grid(
-        cut_short ? model::Vec3(origin + ray * (source.raytrace_max_range / length)) : p_world);
+    const auto clearing = detail::clearing_ray(origin, p_world, source);
+    if (!clearing) continue;
+    const bool cut_short = clearing->cut_short;
+    GridPoint<2> a = frame.to_grid(clearing->start);
+    GridPoint<2> b = frame.to_grid(clearing->end);
     bool end_clipped = false;
     if (!detail::clip_to_grid<2>(a, b, frame.size, end_clipped)) continue;
     const bool include_end = cut_short || end_clipped || !detail::inside_grid<2>(b, frame.size);
@@ -49,16 +47,9 @@ void clear_cloud(const PlaneFrame& frame, std::uint8_t* cells,
 }
 
 void mark_cloud(const PlaneFrame& frame, std::uint8_t* cells, const CloudObservation& observation) {
-  const ObservationSource& source = observation.source;
-  const model::Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
-  for (const model::Point3f& point : observation.cloud->points) {
-    const model::Vec3 p_world = observation.T_world_cloud * point.cast<double>();
-    if (!source.marks(p_world, origin)) continue;
-    const GridPoint<2> g = frame.to_grid(p_world);
-    if (!detail::inside_grid<2>(g, frame.size)) continue;
-    const auto cell = g.array().floor().cast<std::ptrdiff_t>();
+  detail::for_each_marked_cell<2>(frame, observation, [&](const auto& cell) {
     cells[cell.x() + cell.y() * frame.stride.y()] = cost::kLethal;
-  }
+  });
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "grid_traversal.hpp"
+#include "cloud_marking.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 
 namespace rigdesign::costmap {
@@ -61,30 +61,18 @@ void clear_cloud(const GridFrame& frame, std::uint8_t* voxels, const CloudObserv
   const model::Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
   for (const model::Point3f& point : observation.cloud->points) {
     const model::Vec3 p_world = observation.T_world_cloud * point.cast<double>();
-    const model::Vec3 ray = p_world - origin;
-    const double length = ray.norm();
-    if (!(length > source.raytrace_min_range)) continue;
-    const model::Vec3 start = origin + ray * (source.raytrace_min_range / length);
-    const bool cut_short = length > source.raytrace_max_range;
-    const model::Vec3 end =
-        cut_short ? model::Vec3(origin + ray * (source.raytrace_max_range / length)) : p_world;
-    clear_ray(frame, voxels, start, end, cut_short, stats);
+    const auto clearing = detail::clearing_ray(origin, p_world, source);
+    if (!clearing) continue;
+    clear_ray(frame, voxels, clearing->start, clearing->end, clearing->cut_short, stats);
   }
 }
 
 void mark_cloud(const GridFrame& frame, std::uint8_t* voxels, const CloudObservation& observation,
                 VoxelUpdateStats& stats) {
-  const ObservationSource& source = observation.source;
-  const model::Vec3 origin = observation.T_world_cloud * observation.cloud->origin.cast<double>();
-  for (const model::Point3f& point : observation.cloud->points) {
-    const model::Vec3 p_world = observation.T_world_cloud * point.cast<double>();
-    if (!source.marks(p_world, origin)) continue;
-    const GridPoint<3> g = frame.to_grid(p_world);
-    if (!detail::inside_grid<3>(g, frame.size)) continue;
-    const auto cell = g.array().floor().cast<std::ptrdiff_t>();
+  detail::for_each_marked_cell<3>(frame, observation, [&](const auto& cell) {
     voxels[cell.x() * frame.stride.x() + cell.y() * frame.stride.y() + cell.z()] = kOccupiedVoxel;
     ++stats.voxels_marked;
-  }
+  });
 }
 
 }  // namespace

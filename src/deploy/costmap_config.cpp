@@ -13,52 +13,16 @@
 namespace rigdesign::deploy {
 namespace {
 
-// Directions sampled per FOV angle when looking for the steepest downward ray.
-constexpr int kFovSamples = 65;
 // A hull this close to its circumscribed circle's area is given as robot_radius.
 constexpr double kRoundShare = 0.9;
+// [m] inflation beyond the circumscribed radius: cost falls off over a margin the path
+// planner can use to keep clear of walls.
+constexpr double kInflationMargin = 0.1;
 // nav2's VoxelLayer packs a column into 16 bits.
 constexpr int kMaxVoxels = 16;
 
 double round_up(double value, double unit) {
   return std::ceil(value / unit - 1e-9) * unit;
-}
-
-// The sine of the steepest downward direction of the mode's FOV in the robot frame (<= 0:
-// no ray points down), from a grid over the FOV's two angles, edges included.
-double steepest_down(const model::SensorMode& mode, const model::Mat3& R_robot_sensor) {
-  const model::FieldOfView& fov = mode.fov;
-  double best = -1.0;
-  for (int i = 0; i < kFovSamples; ++i) {
-    const double u = -0.5 + static_cast<double>(i) / (kFovSamples - 1);
-    for (int j = 0; j < kFovSamples; ++j) {
-      const double v = -0.5 + static_cast<double>(j) / (kFovSamples - 1);
-      model::Vec3 direction;
-      switch (fov.shape) {
-        case model::FovShape::pyramid:
-          direction = model::Vec3(1.0, std::tan(u * fov.horizontal), std::tan(v * fov.vertical));
-          break;
-        case model::FovShape::cone: {
-          const double polar = (v + 0.5) * fov.horizontal / 2;
-          const double around = 2 * u * std::numbers::pi;
-          direction = model::Vec3(std::cos(polar), std::sin(polar) * std::cos(around),
-                                  std::sin(polar) * std::sin(around));
-          break;
-        }
-        case model::FovShape::band:
-        case model::FovShape::planar: {
-          const double azimuth = u * fov.horizontal;
-          const double elevation =
-              fov.elevation_min + (v + 0.5) * (fov.elevation_max - fov.elevation_min);
-          direction = model::Vec3(std::cos(elevation) * std::cos(azimuth),
-                                  std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-          break;
-        }
-      }
-      best = std::max(best, -(R_robot_sensor * direction.normalized()).z());
-    }
-  }
-  return best;
 }
 
 // The largest height error of a floor return within `range` of a sensor `height` above the
@@ -104,7 +68,8 @@ std::string expand_topic(const std::string& text, const std::string& mount_id) {
 }
 
 CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& library,
-                             const model::Requirements* requirements, const DeployOptions& options) {
+                             const model::Requirements* requirements,
+                             const DeployOptions& options) {
   CostmapConfig config;
   config.robot_base_frame = rig.base_link;
   set_footprint(rig.body, config);
@@ -114,15 +79,19 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   p.size_x = p.size_y = std::max(3.0, round_up(2 * rig.distance_of_interest, 0.5));
   p.robot_radius = config.robot_radius;
   p.inflation.inscribed_radius = config.inscribed_radius;
-  p.inflation.inflation_radius = round_up(config.robot_radius + 0.1, 0.01);
+  config.inflation_margin = kInflationMargin;
+  p.inflation.inflation_radius = round_up(config.robot_radius + kInflationMargin, 0.01);
+  config.update_rate = options.update_rate;
+  config.floor_noise_sigmas = options.floor_noise_sigmas;
   bool any_3d = false;
   for (const model::Mount& mount : rig.mounts) {
     const model::SensorMode* mode = &library.resolved_mode(mount.sensor_id, mount.mode_id);
     SourceConfig source;
     source.mount_id = mount.id;
-    source.laser_scan = mode->fov.shape == model::FovShape::planar;
+    source.laser_scan = mode->fov.shape().is_planar_scan();
     any_3d = any_3d || !source.laser_scan;
-    source.topic = expand_topic(source.laser_scan ? options.scan_topic : options.cloud_topic, mount.id);
+    source.topic =
+        expand_topic(source.laser_scan ? options.scan_topic : options.cloud_topic, mount.id);
     source.sensor_frame = data_frame_name(mount.id, *mode);
     costmap::ObservationSource& s = source.source;
     const model::Vec3 origin = mount.T_robot_sensor.translation();
@@ -134,9 +103,9 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
     // The near blind zone is neither marked nor cleared: what sits there is remembered.
     s.raytrace_min_range = mode->min_range;
     s.raytrace_max_range = round_up(std::min(mode->max_range, s.obstacle_max_range + 0.5), 0.01);
-    source.floor_height_error =
-        floor_height_error(*mode, origin.z(), steepest_down(*mode, mount.T_robot_sensor.linear()),
-                           s.obstacle_max_range);
+    source.floor_height_error = floor_height_error(
+        *mode, origin.z(), mode->fov.shape().steepest_down(mount.T_robot_sensor.linear()),
+        s.obstacle_max_range);
     s.min_obstacle_height = round_up(
         options.floor_flatness + options.floor_noise_sigmas * source.floor_height_error, 0.01);
     s.max_obstacle_height = top;

@@ -68,11 +68,11 @@ std::vector<SelfFilter> self_filters(const model::Rig& rig, const model::SensorL
     const model::Mat3 R = mount.T_robot_sensor.linear();
     SelfFilter filter;
     filter.mount_id = mount.id;
-    filter.scanner = mode.fov.shape == model::FovShape::planar;
+    filter.scanner = mode.fov.shape().is_planar_scan();
     std::vector<bool> housing(parts.size());
     for (std::size_t k = 0; k < parts.size(); ++k) {
-      housing[k] = parts[k].part ? geometry::inside_part(*parts[k].part, origin)
-                                 : occluder.contains(origin);
+      housing[k] =
+          parts[k].part ? geometry::inside_part(*parts[k].part, origin) : occluder.contains(origin);
     }
     std::vector<std::pair<double, bool>> scan;
     std::vector<SelfBox> boxes(parts.size());

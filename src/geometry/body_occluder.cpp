@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rigdesign/model/line_crossings.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::geometry {
@@ -73,25 +74,6 @@ bool overlaps_inside(const std::vector<model::Vec2>& polygon, const model::Vec2&
 }
 
 }  // namespace
-
-void append_quadratic_roots(double a, double b, double c, std::vector<double>& roots) {
-  const double scale = std::max({std::abs(a), std::abs(b), std::abs(c)});
-  if (scale == 0.0) return;
-  if (std::abs(a) <= 1e-14 * scale) {
-    if (std::abs(b) > 1e-14 * scale) roots.push_back(-c / b);
-    return;
-  }
-  const double discriminant = b * b - 4 * a * c;
-  if (discriminant < 0) return;
-  // Citardauq form avoids cancellation when b^2 >> 4ac.
-  const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
-  if (q != 0.0) {
-    roots.push_back(q / a);
-    roots.push_back(c / q);
-  } else {
-    roots.push_back(0.0);
-  }
-}
 
 BodyOccluder::BodyOccluder(const model::RobotBody& body)
     : radius_(body.radius),
@@ -208,9 +190,9 @@ void BodyOccluder::append_critical_parameters(const model::Vec3& origin, const m
     const model::Vec2 f0 = o * e.z() + k * e.head<2>();
     const model::Vec2 f1 = o * direction.z() + k * direction.head<2>();
     const double r2 = radius_ * radius_;
-    append_quadratic_roots(f1.squaredNorm() - r2 * direction.z() * direction.z(),
-                           2 * f0.dot(f1) - 2 * r2 * e.z() * direction.z(),
-                           f0.squaredNorm() - r2 * e.z() * e.z(), parameters);
+    model::append_quadratic_roots(f1.squaredNorm() - r2 * direction.z() * direction.z(),
+                                  2 * f0.dot(f1) - 2 * r2 * e.z() * direction.z(),
+                                  f0.squaredNorm() - r2 * e.z() * e.z(), parameters);
   }
 }
 

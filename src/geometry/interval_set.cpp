@@ -34,17 +34,17 @@ IntervalSet IntervalSet::united(const IntervalSet& other) const {
 }
 
 IntervalSet IntervalSet::minus(const IntervalSet& other) const {
-  constexpr double kPiece = 1e-12;
   IntervalSet result;
   std::size_t k = 0;
   for (const auto& [low, high] : intervals_) {
     double from = low;
     while (k < other.intervals_.size() && other.intervals_[k].second <= from) ++k;
     for (std::size_t j = k; j < other.intervals_.size() && other.intervals_[j].first < high; ++j) {
-      if (other.intervals_[j].first - from > kPiece) result.append(from, other.intervals_[j].first);
+      if (other.intervals_[j].first - from > kShortestPiece)
+        result.append(from, other.intervals_[j].first);
       from = std::max(from, other.intervals_[j].second);
     }
-    if (high - from > kPiece) result.append(from, high);
+    if (high - from > kShortestPiece) result.append(from, high);
   }
   return result;
 }

@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rigdesign/model/line_crossings.hpp"
+
 namespace rigdesign::geometry {
 namespace {
-
-// Pieces of a line shorter than this are not tested on their own (as in MountedFov).
-constexpr double kPiece = 1e-12;
 
 bool inside(const model::OrientedBox& box, const model::Vec3& p_robot) {
   const model::Vec3 q = box.T_robot_box.inverse() * p_robot;
@@ -59,23 +58,13 @@ IntervalSet MountExclusions::excluded_along(const model::Vec3& start, const mode
   for (const model::AzimuthBand& band : bands_) {
     for (const double angle : {band.lower, band.upper}) {
       // The half-plane at `angle` lies in the plane through the z axis with this normal.
-      const model::Vec3 normal(-std::sin(angle), std::cos(angle), 0.0);
-      const double slope = normal.dot(w);
-      if (std::abs(slope) > 1e-15) cuts.push_back(-normal.dot(c) / slope);
+      model::append_plane_crossing(model::Vec3(-std::sin(angle), std::cos(angle), 0.0), c, w, cuts);
     }
   }
   for (const model::OrientedBox& box : boxes_) append_box_roots(box, start, direction, cuts);
-  std::sort(cuts.begin(), cuts.end());
-  double previous = t_min;
-  for (const double cut : cuts) {
-    if (cut <= previous) continue;
-    const double next = std::min(cut, t_max);
-    if (next - previous > kPiece && excludes(start + 0.5 * (previous + next) * direction)) {
-      excluded.append(previous, next);
-    }
-    previous = next;
-    if (previous >= t_max) break;
-  }
+  for_each_piece(cuts, t_min, t_max, [&](double low, double high) {
+    if (excludes(start + 0.5 * (low + high) * direction)) excluded.append(low, high);
+  });
   return excluded;
 }
 

@@ -13,8 +13,6 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 // Azimuth bins for culling: a triangle is tried in a section only if its shadow's azimuth
 // span (about the robot's vertical axis) overlaps the section's bin.
 constexpr int kAzimuthBins = 720;
-// Shadow pieces shorter than this (line parameter) are grazing contacts, not occlusion.
-constexpr double kPiece = 1e-12;
 
 // Moller-Trumbore: whether the ray o + s d (s > 0) crosses triangle abc.
 bool ray_crosses(const model::Vec3& o, const model::Vec3& d, const model::Vec3& a,
@@ -184,7 +182,7 @@ IntervalSet SolidShadow::blocked_along(const model::Vec3& start, const model::Ve
         high = std::min(high, -value / slope);
       }
     }
-    if (high - low > kPiece) pieces.emplace_back(low, high);
+    if (high - low > kShortestPiece) pieces.emplace_back(low, high);  // shorter: grazing
   }
   thread_local std::vector<double> cuts;
   for (const CylinderShadow& cylinder : cylinders_) {
@@ -192,18 +190,11 @@ IntervalSet SolidShadow::blocked_along(const model::Vec3& start, const model::Ve
     const model::Vec3 s = start - cylinder.to_local;
     cuts.assign({t_min, t_max});
     cylinder.solid.append_critical_parameters(o, s, direction, cuts);
-    std::sort(cuts.begin(), cuts.end());
-    double previous = t_min;
-    for (const double cut : cuts) {
-      if (cut <= previous) continue;
-      const double next = std::min(cut, t_max);
-      if (next - previous > kPiece &&
-          cylinder.solid.blocks(o, s + 0.5 * (previous + next) * direction)) {
-        pieces.emplace_back(previous, next);
+    for_each_piece(cuts, t_min, t_max, [&](double low, double high) {
+      if (cylinder.solid.blocks(o, s + 0.5 * (low + high) * direction)) {
+        pieces.emplace_back(low, high);
       }
-      previous = next;
-      if (previous >= t_max) break;
-    }
+    });
   }
   std::sort(pieces.begin(), pieces.end());
   IntervalSet blocked;

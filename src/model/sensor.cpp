@@ -38,16 +38,13 @@ const SensorMode& SensorLibrary::resolved_mode(const std::string& sensor_id,
                                                const std::string& mode_id) const {
   const Sensor* sensor = find(sensor_id);
   const SensorMode* mode = sensor ? sensor->find_mode(mode_id) : nullptr;
-  if (mode == nullptr) throw std::logic_error("unresolved sensor mode " + sensor_id + "/" + mode_id);
+  if (mode == nullptr)
+    throw std::logic_error("unresolved sensor mode " + sensor_id + "/" + mode_id);
   return *mode;
 }
 
 std::string to_string(Technology technology) {
   return std::string(name_in(kTechnologyNames, technology));
-}
-
-std::string to_string(FovShape shape) {
-  return std::string(name_in(kFovShapeNames, shape));
 }
 
 std::string to_string(LightCondition condition) {

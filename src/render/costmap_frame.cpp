@@ -241,7 +241,7 @@ std::vector<FovWedge> fov_wedges(const model::Rig& rig, const model::SensorLibra
     FovWedge wedge;
     wedge.apex = pose.position + R_world_robot * offset;
     wedge.yaw = pose.yaw + std::atan2(axis.y(), axis.x());
-    wedge.half_angle = mode.fov.horizontal / 2;
+    wedge.half_angle = mode.fov.horizontal() / 2;
     wedge.range = std::min(mode.max_range, marking_ranges[i]);
     wedge.colour = i;
     wedge.label = mount.id + ": " + mount.sensor_id;

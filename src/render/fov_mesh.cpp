@@ -13,50 +13,31 @@ constexpr double kPi = std::numbers::pi;
 // 48 segments over a full turn are 7.5 deg chords: round at figure sizes, and a spherical
 // cap tessellated this finely loses well under 1 % of its volume.
 constexpr int kSegmentsOnWiderAngle = 48;
-// Angles this close [rad] to a pole (elevation +-90 deg, a cone's axis) or to a full turn are
-// taken as that pole or full turn; datasheet angles converted from degrees land within ~1e-15.
-constexpr double kAngleTolerance = 1e-9;
+// A segment count this close to a whole number is taken as it (datasheet angles converted from
+// degrees land within ~1e-15 of a round share).
+constexpr double kSegmentShareTolerance = 1e-9;
 
-// A FOV's directions as a map from a rectangle of two angles (u, v) [rad] to unit vectors in
-// the sensor frame, sampled on a grid. The map is oriented so that (d/du) x (d/dv) points out
-// through the far cap, which makes counter-clockwise grid quads outward-facing there.
+// A FOV's directions (model::FovShape::direction over its domain) sampled on a grid. The map
+// is oriented so that (d/du) x (d/dv) points out through the far cap, which makes
+// counter-clockwise grid quads outward-facing there.
 struct AngleGrid {
-  model::FovShape shape = model::FovShape::pyramid;
-  double u_min = 0.0;
-  double u_max = 0.0;
-  double v_min = 0.0;
-  double v_max = 0.0;
-  int columns = 1;             // segments along u
-  int rows = 1;                // segments along v
-  bool wraps_u = false;        // u is a full turn: column `columns` is column 0
-  bool pole_at_v_min = false;  // every u gives the same direction on row 0
-  bool pole_at_v_max = false;  // ... on row `rows`
+  const model::FovShape* shape = nullptr;
+  model::AngularDomain domain;
+  int columns = 1;  // segments along u
+  int rows = 1;     // segments along v
 
-  double u(int i) const { return u_min + (u_max - u_min) * i / columns; }
-  double v(int j) const { return v_min + (v_max - v_min) * j / rows; }
+  double u(int i) const { return domain.u_min + (domain.u_max - domain.u_min) * i / columns; }
+  double v(int j) const { return domain.v_min + (domain.v_max - domain.v_min) * j / rows; }
+  bool wraps_u() const { return domain.wraps_u; }
   bool is_pole_row(int j) const {
-    return (j == 0 && pole_at_v_min) || (j == rows && pole_at_v_max);
+    return (j == 0 && domain.pole_at_v_min) || (j == rows && domain.pole_at_v_max);
   }
   int vertices_in_row(int j) const {
     if (is_pole_row(j)) return 1;
-    return wraps_u ? columns : columns + 1;
+    return wraps_u() ? columns : columns + 1;
   }
+  model::Vec3 direction(int i, int j) const { return shape->direction(u(i), v(j)); }
 };
-
-// Unit direction in the sensor frame for the grid angles of each shape:
-// pyramid u = atan(y/x), v = atan(z/x); cone u = roll about x, v = angle from +x;
-// band and planar u = azimuth atan2(y, x), v = elevation asin(z).
-model::Vec3 direction(model::FovShape shape, double u, double v) {
-  switch (shape) {
-    case model::FovShape::pyramid: return model::Vec3(1.0, std::tan(u), std::tan(v)).normalized();
-    case model::FovShape::cone:
-      return model::Vec3(std::cos(v), std::sin(v) * std::sin(u), std::sin(v) * std::cos(u));
-    case model::FovShape::band:
-    case model::FovShape::planar:
-      return model::Vec3(std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v));
-  }
-  return model::Vec3::UnitX();
-}
 
 // [rad] the visible volume's grid: fine enough that a cut by the body (a top plate shadowing
 // beams a few degrees down) falls within a couple of degrees of where the coverage engine has it.
@@ -78,42 +59,16 @@ double visible_reach(const geometry::BodyOccluder& body, const model::Vec3& orig
 
 int segments_for(double span, double wider_span) {
   const double share = span / wider_span;
-  return std::max(1, static_cast<int>(std::ceil(kSegmentsOnWiderAngle * share - kAngleTolerance)));
+  return std::max(
+      1, static_cast<int>(std::ceil(kSegmentsOnWiderAngle * share - kSegmentShareTolerance)));
 }
 
 AngleGrid angle_grid(const model::FieldOfView& fov, double max_step) {
   AngleGrid grid;
-  grid.shape = fov.shape;
-  switch (fov.shape) {
-    case model::FovShape::pyramid:
-      grid.u_max = fov.horizontal / 2;
-      grid.v_max = fov.vertical / 2;
-      grid.u_min = -grid.u_max;
-      grid.v_min = -grid.v_max;
-      break;
-    case model::FovShape::cone:
-      grid.u_min = -kPi;
-      grid.u_max = kPi;
-      grid.wraps_u = true;
-      grid.v_max = std::min(fov.horizontal / 2, kPi);
-      grid.pole_at_v_min = true;  // the optical axis
-      grid.pole_at_v_max = grid.v_max >= kPi - kAngleTolerance;
-      break;
-    case model::FovShape::band:
-    case model::FovShape::planar: {
-      const double half_span = std::min(fov.horizontal / 2, kPi);
-      grid.u_min = -half_span;
-      grid.u_max = half_span;
-      grid.wraps_u = half_span >= kPi - kAngleTolerance;
-      grid.v_min = fov.elevation_min;
-      grid.v_max = fov.elevation_max;
-      grid.pole_at_v_min = grid.v_min <= -kPi / 2 + kAngleTolerance;
-      grid.pole_at_v_max = grid.v_max >= kPi / 2 - kAngleTolerance;
-      break;
-    }
-  }
-  const double u_span = grid.u_max - grid.u_min;
-  const double v_span = grid.v_max - grid.v_min;
+  grid.shape = &fov.shape();
+  grid.domain = fov.shape().domain();
+  const double u_span = grid.domain.u_max - grid.domain.u_min;
+  const double v_span = grid.domain.v_max - grid.domain.v_min;
   const double wider_span = std::max(u_span, v_span);
   if (wider_span > 0) {
     grid.columns = segments_for(u_span, wider_span);
@@ -141,7 +96,7 @@ class ShellBuilder {
     add_caps(outer, inner);
     add_wall(outer, inner, 0, 0, 1, 0, grid_.columns);                        // v = v_min
     add_wall(outer, inner, grid_.columns, grid_.rows, -1, 0, grid_.columns);  // v = v_max
-    if (!grid_.wraps_u) {
+    if (!grid_.wraps_u()) {
       add_wall(outer, inner, grid_.columns, 0, 0, 1, grid_.rows);  // u = u_max
       add_wall(outer, inner, 0, grid_.rows, 0, -1, grid_.rows);    // u = u_min
     }
@@ -163,7 +118,7 @@ class ShellBuilder {
     }
     for (int j = 0; j <= grid_.rows; ++j) {
       for (int i = 0; i < grid_.vertices_in_row(j); ++i) {
-        const model::Vec3 q_sensor = radius * direction(grid_.shape, grid_.u(i), grid_.v(j));
+        const model::Vec3 q_sensor = radius * grid_.direction(i, j);
         mesh_.vertices.push_back(T_robot_sensor_ * q_sensor);
       }
     }
@@ -175,7 +130,7 @@ class ShellBuilder {
     int row_start = layer.first;
     for (int row = 0; row < j; ++row) row_start += grid_.vertices_in_row(row);
     if (grid_.is_pole_row(j)) return row_start;
-    return row_start + (grid_.wraps_u ? i % grid_.columns : i);
+    return row_start + (grid_.wraps_u() ? i % grid_.columns : i);
   }
 
   void add_triangle(int a, int b, int c) {

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "rigdesign/deploy/deployment.hpp"
-#include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
-#include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/nav2/costmap_params_reader.hpp"
+#include "rigdesign/io/robot/sensors_xacro_writer.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/optical_frame.hpp"
 #include "support/cli_runner.hpp"
@@ -28,10 +28,11 @@ double rotation_error(const model::Pose3& a, const model::Pose3& b) {
 // A rig whose mounts sit at the exported links of a description that holds only the parent
 // link and the exported macro: the round trip rig -> xacro -> rig.
 std::string round_trip_rig(const model::Rig& rig, const std::string& parent, bool optical) {
-  std::string text = "name: round trip\nrobot:\n  description: wrapper.urdf.xacro\n"
-                     "  expander: builtin\n  base_link: " + parent + "\n  base_link_height: " +
-                     model::exact_number(rig.base_link_height) + "\n" +
-                     "body: {radius: 0.05, height: 0.1}\ndistance_of_interest: 5\nmounts:\n";
+  std::string text =
+      "name: round trip\nrobot:\n  description: wrapper.urdf.xacro\n"
+      "  expander: builtin\n  base_link: " +
+      parent + "\n  base_link_height: " + model::exact_number(rig.base_link_height) + "\n" +
+      "body: {radius: 0.05, height: 0.1}\ndistance_of_interest: 5\nmounts:\n";
   for (const model::Mount& mount : rig.mounts) {
     text += "  - {id: " + mount.id + ", sensor: " + mount.sensor_id + ", mode: " + mount.mode_id +
             ", pose: {urdf_link: " + mount.id + (optical ? "_optical_frame" : "_link") + "}}\n";
@@ -44,7 +45,7 @@ std::string round_trip_rig(const model::Rig& rig, const std::string& parent, boo
 TEST_CASE("export: every bundled rig round-trips through its sensors.urdf.xacro", "[deploy]") {
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   for (const std::string name : {"ur_cleaner", "ur_cleaner_from_urdf", "delivery_amr", "elektron",
-                                  "cell", "cart_two_scanners", "turtlebot4", "jackal"}) {
+                                 "cell", "cart_two_scanners", "turtlebot4", "jackal"}) {
     INFO(name);
     const model::Rig rig = io::load_rig(source_path("rigs/" + name + ".yaml"));
     const deploy::SensorFrames frames = deploy::sensor_frames(rig, library);
@@ -57,7 +58,8 @@ TEST_CASE("export: every bundled rig round-trips through its sensors.urdf.xacro"
                      "\"/>\n  <xacro:include filename=\"sensors.urdf.xacro\"/>\n"
                      "  <xacro:rig_sensors/>\n</robot>\n");
     bool has_camera = false;
-    for (const deploy::SensorFrame& frame : frames.frames) has_camera |= frame.optical_frame.has_value();
+    for (const deploy::SensorFrame& frame : frames.frames)
+      has_camera |= frame.optical_frame.has_value();
     // Through the body links; and, for cameras, through their optical frames, which the
     // loader turns back into body poses (REP-103) when the link's name says "optical".
     for (const bool optical : {false, true}) {

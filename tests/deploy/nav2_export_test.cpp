@@ -4,15 +4,18 @@
 // layer its plugin and parameters; observation_sources names the sources, each a map with
 // topic, data_type, marking, clearing, obstacle_max_range, ... as the ObstacleLayer and
 // VoxelLayer pages list them).
+#include <yaml-cpp/yaml.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "rigdesign/deploy/deployment.hpp"
-#include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
-#include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/nav2/costmap_params_reader.hpp"
+#include "rigdesign/io/nav2/costmap_params_writer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/fixture_files.hpp"
 #include "support/temp_folder.hpp"
@@ -56,8 +59,7 @@ const std::string kScanner = R"(
 
 }  // namespace
 
-TEST_CASE("export: nav2 parameters read back give the sources, footprint and layers",
-          "[deploy]") {
+TEST_CASE("export: nav2 parameters read back give the sources, footprint and layers", "[deploy]") {
   TempFolder folder;
   folder.write("sensors.yaml", kLibrary + kScanner);
   const model::Rig rig = io::load_rig(folder.write("rig.yaml", kNav2Rig));
@@ -69,7 +71,8 @@ TEST_CASE("export: nav2 parameters read back give the sources, footprint and lay
   REQUIRE(file.sources.size() == 2);
   CHECK(file.sources[0].name == "scanner");
   CHECK(file.sources[1].name == "cam");
-  for (std::size_t i = 0; i < 2; ++i) CHECK(file.sources[i].source == deployment.costmap.sources[i].source);
+  for (std::size_t i = 0; i < 2; ++i)
+    CHECK(file.sources[i].source == deployment.costmap.sources[i].source);
   // Hand-derived: the scanner must mark up to the area's far corner from its origin,
   // hypot(d + 0.2, max(0.3, 1.0 - 0.3)) = hypot(2.2, 0.7) = 2.3087 -> 2.31 m (cm up), well
   // inside its 10 m; it clears 0.5 m further; its blind zone (0.05 m) is neither marked nor
@@ -105,16 +108,37 @@ TEST_CASE("export: nav2 parameters read back give the sources, footprint and lay
 TEST_CASE("export: nav2 names in the exported file", "[deploy]") {
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   const model::Rig rig = io::load_rig(source_path("rigs/turtlebot4.yaml"));
-  const std::string text = io::nav2_costmap_text(
-      deploy::plan_deployment(rig, library, nullptr, {}).costmap, "test");
+  const std::string text =
+      io::nav2_costmap_text(deploy::plan_deployment(rig, library, nullptr, {}).costmap, "test");
   for (const std::string key :
        {"local_costmap:\n  local_costmap:\n    ros__parameters:\n",
         "global_costmap:\n  global_costmap:\n    ros__parameters:\n",
         "plugin: \"nav2_costmap_2d::VoxelLayer\"", "plugin: \"nav2_costmap_2d::InflationLayer\"",
         "plugin: \"nav2_costmap_2d::StaticLayer\"", "observation_sources: lidar oakd",
-        "data_type: \"LaserScan\"", "data_type: \"PointCloud2\"", "sensor_frame: oakd_optical_frame",
-        "robot_base_frame: base_link"}) {
+        "data_type: \"LaserScan\"", "data_type: \"PointCloud2\"",
+        "sensor_frame: oakd_optical_frame", "robot_base_frame: base_link"}) {
     INFO(key);
     CHECK(text.find(key) != std::string::npos);
+  }
+}
+
+// `export --update-rate` sizes the Hit Layer for a rate, so the costmap must run at that rate:
+// the file's local update_frequency is the option's value, written as a double (rclcpp refuses
+// an integer for nav2's double parameter). Read with yaml-cpp, not rigdesign's reader.
+TEST_CASE("export: --update-rate reaches the local costmap's update_frequency", "[deploy]") {
+  TempFolder folder;
+  for (const auto& [rate, text] : {std::pair{"12.5", "12.5"}, {"10", "10.0"}}) {
+    INFO(rate);
+    const std::string out = folder.path() + "/rate_" + rate;
+    const CliResult result = run_cli(
+        {"export", source_path("rigs/turtlebot4.yaml"), "--to", out, "--update-rate", rate});
+    INFO(result.err);
+    REQUIRE(result.exit_code == 0);
+    const YAML::Node file = YAML::LoadFile(out + "/nav2_costmap.yaml");
+    const YAML::Node local = file["local_costmap"]["local_costmap"]["ros__parameters"];
+    CHECK(local["update_frequency"].as<double>() == std::stod(rate));
+    CHECK(local["update_frequency"].Scalar() == text);
+    CHECK(file["global_costmap"]["global_costmap"]["ros__parameters"]["update_frequency"]
+              .as<double>() == 1.0);
   }
 }

@@ -19,11 +19,8 @@ model::SensorMode pyramid(double horizontal_deg, double vertical_deg, double min
                           double max_range) {
   model::SensorMode mode;
   mode.id = "pyramid";
-  mode.fov.shape = model::FovShape::pyramid;
-  mode.fov.horizontal = model::deg_to_rad(horizontal_deg);
-  mode.fov.vertical = model::deg_to_rad(vertical_deg);
-  mode.fov.elevation_min = -mode.fov.vertical / 2;
-  mode.fov.elevation_max = mode.fov.vertical / 2;
+  mode.fov = model::FieldOfView(
+      model::pyramid_fov(model::deg_to_rad(horizontal_deg), model::deg_to_rad(vertical_deg)));
   mode.min_range = min_range;
   mode.max_range = max_range;
   mode.frequency = 10;
@@ -35,11 +32,9 @@ model::SensorMode pyramid(double horizontal_deg, double vertical_deg, double min
 model::SensorMode band(double elevation_min_deg, double elevation_max_deg, double max_range) {
   model::SensorMode mode = pyramid(10, 10, 0, max_range);
   mode.id = "band";
-  mode.fov.shape = model::FovShape::band;
-  mode.fov.horizontal = 2 * 3.141592653589793;
-  mode.fov.elevation_min = model::deg_to_rad(elevation_min_deg);
-  mode.fov.elevation_max = model::deg_to_rad(elevation_max_deg);
-  mode.fov.vertical = mode.fov.elevation_max - mode.fov.elevation_min;
+  mode.fov = model::FieldOfView(model::band_fov(2 * 3.141592653589793,
+                                                model::deg_to_rad(elevation_min_deg),
+                                                model::deg_to_rad(elevation_max_deg)));
   return mode;
 }
 

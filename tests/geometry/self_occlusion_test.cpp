@@ -28,11 +28,8 @@ constexpr double kStandoffTop = 0.5;
 model::SensorLibrary band_library() {
   model::SensorMode mode;
   mode.id = "band";
-  mode.fov.shape = model::FovShape::band;
-  mode.fov.horizontal = 2 * kPi;
-  mode.fov.elevation_min = model::deg_to_rad(-15.0);
-  mode.fov.elevation_max = model::deg_to_rad(15.0);
-  mode.fov.vertical = mode.fov.elevation_max - mode.fov.elevation_min;
+  mode.fov = model::FieldOfView(
+      model::band_fov(2 * kPi, model::deg_to_rad(-15.0), model::deg_to_rad(15.0)));
   mode.min_range = 0.0;
   mode.max_range = 10.0;
   mode.frequency = 10;

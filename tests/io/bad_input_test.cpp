@@ -1,6 +1,7 @@
 // Bad input never crashes: each case gets exit code 2 and a message naming the file, the
 // line (found here by searching the file's text, independently of the loader) and the field.
 #include <catch2/catch.hpp>
+#include <filesystem>
 
 #include "support/cli_runner.hpp"
 #include "support/fixture_files.hpp"
@@ -120,6 +121,39 @@ TEST_CASE("bad input: exit 2 with file:line:col and the field") {
       const CliResult check = run_cli({"check", rig});
       CHECK(check.exit_code == 2);
       CHECK(check.out.find(where) != std::string::npos);
+    }
+  }
+}
+
+// Mount ids become URDF link names, nav2 source keys and filter node names: anything but a ROS
+// name is refused where it is written, so no exported file needs quoting or escaping.
+TEST_CASE("a mount id that is not a ROS name is refused with file:line:col") {
+  const std::vector<std::pair<std::string, std::string>> ids = {{"quote", "'fr\"ont'"},
+                                                                {"angle bracket", "'fr<ont'"},
+                                                                {"space", "'front cam'"},
+                                                                {"leading digit", "2front"},
+                                                                {"hyphen", "front-cam"}};
+  for (const auto& [name, id] : ids) {
+    DYNAMIC_SECTION(name) {
+      TempFolder folder;
+      folder.write("sensors.yaml", kLibrary);
+      folder.write("req.yaml", kRequirements);
+      const std::string text = replaced(kRig, "id: front", "id: " + id);
+      const std::string rig = folder.write("rig.yaml", text);
+      // The value's line and column, found in the text written (1-based).
+      const int line = line_of(text, "id: " + id);
+      REQUIRE(line > 0);
+      std::size_t line_start = 0;
+      for (int i = 1; i < line; ++i) line_start = text.find('\n', line_start) + 1;
+      const std::size_t column = text.find(id, line_start) - line_start + 1;
+      const std::string where = folder.path() + "/rig.yaml:" + std::to_string(line) + ":" +
+                                std::to_string(column) + ": mounts[0].id: ";
+      const CliResult export_run = run_cli({"export", rig, "--to", folder.path() + "/out"});
+      INFO(export_run.err);
+      CHECK(export_run.exit_code == 2);
+      CHECK(export_run.err.find(where) != std::string::npos);
+      CHECK(export_run.err.find("is not a ROS name") != std::string::npos);
+      CHECK_FALSE(std::filesystem::exists(folder.path() + "/out"));  // nothing half-written
     }
   }
 }

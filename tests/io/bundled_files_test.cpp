@@ -101,7 +101,7 @@ sensors:
   CHECK(grid.points_per_frame == 240000);
   CHECK(grid.bytes_per_frame == 480000);
   const model::SensorMode& spinning = library.sensors[0].modes[1];
-  CHECK(spinning.fov.horizontal == Approx(2 * 3.14159265358979));  // band default: 360 deg
-  CHECK(spinning.fov.vertical == Approx(model::deg_to_rad(30)));
+  CHECK(spinning.fov.horizontal() == Approx(2 * 3.14159265358979));  // band default: 360 deg
+  CHECK(spinning.fov.vertical() == Approx(model::deg_to_rad(30)));
   CHECK(spinning.bytes_per_frame * 15 == Approx(940368));
 }

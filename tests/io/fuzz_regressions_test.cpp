@@ -7,9 +7,9 @@
 
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
-#include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
+#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/robot/robot_description_loader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"

@@ -27,12 +27,10 @@ TEST_CASE("each enum's names are one table that parses back", "[model]") {
   check_round_trip(model::kTechnologyNames,
                    {"tof", "structured_light", "active_stereo", "passive_stereo",
                     "lidar_3d_spinning", "lidar_2d", "solid_state_lidar"});
-  check_round_trip(model::kFovShapeNames, {"pyramid", "cone", "band", "planar"});
   check_round_trip(model::kLightConditionNames, {"dark", "indoor", "sunlight"});
   check_round_trip(model::kBasisNames, {"datasheet", "measured", "estimate"});
   check_round_trip(costmap::kObstacleLayerNames, {"obstacle", "voxel"});
   check_round_trip(localize::kLocalizeMethodNames, {"wls", "nls", "map"});
-  CHECK(model::to_string(model::FovShape::band) == "band");
   CHECK(localize::parse_localize_method("map") == localize::LocalizeMethod::map);
 }
 
@@ -42,14 +40,4 @@ TEST_CASE("a table out of enum order is caught", "[model]") {
                                                           {model::Basis::estimate, "estimate"}}};
   STATIC_REQUIRE_FALSE(model::covers_in_order(swapped));
   STATIC_REQUIRE(model::covers_in_order(model::kBasisNames));
-}
-
-TEST_CASE("cameras are the pyramid and cone shapes", "[model]") {
-  CHECK(model::is_camera(model::FovShape::pyramid));
-  CHECK(model::is_camera(model::FovShape::cone));
-  CHECK_FALSE(model::is_camera(model::FovShape::band));
-  CHECK_FALSE(model::is_camera(model::FovShape::planar));
-  model::SensorMode lidar;
-  lidar.fov.shape = model::FovShape::band;
-  CHECK_FALSE(lidar.is_camera());
 }

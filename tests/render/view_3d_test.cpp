@@ -23,9 +23,8 @@ namespace {
 model::SensorMode pyramid_mode(double horizontal_deg, double vertical_deg, double min_range,
                                double max_range) {
   model::SensorMode mode;
-  mode.fov.shape = model::FovShape::pyramid;
-  mode.fov.horizontal = model::deg_to_rad(horizontal_deg);
-  mode.fov.vertical = model::deg_to_rad(vertical_deg);
+  mode.fov = model::FieldOfView(
+      model::pyramid_fov(model::deg_to_rad(horizontal_deg), model::deg_to_rad(vertical_deg)));
   mode.min_range = min_range;
   mode.max_range = max_range;
   return mode;
@@ -33,22 +32,24 @@ model::SensorMode pyramid_mode(double horizontal_deg, double vertical_deg, doubl
 
 model::SensorMode cone_mode(double apex_deg, double min_range, double max_range) {
   model::SensorMode mode;
-  mode.fov.shape = model::FovShape::cone;
-  mode.fov.horizontal = model::deg_to_rad(apex_deg);
-  mode.fov.vertical = mode.fov.horizontal;
+  mode.fov = model::FieldOfView(model::cone_fov(model::deg_to_rad(apex_deg)));
   mode.min_range = min_range;
   mode.max_range = max_range;
   return mode;
 }
 
-model::SensorMode band_mode(model::FovShape shape, double span_deg, double elevation_min_deg,
+// A spinning lidar's band, or with `planar` a 2D scanner's wedge (symmetric about the x-y plane).
+enum class Scan { band, planar };
+
+model::SensorMode band_mode(Scan kind, double span_deg, double elevation_min_deg,
                             double elevation_max_deg, double min_range, double max_range) {
   model::SensorMode mode;
-  mode.fov.shape = shape;
-  mode.fov.horizontal = model::deg_to_rad(span_deg);
-  mode.fov.elevation_min = model::deg_to_rad(elevation_min_deg);
-  mode.fov.elevation_max = model::deg_to_rad(elevation_max_deg);
-  mode.fov.vertical = mode.fov.elevation_max - mode.fov.elevation_min;
+  const double span = model::deg_to_rad(span_deg);
+  mode.fov = model::FieldOfView(
+      kind == Scan::band
+          ? model::band_fov(span, model::deg_to_rad(elevation_min_deg),
+                            model::deg_to_rad(elevation_max_deg))
+          : model::planar_fov(span, model::deg_to_rad(elevation_max_deg - elevation_min_deg)));
   mode.min_range = min_range;
   mode.max_range = max_range;
   return mode;
@@ -134,15 +135,15 @@ TEST_CASE("a pyramid FOV mesh stays inside its angles and range, far cap at the 
     CHECK((std::abs(distance - 0.5) < 1e-9 || std::abs(distance - 3.0) < 1e-9));
     if (std::abs(distance - 3.0) < 1e-9) ++on_far_cap;
     CHECK(q.x() > 0);
-    CHECK(std::abs(std::atan(q.y() / q.x())) <= mode.fov.horizontal / 2 + 1e-9);
-    CHECK(std::abs(std::atan(q.z() / q.x())) <= mode.fov.vertical / 2 + 1e-9);
+    CHECK(std::abs(std::atan(q.y() / q.x())) <= mode.fov.horizontal() / 2 + 1e-9);
+    CHECK(std::abs(std::atan(q.z() / q.x())) <= mode.fov.vertical() / 2 + 1e-9);
   }
   CHECK(on_far_cap * 2 == static_cast<int>(mesh.vertices.size()));
   CHECK(is_closed_and_oriented(mesh));
 }
 
 TEST_CASE("a 360-degree band mesh reaches both elevation limits all round") {
-  const model::SensorMode vlp16 = band_mode(model::FovShape::band, 360, -15, 15, 0.9, 100);
+  const model::SensorMode vlp16 = band_mode(Scan::band, 360, -15, 15, 0.9, 100);
   const model::TriangleMesh mesh = render::fov_mesh(vlp16, model::Pose3::Identity(), 4.0);
   double lowest = std::numbers::pi;
   double highest = -std::numbers::pi;
@@ -180,8 +181,8 @@ TEST_CASE("FOV mesh volumes match the spherical-shell sectors they tessellate") 
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
   SECTION("full-circle band") {
-    const model::TriangleMesh mesh = render::fov_mesh(
-        band_mode(model::FovShape::band, 360, -15, 15, 0.9, 100), T_robot_sensor, 4.0);
+    const model::TriangleMesh mesh =
+        render::fov_mesh(band_mode(Scan::band, 360, -15, 15, 0.9, 100), T_robot_sensor, 4.0);
     const double exact = shell_sector_volume(
         2 * std::numbers::pi * (std::sin(model::deg_to_rad(15)) - std::sin(model::deg_to_rad(-15))),
         0.9, 4.0);
@@ -189,16 +190,16 @@ TEST_CASE("FOV mesh volumes match the spherical-shell sectors they tessellate") 
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
   SECTION("band up to the zenith, from the sensor origin") {
-    const model::TriangleMesh mesh = render::fov_mesh(
-        band_mode(model::FovShape::band, 360, -30, 90, 0.0, 3.0), T_robot_sensor, 10.0);
+    const model::TriangleMesh mesh =
+        render::fov_mesh(band_mode(Scan::band, 360, -30, 90, 0.0, 3.0), T_robot_sensor, 10.0);
     const double exact =
         shell_sector_volume(2 * std::numbers::pi * (1 - std::sin(model::deg_to_rad(-30))), 0, 3.0);
     CHECK(is_closed_and_oriented(mesh));
     CHECK_THAT(enclosed_volume(mesh), WithinRel(exact, 0.02));
   }
   SECTION("planar 270-degree wedge") {
-    const model::TriangleMesh mesh = render::fov_mesh(
-        band_mode(model::FovShape::planar, 270, -0.5, 0.5, 0.05, 10), T_robot_sensor, 5.0);
+    const model::TriangleMesh mesh =
+        render::fov_mesh(band_mode(Scan::planar, 270, -0.5, 0.5, 0.05, 10), T_robot_sensor, 5.0);
     const double solid_angle = model::deg_to_rad(270) * (std::sin(model::deg_to_rad(0.5)) -
                                                          std::sin(model::deg_to_rad(-0.5)));
     CHECK(is_closed_and_oriented(mesh));
@@ -349,7 +350,7 @@ TEST_CASE("the visible FOV volume stops at the top plate, as the coverage number
   // atan(0.04 / 0.45) = 5.08 deg down land on the plate; the rest reach d = 3.5 m.
   const model::RobotBody body = cylinder_body(0.45, 1.0);
   const geometry::BodyOccluder occluder(body);
-  const model::SensorMode mode = band_mode(model::FovShape::band, 360, -15, 15, 0.9, 100);
+  const model::SensorMode mode = band_mode(Scan::band, 360, -15, 15, 0.9, 100);
   const model::Pose3 mount = model::pose_from_xyz_rpy(model::Vec3(0, 0, 1.04), model::Vec3::Zero());
   const model::TriangleMesh mesh = render::visible_fov_mesh(mode, mount, 3.5, occluder);
   REQUIRE(!mesh.vertices.empty());

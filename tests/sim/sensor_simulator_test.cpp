@@ -20,11 +20,9 @@ model::TriangleMesh wall_at_two_metres() {
 
 model::SensorMode depth_camera() {
   model::SensorMode mode;
-  mode.fov.shape = model::FovShape::pyramid;
-  mode.fov.horizontal = model::deg_to_rad(60);
-  mode.fov.vertical = model::deg_to_rad(40);
-  mode.angular_resolution_h = mode.fov.horizontal / 64;
-  mode.angular_resolution_v = mode.fov.vertical / 48;
+  mode.fov = model::FieldOfView(model::pyramid_fov(model::deg_to_rad(60), model::deg_to_rad(40)));
+  mode.angular_resolution_h = mode.fov.horizontal() / 64;
+  mode.angular_resolution_v = mode.fov.vertical() / 48;
   mode.min_range = 0.1;
   mode.max_range = 10;
   mode.noise.a = 0.01;
@@ -87,17 +85,13 @@ TEST_CASE("range limits, poses and the same seed") {
 
 TEST_CASE("ray patterns follow the datasheet: VLP-16 rings, a 2D fan") {
   model::SensorMode vlp;
-  vlp.fov.shape = model::FovShape::band;
-  vlp.fov.horizontal = 2 * 3.141592653589793;
-  vlp.fov.elevation_min = model::deg_to_rad(-15);
-  vlp.fov.elevation_max = model::deg_to_rad(15);
-  vlp.fov.vertical = model::deg_to_rad(30);
+  vlp.fov = model::FieldOfView(
+      model::band_fov(2 * 3.141592653589793, model::deg_to_rad(-15), model::deg_to_rad(15)));
   vlp.angular_resolution_h = model::deg_to_rad(0.3);
   vlp.angular_resolution_v = model::deg_to_rad(2.0);
   CHECK(sim::ray_pattern(vlp).size() == 16 * 1200);  // 16 lasers x 360 / 0.3
   model::SensorMode lms;
-  lms.fov.shape = model::FovShape::planar;
-  lms.fov.horizontal = model::deg_to_rad(270);
+  lms.fov = model::FieldOfView(model::planar_fov(model::deg_to_rad(270), 0.0));
   lms.angular_resolution_h = model::deg_to_rad(0.5);
   CHECK(sim::ray_pattern(lms).size() == 541);  // 270 / 0.5 + 1, as the LMS1xx delivers
 }

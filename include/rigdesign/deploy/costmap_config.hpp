@@ -22,8 +22,8 @@ struct DeployOptions {
   std::string parent;                        ///< sensor frames' parent link; empty: the base link
   std::string scan_topic = "/{mount}/scan";  ///< topic template of 2D scanners
   std::string cloud_topic = "/{mount}/points";  ///< of 3D sensors ({mount}: the mount id)
-  double update_rate = 5.0;       ///< [Hz] the local costmap's update_frequency (nav2's default)
-  double max_speed = 0.0;  ///< [m/s] for the Hit Layer rule; 0: the requirements' R5
+  double update_rate = 5.0;  ///< [Hz] the local costmap's update_frequency (nav2's default)
+  double max_speed = 0.0;    ///< [m/s] for the Hit Layer rule; 0: the requirements' R5
   /// [m/s] the slowest the robot drives: nav2 Regulated Pure Pursuit's default
   /// regulated_linear_scaling_min_speed (0.25 m/s), or max_speed when that is lower.
   double min_speed = 0.25;
@@ -50,8 +50,14 @@ struct CostmapConfig {
   double inscribed_radius = 0.0;       ///< [m]
   costmap::CostmapParams costmap;      ///< the local costmap (window, layers, Hit Layer, ...)
   std::vector<SourceConfig> sources;
-  BlindMemory memory;             ///< how the Hit Layer's values were chosen
+  BlindMemory memory;              ///< how the Hit Layer's values were chosen
   std::vector<std::string> notes;  ///< derivations and warnings for the file's comments
+  double update_rate = 5.0;        ///< [Hz] the local costmap's update_frequency
+  /// What the derivations used, so the file's comments say it: sigma of a floor return's
+  /// height above the floor flatness in min_obstacle_height, and the inflation margin [m]
+  /// beyond the circumscribed radius.
+  double floor_noise_sigmas = 0.0;
+  double inflation_margin = 0.0;
 };
 
 /// Precondition: every mount's sensor and mode are in `library`. `requirements` may be null

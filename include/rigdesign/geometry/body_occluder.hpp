@@ -60,7 +60,4 @@ class BodyOccluder {
   double outline_radius(double theta) const;
 };
 
-/// Real roots of a t^2 + b t + c = 0 (one root when a is negligible) appended to `roots`.
-void append_quadratic_roots(double a, double b, double c, std::vector<double>& roots);
-
 }  // namespace rigdesign::geometry

@@ -1,16 +1,16 @@
 #pragma once
-/// A sensor mode's field of view placed on the robot: the FOV shape (pyramid, cone, band,
-/// planar wedge) between the min and max range measured from the sensor origin (spherical
-/// caps), seen past the robot body. Gives exact coverage along any line in the robot frame.
+/// A sensor mode's field of view placed on the robot: its FOV shape (model::FovShape) between the
+/// min and max range measured from the sensor origin (spherical caps), seen past the robot body.
+/// Gives exact coverage along any line in the robot frame.
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/interval_set.hpp"
 #include "rigdesign/geometry/mount_exclusions.hpp"
 #include "rigdesign/geometry/solid_shadow.hpp"
-#include "rigdesign/geometry/interval_set.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/sensor.hpp"
 
@@ -54,24 +54,16 @@ class MountedFov {
   bool in_fov(const model::Vec3& q_sensor) const;
   bool rays_can_reach(const BodyOccluder& body) const;
   bool triangle_may_matter(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c) const;
-  void append_fov_roots(const model::Vec3& c, const model::Vec3& w,
-                        std::vector<double>& roots) const;
 
   const model::SensorMode* mode_;
   std::shared_ptr<const model::SensorMode> limited_mode_;  // the mode with a deployed range band
-  std::shared_ptr<const MountExclusions> exclusions_;       // null without filters
+  std::shared_ptr<const MountExclusions> exclusions_;      // null without filters
   model::Pose3 T_robot_sensor_;
   model::Mat3 R_sensor_robot_;
   model::Vec3 origin_;
   const BodyOccluder* body_;
   std::shared_ptr<const SolidShadow> shadow_;  // shared: MountedFov is copied into lists
-  // Shape constants, precomputed: tangents of half-angles, sines of elevation limits.
-  double tan_half_h_ = 0.0;
-  double tan_half_v_ = 0.0;
-  double cos_half_apex_ = 0.0;
-  double sin_elevation_min_ = 0.0;
-  double sin_elevation_max_ = 0.0;
-  double half_span_ = 0.0;  // band / planar azimuth half-span [rad]
+  const model::FovShape* shape_;               // the mode's shape: shared by every copy of the mode
   bool may_be_occluded_ = true;
   // Azimuths (about the robot's vertical axis) the FOV can reach: [from, from + span].
   double azimuth_from_ = 0.0;

@@ -93,6 +93,19 @@ struct Rig {
   double distance_for(const Mount& mount) const {
     return mount.distance_of_interest.value_or(distance_of_interest);
   }
+  /// The mount called `id` (deployed files name sources and filters after mounts), or null.
+  const Mount* find_mount(const std::string& id) const {
+    for (const Mount& mount : mounts) {
+      if (mount.id == id) return &mount;
+    }
+    return nullptr;
+  }
+  /// Every mount's id, in the rig's order (for "expected one of" messages).
+  std::vector<std::string> mount_ids() const {
+    std::vector<std::string> ids;
+    for (const Mount& mount : mounts) ids.push_back(mount.id);
+    return ids;
+  }
 };
 
 }  // namespace rigdesign::model

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/model/fov_shape.hpp"
 #include "rigdesign/model/name_table.hpp"
 #include "rigdesign/model/source_location.hpp"
 
@@ -32,36 +33,6 @@ inline constexpr NameTable<Technology, 7> kTechnologyNames = {{
 static_assert(covers_in_order(kTechnologyNames) &&
               kTechnologyNames.size() ==
                   static_cast<std::size_t>(Technology::solid_state_lidar) + 1);
-
-enum class FovShape {
-  pyramid,  ///< camera frustum: `horizontal` x `vertical` full angles about the x axis
-  cone,     ///< circular: `horizontal` is the full apex angle
-  band,  ///< spinning lidar: azimuth span `horizontal`, elevation in [elevation_min, elevation_max]
-  planar,  ///< 2D scanner: aperture `horizontal`, a wedge `vertical` thick (beam divergence)
-};
-inline constexpr NameTable<FovShape, 4> kFovShapeNames = {{
-    {FovShape::pyramid, "pyramid"},
-    {FovShape::cone, "cone"},
-    {FovShape::band, "band"},
-    {FovShape::planar, "planar"},
-}};
-static_assert(covers_in_order(kFovShapeNames) &&
-              kFovShapeNames.size() == static_cast<std::size_t>(FovShape::planar) + 1);
-
-/// Cameras (a frustum or a cone of pixels) as opposed to scanning lidars: their rays form an
-/// image grid, which decides how they are decimated and drawn.
-constexpr bool is_camera(FovShape shape) {
-  return shape == FovShape::pyramid || shape == FovShape::cone;
-}
-
-/// Field of view in the sensor frame (x forward along the optical axis, y left, z up).
-struct FieldOfView {
-  FovShape shape = FovShape::pyramid;
-  double horizontal = 0.0;     ///< [rad] full angle; azimuth span for band and planar
-  double vertical = 0.0;       ///< [rad] full angle; band: elevation_max - elevation_min
-  double elevation_min = 0.0;  ///< [rad] lowest beam, measured from the x-y plane
-  double elevation_max = 0.0;  ///< [rad] highest beam
-};
 
 /// Lighting conditions of requirement R8, in a fixed order for tables.
 enum class LightCondition { dark, indoor, sunlight };
@@ -134,8 +105,8 @@ struct SensorMode {
 
   /// The coarser of the two ray spacings [rad]: what sets the smallest obstacle seen.
   double worst_angular_resolution() const;
-  /// A camera mode (model::is_camera of its FOV shape).
-  bool is_camera() const { return model::is_camera(fov.shape); }
+  /// A camera mode (FovShape::is_camera of its FOV shape).
+  bool is_camera() const { return fov.shape().is_camera(); }
 };
 
 struct Price {
@@ -170,7 +141,6 @@ struct SensorLibrary {
 };
 
 std::string to_string(Technology technology);
-std::string to_string(FovShape shape);
 std::string to_string(LightCondition condition);
 std::string to_string(Basis basis);
 

@@ -147,11 +147,11 @@ model::Catalog load_catalog(const std::string& path) {
   for (MapReader& reader : top.maps("slots", Need::required, "a list of mounting slots")) {
     model::MountingSlot slot;
     slot.where = reader.location();
-    slot.id = reader.text("id", Need::required, "a slot id").value_or("");
+    slot.id = io::ros_name(reader, "id", "a slot id (the chosen rig's mount id)");
     if (auto pose = reader.map("pose", Need::required,
                                "a map with xyz and rpy_deg (numbers or ranges), or urdf_link")) {
-      slot.poses = keep_outside_body(io::read_pose_set(*pose, urdf, slot.ranges), catalog.body,
-                                     slot, *pose);
+      slot.poses =
+          keep_outside_body(io::read_pose_set(*pose, urdf, slot.ranges), catalog.body, slot, *pose);
     }
     slot.allowed_sensors = read_names(reader, "allows", "a non-empty list of candidate sensor ids");
     if (reader.has("distance_of_interest")) {

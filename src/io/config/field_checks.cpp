@@ -1,6 +1,11 @@
 #include "io/config/field_checks.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/rotation.hpp"
+#include "rigdesign/model/units.hpp"
 
 namespace rigdesign::io {
 
@@ -61,6 +66,37 @@ std::optional<double> share(MapReader& reader, const std::string& key, Need need
 
 model::Basis basis(MapReader& reader, Need need) {
   return named_value(reader, "basis", need, model::kBasisNames).value_or(model::Basis::estimate);
+}
+
+std::string ros_name(MapReader& reader, const std::string& key, const std::string& what) {
+  const std::string expected =
+      what +
+      ": letters, digits and underscores, not starting with a digit (a ROS name, so "
+      "that URDF links, nav2 sources and filter nodes can be named after it)";
+  const std::string name = reader.text(key, Need::required, expected).value_or("");
+  if (name.empty()) return name;
+  const bool valid = !std::isdigit(static_cast<unsigned char>(name.front())) &&
+                     std::all_of(name.begin(), name.end(), [](char c) {
+                       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                     });
+  reader.require(valid, key, "'" + name + "' is not a ROS name", expected);
+  return name;
+}
+
+model::Pose3 xyz_rpy_deg_pose(MapReader& pose, Need xyz_need) {
+  const std::string metres = "[x, y, z] in metres, finite";
+  const auto xyz = pose.numbers(
+      "xyz", xyz_need, 3, 3, xyz_need == Need::required ? metres : metres + " (default [0, 0, 0])");
+  const auto rpy = pose.numbers("rpy_deg", Need::optional, 3, 3,
+                                "[roll, pitch, yaw] in degrees, finite (default [0, 0, 0])");
+  const model::Vec3 position =
+      xyz ? model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : model::Vec3::Zero();
+  model::Vec3 angles = model::Vec3::Zero();
+  if (rpy) {
+    angles = model::Vec3(model::deg_to_rad((*rpy)[0]), model::deg_to_rad((*rpy)[1]),
+                         model::deg_to_rad((*rpy)[2]));
+  }
+  return model::pose_from_xyz_rpy(position, angles);
 }
 
 }  // namespace rigdesign::io

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "io/config/yaml_reader.hpp"
+#include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/sensor.hpp"
 
 namespace rigdesign::io {
@@ -30,6 +31,14 @@ double elevation(MapReader& reader, const std::string& key, const std::string& e
 /// A share in [0, 1].
 std::optional<double> share(MapReader& reader, const std::string& key, Need need,
                             const std::string& expected);
+/// A name every exported format can carry unquoted and unescaped (URDF link and joint names,
+/// nav2 source keys, ROS node names): a ROS name token, letters, digits and underscores, not
+/// starting with a digit. Records an error at `key` otherwise; "" when absent.
+std::string ros_name(MapReader& reader, const std::string& key, const std::string& what);
+/// The transform a pose map's `xyz` [m] and `rpy_deg` [deg] give (URDF's roll-pitch-yaw);
+/// `xyz_need` says whether xyz may be left out (then [0, 0, 0]); rpy_deg always may. Other
+/// keys are left for the caller to read or reject.
+model::Pose3 xyz_rpy_deg_pose(MapReader& pose, Need xyz_need);
 /// `basis: datasheet | measured | estimate`.
 model::Basis basis(MapReader& reader, Need need);
 

@@ -162,17 +162,8 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot) 
     return model::Pose3::Identity();
   }
   const PoseFrame frame = read_frame(pose);
-  const auto xyz = pose.numbers("xyz", Need::required, 3, 3, "[x, y, z] in metres, finite");
-  const auto rpy = pose.numbers("rpy_deg", Need::optional, 3, 3,
-                                "[roll, pitch, yaw] in degrees, finite (default [0, 0, 0])");
+  const model::Pose3 T = xyz_rpy_deg_pose(pose, Need::required);
   pose.reject_unknown_keys();
-  const model::Vec3 position =
-      xyz ? model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : model::Vec3::Zero();
-  model::Vec3 angles = model::Vec3::Zero();
-  if (rpy)
-    angles = model::Vec3(model::deg_to_rad((*rpy)[0]), model::deg_to_rad((*rpy)[1]),
-                         model::deg_to_rad((*rpy)[2]));
-  const model::Pose3 T = model::pose_from_xyz_rpy(position, angles);
   return frame == PoseFrame::optical ? T * T_optical_sensor : T;
 }
 

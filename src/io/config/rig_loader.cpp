@@ -21,7 +21,7 @@ using io::RobotLinks;
 model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robot) {
   model::Mount mount;
   mount.where = reader.location();
-  mount.id = reader.text("id", Need::required, "a mount id, unique in the rig").value_or("");
+  mount.id = io::ros_name(reader, "id", "a mount id, unique in the rig");
   mount.sensor_id =
       reader.text("sensor", Need::required, "a sensor id from sensors.yaml").value_or("");
   mount.sensor_where = reader.location("sensor");

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "io/config/field_checks.hpp"
+#include "io/config/fov_readers.hpp"
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/model/units.hpp"
 
@@ -34,63 +35,9 @@ MapReader& source_of(const std::string& key, MapReader& mode, std::optional<MapR
   return *defaults;
 }
 
-model::FieldOfView read_fov(MapReader& fov) {
-  model::FieldOfView result;
-  const auto shape = named_value(fov, "shape", Need::required, model::kFovShapeNames);
-  if (!shape) return result;
-  result.shape = *shape;
-  const std::string full_angle = "a full angle in degrees, in (0, 360]";
-  const std::string lens_angle =
-      "a full angle in degrees, in (0, 180) for a " + model::to_string(*shape);
-  switch (result.shape) {
-    case model::FovShape::pyramid:
-      result.horizontal =
-          model::deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 180, false, lens_angle));
-      result.vertical =
-          model::deg_to_rad(io::angle_in(fov, "vertical_deg", 0, 180, false, lens_angle));
-      result.elevation_min = -result.vertical / 2;
-      result.elevation_max = result.vertical / 2;
-      break;
-    case model::FovShape::cone:
-      result.horizontal =
-          model::deg_to_rad(io::angle_in(fov, "apex_deg", 0, 180, false, lens_angle));
-      result.vertical = result.horizontal;
-      result.elevation_min = -result.vertical / 2;
-      result.elevation_max = result.vertical / 2;
-      break;
-    case model::FovShape::band: {
-      result.horizontal =
-          fov.has("horizontal_deg")
-              ? model::deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle))
-              : 2 * std::numbers::pi;
-      const std::string elevation = "an elevation in degrees, in [-90, 90]";
-      const double low = io::elevation(fov, "elevation_min_deg", elevation);
-      const double high = io::elevation(fov, "elevation_max_deg", elevation);
-      fov.require(high > low, "elevation_max_deg", "is not above elevation_min_deg",
-                  "elevation_min_deg < elevation_max_deg");
-      result.elevation_min = model::deg_to_rad(low);
-      result.elevation_max = model::deg_to_rad(high);
-      result.vertical = result.elevation_max - result.elevation_min;
-      break;
-    }
-    case model::FovShape::planar:
-      result.horizontal =
-          model::deg_to_rad(io::angle_in(fov, "horizontal_deg", 0, 360, true, full_angle));
-      result.vertical = model::deg_to_rad(
-          io::angle_in(fov, "beam_divergence_deg", 0, 180, false,
-                       "the beam's full divergence angle in degrees, in (0, 180)"));
-      result.elevation_min = -result.vertical / 2;
-      result.elevation_max = result.vertical / 2;
-      break;
-  }
-  fov.text("note", Need::optional);
-  fov.reject_unknown_keys();
-  return result;
-}
-
 // Angular resolution and points per frame: from a pixel grid, or given for scanners.
 void read_sampling(model::SensorMode& mode, MapReader& reader, std::optional<MapReader>& defaults) {
-  const bool planar = mode.fov.shape == model::FovShape::planar;
+  const bool planar = mode.fov.shape().is_planar_scan();
   MapReader& pixels_from = source_of("pixels", reader, defaults);
   MapReader& resolution_from = source_of("angular_resolution_deg", reader, defaults);
   const bool has_pixels = pixels_from.has("pixels");
@@ -104,8 +51,8 @@ void read_sampling(model::SensorMode& mode, MapReader& reader, std::optional<Map
     const auto grid = pixels_from.numbers("pixels", Need::required, 2, 2,
                                           "[width, height] in pixels, both positive");
     if (grid && (*grid)[0] >= 1 && (*grid)[1] >= 1) {
-      mode.angular_resolution_h = mode.fov.horizontal / (*grid)[0];
-      mode.angular_resolution_v = mode.fov.vertical / (*grid)[1];
+      mode.angular_resolution_h = mode.fov.horizontal() / (*grid)[0];
+      mode.angular_resolution_v = mode.fov.vertical() / (*grid)[1];
       mode.points_per_frame = (*grid)[0] * (*grid)[1];
     } else if (grid) {
       pixels_from.require(false, "pixels", "has a count below 1",

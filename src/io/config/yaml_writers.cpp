@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "io/emit/yaml_emit.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/rotation.hpp"
@@ -15,26 +16,12 @@ std::string number(double value) {
   return model::format_number(value, 12);
 }
 
-void write_comment(std::ostringstream& out, const std::string& comment) {
-  std::istringstream lines(comment);
-  for (std::string line; std::getline(lines, line);) out << "# " << line << '\n';
-}
-
-std::string yaml_quoted(const std::string& text) {
-  std::string escaped = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') escaped += '\\';
-    escaped += c;
-  }
-  return escaped + "\"";
-}
-
 }  // namespace
 
 std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library,
                         const std::string& requirements, const std::string& comment) {
   std::ostringstream out;
-  write_comment(out, comment);
+  out << yaml_comment(comment);
   out << "name: " << yaml_quoted(rig.name) << '\n';
   if (!sensor_library.empty()) out << "sensor_library: " << yaml_quoted(sensor_library) << '\n';
   if (!requirements.empty()) out << "requirements: " << yaml_quoted(requirements) << '\n';
@@ -69,7 +56,7 @@ std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library
 std::string requirements_to_yaml(const model::Requirements& requirements,
                                  const std::string& comment) {
   std::ostringstream out;
-  write_comment(out, comment);
+  out << yaml_comment(comment);
   out << "name: " << yaml_quoted(requirements.name) << '\n';
   if (requirements.body_radius && requirements.body_height) {
     out << "body: {radius: " << number(*requirements.body_radius)
@@ -130,7 +117,7 @@ std::string requirements_to_yaml(const model::Requirements& requirements,
 std::string filtering_loads_to_yaml(const model::FilteringLoads& loads,
                                     const std::string& comment) {
   std::ostringstream out;
-  write_comment(out, comment);
+  out << yaml_comment(comment);
   out << "machine: " << yaml_quoted(loads.machine) << '\n';
   out << "pipeline: " << yaml_quoted(loads.pipeline) << '\n';
   if (!loads.scene.empty()) out << "scene: " << yaml_quoted(loads.scene) << '\n';

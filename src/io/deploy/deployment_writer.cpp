@@ -3,6 +3,9 @@
 
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/nav2/costmap_params_writer.hpp"
+#include "rigdesign/io/robot/sensors_xacro_writer.hpp"
+#include "rigdesign/io/self_filters/self_filters_writer.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io {

@@ -69,18 +69,8 @@ Eigen::Affine3d read_placement(MapReader& object) {
       object.has("scale") ? io::positive(object, "scale", Need::required, "a factor > 0") : 1.0;
   model::Pose3 T_parent_mesh = model::Pose3::Identity();
   if (auto pose = object.map("pose", Need::optional, "a map with xyz and rpy_deg")) {
-    const auto xyz = pose->numbers("xyz", Need::optional, 3, 3,
-                                   "[x, y, z] in metres, finite (default [0, 0, 0])");
-    const auto rpy = pose->numbers("rpy_deg", Need::optional, 3, 3,
-                                   "[roll, pitch, yaw] in degrees, finite (default [0, 0, 0])");
+    T_parent_mesh = io::xyz_rpy_deg_pose(*pose, Need::optional);
     pose->reject_unknown_keys();
-    const model::Vec3 position =
-        xyz ? model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : model::Vec3::Zero();
-    model::Vec3 angles = model::Vec3::Zero();
-    if (rpy)
-      angles = model::Vec3(model::deg_to_rad((*rpy)[0]), model::deg_to_rad((*rpy)[1]),
-                           model::deg_to_rad((*rpy)[2]));
-    T_parent_mesh = model::pose_from_xyz_rpy(position, angles);
   }
   return T_parent_mesh * Eigen::Scaling(scale > 0 ? scale : 1.0);
 }

@@ -24,8 +24,4 @@ std::vector<deploy::DeployedFilter> load_self_filters(const std::string& path,
                                                       const std::string& mount,
                                                       const model::Rig& rig);
 
-/// The nav2 observation sources of `path` (load_costmap_params) as deployed, each named
-/// after a mount of `rig`; a source that names no mount is an InputError at its key.
-deploy::DeployedConfig load_deployed_sources(const std::string& path, const model::Rig& rig);
-
 }  // namespace rigdesign::io

@@ -1,16 +1,18 @@
+#include "rigdesign/io/self_filters/self_filters_writer.hpp"
+
 #include <sstream>
 
-#include "rigdesign/io/deploy/deployment_files.hpp"
+#include "io/emit/yaml_emit.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::io {
+
 std::string self_filters_text(const std::vector<deploy::SelfFilter>& filters,
                               const std::string& box_frame, const model::Pose3& T_robot_box_frame,
                               const std::string& header) {
   std::ostringstream out;
-  std::istringstream lines(header);
-  for (std::string line; std::getline(lines, line);) out << "# " << line << '\n';
+  out << yaml_comment(header);
   out << "# 2D scanners: run laser_filters' scan_to_scan_filter_chain as node <mount>_self_filter\n"
          "# with this file; each LaserScanAngularBoundsFilterInPlace drops the scan angles\n"
          "# (laser frame, radians) whose rays hit the robot. 3D sensors: one pcl_ros CropBox\n"
@@ -20,18 +22,18 @@ std::string self_filters_text(const std::vector<deploy::SelfFilter>& filters,
   for (const deploy::SelfFilter& filter : filters) {
     if (filter.scanner && !filter.bands.empty()) {
       any = true;
-      out << filter.mount_id << "_self_filter:\n  ros__parameters:\n";
+      out << yaml_scalar(filter.mount_id + "_self_filter") << ":\n  ros__parameters:\n";
       for (std::size_t i = 0; i < filter.bands.size(); ++i) {
         const model::AzimuthBand& band = filter.bands[i];
         out << "    filter" << i + 1 << ":\n";
-        out << "      name: " << filter.mount_id << "_robot_" << i + 1 << "  # "
-            << model::format_number(model::rad_to_deg(band.lower), 4) << " to "
+        out << "      name: " << yaml_scalar(filter.mount_id + "_robot_" + std::to_string(i + 1))
+            << "  # " << model::format_number(model::rad_to_deg(band.lower), 4) << " to "
             << model::format_number(model::rad_to_deg(band.upper), 4) << " deg\n";
         out << "      type: laser_filters/LaserScanAngularBoundsFilterInPlace\n";
         out << "      params:\n";
         out << "        lower_angle: " << model::exact_number(band.lower) << '\n';
         out << "        upper_angle: " << model::exact_number(band.upper) << '\n';
-        out << "        replace_with_nan: true\n";
+        out << "        replace_with_nan: " << yaml_bool(true) << '\n';
       }
     }
     if (!filter.scanner) {
@@ -42,9 +44,9 @@ std::string self_filters_text(const std::vector<deploy::SelfFilter>& filters,
         // translation only (the base link's height), so they stay axis-aligned there.
         const model::Vec3 low = T_frame_robot * box.min;
         const model::Vec3 high = T_frame_robot * box.max;
-        out << filter.mount_id << "_self_filter_" << i + 1 << ":  # " << box.part << ", "
-            << box.hits << " rays\n  ros__parameters:\n";
-        out << "    input_frame: " << box_frame << '\n';
+        out << yaml_scalar(filter.mount_id + "_self_filter_" + std::to_string(i + 1)) << ":  # "
+            << box.part << ", " << box.hits << " rays\n  ros__parameters:\n";
+        out << "    input_frame: " << yaml_scalar(box_frame) << '\n';
         out << "    min_x: " << model::exact_number(low.x())
             << "\n    max_x: " << model::exact_number(high.x()) << '\n';
         out << "    min_y: " << model::exact_number(low.y())

@@ -1,4 +1,4 @@
-#include "rigdesign/io/config/costmap_params_loader.hpp"
+#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,30 +6,12 @@
 
 #include "io/config/field_checks.hpp"
 #include "io/config/yaml_reader.hpp"
+#include "io/nav2/nav2_keys.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/polygon_area.hpp"
 
 namespace rigdesign::io {
 namespace {
-
-// nav2 parameters rigdesign reads past: they name topics, frames and rates of a running
-// stack, which a simulation on recorded geometry does not need.
-const std::vector<std::string> kIgnoredCostmapKeys = {
-    "update_frequency",  "publish_frequency",        "global_frame",
-    "robot_base_frame",  "rolling_window",           "always_send_full_costmap",
-    "footprint_padding", "transform_tolerance",      "use_sim_time",
-    "map_topic",         "lethal_cost_threshold",    "unknown_cost_value",
-    "trinary_costmap",   "initial_transform_timeout"};
-const std::vector<std::string> kIgnoredLayerKeys = {"plugin",
-                                                    "enabled",
-                                                    "publish_voxel_map",
-                                                    "footprint_clearing_enabled",
-                                                    "combination_method",
-                                                    "max_obstacle_height",
-                                                    "min_obstacle_height"};
-const std::vector<std::string> kIgnoredSourceKeys = {
-    "topic",       "data_type", "sensor_frame", "expected_update_rate", "observation_persistence",
-    "inf_is_valid"};
 
 constexpr const char* kMetres = "metres, >= 0";
 
@@ -56,24 +38,20 @@ std::vector<std::string> source_names(MapReader& m) {
 costmap::ObservationSource read_source(MapReader& m, costmap::ObservationSource source) {
   read_if_present(m, "marking", source.marking);
   read_if_present(m, "clearing", source.clearing);
-  read_if_present(m, "obstacle_min_range", source.obstacle_min_range, kMetres);
-  read_if_present(m, "obstacle_max_range", source.obstacle_max_range, kMetres);
-  read_if_present(m, "raytrace_min_range", source.raytrace_min_range, kMetres);
-  read_if_present(m, "raytrace_max_range", source.raytrace_max_range, kMetres);
-  for (const auto& [key, value] :
-       {std::pair<const char*, double>{"obstacle_min_range", source.obstacle_min_range},
-        {"obstacle_max_range", source.obstacle_max_range},
-        {"raytrace_min_range", source.raytrace_min_range},
-        {"raytrace_max_range", source.raytrace_max_range}}) {
-    m.require(value >= 0.0, key, "is negative", kMetres);
+  for (const nav2::SourceNumberKey& range : nav2::kSourceRangeKeys) {
+    read_if_present(m, std::string(range.key), source.*range.field, kMetres);
   }
-  read_if_present(m, "min_obstacle_height", source.min_obstacle_height, "a world height in metres");
-  read_if_present(m, "max_obstacle_height", source.max_obstacle_height, "a world height in metres");
+  for (const nav2::SourceNumberKey& range : nav2::kSourceRangeKeys) {
+    m.require(source.*range.field >= 0.0, std::string(range.key), "is negative", kMetres);
+  }
+  for (const nav2::SourceNumberKey& height : nav2::kSourceHeightKeys) {
+    read_if_present(m, std::string(height.key), source.*height.field, "a world height in metres");
+  }
   m.require(source.obstacle_min_range <= source.obstacle_max_range, "obstacle_min_range",
             "is above obstacle_max_range", "obstacle_min_range <= obstacle_max_range");
   m.require(source.min_obstacle_height <= source.max_obstacle_height, "min_obstacle_height",
             "is above max_obstacle_height", "min_obstacle_height <= max_obstacle_height");
-  ignore(m, kIgnoredSourceKeys);
+  ignore(m, nav2::kIgnoredSourceKeys);
   m.reject_unknown_keys();
   return source;
 }
@@ -102,13 +80,13 @@ void read_obstacle_layer(MapReader& m, bool voxel, const costmap::ObservationSou
     file.has_sources = true;
     if (auto source = m.map(name, Need::required, "the source's parameters")) {
       file.sources.push_back({name, read_source(*source, defaults)});
-      file.source_locations.push_back(
-          {m.location(name), source->location("obstacle_min_range"),
-           source->location("obstacle_max_range"), source->location("min_obstacle_height"),
-           source->location("max_obstacle_height")});
+      file.source_locations.push_back({m.location(name), source->location("obstacle_min_range"),
+                                       source->location("obstacle_max_range"),
+                                       source->location("min_obstacle_height"),
+                                       source->location("max_obstacle_height")});
     }
   }
-  ignore(m, kIgnoredLayerKeys);
+  ignore(m, nav2::kIgnoredLayerKeys);
   m.reject_unknown_keys();
 }
 
@@ -129,24 +107,6 @@ void read_inflation_layer(MapReader& m, costmap::InflationParams& inflation) {
   ignore(m, {"plugin", "enabled"});
   m.reject_unknown_keys();
 }
-
-// check_costmap_params names struct members; the file names nav2 keys. Struct path -> key path.
-const std::vector<std::pair<std::string, std::string>> kKeyOfField = {
-    {"resolution", "resolution"},
-    {"robot_radius", "robot_radius"},
-    {"size_x", "width"},
-    {"size_y", "height"},
-    {"hit.hit", "hit_layer.hit"},
-    {"hit.hit_max", "hit_layer.hit_max"},
-    {"hit.d_threshold", "hit_layer.d_threshold"},
-    {"hit.d_duration", "hit_layer.d_duration"},
-    {"inflation.inflation_radius", "inflation_layer.inflation_radius"},
-    {"inflation.cost_scaling_factor", "inflation_layer.cost_scaling_factor"},
-    {"inflation.inscribed_radius", "robot_radius"},
-    {"voxel.z_min", "voxel_layer.origin_z"},
-    {"voxel.z_max", "voxel_layer.z_voxels"},
-    {"voxel.z_resolution", "voxel_layer.z_resolution"},
-    {"voxel.unknown_threshold", "voxel_layer.unknown_threshold"}};
 
 // The node at a dotted key path below `node`, or an undefined node. Read through const
 // nodes and reset(): yaml-cpp's non-const operator[] and operator= change the document.
@@ -173,7 +133,7 @@ void check_in_file_terms(const costmap::CostmapParams& params, const YAML::Node&
   } catch (const model::InputError& error) {
     std::vector<model::Diagnostic> located;
     for (model::Diagnostic d : error.diagnostics()) {
-      for (const auto& [field, key] : kKeyOfField) {
+      for (const auto& [field, key] : nav2::kKeyOfField) {
         if (d.field != field) continue;
         const YAML::Node node = node_at(block, key);
         if (node.IsDefined()) d.where = location_of(node, file);
@@ -221,7 +181,7 @@ void read_footprint(MapReader& m, CostmapParamsFile& file) {
   file.costmap.inflation.inscribed_radius = radii.inscribed;
 }
 
-bool listed(const std::vector<std::string>& plugins, const std::string& name) {
+bool listed(const std::vector<std::string>& plugins, std::string_view name) {
   return std::find(plugins.begin(), plugins.end(), name) != plugins.end();
 }
 
@@ -282,12 +242,13 @@ CostmapParamsFile load_costmap_params(const std::string& path,
     } else {
       m.require(false, "plugins", "is not a list", "e.g. [\"voxel_layer\", \"inflation_layer\"]");
     }
-    const bool obstacle = listed(plugins, "obstacle_layer"), voxel = listed(plugins, "voxel_layer");
+    const bool obstacle = listed(plugins, nav2::kObstacleLayer);
+    const bool voxel = listed(plugins, nav2::kVoxelLayer);
     m.require(!(obstacle && voxel), "plugins", "lists both obstacle_layer and voxel_layer",
               "one of obstacle_layer (2D) and voxel_layer (3D)");
     if (obstacle) p.layer = costmap::ObstacleLayerKind::obstacle;
     if (voxel) p.layer = costmap::ObstacleLayerKind::voxel;
-    p.use_hit_layer = listed(plugins, "hit_layer");
+    p.use_hit_layer = listed(plugins, nav2::kHitLayer);
     // nav2 loads each listed layer by its `plugin` class: a layer without one fails to start.
     for (const std::string& name : plugins) {
       const YAML::Node layer = m.node(name);
@@ -301,16 +262,17 @@ CostmapParamsFile load_costmap_params(const std::string& path,
                 "plugin: the layer's class, e.g. \"nav2_costmap_2d::VoxelLayer\"");
     }
   }
-  for (const auto& [key, voxel] : {std::pair{"obstacle_layer", false}, {"voxel_layer", true}}) {
-    if (auto layer = m.map(key, Need::optional)) {
+  for (const auto& [key, voxel] :
+       {std::pair{nav2::kObstacleLayer, false}, {nav2::kVoxelLayer, true}}) {
+    if (auto layer = m.map(std::string(key), Need::optional)) {
       read_obstacle_layer(*layer, voxel, source_defaults, file);
     }
   }
-  if (auto hit = m.map("hit_layer", Need::optional)) read_hit_layer(*hit, p.hit);
-  if (auto inflation = m.map("inflation_layer", Need::optional)) {
+  if (auto hit = m.map(std::string(nav2::kHitLayer), Need::optional)) read_hit_layer(*hit, p.hit);
+  if (auto inflation = m.map(std::string(nav2::kInflationLayer), Need::optional)) {
     read_inflation_layer(*inflation, p.inflation);
   }
-  ignore(m, kIgnoredCostmapKeys);
+  ignore(m, nav2::kIgnoredCostmapKeys);
   m.reject_unknown_keys();
   diagnostics.throw_if_errors();
   // The ranges and counts are checked in one place, the costmap's own check.

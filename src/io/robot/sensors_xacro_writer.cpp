@@ -1,7 +1,9 @@
+#include "rigdesign/io/robot/sensors_xacro_writer.hpp"
+
 #include <cmath>
 #include <sstream>
 
-#include "rigdesign/io/deploy/deployment_files.hpp"
+#include "io/emit/xml_emit.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/optical_frame.hpp"
 #include "rigdesign/model/rotation.hpp"
@@ -18,49 +20,42 @@ std::string triple(const model::Vec3& v) {
   return xacro_number(v.x()) + " " + xacro_number(v.y()) + " " + xacro_number(v.z());
 }
 
-void write_header(std::ostringstream& out, const std::string& header) {
-  std::istringstream lines(header);
-  for (std::string line; std::getline(lines, line);) {
-    // "--" may not appear inside an XML comment.
-    for (std::size_t at = line.find("--"); at != std::string::npos; at = line.find("--", at))
-      line.replace(at, 2, "- -");
-    out << "  " << line << '\n';
-  }
-}
-
 }  // namespace
 
 std::string sensors_xacro_text(const deploy::SensorFrames& frames, const std::string& header) {
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n<!--\n";
-  write_header(out, header);
+  out << xml_comment_lines(header, "  ");
   out << "  Use: <xacro:include filename=\"sensors.urdf.xacro\"/> <xacro:rig_sensors/>\n"
-         "  Joint origins are relative to the link `" << frames.parent
+         "  Joint origins are relative to the link `"
+      << xml_comment_line(frames.parent)
       << "`: pass another `parent` only if it\n"
          "  coincides with it. Lidars and scanners: point the driver's frame_id at <id>_link\n"
          "  (x forward, z up). Cameras: images and depth clouds in <id>_optical_frame (z\n"
          "  forward, x right, y down, REP-103).\n-->\n";
   out << "<robot xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n";
-  out << "  <xacro:macro name=\"rig_sensors\" params=\"parent:=" << frames.parent
+  out << "  <xacro:macro name=\"rig_sensors\" params=\"parent:=" << xml_attribute(frames.parent)
       << " prefix:=${''}\">\n";
   for (const deploy::SensorFrame& frame : frames.frames) {
     const model::Vec3 rpy = model::rpy_from_rotation(frame.T_parent_link.linear());
-    out << "    <!-- " << frame.mount_id << ": " << frame.sensor_id << ", mode " << frame.mode_id
+    out << "    <!-- "
+        << xml_comment_line(frame.mount_id + ": " + frame.sensor_id + ", mode " + frame.mode_id)
         << " -->\n";
-    out << "    <link name=\"${prefix}" << frame.link << "\"/>\n";
-    out << "    <joint name=\"${prefix}" << frame.mount_id << "_joint\" type=\"fixed\">\n";
+    out << "    <link name=\"${prefix}" << xml_attribute(frame.link) << "\"/>\n";
+    out << "    <joint name=\"${prefix}" << xml_attribute(frame.mount_id)
+        << "_joint\" type=\"fixed\">\n";
     out << "      <parent link=\"${parent}\"/>\n";
-    out << "      <child link=\"${prefix}" << frame.link << "\"/>\n";
+    out << "      <child link=\"${prefix}" << xml_attribute(frame.link) << "\"/>\n";
     out << "      <origin xyz=\"" << triple(frame.T_parent_link.translation()) << "\" rpy=\""
         << triple(rpy) << "\"/>\n";
     out << "    </joint>\n";
     if (frame.optical_frame) {
       const model::Vec3 optical = model::rpy_from_rotation(model::T_sensor_optical().linear());
-      out << "    <link name=\"${prefix}" << *frame.optical_frame << "\"/>\n";
-      out << "    <joint name=\"${prefix}" << frame.mount_id
+      out << "    <link name=\"${prefix}" << xml_attribute(*frame.optical_frame) << "\"/>\n";
+      out << "    <joint name=\"${prefix}" << xml_attribute(frame.mount_id)
           << "_optical_joint\" type=\"fixed\">\n";
-      out << "      <parent link=\"${prefix}" << frame.link << "\"/>\n";
-      out << "      <child link=\"${prefix}" << *frame.optical_frame << "\"/>\n";
+      out << "      <parent link=\"${prefix}" << xml_attribute(frame.link) << "\"/>\n";
+      out << "      <child link=\"${prefix}" << xml_attribute(*frame.optical_frame) << "\"/>\n";
       out << "      <origin xyz=\"0 0 0\" rpy=\"" << triple(optical) << "\"/>\n";
       out << "    </joint>\n";
     }

@@ -1,4 +1,4 @@
-#include "rigdesign/io/deploy/self_filters_loader.hpp"
+#include "rigdesign/io/self_filters/self_filters_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,6 @@
 
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/deploy/sensor_frames.hpp"
-#include "rigdesign/io/config/costmap_params_loader.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/optical_frame.hpp"
 
@@ -17,20 +16,15 @@ constexpr double kPi = std::numbers::pi;
 constexpr const char* kAngle = "an angle in radians in [-pi, pi]";
 constexpr const char* kMetres = "metres";
 
-std::vector<std::string> mount_ids(const model::Rig& rig) {
-  std::vector<std::string> ids;
-  for (const model::Mount& mount : rig.mounts) ids.push_back(mount.id);
-  return ids;
-}
-
 // The mount a node filters, from its name: the longest mount id it equals or starts with
 // followed by '_'; empty when none.
 std::string mount_of(const std::string& node, const model::Rig& rig) {
   std::string best;
   for (const model::Mount& mount : rig.mounts) {
     const std::string& id = mount.id;
-    const bool named = node == id || (node.size() > id.size() && node.compare(0, id.size(), id) == 0 &&
-                                      node[id.size()] == '_');
+    const bool named =
+        node == id ||
+        (node.size() > id.size() && node.compare(0, id.size(), id) == 0 && node[id.size()] == '_');
     if (named && id.size() > best.size()) best = id;
   }
   return best;
@@ -67,8 +61,8 @@ std::optional<model::OrientedBox> read_box(MapReader& m, const std::string& fram
     const auto high = m.number(std::string("max_") + axes[axis], Need::required, kMetres);
     ok = ok && low && high;
     if (low && high) {
-      m.require(*low <= *high, std::string("min_") + axes[axis], "is above max_" + std::string(axes[axis]),
-                "min <= max");
+      m.require(*low <= *high, std::string("min_") + axes[axis],
+                "is above max_" + std::string(axes[axis]), "min <= max");
       box.min[axis] = *low;
       box.max[axis] = *high;
     }
@@ -90,8 +84,11 @@ std::string band_text(double lower, double upper) {
 void read_laser_filter(MapReader& entry, const std::string& mount, const model::Rig& rig,
                        std::vector<deploy::DeployedFilter>& filters) {
   const std::string name = entry.text("name", Need::optional).value_or("");
-  const std::string type = entry.text("type", Need::required, "a laser_filters type, e.g. "
-                                      "laser_filters/LaserScanAngularBoundsFilterInPlace").value_or("");
+  const std::string type = entry
+                               .text("type", Need::required,
+                                     "a laser_filters type, e.g. "
+                                     "laser_filters/LaserScanAngularBoundsFilterInPlace")
+                               .value_or("");
   auto params = entry.map("params", Need::optional);
   entry.reject_unknown_keys();
   deploy::DeployedFilter filter;
@@ -113,7 +110,8 @@ void read_laser_filter(MapReader& entry, const std::string& mount, const model::
     const bool in_place = type.ends_with("InPlace");
     std::vector<model::AzimuthBand>& bands = filter.limits.excluded_azimuths;
     if (in_place) {  // drops (lower, upper); lower > upper wraps through +-pi
-      if (*lower < *upper) bands.push_back({*lower, *upper});
+      if (*lower < *upper)
+        bands.push_back({*lower, *upper});
       else {
         bands.push_back({*lower, kPi});
         bands.push_back({-kPi, *upper});
@@ -122,13 +120,14 @@ void read_laser_filter(MapReader& entry, const std::string& mount, const model::
       if (*lower > -kPi) bands.push_back({-kPi, *lower});
       if (*upper < kPi) bands.push_back({*upper, kPi});
     }
-    filter.setting.what = label + (in_place ? " drops " : " keeps only ") + band_text(*lower, *upper);
+    filter.setting.what =
+        label + (in_place ? " drops " : " keeps only ") + band_text(*lower, *upper);
   } else if (type == "laser_filters/LaserScanRangeFilter") {
     if (!params) return;
     const auto lower = params->number("lower_threshold", Need::optional, kMetres);
     const auto upper = params->number("upper_threshold", Need::optional, kMetres);
-    for (const char* key : {"use_message_range_limits", "lower_replacement_value",
-                            "upper_replacement_value"})
+    for (const char* key :
+         {"use_message_range_limits", "lower_replacement_value", "upper_replacement_value"})
       params->has(key);
     params->reject_unknown_keys();
     if (lower) filter.limits.min_range = *lower;
@@ -168,7 +167,7 @@ std::vector<deploy::DeployedFilter> load_self_filters(const std::string& path,
       if (owner.empty()) {
         diagnostics.error(at, node, "names no mount of " + rig.file,
                           "a node named <mount id>_self_filter... for a mount of the rig: " +
-                              model::join(mount_ids(rig)));
+                              model::join(rig.mount_ids()));
         continue;
       }
       const YAML::Node& body = entry.second;
@@ -185,7 +184,8 @@ std::vector<deploy::DeployedFilter> load_self_filters(const std::string& path,
         const bool negative = m.boolean("negative", Need::optional).value_or(false);
         m.require(negative, "negative", "is false (keep only the inside)",
                   "true: a self-filter crop box drops its inside");
-        const std::optional<model::OrientedBox> box = read_box(m, "input_frame", deploy::sensor_link_name(owner), rig);
+        const std::optional<model::OrientedBox> box =
+            read_box(m, "input_frame", deploy::sensor_link_name(owner), rig);
         for (const char* key : {"keep_organized", "output_frame", "use_indices", "approximate_sync",
                                 "max_queue_size"})
           m.has(key);
@@ -205,7 +205,8 @@ std::vector<deploy::DeployedFilter> load_self_filters(const std::string& path,
           m.has(key);
           continue;
         }
-        if (auto entry_map = m.map(key, Need::required, "a laser_filters entry: name, type, params")) {
+        if (auto entry_map =
+                m.map(key, Need::required, "a laser_filters entry: name, type, params")) {
           read_laser_filter(*entry_map, owner, rig, filters);
         }
       }
@@ -216,30 +217,6 @@ std::vector<deploy::DeployedFilter> load_self_filters(const std::string& path,
   }
   diagnostics.throw_if_errors();
   return filters;
-}
-
-deploy::DeployedConfig load_deployed_sources(const std::string& path, const model::Rig& rig) {
-  const CostmapParamsFile file = load_costmap_params(path, {}, {});
-  deploy::DeployedConfig config;
-  config.nav2_file = path;
-  model::Diagnostics diagnostics;
-  for (std::size_t i = 0; i < file.sources.size(); ++i) {
-    const std::string& name = file.sources[i].name;
-    const SourceLocations& at = file.source_locations[i];
-    const bool known = std::any_of(rig.mounts.begin(), rig.mounts.end(),
-                                   [&](const model::Mount& m) { return m.id == name; });
-    if (!known) {
-      diagnostics.error(at.source, name, "names no mount of " + rig.file,
-                        "observation sources named after the rig's mount ids: " +
-                            model::join(mount_ids(rig)));
-      continue;
-    }
-    config.sources.push_back({name, file.sources[i].source, at.source, at.obstacle_min_range,
-                              at.obstacle_max_range, at.min_obstacle_height,
-                              at.max_obstacle_height});
-  }
-  diagnostics.throw_if_errors();
-  return config;
 }
 
 }  // namespace rigdesign::io

@@ -10,6 +10,8 @@
 
 #include "rigdesign/costmap/costmap.hpp"
 #include "rigdesign/costmap/observation.hpp"
+#include "rigdesign/deploy/deployed_check.hpp"
+#include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/source_location.hpp"
 
 namespace rigdesign::io {
@@ -30,7 +32,7 @@ struct CostmapParamsFile {
   /// The layer's `observation_sources` in their order, each starting from the source defaults.
   std::vector<costmap::NamedObservationSource> sources;
   std::vector<SourceLocations> source_locations;  ///< parallel to `sources`
-  bool has_sources = false;  ///< the file names observation sources
+  bool has_sources = false;                       ///< the file names observation sources
   /// nav2's `footprint` polygon [m], empty when the file gives robot_radius; the costmap then
   /// takes its circumscribed radius as robot_radius and its inscribed one for inflation.
   std::vector<model::Vec2> footprint;
@@ -42,5 +44,10 @@ struct CostmapParamsFile {
 CostmapParamsFile load_costmap_params(const std::string& path,
                                       const costmap::CostmapParams& defaults,
                                       const costmap::ObservationSource& source_defaults);
+
+/// The nav2 observation sources of `path` (load_costmap_params) as deployed, each named
+/// after a mount of `rig` (as `rigdesign export` names them); a source that names no mount is
+/// an InputError at its key.
+deploy::DeployedConfig load_deployed_sources(const std::string& path, const model::Rig& rig);
 
 }  // namespace rigdesign::io

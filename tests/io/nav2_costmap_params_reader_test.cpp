@@ -1,11 +1,10 @@
 // The nav2 costmap parameter file: values as the file's text gives them, defaults where it
 // is silent, and bad input located at the file's own keys.
-#include "rigdesign/io/config/costmap_params_loader.hpp"
-
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <sstream>
 
+#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
@@ -75,14 +74,15 @@ TEST_CASE("the bundled nav2 file gives the values its text states", "[io][costma
 
 TEST_CASE("keys the file does not give keep the caller's defaults", "[io][costmap]") {
   TempFolder folder;
-  const std::string path = folder.write("flat.yaml",
-                                        "resolution: 0.1\n"
-                                        "plugins: [voxel_layer, inflation_layer]\n"
-                                        "voxel_layer:\n"
-                                        "  plugin: nav2_costmap_2d::VoxelLayer\n"
-                                        "  observation_sources: [lidar]\n"
-                                        "  lidar: {clearing: false}\n"
-                                        "inflation_layer: {plugin: nav2_costmap_2d::InflationLayer}\n");
+  const std::string path =
+      folder.write("flat.yaml",
+                   "resolution: 0.1\n"
+                   "plugins: [voxel_layer, inflation_layer]\n"
+                   "voxel_layer:\n"
+                   "  plugin: nav2_costmap_2d::VoxelLayer\n"
+                   "  observation_sources: [lidar]\n"
+                   "  lidar: {clearing: false}\n"
+                   "inflation_layer: {plugin: nav2_costmap_2d::InflationLayer}\n");
   costmap::CostmapParams defaults;
   defaults.size_x = 7.0;
   defaults.hit.hit_max = 99;

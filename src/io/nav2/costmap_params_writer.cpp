@@ -1,0 +1,162 @@
+#include "rigdesign/io/nav2/costmap_params_writer.hpp"
+
+#include <array>
+#include <sstream>
+
+#include "io/emit/yaml_emit.hpp"
+#include "io/nav2/nav2_keys.hpp"
+#include "rigdesign/model/format_number.hpp"
+
+namespace rigdesign::io {
+namespace {
+
+std::string footprint_text(const std::vector<model::Vec2>& footprint) {
+  std::string text = "\"[";
+  for (std::size_t i = 0; i < footprint.size(); ++i) {
+    text += (i ? ", [" : "[") + model::exact_number(footprint[i].x()) + ", " +
+            model::exact_number(footprint[i].y()) + "]";
+  }
+  return text + "]\"";
+}
+
+bool voxel_layer(const deploy::CostmapConfig& config) {
+  return config.costmap.layer == costmap::ObstacleLayerKind::voxel;
+}
+
+std::string obstacle_layer_name(const deploy::CostmapConfig& config) {
+  return std::string(voxel_layer(config) ? nav2::kVoxelLayer : nav2::kObstacleLayer);
+}
+
+// One key and its value on a line of its own, with an optional comment after it.
+void write_key(std::ostringstream& out, const std::string& indent, std::string_view key,
+               const std::string& value, const std::string& comment = "") {
+  out << indent << key << ": " << value;
+  if (!comment.empty()) out << "  # " << comment;
+  out << '\n';
+}
+
+// The obstacle or voxel layer's column and its observation sources.
+void write_obstacle_layer(std::ostringstream& out, const deploy::CostmapConfig& config,
+                          const std::string& in) {
+  const costmap::CostmapParams& p = config.costmap;
+  const bool voxel = voxel_layer(config);
+  out << in << obstacle_layer_name(config) << ":\n";
+  const std::string l = in + "  ";
+  write_key(out, l, "plugin",
+            yaml_quoted(std::string(voxel ? nav2::kVoxelLayerClass : nav2::kObstacleLayerClass)));
+  write_key(out, l, "enabled", yaml_bool(true));
+  if (voxel) {
+    write_key(out, l, "publish_voxel_map", yaml_bool(true));
+    write_key(out, l, "origin_z", model::exact_number(p.voxel.z_min));
+    write_key(out, l, "z_resolution", model::exact_number(p.voxel.z_resolution));
+    write_key(out, l, "z_voxels",
+              std::to_string(
+                  static_cast<int>((p.voxel.z_max - p.voxel.z_min) / p.voxel.z_resolution + 0.5)));
+    write_key(out, l, "unknown_threshold", std::to_string(p.voxel.unknown_threshold));
+    write_key(out, l, "mark_threshold", "0");
+  }
+  out << l << "observation_sources:";
+  for (const deploy::SourceConfig& source : config.sources)
+    out << ' ' << yaml_scalar(source.mount_id);
+  out << '\n';
+  // Why each number is what it is, beside it (deploy/costmap_config.cpp derives them).
+  const std::array<std::string, 4> range_why = {
+      "the sensor's min range", "reaches the area's far edge (distance of interest)",
+      "its blind near zone is remembered, not cleared", ""};
+  for (const deploy::SourceConfig& source : config.sources) {
+    const costmap::ObservationSource& s = source.source;
+    out << l << yaml_scalar(source.mount_id) << ":\n";
+    const std::string k = l + "  ";
+    write_key(out, k, "topic", yaml_scalar(source.topic));
+    write_key(out, k, "data_type", yaml_quoted(source.laser_scan ? "LaserScan" : "PointCloud2"));
+    write_key(out, k, "sensor_frame", yaml_scalar(source.sensor_frame));
+    write_key(out, k, "marking", yaml_bool(s.marking));
+    write_key(out, k, "clearing", yaml_bool(s.clearing));
+    for (std::size_t i = 0; i < nav2::kSourceRangeKeys.size(); ++i) {
+      const nav2::SourceNumberKey& range = nav2::kSourceRangeKeys[i];
+      write_key(out, k, range.key, model::exact_number(s.*range.field), range_why[i]);
+    }
+    const std::array<std::string, 2> height_why = {
+        "floor flatness + " + model::format_number(config.floor_noise_sigmas) +
+            " sigma of a floor return's height (" +
+            model::format_number(source.floor_height_error, 3) + " m)",
+        "top of the area to perceive"};
+    for (std::size_t i = 0; i < nav2::kSourceHeightKeys.size(); ++i) {
+      const nav2::SourceNumberKey& height = nav2::kSourceHeightKeys[i];
+      write_key(out, k, height.key, model::exact_number(s.*height.field), height_why[i]);
+    }
+  }
+}
+
+// The keys both costmaps share: footprint, the obstacle or voxel layer with its sources, the
+// Hit Layer and the inflation layer.
+void write_layers(std::ostringstream& out, const deploy::CostmapConfig& config,
+                  const std::string& in) {
+  const costmap::CostmapParams& p = config.costmap;
+  if (config.footprint.empty()) {
+    write_key(out, in, "robot_radius", model::exact_number(config.robot_radius));
+  } else {
+    write_key(out, in, "footprint", footprint_text(config.footprint));
+  }
+  write_obstacle_layer(out, config, in);
+  const std::string l = in + "  ";
+  out << in << nav2::kHitLayer << ":\n";
+  out << yaml_comment("paper 1's Hit Layer: " + config.memory.rule, l);
+  write_key(out, l, "plugin", yaml_quoted(std::string(nav2::kHitLayerClass)));
+  write_key(out, l, "enabled", yaml_bool(true));
+  write_key(out, l, "hit", std::to_string(p.hit.hit));
+  write_key(out, l, "hit_max", std::to_string(p.hit.hit_max));
+  write_key(out, l, "d_threshold", model::exact_number(p.hit.d_threshold));
+  write_key(out, l, "d_duration", model::exact_number(p.hit.d_duration));
+  out << in << nav2::kInflationLayer << ":\n";
+  write_key(out, l, "plugin", yaml_quoted(std::string(nav2::kInflationLayerClass)));
+  write_key(out, l, "enabled", yaml_bool(true));
+  write_key(out, l, "inflation_radius", model::exact_number(p.inflation.inflation_radius),
+            "circumscribed radius + " + model::format_number(config.inflation_margin) + " m");
+  write_key(out, l, "cost_scaling_factor", model::exact_number(p.inflation.cost_scaling_factor));
+}
+
+// The costmap's own keys above its layers.
+void write_costmap_block(std::ostringstream& out, const std::string& name) {
+  out << name << ":\n  " << name << ":\n    ros__parameters:\n";
+}
+
+}  // namespace
+
+std::string nav2_costmap_text(const deploy::CostmapConfig& config, const std::string& header) {
+  std::ostringstream out;
+  out << yaml_comment(header);
+  for (const std::string& note : config.notes) out << yaml_comment(note);
+  const costmap::CostmapParams& p = config.costmap;
+  const std::string plugins = yaml_quoted(obstacle_layer_name(config)) + ", " +
+                              yaml_quoted(std::string(nav2::kHitLayer)) + ", " +
+                              yaml_quoted(std::string(nav2::kInflationLayer));
+  const std::string in = "      ";
+  write_costmap_block(out, "local_costmap");
+  write_key(out, in, "update_frequency", yaml_float(config.update_rate));
+  write_key(out, in, "publish_frequency", yaml_float(2.0));
+  write_key(out, in, "global_frame", "odom");
+  write_key(out, in, "robot_base_frame", yaml_scalar(config.robot_base_frame));
+  write_key(out, in, "rolling_window", yaml_bool(true));
+  write_key(out, in, "width", model::exact_number(p.size_x), "twice the distance of interest");
+  write_key(out, in, "height", model::exact_number(p.size_y));
+  write_key(out, in, "resolution", model::exact_number(p.resolution));
+  write_key(out, in, "plugins", "[" + plugins + "]");
+  write_layers(out, config, in);
+  write_costmap_block(out, "global_costmap");
+  write_key(out, in, "update_frequency", yaml_float(1.0));
+  write_key(out, in, "publish_frequency", yaml_float(1.0));
+  write_key(out, in, "global_frame", "map");
+  write_key(out, in, "robot_base_frame", yaml_scalar(config.robot_base_frame));
+  write_key(out, in, "resolution", model::exact_number(p.resolution));
+  write_key(out, in, "track_unknown_space", yaml_bool(true));
+  write_key(out, in, "plugins",
+            "[" + yaml_quoted(std::string(nav2::kStaticLayer)) + ", " + plugins + "]");
+  out << in << nav2::kStaticLayer << ":\n";
+  write_key(out, in + "  ", "plugin", yaml_quoted(std::string(nav2::kStaticLayerClass)));
+  write_key(out, in + "  ", "map_subscribe_transient_local", yaml_bool(true));
+  write_layers(out, config, in);
+  return out.str();
+}
+
+}  // namespace rigdesign::io
