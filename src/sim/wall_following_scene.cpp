@@ -13,8 +13,8 @@ namespace {
 // Wall [m]: its face 0.6 m left of the robot's path (y = 0), 2.5 m high, from 2 m behind
 // the robot's start to 12 m ahead of it.
 constexpr double kWallY = 0.6;
-constexpr double kWallThickness = 0.1;
-constexpr double kWallHeight = 2.5;
+constexpr double kFollowedWallThickness = 0.1;
+constexpr double kFollowedWallHeight = 2.5;
 constexpr double kSceneStartX = -2.0;
 constexpr double kSceneEndX = 12.0;
 constexpr double kFloorRightY = -2.0;  // floor reaches 2 m right of the path
@@ -61,9 +61,9 @@ model::Scene make_wall_following_scene() {
   scene.T_world_robot = floor_pose(0, 0, 0);
   add_object(scene, "floor",
              floor_rectangle({{kSceneStartX, kFloorRightY}, {kSceneEndX, kWallY}}, 0));
-  add_object(
-      scene, "wall",
-      aligned_box({kSceneStartX, kWallY, 0}, {kSceneEndX, kWallY + kWallThickness, kWallHeight}));
+  add_object(scene, "wall",
+             aligned_box({kSceneStartX, kWallY, 0},
+                         {kSceneEndX, kWallY + kFollowedWallThickness, kFollowedWallHeight}));
   add_table(scene);
   return scene;
 }

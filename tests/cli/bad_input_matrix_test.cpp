@@ -148,6 +148,12 @@ std::vector<MatrixCase> option_cases() {
        {},
        with(costmap, {"--update-rate", "nan"}),
        "--update-rate: is nan"},
+      // One limit for the rate, the follower's 20 Hz control rate (issue 29: the option's check
+      // allowed 100 Hz, then the command refused anything above 20 with another message).
+      {"costmap --update-rate 50",
+       {},
+       with(costmap, {"--update-rate", "50"}),
+       "--update-rate: is 50 (expected a rate in (0, 20] Hz"},
       {"costmap --window -6", {}, with(costmap, {"--window", "-6"}), "--window: is -6"},
       {"occupancy --voxels 0", {}, with(occupancy, {"--voxels", "0"}), "--voxels: is 0"},
       {"occupancy --rate inf", {}, with(occupancy, {"--rate", "inf"}), "--rate: is inf"},

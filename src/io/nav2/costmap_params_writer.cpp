@@ -116,7 +116,7 @@ void write_layers(std::ostringstream& out, const deploy::CostmapConfig& config,
   write_key(out, l, "cost_scaling_factor", model::exact_number(p.inflation.cost_scaling_factor));
 }
 
-// The costmap's own keys above its layers.
+// nav2's nesting of a costmap node's parameters: <name>: <name>: ros__parameters:.
 void write_costmap_block(std::ostringstream& out, const std::string& name) {
   out << name << ":\n  " << name << ":\n    ros__parameters:\n";
 }
