@@ -8,7 +8,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
-#include "file_report.hpp"
+#include "report/file_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 
 namespace rigdesign::cli {

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "json_report.hpp"
+#include "report/json_report.hpp"
 #include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/io/atomic_write.hpp"

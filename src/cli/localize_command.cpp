@@ -11,7 +11,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
-#include "localize_report.hpp"
+#include "report/localize_report.hpp"
 #include "number_checks.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/logs/co2_log_reader.hpp"

@@ -9,7 +9,7 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "coverage_files.hpp"
-#include "html_report.hpp"
+#include "report/html_report.hpp"
 #include "inputs.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/staged_folder.hpp"

@@ -23,7 +23,7 @@
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/select/relaxation.hpp"
-#include "select_report.hpp"
+#include "report/select_report.hpp"
 
 namespace rigdesign::cli {
 namespace {

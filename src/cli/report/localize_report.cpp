@@ -1,4 +1,4 @@
-#include "localize_report.hpp"
+#include "report/localize_report.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "html_report.hpp"
+#include "report/html_report.hpp"
 
 #include <sstream>
 
-#include "file_report.hpp"
+#include "report/file_report.hpp"
 #include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/xml_text.hpp"

@@ -1,4 +1,4 @@
-#include "select_report.hpp"
+#include "report/select_report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 
 #include "app.hpp"
 #include "coverage_files.hpp"
-#include "deployment_report.hpp"
-#include "html_report.hpp"
-#include "json_report.hpp"
+#include "report/deployment_report.hpp"
+#include "report/html_report.hpp"
+#include "report/json_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/yaml_writers.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"

@@ -1,4 +1,4 @@
-#include "file_report.hpp"
+#include "report/file_report.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,7 +10,7 @@
 
 #include "command.hpp"
 #include "inputs.hpp"
-#include "json_report.hpp"
+#include "report/json_report.hpp"
 #include "rigdesign/deploy/deployed_check.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
