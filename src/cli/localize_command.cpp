@@ -11,8 +11,8 @@
 
 #include "app.hpp"
 #include "command.hpp"
-#include "report/localize_report.hpp"
 #include "number_checks.hpp"
+#include "report/localize_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/logs/co2_log_reader.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
