@@ -1,59 +1,81 @@
 #pragma once
-// The parts of `rigdesign localize`'s report: one emitter, one CO2 log, the accuracy table,
-// each as text (to `out`) or JSON, with the plot's markers.
-#include <nlohmann/json.hpp>
-#include <limits>
-#include <ostream>
+// What `rigdesign localize` reports, as data: per emitter and method the estimate with its
+// KPIs, per CO2 log the detections of both thresholds with their scores, and the runs on a
+// scenario or on log files that hold them. localize_text and localize_json render it.
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rigdesign/localize/co2_log.hpp"
 #include "rigdesign/localize/emitter_localizer.hpp"
 #include "rigdesign/localize/gas_detection.hpp"
+#include "rigdesign/localize/ground_truth.hpp"
 #include "rigdesign/localize/kpis.hpp"
 #include "rigdesign/localize/log_generator.hpp"
 #include "rigdesign/localize/rssi_log.hpp"
-#include "rigdesign/render/localize_plot.hpp"
 
 namespace rigdesign::cli {
 
-struct LocalizeOptions {
-  std::vector<std::string> logs;
-  std::string scenario;
-  std::uint64_t seed = 1;
-  int seeds = 20;
-  bool table = false;
-  std::string method;  // empty: nls for one run, every method for --table
-  std::string truth;
-  std::string walls;        // --walls FILE: a wall map the range fit models
-  std::string prefer_side;  // --prefer-side left|right
-  double floor_dbm = std::numeric_limits<double>::quiet_NaN();      // --floor, NaN: not given
-  double scan_period_s = std::numeric_limits<double>::quiet_NaN();  // --scan-period
-  std::string gas_truth;
-  localize::LocalizeParams params;
-  localize::ScenarioParams scenario_params;
-  localize::KpiParams kpi;
-  localize::GasDetectionParams gas;
-  bool json = false;
-  std::string out;
+/// One emitter located by one method.
+struct EmitterReport {
+  localize::LocalizeMethod method = localize::LocalizeMethod::nls;
+  localize::EmitterEstimate estimate;
+  double region_area_m2 = 0.0;  ///< of the estimate's credible region, when it states one
+  std::optional<model::Vec3> truth;
+  std::optional<localize::EmitterKpis> kpis;  ///< when the truth is known
 };
 
-/// The methods asked for: nls for one run, every method for --table, or --method.
-std::vector<localize::LocalizeMethod> methods_of(const LocalizeOptions& options);
+/// One detection threshold on a CO2 log.
+struct GasModeReport {
+  localize::GasThreshold mode = localize::GasThreshold::fixed;
+  std::vector<localize::GasDetection> detections;
+  /// Scored against the gas artifacts as detected and lag-corrected; none without artifacts.
+  std::optional<localize::GasScore> as_detected;
+  std::optional<localize::GasScore> lag_corrected;
+};
 
-/// One emitter: estimate, uncertainty, degeneracy, and KPIs when the truth is known; adds
-/// its markers to `plot` when given.
-nlohmann::json report_emitter(const localize::RssiLog& log, int emitter,
-                              localize::LocalizeMethod method,
-                              const std::optional<model::Vec3>& truth,
-                              const LocalizeOptions& options, render::LocalizePlot* plot,
-                              std::ostream& out);
+/// A CO2 log under both thresholds.
+struct GasReport {
+  std::string file;
+  std::size_t readings = 0;
+  bool timed = true;                 ///< false: an untimed trace, a sample period assumed
+  double lag_s = 0.0;                ///< the sensor's delay the lag correction undoes [s]
+  std::vector<GasModeReport> modes;  ///< fixed, then relative
+};
 
-/// Both detection thresholds on a CO2 log, scored against --gas-truth when given.
-nlohmann::json report_gas(const localize::Co2Log& log, const LocalizeOptions& options,
-                          render::LocalizePlot* plot, std::ostream& out);
+/// One --log file: an RSSI log with its emitters, or a CO2 log.
+struct LogReport {
+  std::string file;
+  std::size_t readings = 0;
+  std::size_t emitter_count = 0;
+  std::vector<EmitterReport> emitters;  ///< per emitter, per method (RSSI)
+  std::optional<GasReport> gas;         ///< a CO2 log
+};
 
-/// The accuracy table over seeds (--table).
-int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& err);
+struct LogsReport {
+  std::vector<LogReport> logs;
+  std::vector<std::string> plots;  ///< written
+};
+
+/// A run on a synthetic scenario.
+struct ScenarioReport {
+  const localize::Scenario* scenario = nullptr;
+  std::uint64_t seed = 1;
+  std::vector<EmitterReport> emitters;  ///< per method
+  std::vector<std::string> plots;       ///< written
+};
+
+/// Emitter `emitter` of `log` located by `method`; KPIs when `truth` is given.
+EmitterReport locate_emitter(const localize::RssiLog& log, int emitter,
+                             localize::LocalizeMethod method,
+                             const std::optional<model::Vec3>& truth,
+                             const localize::LocalizeParams& params,
+                             const localize::KpiParams& kpi);
+
+/// Both detection thresholds on `log`, scored against the gas ones of `artifacts`, if any.
+GasReport detect_gas_sources(const localize::Co2Log& log,
+                             const std::vector<localize::Artifact>& artifacts,
+                             const localize::GasDetectionParams& params);
 
 }  // namespace rigdesign::cli
