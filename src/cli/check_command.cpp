@@ -8,6 +8,10 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "report/check_github.hpp"
+#include "report/check_json.hpp"
+#include "report/check_junit.hpp"
+#include "report/check_text.hpp"
 #include "report/file_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 

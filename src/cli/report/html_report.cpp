@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "report/file_report.hpp"
+#include "report/requirement_text.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/xml_text.hpp"
 #include "text_table.hpp"
