@@ -228,6 +228,78 @@ int run_resolved(const LocalizeOptions& options, std::ostream& out, std::ostream
   return run_logs(options, out);
 }
 
+// The path-loss model and the range fit's priors, floor, scan period and walls.
+void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
+  app->add_option("--rssi-at-1m", options.params.path_loss.rssi_at_1m_dbm,
+                  "Assumed RSSI at 1 m [dBm] (default -45)")
+      ->check(finite_in(-120, 30, "a level in [-120, 30] dBm"));
+  app->add_option("--exponent", options.params.path_loss.exponent,
+                  "Assumed path-loss exponent (default 2.5)")
+      ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"));
+  app->add_option("--cutoff", options.params.path_loss.cutoff_dbm,
+                  "Drop readings below this [dBm] (default -80)")
+      ->check(finite_in(-150, 0, "a level in [-150, 0] dBm"));
+  app->add_option("--level-prior", options.params.fit.level_prior_db,
+                  "nls: prior sd of the 1 m level about --rssi-at-1m [dB]")
+      ->capture_default_str()
+      ->check(positive_up_to(100.0, "a sd in (0, 100] dB"));
+  app->add_option("--exponent-prior", options.params.fit.exponent_prior,
+                  "nls: prior sd of the exponent about --exponent (0: fixed)")
+      ->capture_default_str()
+      ->check(finite_in(0, 10, "0 or a sd in (0, 10]"));
+  app->add_option("--path-prior", options.params.fit.path_prior_scale,
+                  "nls: prior on the position falling as exp(-distance from the path / M) "
+                  "(0: uniform over the search box) [m]")
+      ->capture_default_str()
+      ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"));
+  app->add_flag("!--no-correlation", options.params.fit.correlated_shadowing,
+                "nls: treat scans as independent (no tempering for correlated shadowing)");
+  app->add_option("--floor", options.floor_dbm,
+                  "Receiver floor [dBm]: unheard scans are below it (default: the log's "
+                  "'# floor_dbm:', else its weakest reading)")
+      ->check(finite_in(-200, 0, "a level in [-200, 0] dBm"));
+  app->add_option("--scan-period", options.scan_period_s,
+                  "Seconds between scans (default: the log's '# scan_period_s:', else its median "
+                  "step)")
+      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
+  app->add_option("--walls", options.walls,
+                  "Wall map CSV (x1,y1,x2,y2,attenuation_db) the range fit models");
+  app->add_option("--prefer-side", options.prefer_side,
+                  "List ambiguous hypotheses on this side of the path first: left or right");
+}
+
+// The KPIs, the synthetic scenarios' radio and the CO2 detection.
+void add_kpi_scenario_and_gas_options(CLI::App* app, LocalizeOptions& options) {
+  app->add_option("--checkpoints", options.kpi.checkpoints,
+                  "Running-estimate checkpoints per log for the KPIs (0: final estimate only)")
+      ->capture_default_str()
+      ->check(finite_in(0, 1000, "0 to 1000 checkpoints"));
+  app->add_option("--acceptable-error", options.kpi.acceptable_error,
+                  "Error counted as a detection, for C [m] (default 5)")
+      ->check(positive_up_to(1000.0, "a distance in (0, 1000] m"));
+  app->add_option("--shadowing", options.scenario_params.shadowing_db,
+                  "Scenario shadowing sigma [dB] (default 6)")
+      ->check(finite_in(0, 30, "a sigma in [0, 30] dB"));
+  app->add_option("--tx-offset", options.scenario_params.tx_offset_db,
+                  "Scenario phone level minus the assumed one [dB]")
+      ->check(finite_in(-60, 60, "an offset in [-60, 60] dB"));
+  app->add_option("--wall-loss", options.scenario_params.wall_attenuation_db,
+                  "Scenario loss per wall [dB] (default 8)")
+      ->check(finite_in(0, 60, "a loss in [0, 60] dB"));
+  app->add_option("--time-constant", options.gas.time_constant,
+                  "CO2 sensor time constant for the lag correction [s]")
+      ->check(finite_in(0, 3600, "a time constant in [0, 3600] s"));
+  app->add_option("--sample-period", options.gas.sample_period,
+                  "Seconds per reading of an untimed CO2 log (default 1)")
+      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
+  app->add_option("--threshold", options.gas.fixed_threshold_ppm,
+                  "Fixed CO2 threshold [ppm] (default 1800)")
+      ->check(positive_up_to(1e6, "a concentration in (0, 1e6] ppm"));
+  app->add_option("--mad-factor", options.gas.mad_factor,
+                  "k of the relative CO2 threshold median + k MAD (default 6)")
+      ->check(positive_up_to(1000.0, "a factor in (0, 1000]"));
+}
+
 }  // namespace
 
 Command setup_localize(CLI::App& parent) {
@@ -247,70 +319,8 @@ Command setup_localize(CLI::App& parent) {
   app->add_option("--truth", options->truth, "Emitter ground truth CSV (bssid,x,y,z) for the KPIs");
   app->add_option("--gas-truth", options->gas_truth,
                   "SubT ground-truth JSON (gt_*.json) to score gas detections");
-  app->add_option("--rssi-at-1m", options->params.path_loss.rssi_at_1m_dbm,
-                  "Assumed RSSI at 1 m [dBm] (default -45)")
-      ->check(finite_in(-120, 30, "a level in [-120, 30] dBm"));
-  app->add_option("--exponent", options->params.path_loss.exponent,
-                  "Assumed path-loss exponent (default 2.5)")
-      ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"));
-  app->add_option("--cutoff", options->params.path_loss.cutoff_dbm,
-                  "Drop readings below this [dBm] (default -80)")
-      ->check(finite_in(-150, 0, "a level in [-150, 0] dBm"));
-  app->add_option("--level-prior", options->params.fit.level_prior_db,
-                  "nls: prior sd of the 1 m level about --rssi-at-1m [dB]")
-      ->capture_default_str()
-      ->check(positive_up_to(100.0, "a sd in (0, 100] dB"));
-  app->add_option("--exponent-prior", options->params.fit.exponent_prior,
-                  "nls: prior sd of the exponent about --exponent (0: fixed)")
-      ->capture_default_str()
-      ->check(finite_in(0, 10, "0 or a sd in (0, 10]"));
-  app->add_option("--path-prior", options->params.fit.path_prior_scale,
-                  "nls: prior on the position falling as exp(-distance from the path / M) "
-                  "(0: uniform over the search box) [m]")
-      ->capture_default_str()
-      ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"));
-  app->add_flag("!--no-correlation", options->params.fit.correlated_shadowing,
-                "nls: treat scans as independent (no tempering for correlated shadowing)");
-  app->add_option("--floor", options->floor_dbm,
-                  "Receiver floor [dBm]: unheard scans are below it (default: the log's "
-                  "'# floor_dbm:', else its weakest reading)")
-      ->check(finite_in(-200, 0, "a level in [-200, 0] dBm"));
-  app->add_option("--scan-period", options->scan_period_s,
-                  "Seconds between scans (default: the log's '# scan_period_s:', else its median "
-                  "step)")
-      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
-  app->add_option("--walls", options->walls,
-                  "Wall map CSV (x1,y1,x2,y2,attenuation_db) the range fit models");
-  app->add_option("--prefer-side", options->prefer_side,
-                  "List ambiguous hypotheses on this side of the path first: left or right");
-  app->add_option("--checkpoints", options->kpi.checkpoints,
-                  "Running-estimate checkpoints per log for the KPIs (0: final estimate only)")
-      ->capture_default_str()
-      ->check(finite_in(0, 1000, "0 to 1000 checkpoints"));
-  app->add_option("--acceptable-error", options->kpi.acceptable_error,
-                  "Error counted as a detection, for C [m] (default 5)")
-      ->check(positive_up_to(1000.0, "a distance in (0, 1000] m"));
-  app->add_option("--shadowing", options->scenario_params.shadowing_db,
-                  "Scenario shadowing sigma [dB] (default 6)")
-      ->check(finite_in(0, 30, "a sigma in [0, 30] dB"));
-  app->add_option("--tx-offset", options->scenario_params.tx_offset_db,
-                  "Scenario phone level minus the assumed one [dB]")
-      ->check(finite_in(-60, 60, "an offset in [-60, 60] dB"));
-  app->add_option("--wall-loss", options->scenario_params.wall_attenuation_db,
-                  "Scenario loss per wall [dB] (default 8)")
-      ->check(finite_in(0, 60, "a loss in [0, 60] dB"));
-  app->add_option("--time-constant", options->gas.time_constant,
-                  "CO2 sensor time constant for the lag correction [s]")
-      ->check(finite_in(0, 3600, "a time constant in [0, 3600] s"));
-  app->add_option("--sample-period", options->gas.sample_period,
-                  "Seconds per reading of an untimed CO2 log (default 1)")
-      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
-  app->add_option("--threshold", options->gas.fixed_threshold_ppm,
-                  "Fixed CO2 threshold [ppm] (default 1800)")
-      ->check(positive_up_to(1e6, "a concentration in (0, 1e6] ppm"));
-  app->add_option("--mad-factor", options->gas.mad_factor,
-                  "k of the relative CO2 threshold median + k MAD (default 6)")
-      ->check(positive_up_to(1000.0, "a factor in (0, 1000]"));
+  add_range_fit_options(app, *options);
+  add_kpi_scenario_and_gas_options(app, *options);
   app->add_flag("--json", options->json, "Print JSON");
   app->add_option("--out", options->out,
                   "Write plots (PNG and SVG) and, for a scenario, its log and truth here");

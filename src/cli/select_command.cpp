@@ -135,7 +135,8 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   const auto on_search = [&](const select::SearchProgress& at) {
     progress.update_share(at.fraction, std::to_string(at.nodes) + " nodes, share of the tree");
   };
-  SelectReport report{&space, &requirements, &policy, options.budget, nullptr, {}};
+  SelectReport report{
+      &catalog, space.option_count(), &requirements, &policy, options.budget, nullptr, {}};
   std::size_t step = 0;  // the relaxation steps shown
   if (!options.json) print_select_header(report, out);
   const select::RelaxationOutcome outcome = select::select_within_budget(
@@ -151,7 +152,8 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
       on_search);
   progress.clear();
   report.outcome = &outcome;
-  report.files = staged.final_names(write_selection_files(report, staged, !options.no_renders));
+  report.files =
+      staged.final_names(write_selection_files(report, space, staged, !options.no_renders));
   staged.commit();
   if (options.json) {
     out << to_json(report).dump(2) << '\n';

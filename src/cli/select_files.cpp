@@ -32,9 +32,9 @@ constexpr int kPitch = 4;  // model::kPoseAxisNames
 constexpr int kMarginSamples = 41;
 
 // The rig file names its sensor library relative to itself and the requirements beside it.
-std::string write_chosen_rig(const SelectReport& report, const select::Selection& selection,
-                             const std::string& folder) {
-  const std::string library_from_folder = std::filesystem::absolute(report.space->library().file)
+std::string write_chosen_rig(const SelectReport& report, const model::SensorLibrary& library,
+                             const select::Selection& selection, const std::string& folder) {
+  const std::string library_from_folder = std::filesystem::absolute(library.file)
                                               .lexically_normal()
                                               .lexically_relative(std::filesystem::absolute(folder))
                                               .string();
@@ -43,11 +43,10 @@ std::string write_chosen_rig(const SelectReport& report, const select::Selection
   io::write_file_atomically(
       rig_file,
       io::rig_to_yaml(selection.rig, library_from_folder, "requirements_final.yaml",
-                      "Chosen by `rigdesign select` from " + report.space->catalog().file +
-                          "\nCost " + fixed(cost.total, 0) + " USD (sensors " +
-                          fixed(cost.sensors, 0) + ", transfer " + cost.transfer_id + " " +
-                          fixed(cost.transfer, 0) + ", CPU " + cost.cpu_id + " " +
-                          fixed(cost.cpu, 0) + ")"));
+                      "Chosen by `rigdesign select` from " + report.catalog->file + "\nCost " +
+                          fixed(cost.total, 0) + " USD (sensors " + fixed(cost.sensors, 0) +
+                          ", transfer " + cost.transfer_id + " " + fixed(cost.transfer, 0) +
+                          ", CPU " + cost.cpu_id + " " + fixed(cost.cpu, 0) + ")"));
   return rig_file;
 }
 
@@ -73,7 +72,7 @@ std::vector<std::string> write_pareto_plots(const SelectReport& report,
     const std::string path = folder + "/pareto" + extension;
     render::plot_pareto(pick.selection.search.explored, report.budget, pick.selection.cost.total,
                         pick.selection.coverage.complete.mean,
-                        report.space->catalog().name + ": rigs meeting the " +
+                        report.catalog->name + ": rigs meeting the " +
                             (pick.relaxed.empty() ? std::string("initial requirements")
                                                   : "requirements relaxed by " + pick.relaxed),
                         path);
@@ -114,13 +113,13 @@ std::optional<render::MarginCurve> pitch_margin_curve(const select::SelectionSpa
   return curve;
 }
 
-std::vector<std::string> write_margin_plots(const SelectReport& report,
+std::vector<std::string> write_margin_plots(const select::SelectionSpace& space,
                                             const select::RelaxationIteration& pick,
                                             const std::string& folder) {
   std::vector<std::string> written;
   const select::Selection& selection = pick.selection;
   for (std::size_t m = 0; m < selection.chosen.size(); ++m) {
-    const std::optional<render::MarginCurve> curve = pitch_margin_curve(*report.space, pick, m);
+    const std::optional<render::MarginCurve> curve = pitch_margin_curve(space, pick, m);
     if (!curve) continue;
     const std::string& mount = selection.rig.mounts[m].id;
     const std::string path = folder + "/margin_" + mount + "_pitch.png";
@@ -135,12 +134,13 @@ std::vector<std::string> write_margin_plots(const SelectReport& report,
 
 // The chosen rig's report page (html_report) with the selection trace as a section of its
 // own; the coverage pictures and the Pareto SVG are read back from where they were written.
-std::string selection_page(const SelectReport& report, const select::RelaxationIteration& pick,
-                           const model::Rig& rig, const std::string& coverage_folder,
-                           const std::vector<double>& angles, const std::string& pareto_svg) {
+std::string selection_page(const SelectReport& report, const model::SensorLibrary& library,
+                           const select::RelaxationIteration& pick, const model::Rig& rig,
+                           const std::string& coverage_folder, const std::vector<double>& angles,
+                           const std::string& pareto_svg) {
   RigInputs inputs;
   inputs.rig = rig;
-  inputs.library = report.space->library();
+  inputs.library = library;
   inputs.requirements = pick.requirements;
   const metrics::ResultantMetrics resultant = metrics::compute_resultant(rig, inputs.library);
   ReportContent content;
@@ -158,26 +158,27 @@ std::string selection_page(const SelectReport& report, const select::RelaxationI
 
 // The coverage pictures of the rig as written (`rig.file` its final name) and the page.
 std::vector<std::string> write_renders(const SelectReport& report,
+                                       const model::SensorLibrary& library,
                                        const select::RelaxationIteration& pick,
                                        const model::Rig& rig, const std::string& folder) {
   const std::string coverage_folder = folder + "/coverage";
   io::prepare_output_folder(coverage_folder, "--out");
   const std::vector<double> angles = {0, 45, 90, 180};
-  std::vector<std::string> written = write_coverage_files(
-      rig, report.space->library(), pick.selection.coverage, angles, coverage_folder, true);
+  std::vector<std::string> written =
+      write_coverage_files(rig, library, pick.selection.coverage, angles, coverage_folder, true);
   const std::string page = folder + "/report.html";
-  io::write_file_atomically(
-      page, selection_page(report, pick, rig, coverage_folder, angles, folder + "/pareto.svg"));
+  io::write_file_atomically(page, selection_page(report, library, pick, rig, coverage_folder,
+                                                 angles, folder + "/pareto.svg"));
   written.push_back(page);
   return written;
 }
 
 // What the chosen rig means for its ROS 2 stack, as `rigdesign export` writes it.
-std::vector<std::string> write_ros_deployment(const SelectReport& report,
+std::vector<std::string> write_ros_deployment(const model::SensorLibrary& library,
                                               const select::RelaxationIteration& pick,
                                               const model::Rig& rig, const std::string& folder) {
   const deploy::Deployment deployment =
-      deploy::plan_deployment(rig, report.space->library(), &pick.requirements, {});
+      deploy::plan_deployment(rig, library, &pick.requirements, {});
   return io::write_deployment(folder + "/deploy", rig, deployment,
                               deployment_header(rig, &pick.requirements));
 }
@@ -189,18 +190,19 @@ void append(std::vector<std::string>& to, const std::vector<std::string>& more) 
 }  // namespace
 
 std::vector<std::string> write_selection_files(const SelectReport& report,
+                                               const select::SelectionSpace& space,
                                                const io::StagedFolder& staged, bool renders) {
   const select::RelaxationIteration* pick = chosen_iteration(*report.outcome);
   if (pick == nullptr) return {};
   const std::string& folder = staged.path();
-  const std::string rig_file = write_chosen_rig(report, pick->selection, folder);
+  const std::string rig_file = write_chosen_rig(report, space.library(), pick->selection, folder);
   std::vector<std::string> written = {rig_file, write_final_requirements(report, *pick, folder)};
   append(written, write_pareto_plots(report, *pick, folder));
-  append(written, write_margin_plots(report, *pick, folder));
+  append(written, write_margin_plots(space, *pick, folder));
   model::Rig rig = pick->selection.rig;
   rig.file = staged.final_name(rig_file);
-  if (renders) append(written, write_renders(report, *pick, rig, folder));
-  append(written, write_ros_deployment(report, *pick, rig, folder));
+  if (renders) append(written, write_renders(report, space.library(), *pick, rig, folder));
+  append(written, write_ros_deployment(space.library(), *pick, rig, folder));
   return written;
 }
 

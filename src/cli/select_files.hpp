@@ -16,8 +16,9 @@ namespace rigdesign::cli {
 /// slot whose range varies the pitch, with `renders` the coverage pictures and report.html,
 /// and deploy/ into the staging folder; returns their paths there in that order
 /// (staged.final_names gives where they end up). Writes nothing when no step found a rig.
-/// Needs `report.outcome`.
+/// Needs `report.outcome`; `space` is the one searched (the margin plots sweep in it).
 std::vector<std::string> write_selection_files(const SelectReport& report,
+                                               const select::SelectionSpace& space,
                                                const io::StagedFolder& staged, bool renders);
 
 }  // namespace rigdesign::cli

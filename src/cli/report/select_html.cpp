@@ -12,7 +12,7 @@ namespace {
 // What each relaxation step asked and what the cheapest rig then cost.
 void trace_table(const SelectReport& report, std::ostringstream& html) {
   const model::RelaxationPolicy& policy = *report.policy;
-  html << "<p>Catalog " << model::xml_escaped(report.space->catalog().file) << ", budget "
+  html << "<p>Catalog " << model::xml_escaped(report.catalog->file) << ", budget "
        << usd(report.budget) << ", policy "
        << model::xml_escaped(policy.file.empty() ? std::string("none") : policy.file)
        << ".</p>\n<table><tr><th>#</th><th class=\"text\">relaxed</th><th class=\"text\">"
@@ -50,8 +50,7 @@ std::string selection_trace_html(const SelectReport& report,
   std::ostringstream html;
   trace_table(report, html);
   chosen_cost_table(pick.selection.cost, html);
-  html << "<p>" << model::xml_escaped(describe(pick.selection, report.space->catalog()))
-       << "</p>\n";
+  html << "<p>" << model::xml_escaped(describe(pick.selection, *report.catalog)) << "</p>\n";
   html << "<figure id=\"pareto\">" << inline_svg(pareto_svg, "pareto-")
        << "<figcaption>Cost against mean coverage of the rigs meeting the requirements of the "
           "chosen step.</figcaption></figure>\n";

@@ -80,7 +80,7 @@ json to_json(const SelectReport& report) {
   const select::RelaxationOutcome& outcome = *report.outcome;
   json iterations = json::array();
   for (const select::RelaxationIteration& it : outcome.iterations)
-    iterations.push_back(iteration_json(it, report.space->catalog()));
+    iterations.push_back(iteration_json(it, *report.catalog));
   json binding = json::array();
   for (const select::BindingRequirement& item : outcome.binding) {
     binding.push_back({{"requirement", item.requirement}, {"cost_without", item.cost_without}});

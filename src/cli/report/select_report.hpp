@@ -3,6 +3,7 @@
 // with, the relaxation loop's outcome and the files written. select_text, select_json and
 // select_html render it; the phrases below name a requirement set, a rig and a pose
 // refinement the same way in every format.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -11,7 +12,8 @@
 namespace rigdesign::cli {
 
 struct SelectReport {
-  const select::SelectionSpace* space = nullptr;       ///< the catalog and its sensor library
+  const model::Catalog* catalog = nullptr;
+  std::size_t option_count = 0;                        ///< slot options the search chose from
   const model::Requirements* requirements = nullptr;   ///< as given, before any relaxation
   const model::RelaxationPolicy* policy = nullptr;     ///< no steps: none given
   double budget = 0.0;                                 ///< [USD]

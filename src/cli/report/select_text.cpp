@@ -19,7 +19,7 @@ void print_found_rig(const SelectReport& report, const select::RelaxationIterati
       << " (" << selection.cost.transfer_id << ") + CPU " << fixed(selection.cost.cpu, 0) << " ("
       << selection.cost.cpu_id << ")  "
       << (iteration.within_budget ? "WITHIN BUDGET" : "over budget") << '\n';
-  out << "      " << describe(selection, report.space->catalog()) << '\n';
+  out << "      " << describe(selection, *report.catalog) << '\n';
   for (const select::FailureImpact& failure : selection.failures) {
     out << "      survives: " << failure.failure << " (every sector still met on the exact path)\n";
   }
@@ -81,7 +81,7 @@ void print_trace_table(const select::RelaxationOutcome& outcome, std::ostream& o
 void print_chosen(const SelectReport& report, const select::RelaxationIteration& pick,
                   std::ostream& out) {
   out << "\nChosen rig (" << usd(pick.selection.cost.total) << " <= budget " << usd(report.budget)
-      << "): " << describe(pick.selection, report.space->catalog()) << '\n';
+      << "): " << describe(pick.selection, *report.catalog) << '\n';
   if (pick.selection.refinement.accepted)
     out << "  refined poses: " << describe(pick.selection.refinement) << '\n';
   const metrics::RigCoverage& coverage = pick.selection.coverage;
@@ -95,7 +95,7 @@ void print_exhausted(const SelectReport& report, const select::RelaxationIterati
   out << "\nThe policy is exhausted: no rig within " << usd(report.budget) << ".\n";
   if (cheapest != nullptr) {
     out << "Cheapest rig found (" << usd(cheapest->selection.cost.total)
-        << "): " << describe(cheapest->selection, report.space->catalog()) << '\n';
+        << "): " << describe(cheapest->selection, *report.catalog) << '\n';
   }
   out << "Binding requirements:\n";
   if (report.outcome->binding.empty())
@@ -109,11 +109,11 @@ void print_exhausted(const SelectReport& report, const select::RelaxationIterati
 }  // namespace
 
 void print_select_header(const SelectReport& report, std::ostream& out) {
-  const model::Catalog& catalog = report.space->catalog();
+  const model::Catalog& catalog = *report.catalog;
   const model::RelaxationPolicy& policy = *report.policy;
   out << "Catalog: " << catalog.name << " (" << catalog.file << "): " << catalog.slots.size()
-      << " slots, " << catalog.sensors.size() << " candidate sensors, "
-      << report.space->option_count() << " slot options\n";
+      << " slots, " << catalog.sensors.size() << " candidate sensors, " << report.option_count
+      << " slot options\n";
   out << "Requirements: " << report.requirements->name << " (" << report.requirements->file
       << ")\n";
   out << "Budget: " << usd(report.budget) << "; relaxation policy: "
