@@ -28,7 +28,7 @@
 namespace rigdesign::cli {
 namespace {
 
-constexpr int kPitch = 4;  // model::kPoseAxisNames
+constexpr int kPitch = 4;  // "pitch" in model::kPoseAxisNames
 constexpr int kMarginSamples = 41;
 
 // The rig file names its sensor library relative to itself and the requirements beside it.
