@@ -8,7 +8,11 @@
 
 #include "app.hpp"
 #include "command.hpp"
-#include "file_report.hpp"
+#include "report/check_github.hpp"
+#include "report/check_json.hpp"
+#include "report/check_junit.hpp"
+#include "report/check_text.hpp"
+#include "report/file_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 
 namespace rigdesign::cli {

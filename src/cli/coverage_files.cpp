@@ -3,10 +3,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "json_report.hpp"
+#include "report/json_report.hpp"
 #include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/coverage_plots.hpp"
@@ -108,6 +109,28 @@ void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,
   settings.viewpoint = viewpoint;
   settings.extent = 0.0;  // fit the FOV volumes, which reach past d from off-centre mounts
   render::render_view_3d(meshes, settings, overlay, path);
+}
+
+std::vector<ReportFigure> coverage_figures(const std::string& folder,
+                                           const std::vector<double>& angles_deg) {
+  std::vector<ReportFigure> figures;
+  const auto add = [&](const std::string& id, const std::string& file, const std::string& caption) {
+    figures.push_back({id, caption, io::read_file_bytes(folder + "/" + file, "an SVG picture")});
+  };
+  add("sc-cartesian", "sc_cartesian.svg",
+      "Spatial Coverage at every azimuth: SC complete and floor, requirement sectors shaded, "
+      "and per sensor the angles where it sees the cross-section.");
+  add("sc-polar", "sc_polar.svg", "The same seen from above, forward up.");
+  for (const double degrees : angles_deg) {
+    const std::string name = model::format_number(degrees);
+    add("section-" + name, "section_" + name + ".svg",
+        "Cross-section at theta = " + name +
+            " deg: each sensor's region, the body, the floor seen.");
+  }
+  add("view-isometric", "view_isometric.svg",
+      "What each sensor sees to d, cut where the body blocks it (isometric).");
+  add("view-top", "view_top.svg", "The same from above.");
+  return figures;
 }
 
 }  // namespace rigdesign::cli

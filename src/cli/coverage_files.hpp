@@ -1,9 +1,11 @@
 #pragma once
-// Files the coverage subcommand writes besides the charts: the CSV table and the 3D views.
+// Files the coverage subcommand writes besides the charts: the CSV table and the 3D views;
+// `report` and `select` read the pictures back for their pages.
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "report/html_report.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/render/view_3d.hpp"
 
@@ -24,6 +26,11 @@ std::vector<std::string> write_coverage_files(const model::Rig& rig,
                                               const metrics::RigCoverage& coverage,
                                               const std::vector<double>& angles_deg,
                                               const std::string& folder, bool with_3d);
+
+/// The coverage pictures write_coverage_files put in `folder` (sections at `angles_deg`), read
+/// back for the page, with their captions.
+std::vector<ReportFigure> coverage_figures(const std::string& folder,
+                                           const std::vector<double>& angles_deg);
 
 /// The body and every mount's FOV volume truncated at the rig's d, one colour per mount.
 void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,

@@ -8,9 +8,9 @@
 
 #include "app.hpp"
 #include "command.hpp"
-#include "deployment_report.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
+#include "report/deployment_report.hpp"
 #include "rigdesign/deploy/deployment.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
 

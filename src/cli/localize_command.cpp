@@ -11,8 +11,12 @@
 
 #include "app.hpp"
 #include "command.hpp"
-#include "localize_report.hpp"
+#include "localize_options.hpp"
 #include "number_checks.hpp"
+#include "progress_line.hpp"
+#include "report/localize_json.hpp"
+#include "report/localize_report.hpp"
+#include "report/localize_text.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/logs/co2_log_reader.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
@@ -20,6 +24,7 @@
 #include "rigdesign/io/logs/rssi_csv.hpp"
 #include "rigdesign/io/logs/walls_csv.hpp"
 #include "rigdesign/io/output_folder.hpp"
+#include "rigdesign/localize/accuracy_table.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/render/localize_plot.hpp"
@@ -28,16 +33,38 @@
 namespace rigdesign::cli {
 namespace {
 
-void write_plots(const std::string& folder, const std::string& stem,
-                 const render::LocalizePlot& plot, nlohmann::json* report, std::ostream& out,
-                 bool json) {
+// The methods asked for: nls for one run, every method for --table, or --method.
+std::vector<localize::LocalizeMethod> methods_of(const LocalizeOptions& options) {
+  if (options.method.empty() && !options.table) return {localize::LocalizeMethod::nls};
+  const auto method = localize::parse_localize_method(options.method);
+  require_option(method.has_value() || options.method == "all" || options.method.empty(),
+                 "--method", "unknown method '" + options.method + "'", "wls, nls, map (or all)");
+  if (method) return {*method};
+  return {localize::LocalizeMethod::wls, localize::LocalizeMethod::nls,
+          localize::LocalizeMethod::map};
+}
+
+// The plot as PNG and SVG; returns the files.
+std::vector<std::string> write_plots(const std::string& folder, const std::string& stem,
+                                     const render::LocalizePlot& plot) {
   io::prepare_output_folder(folder, "--out");
+  std::vector<std::string> written;
   for (const char* extension : {".png", ".svg"}) {
     const std::string file = folder + "/" + stem + extension;
     render::plot_localization(plot, file);
-    (*report)["plots"].push_back(file);
-    if (!json) out << "  wrote " << file << '\n';
+    written.push_back(file);
   }
+  return written;
+}
+
+// The scenario's log, truth and walls as files `localize --log` and `--walls` read back.
+void write_scenario_files(const localize::Scenario& scenario, const std::string& folder,
+                          const std::string& stem) {
+  io::prepare_output_folder(folder, "--out");
+  io::write_file_atomically(folder + "/" + stem + "_rssi.csv", io::to_rssi_csv(scenario.log));
+  io::write_file_atomically(folder + "/" + stem + "_truth.csv",
+                            io::to_emitter_truth_csv(scenario.truth));
+  io::write_file_atomically(folder + "/" + stem + "_walls.csv", io::to_walls_csv(scenario.walls));
 }
 
 // One emitter: estimate, uncertainty, degeneracy, and KPIs when the truth is known.
@@ -45,78 +72,122 @@ int run_scenario(const LocalizeOptions& options, std::ostream& out) {
   localize::ScenarioParams params = options.scenario_params;
   params.seed = options.seed;
   const localize::Scenario scenario = localize::make_scenario(options.scenario, params);
-  nlohmann::json report = {
-      {"scenario", scenario.name},           {"seed", options.seed},
-      {"description", scenario.description}, {"readings", scenario.log.readings.size()},
-      {"emitters", nlohmann::json::array()}, {"plots", nlohmann::json::array()}};
-  if (!options.json) {
-    out << "scenario " << scenario.name << ", seed " << options.seed << ": " << scenario.description
-        << "; " << scenario.log.readings.size() << " readings\n";
-  }
+  ScenarioReport report{&scenario, options.seed, {}, {}};
   render::LocalizePlot plot =
       render::rssi_plot(scenario.log, "localize: scenario " + scenario.name + ", seed " +
                                           std::to_string(options.seed));
   render::add_walls(scenario.walls, plot);
   for (const localize::LocalizeMethod method : methods_of(options)) {
-    report["emitters"].push_back(report_emitter(
-        scenario.log, 0, method, scenario.truth.front().position, options, &plot, out));
+    report.emitters.push_back(locate_emitter(
+        scenario.log, 0, method, scenario.truth.front().position, options.params, options.kpi));
+    render::add_estimate_markers(report.emitters.back().estimate, report.emitters.back().truth,
+                                 plot);
   }
+  if (!options.json) print_scenario(report, options, out);
   if (!options.out.empty()) {
     const std::string stem = scenario.name + "_seed" + std::to_string(options.seed);
-    io::prepare_output_folder(options.out, "--out");
-    io::write_file_atomically(options.out + "/" + stem + "_rssi.csv",
-                              io::to_rssi_csv(scenario.log));
-    io::write_file_atomically(options.out + "/" + stem + "_truth.csv",
-                              io::to_emitter_truth_csv(scenario.truth));
-    io::write_file_atomically(options.out + "/" + stem + "_walls.csv",
-                              io::to_walls_csv(scenario.walls));
+    write_scenario_files(scenario, options.out, stem);
     if (!options.json)
       out << "  wrote " << options.out + "/" + stem + "_rssi.csv, _truth.csv and _walls.csv\n";
-    write_plots(options.out, stem, plot, &report, out, options.json);
+    report.plots = write_plots(options.out, stem, plot);
+    if (!options.json) print_written(report.plots, out);
   }
-  if (options.json) out << report.dump(2) << '\n';
+  if (options.json) out << to_json(report).dump(2) << '\n';
   return kOk;
+}
+
+// An RSSI log: every emitter by every method asked for, with the truth of those --truth names.
+LogReport locate_in_log(const localize::RssiLog& log, const std::string& path,
+                        const std::vector<localize::EmitterTruth>& truth,
+                        const std::vector<localize::LocalizeMethod>& methods,
+                        const LocalizeOptions& options, render::LocalizePlot& plot) {
+  LogReport report{path, log.readings.size(), log.emitters.size(), {}, std::nullopt};
+  for (std::size_t e = 0; e < log.emitters.size(); ++e) {
+    std::optional<model::Vec3> known;
+    for (const localize::EmitterTruth& t : truth) {
+      if (t.bssid == log.emitters[e]) known = t.position;
+    }
+    for (const localize::LocalizeMethod method : methods) {
+      report.emitters.push_back(
+          locate_emitter(log, static_cast<int>(e), method, known, options.params, options.kpi));
+      render::add_estimate_markers(report.emitters.back().estimate, known, plot);
+    }
+  }
+  return report;
+}
+
+// A CO2 log: detections of both thresholds, scored against --gas-truth when given.
+LogReport detect_in_log(const localize::Co2Log& log, const LocalizeOptions& options,
+                        render::LocalizePlot& plot) {
+  std::vector<localize::Artifact> artifacts;
+  if (!options.gas_truth.empty()) artifacts = io::read_artifacts(options.gas_truth);
+  LogReport report{
+      log.source, log.readings.size(), 0, {}, detect_gas_sources(log, artifacts, options.gas)};
+  for (const GasModeReport& mode : report.gas->modes) {
+    if (mode.mode == localize::GasThreshold::relative)
+      render::add_detection_markers(mode.detections, plot);
+  }
+  render::add_gas_artifact_markers(artifacts, plot);
+  return report;
 }
 
 int run_logs(const LocalizeOptions& options, std::ostream& out) {
   std::vector<localize::EmitterTruth> truth;
   if (!options.truth.empty()) truth = io::read_emitter_truth(options.truth);
   const std::vector<localize::LocalizeMethod> methods = methods_of(options);
-  nlohmann::json report = {{"logs", nlohmann::json::array()}, {"plots", nlohmann::json::array()}};
+  LogsReport report;
   for (const std::string& path : options.logs) {
     const std::string text = io::read_log_text(path);
     const std::string title = "localize: " + std::filesystem::path(path).filename().string();
     render::LocalizePlot plot;
-    nlohmann::json item;
     if (io::log_kind_of(text, path) == io::LogKind::co2) {
       const localize::Co2Log log = io::parse_co2_log(text, path);
       plot = render::co2_plot(log, title);
-      item = report_gas(log, options, &plot, out);
+      report.logs.push_back(detect_in_log(log, options, plot));
     } else {
       const localize::RssiLog log = io::parse_rssi_csv(text, path);
       plot = render::rssi_plot(log, title);
-      item = {
-          {"file", path}, {"readings", log.readings.size()}, {"emitters", nlohmann::json::array()}};
-      if (!options.json)
-        out << path << ": " << log.readings.size() << " readings of " << log.emitters.size()
-            << " emitter(s)\n";
-      for (std::size_t e = 0; e < log.emitters.size(); ++e) {
-        std::optional<model::Vec3> known;
-        for (const localize::EmitterTruth& t : truth) {
-          if (t.bssid == log.emitters[e]) known = t.position;
-        }
-        for (const localize::LocalizeMethod method : methods) {
-          item["emitters"].push_back(
-              report_emitter(log, static_cast<int>(e), method, known, options, &plot, out));
-        }
-      }
+      report.logs.push_back(locate_in_log(log, path, truth, methods, options, plot));
     }
-    if (!options.out.empty())
-      write_plots(options.out, std::filesystem::path(path).stem().string(), plot, &report, out,
-                  options.json);
-    report["logs"].push_back(item);
+    if (!options.json) print_log(report.logs.back(), options, out);
+    if (!options.out.empty()) {
+      const std::vector<std::string> plots =
+          write_plots(options.out, std::filesystem::path(path).stem().string(), plot);
+      report.plots.insert(report.plots.end(), plots.begin(), plots.end());
+      if (!options.json) print_written(plots, out);
+    }
   }
-  if (options.json) out << report.dump(2) << '\n';
+  if (options.json) out << to_json(report).dump(2) << '\n';
+  return kOk;
+}
+
+// The accuracy table over seeds (--table), every scenario for --scenario all.
+int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& err) {
+  require_option(options.seeds >= 1 && options.seeds <= 10000, "--seeds", "is out of range",
+                 "1 to 10000");
+  std::vector<std::string> scenarios = {options.scenario};
+  if (options.scenario == "all") scenarios = localize::scenario_names();
+  const std::vector<localize::LocalizeMethod> methods = methods_of(options);
+  std::vector<localize::AccuracyRow> rows;
+  ProgressLine progress(err, "localize: accuracy table", "runs");
+  const double runs = static_cast<double>(scenarios.size()) * options.seeds;
+  double done_before = 0.0;
+  for (const std::string& scenario : scenarios) {
+    const auto on_seed = [&](double seeds_done, double) {
+      progress.update(done_before + seeds_done, runs);
+    };
+    const std::vector<localize::AccuracyRow> scenario_rows =
+        localize::accuracy_table(scenario, options.seeds, options.scenario_params, methods,
+                                 options.params, options.kpi, on_seed);
+    rows.insert(rows.end(), scenario_rows.begin(), scenario_rows.end());
+    done_before += options.seeds;
+  }
+  progress.clear();  // the table follows on standard output
+  if (options.json) {
+    out << accuracy_json(rows, options).dump(2) << '\n';
+  } else {
+    print_accuracy(rows, options, out);
+  }
   return kOk;
 }
 
@@ -157,6 +228,78 @@ int run_resolved(const LocalizeOptions& options, std::ostream& out, std::ostream
   return run_logs(options, out);
 }
 
+// The path-loss model and the range fit's priors, floor, scan period and walls.
+void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
+  app->add_option("--rssi-at-1m", options.params.path_loss.rssi_at_1m_dbm,
+                  "Assumed RSSI at 1 m [dBm] (default -45)")
+      ->check(finite_in(-120, 30, "a level in [-120, 30] dBm"));
+  app->add_option("--exponent", options.params.path_loss.exponent,
+                  "Assumed path-loss exponent (default 2.5)")
+      ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"));
+  app->add_option("--cutoff", options.params.path_loss.cutoff_dbm,
+                  "Drop readings below this [dBm] (default -80)")
+      ->check(finite_in(-150, 0, "a level in [-150, 0] dBm"));
+  app->add_option("--level-prior", options.params.fit.level_prior_db,
+                  "nls: prior sd of the 1 m level about --rssi-at-1m [dB]")
+      ->capture_default_str()
+      ->check(positive_up_to(100.0, "a sd in (0, 100] dB"));
+  app->add_option("--exponent-prior", options.params.fit.exponent_prior,
+                  "nls: prior sd of the exponent about --exponent (0: fixed)")
+      ->capture_default_str()
+      ->check(finite_in(0, 10, "0 or a sd in (0, 10]"));
+  app->add_option("--path-prior", options.params.fit.path_prior_scale,
+                  "nls: prior on the position falling as exp(-distance from the path / M) "
+                  "(0: uniform over the search box) [m]")
+      ->capture_default_str()
+      ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"));
+  app->add_flag("!--no-correlation", options.params.fit.correlated_shadowing,
+                "nls: treat scans as independent (no tempering for correlated shadowing)");
+  app->add_option("--floor", options.floor_dbm,
+                  "Receiver floor [dBm]: unheard scans are below it (default: the log's "
+                  "'# floor_dbm:', else its weakest reading)")
+      ->check(finite_in(-200, 0, "a level in [-200, 0] dBm"));
+  app->add_option("--scan-period", options.scan_period_s,
+                  "Seconds between scans (default: the log's '# scan_period_s:', else its median "
+                  "step)")
+      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
+  app->add_option("--walls", options.walls,
+                  "Wall map CSV (x1,y1,x2,y2,attenuation_db) the range fit models");
+  app->add_option("--prefer-side", options.prefer_side,
+                  "List ambiguous hypotheses on this side of the path first: left or right");
+}
+
+// The KPIs, the synthetic scenarios' radio and the CO2 detection.
+void add_kpi_scenario_and_gas_options(CLI::App* app, LocalizeOptions& options) {
+  app->add_option("--checkpoints", options.kpi.checkpoints,
+                  "Running-estimate checkpoints per log for the KPIs (0: final estimate only)")
+      ->capture_default_str()
+      ->check(finite_in(0, 1000, "0 to 1000 checkpoints"));
+  app->add_option("--acceptable-error", options.kpi.acceptable_error,
+                  "Error counted as a detection, for C [m] (default 5)")
+      ->check(positive_up_to(1000.0, "a distance in (0, 1000] m"));
+  app->add_option("--shadowing", options.scenario_params.shadowing_db,
+                  "Scenario shadowing sigma [dB] (default 6)")
+      ->check(finite_in(0, 30, "a sigma in [0, 30] dB"));
+  app->add_option("--tx-offset", options.scenario_params.tx_offset_db,
+                  "Scenario phone level minus the assumed one [dB]")
+      ->check(finite_in(-60, 60, "an offset in [-60, 60] dB"));
+  app->add_option("--wall-loss", options.scenario_params.wall_attenuation_db,
+                  "Scenario loss per wall [dB] (default 8)")
+      ->check(finite_in(0, 60, "a loss in [0, 60] dB"));
+  app->add_option("--time-constant", options.gas.time_constant,
+                  "CO2 sensor time constant for the lag correction [s]")
+      ->check(finite_in(0, 3600, "a time constant in [0, 3600] s"));
+  app->add_option("--sample-period", options.gas.sample_period,
+                  "Seconds per reading of an untimed CO2 log (default 1)")
+      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
+  app->add_option("--threshold", options.gas.fixed_threshold_ppm,
+                  "Fixed CO2 threshold [ppm] (default 1800)")
+      ->check(positive_up_to(1e6, "a concentration in (0, 1e6] ppm"));
+  app->add_option("--mad-factor", options.gas.mad_factor,
+                  "k of the relative CO2 threshold median + k MAD (default 6)")
+      ->check(positive_up_to(1000.0, "a factor in (0, 1000]"));
+}
+
 }  // namespace
 
 Command setup_localize(CLI::App& parent) {
@@ -176,70 +319,8 @@ Command setup_localize(CLI::App& parent) {
   app->add_option("--truth", options->truth, "Emitter ground truth CSV (bssid,x,y,z) for the KPIs");
   app->add_option("--gas-truth", options->gas_truth,
                   "SubT ground-truth JSON (gt_*.json) to score gas detections");
-  app->add_option("--rssi-at-1m", options->params.path_loss.rssi_at_1m_dbm,
-                  "Assumed RSSI at 1 m [dBm] (default -45)")
-      ->check(finite_in(-120, 30, "a level in [-120, 30] dBm"));
-  app->add_option("--exponent", options->params.path_loss.exponent,
-                  "Assumed path-loss exponent (default 2.5)")
-      ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"));
-  app->add_option("--cutoff", options->params.path_loss.cutoff_dbm,
-                  "Drop readings below this [dBm] (default -80)")
-      ->check(finite_in(-150, 0, "a level in [-150, 0] dBm"));
-  app->add_option("--level-prior", options->params.fit.level_prior_db,
-                  "nls: prior sd of the 1 m level about --rssi-at-1m [dB]")
-      ->capture_default_str()
-      ->check(positive_up_to(100.0, "a sd in (0, 100] dB"));
-  app->add_option("--exponent-prior", options->params.fit.exponent_prior,
-                  "nls: prior sd of the exponent about --exponent (0: fixed)")
-      ->capture_default_str()
-      ->check(finite_in(0, 10, "0 or a sd in (0, 10]"));
-  app->add_option("--path-prior", options->params.fit.path_prior_scale,
-                  "nls: prior on the position falling as exp(-distance from the path / M) "
-                  "(0: uniform over the search box) [m]")
-      ->capture_default_str()
-      ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"));
-  app->add_flag("!--no-correlation", options->params.fit.correlated_shadowing,
-                "nls: treat scans as independent (no tempering for correlated shadowing)");
-  app->add_option("--floor", options->floor_dbm,
-                  "Receiver floor [dBm]: unheard scans are below it (default: the log's "
-                  "'# floor_dbm:', else its weakest reading)")
-      ->check(finite_in(-200, 0, "a level in [-200, 0] dBm"));
-  app->add_option("--scan-period", options->scan_period_s,
-                  "Seconds between scans (default: the log's '# scan_period_s:', else its median "
-                  "step)")
-      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
-  app->add_option("--walls", options->walls,
-                  "Wall map CSV (x1,y1,x2,y2,attenuation_db) the range fit models");
-  app->add_option("--prefer-side", options->prefer_side,
-                  "List ambiguous hypotheses on this side of the path first: left or right");
-  app->add_option("--checkpoints", options->kpi.checkpoints,
-                  "Running-estimate checkpoints per log for the KPIs (0: final estimate only)")
-      ->capture_default_str()
-      ->check(finite_in(0, 1000, "0 to 1000 checkpoints"));
-  app->add_option("--acceptable-error", options->kpi.acceptable_error,
-                  "Error counted as a detection, for C [m] (default 5)")
-      ->check(positive_up_to(1000.0, "a distance in (0, 1000] m"));
-  app->add_option("--shadowing", options->scenario_params.shadowing_db,
-                  "Scenario shadowing sigma [dB] (default 6)")
-      ->check(finite_in(0, 30, "a sigma in [0, 30] dB"));
-  app->add_option("--tx-offset", options->scenario_params.tx_offset_db,
-                  "Scenario phone level minus the assumed one [dB]")
-      ->check(finite_in(-60, 60, "an offset in [-60, 60] dB"));
-  app->add_option("--wall-loss", options->scenario_params.wall_attenuation_db,
-                  "Scenario loss per wall [dB] (default 8)")
-      ->check(finite_in(0, 60, "a loss in [0, 60] dB"));
-  app->add_option("--time-constant", options->gas.time_constant,
-                  "CO2 sensor time constant for the lag correction [s]")
-      ->check(finite_in(0, 3600, "a time constant in [0, 3600] s"));
-  app->add_option("--sample-period", options->gas.sample_period,
-                  "Seconds per reading of an untimed CO2 log (default 1)")
-      ->check(positive_up_to(3600.0, "a period in (0, 3600] s"));
-  app->add_option("--threshold", options->gas.fixed_threshold_ppm,
-                  "Fixed CO2 threshold [ppm] (default 1800)")
-      ->check(positive_up_to(1e6, "a concentration in (0, 1e6] ppm"));
-  app->add_option("--mad-factor", options->gas.mad_factor,
-                  "k of the relative CO2 threshold median + k MAD (default 6)")
-      ->check(positive_up_to(1000.0, "a factor in (0, 1000]"));
+  add_range_fit_options(app, *options);
+  add_kpi_scenario_and_gas_options(app, *options);
   app->add_flag("--json", options->json, "Print JSON");
   app->add_option("--out", options->out,
                   "Write plots (PNG and SVG) and, for a scenario, its log and truth here");

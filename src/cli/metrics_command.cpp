@@ -10,7 +10,7 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
-#include "json_report.hpp"
+#include "report/json_report.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/coverage_findings.hpp"

@@ -17,13 +17,17 @@
 #include "inputs.hpp"
 #include "number_checks.hpp"
 #include "progress_line.hpp"
+#include "report/select_json.hpp"
+#include "report/select_report.hpp"
+#include "report/select_text.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/units.hpp"
 #include "rigdesign/select/relaxation.hpp"
-#include "select_report.hpp"
+#include "select_files.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -69,10 +73,9 @@ model::RobustnessRequirement robustness_option(const std::vector<std::string>& v
   return robust;
 }
 
-int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
-  const model::Catalog catalog = io::load_catalog(options.catalog);
-  const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
-  io::check_catalog_references(catalog, library).throw_if_errors();
+// The requirements with --robust applied; n-1 needs a second slot to fall back on.
+model::Requirements load_select_requirements(const SelectOptions& options,
+                                             const model::Catalog& catalog) {
   model::Requirements requirements = io::load_requirements(options.requirements);
   if (!options.robust.empty())
     requirements.robustness = robustness_option(options.robust, requirements);
@@ -82,6 +85,29 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
                        " slot: a rig of one sensor cannot survive its failure",
                    "a catalog with at least two slots");
   }
+  return requirements;
+}
+
+// The catalog's slot options, refused when their rasters at --step would outgrow memory.
+// 303 options x 360 angles took 496 MB on the bundled robot (README, selection search).
+double checked_option_count(const SelectOptions& options, const model::Catalog& catalog) {
+  const double options_total = static_cast<double>(select::count_catalog_options(catalog));
+  const double option_angles = options_total * std::ceil(360.0 / options.step_deg);
+  require_option(option_angles <= kMaxOptionAngles, "--catalog",
+                 options.catalog + " has " + model::format_number(options_total) +
+                     " slot options: at " + model::format_number(options.step_deg) +
+                     " deg that is " + model::format_number(option_angles, 3) +
+                     " rasterised option-angles (about " +
+                     model::format_number(option_angles * kBytesPerOptionAngle / 1e9, 2) + " GB)",
+                 "at most 1e6 option-angles: fewer pose values or a coarser --step");
+  return options_total;
+}
+
+int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
+  const model::Catalog catalog = io::load_catalog(options.catalog);
+  const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
+  io::check_catalog_references(catalog, library).throw_if_errors();
+  const model::Requirements requirements = load_select_requirements(options, catalog);
   model::RelaxationPolicy policy;
   if (!options.policy.empty()) {
     policy = io::load_policy(options.policy);
@@ -93,21 +119,11 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
                           : options.out;
   // Checked before the search, not after it; filled only when the run completes.
   io::StagedFolder staged(folder, "--out");
-
   // Every option is rasterised at every angle before the search: bounded before that work.
-  // 303 options x 360 angles took 496 MB on the bundled robot (README, selection search).
-  const double options_total = static_cast<double>(select::count_catalog_options(catalog));
-  const double option_angles = options_total * std::ceil(360.0 / options.step_deg);
-  require_option(option_angles <= kMaxOptionAngles, "--catalog",
-                 options.catalog + " has " + model::format_number(options_total) +
-                     " slot options: at " + model::format_number(options.step_deg) +
-                     " deg that is " + model::format_number(option_angles, 3) +
-                     " rasterised option-angles (about " +
-                     model::format_number(option_angles * kBytesPerOptionAngle / 1e9, 2) + " GB)",
-                 "at most 1e6 option-angles: fewer pose values or a coarser --step");
+  const double options_total = checked_option_count(options, catalog);
 
   metrics::CoverageSettings settings;
-  settings.step = options.step_deg * 3.141592653589793 / 180.0;
+  settings.step = model::deg_to_rad(options.step_deg);
   ProgressLine progress(
       err, "select: rasterising " + model::format_number(options_total) + " slot options", "");
   progress.update_share(0.0, "at " + model::format_number(options.step_deg) + " deg steps");
@@ -119,8 +135,10 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   const auto on_search = [&](const select::SearchProgress& at) {
     progress.update_share(at.fraction, std::to_string(at.nodes) + " nodes, share of the tree");
   };
-  SelectReport report(space, requirements, policy, options.budget);
-  if (!options.json) report.print_header(out);
+  SelectReport report{
+      &catalog, space.option_count(), &requirements, &policy, options.budget, nullptr, {}};
+  std::size_t step = 0;  // the relaxation steps shown
+  if (!options.json) print_select_header(report, out);
   const select::RelaxationOutcome outcome = select::select_within_budget(
       space, requirements, policy, options.budget,
       [&](const select::RelaxationIteration& iteration) {
@@ -128,17 +146,19 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
         progress.retitle("select: search " + std::to_string(search) + " of at most " +
                          std::to_string(searches));
         progress.clear();
-        if (!options.json) report.print_iteration(iteration, out);
+        // Each step is shown as its search ends, so a long loop shows its progress.
+        if (!options.json) print_select_iteration(report, step++, iteration, out);
       },
       on_search);
   progress.clear();
-  const std::vector<std::string> written =
-      staged.final_names(report.write_files(outcome, staged, !options.no_renders));
+  report.outcome = &outcome;
+  report.files =
+      staged.final_names(write_selection_files(report, space, staged, !options.no_renders));
   staged.commit();
   if (options.json) {
-    out << report.to_json(outcome, written).dump(2) << '\n';
+    out << to_json(report).dump(2) << '\n';
   } else {
-    report.print_summary(outcome, written, out);
+    print_select_summary(report, out);
   }
   return outcome.within_budget ? kOk : kRequirementFails;
 }

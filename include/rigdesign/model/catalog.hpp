@@ -30,9 +30,14 @@ struct SlotPose {
   std::array<double, 6> values{};
 };
 
+/// The names of a pose's six axes, indexed as PoseAxisRange::axis and SlotPose::values, as
+/// pose-range labels and `select`'s reports spell them.
+inline constexpr std::array<const char*, 6> kPoseAxisNames = {"x",    "y",     "z",
+                                                              "roll", "pitch", "yaw"};
+
 /// One axis a slot's pose range varies (issue 15), SI: low, low + step, ..., high.
 struct PoseAxisRange {
-  int axis = 0;  ///< 0-2: x, y, z; 3-5: roll, pitch, yaw
+  int axis = 0;  ///< 0-2: x, y, z; 3-5: roll, pitch, yaw (kPoseAxisNames)
   double low = 0.0;
   double high = 0.0;
   double step = 0.0;

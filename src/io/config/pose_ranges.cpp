@@ -3,6 +3,7 @@
 #include <string>
 
 #include "io/config/placement_fields.hpp"
+#include "rigdesign/model/catalog.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
@@ -11,7 +12,6 @@ namespace rigdesign::io {
 namespace {
 
 constexpr const char* kRange = "a number, or a range {min: a, max: b, step: s} with s > 0 dividing b - a";
-const char* const kAxisNames[6] = {"x", "y", "z", "roll", "pitch", "yaw"};
 
 struct Axis {
   std::vector<double> values;  // in the file's unit (m or deg)
@@ -138,7 +138,7 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
     for (int i = 0; i < 6; ++i) {
       v[i] = axes[i].values[index[i]];
       if (axes[i].varies) {
-        label += (label.empty() ? "" : ", ") + std::string(kAxisNames[i]) + " " +
+        label += (label.empty() ? "" : ", ") + std::string(model::kPoseAxisNames[i]) + " " +
                  model::format_number(v[i], 6) + (i < 3 ? " m" : " deg");
       }
     }

@@ -1,6 +1,8 @@
-#include "json_report.hpp"
+#include "report/json_report.hpp"
 
 #include <nlohmann/json.hpp>
+
+#include "rigdesign/model/units.hpp"
 
 namespace rigdesign::cli {
 
@@ -98,7 +100,7 @@ namespace {
 
 json summary_json(const metrics::CoverageSummary& summary) {
   return {{"min", summary.min},
-          {"min_theta_deg", summary.min_theta * 180 / 3.141592653589793},
+          {"min_theta_deg", model::rad_to_deg(summary.min_theta)},
           {"mean", summary.mean},
           {"share_of_angles_at_100_percent", summary.full_share}};
 }
@@ -135,7 +137,7 @@ json to_json(const metrics::RigCoverage& coverage, bool curves) {
   if (!curves) return report;
   json samples = json::array();
   for (const metrics::AngleCoverage& angle : coverage.angles) {
-    json item = {{"theta_deg", angle.theta * 180 / 3.141592653589793},
+    json item = {{"theta_deg", model::rad_to_deg(angle.theta)},
                  {"r_m", angle.r},
                  {"complete", angle.complete},
                  {"floor", angle.floor},

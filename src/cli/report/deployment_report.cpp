@@ -1,4 +1,4 @@
-#include "deployment_report.hpp"
+#include "report/deployment_report.hpp"
 
 #include <ostream>
 

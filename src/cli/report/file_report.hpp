@@ -1,6 +1,8 @@
 #pragma once
 // What `rigdesign check` found in one file: its kind, the problems in it (and in the
-// library and requirements a rig pulls in), and the requirement verdicts.
+// library and requirements a rig pulls in), and the requirement verdicts. check_text,
+// check_json, check_junit and check_github render it.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,16 +40,8 @@ struct DeploymentFiles {
 FileReport check_file(const std::string& path, const std::string& sensors_path,
                       const std::string& requirements_path, const DeploymentFiles& deployment = {});
 
-/// "F = 10 Hz, required >= 20 Hz, margin -10 Hz (-50 %)", or "" without a measured value.
-std::string measured_text(const metrics::RequirementResult& result);
-
-std::string format_text(const std::vector<FileReport>& reports);
-std::string format_json(const std::vector<FileReport>& reports, int exit_code);
-/// JUnit XML: a testcase per file and per requirement, with file, line, time, and the
-/// measured value, requirement and margin in system-out.
-std::string format_junit(const std::vector<FileReport>& reports);
-/// GitHub Actions workflow commands: an ::error annotation per invalid input and failed
-/// requirement, ::warning per warning, at the rig line that causes it.
-std::string format_github(const std::vector<FileReport>& reports);
+/// How many of `results` have `verdict`.
+std::size_t count_verdicts(const std::vector<metrics::RequirementResult>& results,
+                           metrics::Verdict verdict);
 
 }  // namespace rigdesign::cli

@@ -34,11 +34,6 @@ struct ReportContent {
   std::vector<ReportSection> sections;  ///< after the verdicts
 };
 
-/// The coverage pictures write_coverage_files put in `folder` (sections at `angles_deg`), read
-/// back for the page, with their captions.
-std::vector<ReportFigure> coverage_figures(const std::string& folder,
-                                           const std::vector<double>& angles_deg);
-
 std::string html_report(const ReportContent& content);
 
 /// `svg` made fit to sit inline beside other SVGs: the XML prolog dropped and every id

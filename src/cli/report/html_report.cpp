@@ -1,9 +1,8 @@
-#include "html_report.hpp"
+#include "report/html_report.hpp"
 
 #include <sstream>
 
-#include "file_report.hpp"
-#include "rigdesign/io/file_bytes.hpp"
+#include "report/requirement_text.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/xml_text.hpp"
 #include "text_table.hpp"
@@ -136,28 +135,6 @@ void n_minus_one_table(std::ostringstream& html, const metrics::RigCoverage& cov
 }
 
 }  // namespace
-
-std::vector<ReportFigure> coverage_figures(const std::string& folder,
-                                           const std::vector<double>& angles_deg) {
-  std::vector<ReportFigure> figures;
-  const auto add = [&](const std::string& id, const std::string& file, const std::string& caption) {
-    figures.push_back({id, caption, io::read_file_bytes(folder + "/" + file, "an SVG picture")});
-  };
-  add("sc-cartesian", "sc_cartesian.svg",
-      "Spatial Coverage at every azimuth: SC complete and floor, requirement sectors shaded, "
-      "and per sensor the angles where it sees the cross-section.");
-  add("sc-polar", "sc_polar.svg", "The same seen from above, forward up.");
-  for (const double degrees : angles_deg) {
-    const std::string name = model::format_number(degrees);
-    add("section-" + name, "section_" + name + ".svg",
-        "Cross-section at theta = " + name +
-            " deg: each sensor's region, the body, the floor seen.");
-  }
-  add("view-isometric", "view_isometric.svg",
-      "What each sensor sees to d, cut where the body blocks it (isometric).");
-  add("view-top", "view_top.svg", "The same from above.");
-  return figures;
-}
 
 std::string inline_svg(const std::string& svg, const std::string& prefix) {
   std::string text = svg;

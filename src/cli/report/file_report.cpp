@@ -1,0 +1,172 @@
+#include "report/file_report.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "command.hpp"
+#include "inputs.hpp"
+#include "rigdesign/deploy/deployed_check.hpp"
+#include "rigdesign/io/config/catalog_loader.hpp"
+#include "rigdesign/io/config/policy_loader.hpp"
+#include "rigdesign/io/config/requirements_loader.hpp"
+#include "rigdesign/io/config/sensor_library_loader.hpp"
+#include "rigdesign/io/config/sensor_library_locator.hpp"
+#include "rigdesign/io/nav2/costmap_params_reader.hpp"
+#include "rigdesign/io/self_filters/self_filters_reader.hpp"
+#include "rigdesign/metrics/resultant.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Seconds since `start` on the monotonic clock.
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string library_summary(const std::string& path) {
+  const model::SensorLibrary library = io::load_sensor_library(path);
+  std::size_t modes = 0;
+  for (const model::Sensor& sensor : library.sensors) modes += sensor.modes.size();
+  return "sensor library is valid: " + std::to_string(library.sensors.size()) + " sensors, " +
+         std::to_string(modes) + " modes";
+}
+
+std::string requirements_summary(const std::string& path) {
+  const model::Requirements requirements = io::load_requirements(path);
+  return "requirements '" + requirements.name + "' are valid";
+}
+
+std::string catalog_summary(const std::string& path, const std::string& sensors_path) {
+  const model::Catalog catalog = io::load_catalog(path);
+  io::check_catalog_references(catalog, load_catalog_library(catalog, sensors_path))
+      .throw_if_errors();
+  return "catalog '" + catalog.name + "' is valid: " + std::to_string(catalog.slots.size()) +
+         " slots, " + std::to_string(catalog.sensors.size()) + " candidate sensors";
+}
+
+std::string policy_summary(const std::string& path) {
+  const model::RelaxationPolicy policy = io::load_policy(path);
+  return "relaxation policy '" + policy.name +
+         "' is valid: " + std::to_string(policy.steps.size()) + " steps";
+}
+
+std::string rig_summary(const RigInputs& inputs) {
+  std::string text = "rig '" + inputs.rig.name +
+                     "' is valid: " + std::to_string(inputs.rig.mounts.size()) +
+                     " mounts, sensors from " + inputs.library.file;
+  if (inputs.requirements) text += ", requirements from " + inputs.requirements->file;
+  return text;
+}
+
+// The nav2 sources and the filters of every self-filter file; `MOUNT=FILE` filters MOUNT.
+deploy::DeployedConfig load_deployment(const DeploymentFiles& files, const model::Rig& rig) {
+  deploy::DeployedConfig config;
+  if (!files.nav2.empty()) config = io::load_deployed_sources(files.nav2, rig);
+  for (const std::string& spec : files.filters) {
+    const std::size_t equals = spec.find('=');
+    const std::string mount = equals == std::string::npos ? "" : spec.substr(0, equals);
+    const std::string file = equals == std::string::npos ? spec : spec.substr(equals + 1);
+    const bool known =
+        mount.empty() || std::any_of(rig.mounts.begin(), rig.mounts.end(),
+                                     [&](const model::Mount& m) { return m.id == mount; });
+    require_option(known, "--filters", "'" + mount + "' is no mount of " + rig.file,
+                   "FILE, or MOUNT=FILE for a mount of the rig");
+    for (deploy::DeployedFilter& filter : io::load_self_filters(file, mount, rig))
+      config.filters.push_back(std::move(filter));
+  }
+  return config;
+}
+
+// The verdicts on the rig and its deployment, each with the time of what it rests on.
+void judge_rig(const RigInputs& inputs, const std::optional<deploy::DeployedConfig>& config,
+               FileReport& report) {
+  auto step = Clock::now();
+  const metrics::ResultantMetrics metrics = metrics::compute_resultant(inputs.rig, inputs.library);
+  const double resultant_seconds = seconds_since(step);
+  step = Clock::now();
+  std::optional<metrics::RigCoverage> coverage;
+  if (!inputs.requirements->sectors.empty()) {
+    coverage = metrics::compute_coverage(inputs.rig, inputs.library, inputs.requirements->sectors);
+  }
+  const double coverage_seconds = seconds_since(step);
+  step = Clock::now();
+  report.results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements,
+                                                  coverage ? &*coverage : nullptr);
+  const double judge_seconds = seconds_since(step);
+  for (const metrics::RequirementResult& result : report.results) {
+    report.result_seconds.push_back(resultant_seconds + judge_seconds +
+                                    (result.metric == "SC" ? coverage_seconds : 0.0));
+  }
+  if (!config) return;
+  step = Clock::now();
+  std::vector<metrics::RequirementResult> deployed = deploy::check_deployment(
+      inputs.rig, inputs.library, *inputs.requirements, *config, coverage ? &*coverage : nullptr);
+  const double deployed_seconds = seconds_since(step);
+  for (metrics::RequirementResult& result : deployed) {
+    report.results.push_back(std::move(result));
+    report.result_seconds.push_back(deployed_seconds);
+  }
+}
+
+void check_rig(const std::string& path, const std::string& sensors_path,
+               const std::string& requirements_path, const DeploymentFiles& deployment,
+               Clock::time_point started, FileReport& report) {
+  const RigInputs inputs = load_rig_inputs(path, sensors_path, requirements_path);
+  report.summary = rig_summary(inputs);
+  report.diagnostics = inputs.warnings;
+  if (!inputs.requirements) return;
+  // Deployment files are read before the coverage is computed: a typo in them is reported
+  // at once, not after the slowest step.
+  std::optional<deploy::DeployedConfig> config;
+  if (!deployment.empty()) config = load_deployment(deployment, inputs.rig);
+  report.load_seconds = seconds_since(started);
+  judge_rig(inputs, config, report);
+}
+
+}  // namespace
+
+bool FileReport::invalid() const {
+  return std::any_of(diagnostics.begin(), diagnostics.end(), [](const model::Diagnostic& d) {
+    return d.severity == model::Severity::error;
+  });
+}
+
+bool FileReport::failing() const {
+  return count_verdicts(results, metrics::Verdict::fail) > 0;
+}
+
+std::size_t count_verdicts(const std::vector<metrics::RequirementResult>& results,
+                           metrics::Verdict verdict) {
+  return static_cast<std::size_t>(
+      std::count_if(results.begin(), results.end(),
+                    [&](const metrics::RequirementResult& r) { return r.verdict == verdict; }));
+}
+
+FileReport check_file(const std::string& path, const std::string& sensors_path,
+                      const std::string& requirements_path, const DeploymentFiles& deployment) {
+  FileReport report;
+  report.file = path;
+  const auto started = Clock::now();
+  try {
+    report.kind = io::detect_file_kind(path);
+    switch (*report.kind) {
+      case io::FileKind::sensor_library: report.summary = library_summary(path); break;
+      case io::FileKind::requirements: report.summary = requirements_summary(path); break;
+      case io::FileKind::catalog: report.summary = catalog_summary(path, sensors_path); break;
+      case io::FileKind::policy: report.summary = policy_summary(path); break;
+      case io::FileKind::rig:
+        check_rig(path, sensors_path, requirements_path, deployment, started, report);
+        break;
+    }
+    if (report.load_seconds == 0.0) report.load_seconds = seconds_since(started);
+  } catch (const model::InputError& error) {
+    report.diagnostics = error.diagnostics();
+    report.summary = "invalid";
+    report.load_seconds = seconds_since(started);
+  }
+  return report;
+}
+
+}  // namespace rigdesign::cli
