@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <numbers>
 
 #include "cairo_canvas.hpp"
-#include "rigdesign/model/format_number.hpp"
+#include "chart_axes.hpp"
 
 namespace rigdesign::render {
 namespace {
@@ -17,140 +16,146 @@ constexpr Rgb kRefined{0.85, 0.1, 0.1};
 constexpr Rgb kMiss{0.95, 0.85, 0.85};
 
 Rgb sector_colour(std::size_t index) {
-  constexpr Rgb kColours[] = {{0.55, 0.35, 0.0}, {0.45, 0.2, 0.6}, {0.0, 0.5, 0.5},
-                              {0.6, 0.6, 0.1}, {0.3, 0.3, 0.3}};
+  constexpr Rgb kColours[] = {
+      {0.55, 0.35, 0.0}, {0.45, 0.2, 0.6}, {0.0, 0.5, 0.5}, {0.6, 0.6, 0.1}, {0.3, 0.3, 0.3}};
   return kColours[index % std::size(kColours)];
 }
 
-// A round tick spacing giving about five ticks over `span`.
-double tick_step(double span) {
-  const double magnitude = std::pow(10.0, std::floor(std::log10(span / 5)));
-  const double ratio = span / magnitude;
-  return magnitude * (ratio > 25 ? 5 : ratio > 10 ? 2 : 1);
+// A sector whose margin the sweep leaves unchanged is not drawn: it would be a flat line
+// saying nothing about this axis, and it would stretch the y range.
+bool varies(const std::vector<double>& values) {
+  return !values.empty() && *std::max_element(values.begin(), values.end()) -
+                                    *std::min_element(values.begin(), values.end()) >
+                                1e-9;
+}
+
+// The chart's plot area and the data ranges it shows.
+struct MarginChart {
+  PlotArea area;
+  double x_low = 0.0, x_high = 0.0;  // the swept values and the grid [axis unit]
+  double y_low = 0.0, y_high = 0.0;  // zero and every drawn margin, padded [points]
+  double px(double x) const {
+    return area.left + (area.right - area.left) * (x - x_low) / (x_high - x_low);
+  }
+  double py(double y) const {
+    return area.bottom - (area.bottom - area.top) * (y - y_low) / (y_high - y_low);
+  }
+};
+
+MarginChart margin_chart(const MarginCurve& curve, int width, int height) {
+  MarginChart chart{
+      {80, 60, width - 30.0, height - 70.0}, curve.grid_choice, curve.grid_choice, 0.0, 0.0};
+  const auto widen = [](double& low, double& high, const std::vector<double>& values) {
+    for (const double value : values) {
+      low = std::min(low, value);
+      high = std::max(high, value);
+    }
+  };
+  widen(chart.x_low, chart.x_high, curve.at);
+  widen(chart.y_low, chart.y_high, curve.smallest);
+  for (const auto& [name, margins] : curve.sectors) {
+    if (varies(margins)) widen(chart.y_low, chart.y_high, margins);
+  }
+  widen(chart.x_low, chart.x_high, curve.grid);
+  if (chart.x_high - chart.x_low < 1e-9) chart.x_high = chart.x_low + 1.0;
+  const double y_pad = std::max(1.0, 0.08 * (chart.y_high - chart.y_low));
+  chart.y_low -= y_pad;
+  chart.y_high += y_pad;
+  return chart;
+}
+
+// The band below zero margin (a sector threshold missed), then the axes over it.
+void draw_margin_axes(cairo_t* cairo, const MarginChart& chart, const MarginCurve& curve) {
+  const PlotArea& area = chart.area;
+  set_colour(cairo, kMiss);
+  cairo_rectangle(cairo, area.left, chart.py(0), area.right - area.left, area.bottom - chart.py(0));
+  cairo_fill(cairo);
+  // At least five intervals on each axis: a sweep's few degrees and points read finely.
+  const Axis x{.ticks = tick_values(chart.x_low, chart.x_high,
+                                    tick_step(chart.x_high - chart.x_low, 5, StepRounding::down)),
+               .pixel = [&](double value) { return chart.px(value); },
+               .digits = 4};
+  const Axis y{.ticks = tick_values(chart.y_low, chart.y_high,
+                                    tick_step(chart.y_high - chart.y_low, 5, StepRounding::down)),
+               .pixel = [&](double value) { return chart.py(value); },
+               .digits = 4,
+               .ink_at_zero = true};
+  draw_ticks(cairo, area, x, y);
+  draw_x_title(cairo, area, curve.axis_label, 45);
+  draw_y_title(cairo, area, "smallest SC margin to the sector thresholds [points]", 24);
+}
+
+// The sectors this axis changes, thin and named at their right end; the rig's smallest margin
+// (what the search and the refinement widen) thick on top.
+void draw_margin_lines(cairo_t* cairo, const MarginChart& chart, const MarginCurve& curve) {
+  const auto polyline = [&](const std::vector<double>& margins) {
+    for (std::size_t i = 0; i < margins.size() && i < curve.at.size(); ++i) {
+      i == 0 ? cairo_move_to(cairo, chart.px(curve.at[i]), chart.py(margins[i]))
+             : cairo_line_to(cairo, chart.px(curve.at[i]), chart.py(margins[i]));
+    }
+    cairo_stroke(cairo);
+  };
+  for (std::size_t s = 0; s < curve.sectors.size(); ++s) {
+    const auto& [name, margins] = curve.sectors[s];
+    if (!varies(margins)) continue;
+    set_colour(cairo, sector_colour(s));
+    cairo_set_line_width(cairo, 1.3);
+    polyline(margins);
+    draw_text(cairo, "sector " + name, chart.px(curve.at.back()) - 4, chart.py(margins.back()) - 6,
+              12, Anchor::right);
+  }
+  set_colour(cairo, kCurve);
+  cairo_set_line_width(cairo, 2.5);
+  polyline(curve.smallest);
+  if (!curve.at.empty())
+    draw_text(cairo, "smallest (the rig)", chart.px(curve.at.front()) + 4,
+              chart.py(curve.smallest.front()) - 8, 12, Anchor::left, true);
+}
+
+// The grid the search chose from, as ticks on the axis, and the grid optimum and the refined
+// value as dashed lines (one line when the refinement kept the grid's value).
+void draw_margin_choices(cairo_t* cairo, const MarginChart& chart, const MarginCurve& curve) {
+  const PlotArea& area = chart.area;
+  set_colour(cairo, kInkColour);
+  for (const double g : curve.grid) {
+    cairo_move_to(cairo, chart.px(g), area.bottom);
+    cairo_line_to(cairo, chart.px(g), area.bottom - 8);
+  }
+  cairo_stroke(cairo);
+  const double dash[] = {6.0, 4.0};
+  const bool same = std::abs(curve.refined - curve.grid_choice) < 1e-9;
+  struct Marker {
+    double x;
+    Rgb colour;
+    const char* label;
+    double label_y;
+  };
+  const Marker markers[] = {{curve.grid_choice, kGridChoice,
+                             same ? "grid optimum = refined" : "grid optimum", area.top + 16},
+                            {curve.refined, kRefined, "refined", area.top + 34}};
+  for (const Marker& marker : markers) {
+    if (same && &marker != &markers[0]) continue;
+    set_colour(cairo, marker.colour);
+    cairo_set_dash(cairo, dash, 2, 0);
+    cairo_move_to(cairo, chart.px(marker.x), area.top);
+    cairo_line_to(cairo, chart.px(marker.x), area.bottom);
+    cairo_stroke(cairo);
+    cairo_set_dash(cairo, nullptr, 0, 0);
+    draw_text(cairo, marker.label, chart.px(marker.x) + 5, marker.label_y, 13);
+  }
 }
 
 }  // namespace
 
-void plot_margin_curve(const MarginCurve& curve, const std::string& title,
-                       const std::string& path, int width, int height) {
+void plot_margin_curve(const MarginCurve& curve, const std::string& title, const std::string& path,
+                       int width, int height) {
+  const MarginChart chart = margin_chart(curve, width, height);
   draw_to_file(path, width, height, [&](cairo_t* cairo) {
-    const double left = 80, top = 60, right = width - 30.0, bottom = height - 70.0;
-    double x_low = curve.grid_choice, x_high = curve.grid_choice;
-    double y_low = 0.0, y_high = 0.0;
-    const auto varies = [](const std::vector<double>& values) {
-      return !values.empty() && *std::max_element(values.begin(), values.end()) -
-                                        *std::min_element(values.begin(), values.end()) > 1e-9;
-    };
-    for (const double x : curve.at) {
-      x_low = std::min(x_low, x);
-      x_high = std::max(x_high, x);
-    }
-    for (const double margin : curve.smallest) {
-      y_low = std::min(y_low, margin);
-      y_high = std::max(y_high, margin);
-    }
-    for (const auto& [name, margins] : curve.sectors) {
-      if (!varies(margins)) continue;
-      for (const double margin : margins) {
-        y_low = std::min(y_low, margin);
-        y_high = std::max(y_high, margin);
-      }
-    }
-    for (const double g : curve.grid) {
-      x_low = std::min(x_low, g);
-      x_high = std::max(x_high, g);
-    }
-    if (x_high - x_low < 1e-9) x_high = x_low + 1.0;
-    const double y_pad = std::max(1.0, 0.08 * (y_high - y_low));
-    y_low -= y_pad;
-    y_high += y_pad;
-    const auto px = [&](double x) { return left + (right - left) * (x - x_low) / (x_high - x_low); };
-    const auto py = [&](double y) { return bottom - (bottom - top) * (y - y_low) / (y_high - y_low); };
-
     set_colour(cairo, kInkColour);
     draw_text(cairo, title, width / 2.0, 32, 17, Anchor::centre, true);
-    // Below zero a sector threshold is missed.
-    set_colour(cairo, kMiss);
-    cairo_rectangle(cairo, left, py(0), right - left, bottom - py(0));
-    cairo_fill(cairo);
-    cairo_set_line_width(cairo, 1);
-    const double x_step = tick_step(x_high - x_low);
-    for (double x = std::ceil(x_low / x_step) * x_step; x <= x_high + 1e-9; x += x_step) {
-      set_colour(cairo, kGridColour);
-      cairo_move_to(cairo, px(x), top);
-      cairo_line_to(cairo, px(x), bottom);
-      cairo_stroke(cairo);
-      set_colour(cairo, kInkColour);
-      draw_text(cairo, model::format_number(x, 4), px(x), bottom + 20, 13, Anchor::centre);
-    }
-    const double y_step = tick_step(y_high - y_low);
-    for (double y = std::ceil(y_low / y_step) * y_step; y <= y_high + 1e-9; y += y_step) {
-      set_colour(cairo, std::abs(y) < 1e-9 ? kInkColour : kGridColour);
-      cairo_move_to(cairo, left, py(y));
-      cairo_line_to(cairo, right, py(y));
-      cairo_stroke(cairo);
-      set_colour(cairo, kInkColour);
-      draw_text(cairo, model::format_number(y, 4), left - 8, py(y) + 5, 13, Anchor::right);
-    }
-    draw_text(cairo, curve.axis_label, (left + right) / 2, height - 25.0, 14, Anchor::centre);
-    cairo_save(cairo);
-    cairo_translate(cairo, 24, (top + bottom) / 2);
-    cairo_rotate(cairo, -std::numbers::pi / 2);
-    draw_text(cairo, "smallest SC margin to the sector thresholds [points]", 0, 0, 14,
-              Anchor::centre);
-    cairo_restore(cairo);
-
-    const auto polyline = [&](const std::vector<double>& margins) {
-      for (std::size_t i = 0; i < margins.size() && i < curve.at.size(); ++i) {
-        i == 0 ? cairo_move_to(cairo, px(curve.at[i]), py(margins[i]))
-               : cairo_line_to(cairo, px(curve.at[i]), py(margins[i]));
-      }
-      cairo_stroke(cairo);
-    };
-    // The sectors this axis changes, thin and named at their right end; the rig's smallest
-    // margin (what the search and the refinement widen) thick on top.
-    for (std::size_t s = 0; s < curve.sectors.size(); ++s) {
-      const auto& [name, margins] = curve.sectors[s];
-      if (!varies(margins)) continue;
-      set_colour(cairo, sector_colour(s));
-      cairo_set_line_width(cairo, 1.3);
-      polyline(margins);
-      draw_text(cairo, "sector " + name, px(curve.at.back()) - 4, py(margins.back()) - 6, 12,
-                Anchor::right);
-    }
-    set_colour(cairo, kCurve);
-    cairo_set_line_width(cairo, 2.5);
-    polyline(curve.smallest);
-    if (!curve.at.empty())
-      draw_text(cairo, "smallest (the rig)", px(curve.at.front()) + 4,
-                py(curve.smallest.front()) - 8, 12, Anchor::left, true);
-    // The grid the search chose from, as ticks on the axis.
-    set_colour(cairo, kInkColour);
-    for (const double g : curve.grid) {
-      cairo_move_to(cairo, px(g), bottom);
-      cairo_line_to(cairo, px(g), bottom - 8);
-    }
-    cairo_stroke(cairo);
-    const double dash[] = {6.0, 4.0};
-    const bool same = std::abs(curve.refined - curve.grid_choice) < 1e-9;
-    struct Marker {
-      double x;
-      Rgb colour;
-      const char* label;
-      double label_y;
-    };
-    const Marker markers[] = {{curve.grid_choice, kGridChoice, same ? "grid optimum = refined" : "grid optimum", top + 16},
-                              {curve.refined, kRefined, "refined", top + 34}};
-    for (const Marker& marker : markers) {
-      if (same && &marker != &markers[0]) continue;
-      set_colour(cairo, marker.colour);
-      cairo_set_dash(cairo, dash, 2, 0);
-      cairo_move_to(cairo, px(marker.x), top);
-      cairo_line_to(cairo, px(marker.x), bottom);
-      cairo_stroke(cairo);
-      cairo_set_dash(cairo, nullptr, 0, 0);
-      draw_text(cairo, marker.label, px(marker.x) + 5, marker.label_y, 13);
-    }
+    draw_margin_axes(cairo, chart, curve);
+    draw_margin_lines(cairo, chart, curve);
+    draw_margin_choices(cairo, chart, curve);
   });
 }
 

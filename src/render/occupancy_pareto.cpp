@@ -5,14 +5,11 @@
 #include <numbers>
 
 #include "cairo_canvas.hpp"
+#include "chart_axes.hpp"
 #include "rigdesign/model/format_number.hpp"
 
 namespace rigdesign::render {
 namespace {
-
-using render::Anchor;
-using render::draw_text;
-using render::set_colour;
 
 double f2_or_worst(double f2) {
   return std::isnan(f2) ? -1.0 : f2;
@@ -24,12 +21,89 @@ Rgb speed_colour(double share) {
   return {0.15 + 0.75 * share, 0.65 - 0.45 * share, 0.2};
 }
 
-// 1, 2 or 5 times a power of ten, about `count` steps across `span`.
-double nice_step(double span, double count) {
-  const double raw = std::max(span, 1e-9) / count;
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  const double ratio = raw / magnitude;
-  return magnitude * (ratio > 5 ? 10 : ratio > 2 ? 5 : ratio > 1 ? 2 : 1);
+// Ghost area from zero on x (ending on a tick), F2 from 0 to 1 on y; the update times' range
+// for the colour scale.
+struct OccupancyChart {
+  PlotArea area;
+  double ghost_max = 0.0, x_step = 0.0;  // [m^2]
+  double ms_low = 1e300, ms_high = 0.0;  // [ms]
+  std::pair<double, double> px(double ghost, double f2) const {
+    return std::pair{area.left + ghost / ghost_max * (area.right - area.left),
+                     area.bottom - f2 * (area.bottom - area.top)};
+  }
+  double log_span() const { return std::max(std::log(ms_high / ms_low), 1e-9); }
+};
+
+OccupancyChart occupancy_chart(const std::vector<ParetoPoint>& points, int width, int height) {
+  OccupancyChart chart{{80, 60, width - 190.0, height - 70.0}};
+  for (const ParetoPoint& p : points) {
+    chart.ghost_max = std::max(chart.ghost_max, p.ghost_area);
+    chart.ms_low = std::min(chart.ms_low, std::max(p.update_ms, 1e-3));
+    chart.ms_high = std::max(chart.ms_high, std::max(p.update_ms, 1e-3));
+  }
+  chart.ghost_max = std::max(chart.ghost_max * 1.1, 0.01);
+  chart.x_step = tick_step(chart.ghost_max, 8, StepRounding::up);
+  chart.ghost_max = std::ceil(chart.ghost_max / chart.x_step) * chart.x_step;
+  return chart;
+}
+
+void draw_occupancy_axes(cairo_t* cairo, const OccupancyChart& chart) {
+  const Axis x{.ticks = tick_values(0, chart.ghost_max, chart.x_step),
+               .pixel = [&](double ghost) { return chart.px(ghost, 0).first; },
+               .digits = 4};
+  std::vector<double> tenths;
+  for (int i = 0; i <= 10; ++i) tenths.push_back(i / 10.0);  // exact tenths, not a sum of 0.1s
+  const Axis y{
+      .ticks = tenths, .pixel = [&](double f2) { return chart.px(0, f2).second; }, .digits = 2};
+  draw_ticks(cairo, chart.area, x, y, {.size = 12, .below = 18, .beside = 8, .lift = 4});
+  draw_x_title(cairo, chart.area, "mean ghost area over the cell [m^2] (lower is better)", 42, 13);
+  draw_text(cairo, "mean F2 near the person", 14, chart.area.top - 14, 13);
+}
+
+// Each configuration as a dot in its speed's colour, ringed on the front, with its label.
+void draw_configurations(cairo_t* cairo, const OccupancyChart& chart,
+                         const std::vector<ParetoPoint>& points,
+                         const std::vector<std::size_t>& front) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const ParetoPoint& p = points[i];
+    if (std::isnan(p.f2)) continue;
+    const auto [x, y] = chart.px(p.ghost_area, p.f2);
+    set_colour(cairo, speed_colour(std::log(std::max(p.update_ms, 1e-3) / chart.ms_low) /
+                                   chart.log_span()));
+    cairo_new_sub_path(cairo);
+    cairo_arc(cairo, x, y, 6, 0, 2 * std::numbers::pi);
+    cairo_fill(cairo);
+    const bool on_front = std::find(front.begin(), front.end(), i) != front.end();
+    set_colour(cairo, kInkColour);
+    if (on_front) {
+      cairo_set_line_width(cairo, 2);
+      cairo_new_sub_path(cairo);
+      cairo_arc(cairo, x, y, 10, 0, 2 * std::numbers::pi);
+      cairo_stroke(cairo);
+    }
+    draw_text(cairo, p.label, x + 12, y - 6, 10);
+  }
+}
+
+// Legend: the time scale and the ring.
+void draw_occupancy_legend(cairo_t* cairo, const OccupancyChart& chart) {
+  const double lx = chart.area.right + 24, top = chart.area.top;
+  draw_text(cairo, "ms per update", lx, top + 10, 12, Anchor::left, true);
+  for (int i = 0; i < 5; ++i) {
+    const double share = i / 4.0;
+    set_colour(cairo, speed_colour(share));
+    cairo_new_sub_path(cairo);
+    cairo_arc(cairo, lx + 6, top + 32 + i * 22, 6, 0, 2 * std::numbers::pi);
+    cairo_fill(cairo);
+    set_colour(cairo, kInkColour);
+    draw_text(cairo, model::format_number(chart.ms_low * std::exp(share * chart.log_span()), 3),
+              lx + 20, top + 36 + i * 22, 11);
+  }
+  cairo_set_line_width(cairo, 2);
+  cairo_new_sub_path(cairo);
+  cairo_arc(cairo, lx + 6, top + 160, 10, 0, 2 * std::numbers::pi);
+  cairo_stroke(cairo);
+  draw_text(cairo, "Pareto-optimal", lx + 22, top + 164, 11);
 }
 
 }  // namespace
@@ -53,81 +127,13 @@ std::vector<std::size_t> pareto_front(const std::vector<ParetoPoint>& points) {
 void plot_occupancy_pareto(const std::vector<ParetoPoint>& points, const std::string& title,
                            const std::string& path, int width, int height) {
   const std::vector<std::size_t> front = pareto_front(points);
-  render::draw_to_file(path, width, height, [&](cairo_t* cairo) {
-    const double left = 80, top = 60, right = width - 190.0, bottom = height - 70.0;
-    double ghost_max = 0.0, ms_low = 1e300, ms_high = 0.0;
-    for (const ParetoPoint& p : points) {
-      ghost_max = std::max(ghost_max, p.ghost_area);
-      ms_low = std::min(ms_low, std::max(p.update_ms, 1e-3));
-      ms_high = std::max(ms_high, std::max(p.update_ms, 1e-3));
-    }
-    ghost_max = std::max(ghost_max * 1.1, 0.01);
-    const double x_step = nice_step(ghost_max, 8);
-    ghost_max = std::ceil(ghost_max / x_step) * x_step;
-    const auto px = [&](double ghost, double f2) {
-      return std::pair{left + ghost / ghost_max * (right - left), bottom - f2 * (bottom - top)};
-    };
+  const OccupancyChart chart = occupancy_chart(points, width, height);
+  draw_to_file(path, width, height, [&](cairo_t* cairo) {
     set_colour(cairo, kInkColour);
     draw_text(cairo, title, width / 2.0, 34, 18, Anchor::centre, true);
-    cairo_set_line_width(cairo, 1);
-    for (double x = 0; x <= ghost_max + 1e-12; x += x_step) {
-      set_colour(cairo, kGridColour);
-      cairo_move_to(cairo, px(x, 0).first, top);
-      cairo_line_to(cairo, px(x, 0).first, bottom);
-      cairo_stroke(cairo);
-      set_colour(cairo, kInkColour);
-      draw_text(cairo, model::format_number(x, 4), px(x, 0).first, bottom + 18, 12, Anchor::centre);
-    }
-    for (int i = 0; i <= 10; ++i) {
-      const double f2 = i / 10.0;
-      set_colour(cairo, kGridColour);
-      cairo_move_to(cairo, left, px(0, f2).second);
-      cairo_line_to(cairo, right, px(0, f2).second);
-      cairo_stroke(cairo);
-      set_colour(cairo, kInkColour);
-      draw_text(cairo, model::format_number(f2, 2), left - 8, px(0, f2).second + 4, 12,
-                Anchor::right);
-    }
-    draw_text(cairo, "mean ghost area over the cell [m^2] (lower is better)", (left + right) / 2,
-              height - 28.0, 13, Anchor::centre);
-    draw_text(cairo, "mean F2 near the person", 14, top - 14, 13);
-    const double log_span = std::max(std::log(ms_high / ms_low), 1e-9);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const ParetoPoint& p = points[i];
-      if (std::isnan(p.f2)) continue;
-      const auto [x, y] = px(p.ghost_area, p.f2);
-      set_colour(cairo, speed_colour(std::log(std::max(p.update_ms, 1e-3) / ms_low) / log_span));
-      cairo_new_sub_path(cairo);
-      cairo_arc(cairo, x, y, 6, 0, 2 * std::numbers::pi);
-      cairo_fill(cairo);
-      const bool on_front = std::find(front.begin(), front.end(), i) != front.end();
-      set_colour(cairo, kInkColour);
-      if (on_front) {
-        cairo_set_line_width(cairo, 2);
-        cairo_new_sub_path(cairo);
-        cairo_arc(cairo, x, y, 10, 0, 2 * std::numbers::pi);
-        cairo_stroke(cairo);
-      }
-      draw_text(cairo, p.label, x + 12, y - 6, 10);
-    }
-    // Legend: the time scale and the ring.
-    const double lx = right + 24;
-    draw_text(cairo, "ms per update", lx, top + 10, 12, Anchor::left, true);
-    for (int i = 0; i < 5; ++i) {
-      const double share = i / 4.0;
-      set_colour(cairo, speed_colour(share));
-      cairo_new_sub_path(cairo);
-      cairo_arc(cairo, lx + 6, top + 32 + i * 22, 6, 0, 2 * std::numbers::pi);
-      cairo_fill(cairo);
-      set_colour(cairo, kInkColour);
-      draw_text(cairo, model::format_number(ms_low * std::exp(share * log_span), 3), lx + 20,
-                top + 36 + i * 22, 11);
-    }
-    cairo_set_line_width(cairo, 2);
-    cairo_new_sub_path(cairo);
-    cairo_arc(cairo, lx + 6, top + 160, 10, 0, 2 * std::numbers::pi);
-    cairo_stroke(cairo);
-    draw_text(cairo, "Pareto-optimal", lx + 22, top + 164, 11);
+    draw_occupancy_axes(cairo, chart);
+    draw_configurations(cairo, chart, points, front);
+    draw_occupancy_legend(cairo, chart);
   });
 }
 

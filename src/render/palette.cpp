@@ -3,7 +3,6 @@
 namespace rigdesign::render {
 
 Rgb sensor_colour(std::size_t index) {
-  // Okabe-Ito colour-blind-safe palette (without black), then repeated.
   // Okabe-Ito colour-blind-safe palette (without black), ordered so that neighbours differ
   // in hue and lightness; repeats after seven sensors.
   static constexpr std::array<Rgb, 7> kPalette = {{{0.90, 0.62, 0.00},    // orange

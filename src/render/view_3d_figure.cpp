@@ -1,6 +1,7 @@
 #include "rigdesign/render/view_3d_figure.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <memory>
 #include <vector>
 
@@ -51,19 +52,12 @@ double scale_bar_metres(double pixels_per_metre, int width) {
   return best;
 }
 
-void draw_overlay(cairo_t* cairo, const ViewProjection& projection, const View3dOverlay& overlay,
-                  const View3dSettings& settings) {
-  const double width = settings.width;
-  const double height = settings.height;
-  set_colour(cairo, kInkColour);
-  draw_text(cairo, overlay.title, width / 2, 32, 20, Anchor::centre, true);
-  if (!overlay.subtitle.empty()) {
-    draw_text(cairo, overlay.subtitle, width / 2, 54, 13, Anchor::centre);
-  }
-
-  // Labels beside their dots, moved down or to the other side until no two overlap (mounts
-  // close together in the image, as a front camera over a side one, would print over each
-  // other); a leader line joins a moved label to its dot.
+// Labels beside their dots, moved down or to the other side until no two overlap (mounts
+// close together in the image, as a front camera over a side one, would print over each
+// other); a leader line joins a moved label to its dot. The dots go last, so no label hides
+// where a sensor is.
+void draw_view_labels(cairo_t* cairo, const ViewProjection& projection,
+                      const std::vector<ViewLabel>& labels) {
   struct Box {
     double left, top, right, bottom;
     bool overlaps(const Box& other) const {
@@ -71,7 +65,7 @@ void draw_overlay(cairo_t* cairo, const ViewProjection& projection, const View3d
     }
   };
   std::vector<Box> placed;
-  for (const ViewLabel& label : overlay.labels) {
+  for (const ViewLabel& label : labels) {
     const auto [x, y] = projection.pixel(label.at);
     const double text_width = 0.62 * 13 * static_cast<double>(label.text.size()) + 6;
     Box box{};
@@ -93,22 +87,25 @@ void draw_overlay(cairo_t* cairo, const ViewProjection& projection, const View3d
     cairo_stroke(cairo);
     halo_text(cairo, label.text, text_x, text_y, 13, kInkColour, true);
   }
-  // Dots last, so no label hides where a sensor is.
-  for (const ViewLabel& label : overlay.labels) {
+  for (const ViewLabel& label : labels) {
     const auto [x, y] = projection.pixel(label.at);
     set_colour(cairo, label.colour);
-    cairo_arc(cairo, x, y, 5, 0, 2 * 3.141592653589793);
+    cairo_arc(cairo, x, y, 5, 0, 2 * std::numbers::pi);
     cairo_fill_preserve(cairo);
     set_colour(cairo, kInkColour);
     cairo_set_line_width(cairo, 1);
     cairo_stroke(cairo);
   }
+}
 
-  // Legend, top left.
+// Legend, top left: each sensor's colour, the body's, and what the floor grid and the axis
+// arrows mean.
+void draw_view_legend(cairo_t* cairo, const ViewProjection& projection,
+                      const std::vector<LegendEntry>& legend) {
   double y = 84;
   set_colour(cairo, kInkColour);
   draw_text(cairo, "sensor (volume it sees, to d)", 20, y, 13, Anchor::left, true);
-  for (const LegendEntry& entry : overlay.legend) {
+  for (const LegendEntry& entry : legend) {
     y += 21;
     set_colour(cairo, entry.colour, 0.7);
     cairo_rectangle(cairo, 20, y - 12, 24, 14);
@@ -127,11 +124,14 @@ void draw_overlay(cairo_t* cairo, const ViewProjection& projection, const View3d
             "floor grid: " + model::format_number(projection.grid_spacing) +
                 " m squares; axes x red (forward), y green (left), z blue (up)",
             20, y, 12);
+}
 
-  // Scale bar, bottom left: a length along the image's x axis, horizontal in the robot frame.
+// Scale bar, bottom left: a length along the image's x axis, horizontal in the robot frame.
+void draw_view_scale_bar(cairo_t* cairo, const ViewProjection& projection,
+                         const View3dSettings& settings) {
   const double metres = scale_bar_metres(projection.pixels_per_metre(), settings.width);
   const double length = metres * projection.pixels_per_metre();
-  const double bar_y = height - 30;
+  const double bar_y = settings.height - 30;
   set_colour(cairo, kInkColour);
   cairo_set_line_width(cairo, 3);
   cairo_move_to(cairo, 30, bar_y);
@@ -146,6 +146,19 @@ void draw_overlay(cairo_t* cairo, const ViewProjection& projection, const View3d
   draw_text(cairo, model::format_number(metres) + " m", 30 + length / 2, bar_y - 10, 13,
             Anchor::centre, true);
   draw_text(cairo, "(orthographic: lengths across the image)", 40 + length, bar_y + 5, 11);
+}
+
+void draw_overlay(cairo_t* cairo, const ViewProjection& projection, const View3dOverlay& overlay,
+                  const View3dSettings& settings) {
+  const double width = settings.width;
+  set_colour(cairo, kInkColour);
+  draw_text(cairo, overlay.title, width / 2, 32, 20, Anchor::centre, true);
+  if (!overlay.subtitle.empty()) {
+    draw_text(cairo, overlay.subtitle, width / 2, 54, 13, Anchor::centre);
+  }
+  draw_view_labels(cairo, projection, overlay.labels);
+  draw_view_legend(cairo, projection, overlay.legend);
+  draw_view_scale_bar(cairo, projection, settings);
 }
 
 }  // namespace
