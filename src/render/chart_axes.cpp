@@ -25,8 +25,13 @@ void draw_x_ticks(cairo_t* cairo, const PlotArea& area, const Axis& x, const Tic
   for (const double value : x.ticks) {
     const double at = x.pixel(value);
     set_line_colour(cairo, x, value, line);
-    cairo_move_to(cairo, at, line == TickLine::grid ? area.top : area.bottom);
-    cairo_line_to(cairo, at, line == TickLine::grid ? area.bottom : area.bottom + kMarkLength);
+    if (line == TickLine::mark) {
+      cairo_move_to(cairo, at, area.bottom);
+      cairo_line_to(cairo, at, area.bottom + kMarkLength);
+    } else {
+      cairo_move_to(cairo, at, x.grid_from_bottom ? area.bottom : area.top);
+      cairo_line_to(cairo, at, x.grid_from_bottom ? area.top : area.bottom);
+    }
     cairo_stroke(cairo);
     set_colour(cairo, kInkColour);
     draw_text(cairo, model::format_number(value, x.digits), at, area.bottom + style.below,

@@ -44,6 +44,9 @@ struct Axis {
   std::function<double(double)> pixel;  ///< value -> canvas x (x axis) or y (y axis)
   int digits = 6;                       ///< significant digits of the tick labels
   bool ink_at_zero = false;             ///< the grid line at 0 in ink, where a sign matters
+  /// x grid lines drawn from the bottom edge up, as a chart that rises from the floor (the
+  /// cross-section) has always drawn them; its SVG paths stay as they were.
+  bool grid_from_bottom = false;
 };
 
 /// Tick-label type and placement [px]; the defaults suit 13 px labels.

@@ -44,7 +44,8 @@ void draw_section_axes(cairo_t* cairo, const SectionLayout& axes,
   const Axis x{.ticks = tick_values(0, rho_max,
                                     tick_step(rho_max, 8, StepRounding::up, kSectionStepFactors)),
                .pixel = [&](double rho) { return axes.x(rho); },
-               .digits = 3};
+               .digits = 3,
+               .grid_from_bottom = true};
   const Axis y{
       .ticks = tick_values(0, z_max, tick_step(z_max, 5, StepRounding::up, kSectionStepFactors)),
       .pixel = [&](double z) { return axes.y(z); },
