@@ -14,6 +14,9 @@
 #include "inputs.hpp"
 #include "machine_info.hpp"
 #include "progress_line.hpp"
+#include "report/filter_json.hpp"
+#include "report/filter_report.hpp"
+#include "report/filter_text.hpp"
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/filters/pipeline_timing.hpp"
 #include "rigdesign/io/atomic_write.hpp"
@@ -25,7 +28,6 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/optical_frame.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
-#include "text_table.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -82,17 +84,8 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
   require_option(options.frames >= 1 && options.frames <= 10000, "--frames", "is out of range",
                  "1 to 10000");
   const model::Scene scene = load_scene_option(options.scene, options.seed);
-  TextTable table;
-  table.add_column("mount", TextTable::Align::left);
-  for (const char* header :
-       {"points/frame", "out/frame", "median ms", "p95 ms", "F Hz", "U_f cores", "s per point"}) {
-    table.add_column(header, TextTable::Align::right);
-  }
-  nlohmann::json report = {{"pipeline", pipeline.name},
-                           {"scene", options.scene},
-                           {"frames", options.frames},
-                           {"mounts", nlohmann::json::array()}};
-  double total_load = 0.0;
+  FilterSceneReport report{
+      inputs.rig.name, options.scene, pipeline.name, options.frames, {}, 0.0, options.write_loads};
   ProgressLine progress(
       err, "filter: simulate and time " + std::to_string(options.frames) + " frame(s) each",
       "sensors");
@@ -104,44 +97,79 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
     const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
     const std::vector<model::PointCloud> clouds =
         sim::simulate_mount(scene, mount, mode, i, options.frames, options.seed);
-    const filters::FramesLoad measured_load =
+    const filters::FramesLoad load =
         filters::measure_filtering_load(pipeline, clouds, mode.frequency);
-    const double median = measured_load.seconds_per_frame.median;
-    const double load = measured_load.load.cores;
-    const double per_point = measured_load.load.seconds_per_point;
-    total_load += load;
-    table.add_row({mount.id, std::to_string(measured_load.points / clouds.size()),
-                   std::to_string(measured_load.kept / clouds.size()), fixed(median * 1e3, 2),
-                   fixed(measured_load.seconds_per_frame.p95 * 1e3, 2), fixed(mode.frequency, 0),
-                   fixed(load, 3), model::format_number(per_point, 3)});
-    report["mounts"].push_back({{"mount", mount.id},
-                                {"points_per_frame", measured_load.points / clouds.size()},
-                                {"median_s", median},
-                                {"filtering_load_cores", load},
-                                {"filtering_seconds_per_point", per_point}});
+    report.mounts.push_back({mount.id, mode.frequency, load.points / clouds.size(),
+                             load.kept / clouds.size(), load.seconds_per_frame, load.load});
+    report.total_load_cores += load.load.cores;
     measured.record({mount.sensor_id,
                      mount.mode_id,
-                     per_point,
-                     static_cast<double>(measured_load.points) / static_cast<double>(clouds.size()),
-                     median,
+                     load.load.seconds_per_point,
+                     static_cast<double>(load.points) / static_cast<double>(clouds.size()),
+                     load.seconds_per_frame.median,
                      {}});
   }
   progress.clear();  // the report follows on standard output
   if (!options.write_loads.empty()) write_loads(options.write_loads, measured, inputs.rig.file);
-  report["total_filtering_load_cores"] = total_load;
   if (options.json) {
-    out << report.dump(2) << '\n';
-    return kOk;
+    out << filter_scene_json(report).dump(2) << '\n';
+  } else {
+    print_filter_scene(report, out);
   }
-  out << inputs.rig.name << " in the " << options.scene << " scene, pipeline " << pipeline.name
-      << ", " << options.frames << " frames per sensor (single thread, this machine)\n";
-  table.print(out, "  ");
-  out << "  total filtering load U_f = " << fixed(total_load, 3)
-      << " core-equivalents of this machine; `s per point` is what a catalog's "
-         "filtering_seconds_per_point takes\n";
-  if (!options.write_loads.empty())
-    out << "  wrote the loads per sensor to " << options.write_loads << '\n';
   return kOk;
+}
+
+// One cloud file through the pipeline: moved into the robot frame when a mount recorded it,
+// timed over the runs, its load at the mount's rate, the result written with --out.
+FilterCloudReport filter_cloud(const std::string& path, const FilterOptions& options,
+                               const model::Pipeline& pipeline, const model::Mount* mount,
+                               const model::SensorMode* mode) {
+  io::CloudReadReport read;
+  model::PointCloud cloud = io::read_cloud(path, &read);
+  if (cloud.empty()) {
+    throw model::InputError(model::Diagnostic{
+        {path, 0, 0}, "data", "has no finite point to filter", "a non-empty cloud"});
+  }
+  // Clouds arrive as drivers publish them (and as `simulate --frame sensor` writes them):
+  // a camera's in its optical frame, a lidar's in its x-forward frame.
+  const std::string frame =
+      options.frame != "auto" ? options.frame : (mode && mode->is_camera() ? "optical" : "sensor");
+  if (mount != nullptr && frame != "robot") {
+    const model::Pose3 T_robot_cloud = frame == "optical"
+                                           ? mount->T_robot_sensor * model::T_sensor_optical()
+                                           : mount->T_robot_sensor;
+    cloud = model::transform_cloud(cloud, T_robot_cloud);
+  }
+  const filters::PipelineTiming timing = [&] {
+    try {
+      return filters::time_pipeline(pipeline, cloud, options.repeat);
+    } catch (const model::InputError& error) {  // a stage refused this cloud: name it
+      throw error.in_file(path);
+    }
+  }();
+  FilterCloudReport report{path,
+                           read.format,
+                           cloud.size(),
+                           read.dropped_non_finite,
+                           read.ignored_fields,
+                           timing.stages,
+                           timing.result.size(),
+                           timing.total,
+                           std::nullopt,
+                           ""};
+  if (mode != nullptr) {
+    report.load =
+        CloudLoad{mount->id, mode->frequency,
+                  filters::filtering_load(timing.total.median, static_cast<double>(cloud.size()),
+                                          mode->frequency)};
+  }
+  if (!options.out.empty()) {
+    io::prepare_output_folder(options.out, "--out");
+    report.output = options.out + "/" + std::filesystem::path(path).stem().string() + "_" +
+                    pipeline.name + ".pcd";
+    io::write_cloud(report.output, timing.result, io::CloudEncoding::binary);
+  }
+  return report;
 }
 
 int run_filter(const FilterOptions& options, std::ostream& out, std::ostream& err) {
@@ -180,93 +208,15 @@ int run_filter(const FilterOptions& options, std::ostream& out, std::ostream& er
                    "a mount id of the rig");
     mode = rig->library.find(mount->sensor_id)->find_mode(mount->mode_id);
   }
-  nlohmann::json report = {
-      {"pipeline", pipeline.name}, {"runs", options.repeat}, {"clouds", nlohmann::json::array()}};
+  FilterCloudsReport report{pipeline.name, options.repeat, {}, 0.0};
   for (const std::string& path : options.clouds) {
-    io::CloudReadReport read;
-    model::PointCloud cloud = io::read_cloud(path, &read);
-    if (cloud.empty()) {
-      throw model::InputError(model::Diagnostic{
-          {path, 0, 0}, "data", "has no finite point to filter", "a non-empty cloud"});
-    }
-    // Clouds arrive as drivers publish them (and as `simulate --frame sensor` writes them):
-    // a camera's in its optical frame, a lidar's in its x-forward frame.
-    const std::string frame = options.frame != "auto"
-                                  ? options.frame
-                                  : (mode && mode->is_camera() ? "optical" : "sensor");
-    if (mount != nullptr && frame != "robot") {
-      const model::Pose3 T_robot_cloud = frame == "optical"
-                                             ? mount->T_robot_sensor * model::T_sensor_optical()
-                                             : mount->T_robot_sensor;
-      cloud = model::transform_cloud(cloud, T_robot_cloud);
-    }
-    const filters::PipelineTiming timing = [&] {
-      try {
-        return filters::time_pipeline(pipeline, cloud, options.repeat);
-      } catch (const model::InputError& error) {  // a stage refused this cloud: name it
-        throw error.in_file(path);
-      }
-    }();
-    const double total_median = timing.total.median;
-    nlohmann::json stages = nlohmann::json::array();
-    TextTable table;
-    table.add_column("stage", TextTable::Align::left);
-    for (const char* header : {"points in", "points out", "median ms", "p95 ms"})
-      table.add_column(header, TextTable::Align::right);
-    for (const filters::StageTiming& stage : timing.stages) {
-      table.add_row({stage.stage, std::to_string(stage.points_in), std::to_string(stage.points_out),
-                     fixed(stage.seconds.median * 1e3, 2), fixed(stage.seconds.p95 * 1e3, 2)});
-      stages.push_back({{"stage", stage.stage},
-                        {"points_in", stage.points_in},
-                        {"points_out", stage.points_out},
-                        {"median_s", stage.seconds.median},
-                        {"p95_s", stage.seconds.p95}});
-    }
-    const model::PointCloud& result = timing.result;
-    table.add_row({"total", std::to_string(cloud.size()), std::to_string(result.size()),
-                   fixed(total_median * 1e3, 2), fixed(timing.total.p95 * 1e3, 2)});
-    nlohmann::json item = {{"file", path},
-                           {"format", read.format},
-                           {"points", cloud.size()},
-                           {"dropped_non_finite", read.dropped_non_finite},
-                           {"ignored_fields", read.ignored_fields},
-                           {"stages", stages},
-                           {"total_median_s", total_median}};
-    if (!options.json) {
-      out << path << ": " << cloud.size() << " points (" << read.format << ", "
-          << read.dropped_non_finite << " non-finite dropped), pipeline " << pipeline.name << ", "
-          << options.repeat << " runs\n";
-      table.print(out, "  ");
-    }
-    if (mode != nullptr) {
-      const filters::FilteringLoadRate rate =
-          filters::filtering_load(total_median, static_cast<double>(cloud.size()), mode->frequency);
-      const double load = rate.cores;
-      const double per_point = rate.seconds_per_point;
-      item["filtering_load_cores"] = load;
-      item["filtering_seconds_per_point"] = per_point;
-      if (!options.json) {
-        out << "  filtering load of " << mount->id << " at " << mode->frequency
-            << " Hz: " << fixed(load, 3) << " core-equivalents of this machine (" << per_point
-            << " s per point: a catalog's "
-            << "filtering_seconds_per_point)\n";
-      }
-    }
-    if (!options.out.empty()) {
-      io::prepare_output_folder(options.out, "--out");
-      const std::string written = options.out + "/" + std::filesystem::path(path).stem().string() +
-                                  "_" + pipeline.name + ".pcd";
-      io::write_cloud(written, result, io::CloudEncoding::binary);
-      item["output"] = written;
-      if (!options.json) out << "  wrote " << written << '\n';
-    }
-    report["clouds"].push_back(item);
+    report.clouds.push_back(filter_cloud(path, options, pipeline, mount, mode));
   }
-  report["peak_memory_mib"] = peak_memory_mib();
+  report.peak_memory_mib = peak_memory_mib();
   if (options.json) {
-    out << report.dump(2) << '\n';
+    out << filter_clouds_json(report).dump(2) << '\n';
   } else {
-    out << "peak resident memory of the process: " << fixed(peak_memory_mib(), 1) << " MiB\n";
+    print_filter_clouds(report, out);
   }
   return kOk;
 }

@@ -10,6 +10,8 @@
 #include "report/check_json.hpp"
 #include "report/check_junit.hpp"
 #include "report/check_text.hpp"
+#include "report/filter_json.hpp"
+#include "report/filter_text.hpp"
 #include "report/localize_json.hpp"
 #include "report/localize_text.hpp"
 #include "report/requirement_text.hpp"
@@ -292,4 +294,36 @@ TEST_CASE("select: a relaxation trace gives the same costs in text, JSON and HTM
   CHECK(contains(html, "<td class=\"text\">transfer: usb</td><td>34</td>"));
   CHECK(contains(html, "<th class=\"text\">total</th><th>1234</th>"));
   CHECK(contains(html, "<p>front: cam/m30</p>"));
+}
+
+TEST_CASE("filter: a mount's load gives the same numbers as text and JSON", "[cli]") {
+  cli::FilterSceneReport report;
+  report.rig_name = "Cart";
+  report.scene = "office";
+  report.pipeline = "P4";
+  report.frames = 3;
+  // 30 Hz, 20,000 of 100,000 points kept, 4 ms median per frame: U_f = 0.004 x 30 = 0.12 cores,
+  // 0.004 / 100,000 = 4e-08 s per point.
+  report.mounts.push_back({"front", 30.0, 100000, 20000, {0.004, 0.005}, {0.12, 4e-08}});
+  report.total_load_cores = 0.12;
+  report.loads_file = "loads.yaml";
+  std::ostringstream text;
+  cli::print_filter_scene(report, text);
+  CHECK(contains(text.str(), "Cart in the office scene, pipeline P4, 3 frames per sensor"));
+  CHECK(contains(text.str(), "100000"));
+  CHECK(contains(text.str(), "20000"));
+  CHECK(contains(text.str(), "4.00"));   // median ms, two decimals
+  CHECK(contains(text.str(), "5.00"));   // p95 ms
+  CHECK(contains(text.str(), "0.120"));  // cores, three decimals
+  CHECK(contains(text.str(), "4e-08"));  // s per point, 3 significant digits
+  CHECK(contains(text.str(), "U_f = 0.120 core-equivalents"));
+  CHECK(contains(text.str(), "wrote the loads per sensor to loads.yaml"));
+  const json j = cli::filter_scene_json(report);
+  CHECK(j["mounts"][0]["mount"] == "front");
+  CHECK(j["mounts"][0]["points_per_frame"] == 100000);
+  CHECK(j["mounts"][0]["median_s"].get<double>() == Approx(0.004));
+  CHECK(j["mounts"][0]["filtering_load_cores"].get<double>() == Approx(0.12));
+  CHECK(j["mounts"][0]["filtering_seconds_per_point"].get<double>() == Approx(4e-08));
+  CHECK(j["total_filtering_load_cores"].get<double>() == Approx(0.12));
+  CHECK(j["frames"] == 3);
 }
