@@ -158,6 +158,30 @@ TEST_CASE("a mount id that is not a ROS name is refused with file:line:col") {
   }
 }
 
+// Radians typed into a degrees field (issue 30, item 7): 0.35 is 20 deg in radians. The rig
+// still loads (2.5 deg tilts exist), but the warning names the field where it is written.
+TEST_CASE("rpy_deg that looks like radians is a warning naming file:line:col") {
+  TempFolder folder;
+  folder.write("sensors.yaml", kLibrary);
+  folder.write("req.yaml", kRequirements);
+  const std::string text = replaced(kRig, "rpy_deg: [0, 20, 0]", "rpy_deg: [0, 0.35, 0]");
+  const std::string rig = folder.write("rig.yaml", text);
+  const int line = line_of(text, "rpy_deg: [0, 0.35, 0]");
+  REQUIRE(line > 0);
+  const CliResult metrics = run_cli({"metrics", rig});
+  INFO(metrics.out);
+  CHECK(metrics.exit_code == 0);
+  CHECK(metrics.out.find(folder.path() + "/rig.yaml:" + std::to_string(line) + ":") !=
+        std::string::npos);
+  CHECK(metrics.out.find("mounts[0].pose.rpy_deg") != std::string::npos);
+  CHECK(metrics.out.find("looks like radians") != std::string::npos);
+  CHECK(metrics.out.find("20.05") != std::string::npos);  // 0.35 rad in degrees
+  // Whole degrees, or any angle beyond pi, read as meant.
+  const std::string whole =
+      folder.write("whole.yaml", replaced(kRig, "rpy_deg: [0, 20, 0]", "rpy_deg: [0, 2.5, 90]"));
+  CHECK(run_cli({"metrics", whole}).out.find("looks like radians") == std::string::npos);
+}
+
 TEST_CASE("bad input: missing file, YAML syntax error and an empty file") {
   TempFolder folder;
   SECTION("missing file") {

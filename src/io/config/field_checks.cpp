@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/rotation.hpp"
@@ -91,12 +92,31 @@ model::Pose3 xyz_rpy_deg_pose(MapReader& pose, Need xyz_need) {
                                 "[roll, pitch, yaw] in degrees, finite (default [0, 0, 0])");
   const model::Vec3 position =
       xyz ? model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : model::Vec3::Zero();
+  if (rpy) warn_if_radians(pose, "rpy_deg", *rpy);
   model::Vec3 angles = model::Vec3::Zero();
   if (rpy) {
     angles = model::Vec3(model::deg_to_rad((*rpy)[0]), model::deg_to_rad((*rpy)[1]),
                          model::deg_to_rad((*rpy)[2]));
   }
   return model::pose_from_xyz_rpy(position, angles);
+}
+
+void warn_if_radians(MapReader& reader, const std::string& key,
+                     const std::vector<double>& degrees) {
+  constexpr double kHalfTurnRad = 3.141592653589793;
+  const bool within_half_turn = std::all_of(degrees.begin(), degrees.end(),
+                                            [&](double v) { return std::abs(v) <= kHalfTurnRad; });
+  const bool fractional =
+      std::any_of(degrees.begin(), degrees.end(), [](double v) { return v != std::round(v); });
+  if (!within_half_turn || !fractional) return;
+  std::string in_degrees;
+  for (const double v : degrees) {
+    in_degrees += (in_degrees.empty() ? "[" : ", ") + model::format_number(model::rad_to_deg(v), 4);
+  }
+  reader.diagnostics().warning(
+      reader.location(key), reader.field(key),
+      "looks like radians: every angle lies within +-pi and not all are whole degrees",
+      "degrees (read as radians these would be " + in_degrees + "] deg)");
 }
 
 }  // namespace rigdesign::io

@@ -4,6 +4,7 @@
 // absent or invalid so that loading carries on and reports every problem at once.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/model/eigen_types.hpp"
@@ -39,6 +40,10 @@ std::string ros_name(MapReader& reader, const std::string& key, const std::strin
 /// `xyz_need` says whether xyz may be left out (then [0, 0, 0]); rpy_deg always may. Other
 /// keys are left for the caller to read or reject.
 model::Pose3 xyz_rpy_deg_pose(MapReader& pose, Need xyz_need);
+/// Warns at `key` (a list of angles in degrees) when the values look like radians typed into
+/// a degrees field: all within +-pi and some not a whole number of degrees. A warning, not an
+/// error: a tilt of 2.5 deg is possible, just rare beside whole-degree mounts.
+void warn_if_radians(MapReader& reader, const std::string& key, const std::vector<double>& degrees);
 /// `basis: datasheet | measured | estimate`.
 model::Basis basis(MapReader& reader, Need need);
 
