@@ -76,7 +76,8 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   const double top = rig.body.area_top();
   costmap::CostmapParams& p = config.costmap;
   p.resolution = 0.05;  // nav2's default
-  p.size_x = p.size_y = std::max(3.0, round_up(2 * rig.distance_of_interest, 0.5));
+  // nav2 declares the window's width and height as whole metres (int parameters).
+  p.size_x = p.size_y = std::max(3.0, round_up(2 * rig.distance_of_interest, 1.0));
   p.robot_radius = config.robot_radius;
   p.inflation.inscribed_radius = config.inscribed_radius;
   config.inflation_margin = kInflationMargin;

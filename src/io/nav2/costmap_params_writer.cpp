@@ -1,6 +1,7 @@
 #include "rigdesign/io/nav2/costmap_params_writer.hpp"
 
 #include <array>
+#include <cmath>
 #include <sstream>
 
 #include "io/emit/yaml_emit.hpp"
@@ -17,6 +18,11 @@ std::string footprint_text(const std::vector<model::Vec2>& footprint) {
             model::exact_number(footprint[i].y()) + "]";
   }
   return text + "]\"";
+}
+
+// nav2 declares width and height as whole metres (int): a window side rounded up to one.
+std::string whole_metres(double metres) {
+  return std::to_string(static_cast<long long>(std::ceil(metres - 1e-9)));
 }
 
 bool voxel_layer(const deploy::CostmapConfig& config) {
@@ -47,8 +53,8 @@ void write_obstacle_layer(std::ostringstream& out, const deploy::CostmapConfig& 
   write_key(out, l, "enabled", yaml_bool(true));
   if (voxel) {
     write_key(out, l, "publish_voxel_map", yaml_bool(true));
-    write_key(out, l, "origin_z", model::exact_number(p.voxel.z_min));
-    write_key(out, l, "z_resolution", model::exact_number(p.voxel.z_resolution));
+    write_key(out, l, "origin_z", yaml_float(p.voxel.z_min));
+    write_key(out, l, "z_resolution", yaml_float(p.voxel.z_resolution));
     write_key(out, l, "z_voxels",
               std::to_string(
                   static_cast<int>((p.voxel.z_max - p.voxel.z_min) / p.voxel.z_resolution + 0.5)));
@@ -74,7 +80,7 @@ void write_obstacle_layer(std::ostringstream& out, const deploy::CostmapConfig& 
     write_key(out, k, "clearing", yaml_bool(s.clearing));
     for (std::size_t i = 0; i < nav2::kSourceRangeKeys.size(); ++i) {
       const nav2::SourceNumberKey& range = nav2::kSourceRangeKeys[i];
-      write_key(out, k, range.key, model::exact_number(s.*range.field), range_why[i]);
+      write_key(out, k, range.key, yaml_float(s.*range.field), range_why[i]);
     }
     const std::array<std::string, 2> height_why = {
         "floor flatness + " + model::format_number(config.floor_noise_sigmas) +
@@ -83,7 +89,7 @@ void write_obstacle_layer(std::ostringstream& out, const deploy::CostmapConfig& 
         "top of the area to perceive"};
     for (std::size_t i = 0; i < nav2::kSourceHeightKeys.size(); ++i) {
       const nav2::SourceNumberKey& height = nav2::kSourceHeightKeys[i];
-      write_key(out, k, height.key, model::exact_number(s.*height.field), height_why[i]);
+      write_key(out, k, height.key, yaml_float(s.*height.field), height_why[i]);
     }
   }
 }
@@ -94,7 +100,7 @@ void write_layers(std::ostringstream& out, const deploy::CostmapConfig& config,
                   const std::string& in) {
   const costmap::CostmapParams& p = config.costmap;
   if (config.footprint.empty()) {
-    write_key(out, in, "robot_radius", model::exact_number(config.robot_radius));
+    write_key(out, in, "robot_radius", yaml_float(config.robot_radius));
   } else {
     write_key(out, in, "footprint", footprint_text(config.footprint));
   }
@@ -106,14 +112,14 @@ void write_layers(std::ostringstream& out, const deploy::CostmapConfig& config,
   write_key(out, l, "enabled", yaml_bool(true));
   write_key(out, l, "hit", std::to_string(p.hit.hit));
   write_key(out, l, "hit_max", std::to_string(p.hit.hit_max));
-  write_key(out, l, "d_threshold", model::exact_number(p.hit.d_threshold));
-  write_key(out, l, "d_duration", model::exact_number(p.hit.d_duration));
+  write_key(out, l, "d_threshold", yaml_float(p.hit.d_threshold));
+  write_key(out, l, "d_duration", yaml_float(p.hit.d_duration));
   out << in << nav2::kInflationLayer << ":\n";
   write_key(out, l, "plugin", yaml_quoted(std::string(nav2::kInflationLayerClass)));
   write_key(out, l, "enabled", yaml_bool(true));
-  write_key(out, l, "inflation_radius", model::exact_number(p.inflation.inflation_radius),
+  write_key(out, l, "inflation_radius", yaml_float(p.inflation.inflation_radius),
             "circumscribed radius + " + model::format_number(config.inflation_margin) + " m");
-  write_key(out, l, "cost_scaling_factor", model::exact_number(p.inflation.cost_scaling_factor));
+  write_key(out, l, "cost_scaling_factor", yaml_float(p.inflation.cost_scaling_factor));
 }
 
 // nav2's nesting of a costmap node's parameters: <name>: <name>: ros__parameters:.
@@ -138,9 +144,10 @@ std::string nav2_costmap_text(const deploy::CostmapConfig& config, const std::st
   write_key(out, in, "global_frame", "odom");
   write_key(out, in, "robot_base_frame", yaml_scalar(config.robot_base_frame));
   write_key(out, in, "rolling_window", yaml_bool(true));
-  write_key(out, in, "width", model::exact_number(p.size_x), "twice the distance of interest");
-  write_key(out, in, "height", model::exact_number(p.size_y));
-  write_key(out, in, "resolution", model::exact_number(p.resolution));
+  write_key(out, in, "width", whole_metres(p.size_x),
+            "twice the distance of interest, in whole metres (nav2 declares an int)");
+  write_key(out, in, "height", whole_metres(p.size_y));
+  write_key(out, in, "resolution", yaml_float(p.resolution));
   write_key(out, in, "plugins", "[" + plugins + "]");
   write_layers(out, config, in);
   write_costmap_block(out, "global_costmap");
@@ -148,7 +155,7 @@ std::string nav2_costmap_text(const deploy::CostmapConfig& config, const std::st
   write_key(out, in, "publish_frequency", yaml_float(1.0));
   write_key(out, in, "global_frame", "map");
   write_key(out, in, "robot_base_frame", yaml_scalar(config.robot_base_frame));
-  write_key(out, in, "resolution", model::exact_number(p.resolution));
+  write_key(out, in, "resolution", yaml_float(p.resolution));
   write_key(out, in, "track_unknown_space", yaml_bool(true));
   write_key(out, in, "plugins",
             "[" + yaml_quoted(std::string(nav2::kStaticLayer)) + ", " + plugins + "]");

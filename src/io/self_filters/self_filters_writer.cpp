@@ -31,8 +31,8 @@ std::string self_filters_text(const std::vector<deploy::SelfFilter>& filters,
             << model::format_number(model::rad_to_deg(band.upper), 4) << " deg\n";
         out << "      type: laser_filters/LaserScanAngularBoundsFilterInPlace\n";
         out << "      params:\n";
-        out << "        lower_angle: " << model::exact_number(band.lower) << '\n';
-        out << "        upper_angle: " << model::exact_number(band.upper) << '\n';
+        out << "        lower_angle: " << yaml_float(band.lower) << '\n';
+        out << "        upper_angle: " << yaml_float(band.upper) << '\n';
         out << "        replace_with_nan: " << yaml_bool(true) << '\n';
       }
     }
@@ -47,12 +47,12 @@ std::string self_filters_text(const std::vector<deploy::SelfFilter>& filters,
         out << yaml_scalar(filter.mount_id + "_self_filter_" + std::to_string(i + 1)) << ":  # "
             << box.part << ", " << box.hits << " rays\n  ros__parameters:\n";
         out << "    input_frame: " << yaml_scalar(box_frame) << '\n';
-        out << "    min_x: " << model::exact_number(low.x())
-            << "\n    max_x: " << model::exact_number(high.x()) << '\n';
-        out << "    min_y: " << model::exact_number(low.y())
-            << "\n    max_y: " << model::exact_number(high.y()) << '\n';
-        out << "    min_z: " << model::exact_number(low.z())
-            << "\n    max_z: " << model::exact_number(high.z()) << '\n';
+        out << "    min_x: " << yaml_float(low.x()) << "\n    max_x: " << yaml_float(high.x())
+            << '\n';
+        out << "    min_y: " << yaml_float(low.y()) << "\n    max_y: " << yaml_float(high.y())
+            << '\n';
+        out << "    min_z: " << yaml_float(low.z()) << "\n    max_z: " << yaml_float(high.z())
+            << '\n';
         out << "    negative: true\n    keep_organized: false\n";
       }
     }
