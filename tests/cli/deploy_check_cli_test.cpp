@@ -43,14 +43,17 @@ const std::string kBodyOnly = R"(rear_lidar_self_filter:
 TEST_CASE("check --filters: a filter hiding a required sector fails at its line", "[deploy]") {
   TempFolder folder;
   const std::string cart = source_path("rigs/cart_two_scanners.yaml");
-  const CliResult hides = run_cli({"check", cart, "--filters", folder.write("hides.yaml", kHidesRear)});
+  const CliResult hides =
+      run_cli({"check", cart, "--filters", folder.write("hides.yaml", kHidesRear)});
   INFO(hides.out << hides.err);
   CHECK(hides.exit_code == 1);
   // The filter's entry is on line 3 of the file ("filter1:" at column 5).
-  CHECK(hides.out.find(folder.path() + "/hides.yaml:3:5: sectors: fail: D3 deployed coverage: back") !=
+  CHECK(hides.out.find(folder.path() +
+                       "/hides.yaml:3:5: sectors: fail: D3 deployed coverage: back") !=
         std::string::npos);
   CHECK(hides.out.find("rear_lidar hides_the_rear drops (-0.8, 0.8) rad") != std::string::npos);
-  const CliResult narrowed = run_cli({"check", cart, "--filters", folder.write("body.yaml", kBodyOnly)});
+  const CliResult narrowed =
+      run_cli({"check", cart, "--filters", folder.write("body.yaml", kBodyOnly)});
   INFO(narrowed.out << narrowed.err);
   CHECK(narrowed.exit_code == 0);
   // The exported files pass too.
@@ -90,14 +93,16 @@ TEST_CASE("check --nav2: a range limit that opens a blind ring fails, a missing 
         std::string::npos);
   CHECK(ring.out.find("front_camera obstacle_min_range 1.2 m") != std::string::npos);
   // The top lidar left out of the sources: the costmap never sees it.
-  const std::string listed = "observation_sources: front_camera left_camera right_camera back_camera top_lidar";
+  const std::string listed =
+      "observation_sources: front_camera left_camera right_camera back_camera top_lidar";
   REQUIRE(text.find(listed) != std::string::npos);
   std::string without = text;
   without.replace(without.find(listed), listed.size(),
                   "observation_sources: front_camera left_camera right_camera back_camera");
   const std::size_t block = without.find("        top_lidar:\n");
   without.erase(block, without.find("      hit_layer:", block) - block);
-  const CliResult missing = run_cli({"check", rig, "--nav2", folder.write("without.yaml", without)});
+  const CliResult missing =
+      run_cli({"check", rig, "--nav2", folder.write("without.yaml", without)});
   INFO(missing.out << missing.err);
   CHECK(missing.exit_code == 1);
   CHECK(missing.out.find("fail: D1 observation source for top_lidar") != std::string::npos);
@@ -109,43 +114,59 @@ TEST_CASE("check --nav2 / --filters: bad files exit 2 naming file:line:col and t
   const std::string cart = source_path("rigs/cart_two_scanners.yaml");
   const auto nav2 = [&](const std::string& layers) {
     return "local_costmap:\n  local_costmap:\n    ros__parameters:\n"
-           "      robot_radius: 0.36\n" + layers;
+           "      robot_radius: 0.36\n" +
+           layers;
   };
   // A listed layer without its plugin class.
-  const CliResult plugin = run_cli(
-      {"check", cart, "--nav2",
-       folder.write("plugin.yaml", nav2("      plugins: [\"obstacle_layer\"]\n      obstacle_layer:\n"
-                                        "        observation_sources: front_lidar\n"
-                                        "        front_lidar: {data_type: LaserScan}\n"))});
+  const CliResult plugin =
+      run_cli({"check", cart, "--nav2",
+               folder.write("plugin.yaml",
+                            nav2("      plugins: [\"obstacle_layer\"]\n      obstacle_layer:\n"
+                                 "        observation_sources: front_lidar\n"
+                                 "        front_lidar: {data_type: LaserScan}\n"))});
   CHECK(plugin.exit_code == 2);
   CHECK(plugin.out.find("plugin.yaml:7:9") != std::string::npos);
   CHECK(plugin.out.find("has no plugin") != std::string::npos);
   // A source named after no mount.
-  const CliResult source = run_cli(
-      {"check", cart, "--nav2",
-       folder.write("source.yaml", nav2("      obstacle_layer:\n        plugin: x\n"
-                                        "        observation_sources: bumper\n"
-                                        "        bumper: {data_type: LaserScan}\n"))});
+  const CliResult source =
+      run_cli({"check", cart, "--nav2",
+               folder.write("source.yaml", nav2("      obstacle_layer:\n        plugin: x\n"
+                                                "        observation_sources: bumper\n"
+                                                "        bumper: {data_type: LaserScan}\n"))});
   CHECK(source.exit_code == 2);
   CHECK(source.out.find("source.yaml:8:17: bumper") != std::string::npos);
   CHECK(source.out.find("names no mount") != std::string::npos);
   // A negative range.
-  const CliResult negative = run_cli(
-      {"check", cart, "--nav2",
-       folder.write("negative.yaml", nav2("      obstacle_layer:\n        plugin: x\n"
-                                          "        observation_sources: front_lidar\n"
-                                          "        front_lidar:\n"
-                                          "          raytrace_min_range: -1\n"))});
+  const CliResult negative =
+      run_cli({"check", cart, "--nav2",
+               folder.write("negative.yaml", nav2("      obstacle_layer:\n        plugin: x\n"
+                                                  "        observation_sources: front_lidar\n"
+                                                  "        front_lidar:\n"
+                                                  "          raytrace_min_range: -1\n"))});
   CHECK(negative.exit_code == 2);
   CHECK(negative.out.find("negative.yaml:9:31") != std::string::npos);
   CHECK(negative.out.find("raytrace_min_range: is negative") != std::string::npos);
   // A filter file for a sensor the rig lacks.
-  const CliResult lacks = run_cli(
-      {"check", cart, "--filters",
-       folder.write("lacks.yaml", "top_lidar_self_filter:\n  ros__parameters:\n    filter1:\n"
-                                  "      type: laser_filters/LaserScanRangeFilter\n"
-                                  "      params: {lower_threshold: 0.3}\n")});
+  const CliResult lacks =
+      run_cli({"check", cart, "--filters",
+               folder.write("lacks.yaml",
+                            "top_lidar_self_filter:\n  ros__parameters:\n    filter1:\n"
+                            "      type: laser_filters/LaserScanRangeFilter\n"
+                            "      params: {lower_threshold: 0.3}\n")});
   CHECK(lacks.exit_code == 2);
   CHECK(lacks.out.find("lacks.yaml:1:1: top_lidar_self_filter") != std::string::npos);
   CHECK(lacks.out.find("names no mount") != std::string::npos);
+  // Degrees in a radians field (issue 30, item 7): -135.1 is beyond -2 pi, so not a scan angle.
+  const CliResult degrees =
+      run_cli({"check", cart, "--filters",
+               folder.write("degrees.yaml",
+                            "rear_lidar_self_filter:\n  ros__parameters:\n    filter1:\n"
+                            "      type: laser_filters/LaserScanAngularBoundsFilterInPlace\n"
+                            "      params: {lower_angle: -135.1, upper_angle: 135.1}\n")});
+  INFO(degrees.out);
+  CHECK(degrees.exit_code == 2);
+  // "lower_angle: -135.1" starts at column 16 of line 5; the value at column 29.
+  CHECK(degrees.out.find("degrees.yaml:5:29: ") != std::string::npos);
+  CHECK(degrees.out.find("lower_angle: looks like degrees") != std::string::npos);
+  CHECK(degrees.out.find("-2.358 rad") != std::string::npos);  // -135.1 deg in radians
 }

@@ -16,6 +16,15 @@ constexpr double kPi = std::numbers::pi;
 constexpr const char* kAngle = "an angle in radians in [-pi, pi]";
 constexpr const char* kMetres = "metres";
 
+// laser_filters reads its bounds in radians; beyond a full turn either way no scan angle lies,
+// so such a value is degrees typed into a radians field (-135.1 for -2.358).
+void refuse_degrees(MapReader& params, const std::string& key, double value) {
+  params.require(std::abs(value) <= 2 * kPi, key,
+                 "looks like degrees: " + model::format_number(value, 6) + " is beyond +-2 pi",
+                 std::string(kAngle) + " (" + model::format_number(value, 6) + " deg is " +
+                     model::format_number(value * kPi / 180, 4) + " rad)");
+}
+
 // The mount a node filters, from its name: the longest mount id it equals or starts with
 // followed by '_'; empty when none.
 std::string mount_of(const std::string& node, const model::Rig& rig) {
@@ -106,6 +115,9 @@ void read_laser_filter(MapReader& entry, const std::string& mount, const model::
     params->boolean("replace_with_nan", Need::optional);
     params->boolean("wrap_angle", Need::optional);
     params->reject_unknown_keys();
+    for (const auto& [key, value] : {std::pair{"lower_angle", lower}, {"upper_angle", upper}}) {
+      if (value) refuse_degrees(*params, key, *value);
+    }
     if (!lower || !upper) return;
     const bool in_place = type.ends_with("InPlace");
     std::vector<model::AzimuthBand>& bands = filter.limits.excluded_azimuths;
