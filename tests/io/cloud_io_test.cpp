@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "rigdesign/model/input_error.hpp"
+#include "support/byte_text.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;
@@ -31,13 +32,6 @@ model::PointCloud small_cloud() {
   cloud.origin = {1.5f, -2.25f, 0.125f};
   cloud.orientation = Eigen::Quaternionf(0.9f, 0.1f, -0.3f, 0.2f).normalized();
   return cloud;
-}
-
-template <typename T>
-std::string bytes_of(T value) {
-  std::string bytes(sizeof value, '\0');
-  std::memcpy(bytes.data(), &value, sizeof value);
-  return bytes;
 }
 
 // An LZF stream with literal runs only: a control byte (run length - 1) before each run of

@@ -10,6 +10,7 @@
 
 #include "rigdesign/model/input_error.hpp"
 #include "support/box_mesh.hpp"
+#include "support/byte_text.hpp"
 #include "support/input_errors.hpp"
 #include "support/temp_folder.hpp"
 
@@ -43,13 +44,6 @@ void check_unit_cube(const model::TriangleMesh& mesh) {
   CHECK(mesh.triangles.size() == 12);
   CHECK(test::surface_area(mesh) == Approx(6.0));
   CHECK(signed_volume(mesh) == Approx(1.0));
-}
-
-template <typename T>
-std::string bytes_of(T value) {
-  std::string bytes(sizeof value, '\0');
-  std::memcpy(bytes.data(), &value, sizeof value);
-  return bytes;
 }
 
 // The InputError message `load` throws, or "" when it throws none.
