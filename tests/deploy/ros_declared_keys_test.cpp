@@ -5,9 +5,11 @@
 // files are read with yaml-cpp, and a scalar's type is the one rclcpp's parameter YAML gives it.
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cctype>
+#include <cstdlib>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -37,17 +39,31 @@ Declared declared(const YAML::Node& entries) {
   return result;
 }
 
+// A YAML integer: an optional sign and digits.
+bool is_integer(const std::string& text) {
+  const std::size_t first = text.empty() || (text[0] != '+' && text[0] != '-') ? 0 : 1;
+  return first < text.size() &&
+         std::all_of(text.begin() + static_cast<std::ptrdiff_t>(first), text.end(),
+                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+}
+
+// A YAML float: a number with a point or an exponent (no inf or nan is ever exported).
+bool is_real(const std::string& text) {
+  if (text.find_first_of(".eE") == std::string::npos) return false;
+  if (text.find_first_not_of("+-.0123456789eE") != std::string::npos) return false;
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size();
+}
+
 // The type rclcpp's YAML parser gives a value: a sequence of strings, or a scalar by its form.
 std::string yaml_type(const YAML::Node& node) {
   if (node.IsSequence()) return "string array";
   const std::string& text = node.Scalar();
   if (node.Tag() == "!") return "string";  // quoted
   if (text == "true" || text == "false") return "bool";
-  if (std::regex_match(text, std::regex("[-+]?[0-9]+"))) return "int";
-  if (std::regex_match(text, std::regex("[-+]?([0-9]*\\.[0-9]+|[0-9]+\\.[0-9]*)([eE][-+]?[0-9]+)?|"
-                                        "[-+]?[0-9]+[eE][-+]?[0-9]+"))) {
-    return "double";
-  }
+  if (is_integer(text)) return "int";
+  if (is_real(text)) return "double";
   return "string";
 }
 
