@@ -12,7 +12,17 @@ std::string xml_escaped(const std::string& text) {
       case '>': escaped += "&gt;"; break;
       case '"': escaped += "&quot;"; break;
       case '\'': escaped += "&apos;"; break;
-      default: escaped += c;
+      // XML 1.0 allows no control character but tab, newline and carriage return, not even
+      // as a character reference: such a byte (in a name typed in a file) becomes U+FFFD.
+      case '\t':
+      case '\n':
+      case '\r': escaped += c; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+          escaped += "\xEF\xBF\xBD";
+        } else {
+          escaped += c;
+        }
     }
   }
   return escaped;

@@ -128,11 +128,9 @@ TEST_CASE("bad input: exit 2 with file:line:col and the field") {
 // Mount ids become URDF link names, nav2 source keys and filter node names: anything but a ROS
 // name is refused where it is written, so no exported file needs quoting or escaping.
 TEST_CASE("a mount id that is not a ROS name is refused with file:line:col") {
-  const std::vector<std::pair<std::string, std::string>> ids = {{"quote", "'fr\"ont'"},
-                                                                {"angle bracket", "'fr<ont'"},
-                                                                {"space", "'front cam'"},
-                                                                {"leading digit", "2front"},
-                                                                {"hyphen", "front-cam"}};
+  const std::vector<std::pair<std::string, std::string>> ids = {
+      {"quote", "'fr\"ont'"},      {"angle bracket", "'fr<ont'"}, {"space", "'front cam'"},
+      {"leading digit", "2front"}, {"hyphen", "front-cam"},       {"empty", "''"}};
   for (const auto& [name, id] : ids) {
     DYNAMIC_SECTION(name) {
       TempFolder folder;
@@ -156,6 +154,17 @@ TEST_CASE("a mount id that is not a ROS name is refused with file:line:col") {
       CHECK_FALSE(std::filesystem::exists(folder.path() + "/out"));  // nothing half-written
     }
   }
+  // A control character in the id: the JUnit report quoting it stays well-formed XML (XML 1.0
+  // cannot hold U+0001, not even as a reference), with U+FFFD in its place.
+  TempFolder folder;
+  folder.write("sensors.yaml", kLibrary);
+  folder.write("req.yaml", kRequirements);
+  const std::string rig =
+      folder.write("rig.yaml", replaced(kRig, "id: front", "id: \"fr\\u0001ont\""));
+  const CliResult junit = run_cli({"check", rig, "--format", "junit"});
+  CHECK(junit.exit_code == 2);
+  CHECK(junit.out.find('\x01') == std::string::npos);
+  CHECK(junit.out.find("fr\xEF\xBF\xBDont") != std::string::npos);
 }
 
 // Radians typed into a degrees field (issue 30, item 7): 0.35 is 20 deg in radians. The rig

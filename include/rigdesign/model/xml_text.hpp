@@ -5,7 +5,8 @@
 
 namespace rigdesign::model {
 
-/// `text` with & < > " ' replaced by their entities.
+/// `text` with & < > " ' replaced by their entities, and the control characters XML 1.0
+/// cannot hold (below 0x20 but tab, newline and carriage return; DEL) by U+FFFD.
 std::string xml_escaped(const std::string& text);
 
 }  // namespace rigdesign::model

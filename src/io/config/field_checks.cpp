@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/rotation.hpp"
@@ -74,9 +75,10 @@ std::string ros_name(MapReader& reader, const std::string& key, const std::strin
       what +
       ": letters, digits and underscores, not starting with a digit (a ROS name, so "
       "that URDF links, nav2 sources and filter nodes can be named after it)";
-  const std::string name = reader.text(key, Need::required, expected).value_or("");
-  if (name.empty()) return name;
-  const bool valid = !std::isdigit(static_cast<unsigned char>(name.front())) &&
+  const std::optional<std::string> text = reader.text(key, Need::required, expected);
+  if (!text) return "";  // missing or not a scalar: text() reported it
+  const std::string& name = *text;
+  const bool valid = !name.empty() && !std::isdigit(static_cast<unsigned char>(name.front())) &&
                      std::all_of(name.begin(), name.end(), [](char c) {
                        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
                      });
