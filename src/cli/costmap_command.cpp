@@ -1,6 +1,6 @@
 // `rigdesign costmap --rig RIG --scenario NAME [--layer obstacle|voxel] [--no-hit-layer]
-// [--compare]`: drives the rig's robot through a scenario with the costmap in the loop
-// (issue 6 item 3), prints the outcome and the per-update times, and writes costmap frames
+// [--no-memory] [--compare]`: drives the rig's robot through a scenario with the costmap in
+// the loop (issue 6 item 3), prints the outcome and the per-update times, and writes costmap frames
 // (PNG), the final grids as map_server PGM + YAML and a summary JSON.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -42,6 +42,7 @@ struct CostmapOptions {
   std::string params;  // nav2 costmap parameter file
   std::string layer;   // empty: the parameters' layer (the scenario's default: obstacle)
   bool no_hit_layer = false;
+  bool no_memory = false;  // neither the Hit Layer nor any source's observation_persistence
   bool compare = false;
   std::optional<double> resolution;  // unset: the parameters' (the scenario's default: 0.05 m)
   std::optional<double> window;
@@ -55,15 +56,31 @@ struct CostmapOptions {
 struct Variant {
   costmap::ObstacleLayerKind layer = costmap::ObstacleLayerKind::obstacle;
   bool hit_layer = true;
+  bool persistence = false;  // the sources keep their clouds as the parameters say
   std::string name() const {
     return std::string(model::name_in(costmap::kObstacleLayerNames, layer)) +
-           (hit_layer ? "_hit" : "_no_hit");
+           (persistence ? "_persistence" : "") + (hit_layer ? "_hit" : "_no_hit");
   }
   std::string label() const {
-    return std::string(model::name_in(costmap::kObstacleLayerNames, layer)) +
-           (hit_layer ? " + Hit Layer" : ", no Hit Layer");
+    const std::string layer_name(model::name_in(costmap::kObstacleLayerNames, layer));
+    if (!persistence) return layer_name + (hit_layer ? " + Hit Layer" : ", no memory");
+    return layer_name + " + observation persistence" + (hit_layer ? " + Hit Layer" : "");
   }
 };
+
+// Whether any source the run uses keeps its clouds (nav2's observation_persistence).
+bool any_persistence(const model::Rig& rig, const scenarios::ScenarioParams& params) {
+  const std::vector<costmap::ObservationSource> sources = scenarios::mount_sources_of(rig, params);
+  return std::any_of(sources.begin(), sources.end(), [](const costmap::ObservationSource& s) {
+    return s.observation_persistence > 0.0;
+  });
+}
+
+void forget_persistence(scenarios::ScenarioParams& params) {
+  params.source.observation_persistence = 0.0;
+  for (costmap::NamedObservationSource& named : params.mount_sources)
+    named.source.observation_persistence = 0.0;
+}
 
 struct VariantRun {
   Variant variant;
@@ -109,6 +126,7 @@ nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig
       {"seed", options.seed},
       {"layer", std::string(model::name_in(costmap::kObstacleLayerNames, run.variant.layer))},
       {"hit_layer", run.variant.hit_layer},
+      {"observation_persistence", run.variant.persistence},
       {"hit", params.costmap.hit.hit},
       {"hit_max", params.costmap.hit.hit_max},
       {"resolution_m", params.costmap.resolution},
@@ -140,6 +158,7 @@ VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const R
                        const std::string& folder, scenarios::ScenarioParams params) {
   params.costmap.layer = variant.layer;
   params.costmap.use_hit_layer = variant.hit_layer;
+  if (!variant.persistence) forget_persistence(params);
   VariantRun run{variant, {}, folder, 0};
   io::prepare_output_folder(folder + "/frames", "--out");
   const costmap::HeightBand band{params.ground_clearance, inputs.rig.body.height};
@@ -261,6 +280,18 @@ void apply_params_file(const std::string& path, const model::Rig& rig,
   }
 }
 
+// The sources that keep their clouds, as "; observation_persistence left 5.8 s, ...".
+std::string persistence_text(const model::Rig& rig, const scenarios::ScenarioParams& params) {
+  const std::vector<costmap::ObservationSource> sources = scenarios::mount_sources_of(rig, params);
+  std::string text;
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    if (!(sources[i].observation_persistence > 0.0)) continue;
+    text += (text.empty() ? "; observation_persistence " : ", ") + rig.mounts[i].id + " " +
+            model::format_number(sources[i].observation_persistence, 3) + " s";
+  }
+  return text;
+}
+
 std::string window_text(const costmap::CostmapParams& costmap) {
   if (costmap.size_x == costmap.size_y) return model::format_number(costmap.size_x);
   return model::format_number(costmap.size_x) + " x " + model::format_number(costmap.size_y);
@@ -305,17 +336,24 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
   out << "  " << model::format_number(params.costmap.resolution) << " m cells, "
       << window_text(params.costmap) << " m window, " << model::format_number(options.update_rate)
       << " Hz updates, " << model::format_number(options.speed) << " m/s; Hit Layer hit "
-      << params.costmap.hit.hit << ", hit_max " << params.costmap.hit.hit_max << "\n";
+      << params.costmap.hit.hit << ", hit_max " << params.costmap.hit.hit_max
+      << persistence_text(inputs.rig, params) << "\n";
+  const bool persistence = any_persistence(inputs.rig, params) && !options.no_memory;
   std::vector<Variant> variants;
   if (options.compare) {
     for (costmap::ObstacleLayerKind layer :
          {costmap::ObstacleLayerKind::obstacle, costmap::ObstacleLayerKind::voxel}) {
-      for (bool hit : {false, true}) variants.push_back({layer, hit});
+      // Without any memory first, then the file's persistence, then paper 1's Hit Layer.
+      variants.push_back({layer, false, false});
+      if (persistence) variants.push_back({layer, false, true});
+      variants.push_back({layer, true, false});
     }
   } else {
     const costmap::ObstacleLayerKind layer =
         model::value_in(costmap::kObstacleLayerNames, options.layer).value_or(params.costmap.layer);
-    variants.push_back({layer, params.costmap.use_hit_layer && !options.no_hit_layer});
+    variants.push_back({layer,
+                        params.costmap.use_hit_layer && !options.no_hit_layer && !options.no_memory,
+                        persistence});
   }
   std::vector<VariantRun> runs;
   nlohmann::json all = nlohmann::json::array();
@@ -349,8 +387,12 @@ Command setup_costmap(CLI::App& parent) {
   app->add_option("--layer", options->layer,
                   "obstacle (2D) or voxel (3D) (default: the parameters', else obstacle)");
   app->add_flag("--no-hit-layer", options->no_hit_layer, "Run without paper 1's Hit Layer");
+  app->add_flag("--no-memory", options->no_memory,
+                "Run without any blind-gap memory: no Hit Layer, no source keeps its clouds "
+                "(observation_persistence 0)");
   app->add_flag("--compare", options->compare,
-                "Run both layers with and without the Hit Layer and print a table");
+                "Run both layers without memory, with the parameters' observation persistence "
+                "(if any) and with the Hit Layer, and print a table");
   app->add_option("--resolution", options->resolution, "Cell side [m] (default 0.05)")
       ->check(positive_up_to(1.0, "a cell side in (0, 1] m"));
   app->add_option("--window", options->window, "Rolling window side [m] (default 6)")

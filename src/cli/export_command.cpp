@@ -1,7 +1,9 @@
 // `rigdesign export RIG --to DIR [--parent LINK] [--scan-topic T] [--cloud-topic T]
-// [--max-speed V] [--update-rate F]`: writes what the rig means for its ROS 2 stack (issue 14):
+// [--max-speed V] [--update-rate F] [--hit-layer-plugin CLASS]`: writes what the rig means for its ROS 2 stack (issue 14):
 // the sensors' URDF macro, nav2 costmap parameters, self-filters; prints how each was derived.
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
 #include <ostream>
@@ -25,6 +27,21 @@ struct ExportOptions {
   deploy::DeployOptions deploy;
 };
 
+// pluginlib's class names: namespace::Class (nav2) or package/Class (STVL).
+bool plugin_class_name(const std::string& name) {
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  const std::size_t colons = name.find("::");
+  const std::size_t slash = name.find('/');
+  const std::size_t split = colons != std::string::npos ? colons : slash;
+  if (split == std::string::npos || split == 0) return false;
+  const std::size_t rest = split + (colons != std::string::npos ? 2 : 1);
+  if (rest >= name.size()) return false;
+  const std::string head = name.substr(0, split);
+  const std::string tail = name.substr(rest);
+  return std::all_of(head.begin(), head.end(), word) &&
+         std::all_of(tail.begin(), tail.end(), [&](char c) { return word(c) || c == ':'; });
+}
+
 int run_export(const ExportOptions& options, std::ostream& out) {
   require_option(options.deploy.max_speed >= 0.0, "--max-speed", "must not be negative",
                  "a speed in m/s (0: the requirements' R5 speed)");
@@ -34,6 +51,10 @@ int run_export(const ExportOptions& options, std::ostream& out) {
                  "a speed in m/s");
   require_option(options.deploy.update_rate > 0.0 && options.deploy.update_rate <= 100.0,
                  "--update-rate", "is out of range", "0 < rate <= 100 Hz");
+  const std::string& plugin = options.deploy.hit_layer_plugin;
+  require_option(plugin.empty() || plugin_class_name(plugin), "--hit-layer-plugin",
+                 "'" + plugin + "' is not a pluginlib class name",
+                 "package::Class or package/Class (letters, digits, '_')");
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
   const model::Requirements* requirements = inputs.requirements ? &*inputs.requirements : nullptr;
   const deploy::Deployment deployment =
@@ -56,7 +77,7 @@ Command setup_export(CLI::App& parent) {
   app->add_option("--to", options->to, "Output folder (created if missing)")->required();
   app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
   app->add_option("--requirements", options->requirements,
-                  "Requirements (default: the rig's); R5's speed sizes the Hit Layer");
+                  "Requirements (default: the rig's); R5's speed sizes the blind-gap memory");
   app->add_option("--parent", options->deploy.parent,
                   "Parent link of the sensor joints (default: the rig's base link, "
                   "base_footprint without a description)");
@@ -65,15 +86,19 @@ Command setup_export(CLI::App& parent) {
   app->add_option("--cloud-topic", options->deploy.cloud_topic,
                   "Topic of 3D sensors, {mount} is the mount id (default /{mount}/points)");
   app->add_option("--max-speed", options->deploy.max_speed,
-                  "Robot speed [m/s] for the Hit Layer rule (default: the requirements' R5)")
+                  "Robot speed [m/s] for the blind-gap memory rule (default: the requirements' R5)")
       ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
   app->add_option("--min-speed", options->deploy.min_speed,
-                  "Slowest driving speed [m/s] the Hit Layer must outlast a blind gap at "
+                  "Slowest driving speed [m/s] the memory must outlast a blind gap at "
                   "(default 0.25, nav2 Regulated Pure Pursuit's regulated minimum)")
       ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
   app->add_option("--update-rate", options->deploy.update_rate,
                   "Local costmap update rate [Hz] (default 5, nav2's)")
       ->check(positive_up_to(100.0, "a rate in (0, 100] Hz"));
+  app->add_option("--hit-layer-plugin", options->deploy.hit_layer_plugin,
+                  "Add paper 1's Hit Layer as this costmap plugin class (one you built; nav2 "
+                  "has none). Default: none, nav2's observation_persistence remembers the "
+                  "blind gaps");
   return {app, [options](std::ostream& out, std::ostream&) { return run_export(*options, out); }};
 }
 

@@ -1,6 +1,7 @@
 #include "rigdesign/costmap/costmap.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "rigdesign/costmap/cost_values.hpp"
 
@@ -19,6 +20,18 @@ GridWindow window_of(const CostmapParams& params) {
   window.resolution = params.resolution;
   window.origin_cell = window.origin_centred_on(model::Vec2::Zero());
   return window;
+}
+
+// The observation's cloud in the world frame, its sensor origin with it, computed as the
+// layers map points (in double) so that a kept cloud marks the cells it marked when new.
+model::PointCloud world_copy(const CloudObservation& observation) {
+  model::PointCloud world;
+  world.points.reserve(observation.cloud->size());
+  for (const model::Point3f& point : observation.cloud->points)
+    world.points.push_back((observation.T_world_cloud * point.cast<double>()).cast<float>());
+  world.origin =
+      (observation.T_world_cloud * observation.cloud->origin.cast<double>()).cast<float>();
+  return world;
 }
 
 // Checks before any layer allocates.
@@ -53,13 +66,25 @@ void Costmap::update(double time, const model::Pose3& T_world_robot,
   const Eigen::Vector2i origin = master_.window().origin_centred_on(robot);
   master_.move_origin(origin);
   hit_.move_origin(origin);
+  // nav2's purgeStaleObservations: older than its persistence (now - stamp > keep) goes.
+  std::erase_if(persisted_, [time](const PersistedObservation& kept) {
+    return time - kept.time > kept.source.observation_persistence;
+  });
+  std::vector<CloudObservation> all(observations.begin(), observations.end());
+  for (const PersistedObservation& kept : persisted_)
+    all.push_back({&kept.cloud, model::Pose3::Identity(), kept.source});
   if (params_.layer == ObstacleLayerKind::obstacle) {
     obstacle_.move_origin(origin);
-    obstacle_.update(observations);
+    obstacle_.update(all);
   } else {
     voxel_.move_origin(origin);
-    voxel_.update(observations);
+    voxel_.update(all);
     voxel_.project(projection_);
+  }
+  for (const CloudObservation& observation : observations) {
+    if (observation.cloud == nullptr || !(observation.source.observation_persistence > 0.0))
+      continue;
+    persisted_.push_back({time, world_copy(observation), observation.source});
   }
   const CostGrid& obstacles = obstacle_grid();
   // nav2 resets the master each cycle and the first layer writes it whole.

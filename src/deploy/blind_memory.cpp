@@ -36,6 +36,7 @@ std::vector<bool> blind_azimuths(const std::vector<metrics::AngleCoverage>& angl
 struct Pass {
   double keep = 0.0;  // [m]
   double seen = 0.0;  // [m]
+  int last_seen = -1;  // index of the azimuth where it is seen last before the gap; -1: none
 };
 
 // The pass of an obstacle that enters the gap at angles[enter] (on the left when `left`) and
@@ -58,7 +59,17 @@ Pass pass_from(const std::vector<metrics::AngleCoverage>& angles, const std::vec
   const double a_seen = std::max(0.0, a_enter - seen * step);
   const double x_first =
       std::min(std::sqrt(std::max(0.0, d * d - lateral * lateral)), along(lateral, a_seen));
-  return {std::max(0.0, x_enter - x_leave), std::max(0.0, x_first - x_enter)};
+  const int last_seen = seen > 0 ? ((enter + (left ? -1 : 1)) % n + n) % n : -1;
+  return {std::max(0.0, x_enter - x_leave), std::max(0.0, x_first - x_enter), last_seen};
+}
+
+// The Hit Layer's keep, in seconds: hit_max updates of the costmap.
+int hit_max_of(double keep_distance, double min_speed, double update_rate) {
+  return std::max(1, static_cast<int>(std::ceil(2 * update_rate * keep_distance / min_speed - 1e-9)));
+}
+
+double persistence_of(double keep_distance, double min_speed, double update_rate) {
+  return hit_max_of(keep_distance, min_speed, update_rate) / update_rate;
 }
 
 }  // namespace
@@ -122,6 +133,8 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
     gap.to = last;
     gap.keep_distance = longest.keep;
     gap.seen_distance = longest.seen;
+    gap.last_seen = longest.last_seen;
+    gap.persistence = persistence_of(longest.keep, min_speed, update_rate);
     gap.reaches_back = across_back || (last < std::numbers::pi ? folded(last) : folded(first)) >=
                                           std::numbers::pi - 1.5 * step;
     memory.gaps.push_back(gap);
@@ -139,7 +152,8 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
   const BlindGap& worst = memory.gaps[memory.worst_gap];
   const double keep_updates = update_rate * worst.keep_distance / min_speed;
   const double seen_updates = update_rate * worst.seen_distance / max_speed;
-  memory.hit.hit_max = std::max(1, static_cast<int>(std::ceil(2 * keep_updates - 1e-9)));
+  memory.hit.hit_max = hit_max_of(worst.keep_distance, min_speed, update_rate);
+  memory.persistence = worst.persistence;
   memory.hit.hit = std::clamp(
       static_cast<int>(std::ceil(memory.hit.hit_max / std::max(seen_updates, 1.0) - 1e-9)), 1,
       memory.hit.hit_max);
@@ -152,7 +166,9 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
                 number(seen_updates) + " updates at " + number(max_speed) +
                 " m/s): hit_max = ceil(2 x " + number(keep_updates) + ") = " +
                 std::to_string(memory.hit.hit_max) + ", hit = ceil(hit_max / " +
-                number(std::max(seen_updates, 1.0)) + ") = " + std::to_string(memory.hit.hit);
+                number(std::max(seen_updates, 1.0)) + ") = " + std::to_string(memory.hit.hit) +
+                "; observation_persistence = hit_max / " + number(update_rate) + " Hz = " +
+                number(memory.persistence) + " s";
   return memory;
 }
 

@@ -1,4 +1,5 @@
 // Issue 14 item 2: `check --nav2 --filters` guards the configuration a rig is deployed with.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <iterator>
@@ -89,7 +90,13 @@ TEST_CASE("check --nav2: a range limit that opens a blind ring fails, a missing 
   const CliResult ring = run_cli({"check", rig, "--nav2", folder.write("mower.yaml", mower)});
   INFO(ring.out << ring.err);
   CHECK(ring.exit_code == 1);
-  CHECK(ring.out.find("mower.yaml:33:31: sectors: fail: D3 deployed coverage: front") !=
+  // The finding is at the changed value: its line in the file's text, column 31 (10 spaces and
+  // "obstacle_min_range: " before it).
+  const std::string line = std::to_string(
+      1 + std::count(mower.begin(), mower.begin() + static_cast<std::ptrdiff_t>(mower.find(
+                                                         "obstacle_min_range: 1.2")),
+                     '\n'));
+  CHECK(ring.out.find("mower.yaml:" + line + ":31: sectors: fail: D3 deployed coverage: front") !=
         std::string::npos);
   CHECK(ring.out.find("front_camera obstacle_min_range 1.2 m") != std::string::npos);
   // The top lidar left out of the sources: the costmap never sees it.
@@ -100,7 +107,7 @@ TEST_CASE("check --nav2: a range limit that opens a blind ring fails, a missing 
   without.replace(without.find(listed), listed.size(),
                   "observation_sources: front_camera left_camera right_camera back_camera");
   const std::size_t block = without.find("        top_lidar:\n");
-  without.erase(block, without.find("      hit_layer:", block) - block);
+  without.erase(block, without.find("      inflation_layer:", block) - block);
   const CliResult missing =
       run_cli({"check", rig, "--nav2", folder.write("without.yaml", without)});
   INFO(missing.out << missing.err);
@@ -169,4 +176,49 @@ TEST_CASE("check --nav2 / --filters: bad files exit 2 naming file:line:col and t
   CHECK(degrees.out.find("degrees.yaml:5:29: ") != std::string::npos);
   CHECK(degrees.out.find("lower_angle: looks like degrees") != std::string::npos);
   CHECK(degrees.out.find("-2.358 rad") != std::string::npos);  // -135.1 deg in radians
+}
+
+TEST_CASE("check --nav2: a layer class outside nav2 and STVL warns; an undeclared key fails",
+          "[deploy]") {
+  TempFolder folder;
+  const std::string cart = source_path("rigs/cart_two_scanners.yaml");
+  const auto nav2 = [&](const std::string& plugin, const std::string& source_extra) {
+    return "local_costmap:\n  local_costmap:\n    ros__parameters:\n"
+           "      robot_radius: 0.36\n"
+           "      plugins: [\"obstacle_layer\", \"hit_layer\"]\n"
+           "      obstacle_layer:\n"
+           "        plugin: \"nav2_costmap_2d::ObstacleLayer\"\n"
+           "        observation_sources: front_lidar rear_lidar\n"
+           "        front_lidar: {data_type: LaserScan" +
+           source_extra +
+           "}\n"
+           "        rear_lidar: {data_type: LaserScan}\n"
+           "      hit_layer:\n"
+           "        plugin: \"" +
+           plugin + "\"\n";
+  };
+  // nav2's own and STVL's classes pass without a word.
+  const CliResult stvl = run_cli(
+      {"check", cart, "--nav2",
+       folder.write("stvl.yaml", nav2("spatio_temporal_voxel_layer/SpatioTemporalVoxelLayer", ""))});
+  INFO(stvl.out << stvl.err);
+  CHECK(stvl.exit_code == 0);
+  CHECK(stvl.out.find("warning") == std::string::npos);
+  // Any other class: nav2 cannot load it unless the user built it. "plugin:" of hit_layer is on
+  // line 12, its value at column 17 (8 spaces and "plugin: " before it).
+  const CliResult hit = run_cli(
+      {"check", cart, "--nav2", folder.write("hit.yaml", nav2("rigdesign::HitLayer", ""))});
+  INFO(hit.out << hit.err);
+  CHECK(hit.exit_code == 0);
+  CHECK(hit.out.find("hit.yaml:12:17: warning: hit_layer.plugin: names") !=
+        std::string::npos);
+  // ROS 1's obstacle_range is not a nav2 parameter: nav2 would ignore it without a word.
+  const CliResult ros1 = run_cli({"check", cart, "--nav2",
+                                  folder.write("ros1.yaml", nav2("nav2_costmap_2d::DenoiseLayer",
+                                                                 ", obstacle_range: 2.5"))});
+  INFO(ros1.out << ros1.err);
+  CHECK(ros1.exit_code == 2);
+  // Line 9: 8 spaces, "front_lidar: {" and "data_type: LaserScan, " put the key at column 45.
+  CHECK(ros1.out.find("ros1.yaml:9:45: ") != std::string::npos);
+  CHECK(ros1.out.find("obstacle_range") != std::string::npos);
 }

@@ -1,6 +1,7 @@
 #include "rigdesign/costmap/costmap.hpp"
 
 #include <catch2/catch.hpp>
+#include <numbers>
 #include <vector>
 
 #include "rigdesign/costmap/cost_values.hpp"
@@ -127,4 +128,76 @@ TEST_CASE("the Hit Layer keeps an obstacle the 2D layer cleared while the robot 
   CHECK(run(true, true) != costmap::cost::kLethal);   // commanded to move: 3 decrements clear it
   CHECK(run(false, false) !=
         costmap::cost::kLethal);  // no Hit Layer: gone at the first lidar update
+}
+
+// nav2's ObservationBuffer (purgeStaleObservations, observation_buffer.cpp at f4108e5): a
+// cloud is dropped once now - stamp > observation_persistence, so it still marks when its
+// age equals the persistence. Times in quarters of a second are exact in binary.
+TEST_CASE("costmap: a source's observation_persistence keeps its cloud marking until it is "
+          "older than that",
+          "[costmap]") {
+  costmap::CostmapParams params;
+  params.layer = costmap::ObstacleLayerKind::obstacle;
+  params.size_x = params.size_y = 4.0;
+  params.resolution = 0.1;
+  params.use_hit_layer = false;
+  // The same foam and lidar as above: the lidar's 2D ray clears the foam's cell each update.
+  const model::PointCloud camera = cloud_from({0.0f, 0.0f, 0.3f}, {{0.55f, 0.05f, 0.4f}});
+  const model::PointCloud lidar = cloud_from({0.0f, 0.0f, 1.0f}, {{1.55f, 0.05f, 1.0f}});
+  const auto foam_after = [&](double persistence, double until) {
+    costmap::Costmap costmap(params);
+    costmap::CloudObservation seen;
+    seen.cloud = &camera;
+    seen.source.observation_persistence = persistence;
+    costmap.update(0.0, model::Pose3::Identity(), std::vector<costmap::CloudObservation>{seen});
+    costmap::CloudObservation clearing;
+    clearing.cloud = &lidar;
+    for (double t = 0.25; t <= until; t += 0.25) {
+      costmap.update(t, model::Pose3::Identity(),
+                     std::vector<costmap::CloudObservation>{clearing});
+    }
+    const auto foam = costmap.window().cell_of(model::Vec2(0.55, 0.05));
+    return costmap.master().at(foam->x, foam->y);
+  };
+  CHECK(foam_after(0.0, 0.25) != costmap::cost::kLethal);  // nav2's default keeps no old cloud
+  CHECK(foam_after(0.5, 0.25) == costmap::cost::kLethal);
+  CHECK(foam_after(0.5, 0.5) == costmap::cost::kLethal);   // age 0.5 s = persistence: kept
+  CHECK(foam_after(0.5, 0.75) != costmap::cost::kLethal);  // age 0.75 s: dropped, cleared
+}
+
+TEST_CASE("costmap: a persisted cloud marks where it was taken while the robot moves on",
+          "[costmap]") {
+  costmap::CostmapParams params;
+  params.layer = costmap::ObstacleLayerKind::obstacle;
+  params.size_x = params.size_y = 4.0;
+  params.resolution = 0.1;
+  params.use_hit_layer = false;
+  // A robot-frame point 0.55 m ahead, 0.05 m left, 0.4 m up, taken with the robot at (1, 0)
+  // facing +y: in the world it is at (1 - 0.05, 0.55) = (0.95, 0.55).
+  const model::PointCloud camera = cloud_from({0.3f, 0.0f, 0.3f}, {{0.55f, 0.05f, 0.4f}});
+  model::Pose3 T_world_robot = model::Pose3::Identity();
+  T_world_robot.translate(model::Vec3(1.0, 0.0, 0.0));
+  T_world_robot.rotate(Eigen::AngleAxisd(std::numbers::pi / 2, model::Vec3::UnitZ()));
+  costmap::CloudObservation seen;
+  seen.cloud = &camera;
+  seen.T_world_cloud = T_world_robot;
+  seen.source.observation_persistence = 2.0;
+  costmap::Costmap costmap(params);
+  costmap.update(0.0, T_world_robot, std::vector<costmap::CloudObservation>{seen});
+  // One second later the robot stands 0.3 m further on, and a world-frame lidar ray at 1 m
+  // crosses the point's cell from (0.95, -0.5) to (0.95, 1.5), clearing it in 2D.
+  model::Pose3 moved = model::Pose3::Identity();
+  moved.translate(model::Vec3(1.3, 0.0, 0.0));
+  const model::PointCloud lidar = cloud_from({0.95f, -0.5f, 1.0f}, {{0.95f, 1.5f, 1.0f}});
+  costmap::CloudObservation clearing;
+  clearing.cloud = &lidar;
+  costmap.update(1.0, moved, std::vector<costmap::CloudObservation>{clearing});
+  CHECK(costmap.persisted_observations() == 1);
+  const auto foam = costmap.window().cell_of(model::Vec2(0.95, 0.55));
+  REQUIRE(foam);
+  CHECK(costmap.master().at(foam->x, foam->y) == costmap::cost::kLethal);
+  // Not where the robot-frame numbers would put it without the transform.
+  const auto untransformed = costmap.window().cell_of(model::Vec2(0.55, 0.05));
+  REQUIRE(untransformed);
+  CHECK(costmap.master().at(untransformed->x, untransformed->y) != costmap::cost::kLethal);
 }

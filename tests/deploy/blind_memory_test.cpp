@@ -44,6 +44,11 @@ TEST_CASE("blind memory: a side gap is kept while the robot drives past it", "[d
   CHECK_FALSE(memory.gaps[0].reaches_back);
   CHECK(memory.hit.hit_max == 21);
   CHECK(memory.hit.hit == 2);
+  // nav2's persistence keeps the same 21 updates: 21 / 5 Hz = 4.2 s; the obstacle is seen
+  // last at 99 deg, the azimuth before the gap on the left.
+  CHECK(memory.persistence == Approx(4.2));
+  CHECK(memory.gaps[0].persistence == Approx(4.2));
+  CHECK(memory.gaps[0].last_seen == 99);
 }
 
 TEST_CASE("blind memory: a gap on the right, and one reaching the back", "[deploy]") {
@@ -56,6 +61,9 @@ TEST_CASE("blind memory: a gap on the right, and one reaching the back", "[deplo
   REQUIRE(right.gaps.size() == 1);
   CHECK(right.gaps[0].keep_distance == Approx(1.02846).epsilon(1e-4));
   CHECK(right.hit.hit_max == 42);
+  CHECK(right.persistence == Approx(42 / 5.0));
+  // On the right it enters at 260 deg (-100) coming from 261 deg, where it is seen last.
+  CHECK(right.gaps[0].last_seen == 261);
   // Gap 120..180 deg: an obstacle entering at 120 deg (x = 0.4 cot 120 deg = -0.23094 m) is
   // never seen again and is kept until the body has passed it (x = -0.4 m): 0.16906 m.
   const deploy::BlindMemory back =

@@ -102,7 +102,8 @@ TEST_CASE("export: nav2 parameters read back give the sources, footprint and lay
   CHECK(file.costmap.layer == costmap::ObstacleLayerKind::voxel);
   CHECK(file.costmap.voxel.z_resolution == Approx(0.07));
   CHECK(file.costmap.voxel.z_max == Approx(1.05));
-  CHECK(file.costmap.use_hit_layer);
+  // No Hit Layer unless asked for (export --hit-layer-plugin): nav2 has none.
+  CHECK_FALSE(file.costmap.use_hit_layer);
 }
 
 TEST_CASE("export: nav2 names in the exported file", "[deploy]") {

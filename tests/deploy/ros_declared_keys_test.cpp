@@ -118,6 +118,27 @@ void check_layer(const Tables& tables, const std::string& name, const YAML::Node
 
 }  // namespace
 
+// The classes of every layer the exported nav2 file loads, after checking each key.
+std::set<std::string> checked_classes(const Tables& tables, const std::string& text) {
+  const YAML::Node file = YAML::Load(text);
+  std::set<std::string> other_classes;
+  for (const char* costmap : {"local_costmap", "global_costmap"}) {
+    const YAML::Node parameters = file[costmap][costmap]["ros__parameters"];
+    REQUIRE(parameters.IsMap());
+    std::set<std::string> layers;
+    for (const YAML::Node& name : parameters["plugins"]) layers.insert(name.as<std::string>());
+    for (const auto& entry : parameters) {
+      const std::string key = entry.first.as<std::string>();
+      if (layers.count(key)) {
+        check_layer(tables, key, entry.second, other_classes);
+      } else {
+        check_key(tables.costmap, key, entry.second, std::string(costmap) + ".");
+      }
+    }
+  }
+  return other_classes;
+}
+
 TEST_CASE("export: every nav2 key is declared by nav2 with the type written", "[deploy]") {
   const Tables tables;
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
@@ -125,26 +146,18 @@ TEST_CASE("export: every nav2 key is declared by nav2 with the type written", "[
                                "rigs/cart_two_scanners.yaml", "rigs/delivery_amr.yaml"}) {
     INFO(rig_file);
     const model::Rig rig = io::load_rig(source_path(rig_file));
-    const YAML::Node file = YAML::Load(
-        io::nav2_costmap_text(deploy::plan_deployment(rig, library, nullptr, {}).costmap, "test"));
-    std::set<std::string> other_classes;
-    for (const char* costmap : {"local_costmap", "global_costmap"}) {
-      const YAML::Node parameters = file[costmap][costmap]["ros__parameters"];
-      REQUIRE(parameters.IsMap());
-      std::set<std::string> layers;
-      for (const YAML::Node& name : parameters["plugins"]) layers.insert(name.as<std::string>());
-      for (const auto& entry : parameters) {
-        const std::string key = entry.first.as<std::string>();
-        if (layers.count(key)) {
-          check_layer(tables, key, entry.second, other_classes);
-        } else {
-          check_key(tables.costmap, key, entry.second, std::string(costmap) + ".");
-        }
-      }
-    }
-    // The one layer nav2 does not ship: paper 1's Hit Layer, until the export expresses its
-    // memory with nav2's own parameters (issue 30, item 2).
-    CHECK(other_classes == std::set<std::string>{"rigdesign::HitLayer"});
+    deploy::DeployOptions options;
+    options.max_speed = 1.0;  // sizes the blind-gap memory: observation_persistence is written
+    // Only nav2's own layers by default (issue 30 item 2).
+    CHECK(checked_classes(tables, io::nav2_costmap_text(
+                                      deploy::plan_deployment(rig, library, nullptr, options).costmap,
+                                      "test"))
+              .empty());
+    // Paper 1's Hit Layer only when asked for, under the class the user gave.
+    options.hit_layer_plugin = "my_layers::HitLayer";
+    CHECK(checked_classes(tables, io::nav2_costmap_text(
+                                      deploy::plan_deployment(rig, library, nullptr, options).costmap,
+                                      "test")) == std::set<std::string>{"my_layers::HitLayer"});
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 /// The layered costmap (DESIGN.md section 7): a rolling window centred on the robot, an
-/// obstacle layer (2D) or voxel layer (3D), the Hit Layer and the inflation layer, combined in
+/// obstacle layer (2D) or voxel layer (3D) fed by nav2's observation buffers (a source's
+/// `observation_persistence`), the optional Hit Layer and the inflation layer, combined in
 /// that order into the master grid the planner reads.
 #include <cstdint>
 #include <span>
@@ -61,7 +62,9 @@ class Costmap {
 
   /// One step at `time` [s] with the robot at `T_world_robot`: centre every layer's window on
   /// the robot (the overlap kept, entering cells reset), clear then mark with every
-  /// observation, project the voxels, apply the Hit Layer (its motion condition from the
+  /// observation and every persisted one of an earlier update (nav2's ObservationBuffer: an
+  /// observation stays while `time` minus its time is at most its source's
+  /// observation_persistence), project the voxels, apply the Hit Layer (its motion condition from the
   /// robot's positions and `velocity_command`), copy into the master grid, mark the Hit
   /// Layer's cells lethal there, and inflate.
   void update(double time, const model::Pose3& T_world_robot,
@@ -78,8 +81,18 @@ class Costmap {
   const HitLayer& hit_layer() const { return hit_; }
   /// Whether the last update's Hit Layer decremented (false while the robot stood still).
   bool last_update_decremented() const { return decremented_; }
+  /// Observations of earlier updates that still mark, by their sources' persistence.
+  std::size_t persisted_observations() const { return persisted_.size(); }
 
  private:
+  /// A cloud kept for its source's persistence, in the world frame as it was taken (nav2
+  /// transforms each cloud into the global frame when it arrives).
+  struct PersistedObservation {
+    double time = 0.0;
+    model::PointCloud cloud;
+    ObservationSource source;
+  };
+
   CostmapParams params_;
   ObstacleLayer obstacle_;
   VoxelLayer voxel_;
@@ -87,6 +100,7 @@ class Costmap {
   HitLayer hit_;
   InflationLayer inflation_;
   CostGrid master_;
+  std::vector<PersistedObservation> persisted_;
   bool decremented_ = false;
 };
 

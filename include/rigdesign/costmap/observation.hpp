@@ -21,6 +21,11 @@ struct ObservationSource {
   /// noise out of the grid, while paper 2's negative-obstacle points (10 cm) still mark.
   double min_obstacle_height = 0.05;
   double max_obstacle_height = 2.0;
+  /// [s] nav2's `observation_persistence`: each cloud of this source keeps marking (and
+  /// clearing) from where it was taken until it is this much older than the update; 0 keeps
+  /// only the newest cloud. How an exported rig remembers what enters a blind gap
+  /// (deploy/blind_memory.hpp).
+  double observation_persistence = 0.0;
 
   bool operator==(const ObservationSource&) const = default;
 

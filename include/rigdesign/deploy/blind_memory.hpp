@@ -17,6 +17,15 @@
 /// - and it must reach hit_max while the obstacle is seen at the fastest speed:
 ///   hit = ceil(hit_max / (f seen / v_max)), f the costmap's update rate.
 /// The gap with the largest keep distance sets hit_max and, with its seen distance, hit.
+///
+/// nav2 itself keeps an obstacle by time, not by motion: a source's observation_persistence
+/// keeps each of its clouds marking for that many seconds. The same keep, in seconds, is
+/// hit_max / f (twice the time to drive the keep distance at the slowest speed), given to the
+/// sources that see an obstacle one cell outside the body on its approach to the gap, from the
+/// distance of interest to where it is seen last (BlindGap::last_seen; deploy/costmap_config).
+/// What it assumes: the robot does not stand still with an obstacle in the gap
+/// for longer than that (the Hit Layer does not decay while the robot stands; persistence
+/// does), and a person walking through those sources' view leaves a trail for that long.
 #include <string>
 #include <vector>
 
@@ -31,6 +40,10 @@ struct BlindGap {
   double keep_distance = 0.0;  ///< [m] driven while a grazing obstacle is in the gap
   double seen_distance = 0.0;  ///< [m] driven while it is seen before the gap
   bool reaches_back = false;  ///< an obstacle passing it is not seen again
+  /// Index into the coverage's angles where a grazing obstacle is seen last before it enters
+  /// the gap (on the side of the longest pass); -1 when it is not seen before the gap.
+  int last_seen = -1;
+  double persistence = 0.0;  ///< [s] how long a source seeing `last_seen` must keep a cloud
 };
 
 struct BlindMemory {
@@ -40,6 +53,7 @@ struct BlindMemory {
   double min_speed = 0.0;    ///< [m/s] the slowest the robot drives
   double update_rate = 0.0;  ///< [Hz]
   costmap::HitLayerParams hit;  ///< paper 1's values where there is no gap
+  double persistence = 0.0;     ///< [s] the worst gap's; 0 where there is no gap
   std::string rule;             ///< one sentence with the numbers, for reports and comments
 };
 

@@ -2,7 +2,7 @@
 /// nav2 costmap parameters derived from a rig (issue 14): the footprint from the body, one
 /// observation source per mount with its marking and clearing ranges and height band from the
 /// sensor's mode, the area to perceive and the sensor's floor noise, the voxel column from the
-/// area's height, the inflation from the body, and the Hit Layer's memory from the rig's blind
+/// area's height, the inflation from the body, and the memory of the rig's blind
 /// sectors (deploy/blind_memory.hpp). Every value says where it came from (`why`), so the
 /// exported file can explain itself.
 #include <optional>
@@ -23,12 +23,16 @@ struct DeployOptions {
   std::string scan_topic = "/{mount}/scan";  ///< topic template of 2D scanners
   std::string cloud_topic = "/{mount}/points";  ///< of 3D sensors ({mount}: the mount id)
   double update_rate = 5.0;  ///< [Hz] the local costmap's update_frequency (nav2's default)
-  double max_speed = 0.0;    ///< [m/s] for the Hit Layer rule; 0: the requirements' R5
+  double max_speed = 0.0;    ///< [m/s] for the blind-gap memory rule; 0: the requirements' R5
   /// [m/s] the slowest the robot drives: nav2 Regulated Pure Pursuit's default
   /// regulated_linear_scaling_min_speed (0.25 m/s), or max_speed when that is lower.
   double min_speed = 0.25;
   double floor_flatness = 0.02;   ///< [m] steps and tiles a flat floor may have
   double floor_noise_sigmas = 6;  ///< floor returns this many sigma high still do not mark
+  /// The class of a costmap layer implementing paper 1's Hit Layer, for a team that built one
+  /// (`export --hit-layer-plugin`). Empty: no Hit Layer; the blind gaps are remembered by
+  /// nav2's observation_persistence instead (deploy/blind_memory.hpp).
+  std::string hit_layer_plugin;
 };
 
 /// One observation source as nav2's obstacle and voxel layers read it.
@@ -50,7 +54,8 @@ struct CostmapConfig {
   double inscribed_radius = 0.0;       ///< [m]
   costmap::CostmapParams costmap;      ///< the local costmap (window, layers, Hit Layer, ...)
   std::vector<SourceConfig> sources;
-  BlindMemory memory;              ///< how the Hit Layer's values were chosen
+  BlindMemory memory;              ///< how the memory's values were chosen
+  std::string hit_layer_class;     ///< the Hit Layer's plugin class; empty: no Hit Layer
   std::vector<std::string> notes;  ///< derivations and warnings for the file's comments
   double update_rate = 5.0;        ///< [Hz] the local costmap's update_frequency
   /// What the derivations used, so the file's comments say it: sigma of a floor return's

@@ -10,6 +10,7 @@
 #include "rigdesign/costmap/observation.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/mount_limits.hpp"
 #include "rigdesign/model/requirements.hpp"
 #include "rigdesign/model/rig.hpp"
@@ -39,6 +40,9 @@ struct DeployedConfig {
   std::string nav2_file;  ///< empty: no nav2 parameters given (sources are not checked)
   std::vector<DeployedSource> sources;
   std::vector<DeployedFilter> filters;
+  /// What the files hold that the stack may refuse but rigdesign can still check (a layer
+  /// class outside nav2 and STVL), for the report's warnings.
+  std::vector<model::Diagnostic> warnings;
 };
 
 /// Results with ids D1 (every mount has an observation source), D2 (each source's height

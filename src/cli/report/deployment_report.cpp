@@ -33,6 +33,8 @@ void print_deployment(std::ostream& out, const model::Rig& rig,
         << model::format_number(s.min_obstacle_height, 3) << ".."
         << model::format_number(s.max_obstacle_height, 3) << " m; sees its robot with "
         << filter.body_hits << " of " << filter.rays << " rays";
+    if (s.observation_persistence > 0.0)
+      out << "; keeps clouds " << model::format_number(s.observation_persistence, 3) << " s";
     if (filter.scanner && !filter.bands.empty()) {
       out << " (";
       for (std::size_t b = 0; b < filter.bands.size(); ++b) {
@@ -44,8 +46,12 @@ void print_deployment(std::ostream& out, const model::Rig& rig,
     if (!filter.boxes.empty()) out << " (" << filter.boxes.size() << " crop box(es))";
     out << '\n';
   }
-  out << "  Hit Layer: hit " << costmap.costmap.hit.hit << ", hit_max "
-      << costmap.costmap.hit.hit_max << "; " << costmap.memory.rule << '\n';
+  if (costmap.costmap.use_hit_layer) {
+    out << "  Hit Layer (" << costmap.hit_layer_class << "): hit " << costmap.costmap.hit.hit
+        << ", hit_max " << costmap.costmap.hit.hit_max << "; " << costmap.memory.rule << '\n';
+  } else {
+    out << "  blind-gap memory: observation_persistence (nav2); " << costmap.memory.rule << '\n';
+  }
   for (const std::string& path : written) out << "  wrote " << path << '\n';
 }
 

@@ -121,6 +121,10 @@ void check_rig(const std::string& path, const std::string& sensors_path,
   // at once, not after the slowest step.
   std::optional<deploy::DeployedConfig> config;
   if (!deployment.empty()) config = load_deployment(deployment, inputs.rig);
+  if (config) {
+    report.diagnostics.insert(report.diagnostics.end(), config->warnings.begin(),
+                              config->warnings.end());
+  }
   report.load_seconds = seconds_since(started);
   judge_rig(inputs, config, report);
 }

@@ -49,6 +49,9 @@ costmap::ObservationSource read_source(MapReader& m, costmap::ObservationSource 
   }
   m.require(source.obstacle_min_range <= source.obstacle_max_range, "obstacle_min_range",
             "is above obstacle_max_range", "obstacle_min_range <= obstacle_max_range");
+  const std::string persistence(nav2::kObservationPersistence);
+  read_if_present(m, persistence, source.observation_persistence, "seconds, >= 0");
+  m.require(source.observation_persistence >= 0.0, persistence, "is negative", "seconds, >= 0");
   m.require(source.min_obstacle_height <= source.max_obstacle_height, "min_obstacle_height",
             "is above max_obstacle_height", "min_obstacle_height <= max_obstacle_height");
   ignore(m, nav2::kIgnoredSourceKeys);
@@ -181,6 +184,23 @@ void read_footprint(MapReader& m, CostmapParamsFile& file) {
   file.costmap.inflation.inscribed_radius = radii.inscribed;
 }
 
+// nav2 loads a layer's class through pluginlib: a class no installed package exports stops
+// the costmap from configuring. rigdesign knows nav2's and STVL's; any other is a warning.
+void warn_if_unknown_class(const YAML::Node& plugin, const std::string& layer,
+                           const std::string& path, std::vector<model::Diagnostic>& warnings) {
+  const std::string name = plugin.IsScalar() ? plugin.Scalar() : std::string();
+  const auto& known = nav2::kKnownLayerClasses;
+  if (std::find(known.begin(), known.end(), name) != known.end()) return;
+  std::string classes;
+  for (const std::string& known_class : known) classes += (classes.empty() ? "" : ", ") + known_class;
+  warnings.push_back({location_of(plugin, path), layer + ".plugin",
+                      "names '" + name +
+                          "', a class neither nav2 (Humble, Jazzy) nor "
+                          "spatio_temporal_voxel_layer exports: the costmap fails to configure "
+                          "unless a package you build exports it",
+                      "one of " + classes, model::Severity::warning});
+}
+
 bool listed(const std::vector<std::string>& plugins, std::string_view name) {
   return std::find(plugins.begin(), plugins.end(), name) != plugins.end();
 }
@@ -224,7 +244,7 @@ CostmapParamsFile load_costmap_params(const std::string& path,
         "is not a map",
         "nav2 costmap parameters: local_costmap: local_costmap: ros__parameters: {...}"});
   }
-  CostmapParamsFile file{defaults, {}, {}, false, {}};
+  CostmapParamsFile file{defaults, {}, {}, false, {}, {}};
   costmap::CostmapParams& p = file.costmap;
   read_if_present(m, "resolution", p.resolution, "a cell side in metres, > 0");
   read_if_present(m, "width", p.size_x, "the window's side along x in metres, > 0");
@@ -258,8 +278,10 @@ CostmapParamsFile load_costmap_params(const std::string& path,
         continue;
       }
       const YAML::Node& const_layer = layer;
-      m.require(const_layer.IsMap() && const_layer["plugin"].IsDefined(), name, "has no plugin",
+      const bool has_plugin = const_layer.IsMap() && const_layer["plugin"].IsDefined();
+      m.require(has_plugin, name, "has no plugin",
                 "plugin: the layer's class, e.g. \"nav2_costmap_2d::VoxelLayer\"");
+      if (has_plugin) warn_if_unknown_class(const_layer["plugin"], name, path, file.warnings);
     }
   }
   for (const auto& [key, voxel] :

@@ -91,6 +91,10 @@ void write_obstacle_layer(std::ostringstream& out, const deploy::CostmapConfig& 
       const nav2::SourceNumberKey& height = nav2::kSourceHeightKeys[i];
       write_key(out, k, height.key, yaml_float(s.*height.field), height_why[i]);
     }
+    write_key(out, k, nav2::kObservationPersistence, yaml_float(s.observation_persistence),
+              s.observation_persistence > 0.0
+                  ? "keeps what then enters a blind gap (the blind memory note above)"
+                  : "");
   }
 }
 
@@ -106,14 +110,17 @@ void write_layers(std::ostringstream& out, const deploy::CostmapConfig& config,
   }
   write_obstacle_layer(out, config, in);
   const std::string l = in + "  ";
-  out << in << nav2::kHitLayer << ":\n";
-  out << yaml_comment("paper 1's Hit Layer: " + config.memory.rule, l);
-  write_key(out, l, "plugin", yaml_quoted(std::string(nav2::kHitLayerClass)));
-  write_key(out, l, "enabled", yaml_bool(true));
-  write_key(out, l, "hit", std::to_string(p.hit.hit));
-  write_key(out, l, "hit_max", std::to_string(p.hit.hit_max));
-  write_key(out, l, "d_threshold", yaml_float(p.hit.d_threshold));
-  write_key(out, l, "d_duration", yaml_float(p.hit.d_duration));
+  if (p.use_hit_layer) {
+    out << in << nav2::kHitLayer << ":\n";
+    out << yaml_comment("paper 1's Hit Layer (not part of nav2: the class given to export "
+                        "--hit-layer-plugin): " + config.memory.rule, l);
+    write_key(out, l, "plugin", yaml_quoted(config.hit_layer_class));
+    write_key(out, l, "enabled", yaml_bool(true));
+    write_key(out, l, "hit", std::to_string(p.hit.hit));
+    write_key(out, l, "hit_max", std::to_string(p.hit.hit_max));
+    write_key(out, l, "d_threshold", yaml_float(p.hit.d_threshold));
+    write_key(out, l, "d_duration", yaml_float(p.hit.d_duration));
+  }
   out << in << nav2::kInflationLayer << ":\n";
   write_key(out, l, "plugin", yaml_quoted(std::string(nav2::kInflationLayerClass)));
   write_key(out, l, "enabled", yaml_bool(true));
@@ -134,9 +141,10 @@ std::string nav2_costmap_text(const deploy::CostmapConfig& config, const std::st
   out << yaml_comment(header);
   for (const std::string& note : config.notes) out << yaml_comment(note);
   const costmap::CostmapParams& p = config.costmap;
-  const std::string plugins = yaml_quoted(obstacle_layer_name(config)) + ", " +
-                              yaml_quoted(std::string(nav2::kHitLayer)) + ", " +
-                              yaml_quoted(std::string(nav2::kInflationLayer));
+  const std::string plugins =
+      yaml_quoted(obstacle_layer_name(config)) + ", " +
+      (p.use_hit_layer ? yaml_quoted(std::string(nav2::kHitLayer)) + ", " : std::string()) +
+      yaml_quoted(std::string(nav2::kInflationLayer));
   const std::string in = "      ";
   write_costmap_block(out, "local_costmap");
   write_key(out, in, "update_frequency", yaml_float(config.update_rate));

@@ -8,6 +8,7 @@ deploy::DeployedConfig load_deployed_sources(const std::string& path, const mode
   const CostmapParamsFile file = load_costmap_params(path, {}, {});
   deploy::DeployedConfig config;
   config.nav2_file = path;
+  config.warnings = file.warnings;
   model::Diagnostics diagnostics;
   for (std::size_t i = 0; i < file.sources.size(); ++i) {
     const std::string& name = file.sources[i].name;

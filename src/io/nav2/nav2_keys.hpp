@@ -26,7 +26,14 @@ inline constexpr std::string_view kObstacleLayerClass = "nav2_costmap_2d::Obstac
 inline constexpr std::string_view kVoxelLayerClass = "nav2_costmap_2d::VoxelLayer";
 inline constexpr std::string_view kInflationLayerClass = "nav2_costmap_2d::InflationLayer";
 inline constexpr std::string_view kStaticLayerClass = "nav2_costmap_2d::StaticLayer";
-inline constexpr std::string_view kHitLayerClass = "rigdesign::HitLayer";
+
+/// A source's keep time [s] (costmap::ObservationSource::observation_persistence).
+inline constexpr std::string_view kObservationPersistence = "observation_persistence";
+
+/// Layer classes a costmap may load without a warning from `check --nav2`: nav2_costmap_2d's
+/// (costmap_plugins.xml, Humble and Jazzy) and spatio_temporal_voxel_layer's. The table with
+/// file and commit is data/ros_parameters/nav2_costmap_2d.yaml.
+extern const std::vector<std::string> kKnownLayerClasses;
 
 /// An observation source's number that rigdesign models: its key and its field.
 struct SourceNumberKey {

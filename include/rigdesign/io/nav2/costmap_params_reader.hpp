@@ -11,6 +11,7 @@
 #include "rigdesign/costmap/costmap.hpp"
 #include "rigdesign/costmap/observation.hpp"
 #include "rigdesign/deploy/deployed_check.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/source_location.hpp"
 
@@ -36,6 +37,9 @@ struct CostmapParamsFile {
   /// nav2's `footprint` polygon [m], empty when the file gives robot_radius; the costmap then
   /// takes its circumscribed radius as robot_radius and its inscribed one for inflation.
   std::vector<model::Vec2> footprint;
+  /// A layer whose plugin class neither nav2 nor spatio_temporal_voxel_layer exports (paper
+  /// 1's Hit Layer among them): nav2 would fail to configure unless the user built it.
+  std::vector<model::Diagnostic> warnings;
 };
 
 /// Throws InputError naming file:line:col, the key's path and the expected form for a missing
