@@ -172,9 +172,8 @@ RigCoverage compute_coverage(const model::Rig& rig, const model::SensorLibrary& 
   for (const model::SectorRequirement& sector : sectors) {
     SectorCoverage coverage{sector, summarize(result.angles, complete, &sector),
                             summarize(result.angles, floor, &sector)};
-    // Compared with the tolerance that counts a section as fully covered.
-    coverage.pass = coverage.complete.min >= sector.min_complete_coverage - (1 - kFullCoverage) &&
-                    coverage.floor.min >= sector.min_floor_coverage - (1 - kFullCoverage);
+    coverage.pass = judged_share(coverage.complete.min) >= sector.min_complete_coverage &&
+                    judged_share(coverage.floor.min) >= sector.min_floor_coverage;
     result.sectors.push_back(std::move(coverage));
   }
 
@@ -194,6 +193,14 @@ RigCoverage compute_coverage(const model::Rig& rig, const model::SensorLibrary& 
         {mounts[lost].mount->id, summarize(remaining, complete), summarize(remaining, floor)});
   }
   return result;
+}
+
+BindingShare binding_share(const SectorCoverage& coverage) {
+  const BindingShare complete{false, judged_share(coverage.complete.min),
+                              coverage.sector.min_complete_coverage};
+  const BindingShare floor{true, judged_share(coverage.floor.min),
+                           coverage.sector.min_floor_coverage};
+  return floor.actual - floor.required < complete.actual - complete.required ? floor : complete;
 }
 
 }  // namespace rigdesign::metrics

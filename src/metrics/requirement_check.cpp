@@ -73,9 +73,12 @@ void check_sectors(const model::Requirements& requirements, const RigCoverage* c
       continue;
     }
     const SectorCoverage& measured = coverage->sectors[i];
-    result.required = sector.min_complete_coverage;
+    // The verdict rests on the tighter of SC complete and SC floor; that one is reported.
+    const BindingShare binding = binding_share(measured);
+    if (binding.floor) result.metric = "SC floor";
+    result.required = binding.required;
     result.bound = Bound::at_least;
-    result.actual = measured.complete.min;
+    result.actual = binding.actual;
     result.verdict = verdict(measured.pass);
     result.explanation = "over " + model::format_number(model::rad_to_deg(sector.from)) + ".." +
                          model::format_number(model::rad_to_deg(sector.to)) +

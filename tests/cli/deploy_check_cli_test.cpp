@@ -222,3 +222,36 @@ TEST_CASE("check --nav2: a layer class outside nav2 and STVL warns; an undeclare
   CHECK(ros1.out.find("ros1.yaml:9:45: ") != std::string::npos);
   CHECK(ros1.out.find("obstacle_range") != std::string::npos);
 }
+
+TEST_CASE("check --filters: a filter removing more than the robot warns even when D3 passes",
+          "[deploy]") {
+  TempFolder folder;
+  const std::string cart = source_path("rigs/cart_two_scanners.yaml");
+  // The cart's requirements with nothing asked of the back: hiding it passes D3 (0 >= 0).
+  const std::string relaxed = folder.write(
+      "relaxed.yaml",
+      "name: cart, back not required\n"
+      "sectors:\n"
+      "  - {name: front, from_deg: -30, to_deg: 30, min_complete_coverage: 0.04, "
+      "min_floor_coverage: 0}\n"
+      "  - {name: back, from_deg: 150, to_deg: 210, min_complete_coverage: 0, "
+      "min_floor_coverage: 0}\n"
+      "range: {distance: 3.0}\n");
+  const CliResult hides = run_cli({"check", cart, "--requirements", relaxed, "--filters",
+                                   folder.write("hides.yaml", kHidesRear)});
+  INFO(hides.out << hides.err);
+  CHECK(hides.exit_code == 0);
+  CHECK(hides.out.find("pass: D3 deployed coverage: back") != std::string::npos);
+  // At the filter's entry (line 3, column 5), naming it and the sector it takes.
+  CHECK(hides.out.find("hides.yaml:3:5: warning: rear_lidar hides_the_rear drops (-0.8, 0.8) "
+                       "rad: removes ") != std::string::npos);
+  CHECK(hides.out.find("% of back (SC") != std::string::npos);
+  // The exported filters drop only the robot: no warning.
+  const std::string out = folder.path() + "/export";
+  REQUIRE(run_cli({"export", cart, "--to", out}).exit_code == 0);
+  const CliResult exported = run_cli({"check", cart, "--nav2", out + "/nav2_costmap.yaml",
+                                      "--filters", out + "/self_filters.yaml"});
+  INFO(exported.out);
+  CHECK(exported.exit_code == 0);
+  CHECK(exported.out.find("warning") == std::string::npos);
+}

@@ -102,3 +102,46 @@ TEST_CASE("R1 and R3 check the rig describes the application's body and range") 
   CHECK(find(results, "R1").verdict == metrics::Verdict::fail);
   CHECK(find(results, "R3").verdict == metrics::Verdict::fail);
 }
+
+// Issue 30 item 6: a verdict and the sign of its margin agree. The coverage is built by hand,
+// so every number below is the test's own.
+TEST_CASE("R2 judges the tighter of SC complete and floor, unrounded, margin sign agreeing") {
+  const Fixture fixture;
+  model::Requirements requirements;
+  model::SectorRequirement sector;
+  sector.name = "front";
+  sector.min_complete_coverage = 0.54;
+  sector.min_floor_coverage = 0.5;
+  requirements.sectors = {sector};
+  const auto judged = [&](double complete, double floor) {
+    metrics::RigCoverage coverage;
+    metrics::SectorCoverage measured;
+    measured.sector = sector;
+    measured.complete.min = complete;
+    measured.floor.min = floor;
+    measured.pass = metrics::judged_share(complete) >= sector.min_complete_coverage &&
+                    metrics::judged_share(floor) >= sector.min_floor_coverage;
+    coverage.sectors = {measured};
+    return find(metrics::evaluate_requirements(fixture.rig,
+                                               metrics::compute_resultant(fixture.rig,
+                                                                          fixture.library),
+                                               requirements, &coverage),
+                "R2");
+  };
+  // 0.53996 < 0.54: the issue's case fails now, with a negative margin.
+  const metrics::RequirementResult short_by_little = judged(0.53996, 0.9);
+  CHECK(short_by_little.verdict == metrics::Verdict::fail);
+  CHECK(*short_by_little.margin() == Approx(-0.00004).margin(1e-12));
+  CHECK(short_by_little.metric == "SC");
+  // Complete has 0.06 to spare, floor only 0.01: the floor is what the verdict rests on.
+  const metrics::RequirementResult floor_binds = judged(0.60, 0.51);
+  CHECK(floor_binds.verdict == metrics::Verdict::pass);
+  CHECK(floor_binds.metric == "SC floor");
+  CHECK(*floor_binds.margin() == Approx(0.01));
+  // A floor below its requirement fails even when SC complete passes, margin negative.
+  const metrics::RequirementResult floor_fails = judged(0.60, 0.49);
+  CHECK(floor_fails.verdict == metrics::Verdict::fail);
+  CHECK(*floor_fails.margin() < 0.0);
+  CHECK(metrics::judged_share(0.99995) == 1.0);  // a fully covered section's exact-path gaps
+  CHECK(metrics::judged_share(0.9998) == 0.9998);
+}

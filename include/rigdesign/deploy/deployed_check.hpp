@@ -45,16 +45,24 @@ struct DeployedConfig {
   std::vector<model::Diagnostic> warnings;
 };
 
+/// The verdicts on a deployment, and what it does that the verdicts let pass.
+struct DeploymentCheck {
+  std::vector<metrics::RequirementResult> results;
+  /// A range limit or filter removing part of a required sector beyond the robot's own
+  /// shadow (how much of each), at the setting's file:line: a warning even when D3 passes.
+  std::vector<model::Diagnostic> warnings;
+};
+
 /// Results with ids D1 (every mount has an observation source), D2 (each source's height
 /// band holds the area to perceive and marks R6's smallest obstacle) and D3 (per requirement
-/// sector: the deployed coverage still meets it; on failure the SC lost and each setting that
-/// loses some of it, with file:line). Precondition: the rig's references resolve. `design`:
-/// the rig's own coverage for requirements.sectors when the caller has it (check computes it
-/// for R2), else null and it is computed here.
-std::vector<metrics::RequirementResult> check_deployment(const model::Rig& rig,
-                                                         const model::SensorLibrary& library,
-                                                         const model::Requirements& requirements,
-                                                         const DeployedConfig& config,
-                                                         const metrics::RigCoverage* design = nullptr);
+/// sector: the deployed coverage still meets it, judged on the tighter of SC complete and SC
+/// floor, unrounded; on failure the SC lost and each setting that loses some of it, with
+/// file:line). Precondition: the rig's references resolve. `design`: the rig's own coverage
+/// for requirements.sectors when the caller has it (check computes it for R2), else null and
+/// it is computed here.
+DeploymentCheck check_deployment(const model::Rig& rig, const model::SensorLibrary& library,
+                                 const model::Requirements& requirements,
+                                 const DeployedConfig& config,
+                                 const metrics::RigCoverage* design = nullptr);
 
 }  // namespace rigdesign::deploy

@@ -27,6 +27,13 @@ struct CoverageSettings {
 /// keep a fully covered section a few 1e-5 short of 1.
 inline constexpr double kFullCoverage = 1.0 - 1e-4;
 
+/// A share as verdicts judge it: 1 from kFullCoverage on (a fully covered section), else the
+/// share itself, unrounded. Requirements compare this value with `>=`, and reports print it,
+/// so a verdict and the sign of its margin always agree.
+inline double judged_share(double share) {
+  return share >= kFullCoverage ? 1.0 : share;
+}
+
 struct AngleCoverage {
   double theta = 0.0;     ///< [rad]
   double r = 0.0;         ///< [m] body radius along theta
@@ -53,8 +60,18 @@ struct SectorCoverage {
   model::SectorRequirement sector;
   CoverageSummary complete;
   CoverageSummary floor;
+  /// judged_share(complete.min) >= min_complete_coverage and likewise for the floor.
   bool pass = false;
 };
+
+/// The one of a sector's two requirements (SC complete, SC floor) with the smaller margin:
+/// what its verdict rests on. `floor` says which; shares as judged_share gives them.
+struct BindingShare {
+  bool floor = false;
+  double actual = 0.0;
+  double required = 0.0;
+};
+BindingShare binding_share(const SectorCoverage& coverage);
 
 /// SC summaries with one mount removed (N-1), from the raster path.
 struct MountLoss {

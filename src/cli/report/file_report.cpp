@@ -97,14 +97,16 @@ void judge_rig(const RigInputs& inputs, const std::optional<deploy::DeployedConf
   const double judge_seconds = seconds_since(step);
   for (const metrics::RequirementResult& result : report.results) {
     report.result_seconds.push_back(resultant_seconds + judge_seconds +
-                                    (result.metric == "SC" ? coverage_seconds : 0.0));
+                                    (result.metric.rfind("SC", 0) == 0 ? coverage_seconds : 0.0));
   }
   if (!config) return;
   step = Clock::now();
-  std::vector<metrics::RequirementResult> deployed = deploy::check_deployment(
+  deploy::DeploymentCheck deployed = deploy::check_deployment(
       inputs.rig, inputs.library, *inputs.requirements, *config, coverage ? &*coverage : nullptr);
   const double deployed_seconds = seconds_since(step);
-  for (metrics::RequirementResult& result : deployed) {
+  report.diagnostics.insert(report.diagnostics.end(), deployed.warnings.begin(),
+                            deployed.warnings.end());
+  for (metrics::RequirementResult& result : deployed.results) {
     report.results.push_back(std::move(result));
     report.result_seconds.push_back(deployed_seconds);
   }

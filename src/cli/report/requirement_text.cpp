@@ -26,7 +26,7 @@ std::string bound_text(metrics::Bound bound) {
 // "F = 15 Hz, required >= 14.29 Hz, margin +0.7143 Hz (+5 %)", or "" without numbers.
 std::string measured_text(const metrics::RequirementResult& result) {
   if (!result.actual) return "";
-  if (result.metric == "SC" && result.unit.empty()) {  // shares read as percent
+  if (result.metric.rfind("SC", 0) == 0 && result.unit.empty()) {  // shares read as percent
     metrics::RequirementResult percent = result;
     percent.unit = "%";
     percent.actual = *result.actual * 100;
