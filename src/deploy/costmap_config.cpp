@@ -152,7 +152,9 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   config.update_rate = options.update_rate;
   config.floor_noise_sigmas = options.floor_noise_sigmas;
   bool any_3d = false;
-  for (const model::Mount& mount : rig.mounts) {
+  const SensorFrames frames = sensor_frames(rig, library, options.parent);
+  for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
+    const model::Mount& mount = rig.mounts[m];
     const model::SensorMode* mode = &library.resolved_mode(mount.sensor_id, mount.mode_id);
     SourceConfig source;
     source.mount_id = mount.id;
@@ -160,7 +162,7 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
     any_3d = any_3d || !source.laser_scan;
     source.topic =
         expand_topic(source.laser_scan ? options.scan_topic : options.cloud_topic, mount.id);
-    source.sensor_frame = data_frame_name(mount.id, *mode);
+    source.sensor_frame = frames.frames[m].data_frame;
     costmap::ObservationSource& s = source.source;
     const model::Vec3 origin = mount.T_robot_sensor.translation();
     // Far enough to mark every point of the area up to the mount's distance of interest.

@@ -1,14 +1,17 @@
-// Issue 14: the exported sensors.urdf.xacro, read back through the robot-description loader
-// (the built-in xacro expander and urdfdom), gives every mount pose to 1e-9 m / 1e-9 rad; and
+// Issues 14 and 30: the rig's description plus the exported sensors.urdf.xacro, expanded by
+// the built-in xacro expander and parsed by urdfdom, is one URDF with every mount's frame to
+// 1e-9 m / 1e-9 rad; and
 // the exported nav2 file, read back by rigdesign's own nav2 reader, gives the same sources.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "rigdesign/deploy/deployment.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/io/nav2/costmap_params_reader.hpp"
+#include "rigdesign/io/robot/robot_description_loader.hpp"
 #include "rigdesign/io/robot/sensors_xacro_writer.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/optical_frame.hpp"
@@ -25,24 +28,27 @@ double rotation_error(const model::Pose3& a, const model::Pose3& b) {
   return std::abs(difference.angle());
 }
 
-// A rig whose mounts sit at the exported links of a description that holds only the parent
-// link and the exported macro: the round trip rig -> xacro -> rig.
-std::string round_trip_rig(const model::Rig& rig, const std::string& parent, bool optical) {
+// The rig's own description (or, without one, just the parent link) with the exported macro
+// included after it: what a robot team's top-level xacro does.
+std::string wrapper_text(const model::Rig& rig, const std::string& parent) {
   std::string text =
-      "name: round trip\nrobot:\n  description: wrapper.urdf.xacro\n"
-      "  expander: builtin\n  base_link: " +
-      parent + "\n  base_link_height: " + model::exact_number(rig.base_link_height) + "\n" +
-      "body: {radius: 0.05, height: 0.1}\ndistance_of_interest: 5\nmounts:\n";
-  for (const model::Mount& mount : rig.mounts) {
-    text += "  - {id: " + mount.id + ", sensor: " + mount.sensor_id + ", mode: " + mount.mode_id +
-            ", pose: {urdf_link: " + mount.id + (optical ? "_optical_frame" : "_link") + "}}\n";
+      "<?xml version=\"1.0\"?>\n<robot name=\"wrapper\" "
+      "xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n";
+  if (rig.robot) {
+    text += "  <xacro:include filename=\"" +
+            std::filesystem::absolute(rig.robot->description).string() + "\"/>\n";
+  } else {
+    text += "  <link name=\"" + parent + "\"/>\n";
   }
-  return text;
+  return text + "  <xacro:include filename=\"sensors.urdf.xacro\"/>\n  <xacro:rig_sensors/>\n</robot>\n";
 }
 
 }  // namespace
 
-TEST_CASE("export: every bundled rig round-trips through its sensors.urdf.xacro", "[deploy]") {
+// Issue 30 item 4: description + exported macro -> one URDF that urdfdom accepts (it refuses
+// a link or joint name given twice), with every mount's data frame where the rig says.
+TEST_CASE("export: every bundled rig's description plus its sensors.urdf.xacro is one URDF",
+          "[deploy]") {
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   for (const std::string name : {"ur_cleaner", "ur_cleaner_from_urdf", "delivery_amr", "elektron",
                                  "cell", "cart_two_scanners", "turtlebot4", "jackal"}) {
@@ -51,42 +57,56 @@ TEST_CASE("export: every bundled rig round-trips through its sensors.urdf.xacro"
     const deploy::SensorFrames frames = deploy::sensor_frames(rig, library);
     TempFolder folder;
     folder.write("sensors.urdf.xacro", io::sensors_xacro_text(frames, "round trip of " + name));
-    folder.write("wrapper.urdf.xacro",
-                 "<?xml version=\"1.0\"?>\n<robot name=\"wrapper\" "
-                 "xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n  <link name=\"" +
-                     frames.parent +
-                     "\"/>\n  <xacro:include filename=\"sensors.urdf.xacro\"/>\n"
-                     "  <xacro:rig_sensors/>\n</robot>\n");
-    bool has_camera = false;
-    for (const deploy::SensorFrame& frame : frames.frames)
-      has_camera |= frame.optical_frame.has_value();
-    // Through the body links; and, for cameras, through their optical frames, which the
-    // loader turns back into body poses (REP-103) when the link's name says "optical".
-    for (const bool optical : {false, true}) {
-      if (optical && !has_camera) continue;
-      model::Rig body_only = rig;
-      if (optical) {
-        // Only cameras have optical frames.
-        std::erase_if(body_only.mounts, [&](const model::Mount& m) {
-          const model::Sensor* sensor = library.find(m.sensor_id);
-          return !sensor->find_mode(m.mode_id)->is_camera();
-        });
-      }
-      const model::Rig back = io::load_rig(
-          folder.write("round_trip.yaml", round_trip_rig(body_only, frames.parent, optical)));
-      REQUIRE(back.mounts.size() == body_only.mounts.size());
-      for (std::size_t i = 0; i < back.mounts.size(); ++i) {
-        INFO(back.mounts[i].id << (optical ? " (optical frame)" : ""));
-        // The read-back pose is in the wrapper's robot frame: the parent link lifted by the
-        // base height, the same frame as the original's when the parent is the base link.
-        CHECK((back.mounts[i].T_robot_sensor.translation() -
-               body_only.mounts[i].T_robot_sensor.translation())
-                  .norm() < 1e-9);
-        CHECK(rotation_error(back.mounts[i].T_robot_sensor, body_only.mounts[i].T_robot_sensor) <
-              1e-9);
-      }
+    io::RobotDescriptionRequest request;
+    request.path = folder.write("wrapper.urdf.xacro", wrapper_text(rig, frames.parent));
+    request.expander = io::RobotDescriptionRequest::Expander::builtin;
+    request.load_meshes = false;
+    if (rig.robot) {
+      request.args = rig.robot->args;
+      request.environment = rig.robot->environment;
+      request.package_paths = rig.robot->package_paths;
+    }
+    const model::RobotDescription combined = io::load_robot_description(request);
+    // Every description link is still there, once (urdfdom refuses duplicates), and every
+    // mount's data frame stands where the rig puts the sensor.
+    for (const auto& [link, pose] : rig.link_poses) CHECK(combined.T_root_link.count(link) == 1);
+    for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
+      const model::Mount& mount = rig.mounts[i];
+      const deploy::SensorFrame& frame = frames.frames[i];
+      INFO(mount.id << " in " << frame.data_frame);
+      if (!mount.urdf_link.empty()) CHECK(frame.link == mount.urdf_link);
+      const std::optional<model::Pose3> found = combined.T_base(frames.parent, frame.data_frame);
+      REQUIRE(found);
+      model::Pose3 T_robot_frame = *found;
+      T_robot_frame.translation().z() += rig.base_link_height;
+      const model::Pose3 expected = frame.optical_frame
+                                        ? mount.T_robot_sensor * model::T_sensor_optical()
+                                        : mount.T_robot_sensor;
+      CHECK((T_robot_frame.translation() - expected.translation()).norm() < 1e-9);
+      CHECK(rotation_error(T_robot_frame, expected) < 1e-9);
     }
   }
+}
+
+TEST_CASE("export: a mount on a description link adds nothing; one beside it may not reuse "
+          "its names",
+          "[deploy]") {
+  const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
+  const model::Rig jackal = io::load_rig(source_path("rigs/jackal.yaml"));
+  const std::string text = io::sensors_xacro_text(deploy::sensor_frames(jackal, library), "t");
+  // Both mounts sit on the accessories' own links (front_laser, velodyne): no link, no joint.
+  CHECK(text.find("<link") == std::string::npos);
+  CHECK(text.find("<joint") == std::string::npos);
+  // The same laser placed by numbers under the accessory's name: the export would add
+  // front_laser_joint, which the Jackal's accessory xacro already declares.
+  model::Rig by_pose = jackal;
+  by_pose.mounts[0].urdf_link.clear();
+  REQUIRE(jackal.joint_where.count("front_laser_joint") == 1);
+  const model::SourceLocation& declared = jackal.joint_where.at("front_laser_joint");
+  CHECK_THROWS_WITH(deploy::sensor_frames(by_pose, library),
+                    Catch::Contains("joint 'front_laser_joint'") &&
+                        Catch::Contains(model::to_string(declared)) &&
+                        Catch::Contains(model::to_string(jackal.mounts[0].where)));
 }
 
 TEST_CASE("export: a camera's optical frame is z forward, x right, y down", "[deploy]") {

@@ -117,7 +117,8 @@ TEST_CASE("export: nav2 names in the exported file", "[deploy]") {
         "plugin: \"nav2_costmap_2d::VoxelLayer\"", "plugin: \"nav2_costmap_2d::InflationLayer\"",
         "plugin: \"nav2_costmap_2d::StaticLayer\"", "observation_sources: lidar oakd",
         "data_type: \"LaserScan\"", "data_type: \"PointCloud2\"",
-        "sensor_frame: oakd_optical_frame", "robot_base_frame: base_link"}) {
+        // The description's own optical child of the link the OAK-D is placed on.
+        "sensor_frame: oakd_rgb_camera_optical_frame", "robot_base_frame: base_link"}) {
     INFO(key);
     CHECK(text.find(key) != std::string::npos);
   }

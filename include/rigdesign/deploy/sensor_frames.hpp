@@ -1,9 +1,13 @@
 #pragma once
-/// The frames a rig's sensors need in the robot's description (issue 14): per mount a link at
-/// the sensor origin with a fixed joint to a parent link, named after the mount id. Lidar and
-/// scanner links keep REP-103's body axes (x forward, z up), which is how their drivers stamp
-/// scans and clouds; a camera link gets an `_optical_frame` child (z forward, x right, y down)
-/// for the images and depth clouds its driver publishes.
+/// The frames a rig's sensors need in the robot's description (issues 14 and 30): a mount
+/// placed on a description's link (`urdf_link`) uses that link as it is; any other mount gets
+/// a link at the sensor origin with a fixed joint to a parent link, named after the mount id.
+/// Lidar and scanner links keep REP-103's body axes (x forward, z up), which is how their
+/// drivers stamp scans and clouds; a camera gets an optical frame (z forward, x right, y
+/// down) for the images and depth clouds its driver publishes: the link itself when it is
+/// one, the description's optical child of its link when that has one, else a new
+/// `<id>_optical_frame`. A name the export would add that the description already has (or
+/// that two mounts would both add) is an error naming both places.
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,8 +22,15 @@ struct SensorFrame {
   std::string mount_id;
   std::string sensor_id;
   std::string mode_id;
-  std::string link;                          ///< `<id>_link`
-  std::optional<std::string> optical_frame;  ///< `<id>_optical_frame` for cameras
+  std::string link;  ///< the description's `urdf_link`, or `<id>_link`
+  /// The export adds `link` with this fixed joint from the parent; empty when the description
+  /// has the link (a mount placed by `urdf_link`).
+  std::string joint;
+  /// A camera's optical frame (nothing for lidars and scanners), and the joint the export adds
+  /// for it from `link` (empty when the description has the frame).
+  std::optional<std::string> optical_frame;
+  std::string optical_joint;
+  std::string data_frame;  ///< what the driver stamps with: the optical frame, else the link
   model::Pose3 T_parent_link = model::Pose3::Identity();  ///< the fixed joint's origin
 };
 
@@ -36,13 +47,11 @@ std::string optical_frame_name(const std::string& mount_id);
 /// link of the rig's description; nothing for any other name.
 std::optional<model::Pose3> robot_frame_pose(const model::Rig& rig, const std::string& frame);
 
-/// The frame a mount's driver stamps its data with: a camera's optical frame, else its link.
-std::string data_frame_name(const std::string& mount_id, const model::SensorMode& mode);
-
 /// Frames of every mount of `rig` (modes from `library`; a mount whose mode is missing is a
 /// precondition violation). `parent` empty: the rig's base link (base_footprint without a
 /// description). Throws InputError at the rig when `parent` is neither base_footprint nor a
-/// link of the rig's description.
+/// link of the rig's description, and at a mount whose added link or joint the description
+/// already has (naming its file and line) or another mount adds too.
 SensorFrames sensor_frames(const model::Rig& rig, const model::SensorLibrary& library,
                            const std::string& parent = {});
 

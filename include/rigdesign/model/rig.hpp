@@ -62,9 +62,27 @@ struct Mount {
   SourceLocation sensor_where;  ///< its `sensor` value, for findings about the reference
   SourceLocation mode_where;    ///< its `mode` value
   SourceLocation pose_where;    ///< its `pose`
+  /// The description's link the pose was taken from (`pose: {urdf_link: ...}`), empty for a
+  /// pose given by numbers: the export reuses that link instead of adding one.
+  std::string urdf_link;
+  /// The link is a camera's optical frame (z forward): the frame the driver stamps with.
+  bool urdf_link_optical = false;
   /// What the deployed stack removes from this mount's data (`check` with nav2 parameters and
   /// self-filters); empty for the design itself.
   MountLimits limits;
+};
+
+/// How a rig (or catalog) names its robot description, resolved: enough to load the same
+/// robot again (`check` and `export` of a chosen rig, a round trip with the exported macro).
+struct RobotSource {
+  std::string description;  ///< the .urdf or .urdf.xacro, absolute or relative to the cwd
+  std::map<std::string, std::string> args;
+  std::map<std::string, std::string> environment;
+  std::vector<std::string> package_paths;  ///< as resolved (absolute or relative to the cwd)
+  std::string base_link;                   ///< as given; empty: the loader's choice
+  double base_link_height = 0.0;           ///< [m]
+  std::string expander = "auto";           ///< auto, builtin or xacro
+  bool poses_only = false;                 ///< a legacy `urdf:` entry (no collision geometry)
 };
 
 struct Rig {
@@ -88,6 +106,13 @@ struct Rig {
   std::string base_link = "base_footprint";
   double base_link_height = 0.0;  ///< [m]
   std::map<std::string, Pose3> link_poses;
+  /// The description's links and joints where they are written, and each link's parent: what
+  /// the exported sensor macro must not name again, and where a link's children are.
+  std::map<std::string, SourceLocation> link_where;
+  std::map<std::string, SourceLocation> joint_where;
+  std::map<std::string, std::string> parent_link;
+  /// The description the links come from; nothing without one.
+  std::optional<RobotSource> robot;
 
   /// The distance at which a mount's resolution and noise are judged [m].
   double distance_for(const Mount& mount) const {

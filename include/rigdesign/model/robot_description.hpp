@@ -33,6 +33,10 @@ struct RobotDescription {
   std::string root_link;
   std::map<std::string, Pose3> T_root_link;  ///< every link's pose in the root link's frame
   std::map<std::string, SourceLocation> link_where;
+  /// Every joint's element, and each link's parent link (the root has none): the names an
+  /// exported sensor macro must not repeat, and where to find a link's children.
+  std::map<std::string, SourceLocation> joint_where;
+  std::map<std::string, std::string> parent_link;
   std::vector<CollisionShape> collisions;
 
   /// T_base_link: `link`'s pose in `base`'s frame; nothing when either is not a link.

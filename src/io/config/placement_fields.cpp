@@ -132,7 +132,7 @@ void check_link_convention(MapReader& pose, const std::string& link, const model
 
 }  // namespace
 
-model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot) {
+model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot, MountLink* used) {
   // The sensor frame rigdesign mounts by is x-forward; an optical-frame pose is turned into it.
   const model::Pose3 T_optical_sensor = model::T_sensor_optical().inverse();
   if (pose.has("urdf_link")) {
@@ -155,6 +155,7 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot) 
       const bool as_optical =
           frame == PoseFrame::optical || (frame == PoseFrame::automatic && named_optical);
       check_link_convention(pose, link, it->second, as_optical, named_optical);
+      if (used) *used = {link, as_optical};
       return as_optical ? it->second * T_optical_sensor : it->second;
     }
     pose.require(false, "urdf_link", "no link '" + link + "' in the URDF",
@@ -247,6 +248,9 @@ std::optional<RobotLinks> links_of(model::RobotDescription description, std::str
     T_robot_link.translation() += up;
     links.T_base_link[name] = T_robot_link;
   }
+  links.link_where = description.link_where;
+  links.joint_where = description.joint_where;
+  links.parent_link = description.parent_link;
   links.description = std::move(description);
   return links;
 }
@@ -264,7 +268,10 @@ std::optional<RobotLinks> read_legacy_urdf(MapReader& urdf, const std::string& f
   request.field = "urdf.file";
   std::optional<RobotLinks> links =
       links_of(load_robot_description(request), base, 0.0, "urdf", urdf, "base_link");
-  if (links) links->description.reset();
+  if (links) {
+    links->description.reset();
+    links->source = model::RobotSource{request.path, {}, {}, {}, base, 0.0, "builtin", true};
+  }
   return links;
 }
 
@@ -304,8 +311,20 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
     robot->reject_unknown_keys();
     if (!description) return failed_links();
     request.path = resolve_beside(file, *description);
-    return links_of(load_robot_description(request), base, base_height, "robot", *robot,
-                    "base_link");
+    std::optional<RobotLinks> links = links_of(load_robot_description(request), base,
+                                               base_height, "robot", *robot, "base_link");
+    if (links && !links->failed) {
+      static const char* const kExpanders[] = {"auto", "builtin", "xacro"};
+      links->source = model::RobotSource{request.path,
+                                         request.args,
+                                         request.environment,
+                                         request.package_paths,
+                                         base,
+                                         base_height,
+                                         kExpanders[static_cast<int>(request.expander)],
+                                         false};
+    }
+    return links;
   } catch (const model::InputError& error) {
     for (const model::Diagnostic& diagnostic : error.diagnostics())
       top.diagnostics().add(diagnostic);

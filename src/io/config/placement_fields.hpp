@@ -23,14 +23,28 @@ struct RobotLinks {
   std::string field;      ///< "robot" or "urdf", for messages
   std::map<std::string, model::Pose3> T_base_link;
   std::optional<model::RobotDescription> description;
+  /// The description's links and joints where written, and each link's parent (kept when a
+  /// legacy `urdf` drops the description itself).
+  std::map<std::string, model::SourceLocation> link_where;
+  std::map<std::string, model::SourceLocation> joint_where;
+  std::map<std::string, std::string> parent_link;
+  std::optional<model::RobotSource> source;  ///< how to load the description again
   bool failed = false;  ///< named but not loaded (its errors are already recorded)
+};
+
+/// The description's link a pose was taken from, and whether it was taken as an optical frame.
+struct MountLink {
+  std::string name;
+  bool optical = false;
 };
 
 /// The `robot` (or `urdf`) map of a rig or catalog at `file`; problems are recorded on `top`.
 std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& file);
 
-/// A pose is xyz (+ rpy_deg) in the robot frame, or the pose of a description's link.
-model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot);
+/// A pose is xyz (+ rpy_deg) in the robot frame, or the pose of a description's link (then
+/// named in `used` when given).
+model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot,
+                       MountLink* used = nullptr);
 
 /// A catalog slot's pose: as read_pose, or with ranges in place of any of xyz's and rpy_deg's
 /// six numbers, `{min: 0, max: 40, step: 5}`: every combination of their values, in order

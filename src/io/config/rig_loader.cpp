@@ -29,7 +29,10 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
   mount.mode_where = reader.location("mode");
   mount.pose_where = reader.location("pose");
   if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg, or urdf_link")) {
-    mount.T_robot_sensor = read_pose(*pose, robot);
+    io::MountLink link;
+    mount.T_robot_sensor = read_pose(*pose, robot, &link);
+    mount.urdf_link = link.name;
+    mount.urdf_link_optical = link.optical;
   }
   if (reader.has("distance_of_interest")) {
     mount.distance_of_interest =
@@ -60,6 +63,10 @@ model::Rig load_rig(const std::string& path) {
     rig.base_link = robot->base_link;
     rig.base_link_height = robot->base_height;
     rig.link_poses = robot->T_base_link;
+    rig.link_where = robot->link_where;
+    rig.joint_where = robot->joint_where;
+    rig.parent_link = robot->parent_link;
+    rig.robot = robot->source;
   }
   // With a robot description the body is its collision geometry unless `body` is given.
   if (auto body =

@@ -104,6 +104,16 @@ std::map<std::string, LinkPlaces> link_places(const xml::Node& robot) {
   return places;
 }
 
+// Where each <joint> element is, by name.
+std::map<std::string, model::SourceLocation> joint_places(const xml::Node& robot) {
+  std::map<std::string, model::SourceLocation> places;
+  for (const xml::Node& child : robot.children) {
+    if (!child.is_element("joint")) continue;
+    if (const std::string* name = child.attribute("name")) places.emplace(*name, child.where);
+  }
+  return places;
+}
+
 model::CollisionShape shape_of(const urdf::Collision& collision, const std::string& link,
                                const model::Pose3& T_root_link, const model::SourceLocation& where,
                                const RobotDescriptionRequest& request,
@@ -195,6 +205,7 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
   description.file = request.path;
   description.root_link = urdf_model->getRoot()->name;
   const std::map<std::string, LinkPlaces> places = link_places(tree);
+  description.joint_where = joint_places(tree);
   std::vector<urdf::LinkSharedPtr> links;
   urdf_model->getLinks(links);
   for (const urdf::LinkSharedPtr& link : links) {
@@ -202,6 +213,7 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
     description.T_root_link[link->name] = T_root_link;
     const auto place = places.find(link->name);
     if (place != places.end()) description.link_where[link->name] = place->second.link;
+    if (link->parent_joint) description.parent_link[link->name] = link->parent_joint->parent_link_name;
     for (std::size_t i = 0; i < link->collision_array.size(); ++i) {
       const urdf::CollisionSharedPtr& collision = link->collision_array[i];
       if (!collision || !collision->geometry) continue;

@@ -30,31 +30,40 @@ std::string sensors_xacro_text(const deploy::SensorFrames& frames, const std::st
          "  Joint origins are relative to the link `"
       << xml_comment_line(frames.parent)
       << "`: pass another `parent` only if it\n"
-         "  coincides with it. Lidars and scanners: point the driver's frame_id at <id>_link\n"
-         "  (x forward, z up). Cameras: images and depth clouds in <id>_optical_frame (z\n"
-         "  forward, x right, y down, REP-103).\n-->\n";
+         "  coincides with it. Mounts placed on a link of the description use that link:\n"
+         "  nothing is added for them but a camera's optical frame where the description has\n"
+         "  none. Lidars and scanners: the driver's frame_id is the sensor's link (x forward,\n"
+         "  z up). Cameras: images and depth clouds in the optical frame (z forward, x right,\n"
+         "  y down, REP-103). `prefix` goes before every added name, not the description's.\n"
+         "-->\n";
   out << "<robot xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n";
   out << "  <xacro:macro name=\"rig_sensors\" params=\"parent:=" << xml_attribute(frames.parent)
       << " prefix:=${''}\">\n";
   for (const deploy::SensorFrame& frame : frames.frames) {
-    const model::Vec3 rpy = model::rpy_from_rotation(frame.T_parent_link.linear());
     out << "    <!-- "
-        << xml_comment_line(frame.mount_id + ": " + frame.sensor_id + ", mode " + frame.mode_id)
+        << xml_comment_line(frame.mount_id + ": " + frame.sensor_id + ", mode " + frame.mode_id +
+                            (frame.joint.empty() ? "; on the description's link " + frame.link
+                                                 : std::string()))
         << " -->\n";
-    out << "    <link name=\"${prefix}" << xml_attribute(frame.link) << "\"/>\n";
-    out << "    <joint name=\"${prefix}" << xml_attribute(frame.mount_id)
-        << "_joint\" type=\"fixed\">\n";
-    out << "      <parent link=\"${parent}\"/>\n";
-    out << "      <child link=\"${prefix}" << xml_attribute(frame.link) << "\"/>\n";
-    out << "      <origin xyz=\"" << triple(frame.T_parent_link.translation()) << "\" rpy=\""
-        << triple(rpy) << "\"/>\n";
-    out << "    </joint>\n";
-    if (frame.optical_frame) {
+    // A link the description has is neither written again nor prefixed.
+    const std::string link = frame.joint.empty() ? xml_attribute(frame.link)
+                                                 : "${prefix}" + xml_attribute(frame.link);
+    if (!frame.joint.empty()) {
+      const model::Vec3 rpy = model::rpy_from_rotation(frame.T_parent_link.linear());
+      out << "    <link name=\"" << link << "\"/>\n";
+      out << "    <joint name=\"${prefix}" << xml_attribute(frame.joint) << "\" type=\"fixed\">\n";
+      out << "      <parent link=\"${parent}\"/>\n";
+      out << "      <child link=\"" << link << "\"/>\n";
+      out << "      <origin xyz=\"" << triple(frame.T_parent_link.translation()) << "\" rpy=\""
+          << triple(rpy) << "\"/>\n";
+      out << "    </joint>\n";
+    }
+    if (frame.optical_frame && !frame.optical_joint.empty()) {
       const model::Vec3 optical = model::rpy_from_rotation(model::T_sensor_optical().linear());
       out << "    <link name=\"${prefix}" << xml_attribute(*frame.optical_frame) << "\"/>\n";
-      out << "    <joint name=\"${prefix}" << xml_attribute(frame.mount_id)
-          << "_optical_joint\" type=\"fixed\">\n";
-      out << "      <parent link=\"${prefix}" << xml_attribute(frame.link) << "\"/>\n";
+      out << "    <joint name=\"${prefix}" << xml_attribute(frame.optical_joint)
+          << "\" type=\"fixed\">\n";
+      out << "      <parent link=\"" << link << "\"/>\n";
       out << "      <child link=\"${prefix}" << xml_attribute(*frame.optical_frame) << "\"/>\n";
       out << "      <origin xyz=\"0 0 0\" rpy=\"" << triple(optical) << "\"/>\n";
       out << "    </joint>\n";
