@@ -104,10 +104,20 @@ double checked_option_count(const SelectOptions& options, const model::Catalog& 
 }
 
 int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
-  const model::Catalog catalog = io::load_catalog(options.catalog);
+  model::Catalog catalog = io::load_catalog(options.catalog);
   const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
   io::check_catalog_references(catalog, library).throw_if_errors();
   const model::Requirements requirements = load_select_requirements(options, catalog);
+  // The requirements say how high the area to perceive reaches, as for a rig (cli/inputs).
+  if (requirements.area_height) {
+    if (catalog.body.area_height &&
+        std::abs(*catalog.body.area_height - *requirements.area_height) > 1e-9) {
+      out << model::to_string(requirements.area_height_where)
+          << ": area_height: warning: overrides the catalog's area_height "
+          << model::format_number(*catalog.body.area_height) << " m\n";
+    }
+    catalog.body.area_height = requirements.area_height;
+  }
   model::RelaxationPolicy policy;
   if (!options.policy.empty()) {
     policy = io::load_policy(options.policy);

@@ -46,7 +46,8 @@ std::string write_chosen_rig(const SelectReport& report, const model::SensorLibr
                       "Chosen by `rigdesign select` from " + report.catalog->file + "\nCost " +
                           fixed(cost.total, 0) + " USD (sensors " + fixed(cost.sensors, 0) +
                           ", transfer " + cost.transfer_id + " " + fixed(cost.transfer, 0) +
-                          ", CPU " + cost.cpu_id + " " + fixed(cost.cpu, 0) + ")"));
+                          ", CPU " + cost.cpu_id + " " + fixed(cost.cpu, 0) + ")",
+                      folder));
   return rig_file;
 }
 

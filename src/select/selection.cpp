@@ -217,6 +217,13 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
   rig.body = catalog_->body;
   rig.distance_of_interest = catalog_->distance_of_interest;
   rig.file = catalog_->file;
+  rig.robot = catalog_->robot;
+  rig.base_link = catalog_->base_link;
+  rig.base_link_height = catalog_->base_link_height;
+  rig.link_poses = catalog_->link_poses;
+  rig.link_where = catalog_->link_where;
+  rig.joint_where = catalog_->joint_where;
+  rig.parent_link = catalog_->parent_link;
   for (const CatalogOption* option : chosen) {
     const model::MountingSlot& slot = catalog_->slots[option->slot];
     model::Mount mount;
@@ -224,6 +231,8 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
     mount.sensor_id = option->sensor->id;
     mount.mode_id = option->mode->id;
     mount.T_robot_sensor = slot.poses[option->pose].T_robot_sensor;
+    mount.urdf_link = slot.poses[option->pose].urdf_link;
+    mount.urdf_link_optical = slot.poses[option->pose].urdf_link_optical;
     mount.distance_of_interest = slot.distance_of_interest;
     rig.mounts.push_back(mount);
   }

@@ -28,6 +28,10 @@ struct SlotPose {
   std::string label;
   /// x, y, z [m], roll, pitch, yaw [rad] (REP-103 fixed axes) of a pose range's pose.
   std::array<double, 6> values{};
+  /// The description link the pose is (`urdf_link`), empty for numbers; and whether it was
+  /// taken as a camera's optical frame. The chosen rig keeps it.
+  std::string urdf_link;
+  bool urdf_link_optical = false;
 };
 
 /// The names of a pose's six axes, indexed as PoseAxisRange::axis and SlotPose::values, as
@@ -68,7 +72,18 @@ struct Catalog {
   std::string name;
   std::string sensor_library;  ///< as written, relative to the catalog file
   SourceLocation sensor_library_where;
+  /// The body: the robot description's collision geometry (`robot:`), or `body:`; its
+  /// area_height from the catalog or the requirements.
   RobotBody body;
+  /// The robot description, as a rig names it; nothing without one. Its links, joints and
+  /// base link as a rig keeps them, so that the chosen rig stands on the same robot.
+  std::optional<RobotSource> robot;
+  std::string base_link = "base_footprint";
+  double base_link_height = 0.0;
+  std::map<std::string, Pose3> link_poses;
+  std::map<std::string, SourceLocation> link_where;
+  std::map<std::string, SourceLocation> joint_where;
+  std::map<std::string, std::string> parent_link;
   double distance_of_interest = 0.0;  ///< d [m]
   std::vector<CandidateSensor> sensors;
   std::vector<MountingSlot> slots;

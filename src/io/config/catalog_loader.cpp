@@ -7,6 +7,7 @@
 #include "io/config/field_checks.hpp"
 #include "io/config/placement_fields.hpp"
 #include "io/config/yaml_reader.hpp"
+#include "rigdesign/geometry/body_from_description.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 
@@ -100,8 +101,31 @@ model::Catalog load_catalog(const std::string& path) {
   catalog.name = top.text("name", Need::required, "the catalog's name").value_or("");
   catalog.sensor_library = top.text("sensor_library", Need::optional).value_or("");
   catalog.sensor_library_where = top.location("sensor_library");
-  if (auto body = top.map("body", Need::required, "a map with height and radius or footprint")) {
+  // As a rig: with a robot description the body is its collision geometry unless `body` is
+  // given, and the search sees the same shadows check and export see.
+  const std::optional<RobotLinks> urdf = io::read_robot_links(top, path);
+  const bool has_geometry = urdf && !urdf->failed && urdf->description;
+  if (urdf && !urdf->failed) {
+    catalog.robot = urdf->source;
+    catalog.base_link = urdf->base_link;
+    catalog.base_link_height = urdf->base_height;
+    catalog.link_poses = urdf->T_base_link;
+    catalog.link_where = urdf->link_where;
+    catalog.joint_where = urdf->joint_where;
+    catalog.parent_link = urdf->parent_link;
+  }
+  if (auto body = top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,
+                          "a map with height and radius or footprint")) {
     catalog.body = io::read_body(*body);
+  } else if (has_geometry) {
+    catalog.body =
+        geometry::body_from_description(*urdf->description, urdf->base_link, urdf->base_height);
+    top.require(catalog.body.has_parts(), "robot", "has no collision geometry",
+                "links with <collision> elements, or a `body` (radius or footprint, height)");
+  }
+  if (top.has("area_height")) {
+    catalog.body.area_height = io::positive(top, "area_height", Need::required,
+                                            "the top of the area to perceive in metres, > 0");
   }
   catalog.distance_of_interest =
       io::positive(top, "distance_of_interest", Need::required,
@@ -117,7 +141,6 @@ model::Catalog load_catalog(const std::string& path) {
       io::non_negative(top, "filtering_seconds_per_point", Need::required,
                        "core-seconds of point filtering per delivered point, >= 0");
   const std::optional<model::FilteringLoads> measured = read_measured_loads(top, path);
-  const std::optional<RobotLinks> urdf = io::read_robot_links(top, path);
 
   std::set<std::string> seen;
   for (MapReader& reader : top.maps("sensors", Need::required, "a list of candidate sensors")) {

@@ -86,7 +86,11 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
                                            std::vector<model::PoseAxisRange>& ranges) {
   const YAML::Node xyz = pose.node("xyz");
   const YAML::Node rpy = pose.node("rpy_deg");
-  if (!holds_range(xyz) && !holds_range(rpy)) return {{read_pose(pose, robot), ""}};
+  if (!holds_range(xyz) && !holds_range(rpy)) {
+    MountLink link;
+    model::SlotPose single{read_pose(pose, robot, &link), "", {}, link.name, link.optical};
+    return {single};
+  }
   std::vector<Axis> axes(6);
   bool valid = true;
   for (const auto& [key, node, first] : {std::tuple{"xyz", xyz, 0}, std::tuple{"rpy_deg", rpy, 3}}) {
@@ -113,13 +117,13 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
   pose.require(!pose.has("frame"), "frame", "is not supported with a pose range",
                "an x-forward pose (frame: body, the default)");
   pose.reject_unknown_keys();
-  if (!valid) return {{model::Pose3::Identity(), ""}};
+  if (!valid) return {model::SlotPose{}};
   double poses_named = 1.0;  // at most 400^6 = 4.1e15 (axes are bounded above): exact in double
   for (const Axis& axis : axes) poses_named *= static_cast<double>(axis.values.size());
   if (poses_named > static_cast<double>(kMaxSlotPoses)) {
     pose.require(false, "xyz", model::format_number(poses_named, 3) + " poses in one slot",
                  "at most " + std::to_string(kMaxSlotPoses) + " (coarser steps, or more slots)");
-    return {{model::Pose3::Identity(), ""}};
+    return {model::SlotPose{}};
   }
   const auto count = static_cast<std::size_t>(poses_named);
   // Angles in radians from here on (SI in code).
@@ -146,7 +150,7 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
     for (int i = 0; i < 6; ++i) values[i] = si(i, v[i]);
     poses.push_back({model::pose_from_xyz_rpy(model::Vec3(values[0], values[1], values[2]),
                                               model::Vec3(values[3], values[4], values[5])),
-                     label, values});
+                     label, values, "", false});
     for (int i = 5; i >= 0; --i) {  // the last axis varies fastest
       if (++index[i] < axes[i].values.size()) break;
       index[i] = 0;

@@ -1,5 +1,7 @@
 #include "rigdesign/io/config/yaml_writers.hpp"
 
+#include <filesystem>
+#include <map>
 #include <sstream>
 
 #include "io/emit/yaml_emit.hpp"
@@ -16,36 +18,92 @@ std::string number(double value) {
   return model::format_number(value, 12);
 }
 
+// A cylinder or prism body (a rig without collision geometry).
+void write_body(std::ostringstream& out, const model::RobotBody& body) {
+  out << "body:\n  height: " << number(body.height) << '\n';
+  if (body.footprint.empty()) {
+    out << "  radius: " << number(body.radius) << '\n';
+  } else {
+    out << "  footprint: [";
+    for (std::size_t i = 0; i < body.footprint.size(); ++i) {
+      out << (i ? ", " : "") << '[' << number(body.footprint[i].x()) << ", "
+          << number(body.footprint[i].y()) << ']';
+    }
+    out << "]\n";
+  }
+}
+
+// `path` as seen from `folder`.
+std::string relative_to(const std::string& path, const std::string& folder) {
+  return std::filesystem::absolute(path)
+      .lexically_normal()
+      .lexically_relative(std::filesystem::absolute(folder).lexically_normal())
+      .string();
+}
+
+void write_text_map(std::ostringstream& out, const char* key,
+                    const std::map<std::string, std::string>& values) {
+  if (values.empty()) return;
+  out << "  " << key << ": {";
+  bool first = true;
+  for (const auto& [name, value] : values) {
+    out << (first ? "" : ", ") << yaml_scalar(name) << ": " << yaml_quoted(value);
+    first = false;
+  }
+  out << "}\n";
+}
+
+// The description as a rig names it: `robot:` (collision geometry) or a legacy `urdf:`.
+void write_robot(std::ostringstream& out, const model::RobotSource& robot,
+                 const std::string& folder) {
+  if (robot.poses_only) {
+    out << "urdf:\n  file: " << yaml_quoted(relative_to(robot.description, folder)) << '\n';
+    if (!robot.base_link.empty()) out << "  base_link: " << yaml_quoted(robot.base_link) << '\n';
+    return;
+  }
+  out << "robot:\n  description: " << yaml_quoted(relative_to(robot.description, folder)) << '\n';
+  write_text_map(out, "args", robot.args);
+  write_text_map(out, "env", robot.environment);
+  if (!robot.package_paths.empty()) {
+    out << "  package_paths: [";
+    for (std::size_t i = 0; i < robot.package_paths.size(); ++i)
+      out << (i ? ", " : "") << yaml_quoted(relative_to(robot.package_paths[i], folder));
+    out << "]\n";
+  }
+  if (!robot.base_link.empty()) out << "  base_link: " << yaml_quoted(robot.base_link) << '\n';
+  out << "  base_link_height: " << number(robot.base_link_height) << '\n';
+  out << "  expander: " << robot.expander << '\n';
+}
+
 }  // namespace
 
 std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library,
-                        const std::string& requirements, const std::string& comment) {
+                        const std::string& requirements, const std::string& comment,
+                        const std::string& folder) {
   std::ostringstream out;
   out << yaml_comment(comment);
   out << "name: " << yaml_quoted(rig.name) << '\n';
   if (!sensor_library.empty()) out << "sensor_library: " << yaml_quoted(sensor_library) << '\n';
   if (!requirements.empty()) out << "requirements: " << yaml_quoted(requirements) << '\n';
-  out << "body:\n  height: " << number(rig.body.height) << '\n';
-  if (rig.body.footprint.empty()) {
-    out << "  radius: " << number(rig.body.radius) << '\n';
-  } else {
-    out << "  footprint: [";
-    for (std::size_t i = 0; i < rig.body.footprint.size(); ++i) {
-      out << (i ? ", " : "") << '[' << number(rig.body.footprint[i].x()) << ", "
-          << number(rig.body.footprint[i].y()) << ']';
-    }
-    out << "]\n";
-  }
+  if (rig.robot) write_robot(out, *rig.robot, folder);
+  if (rig.body.area_height) out << "area_height: " << number(*rig.body.area_height) << '\n';
+  if (!rig.body.has_parts()) write_body(out, rig.body);
   out << "distance_of_interest: " << number(rig.distance_of_interest) << '\n';
   out << "mounts:\n";
   for (const model::Mount& mount : rig.mounts) {
-    const model::Vec3 xyz = mount.T_robot_sensor.translation();
-    const model::Vec3 rpy = model::rpy_from_rotation(mount.T_robot_sensor.linear());
     out << "  - id: " << yaml_quoted(mount.id) << "\n    sensor: " << yaml_quoted(mount.sensor_id)
-        << "\n    mode: " << yaml_quoted(mount.mode_id) << "\n    pose: {xyz: [" << number(xyz.x())
-        << ", " << number(xyz.y()) << ", " << number(xyz.z()) << "], rpy_deg: ["
-        << number(model::rad_to_deg(rpy.x())) << ", " << number(model::rad_to_deg(rpy.y())) << ", "
-        << number(model::rad_to_deg(rpy.z())) << "]}\n";
+        << "\n    mode: " << yaml_quoted(mount.mode_id) << '\n';
+    if (!mount.urdf_link.empty()) {
+      out << "    pose: {urdf_link: " << yaml_quoted(mount.urdf_link)
+          << ", frame: " << (mount.urdf_link_optical ? "optical" : "body") << "}\n";
+    } else {
+      const model::Vec3 xyz = mount.T_robot_sensor.translation();
+      const model::Vec3 rpy = model::rpy_from_rotation(mount.T_robot_sensor.linear());
+      out << "    pose: {xyz: [" << number(xyz.x()) << ", " << number(xyz.y()) << ", "
+          << number(xyz.z()) << "], rpy_deg: [" << number(model::rad_to_deg(rpy.x())) << ", "
+          << number(model::rad_to_deg(rpy.y())) << ", " << number(model::rad_to_deg(rpy.z()))
+          << "]}\n";
+    }
     if (mount.distance_of_interest) {
       out << "    distance_of_interest: " << number(*mount.distance_of_interest) << '\n';
     }
@@ -62,6 +120,7 @@ std::string requirements_to_yaml(const model::Requirements& requirements,
     out << "body: {radius: " << number(*requirements.body_radius)
         << ", height: " << number(*requirements.body_height) << "}\n";
   }
+  if (requirements.area_height) out << "area_height: " << number(*requirements.area_height) << '\n';
   if (!requirements.sectors.empty()) {
     out << "sectors:\n";
     for (const model::SectorRequirement& sector : requirements.sectors) {
