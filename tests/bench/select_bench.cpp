@@ -2,7 +2,8 @@
 // slot options), branch and bound to proven optimality and brute force over every
 // assignment of the same problem for the ratio; on the bundled pose-range catalog (159
 // options) and on the same with finer steps (303 options, written here), branch and bound
-// alone (brute force would visit 10^13 assignments), for the growth. Counters report
+// alone (brute force would visit 10^13 assignments), for the growth; on the Jackal's own
+// description (171 options) the whole select, loading and rasterising included. Counters report
 // nodes, rigs evaluated and the time per evaluated rig. Run through scripts/bench.sh select.
 #include <benchmark/benchmark.h>
 
@@ -109,6 +110,26 @@ void BM_SelectPoseRanges159(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(select::select_cheapest(b.space, b.requirements));
 }
 
+// Issue 30: the Jackal's description (both laser accessories) as the body, 171 options: load
+// the catalog (the description's xacro expansion and meshes), rasterise every option on the
+// collision geometry and search to proven optimum with exact verification, as `select` does.
+void BM_SelectJackalDescription171(benchmark::State& state) {
+  const std::string file = RIGDESIGN_SOURCE_DIR "/rigs/catalogs/jackal_pose_ranges.yaml";
+  const model::SensorLibrary library =
+      io::load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
+  const model::Requirements requirements =
+      io::load_requirements(RIGDESIGN_SOURCE_DIR "/rigs/requirements/jackal.yaml");
+  std::size_t options = 0;
+  for (auto _ : state) {
+    model::Catalog catalog = io::load_catalog(file);
+    catalog.body.area_height = requirements.area_height;
+    const select::SelectionSpace space(catalog, library);
+    options = space.option_count();
+    benchmark::DoNotOptimize(select::select_cheapest(space, requirements));
+  }
+  state.counters["options"] = static_cast<double>(options);
+}
+
 void BM_BruteForce(benchmark::State& state) {
   select::SearchResult result;
   for (auto _ : state) result = select::brute_force(bundled().problem);
@@ -141,6 +162,11 @@ BENCHMARK(BM_BranchAndBoundPoseRanges303)
     ->Repetitions(3)
     ->ReportAggregatesOnly();
 BENCHMARK(BM_SelectPoseRanges159)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_SelectJackalDescription171)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Repetitions(3)

@@ -1,5 +1,6 @@
 #include "rigdesign/io/config/yaml_writers.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -14,8 +15,9 @@ namespace rigdesign::io {
 namespace {
 
 // Enough digits that a pose read back equals the one written to well under a micrometre.
+// Rounding residue (1e-31 deg of roll, -0) is written as 0.
 std::string number(double value) {
-  return model::format_number(value, 12);
+  return model::format_number(std::abs(value) < 1e-12 ? 0.0 : value, 12);
 }
 
 // A cylinder or prism body (a rig without collision geometry).
