@@ -7,6 +7,7 @@
 #include <ostream>
 
 #include "app.hpp"
+#include "number_checks.hpp"
 #include "command.hpp"
 #include "report/check_github.hpp"
 #include "report/check_json.hpp"
@@ -67,6 +68,10 @@ Command setup_check(CLI::App& parent) {
   app->add_option("--requirements", options->requirements,
                   "Requirements to judge every rig against (default: the file each rig names)");
   app->add_option("--sensors", options->sensors, "Sensor library for every rig");
+  app->add_option("--global-frame-height", options->deployment.global_frame_height,
+                  "Height [m] of the nav2 file's global frame (odom) above the floor, as "
+                  "export --global-frame-height wrote it (default 0)")
+      ->check(finite_in(-10.0, 10.0, "a height in metres within +-10"));
   app->add_option("--nav2", options->deployment.nav2,
                   "nav2 costmap parameters the rig is deployed with: every mount needs an "
                   "observation source whose range and height band keep the requirements");

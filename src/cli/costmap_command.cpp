@@ -40,6 +40,7 @@ struct CostmapOptions {
   std::string sensors;
   std::string scenario;
   std::string params;  // nav2 costmap parameter file
+  double global_frame_height = 0.0;  // [m] of the file's global frame above the floor
   std::string layer;   // empty: the parameters' layer (the scenario's default: obstacle)
   bool no_hit_layer = false;
   bool no_memory = false;  // neither the Hit Layer nor any source's observation_persistence
@@ -268,9 +269,10 @@ void print_comparison(std::ostream& out, const std::vector<VariantRun>& runs) {
 }
 
 // A nav2 parameter file: its costmap, and its observation sources for the mounts they name.
-void apply_params_file(const std::string& path, const model::Rig& rig,
-                       scenarios::ScenarioParams& params) {
-  const io::CostmapParamsFile file = io::load_costmap_params(path, params.costmap, params.source);
+void apply_params_file(const std::string& path, double global_frame_height,
+                       const model::Rig& rig, scenarios::ScenarioParams& params) {
+  const io::CostmapParamsFile file =
+      io::load_costmap_params(path, params.costmap, params.source, global_frame_height);
   params.costmap = file.costmap;
   params.mount_sources = file.sources;
   for (const costmap::NamedObservationSource& named : file.sources) {
@@ -314,7 +316,8 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
                  "0 (no frames) or a number of updates");
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, "");
   scenarios::ScenarioParams params;
-  if (!options.params.empty()) apply_params_file(options.params, inputs.rig, params);
+  if (!options.params.empty())
+    apply_params_file(options.params, options.global_frame_height, inputs.rig, params);
   if (options.resolution) params.costmap.resolution = *options.resolution;
   if (options.window) params.costmap.size_x = params.costmap.size_y = *options.window;
   const double footprint = 2.0 * inputs.rig.body.radius;
@@ -384,6 +387,10 @@ Command setup_costmap(CLI::App& parent) {
   app->add_option("--scenario", options->scenario, "wall_following or stationary")->required();
   app->add_option("--params", options->params,
                   "nav2 costmap parameter file (docs/costmap.md); options below override it");
+  app->add_option("--global-frame-height", options->global_frame_height,
+                  "Height [m] of the --params file's global frame above the floor, as export "
+                  "--global-frame-height wrote it (default 0)")
+      ->check(finite_in(-10.0, 10.0, "a height in metres within +-10"));
   app->add_option("--layer", options->layer,
                   "obstacle (2D) or voxel (3D) (default: the parameters', else obstacle)");
   app->add_flag("--no-hit-layer", options->no_hit_layer, "Run without paper 1's Hit Layer");

@@ -95,6 +95,11 @@ Command setup_export(CLI::App& parent) {
   app->add_option("--update-rate", options->deploy.update_rate,
                   "Local costmap update rate [Hz] (default 5, nav2's)")
       ->check(positive_up_to(100.0, "a rate in (0, 100] Hz"));
+  app->add_option("--global-frame-height", options->deploy.global_frame_height,
+                  "Height [m] of the costmaps' global frame (odom) above the floor: the height "
+                  "bands are written in that frame (Clearpath's 2D EKF: the base link's "
+                  "height). Default 0, stated in the file")
+      ->check(finite_in(-10.0, 10.0, "a height in metres within +-10"));
   app->add_option("--hit-layer-plugin", options->deploy.hit_layer_plugin,
                   "Add paper 1's Hit Layer as this costmap plugin class (one you built; nav2 "
                   "has none). Default: none, nav2's observation_persistence remembers the "

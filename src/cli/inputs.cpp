@@ -63,6 +63,10 @@ RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensor
   if (!wanted_requirements.empty() && requirements_readable) {
     inputs.requirements =
         load_collecting([&] { return io::load_requirements(wanted_requirements); }, diagnostics);
+    if (inputs.requirements) {
+      for (const model::Diagnostic& warning : inputs.requirements->load_warnings)
+        diagnostics.add(warning);
+    }
   }
   // The requirements state how high the area to perceive reaches; a rig's own value yields.
   if (inputs.requirements && inputs.requirements->area_height) {

@@ -150,6 +150,7 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   config.inflation_margin = kInflationMargin;
   p.inflation.inflation_radius = round_up(config.robot_radius + kInflationMargin, 0.01);
   config.update_rate = options.update_rate;
+  config.global_frame_height = options.global_frame_height;
   config.floor_noise_sigmas = options.floor_noise_sigmas;
   bool any_3d = false;
   const SensorFrames frames = sensor_frames(rig, library, options.parent);
@@ -160,8 +161,9 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
     source.mount_id = mount.id;
     source.laser_scan = mode->fov.shape().is_planar_scan();
     any_3d = any_3d || !source.laser_scan;
-    source.topic =
+    source.raw_topic =
         expand_topic(source.laser_scan ? options.scan_topic : options.cloud_topic, mount.id);
+    source.topic = source.raw_topic;
     source.sensor_frame = frames.frames[m].data_frame;
     costmap::ObservationSource& s = source.source;
     const model::Vec3 origin = mount.T_robot_sensor.translation();

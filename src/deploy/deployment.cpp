@@ -4,8 +4,16 @@ namespace rigdesign::deploy {
 
 Deployment plan_deployment(const model::Rig& rig, const model::SensorLibrary& library,
                            const model::Requirements* requirements, const DeployOptions& options) {
-  return {sensor_frames(rig, library, options.parent),
-          costmap_config(rig, library, requirements, options), self_filters(rig, library)};
+  Deployment deployment{sensor_frames(rig, library, options.parent),
+                        costmap_config(rig, library, requirements, options),
+                        self_filters(rig, library)};
+  // The costmap reads what the self-filters leave, not the raw data with the robot in it.
+  for (std::size_t m = 0; m < deployment.self_filters.size(); ++m) {
+    SourceConfig& source = deployment.costmap.sources[m];
+    if (filters_anything(deployment.self_filters[m]))
+      source.topic = self_filtered_topic(source.raw_topic);
+  }
+  return deployment;
 }
 
 }  // namespace rigdesign::deploy

@@ -26,11 +26,21 @@ bool is_unit_suffixed(const std::string& name, const std::string& candidate) {
   return candidate == name + "_deg";
 }
 
+// URDF link names differ in a `_link` or `_frame` suffix from driver to description
+// (`velodyne_link` for the Jackal's `velodyne`): too far apart for the edit distance.
+bool differs_by_link_suffix(const std::string& name, const std::string& candidate) {
+  for (const char* suffix : {"_link", "_frame"}) {
+    if (name == candidate + suffix || candidate == name + suffix) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::string closest_name(const std::string& name, const std::vector<std::string>& candidates) {
   for (const std::string& candidate : candidates) {
-    if (is_unit_suffixed(name, candidate)) return candidate;
+    if (is_unit_suffixed(name, candidate) || differs_by_link_suffix(name, candidate))
+      return candidate;
   }
   std::string closest;
   std::size_t best = name.size() / 3 + 1;  // suggest only near misses

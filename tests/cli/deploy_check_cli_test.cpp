@@ -255,3 +255,38 @@ TEST_CASE("check --filters: a filter removing more than the robot warns even whe
   CHECK(exported.exit_code == 0);
   CHECK(exported.out.find("warning") == std::string::npos);
 }
+
+// Issue 30 item 5: where odom stands at base_link height (Clearpath's 2D EKF: 0.0655 m on
+// the Jackal), the height bands are written 0.0655 m lower, and read back with the same
+// height they are the floor bands again; read as if odom were on the floor, the band would
+// end 0.0655 m below the top of the area and D2 fails.
+TEST_CASE("export / check --global-frame-height: bands in the global frame", "[deploy]") {
+  TempFolder folder;
+  const std::string jackal = source_path("rigs/jackal.yaml");
+  const std::string floor = folder.path() + "/floor";
+  const std::string odom = folder.path() + "/odom";
+  REQUIRE(run_cli({"export", jackal, "--to", floor}).exit_code == 0);
+  REQUIRE(run_cli({"export", jackal, "--to", odom, "--global-frame-height", "0.0655"}).exit_code ==
+          0);
+  const auto band_top = [](const std::string& file) {
+    std::ifstream in(file);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string key = "max_obstacle_height: ";
+    const std::size_t at = text.find(key);
+    REQUIRE(at != std::string::npos);
+    return std::stod(text.substr(at + key.size()));
+  };
+  // The Jackal's area ends at 0.25 m (rigs/jackal.yaml area_height).
+  CHECK(band_top(floor + "/nav2_costmap.yaml") == Approx(0.25));
+  CHECK(band_top(odom + "/nav2_costmap.yaml") == Approx(0.25 - 0.0655));
+  const std::string requirements = folder.write(
+      "needs.yaml", "name: band only\nrange: {distance: 3.0}\n");
+  const CliResult right = run_cli({"check", jackal, "--requirements", requirements, "--nav2",
+                                   odom + "/nav2_costmap.yaml", "--global-frame-height", "0.0655"});
+  INFO(right.out << right.err);
+  CHECK(right.exit_code == 0);
+  const CliResult wrong = run_cli(
+      {"check", jackal, "--requirements", requirements, "--nav2", odom + "/nav2_costmap.yaml"});
+  CHECK(wrong.exit_code == 1);
+  CHECK(wrong.out.find("fail: D2 height band") != std::string::npos);
+}

@@ -247,3 +247,57 @@ TEST_CASE("pose.rpy (URDF's radians habit) is pointed at rpy_deg") {
   CHECK(result.err.find("mounts[0].pose.rpy: unknown field (did you mean 'rpy_deg'?)") !=
         std::string::npos);
 }
+
+// Issue 30 item 7: degrees in a radians field, radians in a degrees field, near misses.
+TEST_CASE("a sector of +-0.52 looks like radians: a warning at the sector") {
+  TempFolder folder;
+  folder.write("sensors.yaml", kLibrary);
+  const std::string requirements =
+      replaced(kRequirements, "from_deg: -45, to_deg: 45", "from_deg: -0.52, to_deg: 0.52");
+  folder.write("req.yaml", requirements);
+  const std::string rig = folder.write("rig.yaml", kRig);
+  const CliResult result = run_cli({"metrics", rig});
+  INFO(result.out << result.err);
+  CHECK(result.out.find(folder.path() + "/req.yaml:" +
+                        std::to_string(line_of(requirements, "from_deg: -0.52")) + ":") !=
+        std::string::npos);
+  CHECK(result.out.find("looks like radians") != std::string::npos);
+  CHECK(result.out.find("-29.79") != std::string::npos);  // -0.52 rad in degrees
+}
+
+TEST_CASE("a URDF origin in degrees is refused at its line; near-miss links and sensors are "
+          "named") {
+  TempFolder folder;
+  folder.write("sensors.yaml", kLibrary);
+  folder.write("req.yaml", kRequirements);
+  // A joint turned "90" about z: 90 rad is 14 turns and a quarter; 90 deg was meant.
+  const std::string urdf = "<robot name=\"r\">\n  <link name=\"base_footprint\"/>\n"
+                           "  <link name=\"cam_link\"/>\n"
+                           "  <joint name=\"cam_joint\" type=\"fixed\">\n"
+                           "    <parent link=\"base_footprint\"/><child link=\"cam_link\"/>\n"
+                           "    <origin xyz=\"0.41 0 0.5\" rpy=\"0 0 90\"/>\n  </joint>\n"
+                           "</robot>\n";
+  folder.write("r.urdf", urdf);
+  const std::string with_urdf =
+      replaced(kRig, "distance_of_interest: 3.0", "urdf: {file: r.urdf}\ndistance_of_interest: 3.0");
+  const CliResult degrees = run_cli({"metrics", folder.write("deg.yaml", with_urdf)});
+  INFO(degrees.out << degrees.err);
+  CHECK(degrees.exit_code == 2);
+  CHECK(degrees.err.find(folder.path() + "/r.urdf:6:") != std::string::npos);
+  CHECK(degrees.err.find("looks like degrees") != std::string::npos);
+  // The same joint in radians; a mount naming the link without its suffix is pointed at it.
+  folder.write("r.urdf", replaced(urdf, "rpy=\"0 0 90\"", "rpy=\"0 0 1.5707963267948966\""));
+  const CliResult near_link = run_cli(
+      {"metrics", folder.write("near.yaml",
+                               replaced(with_urdf, "pose: {xyz: [0.41, 0.0, 0.5], rpy_deg: [0, 20, 0]}",
+                                        "pose: {urdf_link: cam}"))});
+  CHECK(near_link.exit_code == 2);
+  CHECK(near_link.err.find("no link 'cam' in the URDF (did you mean 'cam_link'?)") !=
+        std::string::npos);
+  // A sensor id with a letter doubled.
+  const CliResult near_sensor =
+      run_cli({"metrics", folder.write("sensor.yaml", replaced(kRig, "sensor: spin", "sensor: spinn"))});
+  CHECK(near_sensor.exit_code == 2);
+  CHECK(near_sensor.err.find("unknown sensor 'spinn'") != std::string::npos);
+  CHECK(near_sensor.err.find("(did you mean 'spin'?)") != std::string::npos);
+}

@@ -80,7 +80,7 @@ slots:
 )";
 }
 
-model::SectorRequirement sector(const char* name, double from_deg, double to_deg,
+model::SectorRequirement robot_sector(const char* name, double from_deg, double to_deg,
                                 double complete, double floor) {
   constexpr double kRad = std::numbers::pi / 180.0;
   return {name, from_deg * kRad, to_deg * kRad, complete, floor, {}};
@@ -185,10 +185,10 @@ TEST_CASE("select on the Jackal's description equals a brute force on its collis
           "[select]") {
   check_against_brute_force(
       jackal_catalog(),
-      {{sector("front", -20, 20, 0.1, 0.1), sector("back", 160, 200, 0.05, 0.05)},
-       {sector("front", -20, 20, 0.5, 0.6), sector("back", 160, 200, 0.0, 0.0)},
-       {sector("front", -20, 20, 0.02, 0.0), sector("back", 160, 200, 0.01, 0.0)},
-       {sector("front", -20, 20, 0.99, 0.99), sector("back", 160, 200, 0.0, 0.0)}});
+      {{robot_sector("front", -20, 20, 0.1, 0.1), robot_sector("back", 160, 200, 0.05, 0.05)},
+       {robot_sector("front", -20, 20, 0.5, 0.6), robot_sector("back", 160, 200, 0.0, 0.0)},
+       {robot_sector("front", -20, 20, 0.02, 0.0), robot_sector("back", 160, 200, 0.01, 0.0)},
+       {robot_sector("front", -20, 20, 0.99, 0.99), robot_sector("back", 160, 200, 0.0, 0.0)}});
 }
 
 TEST_CASE("select on the TurtleBot 4's description equals a brute force on its collision "
@@ -196,7 +196,7 @@ TEST_CASE("select on the TurtleBot 4's description equals a brute force on its c
           "[select]") {
   check_against_brute_force(
       turtlebot_catalog(),
-      {{sector("front", -20, 20, 0.1, 0.1), sector("back", 160, 200, 0.05, 0.05)},
-       {sector("front", -20, 20, 0.3, 0.3), sector("back", 160, 200, 0.0, 0.0)},
-       {sector("front", -20, 20, 0.02, 0.0), sector("back", 160, 200, 0.01, 0.0)}});
+      {{robot_sector("front", -20, 20, 0.1, 0.1), robot_sector("back", 160, 200, 0.05, 0.05)},
+       {robot_sector("front", -20, 20, 0.3, 0.3), robot_sector("back", 160, 200, 0.0, 0.0)},
+       {robot_sector("front", -20, 20, 0.02, 0.0), robot_sector("back", 160, 200, 0.01, 0.0)}});
 }

@@ -33,13 +33,19 @@ struct DeployOptions {
   /// (`export --hit-layer-plugin`). Empty: no Hit Layer; the blind gaps are remembered by
   /// nav2's observation_persistence instead (deploy/blind_memory.hpp).
   std::string hit_layer_plugin;
+  /// [m] how high the costmap's global frame (odom) stands above the floor: Clearpath's 2D
+  /// EKF puts odom at base_link height. The file's height bands are written in that frame.
+  double global_frame_height = 0.0;
 };
 
 /// One observation source as nav2's obstacle and voxel layers read it.
 struct SourceConfig {
   std::string mount_id;
   bool laser_scan = false;  ///< data_type LaserScan (2D scanners), else PointCloud2
+  /// What the costmap subscribes to: the self-filter chain's output where the sensor sees
+  /// its robot (plan_deployment), else the driver's topic `raw_topic`.
   std::string topic;
+  std::string raw_topic;
   std::string sensor_frame;  ///< the frame the driver stamps its data with
   costmap::ObservationSource source;
   /// [m] the largest height error of a floor return within the marking range (0: the sensor
@@ -63,6 +69,9 @@ struct CostmapConfig {
   /// beyond the circumscribed radius.
   double floor_noise_sigmas = 0.0;
   double inflation_margin = 0.0;
+  /// [m] the global frame's height above the floor: heights in `costmap` and `sources` are
+  /// above the floor; the file says them in the global frame (minus this).
+  double global_frame_height = 0.0;
 };
 
 /// Precondition: every mount's sensor and mode are in `library`. `requirements` may be null

@@ -36,6 +36,17 @@ struct SelfFilterSettings {
   int lidar_decimation = 1;   ///< every ray of a scanner or lidar
 };
 
+/// Whether the filter drops anything (a scanner band or a crop box).
+inline bool filters_anything(const SelfFilter& filter) {
+  return filter.scanner ? !filter.bands.empty() : !filter.boxes.empty();
+}
+
+/// The topic a mount's self-filter chain publishes, from the driver's `raw` topic: what the
+/// costmap subscribes to. A crop-box chain's box k of n (from 1) reads the previous output
+/// (the raw topic for k = 1) and writes crop_box_topic(raw, k, n), the last one this topic.
+std::string self_filtered_topic(const std::string& raw);
+std::string crop_box_topic(const std::string& raw, std::size_t k, std::size_t n);
+
 /// One entry per mount, in mount order. Precondition: the mounts' modes are in `library`.
 std::vector<SelfFilter> self_filters(const model::Rig& rig, const model::SensorLibrary& library,
                                      const SelfFilterSettings& settings = {});

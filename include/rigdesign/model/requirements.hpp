@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/model/source_location.hpp"
 
@@ -49,6 +50,8 @@ struct Requirements {
   /// Top of the area to perceive [m]; the body's height when not stated.
   std::optional<double> area_height;
   SourceLocation area_height_where;
+  /// What the loader noticed that is not an error (a sector that looks like radians).
+  std::vector<Diagnostic> load_warnings;
   // R2: directions of motion.
   std::vector<SectorRequirement> sectors;
   // R3: range and a rate the application needs regardless of motion.

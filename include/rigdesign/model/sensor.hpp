@@ -116,6 +116,25 @@ struct Price {
   std::string source;
 };
 
+/// The sensor's ROS 2 driver as its package's default launch file runs it (sensors.yaml
+/// `ros2`; the research with repository, commit, file and line is data/ros_drivers/).
+struct RosDriver {
+  bool exists = false;  ///< false: no maintained ROS 2 driver for Humble or Jazzy
+  std::string package;
+  std::string launch;                ///< the command that starts it, arguments included
+  std::vector<std::string> distros;  ///< of humble and jazzy, those it is released or built for
+  std::string topic;                 ///< the range data's topic, as the default launch resolves it
+  std::string message_type;          ///< sensor_msgs/msg/PointCloud2 or sensor_msgs/msg/LaserScan
+  std::string frame_id;              ///< the frame the data is stamped with
+  /// Frames the driver (or its launch file) broadcasts itself, the root first: a robot's URDF
+  /// gives the root and must not give the others. Empty: the URDF gives frame_id.
+  std::vector<std::string> driver_frames;
+  std::string frame_parameter;  ///< how to make it stamp another frame
+  std::string note;             ///< what a deployment must know (arguments to add, clashes)
+  std::string source;           ///< where the facts are recorded
+  SourceLocation where;
+};
+
 struct Sensor {
   std::string id;
   std::string name;
@@ -123,6 +142,7 @@ struct Sensor {
   std::string source;  ///< datasheet document or URL the values come from
   Price price;
   std::vector<SensorMode> modes;
+  std::optional<RosDriver> ros2;  ///< nothing: not researched
   SourceLocation where;
 
   const SensorMode* find_mode(const std::string& mode_id) const;

@@ -63,7 +63,8 @@ std::string rig_summary(const RigInputs& inputs) {
 // The nav2 sources and the filters of every self-filter file; `MOUNT=FILE` filters MOUNT.
 deploy::DeployedConfig load_deployment(const DeploymentFiles& files, const model::Rig& rig) {
   deploy::DeployedConfig config;
-  if (!files.nav2.empty()) config = io::load_deployed_sources(files.nav2, rig);
+  if (!files.nav2.empty())
+    config = io::load_deployed_sources(files.nav2, rig, files.global_frame_height);
   for (const std::string& spec : files.filters) {
     const std::size_t equals = spec.find('=');
     const std::string mount = equals == std::string::npos ? "" : spec.substr(0, equals);

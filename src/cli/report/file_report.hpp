@@ -34,6 +34,7 @@ struct FileReport {
 struct DeploymentFiles {
   std::string nav2;
   std::vector<std::string> filters;
+  double global_frame_height = 0.0;  ///< [m] of the nav2 file's global frame above the floor
   bool empty() const { return nav2.empty() && filters.empty(); }
 };
 

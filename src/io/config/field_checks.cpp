@@ -1,5 +1,7 @@
 #include "io/config/field_checks.hpp"
 
+#include "rigdesign/model/ros_names.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -84,6 +86,28 @@ std::string ros_name(MapReader& reader, const std::string& key, const std::strin
                      });
   reader.require(valid, key, "'" + name + "' is not a ROS name", expected);
   return name;
+}
+
+std::string topic_name(MapReader& reader, const std::string& key, Need need,
+                       const std::string& what) {
+  const std::string expected =
+      what + ": a ROS topic, tokens of letters, digits and underscores joined by '/'";
+  const std::optional<std::string> text = reader.text(key, need, expected);
+  if (!text) return "";
+  const bool valid = model::is_topic_name(*text);
+  reader.require(valid, key, "'" + *text + "' is not a ROS topic name", expected);
+  return valid ? *text : "";
+}
+
+std::string frame_id(MapReader& reader, const std::string& key, Need need,
+                     const std::string& what) {
+  const std::string expected =
+      what + ": a TF frame id, printable ASCII without spaces or quotes, not starting with '/'";
+  const std::optional<std::string> text = reader.text(key, need, expected);
+  if (!text) return "";
+  const bool valid = model::is_frame_id(*text);
+  reader.require(valid, key, "'" + *text + "' is not a TF frame id", expected);
+  return valid ? *text : "";
 }
 
 model::Pose3 xyz_rpy_deg_pose(MapReader& pose, Need xyz_need) {

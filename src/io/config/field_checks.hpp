@@ -36,6 +36,11 @@ std::optional<double> share(MapReader& reader, const std::string& key, Need need
 /// nav2 source keys, ROS node names): a ROS name token, letters, digits and underscores, not
 /// starting with a digit. Records an error at `key` otherwise; "" when absent.
 std::string ros_name(MapReader& reader, const std::string& key, const std::string& what);
+/// A ROS topic name (model::is_topic_name) or a TF frame id (model::is_frame_id); records an
+/// error at `key` otherwise; "" when absent or bad.
+std::string topic_name(MapReader& reader, const std::string& key, Need need,
+                       const std::string& what);
+std::string frame_id(MapReader& reader, const std::string& key, Need need, const std::string& what);
 /// The transform a pose map's `xyz` [m] and `rpy_deg` [deg] give (URDF's roll-pitch-yaw);
 /// `xyz_need` says whether xyz may be left out (then [0, 0, 0]); rpy_deg always may. Other
 /// keys are left for the caller to read or reject.

@@ -6,6 +6,7 @@
 #include "io/config/field_checks.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
 #include "rigdesign/io/robot/robot_description_loader.hpp"
+#include "rigdesign/model/closest_name.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/optical_frame.hpp"
@@ -158,7 +159,12 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot, 
       if (used) *used = {link, as_optical};
       return as_optical ? it->second * T_optical_sensor : it->second;
     }
-    pose.require(false, "urdf_link", "no link '" + link + "' in the URDF",
+    std::vector<std::string> names;
+    for (const auto& [name, T] : robot->T_base_link) names.push_back(name);
+    const std::string closest = model::closest_name(link, names);
+    pose.require(false, "urdf_link",
+                 "no link '" + link + "' in the URDF" +
+                     (closest.empty() ? std::string() : " (did you mean '" + closest + "'?)"),
                  "one of: " + link_names(robot->T_base_link));
     return model::Pose3::Identity();
   }

@@ -27,6 +27,7 @@ model::SectorRequirement read_sector(MapReader& reader) {
                    "from_deg < to_deg <= from_deg + 360");
     sector.from = model::deg_to_rad(*from);
     sector.to = model::deg_to_rad(*to);
+    io::warn_if_radians(reader, "from_deg", {*from, *to});  // a sector of +-0.52
   }
   const std::string share = "a share of the cross-section in [0, 1]";
   sector.min_complete_coverage =
@@ -191,6 +192,7 @@ model::Requirements load_requirements(const std::string& path) {
   top.text("note", Need::optional);
   top.reject_unknown_keys();
   diagnostics.throw_if_errors();
+  requirements.load_warnings = diagnostics.items();
   return requirements;
 }
 

@@ -1,5 +1,9 @@
 #include "rigdesign/io/config/rig_references.hpp"
 
+#include <string>
+#include <vector>
+
+#include "rigdesign/model/closest_name.hpp"
 #include "rigdesign/model/format_number.hpp"
 
 namespace rigdesign::io {
@@ -10,6 +14,15 @@ std::string list_ids(const Items& items, IdOf id_of) {
   std::string text;
   for (const auto& item : items) text += (text.empty() ? "" : ", ") + id_of(item);
   return text;
+}
+
+// " (did you mean 'x'?)" for a near miss among the items' ids, else "".
+template <typename Items, typename IdOf>
+std::string suggestion(const std::string& name, const Items& items, IdOf id_of) {
+  std::vector<std::string> ids;
+  for (const auto& item : items) ids.push_back(id_of(item));
+  const std::string closest = model::closest_name(name, ids);
+  return closest.empty() ? std::string() : " (did you mean '" + closest + "'?)";
 }
 
 std::string mount_field(std::size_t index, const char* key) {
@@ -27,7 +40,8 @@ model::Diagnostics check_rig_references(const model::Rig& rig,
     if (sensor == nullptr) {
       diagnostics.error(
           mount.sensor_where, mount_field(i, "sensor"),
-          "unknown sensor '" + mount.sensor_id + "' in " + library.file,
+          "unknown sensor '" + mount.sensor_id + "' in " + library.file +
+              suggestion(mount.sensor_id, library.sensors, [](const model::Sensor& s) { return s.id; }),
           "one of: " + list_ids(library.sensors, [](const model::Sensor& s) { return s.id; }));
       continue;
     }
@@ -35,7 +49,8 @@ model::Diagnostics check_rig_references(const model::Rig& rig,
     if (mode == nullptr) {
       diagnostics.error(
           mount.mode_where, mount_field(i, "mode"),
-          "unknown mode '" + mount.mode_id + "' of sensor '" + sensor->id + "'",
+          "unknown mode '" + mount.mode_id + "' of sensor '" + sensor->id + "'" +
+              suggestion(mount.mode_id, sensor->modes, [](const model::SensorMode& m) { return m.id; }),
           "one of: " + list_ids(sensor->modes, [](const model::SensorMode& m) { return m.id; }));
       continue;
     }

@@ -188,6 +188,56 @@ model::Price read_price(MapReader& reader) {
   return price;
 }
 
+std::vector<std::string> read_frame_names(MapReader& reader, const std::string& key) {
+  std::vector<std::string> names;
+  const YAML::Node list = reader.node(key);
+  if (!list.IsDefined() || list.IsNull()) return names;
+  if (!list.IsSequence()) {
+    reader.require(false, key, "is not a list", "a list of frame names, the root first");
+    return names;
+  }
+  for (const YAML::Node& item : list) {
+    if (item.IsScalar()) names.push_back(item.Scalar());
+  }
+  return names;
+}
+
+// The `ros2` map: a driver's facts, or `driver: none`.
+model::RosDriver read_ros_driver(MapReader& reader) {
+  model::RosDriver driver;
+  driver.where = reader.location();
+  driver.source = reader.text("source", Need::required, "where the facts are recorded").value_or("");
+  driver.note = reader.text("note", Need::optional).value_or("");
+  if (reader.has("driver")) {
+    reader.require(reader.text("driver", Need::required).value_or("") == "none", "driver",
+                   "is not `none`", "`driver: none`, or the driver's package, topic and frame");
+    reader.reject_unknown_keys();
+    return driver;
+  }
+  driver.exists = true;
+  driver.package = reader.text("package", Need::required, "the ROS 2 package").value_or("");
+  driver.launch = reader.text("launch", Need::required, "the launch command").value_or("");
+  for (const std::string& distro : read_frame_names(reader, "distros")) {
+    reader.require(distro == "humble" || distro == "jazzy", "distros",
+                   "names '" + distro + "'", "humble and/or jazzy");
+    driver.distros.push_back(distro);
+  }
+  driver.topic = io::topic_name(reader, "topic", Need::required,
+                                "the data's topic, e.g. /velodyne_points");
+  driver.message_type = reader.choice("type", Need::required,
+                                      {"sensor_msgs/msg/PointCloud2", "sensor_msgs/msg/LaserScan"})
+                                .has_value()
+                            ? reader.node("type").Scalar()
+                            : "";
+  driver.frame_id =
+      io::frame_id(reader, "frame_id", Need::required, "the data's frame, e.g. velodyne");
+  driver.driver_frames = read_frame_names(reader, "driver_frames");
+  driver.frame_parameter =
+      reader.text("frame_parameter", Need::required, "how to rename the frame").value_or("");
+  reader.reject_unknown_keys();
+  return driver;
+}
+
 model::Sensor read_sensor(MapReader& reader) {
   model::Sensor sensor;
   sensor.where = reader.location();
@@ -200,6 +250,8 @@ model::Sensor read_sensor(MapReader& reader) {
   sensor.source =
       reader.text("source", Need::required, "the datasheet document or URL").value_or("");
   if (auto price = reader.map("price", Need::required)) sensor.price = read_price(*price);
+  if (auto ros2 = reader.map("ros2", Need::optional, "the ROS 2 driver's facts"))
+    sensor.ros2 = read_ros_driver(*ros2);
   reader.text("note", Need::optional);
   std::optional<MapReader> defaults = reader.map("mode_defaults", Need::optional);
   if (defaults) defaults->reject_keys_other_than(kModeKeys);

@@ -5,6 +5,7 @@
 #include "rigdesign/io/deploy/deployment_files.hpp"
 #include "rigdesign/io/nav2/costmap_params_writer.hpp"
 #include "rigdesign/io/robot/sensors_xacro_writer.hpp"
+#include "rigdesign/io/self_filters/self_filters_launch_writer.hpp"
 #include "rigdesign/io/self_filters/self_filters_writer.hpp"
 #include "rigdesign/model/input_error.hpp"
 
@@ -28,7 +29,10 @@ std::vector<std::string> write_deployment(const std::string& folder, const model
       {"sensors.urdf.xacro", sensors_xacro_text(deployment.frames, header)},
       {"nav2_costmap.yaml", nav2_costmap_text(deployment.costmap, header)},
       {"self_filters.yaml",
-       self_filters_text(deployment.self_filters, rig.base_link, T_robot_base, header)}};
+       self_filters_text(deployment.self_filters, rig.base_link, T_robot_base, header)},
+      {"self_filters.launch.py",
+       self_filters_launch_text(deployment.self_filters, deployment.costmap.sources,
+                                "self_filters.yaml", header)}};
   std::vector<std::string> written;
   for (const auto& [name, text] : files) {
     const std::string path = (std::filesystem::path(folder) / name).string();

@@ -231,7 +231,8 @@ YAML::Node parameter_block(const YAML::Node& root, std::string& path) {
 
 CostmapParamsFile load_costmap_params(const std::string& path,
                                       const costmap::CostmapParams& defaults,
-                                      const costmap::ObservationSource& source_defaults) {
+                                      const costmap::ObservationSource& source_defaults,
+                                      double global_frame_height) {
   const YAML::Node root = load_yaml_file(path);
   model::Diagnostics diagnostics;
   std::string block_path;
@@ -297,6 +298,17 @@ CostmapParamsFile load_costmap_params(const std::string& path,
   ignore(m, nav2::kIgnoredCostmapKeys);
   m.reject_unknown_keys();
   diagnostics.throw_if_errors();
+  // The file's heights are in its global frame; rigdesign's above the floor.
+  if (global_frame_height != 0.0) {
+    for (costmap::NamedObservationSource& named : file.sources) {
+      named.source.min_obstacle_height += global_frame_height;
+      named.source.max_obstacle_height += global_frame_height;
+    }
+    if (m.has(std::string(nav2::kVoxelLayer))) {
+      p.voxel.z_min += global_frame_height;
+      p.voxel.z_max += global_frame_height;
+    }
+  }
   // The ranges and counts are checked in one place, the costmap's own check.
   check_in_file_terms(p, block, block_path, path);
   return file;

@@ -53,7 +53,8 @@ void write_obstacle_layer(std::ostringstream& out, const deploy::CostmapConfig& 
   write_key(out, l, "enabled", yaml_bool(true));
   if (voxel) {
     write_key(out, l, "publish_voxel_map", yaml_bool(true));
-    write_key(out, l, "origin_z", yaml_float(p.voxel.z_min));
+    write_key(out, l, "origin_z", yaml_float(p.voxel.z_min - config.global_frame_height),
+              "the floor, in the global frame");
     write_key(out, l, "z_resolution", yaml_float(p.voxel.z_resolution));
     write_key(out, l, "z_voxels",
               std::to_string(
@@ -89,7 +90,9 @@ void write_obstacle_layer(std::ostringstream& out, const deploy::CostmapConfig& 
         "top of the area to perceive"};
     for (std::size_t i = 0; i < nav2::kSourceHeightKeys.size(); ++i) {
       const nav2::SourceNumberKey& height = nav2::kSourceHeightKeys[i];
-      write_key(out, k, height.key, yaml_float(s.*height.field), height_why[i]);
+      // In the costmap's global frame, which stands global_frame_height above the floor.
+      write_key(out, k, height.key,
+                yaml_float(s.*height.field - config.global_frame_height), height_why[i]);
     }
     write_key(out, k, nav2::kObservationPersistence, yaml_float(s.observation_persistence),
               s.observation_persistence > 0.0
@@ -139,6 +142,11 @@ void write_costmap_block(std::ostringstream& out, const std::string& name) {
 std::string nav2_costmap_text(const deploy::CostmapConfig& config, const std::string& header) {
   std::ostringstream out;
   out << yaml_comment(header);
+  out << yaml_comment("Heights (min/max_obstacle_height, origin_z) are in the global frame (odom), "
+                      "taken to stand " + model::format_number(config.global_frame_height) +
+                      " m above the floor (export --global-frame-height; read back with "
+                      "costmap/check --global-frame-height " +
+                      model::format_number(config.global_frame_height) + ").");
   for (const std::string& note : config.notes) out << yaml_comment(note);
   const costmap::CostmapParams& p = config.costmap;
   const std::string plugins =

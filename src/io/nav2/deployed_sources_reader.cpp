@@ -4,8 +4,9 @@
 
 namespace rigdesign::io {
 
-deploy::DeployedConfig load_deployed_sources(const std::string& path, const model::Rig& rig) {
-  const CostmapParamsFile file = load_costmap_params(path, {}, {});
+deploy::DeployedConfig load_deployed_sources(const std::string& path, const model::Rig& rig,
+                                             double global_frame_height) {
+  const CostmapParamsFile file = load_costmap_params(path, {}, {}, global_frame_height);
   deploy::DeployedConfig config;
   config.nav2_file = path;
   config.warnings = file.warnings;

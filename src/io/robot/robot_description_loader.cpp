@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "joint_tree.hpp"
+#include "origin_angles.hpp"
 #include "package_locator.hpp"
 #include "rigdesign/io/mesh/assimp_mesh_loader.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -186,6 +187,7 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
         tree.where, "robot", "the root element is <" + tree.name + ">", "a URDF <robot> element"});
   }
   require_joint_tree(tree);
+  require_radian_origins(tree);
   urdf::ModelInterfaceSharedPtr urdf_model;
   std::string why;
   {

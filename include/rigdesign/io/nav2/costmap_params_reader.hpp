@@ -44,14 +44,17 @@ struct CostmapParamsFile {
 
 /// Throws InputError naming file:line:col, the key's path and the expected form for a missing
 /// file, a malformed value, an unknown key, a source named but not given, or parameters no
-/// costmap accepts.
+/// costmap accepts. The file's heights (sources' bands, the voxel column) are in its global
+/// frame, `global_frame_height` [m] above the floor; the result's are above the floor.
 CostmapParamsFile load_costmap_params(const std::string& path,
                                       const costmap::CostmapParams& defaults,
-                                      const costmap::ObservationSource& source_defaults);
+                                      const costmap::ObservationSource& source_defaults,
+                                      double global_frame_height = 0.0);
 
 /// The nav2 observation sources of `path` (load_costmap_params) as deployed, each named
 /// after a mount of `rig` (as `rigdesign export` names them); a source that names no mount is
 /// an InputError at its key.
-deploy::DeployedConfig load_deployed_sources(const std::string& path, const model::Rig& rig);
+deploy::DeployedConfig load_deployed_sources(const std::string& path, const model::Rig& rig,
+                                             double global_frame_height = 0.0);
 
 }  // namespace rigdesign::io
