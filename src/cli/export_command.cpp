@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 #include <ostream>
+#include <utility>
 
 #include "app.hpp"
 #include "command.hpp"
@@ -15,6 +16,7 @@
 #include "report/deployment_report.hpp"
 #include "rigdesign/deploy/deployment.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/model/ros_names.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -51,6 +53,12 @@ int run_export(const ExportOptions& options, std::ostream& out) {
                  "a speed in m/s");
   require_option(options.deploy.update_rate > 0.0 && options.deploy.update_rate <= 100.0,
                  "--update-rate", "is out of range", "0 < rate <= 100 Hz");
+  for (const auto& [name, text] : {std::pair{"--scan-topic", &options.deploy.scan_topic},
+                                   std::pair{"--cloud-topic", &options.deploy.cloud_topic}}) {
+    require_option(text->empty() || model::is_topic_name(deploy::expand_topic(*text, "mount")),
+                   name, "'" + *text + "' is not a ROS topic name",
+                   "tokens of letters, digits and underscores joined by '/', e.g. /{mount}/scan");
+  }
   const std::string& plugin = options.deploy.hit_layer_plugin;
   require_option(plugin.empty() || plugin_class_name(plugin), "--hit-layer-plugin",
                  "'" + plugin + "' is not a pluginlib class name",
@@ -82,9 +90,11 @@ Command setup_export(CLI::App& parent) {
                   "Parent link of the sensor joints (default: the rig's base link, "
                   "base_footprint without a description)");
   app->add_option("--scan-topic", options->deploy.scan_topic,
-                  "Topic of 2D scanners, {mount} is the mount id (default /{mount}/scan)");
+                  "Topic of 2D scanners, {mount} is the mount id (default: each driver's "
+                  "topic, sensors.yaml ros2; without a driver /{mount}/scan)");
   app->add_option("--cloud-topic", options->deploy.cloud_topic,
-                  "Topic of 3D sensors, {mount} is the mount id (default /{mount}/points)");
+                  "Topic of 3D sensors, {mount} is the mount id (default: each driver's "
+                  "topic; without a driver /{mount}/points)");
   app->add_option("--max-speed", options->deploy.max_speed,
                   "Robot speed [m/s] for the blind-gap memory rule (default: the requirements' R5)")
       ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));

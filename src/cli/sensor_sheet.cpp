@@ -42,6 +42,37 @@ std::string where_text(const model::SourceLocation& where) {
   return model::to_string(where);
 }
 
+// The sensor's ROS 2 driver as the export uses it (sensors.yaml `ros2`).
+void print_ros_driver(const model::Sensor& sensor, std::ostream& out) {
+  if (!sensor.ros2) return;
+  const model::RosDriver& driver = *sensor.ros2;
+  if (!driver.exists) {
+    out << "  ROS 2       no maintained driver (" << driver.note << "; " << driver.source << ")\n";
+    return;
+  }
+  std::string distros;
+  for (const std::string& distro : driver.distros) distros += (distros.empty() ? "" : ", ") + distro;
+  out << "  ROS 2       " << driver.package << " (" << distros << "): " << driver.topic << " ("
+      << driver.message_type << ") in " << driver.frame_id << "\n"
+      << "              " << driver.launch << "\n";
+  if (!driver.driver_frames.empty()) {
+    std::string frames;
+    for (const std::string& frame : driver.driver_frames) frames += (frames.empty() ? "" : ", ") + frame;
+    out << "              broadcasts " << frames << " itself (the URDF gives the first)\n";
+  }
+  if (!driver.note.empty()) out << "              " << driver.note << "\n";
+}
+
+nlohmann::json ros_driver_json(const model::Sensor& sensor) {
+  if (!sensor.ros2) return nullptr;
+  const model::RosDriver& d = *sensor.ros2;
+  if (!d.exists) return {{"driver", "none"}, {"note", d.note}, {"source", d.source}};
+  return {{"package", d.package},   {"launch", d.launch},           {"distros", d.distros},
+          {"topic", d.topic},       {"type", d.message_type},       {"frame_id", d.frame_id},
+          {"driver_frames", d.driver_frames}, {"frame_parameter", d.frame_parameter},
+          {"note", d.note},         {"source", d.source}};
+}
+
 }  // namespace
 
 void print_sensor_sheet(const model::Sensor& sensor, const model::SensorLibrary& library,
@@ -51,8 +82,9 @@ void print_sensor_sheet(const model::Sensor& sensor, const model::SensorLibrary&
       << "  price       " << model::format_number(sensor.price.usd, 8) << " USD ("
       << sensor.price.year << ", " << model::to_string(sensor.price.basis) << ": "
       << sensor.price.source << ")\n"
-      << "  source      " << sensor.source << "\n"
-      << "  defined at  " << where_text(sensor.where) << " (library " << library.file << ")\n\n";
+      << "  source      " << sensor.source << "\n";
+  print_ros_driver(sensor, out);
+  out << "  defined at  " << where_text(sensor.where) << " (library " << library.file << ")\n\n";
   TextTable table;
   table.add_column("mode", TextTable::Align::left);
   table.add_column("FOV [deg]", TextTable::Align::right);
@@ -135,6 +167,7 @@ nlohmann::json sensor_json(const model::Sensor& sensor, const model::SensorLibra
             {"source", sensor.price.source}}},
           {"defined_at", where_text(sensor.where)},
           {"library", library.file},
+          {"ros2", ros_driver_json(sensor)},
           {"modes", modes}};
 }
 

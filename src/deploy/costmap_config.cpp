@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <utility>
 
 #include "rigdesign/deploy/sensor_frames.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
@@ -122,6 +124,50 @@ void set_persistence(const model::Rig& rig, const model::SensorLibrary& library,
                          "a blind gap: " + config.memory.rule);
 }
 
+// The driver's topic under `ns` ("/scan" in "front" is "/front/scan").
+std::string in_namespace(const std::string& ns, const std::string& topic) {
+  return "/" + ns + (topic.front() == '/' ? topic : "/" + topic);
+}
+
+// Each mount's raw topic: the rig's `ros: {topic}` or `{namespace}`, an explicit template,
+// the driver's topic (in the mount's namespace when two mounts' drivers would share it), or
+// the default template.
+std::vector<std::pair<std::string, std::string>> raw_topics(const model::Rig& rig,
+                                                            const model::SensorLibrary& library,
+                                                            const DeployOptions& options) {
+  std::map<std::string, int> uses;
+  for (const model::Mount& mount : rig.mounts) {
+    const model::Sensor& sensor = *library.find(mount.sensor_id);
+    if (sensor.ros2 && sensor.ros2->exists && mount.ros_topic.empty() && mount.ros_namespace.empty())
+      ++uses[sensor.ros2->topic];
+  }
+  std::vector<std::pair<std::string, std::string>> topics;  // topic, note
+  for (const model::Mount& mount : rig.mounts) {
+    const model::Sensor& sensor = *library.find(mount.sensor_id);
+    const bool scan = library.resolved_mode(mount.sensor_id, mount.mode_id).fov.shape().is_planar_scan();
+    const std::string& given = scan ? options.scan_topic : options.cloud_topic;
+    const bool driver = sensor.ros2 && sensor.ros2->exists;
+    if (!mount.ros_topic.empty()) {
+      topics.emplace_back(mount.ros_topic, "");
+    } else if (!given.empty()) {
+      topics.emplace_back(expand_topic(given, mount.id), "");
+    } else if (driver && !mount.ros_namespace.empty()) {
+      topics.emplace_back(in_namespace(mount.ros_namespace, sensor.ros2->topic),
+                          "launch " + sensor.ros2->package + " in namespace " + mount.ros_namespace);
+    } else if (driver && uses[sensor.ros2->topic] > 1) {
+      topics.emplace_back(in_namespace(mount.id, sensor.ros2->topic),
+                          "launch " + sensor.ros2->package + " in namespace " + mount.id +
+                              " (another mount's driver publishes " + sensor.ros2->topic + " too)");
+    } else if (driver) {
+      topics.emplace_back(sensor.ros2->topic, "");
+    } else {
+      topics.emplace_back(expand_topic(scan ? "/{mount}/scan" : "/{mount}/points", mount.id),
+                          "no ROS 2 driver is known for " + sensor.id + ": publish there");
+    }
+  }
+  return topics;
+}
+
 }  // namespace
 
 std::string expand_topic(const std::string& text, const std::string& mount_id) {
@@ -154,6 +200,7 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   config.floor_noise_sigmas = options.floor_noise_sigmas;
   bool any_3d = false;
   const SensorFrames frames = sensor_frames(rig, library, options.parent);
+  const std::vector<std::pair<std::string, std::string>> topics = raw_topics(rig, library, options);
   for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
     const model::Mount& mount = rig.mounts[m];
     const model::SensorMode* mode = &library.resolved_mode(mount.sensor_id, mount.mode_id);
@@ -161,8 +208,8 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
     source.mount_id = mount.id;
     source.laser_scan = mode->fov.shape().is_planar_scan();
     any_3d = any_3d || !source.laser_scan;
-    source.raw_topic =
-        expand_topic(source.laser_scan ? options.scan_topic : options.cloud_topic, mount.id);
+    source.raw_topic = topics[m].first;
+    source.topic_note = topics[m].second;
     source.topic = source.raw_topic;
     source.sensor_frame = frames.frames[m].data_frame;
     costmap::ObservationSource& s = source.source;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
+#include <vector>
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -96,6 +98,39 @@ class AddedNames {
 
 }  // namespace
 
+namespace {
+
+// The names a mount's frames take after its driver's defaults (or the rig's `ros: {frame}`).
+struct DriverNames {
+  std::string link;
+  std::optional<std::string> optical;  // a camera's optical frame the URDF gives
+  std::string data_frame;
+  bool from_driver = false;  // the driver broadcasts data_frame itself
+};
+
+std::optional<DriverNames> driver_names(const model::Mount& mount, const model::Sensor& sensor,
+                                        bool camera) {
+  if (!mount.ros_frame.empty()) {
+    if (camera) return DriverNames{sensor_link_name(mount.id), mount.ros_frame, mount.ros_frame};
+    return DriverNames{mount.ros_frame, std::nullopt, mount.ros_frame};
+  }
+  if (!sensor.ros2 || !sensor.ros2->exists) return std::nullopt;
+  const model::RosDriver& driver = *sensor.ros2;
+  if (!driver.driver_frames.empty())
+    return DriverNames{driver.driver_frames.front(), std::nullopt, driver.frame_id, true};
+  if (camera) return DriverNames{sensor_link_name(mount.id), driver.frame_id, driver.frame_id};
+  return DriverNames{driver.frame_id, std::nullopt, driver.frame_id};
+}
+
+// What to set on the driver so that it stamps `frame`, or "" when it does by default.
+std::string driver_note(const model::Sensor& sensor, const std::string& frame) {
+  if (!sensor.ros2 || !sensor.ros2->exists || sensor.ros2->frame_id == frame) return "";
+  return sensor.ros2->package + " stamps '" + sensor.ros2->frame_id + "' by default: set " +
+         sensor.ros2->frame_parameter + " to '" + frame + "'";
+}
+
+}  // namespace
+
 SensorFrames sensor_frames(const model::Rig& rig, const model::SensorLibrary& library,
                            const std::string& parent) {
   SensorFrames frames;
@@ -103,26 +138,61 @@ SensorFrames sensor_frames(const model::Rig& rig, const model::SensorLibrary& li
   const model::Pose3 T_parent_robot = T_robot_parent(rig, frames.parent).inverse();
   model::Diagnostics findings;
   AddedNames added(rig, findings);
-  for (const model::Mount& mount : rig.mounts) {
+  // The drivers' names for mounts placed by pose; a name two mounts would take, or the
+  // description has, falls back to the mount's own (`ros: {frame}` names are kept: a clash
+  // of those is the rig's error, reported below).
+  std::vector<std::optional<DriverNames>> named(rig.mounts.size());
+  std::map<std::string, int> uses;
+  for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
+    const model::Mount& mount = rig.mounts[m];
+    if (!mount.urdf_link.empty() && rig.link_poses.count(mount.urdf_link)) continue;
+    const model::SensorMode& mode = library.resolved_mode(mount.sensor_id, mount.mode_id);
+    named[m] = driver_names(mount, *library.find(mount.sensor_id), mode.is_camera());
+    if (named[m]) {
+      ++uses[named[m]->link];
+      if (named[m]->optical) ++uses[*named[m]->optical];
+    }
+  }
+  for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
+    const model::Mount& mount = rig.mounts[m];
+    if (!named[m] || !mount.ros_frame.empty()) continue;
+    const auto taken = [&](const std::string& name) {
+      return uses[name] > 1 || rig.link_where.count(name) > 0;
+    };
+    if (taken(named[m]->link) || (named[m]->optical && taken(*named[m]->optical))) named[m].reset();
+  }
+  for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
+    const model::Mount& mount = rig.mounts[m];
+    const model::Sensor& sensor = *library.find(mount.sensor_id);
     const model::SensorMode* mode = &library.resolved_mode(mount.sensor_id, mount.mode_id);
     SensorFrame frame;
     frame.mount_id = mount.id;
     frame.sensor_id = mount.sensor_id;
     frame.mode_id = mount.mode_id;
     const bool on_link = !mount.urdf_link.empty() && rig.link_poses.count(mount.urdf_link);
-    frame.link = on_link ? mount.urdf_link : sensor_link_name(mount.id);
+    frame.link = on_link ? mount.urdf_link : named[m] ? named[m]->link : sensor_link_name(mount.id);
     if (!on_link) frame.joint = mount.id + "_joint";
-    if (mode->is_camera()) {
-      if (on_link && mount.urdf_link_optical) {
-        frame.optical_frame = mount.urdf_link;
-      } else if (const auto child = on_link ? optical_child(rig, mount.urdf_link) : std::nullopt) {
-        frame.optical_frame = *child;
-      } else {
-        frame.optical_frame = optical_frame_name(mount.id);
+    if (named[m]) {
+      if (named[m]->optical) {
+        frame.optical_frame = named[m]->optical;
         frame.optical_joint = mount.id + "_optical_joint";
       }
+      frame.data_frame = named[m]->data_frame;
+      frame.data_frame_from_driver = named[m]->from_driver;
+    } else {
+      if (mode->is_camera()) {
+        if (on_link && mount.urdf_link_optical) {
+          frame.optical_frame = mount.urdf_link;
+        } else if (const auto child = on_link ? optical_child(rig, mount.urdf_link) : std::nullopt) {
+          frame.optical_frame = *child;
+        } else {
+          frame.optical_frame = optical_frame_name(mount.id);
+          frame.optical_joint = mount.id + "_optical_joint";
+        }
+      }
+      frame.data_frame = frame.optical_frame.value_or(frame.link);
+      frame.note = driver_note(sensor, frame.data_frame);
     }
-    frame.data_frame = frame.optical_frame.value_or(frame.link);
     // A link taken as the optical frame stands at the optical pose; its joint is not written.
     frame.T_parent_link = T_parent_robot * mount.T_robot_sensor;
     if (!on_link) added.add(mount, frame.link, true);

@@ -24,7 +24,7 @@ constexpr double kFloorRightY = -2.0;  // floor reaches 2 m right of the path
 constexpr double kTableStartX = 3.0;
 constexpr double kTableLength = 1.2;
 constexpr double kLegFrameDepth = 0.3;
-constexpr double kLegSide = 0.04;
+constexpr double kFoamTableLegSide = 0.04;
 // Foam top [m]: 0.39 m high overall, 6 cm thick, overhanging the legs by 15 cm on the path
 // side only, so its edge is 0.15 m left of the path's centre line. Close up only the UR
 // Cleaner's front camera sees the slab (paper 1, Fig. 11): its top at 0.39 m passes under the
@@ -42,13 +42,13 @@ void add_table(model::Scene& scene) {
   const double foam_bottom = kTableHeight - kFoamThickness;
   add_object(scene, "foam",
              aligned_box({x0, legs_y - kFoamOverhang, foam_bottom}, {x1, kWallY, kTableHeight}));
-  const double leg_x[2] = {x0, x1 - kLegSide};
-  const double leg_y[2] = {legs_y, kWallY - kLegSide};
+  const double leg_x[2] = {x0, x1 - kFoamTableLegSide};
+  const double leg_y[2] = {legs_y, kWallY - kFoamTableLegSide};
   int leg = 0;
   for (double x : leg_x) {
     for (double y : leg_y) {
       add_object(scene, "table_leg_" + std::to_string(++leg),
-                 aligned_box({x, y, 0}, {x + kLegSide, y + kLegSide, foam_bottom}));
+                 aligned_box({x, y, 0}, {x + kFoamTableLegSide, y + kFoamTableLegSide, foam_bottom}));
     }
   }
 }

@@ -232,7 +232,7 @@ TEST_CASE("a misspelt field is named with the field it was probably meant to be"
   CHECK(result.exit_code == 2);
   CHECK(result.err.find("mounts[0].distance_of_interst: unknown field (did you mean "
                         "'distance_of_interest'?) (expected one of: distance_of_interest, id, "
-                        "mode, note, pose, sensor)") != std::string::npos);
+                        "mode, note, pose, ros, sensor)") != std::string::npos);
 }
 
 TEST_CASE("pose.rpy (URDF's radians habit) is pointed at rpy_deg") {
@@ -300,4 +300,25 @@ TEST_CASE("a URDF origin in degrees is refused at its line; near-miss links and 
   CHECK(near_sensor.exit_code == 2);
   CHECK(near_sensor.err.find("unknown sensor 'spinn'") != std::string::npos);
   CHECK(near_sensor.err.find("(did you mean 'spin'?)") != std::string::npos);
+}
+
+// A typo in a variable the description is asked to read (issue 30: HUSKY_LASER_3D_ENABLE):
+// the Jackal's xacro reads JACKAL_LASER_3D, never JACKAL_LASER_3D_ENABLE.
+TEST_CASE("an env variable the description never reads is a warning naming it") {
+  TempFolder folder;
+  const std::string rig =
+      "name: Jackal\nsensor_library: " + source_path("sensors.yaml") +
+      "\nrobot:\n  description: " +
+      source_path("rigs/robots/jackal_description/urdf/jackal.urdf.xacro") +
+      "\n  env: {JACKAL_LASER: 1, JACKAL_LASER_3D_ENABLE: 1}\n  package_paths: [" +
+      source_path("rigs/robots") +
+      "]\n  base_link: base_link\n  base_link_height: 0.0655\narea_height: 0.25\n"
+      "distance_of_interest: 3.0\nmounts:\n  - {id: front_laser, sensor: sick_lms100, "
+      "mode: res_0.5deg_25hz, pose: {urdf_link: front_laser}}\n";
+  const CliResult result = run_cli({"metrics", folder.write("jackal.yaml", rig)});
+  INFO(result.out << result.err);
+  CHECK(result.exit_code == 0);
+  CHECK(result.out.find("warning: robot.env.JACKAL_LASER_3D_ENABLE: is never read") !=
+        std::string::npos);
+  CHECK(result.out.find("robot.env.JACKAL_LASER:") == std::string::npos);
 }

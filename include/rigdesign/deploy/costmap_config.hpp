@@ -20,8 +20,11 @@ namespace rigdesign::deploy {
 
 struct DeployOptions {
   std::string parent;                        ///< sensor frames' parent link; empty: the base link
-  std::string scan_topic = "/{mount}/scan";  ///< topic template of 2D scanners
-  std::string cloud_topic = "/{mount}/points";  ///< of 3D sensors ({mount}: the mount id)
+  /// Topic templates of 2D scanners and of 3D sensors ({mount}: the mount id); empty: each
+  /// driver's topic (sensors.yaml `ros2`, under the mount's namespace when two mounts' drivers
+  /// would share it), else /{mount}/scan and /{mount}/points. A mount's `ros` wins over both.
+  std::string scan_topic;
+  std::string cloud_topic;
   double update_rate = 5.0;  ///< [Hz] the local costmap's update_frequency (nav2's default)
   double max_speed = 0.0;    ///< [m/s] for the blind-gap memory rule; 0: the requirements' R5
   /// [m/s] the slowest the robot drives: nav2 Regulated Pure Pursuit's default
@@ -46,6 +49,7 @@ struct SourceConfig {
   /// its robot (plan_deployment), else the driver's topic `raw_topic`.
   std::string topic;
   std::string raw_topic;
+  std::string topic_note;  ///< how the driver must run to publish raw_topic, if it differs
   std::string sensor_frame;  ///< the frame the driver stamps its data with
   costmap::ObservationSource source;
   /// [m] the largest height error of a floor return within the marking range (0: the sensor

@@ -7,7 +7,11 @@
 /// down) for the images and depth clouds its driver publishes: the link itself when it is
 /// one, the description's optical child of its link when that has one, else a new
 /// `<id>_optical_frame`. A name the export would add that the description already has (or
-/// that two mounts would both add) is an error naming both places.
+/// that two mounts would both add) is an error naming both places. Names follow the sensor's
+/// ROS 2 driver (sensors.yaml `ros2`) where the rig keeps them unique: a lidar's link is the
+/// frame its driver stamps (velodyne, laser), a camera whose driver broadcasts its own frames
+/// gets only their root (camera_link) at the sensor origin; a mount's `ros: {frame}` names the
+/// frame outright; otherwise `<id>_link` and a note saying which driver parameter to set.
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +35,10 @@ struct SensorFrame {
   std::optional<std::string> optical_frame;
   std::string optical_joint;
   std::string data_frame;  ///< what the driver stamps with: the optical frame, else the link
+  /// The driver broadcasts data_frame itself (below `link`, which the export adds at the sensor
+  /// origin): e.g. realsense2_camera's camera_link -> camera_depth_optical_frame.
+  bool data_frame_from_driver = false;
+  std::string note;  ///< what to set on the driver so it stamps data_frame, if anything
   model::Pose3 T_parent_link = model::Pose3::Identity();  ///< the fixed joint's origin
 };
 

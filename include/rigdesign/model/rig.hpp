@@ -67,6 +67,11 @@ struct Mount {
   std::string urdf_link;
   /// The link is a camera's optical frame (z forward): the frame the driver stamps with.
   bool urdf_link_optical = false;
+  /// `ros: {namespace, topic, frame}`: how this mount's driver is run, where it differs from
+  /// the driver's defaults (sensors.yaml `ros2`); empty: the default.
+  std::string ros_namespace;  ///< the namespace the driver is launched in
+  std::string ros_topic;      ///< the data's topic, absolute
+  std::string ros_frame;      ///< the frame the driver is set to stamp the data with
   /// What the deployed stack removes from this mount's data (`check` with nav2 parameters and
   /// self-filters); empty for the design itself.
   MountLimits limits;

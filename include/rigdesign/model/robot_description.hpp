@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/source_location.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
 
@@ -38,6 +39,8 @@ struct RobotDescription {
   std::map<std::string, SourceLocation> joint_where;
   std::map<std::string, std::string> parent_link;
   std::vector<CollisionShape> collisions;
+  /// What the loader noticed that is not an error (an `env` variable nothing reads).
+  std::vector<Diagnostic> warnings;
 
   /// T_base_link: `link`'s pose in `base`'s frame; nothing when either is not a link.
   std::optional<Pose3> T_base(const std::string& base, const std::string& link) const {

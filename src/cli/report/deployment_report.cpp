@@ -35,6 +35,8 @@ void print_deployment(std::ostream& out, const model::Rig& rig,
         << filter.body_hits << " of " << filter.rays << " rays";
     if (s.observation_persistence > 0.0)
       out << "; keeps clouds " << model::format_number(s.observation_persistence, 3) << " s";
+    if (!source.topic_note.empty()) out << "; " << source.topic_note;
+    if (!frame.note.empty()) out << "; " << frame.note;
     if (filter.scanner && !filter.bands.empty()) {
       out << " (";
       for (std::size_t b = 0; b < filter.bands.size(); ++b) {

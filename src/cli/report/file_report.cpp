@@ -13,6 +13,7 @@
 #include "rigdesign/io/config/sensor_library_locator.hpp"
 #include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/self_filters/self_filters_reader.hpp"
+#include "rigdesign/metrics/coverage_findings.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 
 namespace rigdesign::cli {
@@ -92,6 +93,11 @@ void judge_rig(const RigInputs& inputs, const std::optional<deploy::DeployedConf
     coverage = metrics::compute_coverage(inputs.rig, inputs.library, inputs.requirements->sectors);
   }
   const double coverage_seconds = seconds_since(step);
+  // What `metrics` warns about (a mount that sees none of the area), check says too.
+  if (coverage) {
+    for (model::Diagnostic& finding : metrics::coverage_findings(inputs.rig, metrics, *coverage))
+      report.diagnostics.push_back(std::move(finding));
+  }
   step = Clock::now();
   report.results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements,
                                                   coverage ? &*coverage : nullptr);

@@ -244,6 +244,7 @@ std::optional<RobotLinks> links_of(model::RobotDescription description, std::str
                    "one of: " + names);
     return failed_links();
   }
+  for (const model::Diagnostic& warning : description.warnings) reader.diagnostics().add(warning);
   RobotLinks links;
   links.base_link = base;
   links.base_height = base_height;

@@ -38,6 +38,16 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
     mount.distance_of_interest =
         io::positive(reader, "distance_of_interest", Need::required, "metres, > 0");
   }
+  if (auto ros = reader.map("ros", Need::optional, "a map with namespace, topic, frame")) {
+    if (ros->has("namespace"))
+      mount.ros_namespace = io::ros_name(*ros, "namespace", "the driver's namespace");
+    mount.ros_topic =
+        io::topic_name(*ros, "topic", Need::optional, "the data's topic, e.g. /front/points");
+    ros->require(mount.ros_topic.empty() || mount.ros_topic.front() == '/', "topic",
+                 "is relative", "an absolute topic, starting with '/'");
+    mount.ros_frame = io::frame_id(*ros, "frame", Need::optional, "the frame the data is stamped with");
+    ros->reject_unknown_keys();
+  }
   reader.text("note", Need::optional);
   reader.reject_unknown_keys();
   return mount;

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "joint_tree.hpp"
 #include "origin_angles.hpp"
@@ -59,7 +60,8 @@ model::Pose3 pose_in_root(const urdf::LinkConstSharedPtr& link) {
   return T_root_link;
 }
 
-xml::Node read_tree(const RobotDescriptionRequest& request, const PackageLocator& packages) {
+xml::Node read_tree(const RobotDescriptionRequest& request, const PackageLocator& packages,
+                    std::set<std::string>* environment_read) {
   if (!is_xacro_file(request.path))
     return xml::parse_file(request.path, request.named_at, request.field);
   using Expander = RobotDescriptionRequest::Expander;
@@ -81,6 +83,7 @@ xml::Node read_tree(const RobotDescriptionRequest& request, const PackageLocator
   input.environment = request.environment;
   input.packages = &packages;
   input.named_at = request.named_at;
+  input.environment_read = environment_read;
   return expand_xacro(input);
 }
 
@@ -181,7 +184,12 @@ bool is_xacro_file(const std::string& path) {
 
 model::RobotDescription load_robot_description(const RobotDescriptionRequest& request) {
   const PackageLocator packages(request.package_paths);
-  const xml::Node tree = read_tree(request, packages);
+  // Only the built-in expander says which variables it read; ROS's xacro is not asked.
+  std::set<std::string> environment_read;
+  const bool builtin = is_xacro_file(request.path) &&
+                       (request.expander == RobotDescriptionRequest::Expander::builtin ||
+                        !find_xacro_executable());
+  const xml::Node tree = read_tree(request, packages, &environment_read);
   if (tree.name != "robot") {
     throw model::InputError(model::Diagnostic{
         tree.where, "robot", "the root element is <" + tree.name + ">", "a URDF <robot> element"});
@@ -203,6 +211,15 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
         "links joined by joints into one tree, each joint with a parent, a child and a type"});
   }
   model::RobotDescription description;
+  if (builtin) {
+    for (const auto& [name, value] : request.environment) {
+      if (environment_read.count(name)) continue;
+      description.warnings.push_back(
+          {request.named_at, "robot.env." + name,
+           "is never read: the description has no $(optenv " + name + ") or $(env " + name + ")",
+           "a variable the description reads (a typo?)", model::Severity::warning});
+    }
+  }
   description.name = urdf_model->getName();
   description.file = request.path;
   description.root_link = urdf_model->getRoot()->name;

@@ -275,6 +275,8 @@ class Expander {
            "a folder whose package.xml names " + words[1] +
                " under the rig's robot.package_paths, ROS_PACKAGE_PATH or AMENT_PREFIX_PATH");
     }
+    if ((command == "optenv" || command == "env") && words.size() >= 2 && input_.environment_read)
+      input_.environment_read->insert(words[1]);
     if (command == "optenv" && words.size() >= 2) {
       return has_environment(words[1]) ? environment(words[1]) : rest_from(2);
     }

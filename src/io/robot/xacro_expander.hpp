@@ -11,6 +11,7 @@
 /// <ros2_control> and <transmission> elements are dropped unexpanded (no geometry or frames
 /// live there, and their plugins name packages a design machine need not have).
 #include <map>
+#include <set>
 #include <string>
 
 #include "package_locator.hpp"
@@ -25,6 +26,9 @@ struct XacroInput {
   std::map<std::string, std::string> environment;  ///< read by $(optenv) / $(env) before the
                                                    ///< process's environment
   const PackageLocator* packages = nullptr;        ///< resolves $(find PKG)
+  /// When given, every variable $(optenv) or $(env) asked for is added: a rig's `env` the
+  /// description never reads is a typo worth a warning (HUSKY_LASER_3D_ENABLE).
+  std::set<std::string>* environment_read = nullptr;
   model::SourceLocation named_at;                  ///< where the rig names the description
 };
 
