@@ -2,18 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numbers>
-#include <utility>
 
+#include "rigdesign/deploy/blind_gap_sources.hpp"
+#include "rigdesign/deploy/driver_topics.hpp"
 #include "rigdesign/deploy/sensor_frames.hpp"
-#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/geometry/footprint_hull.hpp"
-#include "rigdesign/geometry/mounted_fov.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/polygon_area.hpp"
-#include "rigdesign/model/units.hpp"
 
 namespace rigdesign::deploy {
 namespace {
@@ -60,114 +57,6 @@ void set_footprint(const model::RobotBody& body, CostmapConfig& config) {
                   " corners, circumscribed radius " + model::format_number(outer, 4) + " m");
 }
 
-// [m] how far beyond the body a grazing obstacle stands, and the step along its approach.
-constexpr double kGrazingGap = 0.05;
-constexpr double kApproachStep = 0.05;
-
-// Whether `mount` measures an obstacle grazing the body (a vertical line one cell outside it,
-// the height of the area to perceive) anywhere on its approach to the gap: from the distance
-// of interest down to where it enters the gap, on the side of `last_seen` (the pass the
-// blind-gap rule sized). These sources keep what then enters the gap.
-bool sees_approach(const model::Rig& rig, const geometry::MountedFov& fov,
-                   const metrics::AngleCoverage& last_seen, double distance) {
-  const double side = std::sin(last_seen.theta) >= 0.0 ? 1.0 : -1.0;
-  const double lateral = last_seen.r + kGrazingGap;
-  // x = lateral cot(azimuth): where the obstacle stands when seen last before the gap.
-  const double sine = std::abs(std::sin(last_seen.theta));
-  const double x_enter = sine > 1e-9 ? lateral * std::cos(last_seen.theta) / sine : 0.0;
-  const double x_far = std::sqrt(std::max(0.0, distance * distance - lateral * lateral));
-  for (double x = x_enter; x <= x_far + 1e-9; x += kApproachStep) {
-    const model::Vec3 foot(x, side * lateral, 0.0);
-    if (!fov.covered_along(foot, model::Vec3::UnitZ(), 0.0, rig.body.area_top(),
-                           std::atan2(foot.y(), foot.x()))
-             .empty())
-      return true;
-  }
-  return false;
-}
-
-// nav2's own memory for the blind gaps: every source that sees an obstacle grazing the body
-// on its approach to a gap keeps its clouds for that gap's persistence (the
-// largest, where it sees several); deploy/blind_memory.hpp states the rule and its
-// assumptions.
-void set_persistence(const model::Rig& rig, const model::SensorLibrary& library,
-                     const metrics::RigCoverage& coverage, CostmapConfig& config) {
-  const geometry::BodyOccluder body(rig.body);
-  std::vector<std::string> kept;
-  for (std::size_t m = 0; m < config.sources.size(); ++m) {
-    const model::Mount& mount = rig.mounts[m];
-    const geometry::MountedFov fov(library.resolved_mode(mount.sensor_id, mount.mode_id),
-                                   mount.T_robot_sensor, body);
-    double& persistence = config.sources[m].source.observation_persistence;
-    for (const BlindGap& gap : config.memory.gaps) {
-      if (gap.last_seen < 0) continue;
-      const metrics::AngleCoverage& seen = coverage.angles[static_cast<std::size_t>(gap.last_seen)];
-      if (sees_approach(rig, fov, seen, rig.distance_for(mount)))
-        persistence = std::max(persistence, gap.persistence);
-    }
-    if (persistence > 0.0)
-      kept.push_back(config.sources[m].mount_id + " " + model::format_number(persistence, 3) + " s");
-  }
-  for (const BlindGap& gap : config.memory.gaps) {
-    if (gap.last_seen >= 0 && !kept.empty()) continue;
-    config.notes.push_back("warning: no source sees an obstacle before it enters the blind gap " +
-                           model::format_number(model::rad_to_deg(gap.from), 3) + ".." +
-                           model::format_number(model::rad_to_deg(gap.to), 3) +
-                           " deg, so nothing can remember it (export --hit-layer-plugin does not "
-                           "help either)");
-  }
-  if (kept.empty()) return;
-  std::string list;
-  for (const std::string& entry : kept) list += (list.empty() ? "" : ", ") + entry;
-  config.notes.push_back("blind memory: observation_persistence " + list +
-                         ", the sources that see an obstacle grazing the body on its approach to "
-                         "a blind gap: " + config.memory.rule);
-}
-
-// The driver's topic under `ns` ("/scan" in "front" is "/front/scan").
-std::string in_namespace(const std::string& ns, const std::string& topic) {
-  return "/" + ns + (topic.front() == '/' ? topic : "/" + topic);
-}
-
-// Each mount's raw topic: the rig's `ros: {topic}` or `{namespace}`, an explicit template,
-// the driver's topic (in the mount's namespace when two mounts' drivers would share it), or
-// the default template.
-std::vector<std::pair<std::string, std::string>> raw_topics(const model::Rig& rig,
-                                                            const model::SensorLibrary& library,
-                                                            const DeployOptions& options) {
-  std::map<std::string, int> uses;
-  for (const model::Mount& mount : rig.mounts) {
-    const model::Sensor& sensor = *library.find(mount.sensor_id);
-    if (sensor.ros2 && sensor.ros2->exists && mount.ros_topic.empty() && mount.ros_namespace.empty())
-      ++uses[sensor.ros2->topic];
-  }
-  std::vector<std::pair<std::string, std::string>> topics;  // topic, note
-  for (const model::Mount& mount : rig.mounts) {
-    const model::Sensor& sensor = *library.find(mount.sensor_id);
-    const bool scan = library.resolved_mode(mount.sensor_id, mount.mode_id).fov.shape().is_planar_scan();
-    const std::string& given = scan ? options.scan_topic : options.cloud_topic;
-    const bool driver = sensor.ros2 && sensor.ros2->exists;
-    if (!mount.ros_topic.empty()) {
-      topics.emplace_back(mount.ros_topic, "");
-    } else if (!given.empty()) {
-      topics.emplace_back(expand_topic(given, mount.id), "");
-    } else if (driver && !mount.ros_namespace.empty()) {
-      topics.emplace_back(in_namespace(mount.ros_namespace, sensor.ros2->topic),
-                          "launch " + sensor.ros2->package + " in namespace " + mount.ros_namespace);
-    } else if (driver && uses[sensor.ros2->topic] > 1) {
-      topics.emplace_back(in_namespace(mount.id, sensor.ros2->topic),
-                          "launch " + sensor.ros2->package + " in namespace " + mount.id +
-                              " (another mount's driver publishes " + sensor.ros2->topic + " too)");
-    } else if (driver) {
-      topics.emplace_back(sensor.ros2->topic, "");
-    } else {
-      topics.emplace_back(expand_topic(scan ? "/{mount}/scan" : "/{mount}/points", mount.id),
-                          "no ROS 2 driver is known for " + sensor.id + ": publish there");
-    }
-  }
-  return topics;
-}
-
 }  // namespace
 
 std::string expand_topic(const std::string& text, const std::string& mount_id) {
@@ -200,7 +89,7 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   config.floor_noise_sigmas = options.floor_noise_sigmas;
   bool any_3d = false;
   const SensorFrames frames = sensor_frames(rig, library, options.parent);
-  const std::vector<std::pair<std::string, std::string>> topics = raw_topics(rig, library, options);
+  const std::vector<DriverTopic> topics = driver_topics(rig, library, options);
   for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
     const model::Mount& mount = rig.mounts[m];
     const model::SensorMode* mode = &library.resolved_mode(mount.sensor_id, mount.mode_id);
@@ -208,8 +97,8 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
     source.mount_id = mount.id;
     source.laser_scan = mode->fov.shape().is_planar_scan();
     any_3d = any_3d || !source.laser_scan;
-    source.raw_topic = topics[m].first;
-    source.topic_note = topics[m].second;
+    source.raw_topic = topics[m].topic;
+    source.topic_note = topics[m].note;
     source.topic = source.raw_topic;
     source.sensor_frame = frames.frames[m].data_frame;
     costmap::ObservationSource& s = source.source;
@@ -251,7 +140,7 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
     config.memory =
         blind_memory(coverage, speed, std::min(speed, options.min_speed), options.update_rate);
     p.hit = config.memory.hit;
-    if (options.hit_layer_plugin.empty()) set_persistence(rig, library, coverage, config);
+    if (options.hit_layer_plugin.empty()) keep_blind_gap_clouds(rig, library, coverage, config);
   } else {
     config.memory.rule = "no robot speed (requirements R5 or --max-speed): paper 1's values";
   }
