@@ -145,8 +145,10 @@ void print_coverage(const metrics::RigCoverage& coverage, std::ostream& out) {
   for (const char* header : {"SC complete min", "mean", "SC floor min", "mean"}) {
     table.add_column(header, Align::right);
   }
-  table.add_row({"(all sensors)", percent(coverage.complete.min), percent(coverage.complete.mean),
-                 percent(coverage.floor.min), percent(coverage.floor.mean)});
+  // Both rows on the raster path, so that a row's change is the sensor's alone.
+  table.add_row({"(all sensors)", percent(coverage.complete_raster.min),
+                 percent(coverage.complete_raster.mean), percent(coverage.floor_raster.min),
+                 percent(coverage.floor_raster.mean)});
   for (const metrics::MountLoss& loss : coverage.without_each) {
     table.add_row({loss.mount_id, percent(loss.complete.min), percent(loss.complete.mean),
                    percent(loss.floor.min), percent(loss.floor.mean)});

@@ -169,6 +169,10 @@ RigCoverage compute_coverage(const model::Rig& rig, const model::SensorLibrary& 
   const auto floor = [](const AngleCoverage& a) { return a.floor; };
   result.complete = summarize(result.angles, complete);
   result.floor = summarize(result.angles, floor);
+  result.complete_raster =
+      summarize(result.angles, [](const AngleCoverage& a) { return a.complete_raster; });
+  result.floor_raster =
+      summarize(result.angles, [](const AngleCoverage& a) { return a.floor_raster; });
   for (const model::SectorRequirement& sector : sectors) {
     SectorCoverage coverage{sector, summarize(result.angles, complete, &sector),
                             summarize(result.angles, floor, &sector)};

@@ -322,3 +322,37 @@ TEST_CASE("an env variable the description never reads is a warning naming it") 
         std::string::npos);
   CHECK(result.out.find("robot.env.JACKAL_LASER:") == std::string::npos);
 }
+
+// Two package_paths folders holding the same package: the first wins, as ROS would, but the
+// rig's author hears about the other (issue 30).
+TEST_CASE("a package found in two package_paths folders is a warning naming both") {
+  TempFolder folder;
+  folder.write("sensors.yaml", kLibrary);
+  folder.write("req.yaml", kRequirements);
+  const std::string package = "<package format=\"3\"><name>tiny</name></package>\n";
+  std::filesystem::create_directories(folder.path() + "/first/tiny/urdf");
+  std::filesystem::create_directories(folder.path() + "/second/tiny_copy/urdf");
+  folder.write("first/tiny/package.xml", package);
+  folder.write("second/tiny_copy/package.xml", package);
+  const std::string part =
+      "<?xml version=\"1.0\"?>\n<robot xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
+      "  <link name=\"cam_link\"/>\n  <joint name=\"cam_joint\" type=\"fixed\">\n"
+      "    <parent link=\"base_footprint\"/><child link=\"cam_link\"/>\n"
+      "    <origin xyz=\"0.41 0 0.5\" rpy=\"0 0 0\"/>\n  </joint>\n</robot>\n";
+  folder.write("first/tiny/urdf/part.xacro", part);
+  folder.write("second/tiny_copy/urdf/part.xacro", part);
+  folder.write("robot.urdf.xacro",
+               "<?xml version=\"1.0\"?>\n<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
+               "  <link name=\"base_footprint\"/>\n"
+               "  <xacro:include filename=\"$(find tiny)/urdf/part.xacro\"/>\n</robot>\n");
+  const std::string rig = replaced(
+      kRig, "distance_of_interest: 3.0",
+      "robot: {description: robot.urdf.xacro, package_paths: [first, second], expander: builtin}\n"
+      "distance_of_interest: 3.0");
+  const CliResult result = run_cli({"metrics", folder.write("rig.yaml", rig)});
+  INFO(result.out << result.err);
+  CHECK(result.exit_code == 0);
+  CHECK(result.out.find("warning: robot.package_paths: package 'tiny' is in " + folder.path() +
+                        "/first/tiny and in " + folder.path() + "/second/tiny_copy") !=
+        std::string::npos);
+}

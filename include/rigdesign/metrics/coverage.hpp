@@ -90,6 +90,11 @@ struct RigCoverage {
   CoverageSummary floor;
   std::vector<SectorCoverage> sectors;
   std::vector<MountLoss> without_each;
+  /// The whole rig on the raster path, the baseline `without_each` is compared with: the
+  /// exact path's means differ from the raster's by up to raster_error, so a row of N-1 set
+  /// against the exact summary could show a loss as a gain.
+  CoverageSummary complete_raster;
+  CoverageSummary floor_raster;
   double raster_error_complete = 0.0;  ///< largest |exact - raster| over angles
   double raster_error_floor = 0.0;
   bool exact = true;

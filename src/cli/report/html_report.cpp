@@ -121,10 +121,12 @@ void n_minus_one_table(std::ostringstream& html, const metrics::RigCoverage& cov
   html << "<section id=\"n-1\"><h2>N-1: spatial coverage with one sensor failed</h2>\n<table>"
           "<tr><th class=\"text\">without</th><th>SC complete min [%]</th><th>mean [%]</th>"
           "<th>SC floor min [%]</th><th>mean [%]</th></tr>\n";
-  html << "<tr><td class=\"text\">(all working)</td><td>" << fixed(coverage.complete.min * 100, 1)
-       << "</td><td>" << fixed(coverage.complete.mean * 100, 1) << "</td><td>"
-       << fixed(coverage.floor.min * 100, 1) << "</td><td>" << fixed(coverage.floor.mean * 100, 1)
-       << "</td></tr>\n";
+  // Raster path on every row: the failed sensor's share, not the two paths' difference.
+  html << "<tr><td class=\"text\">(all working)</td><td>"
+       << fixed(coverage.complete_raster.min * 100, 1) << "</td><td>"
+       << fixed(coverage.complete_raster.mean * 100, 1) << "</td><td>"
+       << fixed(coverage.floor_raster.min * 100, 1) << "</td><td>"
+       << fixed(coverage.floor_raster.mean * 100, 1) << "</td></tr>\n";
   for (const metrics::MountLoss& loss : coverage.without_each) {
     html << "<tr><td class=\"text\">" << model::xml_escaped(loss.mount_id) << "</td><td>"
          << fixed(loss.complete.min * 100, 1) << "</td><td>" << fixed(loss.complete.mean * 100, 1)

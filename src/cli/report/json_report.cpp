@@ -132,6 +132,10 @@ json to_json(const metrics::RigCoverage& coverage, bool curves) {
       {"floor", summary_json(coverage.floor)},
       {"sectors", sectors},
       {"n_minus_1", losses},
+      // The whole rig on the raster path, which n_minus_1 is computed on.
+      {"n_minus_1_baseline",
+       {{"complete", summary_json(coverage.complete_raster)},
+        {"floor", summary_json(coverage.floor_raster)}}},
       {"raster_max_abs_error",
        {{"complete", coverage.raster_error_complete}, {"floor", coverage.raster_error_floor}}}};
   if (!curves) return report;

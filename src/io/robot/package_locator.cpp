@@ -60,7 +60,7 @@ void PackageLocator::index(const std::string& root) const {
   std::error_code error;
   if (!fs::is_directory(root, error)) return;
   if (const auto name = package_name_of((fs::path(root) / "package.xml").string())) {
-    found_.emplace(*name, fs::path(root).lexically_normal().string());
+    remember(*name, fs::path(root).lexically_normal().string());
     return;  // packages do not nest
   }
   fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, error);
@@ -72,13 +72,27 @@ void PackageLocator::index(const std::string& root) const {
     if (!it->is_directory(error)) continue;
     const std::string name_of = (it->path() / "package.xml").string();
     if (const auto name = package_name_of(name_of)) {
-      found_.emplace(*name, it->path().lexically_normal().string());
+      remember(*name, it->path().lexically_normal().string());
       it.disable_recursion_pending();
     }
   }
 }
 
+void PackageLocator::remember(const std::string& package, const std::string& folder) const {
+  const auto [it, added] = found_.emplace(package, folder);
+  if (!added && it->second != folder) hidden_[package].push_back(folder);
+}
+
+std::vector<PackageLocator::Shadowed> PackageLocator::shadowed() const {
+  std::vector<Shadowed> shadowed;
+  for (const auto& [package, hidden] : hidden_) {
+    if (asked_.count(package)) shadowed.push_back({package, found_.at(package), hidden});
+  }
+  return shadowed;
+}
+
 std::optional<std::string> PackageLocator::find(const std::string& package) const {
+  asked_.insert(package);
   if (!indexed_) {
     for (const std::string& root : roots_) index(root);
     indexed_ = true;

@@ -6,6 +6,7 @@
 /// a few levels below it, as a colcon workspace's `src/` does.
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -27,11 +28,23 @@ class PackageLocator {
   /// The folders searched, for "not found" messages.
   const std::vector<std::string>& searched() const { return roots_; }
 
+  /// A package asked for that more than one searched folder holds: the one used (the first
+  /// found, package_paths before ROS_PACKAGE_PATH) and the ones it hides.
+  struct Shadowed {
+    std::string package;
+    std::string used;
+    std::vector<std::string> hidden;
+  };
+  std::vector<Shadowed> shadowed() const;
+
  private:
   void index(const std::string& root) const;  // adds root's packages to found_
+  void remember(const std::string& package, const std::string& folder) const;
   std::vector<std::string> roots_;
   std::vector<std::string> ament_prefixes_;
   mutable std::map<std::string, std::string> found_;  // package -> folder
+  mutable std::map<std::string, std::vector<std::string>> hidden_;  // package -> other folders
+  mutable std::set<std::string> asked_;
   mutable bool indexed_ = false;  // the listed folders are scanned at the first find()
 };
 

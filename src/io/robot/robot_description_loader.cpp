@@ -244,6 +244,16 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
           shape_of(*collision, link->name, T_root_link, where, request, packages));
     }
   }
+  // After the meshes, so that their package:// lookups count too.
+  for (const PackageLocator::Shadowed& shadowed : packages.shadowed()) {
+    std::string hidden;
+    for (const std::string& folder : shadowed.hidden) hidden += (hidden.empty() ? "" : ", ") + folder;
+    description.warnings.push_back(
+        {request.named_at, "robot.package_paths",
+         "package '" + shadowed.package + "' is in " + shadowed.used + " and in " + hidden +
+             ": the first is used",
+         "one folder per package (remove or reorder the others)", model::Severity::warning});
+  }
   return description;
 }
 
