@@ -8,6 +8,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "number_checks.hpp"
 #include "coverage_files.hpp"
 #include "inputs.hpp"
 #include "report/html_report.hpp"
@@ -83,7 +84,7 @@ Command setup_report(CLI::App& parent) {
                   "Requirements (default: the file the rig names)");
   app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's, or bundled)");
   app->add_option("--step", options->step_deg, "Azimuth step of the coverage cut [deg]")
-      ->check(CLI::Range(0.1, 45.0))
+      ->check(finite_in(0.1, 45.0, "degrees in [0.1, 45]"))
       ->capture_default_str();
   return {app, [options](std::ostream& out, std::ostream&) { return run_report(*options, out); }};
 }

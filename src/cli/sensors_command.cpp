@@ -10,6 +10,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "number_checks.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
 #include "rigdesign/model/closest_name.hpp"
@@ -185,15 +186,15 @@ Command setup_sensors(CLI::App& parent) {
                   "Only sensors whose id or name contains this text (any case)");
   app->add_option("--min-range", options->min_range,
                   "Only sensors with a mode reaching at least this far [m]")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_in(0.0, 1e6, "metres, >= 0"));
   app->add_option("--max-price", options->max_price, "Only sensors costing at most this [USD]")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_up_to(1e9, "a price in USD, > 0"));
   app->add_option("--min-rate", options->min_rate,
                   "Only sensors with a mode at least this fast [Hz]")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_in(0.0, 1e6, "a rate in Hz, >= 0"));
   app->add_option("--min-fov-deg", options->min_fov_deg,
                   "Only sensors with a mode at least this wide horizontally [deg]")
-      ->check(CLI::Range(0.0, 360.0));
+      ->check(finite_in(0.0, 360.0, "degrees in [0, 360]"));
   app->add_option("--sort", options->sort, "Order of the list (range and rate: largest first)")
       ->check(CLI::IsMember({"id", "price", "range", "rate"}))
       ->capture_default_str();

@@ -128,3 +128,18 @@ TEST_CASE("sensors refuses an unknown id or technology with exit 2 and a suggest
   CHECK(technology.exit_code == 2);
   CHECK(technology.err.find("lidar_3d_spinning") != std::string::npos);
 }
+
+// Reliability reproducers 11 and 12 (issue 31): CLI11's range checks let NaN through, and
+// `report --step nan` cut the coverage at one angle. Every such option now refuses NaN.
+TEST_CASE("numeric filters and steps refuse NaN with exit 2") {
+  for (const char* option : {"--min-range", "--max-price", "--min-rate", "--min-fov-deg"}) {
+    INFO(option);
+    const CliResult result = run_cli({"sensors", option, "nan"});
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find(option) != std::string::npos);
+  }
+  const CliResult step =
+      run_cli({"report", source_path("rigs/cart_two_scanners.yaml"), "--step", "nan"});
+  CHECK(step.exit_code == 2);
+  CHECK(step.err.find("--step") != std::string::npos);
+}
