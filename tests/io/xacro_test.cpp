@@ -8,6 +8,7 @@
 #include "rigdesign/io/robot/xacro_expression.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
+#include "support/path_guard.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;
@@ -259,16 +260,7 @@ TEST_CASE("ROS's xacro is used when it is on PATH, with the rig's arguments and 
       folder.write("robot.urdf.xacro",
                    "<robot name=\"r\" xmlns:xacro=\"http://ros.org/wiki/xacro\">"
                    "<link name=\"base_footprint\"/></robot>");
-  // PATH gets the stand-in first, and its old value back however the test ends.
-  struct PathGuard {
-    std::string saved = std::getenv("PATH") ? std::getenv("PATH") : "";
-    explicit PathGuard(const std::string& first) {
-      ::setenv("PATH", (first + ":" + saved).c_str(), 1);
-    }
-    ~PathGuard() { ::setenv("PATH", saved.c_str(), 1); }
-    PathGuard(const PathGuard&) = delete;
-    PathGuard& operator=(const PathGuard&) = delete;
-  } path_guard(folder.path() + "/bin");
+  const PathGuard path_guard(folder.path() + "/bin");
   io::RobotDescriptionRequest request;
   request.path = description;
   request.args = {{"side", "left"}};

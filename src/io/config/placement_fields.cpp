@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <optional>
 
 #include "io/config/field_checks.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
 #include "rigdesign/io/robot/robot_description_loader.hpp"
+#include "rigdesign/io/robot/xacro_environment.hpp"
 #include "rigdesign/model/closest_name.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -182,8 +185,9 @@ RobotLinks failed_links() {
   return links;
 }
 
-std::map<std::string, std::string> read_text_map(MapReader& reader, const std::string& key,
-                                                 const std::string& expected) {
+std::map<std::string, std::string> read_text_map(
+    MapReader& reader, const std::string& key, const std::string& expected,
+    const std::function<std::optional<std::string>(const std::string&)>& refused_key = {}) {
   std::map<std::string, std::string> values;
   const YAML::Node node = reader.node(key);
   if (!node.IsDefined() || node.IsNull()) return values;
@@ -203,7 +207,15 @@ std::map<std::string, std::string> read_text_map(MapReader& reader, const std::s
                                  "is not a single value", expected);
       continue;
     }
-    values[entry.first.as<std::string>()] = entry.second.as<std::string>();
+    const std::string name = entry.first.as<std::string>();
+    if (refused_key) {
+      if (const auto why = refused_key(name)) {
+        reader.diagnostics().error(location_of(entry.first, reader.file()),
+                                   reader.field(key) + "." + name, *why, expected);
+        continue;
+      }
+    }
+    values[name] = entry.second.as<std::string>();
   }
   return values;
 }
@@ -301,9 +313,12 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
                                          "a .urdf or .urdf.xacro path relative to this file");
     RobotDescriptionRequest request;
     request.named_at = robot->location("description");
-    request.args = read_text_map(*robot, "args", "a map of xacro argument names to values");
-    request.environment =
-        read_text_map(*robot, "env", "a map of environment variable names to values");
+    request.args = read_text_map(*robot, "args", "a map of xacro argument names to values",
+                                 refused_argument_name);
+    request.environment = read_text_map(
+        *robot, "env",
+        "a map of the variables the description reads with $(optenv)/$(env) to values",
+        refused_environment_name);
     request.package_paths = read_folders(*robot, "package_paths", file);
     const std::string base = robot->text("base_link", Need::optional).value_or("");
     const double base_height =

@@ -12,7 +12,8 @@ namespace rigdesign::io {
 /// The path of an executable named xacro on PATH, or nothing.
 std::optional<std::string> find_xacro_executable();
 
-/// `xacro PATH name:=value ...` with `environment` added to the process's; returns its
+/// `xacro PATH name:=value ...` in a minimal environment (xacro_environment.hpp) plus the
+/// rig's accepted `environment`, output to a private mkdtemp folder; returns its
 /// output (the URDF text). Throws InputError at `named_at` with xacro's own message when it
 /// fails.
 std::string run_xacro(const std::string& executable, const std::string& path,
