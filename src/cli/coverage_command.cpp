@@ -40,6 +40,7 @@ int run_coverage(const CoverageOptions& options, std::ostream& out, std::ostream
                                  ? "coverage/" + std::filesystem::path(options.rig).stem().string()
                                  : options.out;
   io::StagedFolder staged(folder, "--out");  // the old pictures or the new set, never a mix
+  staged.refuse_inputs_inside(files_read(inputs));
 
   metrics::CoverageSettings settings;
   settings.step = model::deg_to_rad(options.step_deg);

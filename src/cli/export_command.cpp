@@ -16,6 +16,7 @@
 #include "report/deployment_report.hpp"
 #include "rigdesign/deploy/deployment.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/ros_names.hpp"
 
 namespace rigdesign::cli {
@@ -67,9 +68,14 @@ int run_export(const ExportOptions& options, std::ostream& out) {
   const model::Requirements* requirements = inputs.requirements ? &*inputs.requirements : nullptr;
   const deploy::Deployment deployment =
       deploy::plan_deployment(inputs.rig, inputs.library, requirements, options.deploy);
+  // Staged as a whole: a full disk or a kill leaves the previous export or the new one,
+  // never the new macro beside the old costmap file.
+  io::StagedFolder staged(options.to, "--to");
+  staged.refuse_inputs_inside(files_read(inputs));
   const std::vector<std::string> written = io::write_deployment(
-      options.to, inputs.rig, deployment, deployment_header(inputs.rig, requirements));
-  print_deployment(out, inputs.rig, deployment, written);
+      staged.path(), inputs.rig, deployment, deployment_header(inputs.rig, requirements));
+  staged.commit();
+  print_deployment(out, inputs.rig, deployment, staged.final_names(written));
   return kOk;
 }
 

@@ -40,6 +40,13 @@ auto load_collecting(Load load, model::Diagnostics& diagnostics)
 
 }  // namespace
 
+std::vector<std::string> files_read(const RigInputs& inputs) {
+  std::vector<std::string> files = {inputs.rig.file, inputs.library.file};
+  if (inputs.requirements) files.push_back(inputs.requirements->file);
+  if (inputs.rig.robot) files.push_back(inputs.rig.robot->description);
+  return files;
+}
+
 RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensors_path,
                           const std::string& requirements_path) {
   RigInputs inputs;

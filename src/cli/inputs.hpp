@@ -27,6 +27,10 @@ struct RigInputs {
 RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensors_path,
                           const std::string& requirements_path);
 
+/// Every file `inputs` were read from (rig, sensor library, requirements, robot
+/// description): what an output folder must not hold.
+std::vector<std::string> files_read(const RigInputs& inputs);
+
 /// The sensor library a catalog uses: `sensors_path` when not empty, else the catalog's own
 /// `sensor_library` (an error at that field when it does not exist), else the bundled one.
 model::SensorLibrary load_catalog_library(const model::Catalog& catalog,

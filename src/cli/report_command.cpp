@@ -34,6 +34,7 @@ int run_report(const ReportOptions& options, std::ostream& out) {
                                  ? "report/" + std::filesystem::path(options.rig).stem().string()
                                  : options.out;
   io::StagedFolder staged(folder, "--out");
+  staged.refuse_inputs_inside(files_read(inputs));
 
   metrics::CoverageSettings settings;
   settings.step = model::deg_to_rad(options.step_deg);

@@ -129,6 +129,8 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
                           : options.out;
   // Checked before the search, not after it; filled only when the run completes.
   io::StagedFolder staged(folder, "--out");
+  staged.refuse_inputs_inside({catalog.file, library.file, requirements.file, options.policy,
+                               catalog.robot ? catalog.robot->description : std::string()});
   // Every option is rasterised at every angle before the search: bounded before that work.
   const double options_total = checked_option_count(options, catalog);
 

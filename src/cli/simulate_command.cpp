@@ -62,6 +62,9 @@ int run_simulate(const SimulateOptions& options, std::ostream& out, std::ostream
                      model::format_number(bytes / 1e9, 3) + " GB",
                  "at most 2 GB of clouds (they are held in memory per sensor): fewer frames");
   io::StagedFolder staged(folder, "--out");
+  std::vector<std::string> read = files_read(inputs);
+  read.push_back(options.scene);  // a scene file, or a bundled scene's name (never a file here)
+  staged.refuse_inputs_inside(read);
   out << inputs.rig.name << " in the " << options.scene << " scene (seed " << options.seed << "), "
       << options.frames << " frame(s) per sensor, " << options.frame << " frame, at most "
       << model::format_number(bytes / 1e6, 3) << " MB\n";

@@ -7,13 +7,15 @@
 #include <cstring>
 #include <filesystem>
 
+#include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io {
 namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& problem) {
-  throw model::InputError(model::Diagnostic{{path, 0, 0}, "output", problem, "a writable path"});
+  throw model::InputError(
+      model::Diagnostic{{shown_path(path), 0, 0}, "output", problem, "a writable path"});
 }
 
 }  // namespace

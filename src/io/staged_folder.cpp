@@ -5,9 +5,12 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
+#include <vector>
 
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/output_folder.hpp"
@@ -19,6 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kMarker = ".rigdesign-output";
+
+// The staging folders that exist now, for shown_path().
+std::mutex live_mutex;
+std::vector<const StagedFolder*> live_folders;
 constexpr const char* kPartial = ".partial-";
 
 // Staging folders of runs that no longer exist (killed): their name ends in the dead pid.
@@ -57,6 +64,16 @@ void move_files_into(const fs::path& from, const fs::path& to) {
 
 }  // namespace
 
+std::string shown_path(const std::string& path) {
+  const std::lock_guard<std::mutex> lock(live_mutex);
+  for (const StagedFolder* folder : live_folders) {
+    const std::string& staging = folder->path();
+    if (path.rfind(staging, 0) == 0 && (path.size() == staging.size() || path[staging.size()] == '/'))
+      return folder->final_name(path);
+  }
+  return path;
+}
+
 StagedFolder::StagedFolder(std::string folder, std::string option)
     : folder_(std::move(folder)), option_(std::move(option)) {
   // Absolute, so "." and "out/" name a folder with a parent to stage beside.
@@ -85,6 +102,14 @@ StagedFolder::StagedFolder(std::string folder, std::string option)
                                               "'" + folder_ + "' is a file, not a folder",
                                               "a folder (new or rigdesign's own)"});
   }
+  if (fs::is_symlink(final_path, error) && !fs::is_directory(final_path, error)) {
+    throw model::InputError(model::Diagnostic{{"(command line)", 0, 0},
+                                              option_,
+                                              "'" + folder_ +
+                                                  "' is a symbolic link that leads to no folder "
+                                                  "(a loop, or a missing target)",
+                                              "a folder (new or rigdesign's own)"});
+  }
   remove_abandoned_staging(parent, name);
   target_ = final_path.string();
   staging_ = (parent / ("." + name + kPartial + std::to_string(::getpid()))).string();
@@ -92,9 +117,35 @@ StagedFolder::StagedFolder(std::string folder, std::string option)
   prepare_output_folder(staging_, option_);
   write_file_atomically(staging_ + "/" + kMarker,
                         "Written by rigdesign: the whole folder is replaced on the next run.\n");
+  const std::lock_guard<std::mutex> lock(live_mutex);
+  live_folders.push_back(this);
+}
+
+void StagedFolder::refuse_inputs_inside(const std::vector<std::string>& inputs) const {
+  std::error_code error;
+  const fs::path folder = fs::weakly_canonical(target_, error);
+  if (error) return;  // a folder that cannot be resolved holds no input
+  for (const std::string& input : inputs) {
+    if (input.empty() || !fs::exists(input, error)) continue;  // nothing there to lose
+    const fs::path file = fs::weakly_canonical(input, error);
+    if (error) continue;
+    const fs::path inside = file.lexically_relative(folder);
+    if (inside.empty() || *inside.begin() == "..") continue;
+    throw model::InputError(model::Diagnostic{
+        {"(command line)", 0, 0},
+        option_,
+        "'" + folder_ + "' holds the input '" + input +
+            "': the folder is replaced by this command's outputs, which would delete it",
+        "an output folder that holds none of the command's inputs"});
+  }
 }
 
 StagedFolder::~StagedFolder() {
+  {
+    const std::lock_guard<std::mutex> lock(live_mutex);
+    live_folders.erase(std::remove(live_folders.begin(), live_folders.end(), this),
+                       live_folders.end());
+  }
   if (committed_) return;
   std::error_code ignored;
   fs::remove_all(staging_, ignored);

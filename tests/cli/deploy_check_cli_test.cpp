@@ -290,3 +290,21 @@ TEST_CASE("export / check --global-frame-height: bands in the global frame", "[d
   CHECK(wrong.exit_code == 1);
   CHECK(wrong.out.find("fail: D2 height band") != std::string::npos);
 }
+
+TEST_CASE("check --nav2 / --filters on a rig without requirements reads the files (10)",
+          "[deploy]") {
+  const std::string rig = source_path("rigs/turtlebot4.yaml");  // names no requirements
+  const CliResult missing = run_cli({"check", rig, "--nav2", "/nonexistent/nav2.yaml",
+                                     "--filters", "/nonexistent/filters.yaml"});
+  CHECK(missing.exit_code == 2);
+  CHECK((missing.out + missing.err).find("/nonexistent/nav2.yaml") != std::string::npos);
+  TempFolder folder;
+  REQUIRE(run_cli({"export", rig, "--to", folder.path()}).exit_code == 0);
+  const CliResult deployed = run_cli({"check", rig, "--nav2", folder.path() + "/nav2_costmap.yaml",
+                                      "--filters", folder.path() + "/self_filters.yaml"});
+  INFO(deployed.out << deployed.err);
+  CHECK(deployed.exit_code == 0);
+  // D1 needs no requirements: one observation source per mount of the rig file (lidar, oakd).
+  CHECK(deployed.out.find("pass: D1 observation source for lidar") != std::string::npos);
+  CHECK(deployed.out.find("pass: D1 observation source for oakd") != std::string::npos);
+}

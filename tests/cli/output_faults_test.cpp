@@ -45,6 +45,10 @@ bool parses(const std::string& name, const std::string& bytes) {
     }
   }
   if (extension == ".csv") return !bytes.empty() && bytes.back() == '\n';
+  // The exported macro closes its root element; the launch file ends its function's return.
+  if (extension == ".xacro") return ends_with("</robot>\n");
+  if (extension == ".py") return bytes.find("def generate_launch_description") != std::string::npos &&
+                                 ends_with("\n");
   if (extension == ".pcd") {
     const fs::path copy = fs::temp_directory_path() /
                           ("rigdesign_fault_check_" + std::to_string(::getpid()) + ".pcd");
@@ -150,4 +154,67 @@ TEST_CASE("a full disk is exit 2 with the cause, and leaves the previous outputs
   for (const auto& entry : fs::directory_iterator(disk)) entries += entry.exists() ? 1 : 0;
   CHECK(entries == 2);  // the folder and the placeholder: no staging folder, no temp file
   ::umount(disk.c_str());
+}
+
+TEST_CASE("kill -9 during export leaves the old deployment files or the new set (09)") {
+  TempFolder folder;
+  const std::string out = folder.path() + "/deploy";
+  check_kills({"export", source_path("rigs/cart_two_scanners.yaml"), "--to", out},
+              {"export", source_path("rigs/ur_cleaner.yaml"), "--to", out}, out);
+}
+
+TEST_CASE("export on a full disk: exit 2 naming the file as the user knows it, old set whole (08)") {
+  TempFolder folder;
+  const std::string disk = folder.path() + "/small_disk";
+  fs::create_directories(disk);
+  if (::mount("tmpfs", disk.c_str(), "tmpfs", 0, "size=64k") != 0) {
+    WARN("cannot mount a tmpfs here (needs root): the full-disk export was not run");
+    return;
+  }
+  const std::string out = disk + "/exp";
+  REQUIRE(run_cli({"export", source_path("rigs/cart_two_scanners.yaml"), "--to", out}).exit_code ==
+          0);
+  const Snapshot before = snapshot(out);
+  // Fill the disk but for 4 KiB: the new set cannot be staged.
+  const auto space = fs::space(disk);
+  std::ofstream(disk + "/filler", std::ios::binary)
+      << std::string(static_cast<std::size_t>(space.available > 4096 ? space.available - 4096 : 0),
+                     '\0');
+  const CliResult result = run_cli({"export", source_path("rigs/ur_cleaner.yaml"), "--to", out});
+  INFO(result.err);
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("No space left on device") != std::string::npos);
+  CHECK(result.err.find(".partial-") == std::string::npos);  // not the hidden staging path
+  CHECK(snapshot(out) == before);
+  ::umount(disk.c_str());
+}
+
+TEST_CASE("an output folder holding one of the command's inputs is refused before any work (19)") {
+  TempFolder folder;
+  const std::string out = folder.path() + "/selection";
+  fs::create_directories(out);
+  std::ofstream(out + "/.rigdesign-output") << "written by rigdesign\n";  // as select leaves it
+  fs::copy_file(source_path("rigs/ur_cleaner.yaml"), out + "/chosen_rig.yaml");
+  fs::copy_file(source_path("rigs/requirements/ur_cleaner.yaml"), out + "/requirements.yaml");
+  fs::create_directories(out + "/deep/er");
+  fs::copy_file(source_path("rigs/ur_cleaner.yaml"), out + "/deep/er/rig.yaml");
+  const Snapshot before = snapshot(out);
+  const std::string rig = out + "/chosen_rig.yaml";
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"report", rig, "--sensors", source_path("sensors.yaml"),
+                                 "--requirements", out + "/requirements.yaml", "--out", out},
+        std::vector<std::string>{"coverage", rig, "--sensors", source_path("sensors.yaml"),
+                                 "--requirements", out + "/requirements.yaml", "--out", out},
+        std::vector<std::string>{"export", rig, "--sensors", source_path("sensors.yaml"),
+                                 "--requirements", out + "/requirements.yaml", "--to", out},
+        // The input two levels down, the folder named through another spelling.
+        std::vector<std::string>{"report", out + "/deep/er/rig.yaml", "--sensors",
+                                 source_path("sensors.yaml"), "--requirements",
+                                 out + "/requirements.yaml", "--out", out + "/deep/../"}}) {
+    const CliResult result = run_cli(args);
+    INFO(args.front() << ": " << result.err);
+    CHECK(result.exit_code == 2);
+    CHECK(result.err.find("holds the input") != std::string::npos);
+  }
+  CHECK(snapshot(out) == before);
 }

@@ -10,6 +10,11 @@ namespace rigdesign::io {
 /// outputs or the complete new set, never a mix; the previous run's pictures do not linger
 /// beside the new ones. A folder rigdesign did not write (no `.rigdesign-output` marker, not
 /// empty) is never removed: the new files are moved into it one by one instead.
+/// The name a user knows for `path`: its name after commit() when it lies in the staging
+/// folder of a StagedFolder that exists, else `path` itself. Error messages use it, so a full
+/// disk names `out/report.html`, not `.out.partial-4242/report.html`.
+std::string shown_path(const std::string& path);
+
 class StagedFolder {
  public:
   /// Creates the staging folder beside `folder` (and `folder`'s parents), removing staging
@@ -20,6 +25,11 @@ class StagedFolder {
   ~StagedFolder();
   StagedFolder(const StagedFolder&) = delete;
   StagedFolder& operator=(const StagedFolder&) = delete;
+
+  /// Throws InputError naming the option when one of `inputs` (files the command reads)
+  /// lies inside the folder: replacing the folder would delete what the command reads
+  /// (`report DIR/chosen_rig.yaml --out DIR`). Call before any work.
+  void refuse_inputs_inside(const std::vector<std::string>& inputs) const;
 
   /// Where the command writes (the staging folder).
   const std::string& path() const { return staging_; }

@@ -125,9 +125,9 @@ void check_rig(const std::string& path, const std::string& sensors_path,
   const RigInputs inputs = load_rig_inputs(path, sensors_path, requirements_path);
   report.summary = rig_summary(inputs);
   report.diagnostics = inputs.warnings;
-  if (!inputs.requirements) return;
   // Deployment files are read before the coverage is computed: a typo in them is reported
-  // at once, not after the slowest step.
+  // at once, not after the slowest step. They are read with or without requirements: D1
+  // (every mount feeds the costmap) needs none.
   std::optional<deploy::DeployedConfig> config;
   if (!deployment.empty()) config = load_deployment(deployment, inputs.rig);
   if (config) {
@@ -135,7 +135,17 @@ void check_rig(const std::string& path, const std::string& sensors_path,
                               config->warnings.end());
   }
   report.load_seconds = seconds_since(started);
-  judge_rig(inputs, config, report);
+  if (inputs.requirements) return judge_rig(inputs, config, report);
+  if (!config) return;
+  const model::Requirements none;  // only what every deployment must keep is judged
+  deploy::DeploymentCheck deployed =
+      deploy::check_deployment(inputs.rig, inputs.library, none, *config, nullptr);
+  report.diagnostics.insert(report.diagnostics.end(), deployed.warnings.begin(),
+                            deployed.warnings.end());
+  for (metrics::RequirementResult& result : deployed.results) {
+    report.results.push_back(std::move(result));
+    report.result_seconds.push_back(seconds_since(started));
+  }
 }
 
 }  // namespace
