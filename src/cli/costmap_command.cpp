@@ -33,7 +33,10 @@ namespace {
 
 // An update rate above the follower's control rate would update between its commands: the
 // one limit on --update-rate (scenarios::check_scenario_inputs holds the same rule).
-const double kControlRate = scenarios::ScenarioParams{}.control_rate;
+double control_rate() {
+  const scenarios::ScenarioParams defaults;
+  return defaults.control_rate;
+}
 
 struct CostmapOptions {
   std::string rig;
@@ -269,8 +272,9 @@ void print_comparison(std::ostream& out, const std::vector<VariantRun>& runs) {
 }
 
 // A nav2 parameter file: its costmap, and its observation sources for the mounts they name.
-void apply_params_file(const std::string& path, double global_frame_height,
-                       const model::Rig& rig, scenarios::ScenarioParams& params) {
+// Returns where the file sets the window, for the simulation's size check.
+model::SourceLocation apply_params_file(const std::string& path, double global_frame_height,
+                                        const model::Rig& rig, scenarios::ScenarioParams& params) {
   const io::CostmapParamsFile file =
       io::load_costmap_params(path, params.costmap, params.source, global_frame_height);
   params.costmap = file.costmap;
@@ -280,6 +284,7 @@ void apply_params_file(const std::string& path, double global_frame_height,
                    path + ": observation source '" + named.name + "' names no mount of " + rig.file,
                    "observation sources named after the rig's mount ids");
   }
+  return file.window_where;
 }
 
 // The sources that keep their clouds, as "; observation_persistence left 5.8 s, ...".
@@ -316,10 +321,14 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
                  "0 (no frames) or a number of updates");
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, "");
   scenarios::ScenarioParams params;
-  if (!options.params.empty())
-    apply_params_file(options.params, options.global_frame_height, inputs.rig, params);
+  if (!options.params.empty()) {
+    params.window_where =
+        apply_params_file(options.params, options.global_frame_height, inputs.rig, params);
+  }
   if (options.resolution) params.costmap.resolution = *options.resolution;
   if (options.window) params.costmap.size_x = params.costmap.size_y = *options.window;
+  if (options.resolution || options.window) params.window_where = model::SourceLocation();
+  if (params.window_where.file.empty()) params.window_where.file = "(command line)";
   const double footprint = 2.0 * inputs.rig.body.radius;
   require_option(
       std::min(params.costmap.size_x, params.costmap.size_y) >= footprint, "--window",
@@ -408,8 +417,9 @@ Command setup_costmap(CLI::App& parent) {
       ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
   app->add_option("--update-rate", options->update_rate,
                   "Sensing, costmap and planning rate [Hz] (default 5)")
-      ->check(positive_up_to(kControlRate, "a rate in (0, " + model::format_number(kControlRate) +
-                                               "] Hz (the follower's control rate)"));
+      ->check(positive_up_to(control_rate(), "a rate in (0, " +
+                                                 model::format_number(control_rate()) +
+                                                 "] Hz (the follower's control rate)"));
   app->add_option("--frame-every", options->frame_every,
                   "Write a PNG frame every N updates (default 5, 0: none)")
       ->check(finite_in(0, 100000, "0 (none) or an update count"));

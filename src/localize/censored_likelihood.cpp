@@ -20,6 +20,10 @@ constexpr int kNewtonSteps = 12;
 // data tell (tenths of a dB, hundredths of the exponent).
 constexpr double kLevelTolerance = 1e-4;  // [dB]
 constexpr double kExponentTolerance = 1e-5;
+// The path-loss exponent's physical interval: 1.5 in corridors that guide the wave, up to 6
+// in cluttered buildings (Rappaport, Wireless Communications, table 4.2). Outside it a fit
+// reports impossible propagation (an exponent of -219 under a 1e5 dB wall).
+constexpr double kMinExponent = 1.5, kMaxExponent = 6.0;
 
 // The censored cells of one position: count, log distance and wall loss.
 struct CensoredTerm {
@@ -240,7 +244,7 @@ ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
                             -k * inv_var * YL + prior_n * s.exponent);
     const Eigen::Vector2d x = A.partialPivLu().solve(b);
     a = x(0);
-    n = x(1);
+    n = std::clamp(x(1), kMinExponent, kMaxExponent);
   } else {
     a = (k * inv_var * (Y + n * CL) + prior_a * s.level_dbm) / (k * inv_var * C + prior_a);
   }
@@ -258,14 +262,18 @@ ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
     double factor = 1.0;
     Eigen::Vector2d g_new;
     Eigen::Matrix2d H_new;
-    double value_new = evaluate(a + delta(0), n + delta(1), &g_new, &H_new);
+    // The exponent stays in its physical interval (a projected step).
+    const auto moved_n = [&](double f) { return std::clamp(n + f * delta(1), kMinExponent, kMaxExponent); };
+    double value_new = evaluate(a + delta(0), moved_n(1.0), &g_new, &H_new);
     while (value_new < value - 1e-12 && factor > 1e-3) {
       factor *= 0.5;
-      value_new = evaluate(a + factor * delta(0), n + factor * delta(1), &g_new, &H_new);
+      value_new = evaluate(a + factor * delta(0), moved_n(factor), &g_new, &H_new);
     }
     if (value_new < value - 1e-12) break;
     a += factor * delta(0);
-    n += factor * delta(1);
+    const double n_before = n;
+    n = moved_n(factor);
+    delta(1) = factor > 0 ? (n - n_before) / factor : 0.0;
     value = value_new;
     g = g_new;
     H = H_new;

@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "rigdesign/io/maps/map_files.hpp"
@@ -131,4 +132,27 @@ mounts:
   CHECK(result.err.find("rig.yaml") != std::string::npos);
   CHECK(result.err.find("mounts") != std::string::npos);
   CHECK(result.err.find("no sensor can mark") != std::string::npos);
+}
+
+TEST_CASE("costmap: a window too large to simulate is refused at its line before allocating (15)") {
+  TempFolder folder;
+  // The bundled local costmap with a 1638 m window: 32,760 cells per axis at 0.05 m (inside
+  // the per-axis cap), 1.07e9 cells in all.
+  std::ifstream stream(source_path("rigs/costmap/ur_cleaner_local_costmap.yaml"));
+  std::stringstream text;
+  text << stream.rdbuf();
+  std::string params = text.str();
+  const int width_line = line_of(params, "width: 6");
+  REQUIRE(width_line > 0);
+  params.replace(params.find("width: 6"), 8, "width: 1638");
+  params.replace(params.find("height: 6\n"), 9, "height: 1638");
+  const std::string path = folder.write("p.yaml", params);
+  const CliResult result = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"),
+                                    "--scenario", "stationary", "--params", path, "--out",
+                                    folder.path() + "/out"});
+  INFO(result.err);
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find(path + ":" + std::to_string(width_line) + ":") == 0);
+  CHECK(result.err.find("1.073e+09 cells") != std::string::npos);  // 32760^2
+  CHECK(!std::filesystem::exists(folder.path() + "/out"));
 }

@@ -4,10 +4,12 @@
 #include "rigdesign/io/logs/ground_truth_files.hpp"
 #include "rigdesign/io/logs/log_kind.hpp"
 #include "rigdesign/io/logs/rssi_csv.hpp"
+#include "rigdesign/io/logs/walls_csv.hpp"
 #include "rigdesign/localize/co2_log.hpp"
 #include "rigdesign/localize/ground_truth.hpp"
 #include "rigdesign/localize/rssi_log.hpp"
 #include "rigdesign/model/input_error.hpp"
+#include "support/input_errors.hpp"
 
 using namespace rigdesign;
 
@@ -133,4 +135,18 @@ TEST_CASE("a log's kind is told by its first line; ground truth files parse", "[
   REQUIRE(truth.size() == 1);
   CHECK(truth[0].position == model::Vec3(1, 2, 3));
   CHECK(io::parse_emitter_truth(io::to_emitter_truth_csv(truth), "again.csv")[0].bssid == "aa:01");
+}
+
+TEST_CASE("wall maps: losses above 60 dB, far coordinates and over 10000 walls refused (13)",
+          "[localize]") {
+  const std::string header = "x1,y1,x2,y2,attenuation_db\n";
+  CHECK(io::parse_walls_csv(header + "-50,0,50,0,60\n", "w.csv").size() == 1);
+  CHECK(test::input_error_of([&] { io::parse_walls_csv(header + "-50,0,50,0,1e5\n", "w.csv"); })
+            .find("w.csv:2:12: attenuation_db: is 100000 dB") == 0);
+  CHECK(test::input_error_of([&] { io::parse_walls_csv(header + "-50,0,1e9,0,8\n", "w.csv"); })
+            .find("w.csv:2:7: x2") == 0);
+  std::string many = header;
+  for (int k = 0; k <= 10000; ++k) many += "0," + std::to_string(k) + ",1," + std::to_string(k) + ",3\n";
+  CHECK(test::input_error_of([&] { io::parse_walls_csv(many, "w.csv"); }).find("w.csv:10002:1: walls") ==
+        0);
 }

@@ -25,6 +25,8 @@ struct ScenarioParams {
   /// robot_radius and the inscribed radius are set from the rig's body; the inflation radius
   /// is raised to inscribed + 0.1 m when smaller; the voxel band's top to the body's height.
   costmap::CostmapParams costmap = scenario_costmap_defaults();
+  /// Where the window's size was set: a parameter file's width; empty: the command line.
+  model::SourceLocation window_where;
   /// Per-mount source settings; max_obstacle_height is set to the body's height (nav2 practice:
   /// points above the robot neither mark nor clear).
   costmap::ObservationSource source = scenario_source_defaults();

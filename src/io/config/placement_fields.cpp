@@ -328,6 +328,11 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
                            "the base link's height above the floor in metres (default 0)")
                   .value_or(0.0)
             : 0.0;
+    // Beyond +-100 m the height is another unit or a typo (and 1e300 + 0.4 m is 1e300 m:
+    // every exported frame would lose its own height).
+    robot->require(std::abs(base_height) <= 100.0, "base_link_height",
+                   "is " + model::format_number(base_height) + " m",
+                   "the base link's height above the floor in metres, within +-100 m");
     const auto expander = robot->choice("expander", Need::optional, {"auto", "builtin", "xacro"});
     if (expander) request.expander = static_cast<RobotDescriptionRequest::Expander>(*expander);
     robot->reject_unknown_keys();

@@ -20,7 +20,11 @@ model::TriangleMesh load_mesh_with_assimp(const std::string& path,
                           "a mesh file with triangles (STL, COLLADA .dae, OBJ, PLY)"});
   };
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) fail("'" + path + "' does not exist");
+  if (!std::filesystem::exists(path, error)) fail("'" + path + "' does not exist");
+  // A FIFO or a device (/dev/zero) would block or never end.
+  if (!std::filesystem::is_regular_file(path, error)) {
+    fail("'" + path + "' is not a regular file (a folder, FIFO or device)");
+  }
   Assimp::Importer importer;
   // URDF consumers (robot_state_publisher, Gazebo, RViz) read COLLADA vertices in the link
   // frame as written; assimp would otherwise turn Z_UP files to its own Y-up convention.

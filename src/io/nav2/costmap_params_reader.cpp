@@ -245,7 +245,8 @@ CostmapParamsFile load_costmap_params(const std::string& path,
         "is not a map",
         "nav2 costmap parameters: local_costmap: local_costmap: ros__parameters: {...}"});
   }
-  CostmapParamsFile file{defaults, {}, {}, false, {}, {}};
+  CostmapParamsFile file{defaults, {}, {}, false, {}, {}, {}};
+  file.window_where = m.location(m.has("width") ? "width" : m.has("height") ? "height" : "");
   costmap::CostmapParams& p = file.costmap;
   read_if_present(m, "resolution", p.resolution, "a cell side in metres, > 0");
   read_if_present(m, "width", p.size_x, "the window's side along x in metres, > 0");

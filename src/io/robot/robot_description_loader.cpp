@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 
+#include "description_bounds.hpp"
 #include "joint_tree.hpp"
 #include "origin_angles.hpp"
 #include "package_locator.hpp"
@@ -132,6 +133,8 @@ model::CollisionShape shape_of(const urdf::Collision& collision, const std::stri
       const auto& box = static_cast<const urdf::Box&>(geometry);
       shape.kind = model::CollisionShape::Kind::box;
       shape.size = model::Vec3(box.dim.x, box.dim.y, box.dim.z);
+      require_positive_size(shape.size, where, "collision.geometry.box.size",
+                            "three positive sizes in metres, e.g. \"0.4 0.3 0.2\"");
       break;
     }
     case urdf::Geometry::CYLINDER: {
@@ -139,11 +142,16 @@ model::CollisionShape shape_of(const urdf::Collision& collision, const std::stri
       shape.kind = model::CollisionShape::Kind::cylinder;
       shape.radius = cylinder.radius;
       shape.length = cylinder.length;
+      require_positive_size(model::Vec3(shape.radius, shape.length, 1.0), where,
+                            "collision.geometry.cylinder (radius, length)",
+                            "a positive radius and length in metres");
       break;
     }
     case urdf::Geometry::SPHERE:
       shape.kind = model::CollisionShape::Kind::sphere;
       shape.radius = static_cast<const urdf::Sphere&>(geometry).radius;
+      require_positive_size(model::Vec3(shape.radius, 1.0, 1.0), where,
+                            "collision.geometry.sphere.radius", "a positive radius in metres");
       break;
     case urdf::Geometry::MESH: {
       const auto& mesh = static_cast<const urdf::Mesh&>(geometry);
@@ -160,9 +168,21 @@ model::CollisionShape shape_of(const urdf::Collision& collision, const std::stri
       if (fs::path(shape.mesh_file).is_relative()) {
         shape.mesh_file = (fs::path(request.path).parent_path() / shape.mesh_file).string();
       }
+      const model::Vec3 scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
+      // A negative component mirrors (Gazebo and RViz accept it); zero flattens the body.
+      require_positive_size(scale.cwiseAbs(), where, "collision.geometry.mesh.scale",
+                            "three non-zero factors, e.g. \"0.001 0.001 0.001\" for mm");
       if (request.load_meshes) {
+        std::error_code error;
+        const std::uintmax_t bytes = fs::file_size(shape.mesh_file, error);
+        if (!error && bytes > kMaxMeshFileBytes) {
+          throw model::InputError(model::Diagnostic{
+              where, "collision.geometry.mesh.filename",
+              "'" + shape.mesh_file + "' is " + std::to_string(bytes >> 20) + " MiB",
+              "a collision mesh of at most 64 MiB (decimate it: collision meshes need few "
+              "triangles)"});
+        }
         shape.mesh = load_mesh_with_assimp(shape.mesh_file, where);
-        const model::Vec3 scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
         for (model::Vec3& v : shape.mesh.vertices) v = v.cwiseProduct(scale);
       }
       break;
@@ -183,6 +203,14 @@ bool is_xacro_file(const std::string& path) {
 }
 
 model::RobotDescription load_robot_description(const RobotDescriptionRequest& request) {
+  std::error_code error;
+  if (fs::exists(request.path, error) && !fs::is_regular_file(request.path, error)) {
+    // A FIFO or a device would block the reader forever.
+    throw model::InputError(model::Diagnostic{
+        request.named_at, request.field,
+        "'" + request.path + "' is not a regular file (a folder, FIFO or device)",
+        "a .urdf or .urdf.xacro file"});
+  }
   const PackageLocator packages(request.package_paths);
   // Only the built-in expander says which variables it read; ROS's xacro is not asked.
   std::set<std::string> environment_read;
@@ -227,8 +255,17 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
   description.joint_where = joint_places(tree);
   std::vector<urdf::LinkSharedPtr> links;
   urdf_model->getLinks(links);
+  std::size_t triangles = 0;
   for (const urdf::LinkSharedPtr& link : links) {
     const model::Pose3 T_root_link = pose_in_root(link);
+    if (link->parent_joint) {
+      const auto joint = description.joint_where.find(link->parent_joint->name);
+      require_position_in_bounds(
+          T_root_link.translation(),
+          joint != description.joint_where.end() ? joint->second
+                                                 : model::SourceLocation{request.path, 0, 0},
+          "joint '" + link->parent_joint->name + "' origin");
+    }
     description.T_root_link[link->name] = T_root_link;
     const auto place = places.find(link->name);
     if (place != places.end()) description.link_where[link->name] = place->second.link;
@@ -242,6 +279,16 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
               : model::SourceLocation{request.path, 0, 0};
       description.collisions.push_back(
           shape_of(*collision, link->name, T_root_link, where, request, packages));
+      require_position_in_bounds(description.collisions.back().T_root_shape.translation(), where,
+                                 "collision origin");
+      triangles += description.collisions.back().mesh.triangles.size();
+      if (triangles > kMaxDescriptionTriangles) {
+        throw model::InputError(model::Diagnostic{
+            where, "collision.geometry.mesh",
+            "the description's meshes hold more than " +
+                std::to_string(kMaxDescriptionTriangles) + " triangles",
+            "at most 2e6 triangles in all (decimate the collision meshes)"});
+      }
     }
   }
   // After the meshes, so that their package:// lookups count too.

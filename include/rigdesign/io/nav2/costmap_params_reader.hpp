@@ -40,6 +40,8 @@ struct CostmapParamsFile {
   /// A layer whose plugin class neither nav2 nor spatio_temporal_voxel_layer exports (paper
   /// 1's Hit Layer among them): nav2 would fail to configure unless the user built it.
   std::vector<model::Diagnostic> warnings;
+  /// Where the window's size is written (width, else height, else the parameter block).
+  model::SourceLocation window_where;
 };
 
 /// Throws InputError naming file:line:col, the key's path and the expected form for a missing
