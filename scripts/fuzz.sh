@@ -15,7 +15,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build/fuzz"
 own_targets=(rig_yaml sensors_yaml requirements_yaml catalog_yaml policy_yaml scene_yaml
   pipeline_yaml costmap_params_yaml filtering_loads_yaml artifacts_json cloud_pcd cloud_ply
-  mesh_obj mesh_off mesh_ply robot_urdf robot_xacro rssi_csv co2_csv emitter_truth_csv walls_csv
+  mesh_obj mesh_off mesh_ply robot_urdf robot_xacro export_writers rssi_csv co2_csv
+  emitter_truth_csv walls_csv
   map_pgm)
 # Formats parsed by assimp: rigdesign only checks what comes out. assimp 5.2's own parsers
 # allocate without bound on some corrupt COLLADA files (docs/fuzzing.md), so these run in
@@ -60,7 +61,7 @@ dictionary_of() {
     mesh_obj) echo obj ;;
     mesh_off) echo off ;;
     mesh_stl) echo stl ;;
-    mesh_dae | robot_urdf | robot_xacro) echo xml ;;
+    mesh_dae | robot_urdf | robot_xacro | export_writers) echo xml ;;
     *_csv) echo csv ;;
     map_pgm) echo pgm ;;
   esac

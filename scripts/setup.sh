@@ -17,6 +17,7 @@ packages=(
   libtinyxml2-dev                        # xacro robot descriptions, parsed with line numbers
   libassimp-dev                          # collision meshes of robot descriptions (STL, COLLADA, OBJ)
   python3                                # an independent XML parser for the JUnit test; fuzz seeds
+  python3-yaml                           # an independent YAML parser for the exported files (tests)
   clang libclang-rt-14-dev               # libFuzzer and its runtime for the fuzz targets (fuzz/)
   llvm                                   # llvm-symbolizer: readable stacks in fuzz findings
   libbenchmark-dev                       # Google Benchmark for scripts/bench.sh

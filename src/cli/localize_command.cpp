@@ -265,7 +265,14 @@ void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
   app->add_option("--walls", options.walls,
                   "Wall map CSV (x1,y1,x2,y2,attenuation_db) the range fit models");
   app->add_option("--prefer-side", options.prefer_side,
-                  "List ambiguous hypotheses on this side of the path first: left or right");
+                  "List ambiguous hypotheses on this side of the path first: left or right")
+      ->check(
+          [](const std::string& side) {
+            return side == "left" || side == "right"
+                       ? std::string()
+                       : "is '" + side + "' (expected left or right)";
+          },
+          "left or right");
 }
 
 // The KPIs, the synthetic scenarios' radio and the CO2 detection.

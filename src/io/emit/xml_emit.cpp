@@ -19,11 +19,16 @@ std::string xml_comment_lines(const std::string& text, const std::string& indent
 }
 
 std::string xml_comment_line(const std::string& text) {
-  std::string line = text;
-  std::replace(line.begin(), line.end(), '\n', ' ');
+  // XML 1.0 allows no control character but tab and line breaks, even in comments.
+  std::string line;
+  for (const char c : model::utf8_repaired(text)) {
+    const auto byte = static_cast<unsigned char>(c);
+    line += c == '\n' || c == '\r' ? ' ' : (byte < 0x20 && c != '\t') || byte == 0x7f ? '?' : c;
+  }
   for (std::size_t at = line.find("--"); at != std::string::npos; at = line.find("--", at)) {
     line.replace(at, 2, "- -");
   }
+  if (!line.empty() && line.back() == '-') line += ' ';  // "--->" would close it wrongly
   return line;
 }
 

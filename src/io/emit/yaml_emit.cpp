@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdio>
 #include <sstream>
 #include <string_view>
 
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/xml_text.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -34,8 +36,21 @@ bool plain_safe(const std::string& text) {
 }  // namespace
 
 std::string yaml_comment(const std::string& text, const std::string& indent) {
+  // YAML breaks lines at CR as at LF, and allows no other control character anywhere: a
+  // CR in a rig's name would end the comment and start a key.
+  std::string printable;
+  for (const char c : model::utf8_repaired(text)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\r') {
+      printable += '\n';
+    } else if (c == '\n' || c == '\t' || (byte >= 0x20 && byte != 0x7f)) {
+      printable += c;
+    } else {
+      printable += '?';
+    }
+  }
   std::string out;
-  std::istringstream lines(text);
+  std::istringstream lines(printable);
   for (std::string line; std::getline(lines, line);) out += indent + "# " + line + '\n';
   return out;
 }
@@ -46,9 +61,20 @@ std::string yaml_scalar(const std::string& text) {
 
 std::string yaml_quoted(const std::string& text) {
   std::string escaped = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') escaped += '\\';
-    escaped += c;
+  for (const char c : model::utf8_repaired(text)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      escaped += '\\';
+      escaped += c;
+    } else if (c == '\n') {
+      escaped += "\\n";  // a raw line break would be folded into a space
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char code[5];
+      std::snprintf(code, sizeof code, "\\x%02x", byte);
+      escaped += code;
+    } else {
+      escaped += c;
+    }
   }
   return escaped + "\"";
 }

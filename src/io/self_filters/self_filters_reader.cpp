@@ -121,19 +121,19 @@ void read_laser_filter(MapReader& entry, const std::string& mount, const model::
     if (!lower || !upper) return;
     const bool in_place = type.ends_with("InPlace");
     std::vector<model::AzimuthBand>& bands = filter.limits.excluded_azimuths;
-    if (in_place) {  // drops (lower, upper); lower > upper wraps through +-pi
-      if (*lower < *upper)
-        bands.push_back({*lower, *upper});
-      else {
-        bands.push_back({*lower, kPi});
-        bands.push_back({-kPi, *upper});
-      }
+    if (in_place) {
+      // laser_filters' in-place filter drops the rays strictly between lower and upper, with
+      // no wrap through +-pi (angular_bounds_filter_in_place.h, ros2 branch): lower >= upper
+      // drops nothing.
+      if (*lower < *upper) bands.push_back({*lower, *upper});
     } else {  // keeps [lower, upper], drops the rest
       if (*lower > -kPi) bands.push_back({-kPi, *lower});
       if (*upper < kPi) bands.push_back({*upper, kPi});
     }
     filter.setting.what =
-        label + (in_place ? " drops " : " keeps only ") + band_text(*lower, *upper);
+        label + (in_place ? (bands.empty() ? " drops nothing (lower >= upper) " : " drops ")
+                          : " keeps only ") +
+        band_text(*lower, *upper);
   } else if (type == "laser_filters/LaserScanRangeFilter") {
     if (!params) return;
     const auto lower = params->number("lower_threshold", Need::optional, kMetres);
