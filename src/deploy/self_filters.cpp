@@ -118,12 +118,4 @@ std::vector<SelfFilter> self_filters(const model::Rig& rig, const model::SensorL
   return filters;
 }
 
-std::string self_filtered_topic(const std::string& raw) {
-  return raw + "_self_filtered";
-}
-
-std::string crop_box_topic(const std::string& raw, std::size_t k, std::size_t n) {
-  return k >= n ? self_filtered_topic(raw) : raw + "_self_filter_" + std::to_string(k);
-}
-
 }  // namespace rigdesign::deploy
