@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cstdlib>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -20,7 +21,7 @@
 namespace {
 
 // Characters that break formats written raw; free text (the header) also takes every byte.
-constexpr char kHostile[] = "ab_/\"'<>&-#: {}[],*!%@`|\\$.?=";
+constexpr char kHostile[] = "ab_/\"'<>&-#:{}()[],*!%@`|\\$.?=";
 
 struct Bytes {
   const std::uint8_t* data;
@@ -51,11 +52,31 @@ struct Bytes {
   std::abort();
 }
 
+// What xacro reads from attribute text: a run of two or more '$' before '{' or '(' loses one
+// '$' (xacro's DOLLAR_DOLLAR_BRACE token); a single '$' there starts an expression, which a
+// name the writer copies must never become.
+std::optional<std::string> xacro_unescaped(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (text[i] != '$') {
+      out += text[i++];
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && text[end] == '$') ++end;
+    const bool brace = end < text.size() && (text[end] == '{' || text[end] == '(');
+    if (brace && end - i == 1) return std::nullopt;
+    out.append(brace ? end - i - 1 : end - i, '$');
+    i = end;
+  }
+  return out;
+}
+
 void check_xacro(const std::string& text, const rigdesign::deploy::SensorFrames& frames) {
   tinyxml2::XMLDocument document;
   if (document.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
     finding(std::string("sensors.urdf.xacro does not parse: ") + document.ErrorStr());
-  std::set<std::string> children, parents;
+  std::set<std::string> children;
   std::vector<const tinyxml2::XMLElement*> stack = {document.RootElement()};
   while (!stack.empty()) {
     const tinyxml2::XMLElement* element = stack.back();
@@ -63,9 +84,13 @@ void check_xacro(const std::string& text, const rigdesign::deploy::SensorFrames&
     if (!element) continue;
     if (std::string(element->Name()) == "joint") {
       const tinyxml2::XMLElement* child = element->FirstChildElement("child");
-      const tinyxml2::XMLElement* parent = element->FirstChildElement("parent");
-      if (child && child->Attribute("link")) children.insert(child->Attribute("link"));
-      if (parent && parent->Attribute("link")) parents.insert(parent->Attribute("link"));
+      if (child && child->Attribute("link")) {
+        std::string link = child->Attribute("link");
+        if (link.rfind("${prefix}", 0) == 0) link = link.substr(9);
+        const auto read = xacro_unescaped(link);
+        if (!read) finding("a link name became a xacro expression: " + link);
+        children.insert(*read);
+      }
     }
     for (const tinyxml2::XMLElement* c = element->FirstChildElement(); c; c = c->NextSiblingElement())
       stack.push_back(c);
@@ -73,8 +98,16 @@ void check_xacro(const std::string& text, const rigdesign::deploy::SensorFrames&
   for (const rigdesign::deploy::SensorFrame& frame : frames.frames) {
     if (!children.count(frame.link)) finding("the link '" + frame.link + "' did not come back");
   }
-  if (!frames.frames.empty() && !parents.count(frames.parent))
-    finding("the parent '" + frames.parent + "' did not come back");
+  // Joints hang from ${parent}, whose default the params attribute states.
+  const tinyxml2::XMLElement* macro = document.RootElement()->FirstChildElement("xacro:macro");
+  const char* params = macro ? macro->Attribute("params") : nullptr;
+  const std::string stated = params ? params : "";
+  const std::size_t space = stated.find(' ');
+  const auto parent = stated.rfind("parent:=", 0) == 0 && space != std::string::npos
+                          ? xacro_unescaped(stated.substr(8, space - 8))
+                          : std::nullopt;
+  if (!parent || *parent != frames.parent)
+    finding("the parent '" + frames.parent + "' did not come back: " + stated);
 }
 
 void check_nav2(const std::string& text, const rigdesign::deploy::CostmapConfig& config) {
@@ -147,7 +180,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     filters.push_back(filter);
   }
-  check_xacro(io::sensors_xacro_text(frames, header), frames);
+  try {
+    check_xacro(io::sensors_xacro_text(frames, header), frames);
+  } catch (const model::InputError& error) {  // a parent with a space: refused, with a message
+    fuzz::require_clear_message(error);
+  }
   check_nav2(io::nav2_costmap_text(config, header), config);
   check_filters(io::self_filters_text(filters, config.robot_base_frame, model::Pose3::Identity(),
                                       header),

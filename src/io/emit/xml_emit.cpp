@@ -11,6 +11,22 @@ std::string xml_attribute(const std::string& text) {
   return model::xml_escaped(text);
 }
 
+std::string xacro_literal(const std::string& text) {
+  std::string literal;
+  for (std::size_t i = 0; i < text.size();) {
+    if (text[i] != '$') {
+      literal += text[i++];
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && text[end] == '$') ++end;
+    literal.append(text, i, end - i);
+    if (end < text.size() && (text[end] == '{' || text[end] == '(')) literal += '$';
+    i = end;
+  }
+  return xml_attribute(literal);
+}
+
 std::string xml_comment_lines(const std::string& text, const std::string& indent) {
   std::string out;
   std::istringstream lines(text);

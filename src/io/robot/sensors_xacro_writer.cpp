@@ -5,6 +5,7 @@
 
 #include "io/emit/xml_emit.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/optical_frame.hpp"
 #include "rigdesign/model/rotation.hpp"
 
@@ -23,6 +24,15 @@ std::string triple(const model::Vec3& v) {
 }  // namespace
 
 std::string sensors_xacro_text(const deploy::SensorFrames& frames, const std::string& header) {
+  // The parent is a default in the macro's whitespace-separated params.
+  if (frames.parent.empty() ||
+      frames.parent.find_first_of(" \t\r\n") != std::string::npos ||
+      frames.parent.find(":=") != std::string::npos) {
+    throw model::InputError(model::Diagnostic{
+        {"(command line)", 0, 0}, "--parent",
+        "'" + frames.parent + "' cannot be the macro's default parent (a space or ':=' in it)",
+        "a link name without spaces, e.g. base_link"});
+  }
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n<!--\n";
   out << xml_comment_lines(header, "  ");
@@ -37,7 +47,7 @@ std::string sensors_xacro_text(const deploy::SensorFrames& frames, const std::st
          "  y down, REP-103). `prefix` goes before every added name, not the description's.\n"
          "-->\n";
   out << "<robot xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n";
-  out << "  <xacro:macro name=\"rig_sensors\" params=\"parent:=" << xml_attribute(frames.parent)
+  out << "  <xacro:macro name=\"rig_sensors\" params=\"parent:=" << xacro_literal(frames.parent)
       << " prefix:=${''}\">\n";
   for (const deploy::SensorFrame& frame : frames.frames) {
     out << "    <!-- "
@@ -46,12 +56,12 @@ std::string sensors_xacro_text(const deploy::SensorFrames& frames, const std::st
                                                  : std::string()))
         << " -->\n";
     // A link the description has is neither written again nor prefixed.
-    const std::string link = frame.joint.empty() ? xml_attribute(frame.link)
-                                                 : "${prefix}" + xml_attribute(frame.link);
+    const std::string link = frame.joint.empty() ? xacro_literal(frame.link)
+                                                 : "${prefix}" + xacro_literal(frame.link);
     if (!frame.joint.empty()) {
       const model::Vec3 rpy = model::rpy_from_rotation(frame.T_parent_link.linear());
       out << "    <link name=\"" << link << "\"/>\n";
-      out << "    <joint name=\"${prefix}" << xml_attribute(frame.joint) << "\" type=\"fixed\">\n";
+      out << "    <joint name=\"${prefix}" << xacro_literal(frame.joint) << "\" type=\"fixed\">\n";
       out << "      <parent link=\"${parent}\"/>\n";
       out << "      <child link=\"" << link << "\"/>\n";
       out << "      <origin xyz=\"" << triple(frame.T_parent_link.translation()) << "\" rpy=\""
@@ -60,11 +70,11 @@ std::string sensors_xacro_text(const deploy::SensorFrames& frames, const std::st
     }
     if (frame.optical_frame && !frame.optical_joint.empty()) {
       const model::Vec3 optical = model::rpy_from_rotation(model::T_sensor_optical().linear());
-      out << "    <link name=\"${prefix}" << xml_attribute(*frame.optical_frame) << "\"/>\n";
-      out << "    <joint name=\"${prefix}" << xml_attribute(frame.optical_joint)
+      out << "    <link name=\"${prefix}" << xacro_literal(*frame.optical_frame) << "\"/>\n";
+      out << "    <joint name=\"${prefix}" << xacro_literal(frame.optical_joint)
           << "\" type=\"fixed\">\n";
       out << "      <parent link=\"" << link << "\"/>\n";
-      out << "      <child link=\"${prefix}" << xml_attribute(*frame.optical_frame) << "\"/>\n";
+      out << "      <child link=\"${prefix}" << xacro_literal(*frame.optical_frame) << "\"/>\n";
       out << "      <origin xyz=\"0 0 0\" rpy=\"" << triple(optical) << "\"/>\n";
       out << "    </joint>\n";
     }
