@@ -124,11 +124,11 @@ model::Catalog load_catalog(const std::string& path) {
                 "links with <collision> elements, or a `body` (radius or footprint, height)");
   }
   if (top.has("area_height")) {
-    catalog.body.area_height = io::positive(top, "area_height", Need::required,
+    catalog.body.area_height = io::positive_length(top, "area_height", Need::required,
                                             "the top of the area to perceive in metres, > 0");
   }
   catalog.distance_of_interest =
-      io::positive(top, "distance_of_interest", Need::required,
+      io::positive_length(top, "distance_of_interest", Need::required,
                    "the distance of interest d in metres, > body radius");
   if (catalog.distance_of_interest > 0 && catalog.body.radius > 0) {
     top.require(catalog.distance_of_interest > catalog.body.radius, "distance_of_interest",

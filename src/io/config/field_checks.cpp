@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
@@ -32,6 +33,16 @@ double positive(MapReader& reader, const std::string& key, Need need, const std:
   if (!value) return 0.0;
   reader.require(*value > 0, key, "must be > 0, got " + model::format_number(*value), expected);
   return *value;
+}
+
+double positive_length(MapReader& reader, const std::string& key, Need need,
+                       const std::string& expected) {
+  const double value = positive(reader, key, need, expected);
+  if (value > model::kMaxCoordinate) {
+    reader.require(false, key, "is " + model::format_number(value) + " m, beyond 1e8 m", expected);
+    return 0.0;
+  }
+  return value;
 }
 
 double non_negative(MapReader& reader, const std::string& key, Need need,
@@ -118,6 +129,8 @@ model::Pose3 xyz_rpy_deg_pose(MapReader& pose, Need xyz_need) {
                                 "[roll, pitch, yaw] in degrees, finite (default [0, 0, 0])");
   const model::Vec3 position =
       xyz ? model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]) : model::Vec3::Zero();
+  pose.require(position.cwiseAbs().maxCoeff() <= model::kMaxCoordinate, "xyz",
+               "places the sensor beyond +-1e8 m", metres + ", within +-1e8 m");
   if (rpy) warn_if_radians(pose, "rpy_deg", *rpy);
   model::Vec3 angles = model::Vec3::Zero();
   if (rpy) {

@@ -21,6 +21,10 @@ void read_if_present(MapReader& reader, const std::string& key, int& value,
 void read_if_present(MapReader& reader, const std::string& key, bool& value);
 
 double positive(MapReader& reader, const std::string& key, Need need, const std::string& expected);
+/// A length in metres: positive and within the +-1e8 m every coordinate keeps (a body of
+/// 1e300 m would overflow every area computed with it). 0 after recording an error.
+double positive_length(MapReader& reader, const std::string& key, Need need,
+                       const std::string& expected);
 /// A number >= 0.
 double non_negative(MapReader& reader, const std::string& key, Need need,
                     const std::string& expected);

@@ -10,6 +10,7 @@
 #include "rigdesign/io/robot/robot_description_loader.hpp"
 #include "rigdesign/io/robot/xacro_environment.hpp"
 #include "rigdesign/model/closest_name.hpp"
+#include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/optical_frame.hpp"
@@ -46,6 +47,12 @@ std::vector<model::Vec2> read_footprint(MapReader& body) {
     footprint.emplace_back(x.value_or(0.0), y.value_or(0.0));
   }
   if (!all_valid) return {};
+  for (const model::Vec2& vertex : footprint) {
+    if (vertex.cwiseAbs().maxCoeff() > model::kMaxCoordinate) {
+      body.require(false, "footprint", "has a vertex beyond +-1e8 m", expected);
+      return {};
+    }
+  }
   const double area = model::signed_area(footprint);
   body.require(std::abs(area) > 1e-9, "footprint", "encloses no area",
                "vertices of a simple polygon around the robot's vertical axis");
@@ -57,7 +64,7 @@ std::vector<model::Vec2> read_footprint(MapReader& body) {
 
 model::RobotBody read_body(MapReader& body) {
   model::RobotBody result;
-  result.height = io::positive(body, "height", Need::required, "the body height h in metres, > 0");
+  result.height = io::positive_length(body, "height", Need::required, "the body height h in metres, > 0");
   const bool has_radius = body.has("radius");
   const bool has_footprint = body.has("footprint");
   body.require(has_radius != has_footprint, "radius",
@@ -65,7 +72,7 @@ model::RobotBody read_body(MapReader& body) {
                "either radius (a cylinder) or footprint (a prism), in metres");
   if (has_radius) {
     result.radius =
-        io::positive(body, "radius", Need::required, "the body radius r in metres, > 0");
+        io::positive_length(body, "radius", Need::required, "the body radius r in metres, > 0");
   } else if (has_footprint) {
     result.footprint = read_footprint(body);
     for (const model::Vec2& vertex : result.footprint)

@@ -146,7 +146,7 @@ model::Requirements load_requirements(const std::string& path) {
   }
   if (top.has("area_height")) {
     requirements.area_height_where = top.location("area_height");
-    requirements.area_height = io::positive(top, "area_height", Need::required,
+    requirements.area_height = io::positive_length(top, "area_height", Need::required,
                                             "the top of the area to perceive in metres, > 0");
   }
   std::set<std::string> sector_names;

@@ -36,7 +36,7 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
   }
   if (reader.has("distance_of_interest")) {
     mount.distance_of_interest =
-        io::positive(reader, "distance_of_interest", Need::required, "metres, > 0");
+        io::positive_length(reader, "distance_of_interest", Need::required, "metres, > 0");
   }
   if (auto ros = reader.map("ros", Need::optional, "a map with namespace, topic, frame")) {
     if (ros->has("namespace"))
@@ -90,10 +90,10 @@ model::Rig load_rig(const std::string& path) {
                 "links with <collision> elements, or a `body` (radius or footprint, height)");
   }
   if (top.has("area_height")) {
-    rig.body.area_height = io::positive(top, "area_height", Need::required,
+    rig.body.area_height = io::positive_length(top, "area_height", Need::required,
                                         "the top of the area to perceive in metres, > 0");
   }
-  rig.distance_of_interest = io::positive(top, "distance_of_interest", Need::required,
+  rig.distance_of_interest = io::positive_length(top, "distance_of_interest", Need::required,
                                           "the distance of interest d in metres, > body radius");
   if (rig.distance_of_interest > 0 && rig.body.radius > 0) {
     top.require(rig.distance_of_interest > rig.body.radius, "distance_of_interest",
