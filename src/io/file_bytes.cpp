@@ -23,6 +23,9 @@ std::string read_file_bytes(const std::string& path, const std::string& expected
   std::error_code ignored;
   const fs::file_status status = fs::status(path, ignored);
   if (fs::is_directory(status)) fail("is a folder");
+  // A device never ends (/dev/zero) or never answers; a pipe (process substitution) is read.
+  if (fs::is_character_file(status) || fs::is_block_file(status) || fs::is_socket(status))
+    fail("is a device or socket, not a file");
   std::ifstream stream(path, std::ios::binary);
   if (!stream) fail(std::string("cannot be opened: ") + std::strerror(errno));
   std::string bytes;

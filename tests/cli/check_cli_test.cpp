@@ -167,3 +167,9 @@ TEST_CASE("check --format github annotates the rig's line with the failed requir
   // One annotation: the only failure.
   CHECK(result.out.find("::error") == result.out.rfind("::error"));
 }
+
+TEST_CASE("check on a device (/dev/zero) is refused at once instead of read without end") {
+  const CliResult result = run_cli({"check", "/dev/zero"});
+  CHECK(result.exit_code == 2);
+  CHECK((result.out + result.err).find("/dev/zero: file: is a device") != std::string::npos);
+}
