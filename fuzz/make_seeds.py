@@ -160,6 +160,22 @@ def other_seeds():
         b' <xacro:if value="$(arg tall)"><link name="tower"/></xacro:if>\n'
         b' <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_link"/>'
         b'</joint>\n</robot>\n')
+    # Descriptions near the expansion limits (reliability reproducers 01, 03, 04): small
+    # inputs whose expansion is large, so the fuzzer mutates around the bounds.
+    head = b'<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+    yield "robot_xacro", "self_block.urdf.xacro", (
+        head + b' <xacro:property name="b"><xacro:insert_block name="b"/></xacro:property>\n'
+        b' <link name="base_link"/>\n <xacro:insert_block name="b"/>\n</robot>\n')
+    doubling = b''.join(b' <xacro:property name="p%d" value="${p%d}${p%d}"/>\n' % (k, k - 1, k - 1)
+                        for k in range(1, 24))
+    yield "robot_xacro", "doubling.urdf.xacro", (
+        head + b' <xacro:property name="p0" value="aaaaaaaaaaaaaaaa"/>\n' + doubling +
+        b' <link name="base_link"><visual><material name="${p23}"/></visual></link>\n</robot>\n')
+    macros = b''.join(b' <xacro:macro name="m%d" params=""><xacro:m%d/><xacro:m%d/></xacro:macro>\n'
+                      % (k, k - 1, k - 1) for k in range(1, 20))
+    yield "robot_xacro", "macro_doubling.urdf.xacro", (
+        head + b' <xacro:macro name="m0" params=""><link name="x"/></xacro:macro>\n' + macros +
+        b' <link name="base_link"/>\n <xacro:m19/>\n</robot>\n')
 
 
 def main():
