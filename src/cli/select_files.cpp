@@ -31,13 +31,12 @@ namespace {
 constexpr int kPitch = 4;  // "pitch" in model::kPoseAxisNames
 constexpr int kMarginSamples = 41;
 
-// The rig file names its sensor library relative to itself and the requirements beside it.
+// The rig file names its sensor library (absolute unless it lies in the folder) and the
+// requirements beside it.
 std::string write_chosen_rig(const SelectReport& report, const model::SensorLibrary& library,
                              const select::Selection& selection, const std::string& folder) {
-  const std::string library_from_folder = std::filesystem::absolute(library.file)
-                                              .lexically_normal()
-                                              .lexically_relative(std::filesystem::absolute(folder))
-                                              .string();
+  // The staging folder becomes the output folder: a library outside it is named absolute.
+  const std::string library_from_folder = io::path_seen_from(library.file, folder);
   const select::CostBreakdown& cost = selection.cost;
   const std::string rig_file = folder + "/chosen_rig.yaml";
   io::write_file_atomically(

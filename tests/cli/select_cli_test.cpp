@@ -200,3 +200,45 @@ TEST_CASE("select --out writes the chosen rig's report page with the relaxation 
   CHECK(page.find("realsense_d435") != std::string::npos);
   CHECK(page.find("onboard") != std::string::npos);       // the transfer item
 }
+
+TEST_CASE("the chosen rig still checks after its folder moves (issue 32 item 4)") {
+  SmallSetup setup;
+  const CliResult result = setup.select("100000");
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  std::ifstream written(setup.folder.path() + "/out/chosen_rig.yaml");
+  std::stringstream text;
+  text << written.rdbuf();
+  // The library lies outside the output folder: named by its absolute path, not by a
+  // relative one climbing out of the folder.
+  CHECK(text.str().find("sensor_library: \"" + source_path("sensors.yaml") + "\"") !=
+        std::string::npos);
+  const std::string moved = setup.folder.path() + "/elsewhere/two/levels";
+  std::filesystem::create_directories(moved);
+  std::filesystem::rename(setup.folder.path() + "/out", moved + "/out");
+  const CliResult check = run_cli({"check", moved + "/out/chosen_rig.yaml"});
+  INFO(check.out << check.err);
+  CHECK(check.exit_code == 0);
+}
+
+TEST_CASE("refinement lists only the moves that change a value (issue 32 item 4)") {
+  TempFolder folder;
+  const CliResult result =
+      run_cli({"select", "--catalog", source_path("rigs/catalogs/ur_cleaner_pose_ranges.yaml"),
+               "--requirements", source_path("rigs/requirements/ur_cleaner.yaml"), "--budget",
+               "10000", "--no-renders", "--out", folder.path() + "/out"});
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  const std::size_t line = result.out.find("refined poses: ");
+  REQUIRE(line != std::string::npos);
+  std::string refined = result.out.substr(line, result.out.find('\n', line) - line);
+  refined = refined.substr(0, refined.find("; smallest margin"));  // the moves, not the margin
+  // A move "a -> a" would repeat the value on both sides of the arrow.
+  for (std::size_t arrow = refined.find(" -> "); arrow != std::string::npos;
+       arrow = refined.find(" -> ", arrow + 4)) {
+    const std::size_t from = refined.rfind(' ', refined.rfind(' ', arrow - 1) - 1) + 1;
+    const std::string before = refined.substr(from, arrow - from);
+    const std::string after = refined.substr(arrow + 4, before.size());
+    CHECK(before != after);
+  }
+}

@@ -1,7 +1,9 @@
 #include "rigdesign/model/rotation.hpp"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 
+#include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
 using namespace rigdesign;
@@ -51,4 +53,13 @@ TEST_CASE("rpy_from_rotation inverts rotation_from_rpy") {
       model::rotation_from_rpy(0, model::deg_to_rad(90), model::deg_to_rad(30));
   const model::Vec3 back = model::rpy_from_rotation(gimbal);
   CHECK(model::rotation_from_rpy(back.x(), back.y(), back.z()).isApprox(gimbal, 1e-9));
+}
+
+TEST_CASE("a negative zero (a rotation's rounding) prints as 0, other numbers keep their sign") {
+  const double negative_zero = -0.0;
+  CHECK(std::signbit(negative_zero));
+  CHECK(model::format_number(negative_zero) == "0");
+  CHECK(model::exact_number(negative_zero) == "0");
+  CHECK(model::format_number(-1e-20, 3) == "-1e-20");
+  CHECK(model::exact_number(-0.5) == "-0.5");
 }

@@ -51,11 +51,16 @@ std::string describe(const select::SatisficingTargets& targets) {
 }
 
 std::string describe(const select::PoseRefinement& refinement) {
+  // Only moves that change the value as printed: "pitch 10 deg -> 10 deg" is no move.
   std::string moves;
   for (const select::RefinedAxis& axis : refinement.axes) {
+    const std::string from = axis_value(axis.axis, axis.grid);
+    const std::string to = axis_value(axis.axis, axis.refined);
+    if (from == to) continue;
     moves += (moves.empty() ? "" : ", ") + axis.mount + " " + model::kPoseAxisNames[axis.axis] +
-             " " + axis_value(axis.axis, axis.grid) + " -> " + axis_value(axis.axis, axis.refined);
+             " " + from + " -> " + to;
   }
+  if (moves.empty()) moves = "no pose moved";
   std::string verdict = refinement.accepted
                             ? "confirmed on the exact path: the rig written uses these poses"
                         : refinement.refined_margin > refinement.grid_margin

@@ -36,12 +36,6 @@ void write_body(std::ostringstream& out, const model::RobotBody& body) {
 }
 
 // `path` as seen from `folder`.
-std::string relative_to(const std::string& path, const std::string& folder) {
-  return std::filesystem::absolute(path)
-      .lexically_normal()
-      .lexically_relative(std::filesystem::absolute(folder).lexically_normal())
-      .string();
-}
 
 void write_text_map(std::ostringstream& out, const char* key,
                     const std::map<std::string, std::string>& values) {
@@ -59,17 +53,17 @@ void write_text_map(std::ostringstream& out, const char* key,
 void write_robot(std::ostringstream& out, const model::RobotSource& robot,
                  const std::string& folder) {
   if (robot.poses_only) {
-    out << "urdf:\n  file: " << yaml_quoted(relative_to(robot.description, folder)) << '\n';
+    out << "urdf:\n  file: " << yaml_quoted(path_seen_from(robot.description, folder)) << '\n';
     if (!robot.base_link.empty()) out << "  base_link: " << yaml_quoted(robot.base_link) << '\n';
     return;
   }
-  out << "robot:\n  description: " << yaml_quoted(relative_to(robot.description, folder)) << '\n';
+  out << "robot:\n  description: " << yaml_quoted(path_seen_from(robot.description, folder)) << '\n';
   write_text_map(out, "args", robot.args);
   write_text_map(out, "env", robot.environment);
   if (!robot.package_paths.empty()) {
     out << "  package_paths: [";
     for (std::size_t i = 0; i < robot.package_paths.size(); ++i)
-      out << (i ? ", " : "") << yaml_quoted(relative_to(robot.package_paths[i], folder));
+      out << (i ? ", " : "") << yaml_quoted(path_seen_from(robot.package_paths[i], folder));
     out << "]\n";
   }
   if (!robot.base_link.empty()) out << "  base_link: " << yaml_quoted(robot.base_link) << '\n';
@@ -78,6 +72,14 @@ void write_robot(std::ostringstream& out, const model::RobotSource& robot,
 }
 
 }  // namespace
+
+std::string path_seen_from(const std::string& path, const std::string& folder) {
+  const std::filesystem::path absolute = std::filesystem::absolute(path).lexically_normal();
+  const std::filesystem::path inside =
+      absolute.lexically_relative(std::filesystem::absolute(folder).lexically_normal());
+  if (inside.empty() || *inside.begin() == "..") return absolute.string();
+  return inside.string();
+}
 
 std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library,
                         const std::string& requirements, const std::string& comment,

@@ -8,9 +8,14 @@
 
 namespace rigdesign::io {
 
+/// How a file written into `folder` names `path`: relative when `path` lies inside the
+/// folder (the two move together), absolute otherwise, so that moving the folder does not
+/// break the reference (a relative `../../x/sensors.yaml` would).
+std::string path_seen_from(const std::string& path, const std::string& folder);
+
 /// `sensor_library` and `requirements` are written as given (paths relative to the file);
 /// `comment` becomes the header comment, one "# " line per line. A rig with a robot
-/// description names it (and its package paths) relative to `folder`, where the file goes,
+/// description names it (and its package paths) as path_seen_from `folder`, where the file goes,
 /// with its args, env, base link and area_height; the body is then the description's, and a
 /// mount placed on a description link keeps `urdf_link`.
 std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library,
