@@ -65,6 +65,11 @@ model::RobustnessRequirement robustness_option(const std::vector<std::string>& v
                    "unknown failure '" + value + "'",
                    "n-1 (any one sensor) or a lighting condition: " +
                        model::join(model::names_of(model::kLightConditionNames)));
+    const bool repeated = condition ? robust.condition.has_value() : robust.single_failure;
+    require_option(!repeated, "--robust",
+                   condition ? "names a second lighting condition ('" + value + "')"
+                             : "gives n-1 twice",
+                   "each failure once: n-1 and at most one lighting condition");
     if (condition)
       robust.condition = *condition;
     else

@@ -155,6 +155,16 @@ TEST_CASE("select: pose range and --robust bad input is exit 2 naming the field"
     CHECK(result.exit_code == 2);
     CHECK(result.err.find("--robust") != std::string::npos);
   }
+  SECTION("--robust with the same failure twice, or two lighting conditions (issue 32)") {
+    PoseSetup setup;
+    const CliResult twice = setup.select({"--robust", "n-1", "--robust", "n-1"});
+    CHECK(twice.exit_code == 2);
+    CHECK(twice.err.find("--robust: gives n-1 twice") != std::string::npos);
+    const CliResult two = setup.select({"--robust", "dark", "--robust", "sunlight"});
+    CHECK(two.exit_code == 2);
+    CHECK(two.err.find("--robust: names a second lighting condition ('sunlight')") !=
+          std::string::npos);
+  }
 }
 
 TEST_CASE("select --robust n-1 with a catalog of one slot is exit 2") {
