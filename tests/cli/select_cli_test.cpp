@@ -242,3 +242,19 @@ TEST_CASE("refinement lists only the moves that change a value (issue 32 item 4)
     CHECK(before != after);
   }
 }
+
+TEST_CASE("no rig at any cost does not blame the budget (issue 32)") {
+  SmallSetup setup;
+  // A CPU of 1e-4 cores processes no sensor of the catalog at its rate: no rig exists at any
+  // price, so a budget of 1,000,000 USD cannot be what binds.
+  std::string catalog = small_catalog();
+  const std::size_t cpus = catalog.find("cpus:");
+  REQUIRE(cpus != std::string::npos);
+  catalog = catalog.substr(0, cpus) + "cpus:\n  - {id: tiny, cores: 0.0001, price_usd: 300}\n";
+  setup.folder.write("catalog.yaml", catalog);
+  const CliResult result = setup.select("1000000");
+  INFO(result.out << result.err);
+  CHECK(result.exit_code == 1);
+  CHECK(result.out.find("budget is below every rig's cost") == std::string::npos);
+  CHECK(result.out.find("no rig exists at any cost") != std::string::npos);
+}

@@ -98,8 +98,14 @@ void print_exhausted(const SelectReport& report, const select::RelaxationIterati
         << "): " << describe(cheapest->selection, *report.catalog) << '\n';
   }
   out << "Binding requirements:\n";
-  if (report.outcome->binding.empty())
+  // The budget is named only when a rig exists above it (issue 32).
+  if (report.outcome->binding.empty() && cheapest != nullptr)
     out << "  none alone: the budget is below every rig's cost\n";
+  if (report.outcome->binding.empty() && cheapest == nullptr) {
+    out << "  none alone: no rig exists at any cost, and dropping any one requirement does not "
+           "make one (several requirements together, or a CPU or transfer capacity no catalog "
+           "entry reaches)\n";
+  }
   for (const select::BindingRequirement& item : report.outcome->binding) {
     out << "  " << item.requirement << ": without it the cheapest rig costs "
         << usd(item.cost_without) << '\n';
