@@ -4,10 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "rigdesign/geometry/cross_section.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/units.hpp"
 #include "rigdesign/select/pose_refinement.hpp"
+#include "select/search_rules.hpp"
 
 namespace rigdesign::select {
 namespace {
@@ -29,6 +32,48 @@ bool meets_alone(const CatalogOption& option, const SatisficingTargets& targets)
 bool slot_allows(const model::MountingSlot& slot, const std::string& sensor_id) {
   return std::find(slot.allowed_sensors.begin(), slot.allowed_sensors.end(), sensor_id) !=
          slot.allowed_sensors.end();
+}
+
+// Under --robust n-1 every slot's sensor may fail. If at some angle of a required sector
+// even every option of every other slot together cannot meet the sector, then no rig meets
+// it: one without that slot falls short outright, one with it after its failure (the
+// thresholds are the lower of the plain and the after-failure ones). Decided from the
+// options' rasters before the search; names the sector, the slot and the angle.
+std::optional<std::string> sector_needing_one_slot(
+    const SearchProblem& problem, const std::vector<std::vector<const CatalogOption*>>& kept,
+    const SatisficingTargets& targets, const SelectionSpace& space) {
+  const model::Catalog& catalog = space.catalog();
+  for (std::size_t i = 0; i < problem.robustness.sectors.size(); ++i) {
+    const SearchSector& after = problem.robustness.sectors[i];
+    const double min_complete = std::min(after.min_complete, problem.sectors[i].min_complete);
+    const double min_floor = std::min(after.min_floor, problem.sectors[i].min_floor);
+    if (!(min_complete > 0.0) && !(min_floor > 0.0)) continue;
+    for (std::size_t failed = 0; failed < kept.size(); ++failed) {
+      if (kept[failed].empty()) continue;
+      for (const int a : after.angles) {
+        const auto angle = static_cast<std::size_t>(a);
+        geometry::SectionRaster others((*kept[failed].front()->sections)[angle].grid());
+        for (std::size_t k = 0; k < kept.size(); ++k) {
+          if (k == failed) continue;
+          for (const CatalogOption* option : kept[k]) others |= (*option->sections)[angle];
+        }
+        if (meets(others.complete_share(), min_complete) &&
+            meets(others.floor_share(), min_floor))
+          continue;
+        const std::string slot = catalog.slots[kept[failed].front()->slot].id;
+        return "under --robust n-1 the sector '" + targets.sectors[i].name + "' needs slot '" +
+               slot + "': without it every other option together covers " +
+               model::format_number(100 * others.complete_share(), 3) + " % (floor " +
+               model::format_number(100 * others.floor_share(), 3) + " %) at " +
+               model::format_number(model::rad_to_deg(space.angle(angle)), 4) +
+               " deg, below " + model::format_number(100 * min_complete, 3) + " % (" +
+               model::format_number(100 * min_floor, 3) +
+               " %): no rig survives the failure of its sensor (a second slot that sees the "
+               "sector, or robustness.sectors with a lower threshold after a failure)";
+      }
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -261,6 +306,14 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
   }
   std::vector<std::vector<const CatalogOption*>> kept;
   const SearchProblem problem = space.problem_for(targets, kept);
+  if (problem.robustness.single_failure) {
+    if (auto reason = sector_needing_one_slot(problem, kept, targets, space)) {
+      selection.infeasible_reason = std::move(*reason);
+      selection.seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return selection;
+    }
+  }
   std::vector<std::vector<int>> excluded;
   metrics::CoverageSettings exact = space.settings();
   exact.exact = true;

@@ -258,3 +258,28 @@ TEST_CASE("no rig at any cost does not blame the budget (issue 32)") {
   CHECK(result.out.find("budget is below every rig's cost") == std::string::npos);
   CHECK(result.out.find("no rig exists at any cost") != std::string::npos);
 }
+
+TEST_CASE("select --robust n-1 with a required sector seen from one slot only: exit 1 naming "
+          "both (issue 32)") {
+  SmallSetup setup;
+  // The front camera sees the front sector; the second slot looks backwards (yaw 180 deg, a
+  // 87 deg camera): it cannot see -10..10 deg, so no rig survives the front camera's failure.
+  std::string catalog = small_catalog();
+  const std::string bumper =
+      "  - {id: bumper, pose: {xyz: [0.31, 0, 0.15]}, allows: [rplidar_a2m8]}\n";
+  const std::size_t at = catalog.find(bumper);
+  REQUIRE(at != std::string::npos);
+  catalog.replace(at, bumper.size(),
+                  "  - {id: rear, pose: {xyz: [-0.31, 0, 0.4], rpy_deg: [0, 20, 180]}, "
+                  "allows: [realsense_d435]}\n");
+  setup.folder.write("catalog.yaml", catalog);
+  const CliResult result =
+      run_cli({"select", "--catalog", setup.catalog, "--requirements", setup.requirements,
+               "--budget", "100000", "--step", "10", "--no-renders", "--robust", "n-1", "--out",
+               setup.folder.path() + "/out"});
+  INFO(result.out << result.err);
+  CHECK(result.exit_code == 1);
+  CHECK(result.out.find("the sector 'front' needs slot 'front': without it every other option "
+                        "together covers 0 %") != std::string::npos);
+  CHECK(result.out.find("budget is below") == std::string::npos);
+}
