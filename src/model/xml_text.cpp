@@ -6,9 +6,9 @@ namespace {
 
 constexpr const char* kReplacement = "\xEF\xBF\xBD";  // U+FFFD
 
-// Length of the UTF-8 sequence starting at text[i], or 0 when it is not one (overlong forms,
-// surrogates and code points above U+10FFFF included, as RFC 3629 excludes them).
-std::size_t utf8_length(const std::string& text, std::size_t i) {
+}  // namespace
+
+std::size_t utf8_sequence_length(std::string_view text, std::size_t i) {
   const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
   const unsigned char lead = byte(i);
   if (lead < 0x80) return 1;
@@ -35,13 +35,11 @@ std::size_t utf8_length(const std::string& text, std::size_t i) {
   return length;
 }
 
-}  // namespace
-
 std::string utf8_repaired(const std::string& text) {
   std::string repaired;
   repaired.reserve(text.size());
   for (std::size_t i = 0; i < text.size();) {
-    const std::size_t length = utf8_length(text, i);
+    const std::size_t length = utf8_sequence_length(text, i);
     if (length == 0) {
       repaired += kReplacement;
       ++i;
