@@ -52,6 +52,12 @@ void ProgressLine::retitle(std::string task) {
   task_ = std::move(task);
 }
 
+void ProgressLine::begin(std::string task, std::string unit) {
+  task_ = std::move(task);
+  unit_ = std::move(unit);
+  started_ = std::chrono::steady_clock::now();
+}
+
 std::string ProgressLine::line(const std::string& count, double share) const {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
@@ -65,11 +71,13 @@ std::string ProgressLine::line(const std::string& count, double share) const {
   return text;
 }
 
-void ProgressLine::update(double done, double total) {
+void ProgressLine::update(double done, double total, const std::string& detail) {
   const double share = total > 0 ? done / total : 1.0;
   if (mode_ == Mode::off) return;
-  show(model::format_number(done, 10) + "/" + model::format_number(total, 10) + " " + unit_, share,
-       done >= total);
+  // A count of whole things, though a share of the next may be done ("3/12 probes").
+  show(model::format_number(std::floor(done), 10) + "/" + model::format_number(total, 10) + " " +
+           unit_ + (detail.empty() ? "" : ", " + detail),
+       share, done >= total);
 }
 
 void ProgressLine::update_share(double share, const std::string& detail) {

@@ -18,12 +18,15 @@ class ProgressLine {
   ~ProgressLine();
 
   /// Shown at most every 0.2 s on a terminal, 5 s otherwise, and always at the end.
-  void update(double done, double total);
+  void update(double done, double total, const std::string& detail = "");
   /// For work known only as a share (a search tree's estimated fraction): `detail` stands in
   /// for the count ("5,021 nodes").
   void update_share(double share, const std::string& detail);
   /// A new stage with its own count, same line ("search of relaxation step 2/4").
   void retitle(std::string task);
+  /// A new phase: its own title and unit, and its own clock, so the time left is estimated
+  /// from this phase's rate alone.
+  void begin(std::string task, std::string unit);
   /// Erases the line on a terminal, before the command prints to standard output.
   void clear();
   bool enabled() const { return mode_ != Mode::off; }

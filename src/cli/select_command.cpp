@@ -145,32 +145,41 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
       err, "select: rasterising " + model::format_number(options_total) + " slot options", "");
   progress.update_share(0.0, "at " + model::format_number(options.step_deg) + " deg steps");
   const select::SelectionSpace space(catalog, library, settings);
-  // The relaxation loop runs at most one search per policy step, plus the first.
-  const std::size_t searches = policy.steps.size() + 1;
-  std::size_t search = 1;
-  progress.retitle("select: search 1 of at most " + std::to_string(searches));
-  const auto on_search = [&](const select::SearchProgress& at) {
-    progress.update_share(at.fraction, std::to_string(at.nodes) + " nodes, share of the tree");
+  // Every phase of every step (search, exact verification, refinement, robustness cost,
+  // binding requirements, files) shows with its own count and clock.
+  std::size_t step = 0;  // the relaxation steps shown
+  bool steps_done = false;  // then the binding-requirement probes and the files
+  std::string shown_phase;
+  const select::ProgressSink on_progress = [&](const select::PhaseProgress& at) {
+    const std::string title =
+        (steps_done ? std::string("select") : "select #" + std::to_string(step)) + ": " + at.phase;
+    if (title != shown_phase) {
+      progress.begin(title, at.unit);
+      shown_phase = title;
+    }
+    if (at.unit.empty()) {
+      progress.update_share(at.done, at.detail + ", share of the tree");
+    } else {
+      progress.update(at.done, at.total, at.detail);
+    }
   };
   SelectReport report{
-      &catalog, space.option_count(), &requirements, &policy, options.budget, nullptr, {}};
-  std::size_t step = 0;  // the relaxation steps shown
+      &catalog, space.option_count(), &requirements, &policy, options.budget, nullptr, {}, {}};
   if (!options.json) print_select_header(report, out);
   const select::RelaxationOutcome outcome = select::select_within_budget(
       space, requirements, policy, options.budget,
       [&](const select::RelaxationIteration& iteration) {
-        ++search;
-        progress.retitle("select: search " + std::to_string(search) + " of at most " +
-                         std::to_string(searches));
         progress.clear();
         // Each step is shown as its search ends, so a long loop shows its progress.
-        if (!options.json) print_select_iteration(report, step++, iteration, out);
+        if (!options.json) print_select_iteration(report, step, iteration, out);
+        ++step;
+        steps_done = iteration.within_budget || step == policy.steps.size() + 1;
       },
-      on_search);
-  progress.clear();
+      on_progress);
   report.outcome = &outcome;
-  report.files =
-      staged.final_names(write_selection_files(report, space, staged, !options.no_renders));
+  report.files = staged.final_names(write_selection_files(
+      report, space, staged, !options.no_renders, on_progress, report.file_phases));
+  progress.clear();
   staged.commit();
   if (options.json) {
     out << to_json(report).dump(2) << '\n';

@@ -191,18 +191,36 @@ void append(std::vector<std::string>& to, const std::vector<std::string>& more) 
 
 std::vector<std::string> write_selection_files(const SelectReport& report,
                                                const select::SelectionSpace& space,
-                                               const io::StagedFolder& staged, bool renders) {
+                                               const io::StagedFolder& staged, bool renders,
+                                               const select::ProgressSink& progress,
+                                               std::vector<select::PhaseTime>& phases) {
   const select::RelaxationIteration* pick = chosen_iteration(*report.outcome);
   if (pick == nullptr) return {};
   const std::string& folder = staged.path();
+  select::PhaseClock clock(phases);
+  clock.start("files");
+  const double parts = renders ? 5 : 4;
+  double done = 0;
+  const auto next = [&](const char* part) {
+    if (progress) progress({"files", done++, parts, "parts", part});
+  };
+  next("chosen rig");
   const std::string rig_file = write_chosen_rig(report, space.library(), pick->selection, folder);
   std::vector<std::string> written = {rig_file, write_final_requirements(report, *pick, folder)};
+  next("Pareto plots");
   append(written, write_pareto_plots(report, *pick, folder));
+  next("margin plots");
   append(written, write_margin_plots(space, *pick, folder));
   model::Rig rig = pick->selection.rig;
   rig.file = staged.final_name(rig_file);
-  if (renders) append(written, write_renders(report, space.library(), *pick, rig, folder));
+  if (renders) {
+    next("coverage renders");
+    append(written, write_renders(report, space.library(), *pick, rig, folder));
+  }
+  next("ROS 2 deployment");
   append(written, write_ros_deployment(space.library(), *pick, rig, folder));
+  clock.stop(std::to_string(written.size()) + " files: the rig, its requirements, plots" +
+             (renders ? ", coverage renders" : "") + " and the ROS 2 deployment");
   return written;
 }
 

@@ -17,8 +17,11 @@ namespace rigdesign::cli {
 /// and deploy/ into the staging folder; returns their paths there in that order
 /// (staged.final_names gives where they end up). Writes nothing when no step found a rig.
 /// Needs `report.outcome`; `space` is the one searched (the margin plots sweep in it).
+/// `progress` hears each part as it starts; `phases` gets the time it all took.
 std::vector<std::string> write_selection_files(const SelectReport& report,
                                                const select::SelectionSpace& space,
-                                               const io::StagedFolder& staged, bool renders);
+                                               const io::StagedFolder& staged, bool renders,
+                                               const select::ProgressSink& progress,
+                                               std::vector<select::PhaseTime>& phases);
 
 }  // namespace rigdesign::cli

@@ -3,62 +3,19 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "rigdesign/select/class_coverage.hpp"
 #include "rigdesign/select/search.hpp"
+#include "select/robust_bound.hpp"
 #include "select/search_rules.hpp"
+#include "select/sector_needs.hpp"
 
 namespace rigdesign::select {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr long kProgressEvery = 4096;
-
-// Covered cells (floor columns) needed at one angle of a sector: the smallest count whose
-// share meets the threshold exactly as meets() decides it on a share.
-struct Need {
-  std::size_t sector = 0;
-  std::size_t angle = 0;
-  std::int64_t cells = 0;
-  std::int64_t floor = 0;
-  double min_complete = 0.0;
-  double min_floor = 0.0;
-};
-
-std::int64_t smallest_count_meeting(double threshold, std::int64_t total) {
-  // share = count / total is monotone in count: start near the answer, then settle it with
-  // the same floating-point comparison meets() makes.
-  std::int64_t count =
-      std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((threshold - kThresholdSlack) *
-                                                                    static_cast<double>(total))) -
-                                   1,
-                               0, total);
-  while (count <= total &&
-         !meets(static_cast<double>(count) / static_cast<double>(total), threshold))
-    ++count;
-  while (count > 0 && meets(static_cast<double>(count - 1) / static_cast<double>(total), threshold))
-    --count;
-  return count;  // total + 1: no count meets it
-}
-
-std::vector<Need> needs_of(const std::vector<SearchSector>& sectors, const ClassCoverage& classes) {
-  std::vector<Need> needs;
-  for (std::size_t s = 0; s < sectors.size(); ++s) {
-    const SearchSector& sector = sectors[s];
-    for (const int a : sector.angles) {
-      const CellCounts total = classes.total(static_cast<std::size_t>(a));
-      needs.push_back({s, static_cast<std::size_t>(a),
-                       smallest_count_meeting(sector.min_complete, total.cells),
-                       smallest_count_meeting(sector.min_floor, total.floor), sector.min_complete,
-                       sector.min_floor});
-    }
-  }
-  return needs;
-}
-
-bool met(const CellCounts& counts, const Need& need) {
-  return counts.cells >= need.cells && counts.floor >= need.floor;
-}
 
 class BranchAndBound {
  public:
@@ -96,6 +53,7 @@ class BranchAndBound {
         return problem.slots[k][x].price < problem.slots[k][y].price;
       });
     }
+    robust_.emplace(problem, classes_, robust_needs_, order_);
     // rest_[k]: the union of every option of slots k.. (the coverage bound), its counts, and
     // per angle the cheapest of those options covering any cell (floor column) there.
     rest_.assign(slots + 1, std::vector<std::uint64_t>(words, 0));
@@ -165,6 +123,7 @@ class BranchAndBound {
   // The saved words are a stack that only grows to the deepest path's size: no per-node
   // allocation, no zero-fill.
   void add(std::size_t k, int o) {
+    robust_->add(k, o);
     const std::uint64_t* bits = classes_.bits(k, o);
     for (const int a : searched_span_[k][o]) {
       const std::size_t angle = static_cast<std::size_t>(a);
@@ -180,6 +139,7 @@ class BranchAndBound {
   }
 
   void remove(std::size_t k, int o) {
+    robust_->remove(k, o);
     const std::vector<int>& span = searched_span_[k][o];
     for (auto it = span.rbegin(); it != span.rend(); ++it) {
       const std::size_t a = static_cast<std::size_t>(*it);
@@ -284,21 +244,31 @@ class BranchAndBound {
   bool promising(std::size_t depth, const RigLoad& load) const {
     double extra = 0.0;
     for (const Need& need : needs_) {
+      if (!reachable(depth, need)) return false;
       const CellCounts& have = counts_[need.angle];
-      if (met(have, need)) continue;
-      const CellCounts& rest = rest_counts_[depth][need.angle];
-      if (have.cells + rest.cells < need.cells || have.floor + rest.floor < need.floor)
-        return false;
-      const CellCounts gain = classes_.count_new(need.angle, rest_[depth].data(), union_.data());
-      if (have.cells + gain.cells < need.cells || have.floor + gain.floor < need.floor)
-        return false;
       if (have.cells < need.cells) extra = std::max(extra, cheapest_cells_[depth][need.angle]);
       if (have.floor < need.floor) extra = std::max(extra, cheapest_floor_[depth][need.angle]);
     }
+    // A surviving rig meets the after-failure thresholds before any failure too.
+    for (const Need& need : robust_->needs())
+      if (!reachable(depth, need)) return false;
+    if (!robust_->may_survive(depth, union_.data(), counts_)) return false;
+    extra = std::max(extra, robust_->least_extra_price(depth));
     if (extra == 0.0) return true;
+    if (!std::isfinite(extra)) return false;
     RigLoad bound = load;
     bound.sensor_cost += extra;
     return total_cost(bound, problem_.transfer, problem_.cpus) <= result_.cost.total + kCostTie;
+  }
+
+  // Whether the chosen sensors and every option of slots depth.. together meet `need`.
+  bool reachable(std::size_t depth, const Need& need) const {
+    const CellCounts& have = counts_[need.angle];
+    if (met(have, need)) return true;
+    const CellCounts& rest = rest_counts_[depth][need.angle];
+    if (have.cells + rest.cells < need.cells || have.floor + rest.floor < need.floor) return false;
+    const CellCounts gain = classes_.count_new(need.angle, rest_[depth].data(), union_.data());
+    return have.cells + gain.cells >= need.cells && have.floor + gain.floor >= need.floor;
   }
 
   void report_progress(std::size_t depth) {
@@ -347,6 +317,7 @@ class BranchAndBound {
   const ClassCoverage classes_;
   std::vector<Need> needs_;
   std::vector<Need> robust_needs_;
+  std::optional<RobustBound> robust_;
   std::vector<std::vector<int>> order_;
   std::vector<std::vector<std::vector<int>>> searched_span_;
   std::vector<std::vector<std::uint64_t>> rest_;

@@ -14,9 +14,9 @@ namespace {
 
 constexpr double kUnboundedMargin = std::numeric_limits<double>::infinity();
 // The compass search halves its steps from half a grid step down to 1/32 of one, and stops
-// after this many rigs at the latest.
+// after kMaxRefinementRigs at the latest.
 constexpr int kHalvings = 5;
-constexpr int kMaxEvaluations = 400;
+constexpr int kMaxEvaluations = kMaxRefinementRigs;
 // A move must widen the margin by more than rounding.
 constexpr double kImprovement = 1e-12;
 
@@ -194,7 +194,7 @@ std::vector<MarginSample> margin_sweep(const SelectionSpace& space,
 }
 
 PoseRefinement refine_poses(const SelectionSpace& space, const Selection& selection,
-                            const SatisficingTargets& targets) {
+                            const SatisficingTargets& targets, const ProgressSink& progress) {
   PoseRefinement refinement;
   refinement.rig = selection.rig;
   // The axes to move: every varied axis of every chosen slot with a pose range.
@@ -231,6 +231,9 @@ PoseRefinement refine_poses(const SelectionSpace& space, const Selection& select
         const model::Pose3 pose = pose_from_values(trial);
         if (margins.inside_body(pose)) continue;
         ++refinement.evaluations;
+        if (progress)
+          progress({"pose refinement", static_cast<double>(refinement.evaluations),
+                    static_cast<double>(kMaxEvaluations), "rigs (at most)", ""});
         std::vector<double> margin = margins.margins_with(p.mount, pose);
         if (wider(margin, best)) {
           best = std::move(margin);
@@ -265,13 +268,19 @@ PoseRefinement refine_poses(const SelectionSpace& space, const Selection& select
   }
   metrics::CoverageSettings exact = space.settings();
   exact.exact = true;
+  if (progress) progress({"exact verification of the refined poses", 0, 1, "rigs", ""});
   refinement.coverage =
       metrics::compute_coverage(refinement.rig, space.library(), targets.sectors, exact);
   refinement.accepted =
       std::all_of(refinement.coverage.sectors.begin(), refinement.coverage.sectors.end(),
                   [](const metrics::SectorCoverage& sector) { return sector.pass; });
   if (refinement.accepted && targets.robustness && targets.robustness->any()) {
-    refinement.failures = failure_impacts(refinement.rig, space, targets, exact);
+    refinement.failures =
+        failure_impacts(refinement.rig, space, targets, exact, [&](double done, double total) {
+          if (progress)
+            progress({"exact verification of the refined poses' failures", done, total,
+                      "sector angles", ""});
+        });
     refinement.accepted =
         std::all_of(refinement.failures.begin(), refinement.failures.end(),
                     [](const FailureImpact& failure) { return failure.broken_sectors.empty(); });

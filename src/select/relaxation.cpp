@@ -43,10 +43,20 @@ std::vector<std::pair<std::string, model::Requirements>> without_each(
 
 std::vector<BindingRequirement> binding_requirements(const SelectionSpace& space,
                                                      const model::Requirements& requirements,
-                                                     const Selection& last, double budget) {
+                                                     const Selection& last, double budget,
+                                                     const ProgressSink& progress) {
   std::vector<BindingRequirement> all;
-  for (const auto& [name, relaxed] : without_each(requirements)) {
-    const Selection selection = select_cheapest(space, relaxed, {}, false);
+  const auto variants = without_each(requirements);
+  const double total = static_cast<double>(variants.size());
+  for (const auto& [name, relaxed] : variants) {
+    const double done = static_cast<double>(all.size());
+    // Each probe is a whole select: its phases count as a share of the probe.
+    const auto probe = [&, name = name](const PhaseProgress& at) {
+      if (progress)
+        progress({"binding requirements", done + (at.total > 0 ? at.done / at.total : 0.0),
+                  total, "probes", "without " + name + ": " + at.phase});
+    };
+    const Selection selection = select_cheapest(space, relaxed, probe, false);
     all.push_back({name, selection.found, selection.found ? selection.cost.total : 0.0});
   }
   std::vector<BindingRequirement> binding;
@@ -79,7 +89,7 @@ RelaxationOutcome select_within_budget(
     const SelectionSpace& space, const model::Requirements& requirements,
     const model::RelaxationPolicy& policy, double budget,
     const std::function<void(const RelaxationIteration&)>& on_iteration,
-    const std::function<void(const SearchProgress&)>& progress) {
+    const ProgressSink& progress) {
   RelaxationOutcome outcome;
   model::Requirements current = requirements;
   for (std::size_t i = 0; i <= policy.steps.size(); ++i) {
@@ -99,8 +109,12 @@ RelaxationOutcome select_within_budget(
       return outcome;
     }
   }
-  outcome.binding =
-      binding_requirements(space, current, outcome.iterations.back().selection, budget);
+  PhaseClock clock(outcome.phases);
+  clock.start("binding requirements");
+  outcome.binding = binding_requirements(space, current, outcome.iterations.back().selection,
+                                         budget, progress);
+  clock.stop(std::to_string(without_each(current).size()) +
+             " searches, each without one requirement");
   return outcome;
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "rigdesign/geometry/cross_section.hpp"
+#include "rigdesign/metrics/failure_coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/select/pose_refinement.hpp"
@@ -104,28 +105,15 @@ std::vector<model::SectorRequirement> robust_sectors(const SatisficingTargets& t
 
 std::vector<FailureImpact> failure_impacts(const model::Rig& rig, const SelectionSpace& space,
                                            const SatisficingTargets& targets,
-                                           const metrics::CoverageSettings& settings) {
+                                           const metrics::CoverageSettings& settings,
+                                           const std::function<void(double, double)>& progress) {
   std::vector<FailureImpact> impacts;
-  const std::vector<model::SectorRequirement> sectors = robust_sectors(targets);
-  const auto impact_without = [&](const std::vector<bool>& failed, std::string failure) {
-    model::Rig rest = rig;
-    rest.mounts.clear();
-    for (std::size_t i = 0; i < rig.mounts.size(); ++i)
-      if (!failed[i]) rest.mounts.push_back(rig.mounts[i]);
-    FailureImpact impact{std::move(failure), {}};
-    const metrics::RigCoverage coverage =
-        metrics::compute_coverage(rest, space.library(), sectors, settings);
-    for (const metrics::SectorCoverage& sector : coverage.sectors)
-      if (!sector.pass) impact.broken_sectors.push_back(sector.sector.name);
-    if (rest.mounts.empty())
-      for (const model::SectorRequirement& sector : sectors) impact.broken_sectors.push_back(sector.name);
-    impacts.push_back(std::move(impact));
-  };
+  std::vector<std::vector<bool>> failures;
   if (targets.robustness->single_failure) {
     for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
-      std::vector<bool> failed(rig.mounts.size(), false);
-      failed[i] = true;
-      impact_without(failed, rig.mounts[i].id + " fails");
+      failures.emplace_back(rig.mounts.size(), false);
+      failures.back()[i] = true;
+      impacts.push_back({rig.mounts[i].id + " fails", {}});
     }
   }
   if (targets.robustness->condition) {
@@ -136,10 +124,17 @@ std::vector<FailureImpact> failure_impacts(const model::Rig& rig, const Selectio
       failed.push_back(!mode.light.immune_to(*targets.robustness->condition));
       if (failed.back()) names.push_back(mount.id);
     }
-    impact_without(failed, to_string(*targets.robustness->condition) + ": " +
-                               (names.empty() ? std::string("no sensor") : model::join(names)) +
-                               " fail");
+    failures.push_back(std::move(failed));
+    impacts.push_back({to_string(*targets.robustness->condition) + ": " +
+                           (names.empty() ? std::string("no sensor") : model::join(names)) +
+                           " fail",
+                       {}});
   }
+  const std::vector<model::SectorRequirement> sectors = robust_sectors(targets);
+  const std::vector<std::vector<std::size_t>> broken =
+      metrics::sectors_broken_by(rig, space.library(), sectors, settings, failures, progress);
+  for (std::size_t f = 0; f < impacts.size(); ++f)
+    for (const std::size_t s : broken[f]) impacts[f].broken_sectors.push_back(sectors[s].name);
   return impacts;
 }
 
@@ -285,40 +280,56 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
 }
 
 Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
-                          const std::function<void(const SearchProgress&)>& progress,
-                          bool refine) {
+                          const ProgressSink& progress, bool refine) {
   const auto start = std::chrono::steady_clock::now();
   Selection selection;
   const model::Catalog& catalog = space.catalog();
   const SatisficingTargets targets = satisficing_targets(requirements);
+  const auto finish = [&] {
+    selection.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::move(selection);
+  };
   if (requirements.body_radius &&
       (std::abs(*requirements.body_radius - catalog.body.radius) > 1e-3 ||
        std::abs(*requirements.body_height - catalog.body.height) > 1e-3)) {
     selection.infeasible_reason = "R1: the catalog's body differs from the application's";
-    return selection;
+    return finish();
   }
   if (catalog.distance_of_interest + 1e-9 < targets.distance) {
     selection.infeasible_reason = "R3: the catalog's distance of interest " +
                                   model::format_number(catalog.distance_of_interest) +
                                   " m is below the required " +
                                   model::format_number(targets.distance) + " m";
-    return selection;
+    return finish();
   }
   std::vector<std::vector<const CatalogOption*>> kept;
   const SearchProblem problem = space.problem_for(targets, kept);
   if (problem.robustness.single_failure) {
     if (auto reason = sector_needing_one_slot(problem, kept, targets, space)) {
       selection.infeasible_reason = std::move(*reason);
-      selection.seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      return selection;
+      return finish();
     }
   }
+  PhaseClock clock(selection.phases);
+  const auto search_progress = [&](const std::string& phase) {
+    return [&progress, phase](const SearchProgress& at) {
+      if (progress)
+        progress({phase, at.fraction, 1.0, "", std::to_string(at.nodes) + " nodes"});
+    };
+  };
   std::vector<std::vector<int>> excluded;
   metrics::CoverageSettings exact = space.settings();
   exact.exact = true;
   while (true) {
-    selection.search = branch_and_bound(problem, excluded, progress);
+    const std::string phase =
+        excluded.empty() ? std::string("search")
+                         : "search " + std::to_string(excluded.size() + 1) +
+                               " (raster winners the exact path rejected excluded)";
+    clock.start(phase);
+    selection.search = branch_and_bound(problem, excluded, search_progress(phase));
+    clock.stop(std::to_string(selection.search.nodes) + " nodes, " +
+               std::to_string(selection.search.evaluations) + " rigs evaluated");
     if (!selection.search.found) break;
     selection.chosen.clear();
     for (std::size_t k = 0; k < kept.size(); ++k) {
@@ -326,21 +337,41 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
       if (index >= 0) selection.chosen.push_back(kept[k][index]);
     }
     selection.rig = space.rig_for(selection.chosen);
+    clock.start("exact verification");
+    if (progress) progress({"exact verification", 0, 1, "rigs", ""});
     selection.coverage =
         metrics::compute_coverage(selection.rig, space.library(), targets.sectors, exact);
     bool verified =
         std::all_of(selection.coverage.sectors.begin(), selection.coverage.sectors.end(),
                     [](const metrics::SectorCoverage& sector) { return sector.pass; });
+    clock.stop(std::string("the rig's coverage on the exact path") + (verified ? "" : ": rejected"));
     if (verified && targets.robustness && targets.robustness->any()) {
-      selection.failures = failure_impacts(selection.rig, space, targets, exact);
+      clock.start("exact verification of failures");
+      selection.failures = failure_impacts(
+          selection.rig, space, targets, exact, [&](double done, double total) {
+            if (progress)
+              progress({"exact verification of failures", done, total, "sector angles", ""});
+          });
       verified = std::all_of(selection.failures.begin(), selection.failures.end(),
                              [](const FailureImpact& f) { return f.broken_sectors.empty(); });
+      clock.stop(std::to_string(selection.failures.size()) +
+                 " failures, each mount's sections computed once" + (verified ? "" : ": rejected"));
     }
     if (verified) {
       selection.found = true;
       selection.cost = selection.search.cost;
       selection.grid_rig = selection.rig;
-      if (refine) selection.refinement = refine_poses(space, selection, targets);
+      if (refine) {
+        clock.start("pose refinement");
+        selection.refinement = refine_poses(space, selection, targets, progress);
+        const PoseRefinement& r = selection.refinement;
+        clock.stop(!r.tried ? std::string("no chosen slot has a pose range")
+                            : std::to_string(r.evaluations) + " rigs on the raster path" +
+                                  (r.coverage.sectors.empty()
+                                       ? std::string(", no pose moved")
+                                       : std::string(", then the exact path: ") +
+                                             (r.accepted ? "confirmed" : "rejected")));
+      }
       if (selection.refinement.accepted) {
         selection.rig = selection.refinement.rig;
         selection.coverage = selection.refinement.coverage;
@@ -354,15 +385,16 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
   if (problem.robustness.any()) {
     SearchProblem plain = problem;
     plain.robustness = {};
-    const SearchResult without = branch_and_bound(plain);
+    clock.start("robustness cost");
+    const SearchResult without =
+        branch_and_bound(plain, {}, search_progress("robustness cost (search without it)"));
+    clock.stop("a search without robustness: " + std::to_string(without.nodes) + " nodes");
     if (without.found) selection.cost_without_robustness = without.cost.total;
   }
   if (!selection.found && selection.infeasible_reason.empty()) {
     selection.infeasible_reason = "no combination of the catalog's options meets every requirement";
   }
-  selection.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return selection;
+  return finish();
 }
 
 }  // namespace rigdesign::select

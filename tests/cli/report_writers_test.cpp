@@ -258,7 +258,8 @@ TEST_CASE("select: a relaxation trace gives the same costs in text, JSON and HTM
                                  &no_policy,
                                  2000,
                                  &outcome,
-                                 {"out/chosen_rig.yaml", "out/pareto.png"}};
+                                 {"out/chosen_rig.yaml", "out/pareto.png"},
+                                 {}};
 
   CHECK(cli::chosen_iteration(outcome) == &relaxed);
   CHECK(cli::describe(relaxed.targets) == "F >= 10 Hz, R <= 150 mm");

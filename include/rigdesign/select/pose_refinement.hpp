@@ -45,8 +45,13 @@ class RasterMargins {
 };
 
 /// Refines the poses of `selection` (found by select_cheapest for `targets`).
+/// `progress` hears the compass search ("pose refinement", rigs of at most
+/// kMaxRefinementRigs) and the refined rig's exact verification.
 PoseRefinement refine_poses(const SelectionSpace& space, const Selection& selection,
-                            const SatisficingTargets& targets);
+                            const SatisficingTargets& targets, const ProgressSink& progress = {});
+
+/// The compass search stops after this many rigs at the latest.
+inline constexpr int kMaxRefinementRigs = 400;
 
 /// One sample of a sweep: the axis value [SI], the rig's smallest margin and each target
 /// sector's margin (in the targets' order) [share].

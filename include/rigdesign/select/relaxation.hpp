@@ -32,6 +32,7 @@ struct RelaxationOutcome {
   /// When the policy is exhausted: requirements whose removal alone would bring the rig
   /// within budget or make it feasible, else those whose removal lowers the cost most.
   std::vector<BindingRequirement> binding;
+  std::vector<PhaseTime> phases;  ///< after the loop (the binding-requirement probes)
 };
 
 /// Runs the loop; every iteration is reported to `on_iteration` as soon as it is done.
@@ -40,7 +41,7 @@ RelaxationOutcome select_within_budget(
     const SelectionSpace& space, const model::Requirements& requirements,
     const model::RelaxationPolicy& policy, double budget,
     const std::function<void(const RelaxationIteration&)>& on_iteration = {},
-    const std::function<void(const SearchProgress&)>& progress = {});
+    const ProgressSink& progress = {});
 
 /// Applies every step in order, so a bad policy fails before any search (throws InputError).
 model::Requirements check_policy(const model::Requirements& requirements,

@@ -12,6 +12,7 @@
 #include "rigdesign/metrics/mount_metrics.hpp"
 #include "rigdesign/model/catalog.hpp"
 #include "rigdesign/model/requirements.hpp"
+#include "rigdesign/select/phase_progress.hpp"
 #include "rigdesign/select/search.hpp"
 
 namespace rigdesign::select {
@@ -122,22 +123,25 @@ struct Selection {
   /// `coverage` and `failures` are the refined rig's and `grid_rig` the search's.
   PoseRefinement refinement;
   model::Rig grid_rig;
+  std::vector<PhaseTime> phases;  ///< what ran, in order, and how long
 };
 
 /// The sectors a robust rig must keep after a failure: the targets' with relaxed thresholds.
 std::vector<model::SectorRequirement> robust_sectors(const SatisficingTargets& targets);
 
 /// Each failure the targets ask `rig` to survive, on the path `settings` says.
-std::vector<FailureImpact> failure_impacts(const model::Rig& rig, const SelectionSpace& space,
-                                           const SatisficingTargets& targets,
-                                           const metrics::CoverageSettings& settings);
+/// `progress` hears (sector angles done, in total).
+std::vector<FailureImpact> failure_impacts(
+    const model::Rig& rig, const SelectionSpace& space, const SatisficingTargets& targets,
+    const metrics::CoverageSettings& settings,
+    const std::function<void(double, double)>& progress = {});
 
 /// The cheapest rig meeting `requirements`, proven optimal on the raster path and verified
 /// on the exact path (a raster winner the exact path rejects is excluded and the search
 /// runs again).
 /// `refine`: refine the chosen poses continuously (off for the binding-requirement probes).
+/// `progress` hears every phase (search, exact verification, pose refinement, robustness cost).
 Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
-                          const std::function<void(const SearchProgress&)>& progress = {},
-                          bool refine = true);
+                          const ProgressSink& progress = {}, bool refine = true);
 
 }  // namespace rigdesign::select

@@ -48,6 +48,13 @@ json refinement_json(const select::PoseRefinement& refinement) {
           {"axes", axes}};
 }
 
+json phases_json(const std::vector<select::PhaseTime>& phases) {
+  json out = json::array();
+  for (const select::PhaseTime& phase : phases)
+    out.push_back({{"phase", phase.phase}, {"work", phase.work}, {"seconds", phase.seconds}});
+  return out;
+}
+
 json iteration_json(const select::RelaxationIteration& it, const model::Catalog& catalog) {
   const select::Selection& selection = it.selection;
   json item = {{"relaxed", it.relaxed},
@@ -60,7 +67,8 @@ json iteration_json(const select::RelaxationIteration& it, const model::Catalog&
                {"raster_cells", selection.search.raster_cells},
                {"dominated_options", selection.search.dominated},
                {"seconds", selection.seconds},
-               {"rejected_by_exact_path", selection.rejected_by_exact_path}};
+               {"rejected_by_exact_path", selection.rejected_by_exact_path},
+               {"phases", phases_json(selection.phases)}};
   if (!selection.found) {
     item["reason"] = selection.infeasible_reason;
     return item;
@@ -89,6 +97,8 @@ json to_json(const SelectReport& report) {
           {"within_budget", outcome.within_budget},
           {"iterations", iterations},
           {"binding", binding},
+          {"phases", phases_json(outcome.phases)},
+          {"file_phases", phases_json(report.file_phases)},
           {"files", report.files}};
 }
 

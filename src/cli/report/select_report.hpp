@@ -19,6 +19,7 @@ struct SelectReport {
   double budget = 0.0;                                 ///< [USD]
   const select::RelaxationOutcome* outcome = nullptr;  ///< null while the loop runs
   std::vector<std::string> files;                      ///< written, where they end up
+  std::vector<select::PhaseTime> file_phases;          ///< writing them
 };
 
 /// The iteration whose rig is written: the first within budget, else the last that found a

@@ -39,6 +39,14 @@ void print_found_rig(const SelectReport& report, const select::RelaxationIterati
     out << "      refined poses: " << describe(selection.refinement) << '\n';
 }
 
+// One line per phase: what ran and how long it took.
+void print_phases(const std::vector<select::PhaseTime>& phases, const std::string& indent,
+                  std::ostream& out) {
+  for (const select::PhaseTime& phase : phases)
+    out << indent << "phase " << phase.phase << ": " << fixed(phase.seconds, 2) << " s, "
+        << phase.work << '\n';
+}
+
 void print_search_effort(const select::Selection& selection, std::ostream& out) {
   out << "    search: " << selection.search.nodes << " nodes, " << selection.search.evaluations
       << " rigs evaluated, " << fixed(selection.seconds, 2) << " s ("
@@ -51,7 +59,9 @@ void print_search_effort(const select::Selection& selection, std::ostream& out) 
       out << " (" << selection.rejected_by_exact_path << " raster winners rejected by it)";
     }
   }
-  out << "\n\n";
+  out << '\n';
+  print_phases(selection.phases, "    ", out);
+  out << '\n';
 }
 
 void print_trace_table(const select::RelaxationOutcome& outcome, std::ostream& out) {
@@ -152,6 +162,9 @@ void print_select_summary(const SelectReport& report, std::ostream& out) {
   } else {
     print_exhausted(report, pick, out);
   }
+  if (!outcome.phases.empty() || !report.file_phases.empty()) out << '\n';
+  print_phases(outcome.phases, "", out);
+  print_phases(report.file_phases, "", out);
   if (!report.files.empty()) {
     out << "\nwrote " << report.files.size() << " files in "
         << std::filesystem::path(report.files.front()).parent_path().string()
