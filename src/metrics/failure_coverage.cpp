@@ -9,12 +9,6 @@
 #include "rigdesign/geometry/cross_section.hpp"
 
 namespace rigdesign::metrics {
-namespace {
-
-constexpr double kTwoPi = 2 * std::numbers::pi;
-
-}  // namespace
-
 std::vector<std::vector<std::size_t>> sectors_broken_by(
     const model::Rig& rig, const model::SensorLibrary& library,
     const std::vector<model::SectorRequirement>& sectors, const CoverageSettings& settings,
@@ -27,10 +21,10 @@ std::vector<std::vector<std::size_t>> sectors_broken_by(
     fovs.emplace_back(library.resolved_mode(mount.sensor_id, mount.mode_id), mount.T_robot_sensor,
                       body, mount.limits);
   }
-  const int steps = std::max(1, static_cast<int>(std::lround(kTwoPi / settings.step)));
+  const int steps = std::max(1, static_cast<int>(std::lround((2 * std::numbers::pi) / settings.step)));
   std::vector<double> thetas;
   for (int step = 0; step < steps; ++step) {
-    const double theta = kTwoPi * step / steps;
+    const double theta = (2 * std::numbers::pi) * step / steps;
     if (std::any_of(sectors.begin(), sectors.end(),
                     [&](const model::SectorRequirement& s) { return in_sector(s, theta); }))
       thetas.push_back(theta);

@@ -4,12 +4,9 @@
 #include <limits>
 
 namespace rigdesign::select {
-namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-}  // namespace
-
+// No option covers anything there: no price buys it.
+static constexpr double kNoOption = std::numeric_limits<double>::infinity();
 RobustBound::RobustBound(const SearchProblem& problem, const ClassCoverage& classes,
                          std::vector<Need> needs, const std::vector<std::vector<int>>& order)
     : problem_(problem), classes_(classes), needs_(std::move(needs)) {
@@ -22,7 +19,7 @@ RobustBound::RobustBound(const SearchProblem& problem, const ClassCoverage& clas
   touches_.resize(slots);
   slot_needs_.resize(slots);
   // Per slot and need: the cheapest option covering cells (floor), and the cheapest surviving.
-  std::vector<std::vector<double>> slot_cells(slots, std::vector<double>(count, kInfinity));
+  std::vector<std::vector<double>> slot_cells(slots, std::vector<double>(count, kNoOption));
   std::vector<std::vector<double>> slot_floor = slot_cells;
   std::vector<std::vector<double>> slot_surviving_cells = slot_cells;
   std::vector<std::vector<double>> slot_surviving_floor = slot_cells;
@@ -56,7 +53,7 @@ RobustBound::RobustBound(const SearchProblem& problem, const ClassCoverage& clas
   const auto cheapest_from = [&](const std::vector<std::vector<double>>& per_slot,
                                  const std::vector<std::vector<double>>& surviving) {
     std::vector<std::vector<Cheapest>> table(slots + 1,
-                                             std::vector<Cheapest>(count, {kInfinity, kInfinity, kInfinity}));
+                                             std::vector<Cheapest>(count, {kNoOption, kNoOption, kNoOption}));
     for (std::size_t k = slots; k-- > 0;) {
       for (std::size_t i = 0; i < count; ++i) {
         Cheapest c = table[k + 1][i];
