@@ -191,19 +191,61 @@ class BranchAndBound {
     return true;
   }
 
-  // Each sector's smallest margin over its angles, smallest first.
-  std::vector<double> sector_margins() const {
+  // A need's margin with `have` covered: the smaller of SC complete's and floor's.
+  double margin_at(const Need& need, const CellCounts& have) const {
+    const CellCounts total = classes_.total(need.angle);
+    return std::min(
+        static_cast<double>(have.cells) / static_cast<double>(total.cells) - need.min_complete,
+        static_cast<double>(have.floor) / static_cast<double>(total.floor) - need.min_floor);
+  }
+
+  // Each sector's smallest margin over its angles, smallest first; `tightest` gets, per
+  // sector, the need where it is smallest.
+  std::vector<double> sector_margins(std::vector<std::size_t>* tightest = nullptr) const {
     std::vector<double> margins(problem_.sectors.size(), kInfinity);
-    for (const Need& need : needs_) {
-      const CellCounts total = classes_.total(need.angle);
-      const CellCounts& have = counts_[need.angle];
-      margins[need.sector] = std::min(
-          {margins[need.sector],
-           static_cast<double>(have.cells) / static_cast<double>(total.cells) - need.min_complete,
-           static_cast<double>(have.floor) / static_cast<double>(total.floor) - need.min_floor});
+    if (tightest != nullptr) tightest->assign(problem_.sectors.size(), needs_.size());
+    for (std::size_t i = 0; i < needs_.size(); ++i) {
+      const double margin = margin_at(needs_[i], counts_[needs_[i].angle]);
+      if (margin < margins[needs_[i].sector]) {
+        margins[needs_[i].sector] = margin;
+        if (tightest != nullptr) (*tightest)[needs_[i].sector] = i;
+      }
     }
     std::sort(margins.begin(), margins.end());
     return margins;
+  }
+
+  // Margins of the chosen sensors plus every option of slots depth.. at `need`: no
+  // completion's margin there is larger (a margin only grows with coverage).
+  double margin_bound(std::size_t depth, const Need& need) const {
+    CellCounts reach = counts_[need.angle];
+    const CellCounts gain = classes_.count_new(need.angle, rest_[depth].data(), union_.data());
+    reach.cells += gain.cells;
+    reach.floor += gain.floor;
+    return margin_at(need, reach);
+  }
+
+  // Whether some completion of this node may beat the incumbent's margins (leximin). A
+  // sector's smallest margin is at most its bound at any one of its angles; sorted, the
+  // sectors' bounds are at least any completion's sorted margins element by element, so if
+  // they do not beat the incumbent no completion does. First at the incumbent's tightest
+  // angle per sector (cheap, usually decisive), then at every angle.
+  bool may_widen_margins(std::size_t depth) const {
+    std::vector<double> bound(problem_.sectors.size(), kInfinity);
+    const auto beats_incumbent = [&] {
+      std::vector<double> sorted = bound;
+      std::sort(sorted.begin(), sorted.end());
+      return std::lexicographical_compare(result_.margins.begin(), result_.margins.end(),
+                                          sorted.begin(), sorted.end());
+    };
+    for (std::size_t sector = 0; sector < tightest_.size(); ++sector) {
+      if (tightest_[sector] < needs_.size())
+        bound[sector] = margin_bound(depth, needs_[tightest_[sector]]);
+    }
+    if (!beats_incumbent()) return false;
+    for (const Need& need : needs_)
+      bound[need.sector] = std::min(bound[need.sector], margin_bound(depth, need));
+    return beats_incumbent();
   }
 
   // SC complete averaged over every angle of the problem (the Pareto plot's axis).
@@ -226,8 +268,10 @@ class BranchAndBound {
         std::find(excluded_.begin(), excluded_.end(), choice_) == excluded_.end() && survives();
     if (!feasible) return false;
     result_.explored.push_back({cost, mean_complete(), true});
-    std::vector<double> margins = sector_margins();
+    std::vector<std::size_t> tightest;
+    std::vector<double> margins = sector_margins(&tightest);
     if (improves(result_, cost, margins)) {
+      tightest_ = std::move(tightest);
       result_.found = true;
       result_.cost = rig_cost(load, problem_.transfer, problem_.cpus);
       result_.choice = choice_;
@@ -332,6 +376,7 @@ class BranchAndBound {
   std::vector<std::uint64_t> scratch_;
   std::vector<int> choice_;
   std::vector<int> position_;
+  std::vector<std::size_t> tightest_;  // the incumbent's tightest need per sector
   SearchResult result_;
 };
 
