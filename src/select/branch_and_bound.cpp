@@ -55,11 +55,11 @@ class BranchAndBound {
     }
     robust_.emplace(problem, classes_, robust_needs_, order_);
     // rest_[k]: the union of every option of slots k.. (the coverage bound), its counts, and
-    // per angle the cheapest of those options covering any cell (floor column) there.
+    // per angle the least any of those options covering a cell (floor column) there adds.
     rest_.assign(slots + 1, std::vector<std::uint64_t>(words, 0));
     rest_counts_.assign(slots + 1, std::vector<CellCounts>(angles));
-    cheapest_cells_.assign(slots + 1, std::vector<double>(angles, kInfinity));
-    cheapest_floor_.assign(slots + 1, std::vector<double>(angles, kInfinity));
+    cheapest_cells_.assign(slots + 1, std::vector<LeastAddition>(angles, LeastAddition::none()));
+    cheapest_floor_.assign(slots + 1, std::vector<LeastAddition>(angles, LeastAddition::none()));
     for (std::size_t k = slots; k-- > 0;) {
       rest_[k] = rest_[k + 1];
       cheapest_cells_[k] = cheapest_cells_[k + 1];
@@ -69,9 +69,9 @@ class BranchAndBound {
         for (std::size_t w = 0; w < words; ++w) rest_[k][w] |= bits[w];
         for (const int a : searched_span_[k][o]) {
           const CellCounts alone = classes_.count(a, bits);
-          const double price = problem.slots[k][o].price;
-          if (alone.cells > 0) cheapest_cells_[k][a] = std::min(cheapest_cells_[k][a], price);
-          if (alone.floor > 0) cheapest_floor_[k][a] = std::min(cheapest_floor_[k][a], price);
+          const LeastAddition adds = LeastAddition::of(problem.slots[k][o]);
+          if (alone.cells > 0) cheapest_cells_[k][a] = cheapest_cells_[k][a].least(adds);
+          if (alone.floor > 0) cheapest_floor_[k][a] = cheapest_floor_[k][a].least(adds);
         }
       }
       for (std::size_t a = 0; a < angles; ++a)
@@ -282,27 +282,32 @@ class BranchAndBound {
   }
 
   // Whether some completion of this node may meet every threshold for no more than the
-  // incumbent: the coverage bound per needed angle, then the cost bound (this node's cost
-  // plus the cheapest option of an undecided slot that covers anything at the worst
-  // uncovered angle: any completion must buy at least that one).
+  // incumbent: the coverage bound per needed angle, then the cost bound (this node's load
+  // plus, part by part, the least an option of an undecided slot covering anything at an
+  // uncovered angle adds, at the angle where that is largest: any completion buys at least
+  // one such option per angle; the robustness bound's additions likewise).
   bool promising(std::size_t depth, const RigLoad& load) const {
-    double extra = 0.0;
+    LeastAddition extra;
     for (const Need& need : needs_) {
       if (!reachable(depth, need)) return false;
       const CellCounts& have = counts_[need.angle];
-      if (have.cells < need.cells) extra = std::max(extra, cheapest_cells_[depth][need.angle]);
-      if (have.floor < need.floor) extra = std::max(extra, cheapest_floor_[depth][need.angle]);
+      if (have.cells < need.cells) extra = extra.most(cheapest_cells_[depth][need.angle]);
+      if (have.floor < need.floor) extra = extra.most(cheapest_floor_[depth][need.angle]);
     }
     // A surviving rig meets the after-failure thresholds before any failure too.
     for (const Need& need : robust_->needs())
       if (!reachable(depth, need)) return false;
     if (!robust_->may_survive(depth, union_.data(), counts_)) return false;
-    extra = std::max(extra, robust_->least_extra_price(depth));
-    if (extra == 0.0) return true;
-    if (!std::isfinite(extra)) return false;
+    extra = extra.most(robust_->least_addition(depth));
+    if (!extra.possible()) return false;
     RigLoad bound = load;
-    bound.sensor_cost += extra;
-    return total_cost(bound, problem_.transfer, problem_.cpus) <= result_.cost.total + kCostTie;
+    bound.sensor_cost += extra.price;
+    bound.bandwidth += extra.bandwidth;
+    bound.cpu += extra.cpu;
+    const double least_cost = total_cost(bound, problem_.transfer, problem_.cpus);
+    if (least_cost > result_.cost.total + kCostTie) return false;
+    // No completion is cheaper than the incumbent: only wider margins can win.
+    return !result_.found || least_cost < result_.cost.total - kCostTie || may_widen_margins(depth);
   }
 
   // Whether the chosen sensors and every option of slots depth.. together meet `need`.
@@ -366,8 +371,8 @@ class BranchAndBound {
   std::vector<std::vector<std::vector<int>>> searched_span_;
   std::vector<std::vector<std::uint64_t>> rest_;
   std::vector<std::vector<CellCounts>> rest_counts_;
-  std::vector<std::vector<double>> cheapest_cells_;
-  std::vector<std::vector<double>> cheapest_floor_;
+  std::vector<std::vector<LeastAddition>> cheapest_cells_;
+  std::vector<std::vector<LeastAddition>> cheapest_floor_;
   std::vector<std::uint64_t> union_;
   std::vector<CellCounts> counts_;
   std::vector<std::uint64_t> saved_words_;  // a stack: [0, saved_top_) in use

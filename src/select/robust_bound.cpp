@@ -4,9 +4,6 @@
 #include <limits>
 
 namespace rigdesign::select {
-
-// No option covers anything there: no price buys it.
-static constexpr double kNoOption = std::numeric_limits<double>::infinity();
 RobustBound::RobustBound(const SearchProblem& problem, const ClassCoverage& classes,
                          std::vector<Need> needs, const std::vector<std::vector<int>>& order)
     : problem_(problem), classes_(classes), needs_(std::move(needs)) {
@@ -18,15 +15,17 @@ RobustBound::RobustBound(const SearchProblem& problem, const ClassCoverage& clas
   const std::size_t count = needs_.size();
   touches_.resize(slots);
   slot_needs_.resize(slots);
-  // Per slot and need: the cheapest option covering cells (floor), and the cheapest surviving.
-  std::vector<std::vector<double>> slot_cells(slots, std::vector<double>(count, kNoOption));
-  std::vector<std::vector<double>> slot_floor = slot_cells;
-  std::vector<std::vector<double>> slot_surviving_cells = slot_cells;
-  std::vector<std::vector<double>> slot_surviving_floor = slot_cells;
+  // Per slot and need: the least an option covering cells (floor) adds, and a surviving one.
+  std::vector<std::vector<LeastAddition>> slot_cells(
+      slots, std::vector<LeastAddition>(count, LeastAddition::none()));
+  std::vector<std::vector<LeastAddition>> slot_floor = slot_cells;
+  std::vector<std::vector<LeastAddition>> slot_surviving_cells = slot_cells;
+  std::vector<std::vector<LeastAddition>> slot_surviving_floor = slot_cells;
   for (std::size_t k = 0; k < slots; ++k) {
     touches_[k].resize(problem.slots[k].size());
     for (const int o : order[k]) {
       const SearchOption& option = problem.slots[k][o];
+      const LeastAddition adds = LeastAddition::of(option);
       const std::vector<int>& span = classes.span(k, o);
       for (std::size_t i = 0; i < count; ++i) {
         if (!std::binary_search(span.begin(), span.end(), static_cast<int>(needs_[i].angle)))
@@ -36,31 +35,30 @@ RobustBound::RobustBound(const SearchProblem& problem, const ClassCoverage& clas
         if (!touch.cells && !touch.floor) continue;
         touches_[k][o].push_back(touch);
         if (slot_needs_[k].empty() || slot_needs_[k].back() != i) slot_needs_[k].push_back(i);
-        if (touch.cells) slot_cells[k][i] = std::min(slot_cells[k][i], option.price);
-        if (touch.floor) slot_floor[k][i] = std::min(slot_floor[k][i], option.price);
+        if (touch.cells) slot_cells[k][i] = slot_cells[k][i].least(adds);
+        if (touch.floor) slot_floor[k][i] = slot_floor[k][i].least(adds);
         if (option.survives_condition && touch.cells)
-          slot_surviving_cells[k][i] = std::min(slot_surviving_cells[k][i], option.price);
+          slot_surviving_cells[k][i] = slot_surviving_cells[k][i].least(adds);
         if (option.survives_condition && touch.floor)
-          slot_surviving_floor[k][i] = std::min(slot_surviving_floor[k][i], option.price);
+          slot_surviving_floor[k][i] = slot_surviving_floor[k][i].least(adds);
       }
     }
     std::sort(slot_needs_[k].begin(), slot_needs_[k].end());
     slot_needs_[k].erase(std::unique(slot_needs_[k].begin(), slot_needs_[k].end()),
                          slot_needs_[k].end());
   }
-  // From the last slot up: the cheapest one, the cheapest two of distinct slots (a slot
-  // gives at most its cheapest), and the cheapest surviving option of slots >= depth.
-  const auto cheapest_from = [&](const std::vector<std::vector<double>>& per_slot,
-                                 const std::vector<std::vector<double>>& surviving) {
-    std::vector<std::vector<Cheapest>> table(slots + 1,
-                                             std::vector<Cheapest>(count, {kNoOption, kNoOption, kNoOption}));
+  // From the last slot up: one option, two of distinct slots (a slot adds at least its
+  // least), and one surviving option of slots >= depth; part by part, each the least.
+  const auto cheapest_from = [&](const std::vector<std::vector<LeastAddition>>& per_slot,
+                                 const std::vector<std::vector<LeastAddition>>& surviving) {
+    std::vector<std::vector<Cheapest>> table(slots + 1, std::vector<Cheapest>(count));
     for (std::size_t k = slots; k-- > 0;) {
       for (std::size_t i = 0; i < count; ++i) {
         Cheapest c = table[k + 1][i];
-        const double price = per_slot[k][i];
-        c.two = std::min(c.two, c.one + price);
-        c.one = std::min(c.one, price);
-        c.surviving = std::min(c.surviving, surviving[k][i]);
+        const LeastAddition& here = per_slot[k][i];
+        c.two = c.two.least(c.one.plus(here));
+        c.one = c.one.least(here);
+        c.surviving = c.surviving.least(surviving[k][i]);
         table[k][i] = c;
       }
     }
@@ -135,24 +133,24 @@ bool RobustBound::may_survive(std::size_t depth, const std::uint64_t* chosen,
   return true;
 }
 
-double RobustBound::extra_for(std::int64_t needed, int coverers, int surviving,
-                              const Cheapest& cheapest) const {
-  if (needed == 0) return 0.0;
-  double extra = 0.0;
-  if (problem_.robustness.single_failure)
-    extra = coverers == 0 ? cheapest.two : coverers == 1 ? cheapest.one : 0.0;
-  if (problem_.robustness.condition && surviving == 0) extra = std::max(extra, cheapest.surviving);
+LeastAddition RobustBound::extra_for(std::int64_t needed, int coverers, int surviving,
+                                     const Cheapest& cheapest) const {
+  LeastAddition extra;
+  if (needed == 0) return extra;
+  if (problem_.robustness.single_failure && coverers < 2)
+    extra = coverers == 0 ? cheapest.two : cheapest.one;
+  if (problem_.robustness.condition && surviving == 0) extra = extra.most(cheapest.surviving);
   return extra;
 }
 
-double RobustBound::least_extra_price(std::size_t depth) const {
-  double extra = 0.0;
+LeastAddition RobustBound::least_addition(std::size_t depth) const {
+  LeastAddition extra;
   for (std::size_t i = 0; i < needs_.size(); ++i) {
-    extra = std::max({extra,
-                      extra_for(needs_[i].cells, coverers_cells_[i], surviving_cells_[i],
-                                cheapest_cells_[depth][i]),
-                      extra_for(needs_[i].floor, coverers_floor_[i], surviving_floor_[i],
-                                cheapest_floor_[depth][i])});
+    extra = extra
+                .most(extra_for(needs_[i].cells, coverers_cells_[i], surviving_cells_[i],
+                                cheapest_cells_[depth][i]))
+                .most(extra_for(needs_[i].floor, coverers_floor_[i], surviving_floor_[i],
+                                cheapest_floor_[depth][i]));
   }
   return extra;
 }

@@ -8,8 +8,8 @@
 //   little; not choosing it, the rig is no more than that, and any failure leaves less).
 // - Price: under n-1, an angle whose after-failure threshold asks for anything needs two
 //   chosen sensors covering something there (one alone leaves nothing when it fails); under
-//   a condition, one that survives the condition. A node with fewer must still buy the
-//   cheapest such options of distinct undecided slots.
+//   a condition, one that survives the condition. A node with fewer must still buy such
+//   options of distinct undecided slots: at least their least price, bandwidth and load.
 #include <cstdint>
 #include <vector>
 
@@ -37,9 +37,9 @@ class RobustBound {
   bool may_survive(std::size_t depth, const std::uint64_t* chosen,
                    const std::vector<CellCounts>& counts) const;
 
-  /// The least price [USD] any surviving completion of a node at `depth` still adds
-  /// (+infinity: none exists).
-  double least_extra_price(std::size_t depth) const;
+  /// The least price, bandwidth and CPU load any surviving completion of a node at `depth`
+  /// still adds, part by part (not possible(): none exists).
+  LeastAddition least_addition(std::size_t depth) const;
 
  private:
   // One of an option's covers at a need's angle: anything of the cells, of the floor.
@@ -48,13 +48,14 @@ class RobustBound {
     bool cells = false;
     bool floor = false;
   };
-  // The cheapest prices of options of slots >= depth covering something at a need's angle.
+  // The least options of slots >= depth covering something at a need's angle add.
   struct Cheapest {
-    double one = 0.0;        // any option
-    double two = 0.0;        // two options of distinct slots together
-    double surviving = 0.0;  // one that survives the condition
+    LeastAddition one = LeastAddition::none();        // any option
+    LeastAddition two = LeastAddition::none();        // two options of distinct slots
+    LeastAddition surviving = LeastAddition::none();  // one that survives the condition
   };
-  double extra_for(std::int64_t needed, int coverers, int surviving, const Cheapest& cheapest) const;
+  LeastAddition extra_for(std::int64_t needed, int coverers, int surviving,
+                          const Cheapest& cheapest) const;
 
   const SearchProblem& problem_;
   const ClassCoverage& classes_;

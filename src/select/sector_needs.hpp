@@ -1,7 +1,10 @@
 #pragma once
 // A sector threshold at one angle restated as the covered cells (floor columns) it takes:
 // what the branch and bound and its robustness bound compare the classes' counts with.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "rigdesign/select/class_coverage.hpp"
@@ -25,5 +28,36 @@ std::vector<Need> needs_of(const std::vector<SearchSector>& sectors, const Class
 inline bool met(const CellCounts& counts, const Need& need) {
   return counts.cells >= need.cells && counts.floor >= need.floor;
 }
+
+// What buying some option adds at least, each part minimised on its own: a lower bound on
+// whichever option a completion buys (its CPU load and bandwidth can raise the CPU and
+// transfer prices as much as its own price). Infinite: no option does what is asked.
+struct LeastAddition {
+  double price = 0.0;
+  double bandwidth = 0.0;
+  double cpu = 0.0;
+
+  static LeastAddition none() {
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    return {kNone, kNone, kNone};
+  }
+  static LeastAddition of(const SearchOption& option) {
+    return {option.price, option.bandwidth, option.cpu};
+  }
+  bool possible() const { return std::isfinite(price); }
+  // Part by part: the smaller (either option may be the one bought).
+  LeastAddition least(const LeastAddition& other) const {
+    return {std::min(price, other.price), std::min(bandwidth, other.bandwidth),
+            std::min(cpu, other.cpu)};
+  }
+  // Part by part: the larger (both needs must be met, by one option or more).
+  LeastAddition most(const LeastAddition& other) const {
+    return {std::max(price, other.price), std::max(bandwidth, other.bandwidth),
+            std::max(cpu, other.cpu)};
+  }
+  LeastAddition plus(const LeastAddition& other) const {
+    return {price + other.price, bandwidth + other.bandwidth, cpu + other.cpu};
+  }
+};
 
 }  // namespace rigdesign::select
