@@ -316,8 +316,8 @@ class BranchAndBound {
     if (met(have, need)) return true;
     const CellCounts& rest = rest_counts_[depth][need.angle];
     if (have.cells + rest.cells < need.cells || have.floor + rest.floor < need.floor) return false;
-    const CellCounts gain = classes_.count_new(need.angle, rest_[depth].data(), union_.data());
-    return have.cells + gain.cells >= need.cells && have.floor + gain.floor >= need.floor;
+    return classes_.reaches(need.angle, rest_[depth].data(), union_.data(), have,
+                            {need.cells, need.floor});
   }
 
   void report_progress(std::size_t depth) {

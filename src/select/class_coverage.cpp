@@ -149,6 +149,16 @@ CellCounts ClassCoverage::count_new(std::size_t angle, const std::uint64_t* bits
   return counts;
 }
 
+bool ClassCoverage::reaches(std::size_t angle, const std::uint64_t* bits,
+                            const std::uint64_t* known, CellCounts have,
+                            const CellCounts& need) const {
+  for (std::size_t w = begin_[angle]; w < begin_[angle + 1]; ++w) {
+    if (have.cells >= need.cells && have.floor >= need.floor) return true;
+    add_weights(w, bits[w] & ~known[w], have);
+  }
+  return have.cells >= need.cells && have.floor >= need.floor;
+}
+
 CellCounts ClassCoverage::merge(std::size_t angle, const std::uint64_t* bits, std::uint64_t* words,
                                 std::uint64_t* saved) const {
   CellCounts counts;

@@ -125,8 +125,8 @@ bool RobustBound::may_survive(std::size_t depth, const std::uint64_t* chosen,
       const CellCounts& rest = rest_without_counts_[depth][j][i];
       if (have.cells + rest.cells < need.cells || have.floor + rest.floor < need.floor)
         return false;
-      const CellCounts gain = classes_.count_new(need.angle, rest_without_[depth][j].data(), chosen);
-      if (have.cells + gain.cells < need.cells || have.floor + gain.floor < need.floor)
+      if (!classes_.reaches(need.angle, rest_without_[depth][j].data(), chosen, have,
+                            {need.cells, need.floor}))
         return false;
     }
   }

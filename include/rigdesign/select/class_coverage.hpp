@@ -44,6 +44,10 @@ class ClassCoverage {
   /// Of the classes set in `bits` but not in `known` at `angle`.
   CellCounts count_new(std::size_t angle, const std::uint64_t* bits,
                        const std::uint64_t* known) const;
+  /// Whether `have` plus the classes set in `bits` but not in `known` at `angle` reach
+  /// `need` (cells and floor columns); stops counting as soon as they do.
+  bool reaches(std::size_t angle, const std::uint64_t* bits, const std::uint64_t* known,
+               CellCounts have, const CellCounts& need) const;
   /// Merges `bits` into `words` at `angle` (words |= bits), copying the words it had to
   /// `saved` (one per word of the angle), and returns the cells and floor columns it added:
   /// the search's step down, in one pass over the angle's words instead of three.
