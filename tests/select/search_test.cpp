@@ -231,3 +231,44 @@ TEST_CASE("a robust rig needs a second sensor where one suffices otherwise") {
   CHECK(robust.cost.total == 350);
   CHECK(robust.choice == std::vector<int>{0, 0});
 }
+
+TEST_CASE("the robustness bounds keep the brute-force optimum: n-1 alone, a condition alone, both") {
+  // Issue 32's bounds (every undecided slot's failure survivable from the rest; two covers
+  // under n-1, one surviving under a condition, each with its least price, bandwidth and CPU
+  // load) and the cut of equal-cost subtrees that cannot widen the margins are exact only
+  // if no optimum is lost. After-failure thresholds are drawn on their own: below, equal to
+  // or above the sector's, zero for one part, so neither rule can lean on the other.
+  std::mt19937 rng(20261127);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int feasible = 0;
+  int ties_broken = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    INFO("trial " << trial);
+    select::SearchProblem problem = random_problem(rng);
+    problem.robustness.single_failure = trial % 3 != 1;
+    problem.robustness.condition = trial % 3 != 0;
+    for (select::SearchSector sector : problem.sectors) {
+      sector.min_complete *= 1.2 * unit(rng);
+      sector.min_floor = unit(rng) < 0.3 ? 0.0 : sector.min_floor * 1.2 * unit(rng);
+      problem.robustness.sectors.push_back(sector);
+    }
+    for (auto& slot : problem.slots) {
+      for (select::SearchOption& option : slot) option.survives_condition = unit(rng) < 0.6;
+    }
+    // Equal prices make ties, so the margin cut is exercised.
+    if (trial % 2 == 0) {
+      for (auto& slot : problem.slots)
+        for (select::SearchOption& option : slot) option.price = 300 * std::max(1.0, std::round(option.price / 300));
+    }
+    const select::SearchResult exhaustive = select::brute_force(problem);
+    const select::SearchResult bounded = select::branch_and_bound(problem);
+    REQUIRE(bounded.found == exhaustive.found);
+    if (!exhaustive.found) continue;
+    ++feasible;
+    if (exhaustive.ties > 1) ++ties_broken;
+    CHECK(bounded.cost.total == exhaustive.cost.total);
+    CHECK(bounded.margins == exhaustive.margins);
+  }
+  CHECK(feasible >= 30);
+  CHECK(ties_broken >= 5);
+}
