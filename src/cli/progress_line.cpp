@@ -85,6 +85,13 @@ void ProgressLine::update_share(double share, const std::string& detail) {
   show(detail, share, false);
 }
 
+void ProgressLine::finish(const std::string& task, const std::string& detail, double seconds) {
+  if (mode_ == Mode::off) return;
+  if (!shown_ && mode_ == Mode::terminal) return;  // done before it was worth a line
+  last_shown_ = std::chrono::steady_clock::now();
+  write(task + ": " + detail + " (100 %), " + duration_text(seconds));
+}
+
 void ProgressLine::show(const std::string& count, double share, bool last) {
   const auto now = std::chrono::steady_clock::now();
   const double since = std::chrono::duration<double>(now - last_shown_).count();
@@ -92,7 +99,10 @@ void ProgressLine::show(const std::string& count, double share, bool last) {
   if (!last && since < interval) return;
   if (last && !shown_ && mode_ == Mode::terminal) return;  // done before it was worth a line
   last_shown_ = now;
-  const std::string text = line(count, share);
+  write(line(count, share));
+}
+
+void ProgressLine::write(const std::string& text) {
   if (mode_ == Mode::terminal) {
     err_ << '\r' << text;
     if (text.size() < shown_width_) err_ << std::string(shown_width_ - text.size(), ' ');

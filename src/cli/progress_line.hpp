@@ -27,6 +27,8 @@ class ProgressLine {
   /// A new phase: its own title and unit, and its own clock, so the time left is estimated
   /// from this phase's rate alone.
   void begin(std::string task, std::string unit);
+  /// The phase `task` ended after `seconds`, having done `detail`: its last line.
+  void finish(const std::string& task, const std::string& detail, double seconds);
   /// Erases the line on a terminal, before the command prints to standard output.
   void clear();
   bool enabled() const { return mode_ != Mode::off; }
@@ -35,6 +37,7 @@ class ProgressLine {
   enum class Mode { off, terminal, log };
   std::string line(const std::string& count, double share) const;
   void show(const std::string& count, double share, bool last);
+  void write(const std::string& text);
 
   std::ostream& err_;
   std::string task_;

@@ -153,13 +153,18 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   const select::ProgressSink on_progress = [&](const select::PhaseProgress& at) {
     const std::string title =
         (steps_done ? std::string("select") : "select #" + std::to_string(step)) + ": " + at.phase;
+    if (at.finished) {
+      progress.finish(title, at.detail, at.seconds);
+      shown_phase.clear();
+      return;
+    }
     if (title != shown_phase) {
       progress.begin(title, at.unit);
       shown_phase = title;
     }
     if (at.unit.empty()) {
       progress.update_share(at.done, at.detail + ", share of the tree");
-    } else {
+    } else if (at.done < at.total) {  // the phase's end comes as `finished`
       progress.update(at.done, at.total, at.detail);
     }
   };

@@ -197,7 +197,7 @@ std::vector<std::string> write_selection_files(const SelectReport& report,
   const select::RelaxationIteration* pick = chosen_iteration(*report.outcome);
   if (pick == nullptr) return {};
   const std::string& folder = staged.path();
-  select::PhaseClock clock(phases);
+  select::PhaseClock clock(phases, &progress);
   clock.start("files");
   const double parts = renders ? 5 : 4;
   double done = 0;

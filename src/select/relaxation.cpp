@@ -109,7 +109,7 @@ RelaxationOutcome select_within_budget(
       return outcome;
     }
   }
-  PhaseClock clock(outcome.phases);
+  PhaseClock clock(outcome.phases, &progress);
   clock.start("binding requirements");
   outcome.binding = binding_requirements(space, current, outcome.iterations.back().selection,
                                          budget, progress);

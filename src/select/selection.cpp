@@ -311,7 +311,7 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
       return finish();
     }
   }
-  PhaseClock clock(selection.phases);
+  PhaseClock clock(selection.phases, &progress);
   const auto search_progress = [&](const std::string& phase) {
     return [&progress, phase](const SearchProgress& at) {
       if (progress)

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <stdlib.h>
 
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
@@ -192,4 +193,33 @@ cpus:
   CHECK(result.err.find("--robust") != std::string::npos);
   CHECK(result.err.find("one sensor cannot survive its failure") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(folder.path() + "/out"));
+}
+
+TEST_CASE("select --robust n-1 reports every phase: its end on standard error, a line in the report") {
+  // Issue 32: after the search "about 1 s left" was followed by a minute of silence. Every
+  // phase now ends with its own line (RIGDESIGN_PROGRESS=1: the CI log form) and has a
+  // summary line in the report, in the order they ran.
+  PoseSetup setup;
+  ::setenv("RIGDESIGN_PROGRESS", "1", 1);
+  const CliResult result = setup.select({"--robust", "n-1"});
+  ::unsetenv("RIGDESIGN_PROGRESS");
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  const std::vector<std::string> phases = {"search",
+                                           "exact verification",
+                                           "exact verification of failures",
+                                           "pose refinement",
+                                           "robustness cost"};
+  std::size_t at_err = 0;
+  std::size_t at_out = 0;
+  for (const std::string& phase : phases) {
+    INFO(phase);
+    at_err = result.err.find("select #0: " + phase + ": ", at_err);
+    CHECK(at_err != std::string::npos);
+    CHECK(result.err.find("(100 %), ", at_err) != std::string::npos);
+    at_out = result.out.find("    phase " + phase + ": ", at_out);
+    CHECK(at_out != std::string::npos);
+  }
+  CHECK(result.err.find("select: files: ") != std::string::npos);
+  CHECK(result.out.find("\nphase files: ") != std::string::npos);
 }

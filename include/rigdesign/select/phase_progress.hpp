@@ -16,6 +16,9 @@ struct PhaseProgress {
   double total = 0.0;  ///< 1 when `done` is a share (a search tree's estimated fraction)
   std::string unit;    ///< what is counted ("coverages", "rigs"); "" for a share
   std::string detail;  ///< for a share, shown instead of the count ("97935 nodes")
+  /// The phase has ended: `detail` says what it did, `seconds` how long it took.
+  bool finished = false;
+  double seconds = 0.0;
 };
 using ProgressSink = std::function<void(const PhaseProgress&)>;
 
@@ -26,22 +29,27 @@ struct PhaseTime {
   double seconds = 0.0;
 };
 
-/// Appends a PhaseTime to `log` per start() ... stop() pair.
+/// Appends a PhaseTime to `log` per start() ... stop() pair, and tells `progress` (if any)
+/// that the phase ended.
 class PhaseClock {
  public:
-  explicit PhaseClock(std::vector<PhaseTime>& log) : log_(log) {}
+  explicit PhaseClock(std::vector<PhaseTime>& log, const ProgressSink* progress = nullptr)
+      : log_(log), progress_(progress) {}
   void start(std::string phase) {
     phase_ = std::move(phase);
     started_ = std::chrono::steady_clock::now();
   }
   void stop(std::string work) {
-    log_.push_back({std::move(phase_), std::move(work),
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - started_)
-                        .count()});
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    if (progress_ != nullptr && *progress_)
+      (*progress_)({phase_, 1.0, 1.0, "", work, true, seconds});
+    log_.push_back({std::move(phase_), std::move(work), seconds});
   }
 
  private:
   std::vector<PhaseTime>& log_;
+  const ProgressSink* progress_;
   std::string phase_;
   std::chrono::steady_clock::time_point started_;
 };
