@@ -305,7 +305,8 @@ class BranchAndBound {
     bound.bandwidth += extra.bandwidth;
     bound.cpu += extra.cpu;
     const double least_cost = total_cost(bound, problem_.transfer, problem_.cpus);
-    if (least_cost > result_.cost.total + kCostTie) return false;
+    // No catalog CPU or transfer item carries the least load a completion adds.
+    if (!std::isfinite(least_cost) || least_cost > result_.cost.total + kCostTie) return false;
     // No completion is cheaper than the incumbent: only wider margins can win.
     return !result_.found || least_cost < result_.cost.total - kCostTie || may_widen_margins(depth);
   }

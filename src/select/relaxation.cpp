@@ -56,7 +56,7 @@ std::vector<BindingRequirement> binding_requirements(const SelectionSpace& space
         progress({"binding requirements", done + (at.total > 0 ? at.done / at.total : 0.0),
                   total, "probes", "without " + name + ": " + at.phase});
     };
-    const Selection selection = select_cheapest(space, relaxed, probe, false);
+    const Selection selection = select_cheapest(space, relaxed, probe, /*probe=*/true);
     all.push_back({name, selection.found, selection.found ? selection.cost.total : 0.0});
   }
   std::vector<BindingRequirement> binding;

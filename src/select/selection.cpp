@@ -11,6 +11,7 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/select/pose_refinement.hpp"
+#include "select/infeasibility.hpp"
 #include "select/search_rules.hpp"
 
 namespace rigdesign::select {
@@ -280,7 +281,7 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
 }
 
 Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
-                          const ProgressSink& progress, bool refine) {
+                          const ProgressSink& progress, bool probe) {
   const auto start = std::chrono::steady_clock::now();
   Selection selection;
   const model::Catalog& catalog = space.catalog();
@@ -361,7 +362,7 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
       selection.found = true;
       selection.cost = selection.search.cost;
       selection.grid_rig = selection.rig;
-      if (refine) {
+      if (!probe) {
         clock.start("pose refinement");
         selection.refinement = refine_poses(space, selection, targets, progress);
         const PoseRefinement& r = selection.refinement;
@@ -382,7 +383,7 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
     excluded.push_back(selection.search.choice);
     if (++selection.rejected_by_exact_path >= kMaxExactRejections) break;
   }
-  if (problem.robustness.any()) {
+  if (problem.robustness.any() && !probe) {
     SearchProblem plain = problem;
     plain.robustness = {};
     clock.start("robustness cost");
@@ -392,7 +393,18 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
     if (without.found) selection.cost_without_robustness = without.cost.total;
   }
   if (!selection.found && selection.infeasible_reason.empty()) {
-    selection.infeasible_reason = "no combination of the catalog's options meets every requirement";
+    if (selection.rejected_by_exact_path >= kMaxExactRejections) {
+      selection.infeasible_reason = "the exact path rejected the " +
+                                    std::to_string(kMaxExactRejections) +
+                                    " cheapest raster winners (thresholds within the raster's "
+                                    "error of what the options reach)";
+    } else if (!probe) {
+      clock.start("cause");
+      selection.infeasible_reason = infeasibility_cause(problem, space.options(), targets, space);
+      clock.stop("searches relaxing one constraint at a time");
+    } else {
+      selection.infeasible_reason = "no combination of the catalog's options meets every requirement";
+    }
   }
   return finish();
 }

@@ -257,6 +257,50 @@ TEST_CASE("no rig at any cost does not blame the budget (issue 32)") {
   CHECK(result.exit_code == 1);
   CHECK(result.out.find("budget is below every rig's cost") == std::string::npos);
   CHECK(result.out.find("no rig exists at any cost") != std::string::npos);
+  // The cause is named with the capacity it needed (item 3).
+  CHECK(result.out.find("no rig: CPU: no rig meeting the requirements loads less than the 0.0001 "
+                        "core-equivalents of the catalog's largest CPU, tiny") !=
+        std::string::npos);
+}
+
+TEST_CASE("no rig: a transfer capacity no catalog entry reaches, or an F no sensor meets, is "
+          "named (issue 32)") {
+  SECTION("transfer") {
+    SmallSetup setup;
+    // 1 kbit/s carries no sensor's frames (a D435's depth alone is about 200 Mbit/s).
+    std::string catalog = small_catalog();
+    const std::string link = "capacity_bps: 3.0e9";
+    catalog.replace(catalog.find(link), link.size(), "capacity_bps: 1.0e3");
+    setup.folder.write("catalog.yaml", catalog);
+    const CliResult result = setup.select("1000000");
+    INFO(result.out << result.err);
+    CHECK(result.exit_code == 1);
+    CHECK(result.out.find("no rig: transfer: no rig meeting the requirements sends less than "
+                          "the 1e-06 Gbit/s of the catalog's largest transfer item, onboard") !=
+          std::string::npos);
+    CHECK(result.out.find("no rig: CPU") == std::string::npos);
+  }
+  SECTION("F") {
+    // 1 m/s with at most 5 mm between frames asks F >= 200 Hz; the catalog's fastest mode is
+    // the D435's z16_848x480_30 at 30 fps.
+    SmallSetup setup(R"(name: Fast app
+body: {radius: 0.3, height: 0.8}
+sectors:
+  - {name: front, from_deg: -10, to_deg: 10, min_complete_coverage: 0.3, min_floor_coverage: 0.5}
+range: {distance: 2.5}
+robot_speed: {max_speed: 1.0, max_travel_between_frames: 0.005}
+)");
+    const CliResult result =
+        run_cli({"select", "--catalog", setup.catalog, "--requirements", setup.requirements,
+                 "--budget", "1000000", "--step", "10", "--no-renders", "--out",
+                 setup.folder.path() + "/out"});
+    INFO(result.out << result.err);
+    CHECK(result.exit_code == 1);
+    CHECK(result.out.find("no rig: F: no sensor mode of the catalog runs at 200 Hz or faster "
+                          "(the fastest: 30 Hz)") != std::string::npos);
+    CHECK(result.out.find("R5 robot_speed: without it the cheapest rig costs ") !=
+          std::string::npos);
+  }
 }
 
 TEST_CASE("select --robust n-1 with a required sector seen from one slot only: exit 1 naming "

@@ -165,7 +165,7 @@ void check_against_brute_force(const std::string& catalog_text,
     requirements.sectors = sectors;
     requirements.distance = catalog.distance_of_interest;
     const select::Selection selection =
-        select::select_cheapest(space, requirements, {}, /*refine=*/false);
+        select::select_cheapest(space, requirements, {}, /*probe=*/true);
     const double expected = brute_force_cost(catalog, library, sectors, settings);
     INFO("front " << sectors[0].min_complete_coverage << "/" << sectors[0].min_floor_coverage);
     REQUIRE(selection.found == std::isfinite(expected));

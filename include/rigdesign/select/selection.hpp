@@ -57,6 +57,8 @@ class SelectionSpace {
   const metrics::CoverageSettings& settings() const { return settings_; }
   const std::vector<geometry::RasterGrid>& grids() const { return grids_; }
   std::size_t option_count() const;
+  /// Every option, per slot (before any requirement filters them).
+  const std::vector<std::vector<CatalogOption>>& options() const { return options_; }
   double angle(std::size_t index) const;
 
   /// The search problem for `targets`: per slot, the options that meet F, R, N and L on
@@ -139,9 +141,10 @@ std::vector<FailureImpact> failure_impacts(
 /// The cheapest rig meeting `requirements`, proven optimal on the raster path and verified
 /// on the exact path (a raster winner the exact path rejects is excluded and the search
 /// runs again).
-/// `refine`: refine the chosen poses continuously (off for the binding-requirement probes).
-/// `progress` hears every phase (search, exact verification, pose refinement, robustness cost).
+/// `progress` hears every phase (search, exact verification, pose refinement, robustness
+/// cost, the cause when there is no rig). `probe`: the search and its exact verification
+/// only, as the binding-requirement probes need (no refinement, robustness cost or cause).
 Selection select_cheapest(const SelectionSpace& space, const model::Requirements& requirements,
-                          const ProgressSink& progress = {}, bool refine = true);
+                          const ProgressSink& progress = {}, bool probe = false);
 
 }  // namespace rigdesign::select

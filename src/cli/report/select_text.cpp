@@ -113,8 +113,8 @@ void print_exhausted(const SelectReport& report, const select::RelaxationIterati
     out << "  none alone: the budget is below every rig's cost\n";
   if (report.outcome->binding.empty() && cheapest == nullptr) {
     out << "  none alone: no rig exists at any cost, and dropping any one requirement does not "
-           "make one (several requirements together, or a CPU or transfer capacity no catalog "
-           "entry reaches)\n";
+           "make one; the cause: "
+        << report.outcome->iterations.back().selection.infeasible_reason << '\n';
   }
   for (const select::BindingRequirement& item : report.outcome->binding) {
     out << "  " << item.requirement << ": without it the cheapest rig costs "
