@@ -113,9 +113,9 @@ TEST_CASE("requirements no candidate can meet are reported, exit 1") {
                    "name: none\nsteps: []\n");
   const CliResult result = setup.select("5000");
   CHECK(result.exit_code == 1);
-  CHECK(
-      result.out.find("no rig: no combination of the catalog's options meets every requirement") !=
-      std::string::npos);
+  // Named as the metric no mode meets (issue 32), not as "no combination".
+  CHECK(result.out.find("no rig: N: no sensor mode of the catalog is within 1 mm noise (the "
+                        "least: ") != std::string::npos);
 }
 
 TEST_CASE("select: bad input is exit 2 with the file and line") {
