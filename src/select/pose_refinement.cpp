@@ -214,6 +214,7 @@ PoseRefinement refine_poses(const SelectionSpace& space, const Selection& select
   }
   if (parameters.empty()) return refinement;
   refinement.tried = true;
+  refinement.counts_failures = targets.robustness && targets.robustness->any();
 
   RasterMargins margins(space, targets, selection.rig);
   std::vector<double> best = margins.margins();

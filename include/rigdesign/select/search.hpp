@@ -84,7 +84,9 @@ struct SearchResult {
   /// complete and floor (raster); +infinity without sectors.
   double margin = 0.0;
   std::vector<double> margins;  ///< each sector's smallest margin, smallest first (leximin)
-  long ties = 0;  ///< feasible rigs found at the optimum's cost (1: no tie to break)
+  /// feasible rigs evaluated at the optimum's cost (1: no tie to break); the branch and bound
+  /// cuts equal-cost subtrees that cannot widen the margins, so it may count fewer than exist
+  long ties = 0;
   long nodes = 0;        ///< nodes of the search tree visited
   long evaluations = 0;  ///< rigs whose coverage was evaluated
   long dominated = 0;    ///< options never tried: another of their slot dominates them

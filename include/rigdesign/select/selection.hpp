@@ -99,6 +99,8 @@ struct PoseRefinement {
   bool accepted = false;  ///< the exact path confirms the refined rig
   double grid_margin = 0.0;     ///< smallest raster margin of the grid optimum [share]
   double refined_margin = 0.0;  ///< of the refined poses
+  /// The margins compared include each after-failure margin (robustness asked).
+  bool counts_failures = false;
   int evaluations = 0;          ///< rigs rasterised by the compass search
   std::vector<RefinedAxis> axes;
   std::vector<std::array<double, 6>> values;  ///< per mount: its pose values after refinement

@@ -66,8 +66,13 @@ std::string describe(const select::PoseRefinement& refinement) {
                         : refinement.refined_margin > refinement.grid_margin
                             ? "the exact path turned it down: the grid poses stand"
                             : "no move widened the margin: the grid poses stand";
-  return moves + "; smallest margin " + model::format_number(100 * refinement.grid_margin, 3) +
-         " -> " + model::format_number(100 * refinement.refined_margin, 3) + " points (" +
+  // Margins are compared smallest first: a move may widen the next smallest only.
+  const bool same_smallest = refinement.refined_margin == refinement.grid_margin;
+  return moves + "; smallest margin" +
+         (refinement.counts_failures ? std::string(", after failures included,") : "") + " " +
+         model::format_number(100 * refinement.grid_margin, 3) + " -> " +
+         model::format_number(100 * refinement.refined_margin, 3) + " points" +
+         (same_smallest && refinement.accepted ? " (a larger one widened)" : "") + " (" +
          std::to_string(refinement.evaluations) + " rigs), " + verdict;
 }
 

@@ -30,9 +30,10 @@ void print_found_rig(const SelectReport& report, const select::RelaxationIterati
         << '\n';
   }
   if (selection.search.ties > 1) {
-    out << "      " << selection.search.ties
-        << " rigs of this cost meet the requirements: chose the one with the largest margins "
-           "to the sector thresholds, compared smallest first (smallest "
+    out << "      rigs of equal cost meet the requirements (" << selection.search.ties
+        << " compared; the search cut those that could not widen the margins): chose the one "
+           "with the largest margins to the sector thresholds, compared smallest first "
+           "(smallest "
         << model::format_number(100 * selection.search.margin, 3) << " points)\n";
   }
   if (selection.refinement.tried)
