@@ -3,8 +3,9 @@
 // assignment of the same problem for the ratio; on the bundled pose-range catalog (159
 // options) and on the same with finer steps (303 options, written here), branch and bound
 // alone (brute force would visit 10^13 assignments), for the growth; on the Jackal's own
-// description (171 options) the whole select, loading and rasterising included. Counters report
-// nodes, rigs evaluated and the time per evaluated rig. Run through scripts/bench.sh select.
+// description (171 options) the whole select, loading and rasterising included; with any one
+// failure to survive (issue 32) on 31, 159 and 303 options. Counters report nodes, rigs
+// evaluated and the time per evaluated rig. Run through scripts/bench.sh select.
 #include <benchmark/benchmark.h>
 
 #include <cstring>
@@ -45,13 +46,18 @@ std::string finer_catalog() {
   return path;
 }
 
+constexpr const char* kPlainRequirements = RIGDESIGN_SOURCE_DIR "/rigs/requirements/ur_cleaner.yaml";
+// The same with any one sensor's failure to survive (issue 32).
+constexpr const char* kRobustRequirements =
+    RIGDESIGN_SOURCE_DIR "/rigs/requirements/ur_cleaner_robust.yaml";
+
 struct Bundled {
-  explicit Bundled(const std::string& file = RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner.yaml")
-      : catalog(io::load_catalog(file)) {}
+  explicit Bundled(const std::string& file = RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner.yaml",
+                   const std::string& requirements_file = kPlainRequirements)
+      : catalog(io::load_catalog(file)), requirements(io::load_requirements(requirements_file)) {}
   model::Catalog catalog;
   model::SensorLibrary library = io::load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
-  model::Requirements requirements =
-      io::load_requirements(RIGDESIGN_SOURCE_DIR "/rigs/requirements/ur_cleaner.yaml");
+  model::Requirements requirements;
   select::SelectionSpace space{catalog, library};
   std::vector<std::vector<const select::CatalogOption*>> kept;
   select::SearchProblem problem =
@@ -71,6 +77,15 @@ const Bundled& pose_ranges() {
 const Bundled& finer_pose_ranges() {
   static const Bundled instance(finer_catalog());
   return instance;
+}
+
+const Bundled& robust(int options) {
+  static const Bundled bundled31(RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner.yaml",
+                                 kRobustRequirements);
+  static const Bundled ranges159(RIGDESIGN_SOURCE_DIR "/rigs/catalogs/ur_cleaner_pose_ranges.yaml",
+                                 kRobustRequirements);
+  static const Bundled finer303(finer_catalog(), kRobustRequirements);
+  return options == 31 ? bundled31 : options == 159 ? ranges159 : finer303;
 }
 
 void report(benchmark::State& state, const select::SearchResult& result) {
@@ -130,6 +145,25 @@ void BM_SelectJackalDescription171(benchmark::State& state) {
   state.counters["options"] = static_cast<double>(options);
 }
 
+// Issue 32: the search with any one failure to survive, and the whole select_cheapest
+// (search, exact verification of the rig and each failure, pose refinement, robustness
+// cost), on 31, 159 and 303 options. On the fixed-slot 31 no rig survives the front
+// camera's failure: select decides that before the search (sector_needing_one_slot).
+void BM_BranchAndBoundRobust(benchmark::State& state) {
+  const Bundled& b = robust(static_cast<int>(state.range(0)));
+  select::SearchResult result;
+  for (auto _ : state) result = select::branch_and_bound(b.problem);
+  report(state, result);
+}
+
+void BM_SelectRobust(benchmark::State& state) {
+  const Bundled& b = robust(static_cast<int>(state.range(0)));
+  select::Selection selection;
+  for (auto _ : state) selection = select::select_cheapest(b.space, b.requirements);
+  state.counters["cost_usd"] = selection.found ? selection.cost.total : 0.0;
+  state.counters["nodes"] = static_cast<double>(selection.search.nodes);
+}
+
 void BM_BruteForce(benchmark::State& state) {
   select::SearchResult result;
   for (auto _ : state) result = select::brute_force(bundled().problem);
@@ -167,6 +201,21 @@ BENCHMARK(BM_SelectPoseRanges159)
     ->Repetitions(3)
     ->ReportAggregatesOnly();
 BENCHMARK(BM_SelectJackalDescription171)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_BranchAndBoundRobust)
+    ->Arg(159)
+    ->Arg(303)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_SelectRobust)
+    ->Arg(31)
+    ->Arg(159)
+    ->Arg(303)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Repetitions(3)
