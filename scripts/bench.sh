@@ -7,6 +7,8 @@
 #   scripts/bench.sh occupancy       # ours vs OctoMap on the cell
 #   scripts/bench.sh localize_matrix # the localisation test matrix (independent generator):
 #                                    # errors against paper 4's WLS and 95 % region coverage
+#   scripts/bench.sh localize_frozen # the frozen validation set (a second generator, seeds
+#                                    # fixed before tuning; issue 33): report, never tune
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 only="${1:-}"
@@ -35,5 +37,8 @@ if [ -z "$only" ] || [ "$only" = "localize_matrix" ]; then
     python3 "$root/scripts/localize/matrix_benchmark.py" "$build/src/rigdesign" \
       --runs-per-path 50 --seed "$seed"
   done
+fi
+if [ -z "$only" ] || [ "$only" = "localize_frozen" ]; then
+  python3 "$root/scripts/localize/frozen_benchmark.py" "$build/src/rigdesign"
 fi
 echo "load average after the run: $(cut -d' ' -f1-3 /proc/loadavg)"

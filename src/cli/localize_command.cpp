@@ -294,7 +294,8 @@ void add_kpi_scenario_and_gas_options(CLI::App* app, LocalizeOptions& options) {
                   "Scenario loss per wall [dB] (default 8)")
       ->check(finite_in(0, 60, "a loss in [0, 60] dB"));
   app->add_option("--time-constant", options.gas.time_constant,
-                  "CO2 sensor time constant for the lag correction [s]")
+                  "CO2 sensor time constant for the lag correction [s] (default 20: the "
+                  "SCD30's tau63, paper 4's sensor)")
       ->check(finite_in(0, 3600, "a time constant in [0, 3600] s"));
   app->add_option("--sample-period", options.gas.sample_period,
                   "Seconds per reading of an untimed CO2 log (default 1)")

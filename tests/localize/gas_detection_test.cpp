@@ -78,9 +78,14 @@ TEST_CASE(
   CHECK(detections[0].trigger_index == 41);
   CHECK(detections[0].position.x() == 44);
   CHECK(detections[0].threshold_ppm == Approx(540));
-  // Lag: 5 s time constant + 2 readings of the trailing average at 1 s each = 7 s = 7 m back.
+  // Lag: the SCD30's 20 s time constant + 2 readings of the trailing average at 1 s each =
+  // 22 s = 22 m back at 1 m per reading; with an assumed 5 s sensor, 7 s = 7 m.
+  CHECK(localize::detection_lag(log, params) == Approx(22.0));
+  CHECK(detections[0].lag_corrected.x() == Approx(44.0 - 22.0));
+  params.time_constant = 5.0;
   CHECK(localize::detection_lag(log, params) == Approx(7.0));
-  CHECK(detections[0].lag_corrected.x() == Approx(37.0));
+  CHECK(localize::detect_gas(log, localize::GasThreshold::relative, params)[0].lag_corrected.x() ==
+        Approx(37.0));
 }
 
 TEST_CASE(

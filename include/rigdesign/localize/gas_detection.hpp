@@ -26,9 +26,11 @@ struct GasDetectionParams {
   int min_baseline = 10;              ///< readings needed before the relative mode detects
   double mad_factor = 6.0;            ///< k in median + k * 1.4826 MAD
   double min_rise_ppm = 50.0;         ///< the relative threshold is at least this above the median
-  /// Sensor time constant [s]: an NDIR CO2 sensor reads a step with a first-order lag (an
-  /// assumed 5 s; paper 4 does not state its sensor's).
-  double time_constant = 5.0;
+  /// Sensor time constant [s]: an NDIR CO2 sensor reads a step with a first-order lag, which
+  /// reaches 63 % of a step after one time constant and trails a ramp by it. Paper 4's
+  /// sensor, the Sensirion SCD30, responds to a rising edge in 20 s (paper 4; the SCD30
+  /// datasheet, v1.0 May 2020, section 1: response time tau63 = 20 s).
+  double time_constant = 20.0;
   double sample_period = 1.0;  ///< [s] between readings of an untimed log (assumed)
 };
 
