@@ -3,6 +3,7 @@
 // the KPIs against ground truth, a top-view plot, and `--seeds N --table` for the accuracy
 // study across seeds (docs/localize.md).
 #include <CLI/CLI.hpp>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -211,6 +212,21 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   if (!std::isnan(options.scan_period_s))
     resolved.params.scans.scan_period_s = options.scan_period_s;
   if (!options.walls.empty()) resolved.params.walls = io::read_walls_csv(options.walls);
+  if (!options.search_area.empty()) {
+    const std::vector<double>& area = options.search_area;
+    // A site, not a continent: the posterior grid's cells grow with the area.
+    constexpr double kLargestSide = 10000.0;  // [m]
+    require_option(area[0] < area[2] && area[1] < area[3] && area[2] - area[0] <= kLargestSide &&
+                       area[3] - area[1] <= kLargestSide,
+                   "--search-area",
+                   "is " + model::format_number(area[0]) + " " + model::format_number(area[1]) +
+                       " " + model::format_number(area[2]) + " " + model::format_number(area[3]),
+                   "X0 Y0 X1 Y1 [m] with X0 < X1, Y0 < Y1 and sides of at most 10 km");
+    resolved.params.fit.search_area =
+        std::array<model::Vec2, 2>{model::Vec2(area[0], area[1]), model::Vec2(area[2], area[3])};
+    // The user's area is the prior; the path prior applies only when asked for as well.
+    if (!options.path_prior_given) resolved.params.fit.path_prior_scale = 0.0;
+  }
   return run_resolved(resolved, out, err);
 }
 
@@ -249,9 +265,15 @@ void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
       ->check(finite_in(0, 10, "0 or a sd in (0, 10]"));
   app->add_option("--path-prior", options.params.fit.path_prior_scale,
                   "nls: prior on the position falling as exp(-distance from the path / M) "
-                  "(0: uniform over the search box) [m]")
+                  "(0: uniform over the search box; off with --search-area unless given) [m]")
       ->capture_default_str()
-      ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"));
+      ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"))
+      ->each([&options](const std::string&) { options.path_prior_given = true; });
+  app->add_option("--search-area", options.search_area,
+                  "nls: the rectangle X0 Y0 X1 Y1 [m, the log's frame] the emitter is searched "
+                  "in: a uniform prior there, nothing outside")
+      ->expected(4)
+      ->check(finite_in(-1e8, 1e8, "coordinates in [-1e8, 1e8] m"));
   app->add_flag("!--no-correlation", options.params.fit.correlated_shadowing,
                 "nls: treat scans as independent (no tempering for correlated shadowing)");
   app->add_option("--floor", options.floor_dbm,

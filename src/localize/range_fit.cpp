@@ -33,6 +33,7 @@ constexpr double kMinSigma = 0.5, kMaxSigma = 30.0;  // [dB] sigma's search inte
 
 detail::SearchBox search_box(const ScanSeries& series, const PathLossParams& path_loss,
                              const RangeFitParams& params) {
+  if (params.search_area) return {(*params.search_area)[0], (*params.search_area)[1]};
   detail::SearchBox box{model::Vec2::Constant(std::numeric_limits<double>::max()),
                         model::Vec2::Constant(std::numeric_limits<double>::lowest())};
   std::vector<double> ranges;

@@ -1,3 +1,4 @@
+#include <array>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -142,4 +143,34 @@ TEST_CASE("localize: a log in UTM coordinates gives the same estimate, moved (is
   // by far less than a centimetre.
   CHECK(utm[0].get<double>() - dx == Approx(local[0].get<double>()).margin(0.01));
   CHECK(utm[1].get<double>() - dy == Approx(local[1].get<double>()).margin(0.01));
+}
+
+TEST_CASE("localize --search-area: the estimate lies in the area the user searches (issue 33)",
+          "[localize]") {
+  // The loop scenario's phone stands near (1.0, -0.8) (docs/localize.md). A search area that
+  // leaves it out must still give hypotheses inside the area (a uniform prior there, none
+  // outside); one that holds it must give the first hypothesis inside too.
+  TempFolder folder;
+  REQUIRE(run_cli({"localize", "--scenario", "loop", "--seed", "2", "--out", folder.path()})
+              .exit_code == 0);
+  const std::string log = folder.path() + "/loop_seed2_rssi.csv";
+  for (const std::array<double, 4>& area : {std::array<double, 4>{-20, -20, 20, 20},
+                                            std::array<double, 4>{5, 5, 15, 15}}) {
+    std::vector<std::string> args = {"localize", "--log", log, "--json", "--search-area"};
+    for (const double v : area) args.push_back(std::to_string(v));
+    const CliResult result = run_cli(args);
+    INFO(result.out << result.err);
+    REQUIRE(result.exit_code == 0);
+    const auto hypotheses =
+        nlohmann::json::parse(result.out)["logs"][0]["emitters"][0]["hypotheses"];
+    REQUIRE(!hypotheses.empty());
+    for (const auto& hypothesis : hypotheses) {
+      const double x = hypothesis["position"][0].get<double>();
+      const double y = hypothesis["position"][1].get<double>();
+      CHECK(x >= area[0] - 1e-9);
+      CHECK(x <= area[2] + 1e-9);
+      CHECK(y >= area[1] - 1e-9);
+      CHECK(y <= area[3] + 1e-9);
+    }
+  }
 }

@@ -15,6 +15,7 @@
 /// probability of its basin, and its highest-density region of 95 % is the stated uncertainty.
 /// Modes whose probabilities differ by less than what the noise can tell (likelihood-ratio
 /// test at 95 %: ratio above exp(-3.84 / 2)) are reported as ambiguous, not ranked.
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -37,6 +38,10 @@ struct RangeFitParams {
   /// robot explores; without it, a circling path lets a wide plateau of far positions (each
   /// fitting with a strong transmitter) outweigh the emitter by its area alone.
   double path_prior_scale = 3.0;
+  /// The area the user searches (a rectangle in the log's frame, [m]): the prior on the
+  /// position is uniform inside it and zero outside, and the posterior is evaluated there
+  /// alone (issue 33: a prior the user states instead of one that assumes where emitters lie).
+  std::optional<std::array<model::Vec2, 2>> search_area;
   /// Height between the robot's antenna and the emitter, unknown, taken as this [m].
   double vertical_offset = 0.6;
   /// Temper the likelihood by the effective-sample share of correlated shadowing.
