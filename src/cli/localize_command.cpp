@@ -212,6 +212,8 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   if (!std::isnan(options.scan_period_s))
     resolved.params.scans.scan_period_s = options.scan_period_s;
   if (!options.walls.empty()) resolved.params.walls = io::read_walls_csv(options.walls);
+  // The range fit lists first the hypothesis most likely within the acceptable error.
+  resolved.params.fit.decision_radius = options.kpi.acceptable_error;
   if (!options.search_area.empty()) {
     const std::vector<double>& area = options.search_area;
     // A site, not a continent: the posterior grid's cells grow with the area.

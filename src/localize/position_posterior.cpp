@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace rigdesign::localize {
@@ -61,6 +62,22 @@ PositionPosterior make_posterior(const model::Vec2& origin, double cell, int col
   posterior.log_total = best + std::log(total * cell * cell);
   posterior.log_density = std::move(log_density);
   return posterior;
+}
+
+double PositionPosterior::mass_within(const model::Vec2& point, double radius) const {
+  double mass = 0.0;
+  const int reach = static_cast<int>(std::ceil(radius / cell)) + 1;
+  const model::Vec2 offset = (point - origin) / cell;
+  const int c0 = static_cast<int>(std::floor(offset.x())), r0 = static_cast<int>(std::floor(offset.y()));
+  for (int r = std::max(0, r0 - reach); r <= std::min(rows - 1, r0 + reach); ++r) {
+    for (int c = std::max(0, c0 - reach); c <= std::min(columns - 1, c0 + reach); ++c) {
+      const double value = log_density[static_cast<std::size_t>(r) * columns + c];
+      if (value == -std::numeric_limits<double>::infinity()) continue;
+      if ((centre(c, r) - point).norm() > radius) continue;
+      mass += std::exp(value - log_total) * cell * cell;
+    }
+  }
+  return mass;
 }
 
 }  // namespace rigdesign::localize

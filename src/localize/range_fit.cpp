@@ -290,7 +290,7 @@ RangeFitResult fit_ranges(const ScanSeries& series, const PathLossParams& path_l
   struct Candidate {
     const detail::PosteriorMode* mode;
     model::Vec2 peak;
-    double probability;
+    double probability;  // the basin's, Laplace-corrected for a peak sharper than the cells
   };
   std::vector<Candidate> candidates;
   double grid_share = 0.0, corrected_share = 0.0;
@@ -311,8 +311,12 @@ RangeFitResult fit_ranges(const ScanSeries& series, const PathLossParams& path_l
   const double total_share = 1.0 - grid_share + corrected_share;
   std::sort(candidates.begin(), candidates.end(),
             [](const Candidate& a, const Candidate& b) { return a.probability > b.probability; });
+  // Mass the cells miss at a sharp peak (Laplace minus grid share), per hypothesis: it sits
+  // at the peak, within any decision radius of it.
+  std::vector<double> missed_by_cells;
   for (const Candidate& candidate : candidates) {
     const double probability = candidate.probability / total_share;
+    const double missed = (candidate.probability - candidate.mode->probability) / total_share;
     const model::Vec2& peak = candidate.peak;
     // Basins whose peaks refine to one point are one hypothesis.
     const auto same = std::find_if(
@@ -321,6 +325,7 @@ RangeFitResult fit_ranges(const ScanSeries& series, const PathLossParams& path_l
         });
     if (same != result.hypotheses.end()) {
       same->probability += probability;
+      missed_by_cells[static_cast<std::size_t>(same - result.hypotheses.begin())] += missed;
       continue;
     }
     if (probability < params.min_reported_probability) continue;
@@ -336,7 +341,20 @@ RangeFitResult fit_ranges(const ScanSeries& series, const PathLossParams& path_l
     h.probability = probability;
     h.side = side_of_path(series.scans, peak);
     result.hypotheses.push_back(h);
+    missed_by_cells.push_back(missed);
   }
+  // Listed by the probability within the decision radius (RangeFitParams::decision_radius).
+  for (std::size_t i = 0; i < result.hypotheses.size(); ++i) {
+    Hypothesis& h = result.hypotheses[i];
+    h.probability_nearby = std::min(
+        1.0, search.posterior.mass_within(h.position.head<2>(), params.decision_radius) /
+                     total_share +
+                 missed_by_cells[i]);
+  }
+  std::stable_sort(result.hypotheses.begin(), result.hypotheses.end(),
+                   [](const Hypothesis& a, const Hypothesis& b) {
+                     return a.probability_nearby > b.probability_nearby;
+                   });
   // Whether the path's distances to the best hypothesis tell the exponent (a circle around it
   // does not): otherwise its estimate rests on the prior, which the report says.
   if (params.exponent_prior > 0 && !result.hypotheses.empty()) {

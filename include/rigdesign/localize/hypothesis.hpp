@@ -14,6 +14,9 @@ struct Hypothesis {
   double cost = 0.0;            ///< the estimator's objective at the position (lower is better)
   /// Share of the posterior probability in this hypothesis' basin (1 for a single estimate).
   double probability = 1.0;
+  /// Posterior probability within the decision radius of the position (range fit): how likely
+  /// the emitter lies within the acceptable error of it. The range fit lists this first.
+  double probability_nearby = 0.0;
   double level_sd_db = 0.0;  ///< posterior sd of the 1 m level at the position (nls) [dB]
   double exponent_sd = 0.0;  ///< posterior sd of the exponent (nls; 0 when fixed)
   /// Side of the robot's path the position lies on, facing the direction of travel (REP-103:

@@ -27,6 +27,8 @@ struct PositionPosterior {
   /// The probability mass of the cells denser than the one holding `point`: the smallest
   /// credible level whose highest-density region contains it (1 outside the evaluated cells).
   double credible_level(const model::Vec2& point) const;
+  /// The probability of the evaluated cells whose centres lie within `radius` of `point`.
+  double mass_within(const model::Vec2& point, double radius) const;
 };
 
 /// A posterior from a grid of unnormalised log densities (-inf: not evaluated): its total and

@@ -52,6 +52,12 @@ struct RangeFitParams {
   /// Their probabilities (basin masses) may still differ, e.g. by how wide each peak is.
   double ambiguity_log_ratio = 1.92;
   double min_mode_separation = 2.0;        ///< [m] closer modes are one hypothesis
+  /// The hypotheses are listed by their posterior probability within this distance [m]: the
+  /// first is the point most likely to lie within the acceptable error of the emitter (the
+  /// KPI's radius: paper 4's acceptable error, DARPA's 5 m). Listing by basin share instead
+  /// put a wide basin first, however thinly spread (issue 33: on a loop round the phone,
+  /// the far plateau or the path's band).
+  double decision_radius = 5.0;
   double min_reported_probability = 0.01;  ///< weaker modes are not listed
   /// The search grid reaches this far beyond the scans: at least `min_margin`, at most
   /// `max_margin`, else 1.5 times the median distance the heard readings imply [m].
