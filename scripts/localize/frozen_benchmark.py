@@ -4,7 +4,7 @@
 Usage:
   frozen_benchmark.py RIGDESIGN_BINARY [--out DIR] [--json FILE] [--no-walls] [--extra ARG ...]
 
-Generates the 25 frozen logs (5 classes x seeds 101-105) into a temporary directory (or
+Generates the 250 frozen logs (5 classes x seeds 101-150) into a temporary directory (or
 --out), runs for each
   RIGDESIGN localize --log <stem>_rssi.csv --truth <stem>_truth.csv
                      --walls <stem>_walls.csv --method all --json [extra args]
