@@ -226,8 +226,6 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
                    "X0 Y0 X1 Y1 [m] with X0 < X1, Y0 < Y1 and sides of at most 10 km");
     resolved.params.fit.search_area =
         std::array<model::Vec2, 2>{model::Vec2(area[0], area[1]), model::Vec2(area[2], area[3])};
-    // The user's area is the prior; the path prior applies only when asked for as well.
-    if (!options.path_prior_given) resolved.params.fit.path_prior_scale = 0.0;
   }
   return run_resolved(resolved, out, err);
 }
@@ -266,16 +264,20 @@ void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
       ->capture_default_str()
       ->check(finite_in(0, 10, "0 or a sd in (0, 10]"));
   app->add_option("--path-prior", options.params.fit.path_prior_scale,
-                  "nls: prior on the position falling as exp(-distance from the path / M) "
-                  "(0: uniform over the search box; off with --search-area unless given) [m]")
+                  "nls: a prior on the position falling as exp(-sqrt(distance from the path) / M), "
+                  "for comparison only: it assumes emitters lie near the path (0: off) [m]")
       ->capture_default_str()
-      ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"))
-      ->each([&options](const std::string&) { options.path_prior_given = true; });
+      ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"));
   app->add_option("--search-area", options.search_area,
                   "nls: the rectangle X0 Y0 X1 Y1 [m, the log's frame] the emitter is searched "
-                  "in: a uniform prior there, nothing outside")
+                  "in: a uniform prior there, nothing outside (default: the explored area)")
       ->expected(4)
       ->check(finite_in(-1e8, 1e8, "coordinates in [-1e8, 1e8] m"));
+  app->add_option("--search-margin", options.params.fit.search_margin,
+                  "nls: without --search-area, the explored area is the path's bounding box "
+                  "grown by this [m]")
+      ->capture_default_str()
+      ->check(finite_in(0, 1000, "a distance in [0, 1000] m"));
   app->add_flag("!--no-correlation", options.params.fit.correlated_shadowing,
                 "nls: treat scans as independent (no tempering for correlated shadowing)");
   app->add_option("--floor", options.floor_dbm,

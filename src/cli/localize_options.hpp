@@ -26,7 +26,6 @@ struct LocalizeOptions {
   double floor_dbm = std::numeric_limits<double>::quiet_NaN();      // --floor, NaN: not given
   double scan_period_s = std::numeric_limits<double>::quiet_NaN();  // --scan-period
   std::vector<double> search_area;  // --search-area X0 Y0 X1 Y1 [m], empty: not given
-  bool path_prior_given = false;    // --path-prior on the command line
   std::string gas_truth;
   localize::LocalizeParams params;
   localize::ScenarioParams scenario_params;

@@ -31,24 +31,6 @@ constexpr std::size_t kMaxCandidates = 16;           // modes refined, strongest
 constexpr double kCurvatureStep = 0.02;              // of a cell, for the Laplace curvature
 constexpr double kMinSigma = 0.5, kMaxSigma = 30.0;  // [dB] sigma's search interval
 
-detail::SearchBox search_box(const ScanSeries& series, const PathLossParams& path_loss,
-                             const RangeFitParams& params) {
-  if (params.search_area) return {(*params.search_area)[0], (*params.search_area)[1]};
-  detail::SearchBox box{model::Vec2::Constant(std::numeric_limits<double>::max()),
-                        model::Vec2::Constant(std::numeric_limits<double>::lowest())};
-  std::vector<double> ranges;
-  for (const Scan& scan : series.scans) {
-    box.low = box.low.cwiseMin(scan.position.head<2>());
-    box.high = box.high.cwiseMax(scan.position.head<2>());
-    if (scan.heard) ranges.push_back(range_from_rssi(scan.rssi_dbm, path_loss));
-  }
-  const double margin =
-      std::clamp(1.5 * model::median(ranges), params.min_margin, params.max_margin);
-  box.low -= model::Vec2::Constant(margin);
-  box.high += model::Vec2::Constant(margin);
-  return box;
-}
-
 // Nelder-Mead on the profile log density from `start`: the grid's cell centre refined to the
 // continuous maximum. Two dimensions, so a few dozen evaluations.
 // The search stays in the box: the posterior is only evaluated (and normalised) there.
@@ -218,6 +200,18 @@ std::optional<double> laplace_share(const CensoredLikelihood& model, const model
 
 }  // namespace
 
+std::array<model::Vec2, 2> search_area_of(const ScanSeries& series, const RangeFitParams& params) {
+  if (params.search_area) return *params.search_area;
+  model::Vec2 low = model::Vec2::Constant(std::numeric_limits<double>::max());
+  model::Vec2 high = model::Vec2::Constant(std::numeric_limits<double>::lowest());
+  for (const Scan& scan : series.scans) {
+    low = low.cwiseMin(scan.position.head<2>());
+    high = high.cwiseMax(scan.position.head<2>());
+  }
+  const model::Vec2 margin = model::Vec2::Constant(params.search_margin);
+  return {low - margin, high + margin};
+}
+
 bool indistinguishable(const Hypothesis& a, const Hypothesis& b, const RangeFitParams& params) {
   return std::abs(a.cost - b.cost) <= params.ambiguity_log_ratio;
 }
@@ -260,7 +254,8 @@ RangeFitResult fit_ranges(const ScanSeries& series, const PathLossParams& path_l
   settings.vertical_offset = params.vertical_offset;
   settings.path_prior_scale = params.path_prior_scale;
   settings.walls = walls;
-  const detail::SearchBox box = search_box(series, path_loss, params);
+  result.search_area = search_area_of(series, params);
+  const detail::SearchBox box{result.search_area[0], result.search_area[1]};
 
   // A first look with the exponent fixed (a robust start): sigma and the share assumed, then
   // measured at the best point found; then once more with the exponent free under its prior,

@@ -157,8 +157,9 @@ TEST_CASE("collinear positions are reported as degenerate, with both mirror imag
   const model::Vec2 mirror(2.0, -3.0);
   const model::Vec2 a = nls.hypotheses[0].position.head<2>();
   const model::Vec2 b = nls.hypotheses[1].position.head<2>();
+  // Each peak is refined until the simplex is 1 cm across (kPeakTolerance): within ~1.5 cm each.
   CHECK(std::min((a - emitter.head<2>()).norm() + (b - mirror).norm(),
-                 (a - mirror).norm() + (b - emitter.head<2>()).norm()) < 2e-2);
+                 (a - mirror).norm() + (b - emitter.head<2>()).norm()) < 3e-2);
   CHECK(nls.hypotheses[0].side == -nls.hypotheses[1].side);
   // --prefer-side puts the left one (y > 0 for a robot driving along +x) first, then right.
   for (const int side : {1, -1}) {
@@ -222,7 +223,7 @@ TEST_CASE("a circular path with unknown level reports the inverse-point twin", "
   fit.exponent_prior = 0;    // the exponent is known
   fit.path_prior_scale = 0;
   fit.correlated_shadowing = false;
-  fit.min_margin = 30;  // the twin lies 24 m beyond the path
+  fit.search_margin = 30;  // the twin lies 24 m beyond the path
   const localize::RangeFitResult result =
       localize::fit_ranges(localize::scan_series(log, 0), model, fit);
   REQUIRE(result.hypotheses.size() >= 2);

@@ -33,15 +33,22 @@ struct RangeFitParams {
   double level_prior_db = 4.0;
   /// Prior sd of the exponent about PathLossParams' value (0: the exponent is fixed).
   double exponent_prior = 0.5;
-  /// Prior on the position: the density falls as exp(-d / scale) with the distance d from the
-  /// robot's path [m] (0: uniform over the search box). Emitters worth finding lie near where a
-  /// robot explores; without it, a circling path lets a wide plateau of far positions (each
-  /// fitting with a strong transmitter) outweigh the emitter by its area alone.
-  double path_prior_scale = 3.0;
+  /// Prior on the position, off by default (issue 33: it was scaled on the test matrix and pulls
+  /// an emitter inside a room the path circles towards the path): the density falls as
+  /// exp(-sqrt(d) / scale) with the distance d from the robot's path [m]; 0: uniform over the
+  /// search area. Kept as a labelled option for comparison.
+  double path_prior_scale = 0.0;
   /// The area the user searches (a rectangle in the log's frame, [m]): the prior on the
   /// position is uniform inside it and zero outside, and the posterior is evaluated there
-  /// alone (issue 33: a prior the user states instead of one that assumes where emitters lie).
+  /// alone. Not given: the explored area, the path's bounding box grown by `search_margin`.
   std::optional<std::array<model::Vec2, 2>> search_area;
+  /// [m] How far beyond the path's bounding box the explored area reaches when no search area
+  /// is given: the rooms beside the corridors a robot drives (office rooms are 4-6 m deep).
+  /// An assumption about where the user searches, stated in every report; `--search-area`
+  /// replaces it. Without a bound the prior's area decides: on a path circling the emitter a
+  /// wide plateau of far positions (each fitting with a strong transmitter and a low exponent)
+  /// outweighs the emitter by its area alone.
+  double search_margin = 5.0;
   /// Height between the robot's antenna and the emitter, unknown, taken as this [m].
   double vertical_offset = 0.6;
   /// Temper the likelihood by the effective-sample share of correlated shadowing.
@@ -59,9 +66,6 @@ struct RangeFitParams {
   /// the far plateau or the path's band).
   double decision_radius = 5.0;
   double min_reported_probability = 0.01;  ///< weaker modes are not listed
-  /// The search grid reaches this far beyond the scans: at least `min_margin`, at most
-  /// `max_margin`, else 1.5 times the median distance the heard readings imply [m].
-  double min_margin = 10.0, max_margin = 40.0;
   /// The exponent counts as told by the path when the heard scans' information about it at the
   /// best hypothesis is at least this many times the prior's (1: the data alone would halve the
   /// prior's variance); otherwise the report says its estimate rests on the prior (a circle
@@ -81,8 +85,15 @@ struct RangeFitResult {
   /// The path tells the exponent (see identified_information); otherwise its estimate rests on
   /// the prior.
   bool exponent_identified = false;
+  /// The rectangle the posterior covers (low, high corners, [m]): the user's search area or
+  /// the explored area (RangeFitParams::search_margin).
+  std::array<model::Vec2, 2> search_area{model::Vec2::Zero(), model::Vec2::Zero()};
   std::optional<PositionPosterior> posterior;
 };
+
+/// The rectangle the position prior is uniform on: RangeFitParams::search_area if given, else
+/// the scans' bounding box grown by RangeFitParams::search_margin.
+std::array<model::Vec2, 2> search_area_of(const ScanSeries& scans, const RangeFitParams& params);
 
 RangeFitResult fit_ranges(const ScanSeries& scans, const PathLossParams& path_loss,
                           const RangeFitParams& params = {},

@@ -46,6 +46,8 @@ void add_fit(const localize::EmitterEstimate& estimate, json& item) {
                    {"correlation_length_m", fit.correlation_length},
                    {"effective_share", fit.effective_share}};
   item["exponent_identified"] = fit.exponent_identified;
+  item["search_area_m"] = {fit.search_area[0].x(), fit.search_area[0].y(), fit.search_area[1].x(),
+                           fit.search_area[1].y()};
   item["ambiguous"] = estimate.ambiguous;
   item["tie_break"] = estimate.tie_break;
 }

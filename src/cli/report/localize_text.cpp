@@ -1,5 +1,6 @@
 #include "report/localize_text.hpp"
 
+#include <array>
 #include <cmath>
 #include <ostream>
 
@@ -60,6 +61,18 @@ void print_fit(const localize::EmitterEstimate& estimate, const LocalizeOptions&
       << fixed(100.0 * fit.correlated_share, 0) << " % of it correlated over "
       << fixed(fit.correlation_length, 2) << " m along the path: " << fixed(fit.effective_share, 3)
       << " independent samples per scan\n";
+  const std::array<model::Vec2, 2>& area = fit.search_area;
+  out << "  searched " << fixed(area[0].x(), 1) << " " << fixed(area[0].y(), 1) << " .. "
+      << fixed(area[1].x(), 1) << " " << fixed(area[1].y(), 1) << " m"
+      << (options.params.fit.search_area
+              ? std::string(" (--search-area)")
+              : " (the explored area: the path's box grown by " +
+                    model::format_number(options.params.fit.search_margin) +
+                    " m; --search-area to give yours)")
+      << (options.params.fit.path_prior_scale > 0
+              ? ", path prior " + model::format_number(options.params.fit.path_prior_scale) + " m"
+              : std::string())
+      << '\n';
   if (!estimate.hypotheses.empty() && options.params.fit.exponent_prior > 0) {
     const localize::Hypothesis& h = estimate.hypotheses.front();
     out << "  exponent " << fixed(h.exponent, 2) << " +- " << fixed(h.exponent_sd, 2)
