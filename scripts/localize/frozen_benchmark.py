@@ -2,7 +2,8 @@
 """Score `rigdesign localize` on the frozen validation set (frozen_rssi_generator.py).
 
 Usage:
-  frozen_benchmark.py RIGDESIGN_BINARY [--out DIR] [--json FILE] [--no-walls] [--extra ARG ...]
+  frozen_benchmark.py RIGDESIGN_BINARY [--out DIR] [--json FILE] [--no-walls] [--calibrated-wls]
+                      [--extra ARG ...]
 
 Generates the 250 frozen logs (5 classes x seeds 101-150) into a temporary directory (or
 --out), runs for each
@@ -12,6 +13,12 @@ Generates the 250 frozen logs (5 classes x seeds 101-150) into a temporary direc
 reads logs[*].emitters[*]: method (wls, nls, map), kpis.error_m (the reported estimate's
 error), kpis.nearest_hypothesis_error_m and kpis.in_region (truth in the 95 % region; may be
 null).  A missing emitter or a null error counts as "no solution", separately from the mean.
+
+--calibrated-wls adds paper 4's WLS at its best, "wls_cal": the level and exponent calibrated
+on the log itself with its truth (`localize --calibrate`, wall map included), then
+`--method wls --rssi-at-1m A --exponent N` (N clamped to the tool's [0.5, 10]). Calibrating on
+the very log it then solves is an oracle no field team has; it bounds the paper's method from
+above rather than reproducing the thesis's per-environment calibration.
 
 Everything after --extra is passed to the tool unchanged (so it must come last), e.g.
   frozen_benchmark.py build/rel/src/rigdesign --extra --cutoff -90
@@ -29,6 +36,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import frozen_rssi_generator as gen  # noqa: E402  (sibling script, standard library only)
 
 METHODS = ["wls", "nls", "map"]
+CALIBRATED = "wls_cal"
 
 
 def parse_args(argv):
@@ -38,7 +46,7 @@ def parse_args(argv):
     if "--extra" in argv:
         k = argv.index("--extra")
         argv, extra = argv[:k], argv[k + 1:]
-    opts = {"binary": None, "out": None, "json": None, "walls": True}
+    opts = {"binary": None, "out": None, "json": None, "walls": True, "calibrated": False}
     it = iter(argv)
     for a in it:
         if a in ("--out", "--json"):
@@ -48,6 +56,8 @@ def parse_args(argv):
             opts[a[2:]] = v
         elif a == "--no-walls":
             opts["walls"] = False
+        elif a == "--calibrated-wls":
+            opts["calibrated"] = True
         elif a in ("-h", "--help"):
             print(__doc__)
             sys.exit(0)
@@ -99,6 +109,30 @@ def run_log(binary, directory, stem, walls, extra):
     return result, notes
 
 
+def run_calibrated_wls(binary, directory, stem, walls):
+    """Paper 4's WLS with the level and exponent calibrated on this log and its truth."""
+    base = os.path.join(directory, stem)
+    common = ["--log", base + "_rssi.csv", "--truth", base + "_truth.csv", "--json"]
+    if walls:
+        common += ["--walls", base + "_walls.csv"]
+    proc = subprocess.run([binary, "localize", "--calibrate"] + common,
+                          capture_output=True, text=True)
+    if proc.returncode != 0:
+        return None, [f"calibration exit {proc.returncode}"]
+    fit = json.loads(proc.stdout)["calibrations"][0]
+    if fit["exponent"] is None:
+        return None, ["not calibrated"]
+    level, exponent = fit["rssi_at_1m_dbm"], min(10.0, max(0.5, fit["exponent"]))
+    notes = [f"calibrated exponent {fit['exponent']:.2f} clamped"] if exponent != fit["exponent"] else []
+    proc = subprocess.run([binary, "localize", "--method", "wls", "--rssi-at-1m", f"{level:.4f}",
+                           "--exponent", f"{exponent:.4f}"] + common,
+                          capture_output=True, text=True)
+    emitters = [e for log in json.loads(proc.stdout).get("logs", []) for e in log["emitters"]]
+    k = (emitters[0].get("kpis") or {}) if emitters else {}
+    return {"error": k.get("error_m"), "nearest": k.get("nearest_hypothesis_error_m"),
+            "in_region": k.get("in_region")}, notes
+
+
 def summarise(rows):
     """Numbers for one group of logs: per method mean/median/unsolved, nls/wls, nls region."""
     out = {}
@@ -109,6 +143,17 @@ def summarise(rows):
                   "mean_m": statistics.mean(errs) if errs else None,
                   "median_m": statistics.median(errs) if errs else None,
                   "nearest_mean_m": statistics.mean(near) if near else None}
+    cal = [r[CALIBRATED]["error"] for r in rows
+           if r.get(CALIBRATED, {}).get("error") is not None]
+    if cal or any(CALIBRATED in r for r in rows):
+        out[CALIBRATED] = {"solved": len(cal), "unsolved": len(rows) - len(cal),
+                           "mean_m": statistics.mean(cal) if cal else None,
+                           "median_m": statistics.median(cal) if cal else None}
+        paired = [r for r in rows if r.get(CALIBRATED, {}).get("error") is not None
+                  and r.get("nls", {}).get("error") is not None]
+        out["nls_wls_cal_ratio"] = (
+            statistics.mean(r["nls"]["error"] for r in paired)
+            / statistics.mean(r[CALIBRATED]["error"] for r in paired)) if paired else None
     # ratio of means over the logs both wls and nls solved (a fair pairing)
     both = [r for r in rows if r.get("wls", {}).get("error") is not None
             and r.get("nls", {}).get("error") is not None]
@@ -162,6 +207,10 @@ def main(argv):
     per_log, oddities = {}, []
     for stem in stems:
         result, notes = run_log(o["binary"], directory, stem, o["walls"], o["extra"])
+        if o["calibrated"]:
+            result[CALIBRATED], cal_notes = run_calibrated_wls(o["binary"], directory, stem,
+                                                               o["walls"])
+            notes += cal_notes
         per_log[stem] = result
         oddities += [f"{stem}: {n}" for n in notes]
     groups = []
@@ -173,6 +222,12 @@ def main(argv):
     print(f"frozen set, {len(stems)} logs, {walls_note}; errors in m over solved logs;"
           f" nls/wls = ratio of means over logs both solved")
     print_table(groups)
+    if o["calibrated"]:
+        print(f"\n{'class':<14} | wls_cal mean  median unsol | nls/wls_cal")
+        for name, g in groups:
+            c = g[CALIBRATED]
+            print(f"{name:<14} | {fmt(c['mean_m'], '12.2f')}{fmt(c['median_m'], '8.2f')}"
+                  f"{c['unsolved']:>6} | {fmt(g['nls_wls_cal_ratio'], '11.2f')}")
     elapsed = time.monotonic() - t0
     print(f"\n{len(oddities)} notes" + (":" if oddities else ""))
     for n in oddities:

@@ -12,6 +12,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "localize_calibration.hpp"
 #include "localize_options.hpp"
 #include "number_checks.hpp"
 #include "progress_line.hpp"
@@ -26,6 +27,7 @@
 #include "rigdesign/io/logs/walls_csv.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/localize/accuracy_table.hpp"
+#include "rigdesign/localize/path_loss_calibration.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/render/localize_plot.hpp"
@@ -214,6 +216,23 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   if (!options.walls.empty()) resolved.params.walls = io::read_walls_csv(options.walls);
   // The range fit lists first the hypothesis most likely within the acceptable error.
   resolved.params.fit.decision_radius = options.kpi.acceptable_error;
+  require_option(options.wls_weighting.empty() || options.wls_weighting == "rows" ||
+                     options.wls_weighting == "residuals",
+                 "--wls-weighting", "is '" + options.wls_weighting + "'", "rows or residuals");
+  resolved.params.chunking.weighting = options.wls_weighting == "residuals"
+                                           ? localize::WlsWeighting::squared_residuals
+                                           : localize::WlsWeighting::rows;
+  if (!options.environment.empty()) {
+    const localize::EnvironmentPreset* preset =
+        localize::find_environment_preset(options.environment);
+    std::string names;
+    for (const localize::EnvironmentPreset& p : localize::environment_presets())
+      names += (names.empty() ? "" : ", ") + p.name;
+    require_option(preset != nullptr, "--environment", "is '" + options.environment + "'",
+                   "one of " + names);
+    resolved.params.path_loss.exponent = preset->exponent;
+  }
+  if (options.calibrate) return run_calibration(resolved, out);
   if (!options.search_area.empty()) {
     const std::vector<double>& area = options.search_area;
     // A site, not a continent: the posterior grid's cells grow with the area.
@@ -246,12 +265,26 @@ int run_resolved(const LocalizeOptions& options, std::ostream& out, std::ostream
 
 // The path-loss model and the range fit's priors, floor, scan period and walls.
 void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
+  const auto given = [&options](const std::string&) { options.path_loss_given = true; };
   app->add_option("--rssi-at-1m", options.params.path_loss.rssi_at_1m_dbm,
                   "Assumed RSSI at 1 m [dBm] (default -45)")
-      ->check(finite_in(-120, 30, "a level in [-120, 30] dBm"));
-  app->add_option("--exponent", options.params.path_loss.exponent,
-                  "Assumed path-loss exponent (default 2.5)")
-      ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"));
+      ->check(finite_in(-120, 30, "a level in [-120, 30] dBm"))
+      ->each(given);
+  CLI::Option* exponent =
+      app->add_option("--exponent", options.params.path_loss.exponent,
+                      "Assumed path-loss exponent (default 2.5)")
+          ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"))
+          ->each(given);
+  app->add_option("--environment", options.environment,
+                  "The exponent of a kind of environment (Rappaport's Table 4.2): free-space, "
+                  "building-line-of-sight, building-obstructed, factory-obstructed, ...")
+      ->excludes(exponent);
+  app->add_flag("--calibrate", options.calibrate,
+                "Fit the level at 1 m and the exponent to the logs' readings of the emitters "
+                "--truth places (least squares), and print them");
+  app->add_option("--wls-weighting", options.wls_weighting,
+                  "wls: paper 4's chunk weight sqrt(c)/r scales each equation (rows, default) "
+                  "or, as before issue 33, its squared residual (residuals)");
   app->add_option("--cutoff", options.params.path_loss.cutoff_dbm,
                   "Drop readings below this [dBm] (default -80)")
       ->check(finite_in(-150, 0, "a level in [-150, 0] dBm"));

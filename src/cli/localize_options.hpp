@@ -26,6 +26,10 @@ struct LocalizeOptions {
   double floor_dbm = std::numeric_limits<double>::quiet_NaN();      // --floor, NaN: not given
   double scan_period_s = std::numeric_limits<double>::quiet_NaN();  // --scan-period
   std::vector<double> search_area;  // --search-area X0 Y0 X1 Y1 [m], empty: not given
+  std::string environment;          // --environment NAME: a published exponent preset
+  std::string wls_weighting;        // --wls-weighting rows|residuals (empty: rows)
+  bool calibrate = false;           // --calibrate: fit the path-loss model to --truth
+  bool path_loss_given = false;     // --rssi-at-1m or --exponent on the command line
   std::string gas_truth;
   localize::LocalizeParams params;
   localize::ScenarioParams scenario_params;

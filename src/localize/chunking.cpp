@@ -28,6 +28,11 @@ double wls_weight(const Chunk& chunk) {
   return std::sqrt(static_cast<double>(chunk.count)) / chunk.mean_range();
 }
 
+double squared_residual_weight(const Chunk& chunk, WlsWeighting weighting) {
+  const double w = wls_weight(chunk);
+  return weighting == WlsWeighting::rows ? w * w : w;
+}
+
 std::size_t ChunkAccumulator::add(const model::Vec3& position, double range, double rssi_dbm,
                                   Chunk* previous) {
   const auto [it, inserted] =

@@ -45,7 +45,8 @@ EmitterEstimate estimate_from_chunks(std::vector<Chunk> chunks, LocalizeMethod m
     case LocalizeMethod::wls: {
       // Paper 4 as published: one point from the first-sphere linear system.
       if (const auto solution =
-              wls_multilateration(estimate.chunks, estimate.geometry.dimensions)) {
+              wls_multilateration(estimate.chunks, estimate.geometry.dimensions,
+                                  WlsReference::first_chunk, params.chunking.weighting)) {
         Hypothesis h;
         h.position = solution->position;
         h.covariance = solution->covariance;

@@ -13,7 +13,7 @@ constexpr double kSingularRatio = 1e-12;
 }  // namespace
 
 void WlsSums::add(const Chunk& chunk, double sign) {
-  const double w = sign * wls_weight(chunk);
+  const double w = sign * squared_residual_weight(chunk, weighting_);
   const model::Vec3 p = chunk.position() - origin_;
   const double r = chunk.mean_range();
   const double k = p.squaredNorm() - r * r;
@@ -73,7 +73,7 @@ std::optional<WlsSolution> WlsSums::solve(int dimensions, WlsReference reference
 
 bool IncrementalWls::add(const model::Vec3& position, double rssi_dbm) {
   if (rssi_dbm < path_loss_.cutoff_dbm) return false;
-  if (!sums_) sums_.emplace(position);
+  if (!sums_) sums_.emplace(position, weighting_);
   // The chunk's old contribution out, the reading in, the new contribution back: O(1).
   Chunk previous;
   const std::size_t index =
@@ -89,9 +89,9 @@ std::optional<WlsSolution> IncrementalWls::solve(int dimensions, WlsReference re
 }
 
 std::optional<WlsSolution> wls_multilateration(const std::vector<Chunk>& chunks, int dimensions,
-                                               WlsReference reference) {
+                                               WlsReference reference, WlsWeighting weighting) {
   if (chunks.empty()) return std::nullopt;
-  WlsSums sums(chunks.front().position());
+  WlsSums sums(chunks.front().position(), weighting);
   for (const Chunk& chunk : chunks) sums.add(chunk);
   return sums.solve(dimensions, reference, &chunks.front());
 }

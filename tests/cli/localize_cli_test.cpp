@@ -1,5 +1,6 @@
 #include <array>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -173,4 +174,62 @@ TEST_CASE("localize --search-area: the estimate lies in the area the user search
       CHECK(y <= area[3] + 1e-9);
     }
   }
+}
+
+TEST_CASE("localize --calibrate fits the level and exponent of a log whose phone is known",
+          "[localize]") {
+  // rssi = -50 - 30 log10 d, read 1 dB high and 1 dB low at 2, 4, 8, 16 and 32 m: the fit is
+  // that line (least squares, all heard), sigma 1 dB.
+  TempFolder folder;
+  std::ostringstream log;
+  log << "t,x,y,z,bssid,rssi\n";
+  int t = 0;
+  for (const double d : {2.0, 4.0, 8.0, 16.0, 32.0}) {
+    for (const double e : {1.0, -1.0}) {
+      const double rssi = -50.0 - 30.0 * std::log10(d) + e;
+      log << t++ << "," << d << ",0,0.4,aa:bb:cc:dd:ee:01," << rssi << "\n";
+    }
+  }
+  const std::string log_path = folder.write("calibration.csv", log.str());
+  const std::string truth = folder.write("truth.csv", "bssid,x,y,z\naa:bb:cc:dd:ee:01,0,0,0.4\n");
+  CliResult result =
+      run_cli({"localize", "--calibrate", "--log", log_path, "--truth", truth, "--json"});
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  const auto fit = nlohmann::json::parse(result.out)["calibrations"][0];
+  CHECK(fit["rssi_at_1m_dbm"].get<double>() == Approx(-50.0).margin(0.01));
+  CHECK(fit["exponent"].get<double>() == Approx(3.0).margin(0.001));
+  CHECK(fit["sigma_db"].get<double>() == Approx(1.0).margin(0.001));
+  CHECK(fit["heard"].get<int>() == 10);
+  result = run_cli({"localize", "--calibrate", "--log", log_path, "--truth", truth});
+  CHECK(result.out.find("use: --rssi-at-1m -50 --exponent 3") != std::string::npos);
+  // Without the phone's position there is nothing to calibrate against.
+  result = run_cli({"localize", "--calibrate", "--log", log_path});
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("--calibrate: needs the emitters' positions") != std::string::npos);
+}
+
+TEST_CASE("localize --environment sets Rappaport's exponent; bad names and weightings exit 2",
+          "[localize]") {
+  TempFolder folder;
+  REQUIRE(run_cli({"localize", "--scenario", "corner", "--seed", "1", "--out", folder.path()})
+              .exit_code == 0);
+  const std::string log = folder.path() + "/corner_seed1_rssi.csv";
+  CliResult result = run_cli(
+      {"localize", "--log", log, "--method", "wls", "--environment", "building-obstructed", "--json"});
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  // Table 4.2's "obstructed in building, 4 to 6": 5.
+  CHECK(nlohmann::json::parse(result.out)["logs"][0]["emitters"][0]["hypotheses"][0]["exponent"]
+            .get<double>() == 5.0);
+  result = run_cli({"localize", "--log", log, "--environment", "attic"});
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("--environment: is 'attic' (expected one of free-space") !=
+        std::string::npos);
+  result = run_cli({"localize", "--log", log, "--wls-weighting", "squares"});
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("--wls-weighting: is 'squares' (expected rows or residuals)") !=
+        std::string::npos);
+  CHECK(run_cli({"localize", "--log", log, "--environment", "free-space", "--exponent", "2"})
+            .exit_code == 2);
 }

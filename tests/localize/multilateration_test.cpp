@@ -66,6 +66,58 @@ TEST_CASE("chunks average the readings' distances; weights are sqrt(c) / r", "[l
   CHECK(chunks[2].position().x() == Approx(-0.05));
 }
 
+TEST_CASE("paper 4's weight w = sqrt(c) / r scales each equation; the old variant weighted its square",
+          "[localize]") {
+  // Five chunks whose ranges disagree (no common point), so the weighting moves the answer.
+  struct Row {
+    double x, y, range;
+    int count;
+  };
+  const std::vector<Row> rows = {
+      {0, 0, 5.0, 1}, {6, 0, 4.0, 3}, {6, 6, 6.5, 2}, {0, 6, 3.0, 4}, {3, -2, 7.0, 1}};
+  std::vector<localize::Chunk> chunks;
+  for (const Row& r : rows) {
+    localize::Chunk c;
+    c.position_sum = r.count * model::Vec3(r.x, r.y, 0.0);
+    c.range_sum = r.count * r.range;
+    c.count = r.count;
+    chunks.push_back(c);
+  }
+  // The linearised system written out row by row (chunk j minus the first chunk):
+  // 2 (p_j - p_1)^T q = (|p_j|^2 - r_j^2) - (|p_1|^2 - r_1^2), and its weighted normal equations.
+  const auto explicit_solution = [&](bool square_the_weight) {
+    Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d right = Eigen::Vector2d::Zero();
+    const Eigen::Vector2d p1(rows[0].x, rows[0].y);
+    const double k1 = p1.squaredNorm() - rows[0].range * rows[0].range;
+    for (std::size_t j = 1; j < rows.size(); ++j) {
+      const Eigen::Vector2d p(rows[j].x, rows[j].y);
+      const Eigen::Vector2d a = 2.0 * (p - p1);
+      const double b = p.squaredNorm() - rows[j].range * rows[j].range - k1;
+      const double w = std::sqrt(static_cast<double>(rows[j].count)) / rows[j].range;
+      const double weight = square_the_weight ? w * w : w;
+      normal += weight * a * a.transpose();
+      right += weight * a * b;
+    }
+    return Eigen::Vector2d(normal.ldlt().solve(right));
+  };
+  const auto rows_weighted = localize::wls_multilateration(
+      chunks, 2, localize::WlsReference::first_chunk, localize::WlsWeighting::rows);
+  const auto squares_weighted = localize::wls_multilateration(
+      chunks, 2, localize::WlsReference::first_chunk, localize::WlsWeighting::squared_residuals);
+  REQUIRE(rows_weighted);
+  REQUIRE(squares_weighted);
+  const Eigen::Vector2d expected_rows = explicit_solution(true);
+  const Eigen::Vector2d expected_squares = explicit_solution(false);
+  CHECK((rows_weighted->position.head<2>() - expected_rows).norm() < 1e-9);
+  CHECK((squares_weighted->position.head<2>() - expected_squares).norm() < 1e-9);
+  CHECK((expected_rows - expected_squares).norm() > 0.05);  // the two really differ here
+  // The default is the paper's.
+  const auto by_default = localize::wls_multilateration(chunks, 2);
+  REQUIRE(by_default);
+  CHECK((by_default->position.head<2>() - expected_rows).norm() < 1e-9);
+}
+
 TEST_CASE("the incremental system equals the batch system after every reading", "[localize]") {
   const model::Vec3 emitter(-3.0, 4.0, 0.4);
   localize::PathLossParams model;

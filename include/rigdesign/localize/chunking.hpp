@@ -12,8 +12,20 @@
 
 namespace rigdesign::localize {
 
+/// How paper 4's chunk weight w = sqrt(c) / r enters the least-squares system.
+enum class WlsWeighting {
+  /// Paper 4's eq. 12 as issue 33's audit of the thesis reads it: w scales each chunk's
+  /// linearised equation, so its squared residual counts w^2 = c / r^2 (a mean of c readings
+  /// whose range error grows with r: the inverse of its variance, up to a constant).
+  rows,
+  /// Before issue 33: w multiplied the squared residual (`--wls-weighting residuals`, kept to
+  /// compare with).
+  squared_residuals,
+};
+
 struct ChunkParams {
   double size = 0.10;  ///< chunk edge [m] (paper 4: 10 cm)
+  WlsWeighting weighting = WlsWeighting::rows;
 };
 
 struct Chunk {
@@ -31,6 +43,9 @@ struct Chunk {
 
 /// Paper 4's chunk weight w = sqrt(c) / r.
 double wls_weight(const Chunk& chunk);
+
+/// The weight of the chunk's squared residual in the least-squares sum: w^2 (rows) or w.
+double squared_residual_weight(const Chunk& chunk, WlsWeighting weighting);
 
 class ChunkAccumulator {
  public:

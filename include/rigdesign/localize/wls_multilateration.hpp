@@ -28,7 +28,9 @@ struct WlsSolution {
 /// keep the sums well scaled.
 class WlsSums {
  public:
-  explicit WlsSums(const model::Vec3& origin = model::Vec3::Zero()) : origin_(origin) {}
+  explicit WlsSums(const model::Vec3& origin = model::Vec3::Zero(),
+                   WlsWeighting weighting = WlsWeighting::rows)
+      : origin_(origin), weighting_(weighting) {}
   /// Adds (sign +1) or removes (sign -1) a chunk's contribution.
   void add(const Chunk& chunk, double sign = 1.0);
   /// Solves in the first `dimensions` (2: x, y; 3: x, y, z) coordinates; the reference chunk
@@ -40,6 +42,7 @@ class WlsSums {
 
  private:
   model::Vec3 origin_;
+  WlsWeighting weighting_;
   double w_ = 0.0, wk_ = 0.0, wkk_ = 0.0, wz_ = 0.0;
   model::Vec3 wp_ = model::Vec3::Zero(), wpk_ = model::Vec3::Zero();
   model::Mat3 wpp_ = model::Mat3::Zero();
@@ -50,7 +53,7 @@ class WlsSums {
 class IncrementalWls {
  public:
   explicit IncrementalWls(PathLossParams path_loss = {}, ChunkParams chunking = {})
-      : path_loss_(path_loss), accumulator_(chunking) {}
+      : path_loss_(path_loss), weighting_(chunking.weighting), accumulator_(chunking) {}
   /// Adds one reading; false (and nothing changes) when it is below the cut-off.
   bool add(const model::Vec3& position, double rssi_dbm);
   std::optional<WlsSolution> solve(int dimensions,
@@ -59,12 +62,14 @@ class IncrementalWls {
 
  private:
   PathLossParams path_loss_;
+  WlsWeighting weighting_;
   ChunkAccumulator accumulator_;
   std::optional<WlsSums> sums_;
 };
 
 /// Batch form over a list of chunks (the same system as IncrementalWls builds).
 std::optional<WlsSolution> wls_multilateration(const std::vector<Chunk>& chunks, int dimensions,
-                                               WlsReference reference = WlsReference::first_chunk);
+                                               WlsReference reference = WlsReference::first_chunk,
+                                               WlsWeighting weighting = WlsWeighting::rows);
 
 }  // namespace rigdesign::localize

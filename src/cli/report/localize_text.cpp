@@ -32,6 +32,23 @@ void print_emitter_head(const EmitterReport& report, const LocalizeOptions& opti
     out << ", " << estimate.used << " heard at or above "
         << model::format_number(options.params.path_loss.cutoff_dbm) << " dBm (paper 4's cut-off), "
         << estimate.chunks.size() << " chunks\n";
+    // Paper 4 calibrated level and exponent per environment: say where these came from.
+    const localize::PathLossParams& model = options.params.path_loss;
+    out << "  path loss: a " << model::format_number(model.rssi_at_1m_dbm) << " dBm, n "
+        << model::format_number(model.exponent) << ", "
+        << (!options.environment.empty()
+                ? "n from --environment " + options.environment
+                : options.path_loss_given
+                      ? std::string("as given")
+                      : std::string("assumed, not calibrated (--calibrate on a log of a phone at "
+                                    "a known place, or --environment NAME)"))
+        << (report.method == localize::LocalizeMethod::wls
+                ? options.params.chunking.weighting == localize::WlsWeighting::rows
+                      ? "; chunk weight sqrt(c)/r on each equation (eq. 12)"
+                      : "; chunk weight sqrt(c)/r on each squared residual (--wls-weighting "
+                        "residuals)"
+                : "")
+        << '\n';
   }
   out << "  geometry: "
       << (g.dimensions == 3
