@@ -348,7 +348,7 @@ RangeFitResult fit_ranges(const ScanSeries& series, const PathLossParams& path_l
   }
   std::stable_sort(result.hypotheses.begin(), result.hypotheses.end(),
                    [](const Hypothesis& a, const Hypothesis& b) {
-                     return a.probability_nearby > b.probability_nearby;
+                     return a.probability_nearby.value_or(0.0) > b.probability_nearby.value_or(0.0);
                    });
   // Whether the path's distances to the best hypothesis tell the exponent (a circle around it
   // does not): otherwise its estimate rests on the prior, which the report says.

@@ -41,10 +41,11 @@ TEST_CASE("range fit: hypotheses are listed by their probability within the deci
         localize::localize_emitter(scenario.log, 0, localize::LocalizeMethod::nls, {});
     REQUIRE_FALSE(estimate.hypotheses.empty());
     for (std::size_t i = 0; i < estimate.hypotheses.size(); ++i) {
-      const double nearby = estimate.hypotheses[i].probability_nearby;
+      REQUIRE(estimate.hypotheses[i].probability_nearby);
+      const double nearby = *estimate.hypotheses[i].probability_nearby;
       CHECK(nearby >= 0.0);
       CHECK(nearby <= 1.0 + 1e-12);
-      if (i > 0) CHECK(nearby <= estimate.hypotheses[i - 1].probability_nearby);
+      if (i > 0) CHECK(nearby <= *estimate.hypotheses[i - 1].probability_nearby);
     }
   }
 }

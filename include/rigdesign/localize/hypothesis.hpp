@@ -1,5 +1,7 @@
 #pragma once
 /// One candidate position of an emitter with its uncertainty, as every estimator reports it.
+#include <optional>
+
 #include "rigdesign/model/eigen_types.hpp"
 
 namespace rigdesign::localize {
@@ -15,8 +17,9 @@ struct Hypothesis {
   /// Share of the posterior probability in this hypothesis' basin (1 for a single estimate).
   double probability = 1.0;
   /// Posterior probability within the decision radius of the position (range fit): how likely
-  /// the emitter lies within the acceptable error of it. The range fit lists this first.
-  double probability_nearby = 0.0;
+  /// the emitter lies within the acceptable error of it. The range fit lists this first; paper
+  /// 4's methods state no posterior, so none.
+  std::optional<double> probability_nearby;
   double level_sd_db = 0.0;  ///< posterior sd of the 1 m level at the position (nls) [dB]
   double exponent_sd = 0.0;  ///< posterior sd of the exponent (nls; 0 when fixed)
   /// Side of the robot's path the position lies on, facing the direction of travel (REP-103:

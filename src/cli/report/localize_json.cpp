@@ -19,7 +19,7 @@ json hypothesis_json(const localize::Hypothesis& h) {
   return {{"position", position_json(h.position)},
           {"covariance", covariance},
           {"probability", h.probability},
-          {"probability_nearby", h.probability_nearby},
+          {"probability_nearby", h.probability_nearby ? json(*h.probability_nearby) : json()},
           {"side", h.side > 0   ? "left"
                    : h.side < 0 ? "right"
                                 : "on the path"},
