@@ -35,9 +35,10 @@ void print_rows(const std::vector<CalibrationRow>& rows, std::ostream& out) {
     out << "a " << format_number(c.rssi_at_1m_dbm, 3) << " +- " << format_number(c.level_sd_db, 2)
         << " dBm, n " << format_number(c.exponent, 3) << " +- " << format_number(c.exponent_sd, 2)
         << ", sigma " << format_number(c.sigma_db, 2) << " dB; " << c.heard << " heard and "
-        << c.unheard << " unheard scans at " << format_number(c.nearest_m, 3) << "-" << format_number(c.farthest_m, 3)
-        << " m\n    use: --rssi-at-1m " << format_number(c.rssi_at_1m_dbm, 3) << " --exponent "
-        << format_number(c.exponent, 3) << '\n';
+        << c.unheard << " unheard scans at " << format_number(c.nearest_m, 3) << "-"
+        << format_number(c.farthest_m, 3) << " m\n    use: --rssi-at-1m "
+        << format_number(c.rssi_at_1m_dbm, 3) << " --exponent " << format_number(c.exponent, 3)
+        << '\n';
   }
 }
 
@@ -82,8 +83,8 @@ int run_calibration(const LocalizeOptions& options, std::ostream& out) {
         if (t.bssid != log.emitters[e]) continue;
         const localize::ScanSeries scans =
             localize::scan_series(log, static_cast<int>(e), options.params.scans);
-        rows.push_back(
-            {path, t.bssid, localize::calibrate_path_loss(scans, t.position, options.params.walls)});
+        rows.push_back({path, t.bssid,
+                        localize::calibrate_path_loss(scans, t.position, options.params.walls)});
       }
     }
   }

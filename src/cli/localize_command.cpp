@@ -270,18 +270,17 @@ void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
                   "Assumed RSSI at 1 m [dBm] (default -45)")
       ->check(finite_in(-120, 30, "a level in [-120, 30] dBm"))
       ->each(given);
-  CLI::Option* exponent =
-      app->add_option("--exponent", options.params.path_loss.exponent,
-                      "Assumed path-loss exponent (default 2.5)")
-          ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"))
-          ->each(given);
+  CLI::Option* exponent = app->add_option("--exponent", options.params.path_loss.exponent,
+                                          "Assumed path-loss exponent (default 2.5)")
+                              ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"))
+                              ->each(given);
   app->add_option("--environment", options.environment,
                   "The exponent of a kind of environment (Rappaport's Table 4.2): free-space, "
                   "building-line-of-sight, building-obstructed, factory-obstructed, ...")
       ->excludes(exponent);
   app->add_flag("--calibrate", options.calibrate,
                 "Fit the level at 1 m and the exponent to the logs' readings of the emitters "
-                "--truth places (least squares), and print them");
+                "--truth places (censored maximum likelihood), and print them");
   app->add_option("--wls-weighting", options.wls_weighting,
                   "wls: paper 4's chunk weight sqrt(c)/r scales each equation (rows, default) "
                   "or, as before issue 33, its squared residual (residuals)");
@@ -301,16 +300,18 @@ void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
                   "for comparison only: it assumes emitters lie near the path (0: off) [m]")
       ->capture_default_str()
       ->check(finite_in(0, 1000, "0 or a distance in (0, 1000] m"));
-  app->add_option("--search-area", options.search_area,
-                  "nls: the rectangle X0 Y0 X1 Y1 [m, the log's frame] the emitter is searched "
-                  "in: a uniform prior there, nothing outside (default: the explored area)")
-      ->expected(4)
-      ->check(finite_in(-1e8, 1e8, "coordinates in [-1e8, 1e8] m"));
+  CLI::Option* area =
+      app->add_option("--search-area", options.search_area,
+                      "nls: the rectangle X0 Y0 X1 Y1 [m, the log's frame] the emitter is searched "
+                      "in: a uniform prior there, nothing outside (default: the explored area)")
+          ->expected(4)
+          ->check(finite_in(-1e8, 1e8, "coordinates in [-1e8, 1e8] m"));
   app->add_option("--search-margin", options.params.fit.search_margin,
                   "nls: without --search-area, the explored area is the path's bounding box "
                   "grown by this [m]")
       ->capture_default_str()
-      ->check(finite_in(0, 1000, "a distance in [0, 1000] m"));
+      ->check(finite_in(0, 1000, "a distance in [0, 1000] m"))
+      ->excludes(area);
   app->add_flag("!--no-correlation", options.params.fit.correlated_shadowing,
                 "nls: treat scans as independent (no tempering for correlated shadowing)");
   app->add_option("--floor", options.floor_dbm,
@@ -327,9 +328,8 @@ void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
                   "List ambiguous hypotheses on this side of the path first: left or right")
       ->check(
           [](const std::string& side) {
-            return side == "left" || side == "right"
-                       ? std::string()
-                       : "is '" + side + "' (expected left or right)";
+            return side == "left" || side == "right" ? std::string()
+                                                     : "is '" + side + "' (expected left or right)";
           },
           "left or right");
 }

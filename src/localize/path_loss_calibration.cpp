@@ -12,7 +12,7 @@
 namespace rigdesign::localize {
 namespace {
 
-struct Sample {
+struct CalibrationSample {
   double x;     // -10 log10(d): the model is a + n x
   double rssi;  // heard: the reading; unheard: the floor
   bool heard;
@@ -20,11 +20,12 @@ struct Sample {
 
 // The log-likelihood of (a, n, log sigma): heard scans by the normal density, unheard ones by
 // the probability of lying below the floor.
-double log_likelihood(const std::vector<Sample>& samples, const Eigen::Vector3d& theta) {
+double censored_log_likelihood(const std::vector<CalibrationSample>& samples,
+                               const Eigen::Vector3d& theta) {
   const double sigma = std::exp(theta(2));
   const double half_log_two_pi = 0.5 * std::log(2.0 * std::numbers::pi);
   double sum = 0.0;
-  for (const Sample& s : samples) {
+  for (const CalibrationSample& s : samples) {
     const double z = (s.rssi - (theta(0) + theta(1) * s.x)) / sigma;
     sum += s.heard ? -0.5 * z * z - theta(2) - half_log_two_pi : detail::log_normal_cdf(z);
   }
@@ -34,14 +35,15 @@ double log_likelihood(const std::vector<Sample>& samples, const Eigen::Vector3d&
 // Nelder-Mead ascent in three dimensions from `start` (the heard scans' least-squares line):
 // the Tobit log-likelihood is concave in (a/sigma, n/sigma, 1/sigma), so its one maximum is
 // found from any start.
-Eigen::Vector3d maximise(const std::vector<Sample>& samples, const Eigen::Vector3d& start) {
+Eigen::Vector3d maximise_likelihood(const std::vector<CalibrationSample>& samples,
+                                    const Eigen::Vector3d& start) {
   std::array<Eigen::Vector3d, 4> simplex;
   std::array<double, 4> value{};
   const Eigen::Vector3d size(3.0, 0.3, 0.3);
   for (int i = 0; i < 4; ++i) {
     simplex[i] = start;
     if (i > 0) simplex[i](i - 1) += size(i - 1);
-    value[i] = -log_likelihood(samples, simplex[i]);
+    value[i] = -censored_log_likelihood(samples, simplex[i]);
   }
   for (int iteration = 0; iteration < 2000; ++iteration) {
     std::array<int, 4> order = {0, 1, 2, 3};
@@ -52,7 +54,7 @@ Eigen::Vector3d maximise(const std::vector<Sample>& samples, const Eigen::Vector
     for (int i = 0; i < 3; ++i) centroid += simplex[order[i]] / 3.0;
     const auto try_point = [&](double t) {
       const Eigen::Vector3d p = centroid + t * (simplex[worst] - centroid);
-      return std::pair<Eigen::Vector3d, double>{p, -log_likelihood(samples, p)};
+      return std::pair<Eigen::Vector3d, double>{p, -censored_log_likelihood(samples, p)};
     };
     auto [reflected, reflected_value] = try_point(-1.0);
     if (reflected_value < value[best]) {
@@ -71,7 +73,7 @@ Eigen::Vector3d maximise(const std::vector<Sample>& samples, const Eigen::Vector
       } else {
         for (int i = 1; i < 4; ++i) {
           simplex[order[i]] = simplex[best] + 0.5 * (simplex[order[i]] - simplex[best]);
-          value[order[i]] = -log_likelihood(samples, simplex[order[i]]);
+          value[order[i]] = -censored_log_likelihood(samples, simplex[order[i]]);
         }
       }
     }
@@ -81,17 +83,18 @@ Eigen::Vector3d maximise(const std::vector<Sample>& samples, const Eigen::Vector
 
 // Standard errors of (a, n) from the observed information (the negative Hessian of the
 // log-likelihood by central differences), sigma's uncertainty included.
-Eigen::Vector2d standard_errors(const std::vector<Sample>& samples, const Eigen::Vector3d& theta) {
+Eigen::Vector2d level_and_exponent_errors(const std::vector<CalibrationSample>& samples,
+                                          const Eigen::Vector3d& theta) {
   const Eigen::Vector3d step(1e-3, 1e-4, 1e-4);
   Eigen::Matrix3d hessian;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
       const Eigen::Vector3d ei = Eigen::Vector3d::Unit(i) * step(i);
       const Eigen::Vector3d ej = Eigen::Vector3d::Unit(j) * step(j);
-      hessian(i, j) = (log_likelihood(samples, theta + ei + ej) -
-                       log_likelihood(samples, theta + ei - ej) -
-                       log_likelihood(samples, theta - ei + ej) +
-                       log_likelihood(samples, theta - ei - ej)) /
+      hessian(i, j) = (censored_log_likelihood(samples, theta + ei + ej) -
+                       censored_log_likelihood(samples, theta + ei - ej) -
+                       censored_log_likelihood(samples, theta - ei + ej) +
+                       censored_log_likelihood(samples, theta - ei - ej)) /
                       (4.0 * step(i) * step(j));
     }
   }
@@ -104,7 +107,7 @@ Eigen::Vector2d standard_errors(const std::vector<Sample>& samples, const Eigen:
 std::optional<PathLossCalibration> calibrate_path_loss(const ScanSeries& scans,
                                                        const model::Vec3& truth,
                                                        const std::vector<WallSegment>& walls) {
-  std::vector<Sample> samples;
+  std::vector<CalibrationSample> samples;
   PathLossCalibration c;
   c.nearest_m = std::numeric_limits<double>::infinity();
   double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
@@ -138,14 +141,14 @@ std::optional<PathLossCalibration> calibrate_path_loss(const ScanSeries& scans,
   const double slope = (sxy - sx * sy / n) / spread;
   const double intercept = (sy - slope * sx) / n;
   double rss = 0.0;
-  for (const Sample& s : samples)
+  for (const CalibrationSample& s : samples)
     if (s.heard) rss += std::pow(s.rssi - (intercept + slope * s.x), 2);
   const double sigma0 = std::max(0.5, std::sqrt(rss / n));
-  const Eigen::Vector3d theta = maximise(samples, {intercept, slope, std::log(sigma0)});
+  const Eigen::Vector3d theta = maximise_likelihood(samples, {intercept, slope, std::log(sigma0)});
   c.rssi_at_1m_dbm = theta(0);
   c.exponent = theta(1);
   c.sigma_db = std::exp(theta(2));
-  const Eigen::Vector2d errors = standard_errors(samples, theta);
+  const Eigen::Vector2d errors = level_and_exponent_errors(samples, theta);
   c.level_sd_db = errors(0);
   c.exponent_sd = errors(1);
   return c;

@@ -9,7 +9,6 @@
 
 #include "censored_likelihood.hpp"
 #include "posterior_search.hpp"
-#include "rigdesign/model/statistics.hpp"
 #include "shadowing_correlation.hpp"
 
 namespace rigdesign::localize {
@@ -341,10 +340,10 @@ RangeFitResult fit_ranges(const ScanSeries& series, const PathLossParams& path_l
   // Listed by the probability within the decision radius (RangeFitParams::decision_radius).
   for (std::size_t i = 0; i < result.hypotheses.size(); ++i) {
     Hypothesis& h = result.hypotheses[i];
-    h.probability_nearby = std::min(
-        1.0, search.posterior.mass_within(h.position.head<2>(), params.decision_radius) /
-                     total_share +
-                 missed_by_cells[i]);
+    h.probability_nearby =
+        std::min(1.0, search.posterior.mass_within(h.position.head<2>(), params.decision_radius) /
+                              total_share +
+                          missed_by_cells[i]);
   }
   std::stable_sort(result.hypotheses.begin(), result.hypotheses.end(),
                    [](const Hypothesis& a, const Hypothesis& b) {

@@ -38,9 +38,8 @@ TEST_CASE("localize: bad logs exit 2 naming file:line:column and the column", "[
 TEST_CASE("localize: a scenario written out reads back to the same estimate, with KPIs and plots",
           "[localize]") {
   TempFolder folder;
-  const CliResult generated = run_cli(
-      {"localize", "--scenario", "corner", "--seed", "3", "--checkpoints", "5", "--json", "--out",
-       folder.path()});
+  const CliResult generated = run_cli({"localize", "--scenario", "corner", "--seed", "3",
+                                       "--checkpoints", "5", "--json", "--out", folder.path()});
   INFO(generated.err);
   REQUIRE(generated.exit_code == 0);
   const auto report = nlohmann::json::parse(generated.out);
@@ -69,7 +68,8 @@ TEST_CASE("localize: the straight hallway is reported with two mirror hypotheses
   const CliResult result = run_cli({"localize", "--scenario", "hallway", "--seed", "2"});
   REQUIRE(result.exit_code == 0);
   CHECK(result.out.find("collinear") != std::string::npos);
-  CHECK(result.out.find("ambiguous: hypotheses 1 and 2 are indistinguishable") != std::string::npos);
+  CHECK(result.out.find("ambiguous: hypotheses 1 and 2 are indistinguishable") !=
+        std::string::npos);
   const CliResult left =
       run_cli({"localize", "--scenario", "hallway", "--seed", "2", "--prefer-side", "left"});
   REQUIRE(left.exit_code == 0);
@@ -78,8 +78,7 @@ TEST_CASE("localize: the straight hallway is reported with two mirror hypotheses
   REQUIRE(first != std::string::npos);
   CHECK(left.out.substr(first, left.out.find('\n', first) - first).find("left of the path") !=
         std::string::npos);
-  const CliResult bad =
-      run_cli({"localize", "--scenario", "hallway", "--prefer-side", "up"});
+  const CliResult bad = run_cli({"localize", "--scenario", "hallway", "--prefer-side", "up"});
   CHECK(bad.exit_code == 2);
   CHECK(bad.err.find("--prefer-side") != std::string::npos);
 }
@@ -155,8 +154,8 @@ TEST_CASE("localize --search-area: the estimate lies in the area the user search
   REQUIRE(run_cli({"localize", "--scenario", "loop", "--seed", "2", "--out", folder.path()})
               .exit_code == 0);
   const std::string log = folder.path() + "/loop_seed2_rssi.csv";
-  for (const std::array<double, 4>& area : {std::array<double, 4>{-20, -20, 20, 20},
-                                            std::array<double, 4>{5, 5, 15, 15}}) {
+  for (const std::array<double, 4>& area :
+       {std::array<double, 4>{-20, -20, 20, 20}, std::array<double, 4>{5, 5, 15, 15}}) {
     std::vector<std::string> args = {"localize", "--log", log, "--json", "--search-area"};
     for (const double v : area) args.push_back(std::to_string(v));
     const CliResult result = run_cli(args);
@@ -215,8 +214,8 @@ TEST_CASE("localize --environment sets Rappaport's exponent; bad names and weigh
   REQUIRE(run_cli({"localize", "--scenario", "corner", "--seed", "1", "--out", folder.path()})
               .exit_code == 0);
   const std::string log = folder.path() + "/corner_seed1_rssi.csv";
-  CliResult result = run_cli(
-      {"localize", "--log", log, "--method", "wls", "--environment", "building-obstructed", "--json"});
+  CliResult result = run_cli({"localize", "--log", log, "--method", "wls", "--environment",
+                              "building-obstructed", "--json"});
   INFO(result.out << result.err);
   REQUIRE(result.exit_code == 0);
   // Table 4.2's "obstructed in building, 4 to 6": 5.

@@ -66,8 +66,9 @@ TEST_CASE("chunks average the readings' distances; weights are sqrt(c) / r", "[l
   CHECK(chunks[2].position().x() == Approx(-0.05));
 }
 
-TEST_CASE("paper 4's weight w = sqrt(c) / r scales each equation; the old variant weighted its square",
-          "[localize]") {
+TEST_CASE(
+    "paper 4's weight w = sqrt(c) / r scales each equation; the old variant weighted its square",
+    "[localize]") {
   // Five chunks whose ranges disagree (no common point), so the weighting moves the answer.
   struct Row {
     double x, y, range;

@@ -1,8 +1,8 @@
+#include "rigdesign/localize/path_loss_calibration.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
-
-#include "rigdesign/localize/path_loss_calibration.hpp"
 
 using namespace rigdesign;
 
@@ -98,8 +98,10 @@ TEST_CASE("calibration: a mapped wall's loss is taken off before the fit", "[loc
       rssi.push_back(-45.0 - 20.0 * std::log10(distance) + e - (distance > 5.0 ? 10.0 : 0.0));
     }
   }
-  const std::vector<localize::WallSegment> walls = {{model::Vec2(5.0, -1.0), model::Vec2(5.0, 1.0), 10.0}};
-  const auto with_map = localize::calibrate_path_loss(scans_at(d, rssi), model::Vec3::Zero(), walls);
+  const std::vector<localize::WallSegment> walls = {
+      {model::Vec2(5.0, -1.0), model::Vec2(5.0, 1.0), 10.0}};
+  const auto with_map =
+      localize::calibrate_path_loss(scans_at(d, rssi), model::Vec3::Zero(), walls);
   const auto without = localize::calibrate_path_loss(scans_at(d, rssi), model::Vec3::Zero());
   REQUIRE(with_map);
   REQUIRE(without);

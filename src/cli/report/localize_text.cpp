@@ -36,12 +36,11 @@ void print_emitter_head(const EmitterReport& report, const LocalizeOptions& opti
     const localize::PathLossParams& model = options.params.path_loss;
     out << "  path loss: a " << model::format_number(model.rssi_at_1m_dbm) << " dBm, n "
         << model::format_number(model.exponent) << ", "
-        << (!options.environment.empty()
-                ? "n from --environment " + options.environment
-                : options.path_loss_given
-                      ? std::string("as given")
-                      : std::string("assumed, not calibrated (--calibrate on a log of a phone at "
-                                    "a known place, or --environment NAME)"))
+        << (!options.environment.empty() ? "n from --environment " + options.environment
+            : options.path_loss_given
+                ? std::string("as given")
+                : std::string("assumed, not calibrated (--calibrate on a log of a phone at "
+                              "a known place, or --environment NAME)"))
         << (report.method == localize::LocalizeMethod::wls
                 ? options.params.chunking.weighting == localize::WlsWeighting::rows
                       ? "; chunk weight sqrt(c)/r on each equation (eq. 12)"
