@@ -14,6 +14,7 @@ packages=(
   libosmesa6-dev                         # off-screen 3D renders of FOV volumes
   libcairo2-dev                          # 2D charts, cross-section images, text, PNG and SVG
   liburdfdom-dev                         # mount poses from a robot's URDF
+  libsdformat-dev                        # tests: Gazebo's own SDF parser reads the exported sensors
   libtinyxml2-dev                        # xacro robot descriptions, parsed with line numbers
   libassimp-dev                          # collision meshes of robot descriptions (STL, COLLADA, OBJ)
   python3                                # an independent XML parser for the JUnit test; fuzz seeds

@@ -86,7 +86,8 @@ Command setup_export(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand(
       "export",
       "Write the rig's ROS 2 configuration: sensors.urdf.xacro, nav2_costmap.yaml, "
-      "self_filters.yaml");
+      "self_filters.yaml and its launch file, and for gz sim sensors.gazebo.xacro and "
+      "bridge.yaml");
   app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
   app->add_option("--to", options->to, "Output folder (created if missing)")->required();
   app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");

@@ -6,13 +6,15 @@ Deployment plan_deployment(const model::Rig& rig, const model::SensorLibrary& li
                            const model::Requirements* requirements, const DeployOptions& options) {
   Deployment deployment{sensor_frames(rig, library, options.parent),
                         costmap_config(rig, library, requirements, options),
-                        self_filters(rig, library)};
+                        self_filters(rig, library),
+                        {}};
   // The costmap reads what the self-filters leave, not the raw data with the robot in it.
   for (std::size_t m = 0; m < deployment.self_filters.size(); ++m) {
     SourceConfig& source = deployment.costmap.sources[m];
     if (filters_anything(deployment.self_filters[m]))
       source.topic = self_filtered_topic(source.raw_topic);
   }
+  deployment.gazebo = gazebo_sensors(rig, deployment.frames, deployment.costmap, library);
   return deployment;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 /// Everything a rig means for the ROS stack that runs it (issue 14): sensor frames, nav2
-/// costmap parameters, self-filters. `rigdesign export` and `select --out` write it.
+/// costmap parameters, self-filters, Gazebo sensors. `rigdesign export` and `select --out` write it.
 #include <vector>
 
 #include "rigdesign/deploy/costmap_config.hpp"
+#include "rigdesign/deploy/gazebo_sensors.hpp"
 #include "rigdesign/deploy/self_filters.hpp"
 #include "rigdesign/deploy/sensor_frames.hpp"
 
@@ -13,6 +14,7 @@ struct Deployment {
   SensorFrames frames;
   CostmapConfig costmap;
   std::vector<SelfFilter> self_filters;
+  std::vector<GazeboSensor> gazebo;  ///< the rig in gz sim (issue 34)
 };
 
 /// Precondition: the rig's references resolve in `library`. `requirements` may be null.

@@ -3,6 +3,7 @@
 
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/gazebo/sensors_gazebo_writer.hpp"
 #include "rigdesign/io/nav2/costmap_params_writer.hpp"
 #include "rigdesign/io/robot/sensors_xacro_writer.hpp"
 #include "rigdesign/io/self_filters/self_filters_launch_writer.hpp"
@@ -32,7 +33,9 @@ std::vector<std::string> write_deployment(const std::string& folder, const model
        self_filters_text(deployment.self_filters, rig.base_link, T_robot_base, header)},
       {"self_filters.launch.py",
        self_filters_launch_text(deployment.self_filters, deployment.costmap.sources,
-                                "self_filters.yaml", header)}};
+                                "self_filters.yaml", header)},
+      {"sensors.gazebo.xacro", sensors_gazebo_xacro_text(deployment.gazebo, header)},
+      {"bridge.yaml", gz_bridge_yaml_text(deployment.gazebo, header)}};
   std::vector<std::string> written;
   for (const auto& [name, text] : files) {
     const std::string path = (std::filesystem::path(folder) / name).string();

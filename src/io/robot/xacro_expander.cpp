@@ -391,7 +391,7 @@ class Expander {
       // Simulator and controller configuration: URDF parsers skip it and so does rigdesign,
       // unexpanded, so that a plugin's $(find PKG) for a package this machine lacks (Gazebo
       // plugins, ros2_control configs) does not stop a description from loading.
-      if (kIgnoredElements.count(node.name)) return;
+      if (!input_.keep_simulation && kIgnoredElements.count(node.name)) return;
       xml::Node element;
       element.name = node.name;
       element.where = node.where;

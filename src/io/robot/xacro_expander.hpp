@@ -30,6 +30,10 @@ struct XacroInput {
   /// description never reads is a typo worth a warning (HUSKY_LASER_3D_ENABLE).
   std::set<std::string>* environment_read = nullptr;
   model::SourceLocation named_at;                  ///< where the rig names the description
+  /// Expand `<gazebo>`, `<ros2_control>` and `<transmission>` too (the simulation's URDF, as
+  /// the tests hand it to libsdformat); by default they are left out unexpanded, so that a
+  /// plugin's $(find PKG) this machine lacks does not stop a description from loading.
+  bool keep_simulation = false;
 };
 
 /// The expanded description: a plain URDF tree whose elements keep the file and line of the

@@ -55,6 +55,17 @@ for joint in joints:
 
 py_compile.compile(folder + '/self_filters.launch.py', doraise=True)
 
+# The Gazebo macro: one <sensor> per mount, named after it; the bridge: one entry per mount.
+gazebo = ET.parse(folder + '/sensors.gazebo.xacro').getroot()
+sensor_names = sorted(s.get('name') for s in gazebo.iter('sensor'))
+if sensor_names != sorted(mounts):
+    problems.append('Gazebo sensors %r, rig mounts %r' % (sensor_names, mounts))
+bridge = yaml.safe_load(open(folder + '/bridge.yaml', encoding='utf-8'))
+if not isinstance(bridge, list) or len(bridge) != len(mounts):
+    problems.append('bridge.yaml holds %r, not one entry per mount' % (bridge,))
+elif 'injected' in set(keys_of(bridge)):
+    problems.append('a key from the rig name reached bridge.yaml')
+
 for problem in problems:
     print(problem)
 sys.exit(1 if problems else 0)

@@ -11,7 +11,8 @@
 
 namespace rigdesign::io {
 
-/// Writes sensors.urdf.xacro, nav2_costmap.yaml and self_filters.yaml into `folder` (created
+/// Writes sensors.urdf.xacro, nav2_costmap.yaml, self_filters.yaml (and its launch file),
+/// sensors.gazebo.xacro and bridge.yaml into `folder` (created
 /// if missing), each atomically; `header` opens every file. Returns the paths written.
 /// Throws InputError when the folder cannot be written.
 std::vector<std::string> write_deployment(const std::string& folder, const model::Rig& rig,
