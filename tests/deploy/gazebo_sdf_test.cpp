@@ -64,9 +64,11 @@ std::string wrapper_xacro(const model::Rig& rig, const deploy::Deployment& deplo
   const model::Pose3 T_robot_parent =
       deploy::robot_frame_pose(rig, parent).value_or(model::Pose3::Identity());
   std::ostringstream out;
-  out << "<?xml version=\"1.0\"?>\n<robot name=\"rig\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
+  out << "<?xml version=\"1.0\"?>\n<robot name=\"rig\" "
+         "xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
       << "  <link name=\"" << parent << "\"><inertial><mass value=\"20\"/>"
-      << "<inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial></link>\n";
+      << "<inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" "
+         "izz=\"1\"/></inertial></link>\n";
   std::set<std::string> written = {parent};
   for (const deploy::SensorFrame& frame : deployment.frames.frames) {
     std::vector<std::string> links;
@@ -107,10 +109,9 @@ TEST_CASE("export: libsdformat reads every bundled rig's Gazebo sensors as the d
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   const auto pixels = pixels_in_sensors_yaml();
   int lidars = 0, cameras = 0;
-  for (const char* rig_file :
-       {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
-        "rigs/cart_two_scanners.yaml", "rigs/delivery_amr.yaml", "rigs/cell.yaml",
-        "rigs/elektron.yaml"}) {
+  for (const char* rig_file : {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
+                               "rigs/cart_two_scanners.yaml", "rigs/delivery_amr.yaml",
+                               "rigs/cell.yaml", "rigs/elektron.yaml"}) {
     INFO(rig_file);
     const model::Rig rig = io::load_rig(source_path(rig_file));
     deploy::DeployOptions options;
@@ -146,16 +147,16 @@ TEST_CASE("export: libsdformat reads every bundled rig's Gazebo sensors as the d
       CHECK(frame_id == source.sensor_frame);
       CHECK(urdf.find("<link name=\"" + frame_id + "\"") != std::string::npos);
       // Noise: sigma(d) at the mount's distance of interest (the rig file's d).
-      const double d = std::min(mount.distance_of_interest.value_or(rig.distance_of_interest),
-                                mode.max_range);
+      const double d =
+          std::min(mount.distance_of_interest.value_or(rig.distance_of_interest), mode.max_range);
       const double sigma = mode.noise.a + mode.noise.b * d + mode.noise.c * d * d;
       // The URDF-to-SDF conversion lumps every fixed joint into the parent link: the sensor's
       // pose there is the mount's pose in the rig (x forward: gz sensors look along +x).
       CHECK(link_name == deployment.frames.parent);
-      const model::Pose3 expected =
-          deploy::robot_frame_pose(rig, deployment.frames.parent).value_or(model::Pose3::Identity())
-              .inverse() *
-          mount.T_robot_sensor;
+      const model::Pose3 expected = deploy::robot_frame_pose(rig, deployment.frames.parent)
+                                        .value_or(model::Pose3::Identity())
+                                        .inverse() *
+                                    mount.T_robot_sensor;
       // libsdformat 12 writes the lumped pose as text with 6 significant digits: 1e-5.
       const auto& pose = sensor->RawPose();
       CHECK((model::Vec3(pose.Pos().X(), pose.Pos().Y(), pose.Pos().Z()) - expected.translation())
@@ -190,8 +191,7 @@ TEST_CASE("export: libsdformat reads every bundled rig's Gazebo sensors as the d
         CHECK(l->HorizontalScanSamples() ==
               static_cast<unsigned>(std::lround(fov / spacing) + (full ? 0 : 1)));
         CHECK(l->HorizontalScanMinAngle().Radian() == Approx(-fov / 2));
-        CHECK(l->HorizontalScanMaxAngle().Radian() ==
-              Approx(full ? fov / 2 - spacing : fov / 2));
+        CHECK(l->HorizontalScanMaxAngle().Radian() == Approx(full ? fov / 2 - spacing : fov / 2));
         if (mode.angular_resolution_v) {
           CHECK(l->VerticalScanSamples() ==
                 static_cast<unsigned>(

@@ -23,7 +23,8 @@ struct GazeboSensor {
   /// The `<gazebo reference>`: the sensor's link (body axes: x forward, the way gz sensors
   /// look), and the sensor's pose in it (a rotation when that link is a camera's optical frame).
   std::string link;
-  bool link_added = false;  ///< sensors.urdf.xacro adds `link` (prefixed), else the description has it
+  bool link_added =
+      false;  ///< sensors.urdf.xacro adds `link` (prefixed), else the description has it
   model::Pose3 T_link_sensor = model::Pose3::Identity();
   /// gz-sensors' `gz_frame_id`: the frame the nav2 source's data is stamped with.
   std::string frame_id;
@@ -35,7 +36,7 @@ struct GazeboSensor {
   /// gpu_lidar publishes LaserScan on it and its cloud on `<topic>/points`; a depth camera its
   /// depth image on it and its cloud on `<topic>/points`.
   std::string topic;
-  bool laser_scan = false;  ///< the ROS side wants LaserScan (2D scanners), else PointCloud2
+  bool laser_scan = false;   ///< the ROS side wants LaserScan (2D scanners), else PointCloud2
   double update_rate = 0.0;  ///< [Hz] the mode's frequency
   // gpu_lidar: scan angles in the sensor frame [rad] and ray counts.
   int horizontal_samples = 0, vertical_samples = 1;
@@ -49,7 +50,7 @@ struct GazeboSensor {
   /// Gaussian range noise: the mode's sigma(d) at the mount's distance of interest d (where the
   /// rig's resolution and noise are judged, paper 1), at most the mode's maximum range.
   double noise_stddev = 0.0;
-  double noise_distance = 0.0;  ///< [m] the d above
+  double noise_distance = 0.0;          ///< [m] the d above
   double datasheet_vertical_fov = 0.0;  ///< [rad] the mode's, for the file's comment
 };
 

@@ -14,11 +14,11 @@ namespace rigdesign::io {
 namespace {
 
 // Exact, except that rounding residue below 1e-15 (and -0) is written as 0 for the reader.
-std::string number(double value) {
+std::string sdf_number(double value) {
   return model::exact_number(std::abs(value) < 1e-15 ? 0.0 : value);
 }
 
-std::string degrees(double radians) {
+std::string degrees_text(double radians) {
   return model::format_number(radians * 180.0 / std::numbers::pi, 4);
 }
 
@@ -27,52 +27,53 @@ std::string name_in_macro(const std::string& name, bool added) {
   return added ? "${prefix}" + xacro_literal(name) : xacro_literal(name);
 }
 
-void write_noise(const deploy::GazeboSensor& s, const std::string& indent, std::ostream& out) {
+void write_gazebo_noise(const deploy::GazeboSensor& s, const std::string& indent,
+                        std::ostream& out) {
   out << indent << "<noise>\n"
       << indent << "  <type>gaussian</type>\n"
       << indent << "  <mean>0</mean>\n"
-      << indent << "  <stddev>" << number(s.noise_stddev) << "</stddev>\n"
+      << indent << "  <stddev>" << sdf_number(s.noise_stddev) << "</stddev>\n"
       << indent << "</noise>\n";
 }
 
-void write_lidar(const deploy::GazeboSensor& s, std::ostream& out) {
+void write_gazebo_lidar(const deploy::GazeboSensor& s, std::ostream& out) {
   out << "        <lidar>\n          <scan>\n"
       << "            <horizontal>\n"
       << "              <samples>" << s.horizontal_samples << "</samples>\n"
       << "              <resolution>1</resolution>\n"
-      << "              <min_angle>" << number(s.horizontal_min) << "</min_angle>\n"
-      << "              <max_angle>" << number(s.horizontal_max) << "</max_angle>\n"
+      << "              <min_angle>" << sdf_number(s.horizontal_min) << "</min_angle>\n"
+      << "              <max_angle>" << sdf_number(s.horizontal_max) << "</max_angle>\n"
       << "            </horizontal>\n";
   if (s.vertical_samples > 1) {
     out << "            <vertical>\n"
         << "              <samples>" << s.vertical_samples << "</samples>\n"
         << "              <resolution>1</resolution>\n"
-        << "              <min_angle>" << number(s.vertical_min) << "</min_angle>\n"
-        << "              <max_angle>" << number(s.vertical_max) << "</max_angle>\n"
+        << "              <min_angle>" << sdf_number(s.vertical_min) << "</min_angle>\n"
+        << "              <max_angle>" << sdf_number(s.vertical_max) << "</max_angle>\n"
         << "            </vertical>\n";
   }
   out << "          </scan>\n"
       << "          <range>\n"
-      << "            <min>" << number(s.range_min) << "</min>\n"
-      << "            <max>" << number(s.range_max) << "</max>\n"
+      << "            <min>" << sdf_number(s.range_min) << "</min>\n"
+      << "            <max>" << sdf_number(s.range_max) << "</max>\n"
       << "          </range>\n";
-  write_noise(s, "          ", out);
+  write_gazebo_noise(s, "          ", out);
   out << "        </lidar>\n";
 }
 
-void write_camera(const deploy::GazeboSensor& s, std::ostream& out) {
+void write_gazebo_camera(const deploy::GazeboSensor& s, std::ostream& out) {
   out << "        <camera>\n"
-      << "          <horizontal_fov>" << number(s.horizontal_fov) << "</horizontal_fov>\n"
+      << "          <horizontal_fov>" << sdf_number(s.horizontal_fov) << "</horizontal_fov>\n"
       << "          <image>\n"
       << "            <width>" << s.width << "</width>\n"
       << "            <height>" << s.height << "</height>\n"
       << "            <format>R_FLOAT32</format>\n"
       << "          </image>\n"
       << "          <clip>\n"
-      << "            <near>" << number(s.range_min) << "</near>\n"
-      << "            <far>" << number(s.range_max) << "</far>\n"
+      << "            <near>" << sdf_number(s.range_min) << "</near>\n"
+      << "            <far>" << sdf_number(s.range_max) << "</far>\n"
       << "          </clip>\n";
-  write_noise(s, "          ", out);
+  write_gazebo_noise(s, "          ", out);
   out << "        </camera>\n";
 }
 
@@ -85,24 +86,27 @@ void write_simulated_frame(const deploy::GazeboSensor& s, std::ostream& out) {
       << "    <joint name=\"" << frame << "_sim_joint\" type=\"fixed\">\n"
       << "      <parent link=\"" << name_in_macro(s.link, s.link_added) << "\"/>\n"
       << "      <child link=\"" << frame << "\"/>\n"
-      << "      <origin xyz=\"0 0 0\" rpy=\"" << number(rpy.x()) << " " << number(rpy.y()) << " "
-      << number(rpy.z()) << "\"/>\n"
+      << "      <origin xyz=\"0 0 0\" rpy=\"" << sdf_number(rpy.x()) << " " << sdf_number(rpy.y())
+      << " " << sdf_number(rpy.z()) << "\"/>\n"
       << "    </joint>\n";
 }
 
-void write_sensor(const deploy::GazeboSensor& s, std::ostream& out) {
+void write_gazebo_sensor(const deploy::GazeboSensor& s, std::ostream& out) {
   const bool lidar = s.type == deploy::GazeboSensorType::gpu_lidar;
   std::ostringstream what;
   what << s.mount_id << ": " << s.sensor_id << ", mode " << s.mode_id << "; noise sigma("
-       << number(s.noise_distance) << " m) = " << number(s.noise_stddev)
+       << sdf_number(s.noise_distance) << " m) = " << sdf_number(s.noise_stddev)
        << " m at the distance of interest";
   if (!lidar) {
-    what << "; pinhole vertical FOV " << degrees(s.pinhole_vertical_fov) << " deg (datasheet "
-         << degrees(s.datasheet_vertical_fov) << " deg)";
+    what << "; pinhole vertical FOV " << degrees_text(s.pinhole_vertical_fov) << " deg (datasheet "
+         << degrees_text(s.datasheet_vertical_fov) << " deg)";
   }
   out << "    <!-- " << xml_comment_line(what.str()) << " -->\n";
   if (!s.simulated_frame.empty()) {
-    out << "    <!-- " << xml_comment_line(s.simulated_frame + ": the driver broadcasts it on the robot; the simulation adds it") << " -->\n";
+    out << "    <!-- "
+        << xml_comment_line(s.simulated_frame +
+                            ": the driver broadcasts it on the robot; the simulation adds it")
+        << " -->\n";
     write_simulated_frame(s, out);
   }
   out << "    <gazebo reference=\"" << name_in_macro(s.link, s.link_added) << "\">\n"
@@ -111,18 +115,18 @@ void write_sensor(const deploy::GazeboSensor& s, std::ostream& out) {
   if (!s.T_link_sensor.isApprox(model::Pose3::Identity())) {
     const model::Vec3 rpy = model::rpy_from_rotation(s.T_link_sensor.linear());
     const model::Vec3 xyz = s.T_link_sensor.translation();
-    out << "        <pose>" << number(xyz.x()) << " " << number(xyz.y()) << " " << number(xyz.z())
-        << " " << number(rpy.x()) << " " << number(rpy.y()) << " " << number(rpy.z())
-        << "</pose>\n";
+    out << "        <pose>" << sdf_number(xyz.x()) << " " << sdf_number(xyz.y()) << " "
+        << sdf_number(xyz.z()) << " " << sdf_number(rpy.x()) << " " << sdf_number(rpy.y()) << " "
+        << sdf_number(rpy.z()) << "</pose>\n";
   }
   out << "        <always_on>true</always_on>\n"
-      << "        <update_rate>" << number(s.update_rate) << "</update_rate>\n"
+      << "        <update_rate>" << sdf_number(s.update_rate) << "</update_rate>\n"
       << "        <topic>" << xacro_literal(s.topic) << "</topic>\n"
       << "        <gz_frame_id>" << name_in_macro(s.frame_id, s.frame_added) << "</gz_frame_id>\n";
   if (lidar) {
-    write_lidar(s, out);
+    write_gazebo_lidar(s, out);
   } else {
-    write_camera(s, out);
+    write_gazebo_camera(s, out);
   }
   out << "      </sensor>\n    </gazebo>\n";
 }
@@ -146,7 +150,7 @@ std::string sensors_gazebo_xacro_text(const std::vector<deploy::GazeboSensor>& s
          "-->\n";
   out << "<robot xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n";
   out << "  <xacro:macro name=\"rig_gazebo_sensors\" params=\"prefix:=${''}\">\n";
-  for (const deploy::GazeboSensor& sensor : sensors) write_sensor(sensor, out);
+  for (const deploy::GazeboSensor& sensor : sensors) write_gazebo_sensor(sensor, out);
   out << "  </xacro:macro>\n</robot>\n";
   return out.str();
 }
@@ -166,8 +170,7 @@ std::string gz_bridge_yaml_text(const std::vector<deploy::GazeboSensor>& sensors
         << "  gz_topic_name: " << yaml_quoted(scan ? s.topic : s.topic + "/points") << "\n"
         << "  ros_type_name: "
         << (scan ? "sensor_msgs/msg/LaserScan" : "sensor_msgs/msg/PointCloud2") << "\n"
-        << "  gz_type_name: " << (scan ? "gz.msgs.LaserScan" : "gz.msgs.PointCloudPacked")
-        << "\n"
+        << "  gz_type_name: " << (scan ? "gz.msgs.LaserScan" : "gz.msgs.PointCloudPacked") << "\n"
         << "  direction: GZ_TO_ROS\n";
   }
   return out.str();
