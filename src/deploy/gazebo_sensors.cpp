@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 #include "rigdesign/model/optical_frame.hpp"
 
@@ -11,6 +12,8 @@ namespace {
 
 // A horizontal FOV this close to a full turn wraps: its first and last rays would coincide.
 constexpr double kFullTurnTolerance = 1e-6;  // [rad]
+// gz-sensors publishes a gpu_lidar's or depth camera's cloud on `<topic>` + this.
+constexpr std::string_view kCloudSuffix = "/points";
 
 int ray_count(double fov, double spacing, bool wraps) {
   const int gaps = static_cast<int>(std::lround(fov / spacing));
@@ -75,8 +78,14 @@ std::vector<GazeboSensor> gazebo_sensors(const model::Rig& rig, const SensorFram
                               ? !frame.optical_joint.empty()
                               : sensor.link_added);
     if (frame.data_frame_from_driver) sensor.simulated_frame = frame.data_frame;
-    sensor.topic = source.raw_topic;
+    sensor.ros_topic = source.raw_topic;
     sensor.laser_scan = source.laser_scan;
+    sensor.topic = source.raw_topic;
+    if (!sensor.laser_scan && sensor.topic.ends_with(kCloudSuffix) &&
+        sensor.topic.size() > kCloudSuffix.size())
+      sensor.topic.resize(sensor.topic.size() - kCloudSuffix.size());
+    sensor.gz_data_topic =
+        sensor.laser_scan ? sensor.topic : sensor.topic + std::string(kCloudSuffix);
     sensor.update_rate = mode.frequency;
     sensor.range_min = mode.min_range;
     sensor.range_max = mode.max_range;

@@ -10,12 +10,16 @@
 #include <map>
 #include <numbers>
 #include <sdf/Camera.hh>
+#include <sdf/Geometry.hh>
 #include <sdf/Lidar.hh>
 #include <sdf/Link.hh>
+#include <sdf/Mesh.hh>
 #include <sdf/Model.hh>
 #include <sdf/Noise.hh>
 #include <sdf/Root.hh>
 #include <sdf/Sensor.hh>
+#include <sdf/Visual.hh>
+#include <sdf/World.hh>
 #include <set>
 #include <sstream>
 
@@ -25,7 +29,9 @@
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/mesh/assimp_mesh_loader.hpp"
 #include "rigdesign/model/rotation.hpp"
+#include "rigdesign/sim/scene_library.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 
@@ -142,7 +148,11 @@ TEST_CASE("export: libsdformat reads every bundled rig's Gazebo sensors as the d
       REQUIRE(sensor != nullptr);
       CHECK(sensor->UpdateRate() == Approx(mode.frequency));
       // The topic and frame nav2's source of this mount reads (from nav2_costmap.yaml's text).
-      CHECK(sensor->Topic() == source.raw_topic);
+      // gz-sensors publishes a scan on <topic> and a cloud on <topic>/points (docs/gazebo.md).
+      const std::string gz_data = source.laser_scan ? sensor->Topic() : sensor->Topic() + "/points";
+      if (source.laser_scan || source.raw_topic.ends_with("/points")) {
+        CHECK(gz_data == source.raw_topic);  // one name in gz and ROS
+      }
       const std::string frame_id = sensor->Element()->Get<std::string>("gz_frame_id");
       CHECK(frame_id == source.sensor_frame);
       CHECK(urdf.find("<link name=\"" + frame_id + "\"") != std::string::npos);
@@ -213,10 +223,50 @@ TEST_CASE("export: libsdformat reads every bundled rig's Gazebo sensors as the d
       CHECK(entry["direction"].as<std::string>() == "GZ_TO_ROS");
       CHECK(entry["ros_type_name"].as<std::string>() ==
             (source.laser_scan ? "sensor_msgs/msg/LaserScan" : "sensor_msgs/msg/PointCloud2"));
-      CHECK(entry["gz_topic_name"].as<std::string>() ==
-            (source.laser_scan ? source.raw_topic : source.raw_topic + "/points"));
+      CHECK(entry["gz_topic_name"].as<std::string>() == gz_data);
     }
   }
   CHECK(lidars > 0);
   CHECK(cameras > 0);
+}
+
+TEST_CASE("simulate --gazebo: libsdformat loads the office world, assimp its mesh", "[deploy]") {
+  test::TempFolder folder;
+  const std::string out = folder.path() + "/sim";
+  const test::CliResult result =
+      test::run_cli({"simulate", source_path("rigs/delivery_amr.yaml"), "--scene", "office",
+                     "--seed", "3", "--out", out, "--gazebo"});
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  sdf::Root root;
+  const sdf::Errors errors = root.Load(out + "/gazebo/world.sdf");
+  for (const sdf::Error& e : errors) INFO(e.Message());
+  REQUIRE(errors.empty());
+  REQUIRE(root.WorldCount() == 1u);
+  const sdf::World* world = root.WorldByIndex(0);
+  REQUIRE(world->ModelCount() == 1u);
+  const sdf::Model* scene_model = world->ModelByIndex(0);
+  CHECK(scene_model->Static());
+  const sdf::Link* link = scene_model->LinkByIndex(0);
+  REQUIRE(link != nullptr);
+  REQUIRE(link->VisualCount() == 1u);
+  REQUIRE(link->CollisionCount() == 1u);
+  const sdf::Mesh* mesh = link->VisualByIndex(0)->Geom()->MeshShape();
+  REQUIRE(mesh != nullptr);
+  CHECK(mesh->Uri() == "scene.obj");
+  // assimp reads the OBJ beside the world: the scene's triangles at t = 0, all of them.
+  const model::TriangleMesh read =
+      io::load_mesh_with_assimp(out + "/gazebo/scene.obj", model::SourceLocation{"test"});
+  const model::TriangleMesh scene = sim::make_scene("office", 3).at(0.0);
+  CHECK(read.triangles.size() == scene.triangles.size());
+  double area_read = 0.0, area_scene = 0.0;
+  for (const auto& [mesh_of, area] :
+       {std::pair<const model::TriangleMesh*, double*>{&read, &area_read}, {&scene, &area_scene}}) {
+    for (const std::array<int, 3>& t : mesh_of->triangles) {
+      const model::Vec3 a = mesh_of->vertices[t[0]], b = mesh_of->vertices[t[1]],
+                        c = mesh_of->vertices[t[2]];
+      *area += 0.5 * (b - a).cross(c - a).norm();
+    }
+  }
+  CHECK(area_read == Approx(area_scene).epsilon(1e-6));  // assimp keeps single-precision floats
 }

@@ -32,10 +32,14 @@ struct GazeboSensor {
   /// A frame the sensor's driver broadcasts on the robot (so the URDF must not have it) that the
   /// simulation must supply: an optical frame at `link`'s origin. Empty: the URDF has frame_id.
   std::string simulated_frame;
-  /// gz `<topic>`: the ROS topic the driver publishes (the nav2 source's raw topic). A
-  /// gpu_lidar publishes LaserScan on it and its cloud on `<topic>/points`; a depth camera its
-  /// depth image on it and its cloud on `<topic>/points`.
+  /// The ROS topic the driver publishes (the nav2 source's raw topic), which the bridge feeds.
+  std::string ros_topic;
+  /// gz `<topic>`. A gpu_lidar publishes LaserScan on it and its cloud on `<topic>/points`; a
+  /// depth camera its depth image on it and its cloud on `<topic>/points`. A scan's topic is
+  /// the ROS topic; a cloud's is the ROS topic without its `/points` ending where it has one,
+  /// so the cloud keeps the ROS name in gz too.
   std::string topic;
+  std::string gz_data_topic;  ///< what the bridge reads: the scan's topic or `<topic>/points`
   bool laser_scan = false;   ///< the ROS side wants LaserScan (2D scanners), else PointCloud2
   double update_rate = 0.0;  ///< [Hz] the mode's frequency
   // gpu_lidar: scan angles in the sensor frame [rad] and ray counts.

@@ -141,8 +141,9 @@ std::string sensors_gazebo_xacro_text(const std::vector<deploy::GazeboSensor>& s
   out << "  Simulation only: <xacro:include filename=\"sensors.gazebo.xacro\"/>\n"
          "  <xacro:rig_gazebo_sensors/> beside sensors.urdf.xacro's <xacro:rig_sensors/> (same\n"
          "  prefix). gz sim renders the sensors with its Sensors system (gz-sim-sensors-system,\n"
-         "  render_engine ogre2). Each <sensor> publishes on <topic>, the ROS topic nav2 reads\n"
-         "  (clouds on <topic>/points); bridge.yaml brings them to ROS. gz_frame_id stamps the\n"
+         "  render_engine ogre2). A scan is published on <topic>, the ROS topic nav2 reads; a\n"
+         "  cloud on <topic>/points (the ROS topic, where that ends in /points); bridge.yaml\n"
+         "  brings each to the ROS topic of its driver. gz_frame_id stamps the\n"
          "  frame nav2 and TF know (gz-sensors 8 / Harmonic, 7.1+ / Garden, 6.8+ / Fortress;\n"
          "  without it the data is stamped model/link/sensor). A sensor on a link the URDF\n"
          "  joins by a fixed joint is moved to the parent link by the URDF-to-SDF conversion,\n"
@@ -166,11 +167,12 @@ std::string gz_bridge_yaml_text(const std::vector<deploy::GazeboSensor>& sensors
   if (sensors.empty()) out << "[]\n";
   for (const deploy::GazeboSensor& s : sensors) {
     const bool scan = s.type == deploy::GazeboSensorType::gpu_lidar && s.laser_scan;
-    out << "- ros_topic_name: " << yaml_quoted(s.topic) << "\n"
-        << "  gz_topic_name: " << yaml_quoted(scan ? s.topic : s.topic + "/points") << "\n"
+    out << "- ros_topic_name: " << yaml_quoted(s.ros_topic) << "\n"
+        << "  gz_topic_name: " << yaml_quoted(s.gz_data_topic) << "\n"
         << "  ros_type_name: "
         << (scan ? "sensor_msgs/msg/LaserScan" : "sensor_msgs/msg/PointCloud2") << "\n"
-        << "  gz_type_name: " << (scan ? "gz.msgs.LaserScan" : "gz.msgs.PointCloudPacked") << "\n"
+        << "  gz_type_name: " << (scan ? "gz.msgs.LaserScan" : "gz.msgs.PointCloudPacked")
+        << "\n"
         << "  direction: GZ_TO_ROS\n";
   }
   return out.str();
