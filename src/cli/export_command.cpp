@@ -1,6 +1,7 @@
 // `rigdesign export RIG --to DIR [--parent LINK] [--scan-topic T] [--cloud-topic T]
-// [--max-speed V] [--update-rate F] [--hit-layer-plugin CLASS]`: writes what the rig means for its ROS 2 stack (issue 14):
-// the sensors' URDF macro, nav2 costmap parameters, self-filters; prints how each was derived.
+// [--max-speed V] [--update-rate F] [--hit-layer-plugin CLASS]`: writes what the rig means for its
+// ROS 2 stack (issue 14): the sensors' URDF macro, nav2 costmap parameters, self-filters; prints
+// how each was derived.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
@@ -27,6 +28,7 @@ struct ExportOptions {
   std::string sensors;
   std::string requirements;
   std::string to;
+  std::string layer = "voxel";  // --layer voxel|stvl
   deploy::DeployOptions deploy;
 };
 
@@ -45,7 +47,11 @@ bool plugin_class_name(const std::string& name) {
          std::all_of(tail.begin(), tail.end(), [&](char c) { return word(c) || c == ':'; });
 }
 
-int run_export(const ExportOptions& options, std::ostream& out) {
+int run_export(const ExportOptions& given, std::ostream& out) {
+  ExportOptions options = given;
+  require_option(options.layer == "voxel" || options.layer == "stvl", "--layer",
+                 "is '" + options.layer + "'", "voxel or stvl");
+  options.deploy.stvl = options.layer == "stvl";
   require_option(options.deploy.max_speed >= 0.0, "--max-speed", "must not be negative",
                  "a speed in m/s (0: the requirements' R5 speed)");
   require_option(options.deploy.min_speed > 0.0 && std::isfinite(options.deploy.min_speed),
@@ -117,6 +123,9 @@ Command setup_export(CLI::App& parent) {
                   "bands are written in that frame (Clearpath's 2D EKF: the base link's "
                   "height). Default 0, stated in the file")
       ->check(finite_in(-10.0, 10.0, "a height in metres within +-10"));
+  app->add_option("--layer", options->layer,
+                  "The 3D sensors' costmap layer: voxel (nav2's VoxelLayer, default) or stvl "
+                  "(spatio_temporal_voxel_layer; 2D scanners stay in nav2's ObstacleLayer)");
   app->add_option("--hit-layer-plugin", options->deploy.hit_layer_plugin,
                   "Add paper 1's Hit Layer as this costmap plugin class (one you built; nav2 "
                   "has none). Default: none, nav2's observation_persistence remembers the "

@@ -7,7 +7,8 @@ Deployment plan_deployment(const model::Rig& rig, const model::SensorLibrary& li
   Deployment deployment{sensor_frames(rig, library, options.parent),
                         costmap_config(rig, library, requirements, options),
                         self_filters(rig, library),
-                        {}};
+                        {},
+                        std::nullopt};
   // The costmap reads what the self-filters leave, not the raw data with the robot in it.
   for (std::size_t m = 0; m < deployment.self_filters.size(); ++m) {
     SourceConfig& source = deployment.costmap.sources[m];
@@ -15,6 +16,7 @@ Deployment plan_deployment(const model::Rig& rig, const model::SensorLibrary& li
       source.topic = self_filtered_topic(source.raw_topic);
   }
   deployment.gazebo = gazebo_sensors(rig, deployment.frames, deployment.costmap, library);
+  if (options.stvl) deployment.stvl = stvl_layer(rig, library, deployment.costmap);
   return deployment;
 }
 

@@ -39,6 +39,9 @@ struct DeployOptions {
   /// [m] how high the costmap's global frame (odom) stands above the floor: Clearpath's 2D
   /// EKF puts odom at base_link height. The file's height bands are written in that frame.
   double global_frame_height = 0.0;
+  /// The 3D sensors' layer: nav2's voxel layer, or spatio_temporal_voxel_layer (`export
+  /// --layer stvl`; 2D scanners stay in nav2's obstacle layer).
+  bool stvl = false;
 };
 
 /// One observation source as nav2's obstacle and voxel layers read it.

@@ -1,12 +1,14 @@
 #pragma once
 /// Everything a rig means for the ROS stack that runs it (issue 14): sensor frames, nav2
 /// costmap parameters, self-filters, Gazebo sensors. `rigdesign export` and `select --out` write it.
+#include <optional>
 #include <vector>
 
 #include "rigdesign/deploy/costmap_config.hpp"
 #include "rigdesign/deploy/gazebo_sensors.hpp"
 #include "rigdesign/deploy/self_filters.hpp"
 #include "rigdesign/deploy/sensor_frames.hpp"
+#include "rigdesign/deploy/stvl_config.hpp"
 
 namespace rigdesign::deploy {
 
@@ -15,6 +17,7 @@ struct Deployment {
   CostmapConfig costmap;
   std::vector<SelfFilter> self_filters;
   std::vector<GazeboSensor> gazebo;  ///< the rig in gz sim (issue 34)
+  std::optional<StvlLayer> stvl;      ///< DeployOptions::stvl: the 3D sources in STVL
 };
 
 /// Precondition: the rig's references resolve in `library`. `requirements` may be null.

@@ -28,7 +28,10 @@ std::vector<std::string> write_deployment(const std::string& folder, const model
       deploy::robot_frame_pose(rig, rig.base_link).value_or(model::Pose3::Identity());
   const std::vector<std::pair<std::string, std::string>> files = {
       {"sensors.urdf.xacro", sensors_xacro_text(deployment.frames, header)},
-      {"nav2_costmap.yaml", nav2_costmap_text(deployment.costmap, header)},
+      {"nav2_costmap.yaml",
+       nav2_costmap_text(deployment.costmap, header,
+                         deployment.stvl && !deployment.stvl->sources.empty() ? &*deployment.stvl
+                                                                              : nullptr)},
       {"self_filters.yaml",
        self_filters_text(deployment.self_filters, rig.base_link, T_robot_base, header)},
       {"self_filters.launch.py",

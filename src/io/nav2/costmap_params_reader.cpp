@@ -7,6 +7,7 @@
 #include "io/config/field_checks.hpp"
 #include "io/config/yaml_reader.hpp"
 #include "io/nav2/nav2_keys.hpp"
+#include "io/nav2/stvl_layer_reader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/polygon_area.hpp"
 
@@ -291,6 +292,11 @@ CostmapParamsFile load_costmap_params(const std::string& path,
     if (auto layer = m.map(std::string(key), Need::optional)) {
       read_obstacle_layer(*layer, voxel, source_defaults, file);
     }
+  }
+  // spatio_temporal_voxel_layer (export --layer stvl): 3D sources, simulated as a voxel layer's.
+  if (auto stvl = m.map(std::string(nav2::kStvlLayer), Need::optional)) {
+    read_stvl_layer(*stvl, source_defaults, file);
+    p.layer = costmap::ObstacleLayerKind::voxel;
   }
   if (auto hit = m.map(std::string(nav2::kHitLayer), Need::optional)) read_hit_layer(*hit, p.hit);
   if (auto inflation = m.map(std::string(nav2::kInflationLayer), Need::optional)) {

@@ -20,12 +20,15 @@ inline constexpr std::string_view kVoxelLayer = "voxel_layer";
 inline constexpr std::string_view kHitLayer = "hit_layer";
 inline constexpr std::string_view kInflationLayer = "inflation_layer";
 inline constexpr std::string_view kStaticLayer = "static_layer";
+inline constexpr std::string_view kStvlLayer = "stvl_layer";
 
 // The `plugin` class nav2 loads for each layer.
 inline constexpr std::string_view kObstacleLayerClass = "nav2_costmap_2d::ObstacleLayer";
 inline constexpr std::string_view kVoxelLayerClass = "nav2_costmap_2d::VoxelLayer";
 inline constexpr std::string_view kInflationLayerClass = "nav2_costmap_2d::InflationLayer";
 inline constexpr std::string_view kStaticLayerClass = "nav2_costmap_2d::StaticLayer";
+inline constexpr std::string_view kStvlLayerClass =
+    "spatio_temporal_voxel_layer/SpatioTemporalVoxelLayer";
 
 /// A source's keep time [s] (costmap::ObservationSource::observation_persistence).
 inline constexpr std::string_view kObservationPersistence = "observation_persistence";

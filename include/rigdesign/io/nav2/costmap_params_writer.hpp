@@ -6,10 +6,14 @@
 #include <string>
 
 #include "rigdesign/deploy/costmap_config.hpp"
+#include "rigdesign/deploy/stvl_config.hpp"
 
 namespace rigdesign::io {
 
-/// The file's text; `header` opens it as comments, then the derivation notes.
-std::string nav2_costmap_text(const deploy::CostmapConfig& config, const std::string& header);
+/// The file's text; `header` opens it as comments, then the derivation notes. With `stvl` the
+/// 3D sources go to a spatio_temporal_voxel_layer (`stvl_layer`) and the 2D scanners, if any,
+/// to nav2's obstacle layer; `costmap --params` and `check --nav2` read only the latter.
+std::string nav2_costmap_text(const deploy::CostmapConfig& config, const std::string& header,
+                              const deploy::StvlLayer* stvl = nullptr);
 
 }  // namespace rigdesign::io

@@ -1,0 +1,110 @@
+#include "io/nav2/stvl_layer_reader.hpp"
+
+#include <limits>
+#include <sstream>
+
+#include "io/config/field_checks.hpp"
+
+namespace rigdesign::io {
+namespace {
+
+constexpr const char* kMetres = "metres, >= 0";
+// A voxel STVL never decays (decay_model other than 0 linear and 1 exponential) is kept this
+// long: longer than any check asks for.
+constexpr double kForever = 1e9;  // [s]
+
+void ignore(MapReader& m, const std::vector<std::string>& keys) {
+  for (const std::string& key : keys) m.has(key);  // asking marks a key as known
+}
+
+const std::vector<std::string> kIgnoredStvlLayerKeys = {"plugin",
+                                                        "enabled",
+                                                        "voxel_size",
+                                                        "track_unknown_space",
+                                                        "mark_threshold",
+                                                        "update_footprint_enabled",
+                                                        "combination_method",
+                                                        "publish_voxel_map",
+                                                        "mapping_mode",
+                                                        "map_save_duration",
+                                                        "transform_tolerance",
+                                                        "voxel_distance_decay"};
+const std::vector<std::string> kIgnoredStvlSourceKeys = {"topic",
+                                                         "data_type",
+                                                         "sensor_frame",
+                                                         "expected_update_rate",
+                                                         "inf_is_valid",
+                                                         "voxel_min_points",
+                                                         "clear_after_reading",
+                                                         "enabled",
+                                                         "model_type",
+                                                         "horizontal_fov_angle",
+                                                         "vertical_fov_angle",
+                                                         "vertical_fov_padding",
+                                                         "vertical_fov_offset",
+                                                         "decay_acceleration",
+                                                         "transport_type"};
+
+costmap::ObservationSource read_stvl_source(MapReader& m, costmap::ObservationSource source,
+                                            double keep) {
+  read_if_present(m, "marking", source.marking);
+  read_if_present(m, "clearing", source.clearing);
+  source.obstacle_min_range = 0.0;  // STVL marks from the sensor on
+  read_if_present(m, "obstacle_range", source.obstacle_max_range, kMetres);
+  read_if_present(m, "min_z", source.raytrace_min_range, kMetres);
+  read_if_present(m, "max_z", source.raytrace_max_range, kMetres);
+  for (const char* key : {"obstacle_range", "min_z", "max_z"}) {
+    const std::optional<double> value = m.number(key, Need::optional, kMetres);
+    m.require(!value || *value >= 0.0, key, "is negative", kMetres);
+  }
+  m.require(source.raytrace_min_range <= source.raytrace_max_range, "min_z", "is above max_z",
+            "min_z <= max_z");
+  read_if_present(m, "min_obstacle_height", source.min_obstacle_height, "a world height in metres");
+  read_if_present(m, "max_obstacle_height", source.max_obstacle_height, "a world height in metres");
+  const std::string filter = m.text("filter", Need::optional).value_or("passthrough");
+  if (filter != "passthrough" && filter != "voxel") {
+    // STVL applies the height band only inside those two filters: every height marks.
+    source.min_obstacle_height = -std::numeric_limits<double>::max();
+    source.max_obstacle_height = std::numeric_limits<double>::max();
+  }
+  m.require(source.min_obstacle_height <= source.max_obstacle_height, "min_obstacle_height",
+            "is above max_obstacle_height", "min_obstacle_height <= max_obstacle_height");
+  read_if_present(m, "observation_persistence", source.observation_persistence, "seconds, >= 0");
+  m.require(source.observation_persistence >= 0.0, "observation_persistence", "is negative",
+            "seconds, >= 0");
+  // The layer's decay keeps a marked voxel however the source's own buffer is kept.
+  source.observation_persistence = std::max(source.observation_persistence, keep);
+  ignore(m, kIgnoredStvlSourceKeys);
+  m.reject_unknown_keys();
+  return source;
+}
+
+}  // namespace
+
+void read_stvl_layer(MapReader& m, const costmap::ObservationSource& defaults,
+                     CostmapParamsFile& file) {
+  int decay_model = 0;
+  double voxel_decay = -1.0;  // STVL's default
+  read_if_present(m, "decay_model", decay_model, "0 (linear), 1 (exponential) or other (none)");
+  read_if_present(m, "voxel_decay", voxel_decay, "seconds");
+  const double keep = decay_model == 0 || decay_model == 1 ? std::max(0.0, voxel_decay) : kForever;
+  std::vector<std::string> names;
+  if (const std::optional<std::string> list =
+          m.text("observation_sources", Need::optional, "source names separated by spaces")) {
+    std::istringstream words(*list);
+    for (std::string word; words >> word;) names.push_back(word);
+  }
+  for (const std::string& name : names) {
+    file.has_sources = true;
+    if (auto source = m.map(name, Need::required, "the source's parameters")) {
+      file.sources.push_back({name, read_stvl_source(*source, defaults, keep)});
+      file.source_locations.push_back(
+          {m.location(name), source->location("obstacle_range"), source->location("obstacle_range"),
+           source->location("min_obstacle_height"), source->location("max_obstacle_height")});
+    }
+  }
+  ignore(m, kIgnoredStvlLayerKeys);
+  m.reject_unknown_keys();
+}
+
+}  // namespace rigdesign::io

@@ -1,0 +1,113 @@
+// Issue 34 item 2: `export --layer stvl` puts the 3D sensors in spatio_temporal_voxel_layer with
+// their clearing frustums, the 2D scanners in nav2's obstacle layer. Values against the
+// datasheet's text (sensors.yaml: the Livox Mid-360's band -7..52 deg, the D455's 87 x 58 deg)
+// and STVL's frustum geometry (data/ros_parameters/spatio_temporal_voxel_layer.yaml).
+#include <yaml-cpp/yaml.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/cli_runner.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign::test;
+
+namespace {
+
+double radians(double degrees) {
+  return degrees * std::numbers::pi / 180.0;
+}
+
+std::string text_of(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("export --layer stvl: 3D sources get STVL frustums, scanners stay in obstacle_layer",
+          "[deploy]") {
+  TempFolder folder;
+  const std::string stvl = folder.path() + "/stvl", voxel = folder.path() + "/voxel";
+  for (const auto& [to, layer] : {std::pair{stvl, "stvl"}, std::pair{voxel, "voxel"}}) {
+    const CliResult result = run_cli({"export", source_path("rigs/delivery_amr.yaml"), "--to", to,
+                                      "--max-speed", "1", "--layer", layer});
+    INFO(result.err);
+    REQUIRE(result.exit_code == 0);
+  }
+  const YAML::Node file = YAML::LoadFile(stvl + "/nav2_costmap.yaml");
+  const YAML::Node local = file["local_costmap"]["local_costmap"]["ros__parameters"];
+  REQUIRE(local["plugins"].size() == 3);
+  CHECK(local["plugins"][0].as<std::string>() == "obstacle_layer");
+  CHECK(local["plugins"][1].as<std::string>() == "stvl_layer");
+  CHECK(local["obstacle_layer"]["observation_sources"].as<std::string>() == "bumper_scanner");
+  const YAML::Node layer = local["stvl_layer"];
+  CHECK(layer["plugin"].as<std::string>() ==
+        "spatio_temporal_voxel_layer/SpatioTemporalVoxelLayer");
+  CHECK(layer["observation_sources"].as<std::string>() == "top_lidar front_depth");
+  // The Mid-360 sees -7..52 deg: STVL's band is symmetric about the scan plane, so the widest it
+  // may clear without clearing what the lidar cannot see is +-7 deg.
+  const YAML::Node lidar = layer["top_lidar"];
+  CHECK(lidar["model_type"].as<int>() == 1);
+  CHECK(lidar["vertical_fov_angle"].as<double>() == Approx(radians(14.0)).epsilon(1e-12));
+  CHECK(lidar["horizontal_fov_angle"].as<double>() > 6.27);  // STVL's full turn
+  // ... and the exact band for STVL with vertical_fov_offset, by hand: tan(offset) = (tan 52 deg
+  // + tan -7 deg) / 2, tan(angle / 2) = (tan 52 deg - tan -7 deg) / 2.
+  const double offset = std::atan(0.5 * (std::tan(radians(52)) + std::tan(radians(-7))));
+  const double angle = 2.0 * std::atan(0.5 * (std::tan(radians(52)) - std::tan(radians(-7))));
+  std::ostringstream expected;
+  expected.precision(4);
+  expected << "offset " << offset << " rad and vertical_fov_angle " << angle << " rad";
+  CHECK(text_of(stvl + "/nav2_costmap.yaml").find(expected.str()) != std::string::npos);
+  // The D455's pyramid, in its optical frame (STVL's camera frustum looks along +z).
+  const YAML::Node camera = layer["front_depth"];
+  CHECK(camera["model_type"].as<int>() == 0);
+  CHECK(camera["horizontal_fov_angle"].as<double>() == Approx(radians(87.0)).epsilon(1e-12));
+  CHECK(camera["vertical_fov_angle"].as<double>() == Approx(radians(58.0)).epsilon(1e-12));
+  CHECK(camera["sensor_frame"].as<std::string>() == "camera_depth_optical_frame");
+  CHECK(camera["filter"].as<std::string>() == "passthrough");  // else STVL drops the height band
+  // The memory: STVL's voxel decay keeps what the voxel-layer export keeps by persistence.
+  const YAML::Node voxel_file = YAML::LoadFile(voxel + "/nav2_costmap.yaml");
+  const double persistence = voxel_file["local_costmap"]["local_costmap"]["ros__parameters"]
+                                       ["voxel_layer"]["top_lidar"]["observation_persistence"]
+                                           .as<double>();
+  CHECK(persistence > 0.0);
+  CHECK(layer["voxel_decay"].as<double>() == Approx(persistence));
+  CHECK(layer["decay_model"].as<int>() == 0);
+  CHECK(camera["observation_persistence"].as<double>() == 0.0);
+}
+
+TEST_CASE("check --nav2 reads an STVL export's sources and gives the voxel export's verdicts",
+          "[deploy]") {
+  TempFolder folder;
+  std::vector<std::string> verdicts;
+  for (const char* layer : {"voxel", "stvl"}) {
+    const std::string to = folder.path() + "/" + layer;
+    REQUIRE(run_cli({"export", source_path("rigs/delivery_amr.yaml"), "--to", to, "--max-speed",
+                     "1", "--layer", layer})
+                .exit_code == 0);
+    const CliResult check = run_cli(
+        {"check", source_path("rigs/delivery_amr.yaml"), "--nav2", to + "/nav2_costmap.yaml"});
+    INFO(check.out << check.err);
+    CHECK(check.exit_code == 0);
+    verdicts.push_back(check.out.substr(check.out.rfind("requirements:")));
+  }
+  // Every mount's source found (D1) with its height band (D2), in both layers.
+  CHECK(verdicts[0] == verdicts[1]);
+  CHECK(verdicts[1].find("6 pass, 0 fail") != std::string::npos);
+}
+
+TEST_CASE("export --layer: an unknown layer exits 2 naming the choices", "[deploy]") {
+  TempFolder folder;
+  const CliResult result = run_cli({"export", source_path("rigs/delivery_amr.yaml"), "--to",
+                                    folder.path() + "/x", "--layer", "octomap"});
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("--layer: is 'octomap' (expected voxel or stvl)") != std::string::npos);
+}
