@@ -23,7 +23,7 @@ double radians(double degrees) {
   return degrees * std::numbers::pi / 180.0;
 }
 
-std::string text_of(const std::string& path) {
+std::string file_text_of(const std::string& path) {
   std::ifstream in(path);
   std::ostringstream text;
   text << in.rdbuf();
@@ -65,7 +65,7 @@ TEST_CASE("export --layer stvl: 3D sources get STVL frustums, scanners stay in o
   std::ostringstream expected;
   expected.precision(4);
   expected << "offset " << offset << " rad and vertical_fov_angle " << angle << " rad";
-  CHECK(text_of(stvl + "/nav2_costmap.yaml").find(expected.str()) != std::string::npos);
+  CHECK(file_text_of(stvl + "/nav2_costmap.yaml").find(expected.str()) != std::string::npos);
   // The D455's pyramid, in its optical frame (STVL's camera frustum looks along +z).
   const YAML::Node camera = layer["front_depth"];
   CHECK(camera["model_type"].as<int>() == 0);

@@ -8,12 +8,12 @@
 namespace rigdesign::io {
 namespace {
 
-constexpr const char* kMetres = "metres, >= 0";
+constexpr const char* kStvlMetres = "metres, >= 0";
 // A voxel STVL never decays (decay_model other than 0 linear and 1 exponential) is kept this
 // long: longer than any check asks for.
 constexpr double kForever = 1e9;  // [s]
 
-void ignore(MapReader& m, const std::vector<std::string>& keys) {
+void mark_known(MapReader& m, const std::vector<std::string>& keys) {
   for (const std::string& key : keys) m.has(key);  // asking marks a key as known
 }
 
@@ -50,12 +50,12 @@ costmap::ObservationSource read_stvl_source(MapReader& m, costmap::ObservationSo
   read_if_present(m, "marking", source.marking);
   read_if_present(m, "clearing", source.clearing);
   source.obstacle_min_range = 0.0;  // STVL marks from the sensor on
-  read_if_present(m, "obstacle_range", source.obstacle_max_range, kMetres);
-  read_if_present(m, "min_z", source.raytrace_min_range, kMetres);
-  read_if_present(m, "max_z", source.raytrace_max_range, kMetres);
+  read_if_present(m, "obstacle_range", source.obstacle_max_range, kStvlMetres);
+  read_if_present(m, "min_z", source.raytrace_min_range, kStvlMetres);
+  read_if_present(m, "max_z", source.raytrace_max_range, kStvlMetres);
   for (const char* key : {"obstacle_range", "min_z", "max_z"}) {
-    const std::optional<double> value = m.number(key, Need::optional, kMetres);
-    m.require(!value || *value >= 0.0, key, "is negative", kMetres);
+    const std::optional<double> value = m.number(key, Need::optional, kStvlMetres);
+    m.require(!value || *value >= 0.0, key, "is negative", kStvlMetres);
   }
   m.require(source.raytrace_min_range <= source.raytrace_max_range, "min_z", "is above max_z",
             "min_z <= max_z");
@@ -74,7 +74,7 @@ costmap::ObservationSource read_stvl_source(MapReader& m, costmap::ObservationSo
             "seconds, >= 0");
   // The layer's decay keeps a marked voxel however the source's own buffer is kept.
   source.observation_persistence = std::max(source.observation_persistence, keep);
-  ignore(m, kIgnoredStvlSourceKeys);
+  mark_known(m, kIgnoredStvlSourceKeys);
   m.reject_unknown_keys();
   return source;
 }
@@ -103,7 +103,7 @@ void read_stvl_layer(MapReader& m, const costmap::ObservationSource& defaults,
            source->location("min_obstacle_height"), source->location("max_obstacle_height")});
     }
   }
-  ignore(m, kIgnoredStvlLayerKeys);
+  mark_known(m, kIgnoredStvlLayerKeys);
   m.reject_unknown_keys();
 }
 
