@@ -29,6 +29,7 @@ Command setup_localize(CLI::App& parent);
 Command setup_occupancy(CLI::App& parent);
 Command setup_costmap(CLI::App& parent);
 Command setup_export(CLI::App& parent);
+Command setup_clearpath_import(CLI::App& parent);
 Command setup_sensors(CLI::App& parent);
 Command setup_report(CLI::App& parent);
 

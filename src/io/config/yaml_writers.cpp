@@ -57,7 +57,8 @@ void write_robot(std::ostringstream& out, const model::RobotSource& robot,
     if (!robot.base_link.empty()) out << "  base_link: " << yaml_quoted(robot.base_link) << '\n';
     return;
   }
-  out << "robot:\n  description: " << yaml_quoted(path_seen_from(robot.description, folder)) << '\n';
+  out << "robot:\n  description: " << yaml_quoted(path_seen_from(robot.description, folder))
+      << '\n';
   write_text_map(out, "args", robot.args);
   write_text_map(out, "env", robot.environment);
   if (!robot.package_paths.empty()) {
@@ -111,6 +112,15 @@ std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library
     if (mount.distance_of_interest) {
       out << "    distance_of_interest: " << number(*mount.distance_of_interest) << '\n';
     }
+    // How the mount's driver runs, where the rig says it (namespace, topic, frame).
+    std::string ros;
+    for (const auto& [key, value] :
+         {std::pair{"namespace", &mount.ros_namespace}, std::pair{"topic", &mount.ros_topic},
+          std::pair{"frame", &mount.ros_frame}}) {
+      if (!value->empty())
+        ros += (ros.empty() ? "" : ", ") + std::string(key) + ": " + yaml_quoted(*value);
+    }
+    if (!ros.empty()) out << "    ros: {" << ros << "}\n";
   }
   return out.str();
 }

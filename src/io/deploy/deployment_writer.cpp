@@ -2,6 +2,7 @@
 #include <system_error>
 
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/clearpath/clearpath_sensors.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
 #include "rigdesign/io/gazebo/sensors_gazebo_writer.hpp"
 #include "rigdesign/io/nav2/costmap_params_writer.hpp"
@@ -26,19 +27,23 @@ std::vector<std::string> write_deployment(const std::string& folder, const model
   // height above the floor only.
   const model::Pose3 T_robot_base =
       deploy::robot_frame_pose(rig, rig.base_link).value_or(model::Pose3::Identity());
+  std::vector<std::string> unmapped;
+  const std::vector<ClearpathSensor> clearpath =
+      clearpath_sensors_of(rig, deployment.frames, unmapped);
   const std::vector<std::pair<std::string, std::string>> files = {
       {"sensors.urdf.xacro", sensors_xacro_text(deployment.frames, header)},
       {"nav2_costmap.yaml",
-       nav2_costmap_text(deployment.costmap, header,
-                         deployment.stvl && !deployment.stvl->sources.empty() ? &*deployment.stvl
-                                                                              : nullptr)},
+       nav2_costmap_text(
+           deployment.costmap, header,
+           deployment.stvl && !deployment.stvl->sources.empty() ? &*deployment.stvl : nullptr)},
       {"self_filters.yaml",
        self_filters_text(deployment.self_filters, rig.base_link, T_robot_base, header)},
       {"self_filters.launch.py",
        self_filters_launch_text(deployment.self_filters, deployment.costmap.sources,
                                 "self_filters.yaml", header)},
       {"sensors.gazebo.xacro", sensors_gazebo_xacro_text(deployment.gazebo, header)},
-      {"bridge.yaml", gz_bridge_yaml_text(deployment.gazebo, header)}};
+      {"bridge.yaml", gz_bridge_yaml_text(deployment.gazebo, header)},
+      {"clearpath_sensors.yaml", clearpath_sensors_text(clearpath, unmapped, header)}};
   std::vector<std::string> written;
   for (const auto& [name, text] : files) {
     const std::string path = (std::filesystem::path(folder) / name).string();
