@@ -137,6 +137,20 @@ def other_seeds():
     yield "artifacts_json", "artifacts.json", (
         b'{"artifacts": [{"id": 1, "type": "gas", "x": 14.3, "y": 43.5, "z": 2.0},'
         b' {"id": 2, "type": "vent", "x": -10.4, "y": 53.0, "z": 2.9}]}\n')
+    yield "clearpath_robot_yaml", "robot.yaml", (
+        b"serial_number: j100-0000\nversion: 0\nsystem: {ros2: {namespace: j100_0000}}\n"
+        b"sensors:\n  lidar2d:\n    - {model: hokuyo_ust, parent: base_link, xyz: [0.19, 0.0, 0.1],"
+        b" rpy: [0.0, 0.0, 0.0]}\n  lidar3d:\n    - model: velodyne_lidar\n      parent: base_link\n"
+        b"      ros_parameters: {velodyne_driver_node: {model: 32C}}\n  camera:\n"
+        b"    - {model: intel_realsense, ros_parameters: {intel_realsense: {device_type: d415}}}\n"
+        b"    - {model: flir_blackfly}\n  imu:\n    - {model: microstrain_imu}\n")
+    yield "costmap_params_yaml", "stvl.yaml", (
+        b"local_costmap:\n  local_costmap:\n    ros__parameters:\n"
+        b"      plugins: [\"stvl_layer\"]\n      stvl_layer:\n"
+        b"        plugin: \"spatio_temporal_voxel_layer/SpatioTemporalVoxelLayer\"\n"
+        b"        decay_model: 0\n        voxel_decay: 5.4\n        observation_sources: lidar\n"
+        b"        lidar: {obstacle_range: 3.0, min_z: 0.1, max_z: 3.5, filter: passthrough,"
+        b" min_obstacle_height: 0.05, max_obstacle_height: 1.2, model_type: 1}\n")
     yield "pipeline_yaml", "pipeline.yaml", (
         b"name: mine\nstages:\n  - voxel_grid: {leaf: 0.05}\n  - statistical_outlier\n"
         b"  - floor_removal_2: {ransac: {max_tilt_deg: 10}}\n")

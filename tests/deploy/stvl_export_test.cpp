@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -110,4 +111,63 @@ TEST_CASE("export --layer: an unknown layer exits 2 naming the choices", "[deplo
                                     folder.path() + "/x", "--layer", "octomap"});
   CHECK(result.exit_code == 2);
   CHECK(result.err.find("--layer: is 'octomap' (expected voxel or stvl)") != std::string::npos);
+}
+
+namespace {
+
+// Each Gazebo sensor's gz_frame_id, by sensor name, from sensors.gazebo.xacro's text.
+std::map<std::string, std::string> gazebo_frames(const std::string& text) {
+  std::map<std::string, std::string> frames;
+  std::size_t at = 0;
+  while ((at = text.find("<sensor name=\"", at)) != std::string::npos) {
+    at += 14;
+    const std::string name = text.substr(at, text.find('"', at) - at);
+    const std::size_t open = text.find("<gz_frame_id>", at) + 13;
+    frames[name] = text.substr(open, text.find("</gz_frame_id>", open) - open);
+  }
+  return frames;
+}
+
+}  // namespace
+
+TEST_CASE("one name everywhere: nav2's voxel and STVL sources and Gazebo name one frame and topic",
+          "[deploy]") {
+  int compared = 0;
+  for (const char* rig : {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
+                          "rigs/delivery_amr.yaml", "rigs/cell.yaml"}) {
+    INFO(rig);
+    TempFolder folder;
+    for (const char* layer : {"voxel", "stvl"}) {
+      REQUIRE(run_cli({"export", source_path(rig), "--to", folder.path() + "/" + layer,
+                       "--max-speed", "1", "--layer", layer})
+                  .exit_code == 0);
+    }
+    const YAML::Node voxel = YAML::LoadFile(folder.path() + "/voxel/nav2_costmap.yaml");
+    const YAML::Node stvl = YAML::LoadFile(folder.path() + "/stvl/nav2_costmap.yaml");
+    const std::map<std::string, std::string> gazebo =
+        gazebo_frames(file_text_of(folder.path() + "/voxel/sensors.gazebo.xacro"));
+    const YAML::Node voxel_local = voxel["local_costmap"]["local_costmap"]["ros__parameters"];
+    const YAML::Node stvl_local = stvl["local_costmap"]["local_costmap"]["ros__parameters"];
+    const YAML::Node voxel_layer =
+        voxel_local["voxel_layer"] ? voxel_local["voxel_layer"] : voxel_local["obstacle_layer"];
+    std::istringstream names(voxel_layer["observation_sources"].as<std::string>());
+    for (std::string mount; names >> mount;) {
+      INFO(mount);
+      const YAML::Node source = voxel_layer[mount];
+      const YAML::Node in_stvl = stvl_local["stvl_layer"][mount].IsDefined()
+                                     ? stvl_local["stvl_layer"][mount]
+                                     : stvl_local["obstacle_layer"][mount];
+      REQUIRE(in_stvl.IsMap());
+      CHECK(in_stvl["sensor_frame"].as<std::string>() == source["sensor_frame"].as<std::string>());
+      CHECK(in_stvl["topic"].as<std::string>() == source["topic"].as<std::string>());
+      REQUIRE(gazebo.count(mount) == 1);
+      // The Gazebo macro prefixes a name the export adds: with the default empty prefix it is
+      // the name itself.
+      std::string frame = gazebo.at(mount);
+      if (frame.rfind("${prefix}", 0) == 0) frame = frame.substr(9);
+      CHECK(frame == source["sensor_frame"].as<std::string>());
+      ++compared;
+    }
+  }
+  CHECK(compared >= 10);
 }

@@ -31,7 +31,9 @@ std::string device_value(const YAML::Node& parameters, const std::string& key) {
   std::istringstream parts(rest);
   for (std::string part; std::getline(parts, part, '.');) {
     if (!current.IsMap()) return "";
-    const YAML::Node next = current[part];
+    // Through a const node: yaml-cpp's non-const operator[] adds the key to the document.
+    const YAML::Node& read_only = current;
+    const YAML::Node next = read_only[part];
     if (!next.IsDefined()) return "";
     current.reset(next);
   }
