@@ -46,6 +46,18 @@ TEST_CASE("clearpath: robot.yaml's range sensors map to library sensors by model
   CHECK(robot.skipped.size() == 2);
 }
 
+TEST_CASE("clearpath: sensor kinds a newer clearpath_config adds are not refused", "[io]") {
+  test::TempFolder folder;
+  const std::string path =
+      folder.write("robot.yaml",
+                   "serial_number: a300-0000\nversion: 0\nsensors:\n  ins:\n"
+                   "    - {model: some_ins}\n  lidar2d:\n    - {model: sick_lms1xx}\n");
+  const io::ClearpathRobot robot = io::read_clearpath_robot(path);
+  REQUIRE(robot.sensors.size() == 1);
+  CHECK(robot.sensors[0].sensor_id == "sick_lms100");
+  CHECK(robot.sensors[0].parent == "default_mount");  // clearpath_config's default
+}
+
 TEST_CASE("clearpath: import onto the Jackal, export, and the sensors section comes back", "[io]") {
   test::TempFolder folder;
   const std::string rig = folder.path() + "/j100.yaml";

@@ -147,13 +147,14 @@ ClearpathRobot read_clearpath_robot(const std::string& path) {
         robot.sensors.push_back(sensor);
       }
     }
+    // IMUs, GPS and whatever kinds clearpath_config adds later (2.x documents ins and ptu):
+    // not range sensors, so not refused either.
     for (const char* other : {"imu", "gps"}) {
       for (const MapReader& entry : sensors->maps(other, Need::optional, "a list of entries")) {
         (void)entry;
         robot.skipped.push_back(std::string(other) + ": not a range sensor");
       }
     }
-    sensors->reject_unknown_keys();
   }
   diagnostics.throw_if_errors();
   return robot;
