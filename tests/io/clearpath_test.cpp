@@ -46,6 +46,20 @@ TEST_CASE("clearpath: robot.yaml's range sensors map to library sensors by model
   CHECK(robot.skipped.size() == 2);
 }
 
+TEST_CASE("clearpath: ros_parameters without the device's node leave the default (fuzz finding)",
+          "[io]") {
+  // libFuzzer's input: the driver node's name misspelt, so the device key is absent; reading
+  // it used to throw yaml-cpp's InvalidNode instead of taking the model's default device.
+  test::TempFolder folder;
+  const std::string path =
+      folder.write("robot.yaml",
+                   "version: 0\nsensors:\n  lidar3d:\n    - model: velodyne_lidar\n"
+                   "      ros_parameters: {ve`odyne_driver_node: {model: 32C}}\n");
+  const io::ClearpathRobot robot = io::read_clearpath_robot(path);
+  REQUIRE(robot.sensors.size() == 1);
+  CHECK(robot.sensors[0].sensor_id == "velodyne_vlp16");  // VLP16, the default device
+}
+
 TEST_CASE("clearpath: sensor kinds a newer clearpath_config adds are not refused", "[io]") {
   test::TempFolder folder;
   const std::string path =

@@ -20,12 +20,14 @@ const std::vector<std::string> kColourOnly = {"flir_blackfly", "axis_camera"};
 // `node_key.param` inside ros_parameters, nested (`{node: {general: {camera_model: x}}}`) or
 // flattened as clearpath_config writes it back (`{node: {general.camera_model: x}}`).
 std::string device_value(const YAML::Node& parameters, const std::string& key) {
-  if (key.empty() || !parameters.IsMap()) return "";
+  // A missing key gives an invalid node, whose type yaml-cpp throws for: IsDefined() first.
+  if (key.empty() || !parameters.IsDefined() || !parameters.IsMap()) return "";
   const std::size_t dot = key.find('.');
   const std::string node = key.substr(0, dot), rest = key.substr(dot + 1);
   const YAML::Node of_node = parameters[node];
-  if (!of_node.IsMap()) return "";
-  if (of_node[rest].IsScalar()) return of_node[rest].Scalar();
+  if (!of_node.IsDefined() || !of_node.IsMap()) return "";
+  const YAML::Node flat = of_node[rest];
+  if (flat.IsDefined() && flat.IsScalar()) return flat.Scalar();
   YAML::Node current;
   current.reset(of_node);
   std::istringstream parts(rest);
@@ -37,7 +39,7 @@ std::string device_value(const YAML::Node& parameters, const std::string& key) {
     if (!next.IsDefined()) return "";
     current.reset(next);
   }
-  return current.IsScalar() ? current.Scalar() : "";
+  return current.IsDefined() && current.IsScalar() ? current.Scalar() : "";
 }
 
 std::string known_models(const std::string& type) {
