@@ -144,6 +144,14 @@ def other_seeds():
         b"      ros_parameters: {velodyne_driver_node: {model: 32C}}\n  camera:\n"
         b"    - {model: intel_realsense, ros_parameters: {intel_realsense: {device_type: d415}}}\n"
         b"    - {model: flir_blackfly}\n  imu:\n    - {model: microstrain_imu}\n")
+    yield "collision_monitor_yaml", "circle.yaml", (
+        b"collision_monitor:\n  ros__parameters:\n    base_frame_id: base_footprint\n"
+        b"    polygons: [\"near\", \"wide\"]\n"
+        b"    near: {type: circle, radius: 0.4, action_type: stop, sources_names: [\"scan\"]}\n"
+        b"    wide: {type: polygon, points: [0.3, 0.3, 0.3, -0.3, 0.0, -0.3, 0.0, 0.3],"
+        b" action_type: slowdown, max_points: 3}\n"
+        b"    observation_sources: [\"scan\"]\n"
+        b"    scan: {type: scan, topic: /front_lidar/scan, enabled: true}\n")
     yield "costmap_params_yaml", "stvl.yaml", (
         b"local_costmap:\n  local_costmap:\n    ros__parameters:\n"
         b"      plugins: [\"stvl_layer\"]\n      stvl_layer:\n"

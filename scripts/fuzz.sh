@@ -15,6 +15,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build/fuzz"
 own_targets=(rig_yaml sensors_yaml requirements_yaml catalog_yaml policy_yaml scene_yaml
   pipeline_yaml costmap_params_yaml filtering_loads_yaml artifacts_json clearpath_robot_yaml
+  collision_monitor_yaml
   cloud_pcd cloud_ply
   mesh_obj mesh_off mesh_ply robot_urdf robot_xacro export_writers rssi_csv co2_csv
   emitter_truth_csv walls_csv
@@ -43,6 +44,7 @@ bundled_seeds() {
     scene_yaml) ls rigs/scenes/*/*.yaml ;;
     costmap_params_yaml) ls rigs/costmap/*.yaml ;;
     clearpath_robot_yaml) ls tests/data/clearpath/*.yaml ;;
+    collision_monitor_yaml) ls tests/data/collision_monitor/*.yaml ;;
     mesh_obj) ls rigs/scenes/*/*.obj ;;
     mesh_off) ls rigs/scenes/*/*.off ;;
     mesh_ply) ls rigs/scenes/*/*.ply ;;

@@ -1,4 +1,5 @@
-// `rigdesign check FILE... [--requirements FILE] [--nav2 FILE] [--filters [MOUNT=]FILE]...
+// `rigdesign check FILE... [--requirements FILE] [--nav2 FILE] [--collision-monitor FILE]
+// [--filters [MOUNT=]FILE]...
 // [--format text|json|junit|github] [--output FILE]`:
 // validates rig, sensor and requirement files for CI and judges rigs against requirements.
 // Exit 0 when all pass, 1 when a requirement fails, 2 when any input is invalid.
@@ -7,8 +8,8 @@
 #include <ostream>
 
 #include "app.hpp"
-#include "number_checks.hpp"
 #include "command.hpp"
+#include "number_checks.hpp"
 #include "report/check_github.hpp"
 #include "report/check_json.hpp"
 #include "report/check_junit.hpp"
@@ -75,6 +76,9 @@ Command setup_check(CLI::App& parent) {
   app->add_option("--nav2", options->deployment.nav2,
                   "nav2 costmap parameters the rig is deployed with: every mount needs an "
                   "observation source whose range and height band keep the requirements");
+  app->add_option("--collision-monitor", options->deployment.collision_monitor,
+                  "nav2 collision_monitor parameters (Humble or Jazzy): fails when a zone's "
+                  "edge has an arc none of its sources sees (D4)");
   app->add_option("--filters", options->deployment.filters,
                   "Self-filter file (laser_filters chains, pcl_ros crop boxes), FILE or "
                   "MOUNT=FILE; repeatable. Fails when a filter hides a required sector");

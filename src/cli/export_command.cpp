@@ -28,7 +28,8 @@ struct ExportOptions {
   std::string sensors;
   std::string requirements;
   std::string to;
-  std::string layer = "voxel";  // --layer voxel|stvl
+  std::string layer = "voxel";       // --layer voxel|stvl
+  double processing_latency = -1.0;  // --processing-latency; negative: not given
   deploy::DeployOptions deploy;
 };
 
@@ -49,9 +50,13 @@ bool plugin_class_name(const std::string& name) {
 
 int run_export(const ExportOptions& given, std::ostream& out) {
   ExportOptions options = given;
+  require_option(options.deploy.ros_distro == "humble" || options.deploy.ros_distro == "jazzy",
+                 "--ros-distro", "is '" + options.deploy.ros_distro + "'", "humble or jazzy");
   require_option(options.layer == "voxel" || options.layer == "stvl", "--layer",
                  "is '" + options.layer + "'", "voxel or stvl");
   options.deploy.stvl = options.layer == "stvl";
+  if (options.processing_latency >= 0.0)
+    options.deploy.processing_latency = options.processing_latency;
   require_option(options.deploy.max_speed >= 0.0, "--max-speed", "must not be negative",
                  "a speed in m/s (0: the requirements' R5 speed)");
   require_option(options.deploy.min_speed > 0.0 && std::isfinite(options.deploy.min_speed),
@@ -126,6 +131,14 @@ Command setup_export(CLI::App& parent) {
   app->add_option("--layer", options->layer,
                   "The 3D sensors' costmap layer: voxel (nav2's VoxelLayer, default) or stvl "
                   "(spatio_temporal_voxel_layer; 2D scanners stay in nav2's ObstacleLayer)");
+  app->add_option("--ros-distro", options->deploy.ros_distro,
+                  "nav2 release the collision monitor's file is written for: jazzy (default; "
+                  "points as a string, per-zone sources_names) or humble");
+  app->add_option("--processing-latency", options->processing_latency,
+                  "Driver and filter time per frame [s] in each source's latency, which sizes "
+                  "the collision monitor's zones (default: one frame period, the most a chain "
+                  "that keeps up with its sensor takes)")
+      ->check(finite_in(0.0, 10.0, "seconds in [0, 10]"));
   app->add_option("--hit-layer-plugin", options->deploy.hit_layer_plugin,
                   "Add paper 1's Hit Layer as this costmap plugin class (one you built; nav2 "
                   "has none). Default: none, nav2's observation_persistence remembers the "

@@ -11,6 +11,7 @@
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/polygon_area.hpp"
+#include "rigdesign/model/units.hpp"
 
 namespace rigdesign::deploy {
 namespace {
@@ -22,10 +23,6 @@ constexpr double kRoundShare = 0.9;
 constexpr double kInflationMargin = 0.1;
 // nav2's VoxelLayer packs a column into 16 bits.
 constexpr int kMaxVoxels = 16;
-
-double round_up(double value, double unit) {
-  return std::ceil(value / unit - 1e-9) * unit;
-}
 
 // The largest height error of a floor return within `range` of a sensor `height` above the
 // floor: a return at range D along a ray of elevation e errs by sigma(D) sin e = sigma(D) H / D
@@ -79,11 +76,11 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   costmap::CostmapParams& p = config.costmap;
   p.resolution = 0.05;  // nav2's default
   // nav2 declares the window's width and height as whole metres (int parameters).
-  p.size_x = p.size_y = std::max(3.0, round_up(2 * rig.distance_of_interest, 1.0));
+  p.size_x = p.size_y = std::max(3.0, model::round_up(2 * rig.distance_of_interest, 1.0));
   p.robot_radius = config.robot_radius;
   p.inflation.inscribed_radius = config.inscribed_radius;
   config.inflation_margin = kInflationMargin;
-  p.inflation.inflation_radius = round_up(config.robot_radius + kInflationMargin, 0.01);
+  p.inflation.inflation_radius = model::round_up(config.robot_radius + kInflationMargin, 0.01);
   config.update_rate = options.update_rate;
   config.global_frame_height = options.global_frame_height;
   config.floor_noise_sigmas = options.floor_noise_sigmas;
@@ -107,14 +104,15 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
     const double reach = std::hypot(rig.distance_for(mount) + origin.head<2>().norm(),
                                     std::max(origin.z(), top - origin.z()));
     s.obstacle_min_range = mode->min_range;
-    s.obstacle_max_range = round_up(std::min(mode->max_range, reach), 0.01);
+    s.obstacle_max_range = model::round_up(std::min(mode->max_range, reach), 0.01);
     // The near blind zone is neither marked nor cleared: what sits there is remembered.
     s.raytrace_min_range = mode->min_range;
-    s.raytrace_max_range = round_up(std::min(mode->max_range, s.obstacle_max_range + 0.5), 0.01);
+    s.raytrace_max_range =
+        model::round_up(std::min(mode->max_range, s.obstacle_max_range + 0.5), 0.01);
     source.floor_height_error = floor_height_error(
         *mode, origin.z(), mode->fov.shape().steepest_down(mount.T_robot_sensor.linear()),
         s.obstacle_max_range);
-    s.min_obstacle_height = round_up(
+    s.min_obstacle_height = model::round_up(
         options.floor_flatness + options.floor_noise_sigmas * source.floor_height_error, 0.01);
     s.max_obstacle_height = top;
     if (requirements && requirements->smallest_obstacle &&
@@ -128,7 +126,7 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   }
   p.layer = any_3d ? costmap::ObstacleLayerKind::voxel : costmap::ObstacleLayerKind::obstacle;
   p.voxel.z_min = 0.0;
-  p.voxel.z_resolution = std::max(0.05, round_up(top / kMaxVoxels, 0.01));
+  p.voxel.z_resolution = std::max(0.05, model::round_up(top / kMaxVoxels, 0.01));
   p.voxel.z_max = std::ceil(top / p.voxel.z_resolution - 1e-9) * p.voxel.z_resolution;
   const double speed =
       options.max_speed > 0.0

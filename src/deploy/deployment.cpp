@@ -8,6 +8,7 @@ Deployment plan_deployment(const model::Rig& rig, const model::SensorLibrary& li
                         costmap_config(rig, library, requirements, options),
                         self_filters(rig, library),
                         {},
+                        std::nullopt,
                         std::nullopt};
   // The costmap reads what the self-filters leave, not the raw data with the robot in it.
   for (std::size_t m = 0; m < deployment.self_filters.size(); ++m) {
@@ -17,6 +18,9 @@ Deployment plan_deployment(const model::Rig& rig, const model::SensorLibrary& li
   }
   deployment.gazebo = gazebo_sensors(rig, deployment.frames, deployment.costmap, library);
   if (options.stvl) deployment.stvl = stvl_layer(rig, library, deployment.costmap);
+  deployment.collision_monitor =
+      collision_monitor(rig, library, requirements, deployment.costmap,
+                        {options.ros_distro, options.max_speed, options.processing_latency});
   return deployment;
 }
 

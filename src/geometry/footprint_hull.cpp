@@ -18,9 +18,16 @@ std::vector<model::Vec2> footprint_hull(const model::RobotBody& body) {
   // The body's closed mesh holds every corner of its projection (cylinders as the polygons
   // the rest of rigdesign draws them with).
   const model::TriangleMesh mesh = body_mesh(body);
+  std::vector<model::Vec2> corners;
+  corners.reserve(mesh.vertices.size());
+  for (const model::Vec3& v : mesh.vertices) corners.emplace_back(v.x(), v.y());
+  return convex_hull(corners);
+}
+
+std::vector<model::Vec2> convex_hull(const std::vector<model::Vec2>& corners) {
   std::vector<Kernel::Point_2> points;
-  points.reserve(mesh.vertices.size());
-  for (const model::Vec3& v : mesh.vertices) points.emplace_back(v.x(), v.y());
+  points.reserve(corners.size());
+  for (const model::Vec2& v : corners) points.emplace_back(v.x(), v.y());
   std::vector<Kernel::Point_2> hull;
   CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(hull));
   std::vector<model::Vec2> outline;

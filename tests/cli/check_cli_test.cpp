@@ -12,13 +12,6 @@ using namespace rigdesign::test;
 
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream stream(path);
-  std::stringstream contents;
-  contents << stream.rdbuf();
-  return contents.str();
-}
-
 // A folder with the valid fixture, the rig's requirements replaced by `requirements`.
 struct CheckFolder {
   TempFolder folder;
@@ -119,7 +112,7 @@ TEST_CASE("check --output replaces the file whole") {
   const std::string report = files.folder.path() + "/report.txt";
   std::ofstream(report) << "stale content that is longer than nothing\n";
   CHECK(run_cli({"check", files.rig, "--output", report}).exit_code == 0);
-  const std::string written = read_file(report);
+  const std::string written = file_text(report);
   CHECK(written.find("stale") == std::string::npos);
   CHECK(written.find("requirements: 7 pass, 0 fail, 0 not evaluated") != std::string::npos);
 }

@@ -45,10 +45,12 @@ bool parses(const std::string& name, const std::string& bytes) {
     }
   }
   if (extension == ".csv") return !bytes.empty() && bytes.back() == '\n';
+  // The export's README opens with its title and ends its last line.
+  if (extension == ".md") return bytes.rfind("# ", 0) == 0 && ends_with("\n");
   // The exported macro closes its root element; the launch file ends its function's return.
   if (extension == ".xacro") return ends_with("</robot>\n");
-  if (extension == ".py") return bytes.find("def generate_launch_description") != std::string::npos &&
-                                 ends_with("\n");
+  if (extension == ".py")
+    return bytes.find("def generate_launch_description") != std::string::npos && ends_with("\n");
   if (extension == ".pcd") {
     const fs::path copy = fs::temp_directory_path() /
                           ("rigdesign_fault_check_" + std::to_string(::getpid()) + ".pcd");
@@ -163,7 +165,8 @@ TEST_CASE("kill -9 during export leaves the old deployment files or the new set 
               {"export", source_path("rigs/ur_cleaner.yaml"), "--to", out}, out);
 }
 
-TEST_CASE("export on a full disk: exit 2 naming the file as the user knows it, old set whole (08)") {
+TEST_CASE(
+    "export on a full disk: exit 2 naming the file as the user knows it, old set whole (08)") {
   TempFolder folder;
   const std::string disk = folder.path() + "/small_disk";
   fs::create_directories(disk);
@@ -177,9 +180,8 @@ TEST_CASE("export on a full disk: exit 2 naming the file as the user knows it, o
   const Snapshot before = snapshot(out);
   // Fill the disk but for 4 KiB: the new set cannot be staged.
   const auto space = fs::space(disk);
-  std::ofstream(disk + "/filler", std::ios::binary)
-      << std::string(static_cast<std::size_t>(space.available > 4096 ? space.available - 4096 : 0),
-                     '\0');
+  std::ofstream(disk + "/filler", std::ios::binary) << std::string(
+      static_cast<std::size_t>(space.available > 4096 ? space.available - 4096 : 0), '\0');
   const CliResult result = run_cli({"export", source_path("rigs/ur_cleaner.yaml"), "--to", out});
   INFO(result.err);
   CHECK(result.exit_code == 2);

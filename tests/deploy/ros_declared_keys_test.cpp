@@ -14,12 +14,16 @@
 #include <sstream>
 #include <string>
 
+#include "io/nav2/collision_monitor_keys.hpp"
 #include "rigdesign/deploy/deployment.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
+#include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/nav2/collision_monitor_writer.hpp"
 #include "rigdesign/io/nav2/costmap_params_writer.hpp"
 #include "rigdesign/io/self_filters/self_filters_writer.hpp"
 #include "support/cli_runner.hpp"
+#include "support/temp_folder.hpp"
 
 using namespace rigdesign;
 using rigdesign::test::source_path;
@@ -241,4 +245,156 @@ TEST_CASE("export: every self-filter key is declared by laser_filters or pcl_ros
   }
   CHECK(chains > 0);  // both kinds were exercised
   CHECK(boxes > 0);
+}
+
+namespace {
+
+// nav2_collision_monitor's keys one release declares (data/ros_parameters/
+// nav2_collision_monitor.yaml), types spelt as yaml_type does ("string array").
+Declared monitor_declared(const YAML::Node& entries, const std::string& distro) {
+  Declared result;
+  for (const YAML::Node& entry : entries) {
+    if (!entry[distro].as<bool>(false)) continue;
+    std::string type = entry["type"].as<std::string>();
+    std::replace(type.begin(), type.end(), '_', ' ');
+    result[entry["key"].as<std::string>()] = type;
+  }
+  return result;
+}
+
+// yaml_type, telling a list of numbers (a double array) from a list of names.
+std::string monitor_yaml_type(const YAML::Node& node) {
+  if (!node.IsSequence()) return yaml_type(node);
+  const bool numbers =
+      node.size() > 0 && std::all_of(node.begin(), node.end(), [](const YAML::Node& n) {
+        return n.Tag() != "!" && is_real(n.Scalar());
+      });
+  return numbers ? "double array" : "string array";
+}
+
+void check_monitor_key(const Declared& table, const std::string& key, const YAML::Node& value,
+                       const std::string& where) {
+  INFO(where << key << ": " << (value.IsScalar() ? value.Scalar() : "(list)"));
+  const auto it = table.find(key);
+  REQUIRE(it != table.end());  // declared by nav2 for this release
+  CHECK(monitor_yaml_type(value) == it->second);
+}
+
+}  // namespace
+
+TEST_CASE("export: every collision_monitor key is declared by nav2 for the release written",
+          "[deploy]") {
+  const YAML::Node table =
+      YAML::LoadFile(source_path("data/ros_parameters/nav2_collision_monitor.yaml"));
+  const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
+  int zones = 0, sources = 0;
+  for (const char* distro : {"humble", "jazzy"}) {
+    const Declared node = monitor_declared(table["node"], distro);
+    const Declared polygon = monitor_declared(table["polygon"], distro);
+    const Declared source = monitor_declared(table["source"], distro);
+    for (const char* rig_file : {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
+                                 "rigs/cart_two_scanners.yaml", "rigs/delivery_amr.yaml"}) {
+      INFO(distro << " " << rig_file);
+      const model::Rig rig = io::load_rig(source_path(rig_file));
+      deploy::DeployOptions options;
+      options.max_speed = 1.0;
+      options.ros_distro = distro;
+      const deploy::Deployment deployment = deploy::plan_deployment(rig, library, nullptr, options);
+      REQUIRE(deployment.collision_monitor);
+      const YAML::Node file = YAML::Load(
+          io::collision_monitor_text(*deployment.collision_monitor, deployment.costmap, "test"));
+      const YAML::Node parameters = file["collision_monitor"]["ros__parameters"];
+      REQUIRE(parameters.IsMap());
+      std::set<std::string> polygons, source_names;
+      for (const YAML::Node& name : parameters["polygons"]) polygons.insert(name.as<std::string>());
+      for (const YAML::Node& name : parameters["observation_sources"])
+        source_names.insert(name.as<std::string>());
+      for (const auto& entry : parameters) {
+        const std::string key = entry.first.as<std::string>();
+        const Declared& keys = polygons.count(key)       ? polygon
+                               : source_names.count(key) ? source
+                                                         : node;
+        if (&keys == &node) {
+          check_monitor_key(node, key, entry.second, "");
+          continue;
+        }
+        (&keys == &polygon ? zones : sources) += 1;
+        for (const auto& setting : entry.second)
+          check_monitor_key(keys, setting.first.as<std::string>(), setting.second, key + ".");
+      }
+    }
+  }
+  CHECK(zones == 20);  // two zones per rig and release
+  CHECK(sources > 10);
+}
+
+TEST_CASE("check --collision-monitor reads only keys nav2 declares", "[deploy]") {
+  const YAML::Node table =
+      YAML::LoadFile(source_path("data/ros_parameters/nav2_collision_monitor.yaml"));
+  const auto either_release = [&](const char* level) {
+    Declared keys = monitor_declared(table[level], "humble");
+    const Declared jazzy = monitor_declared(table[level], "jazzy");
+    keys.insert(jazzy.begin(), jazzy.end());
+    return keys;
+  };
+  const Declared node = either_release("node");
+  const Declared polygon = either_release("polygon");
+  Declared velocity_keys = either_release("velocity_polygon");
+  velocity_keys.insert(polygon.begin(), polygon.end());
+  const Declared& velocity = velocity_keys;
+  const Declared source = either_release("source");
+  for (const auto& [level, declared_keys, keys] :
+       {std::tuple{"node", &node, &io::nav2::kMonitorNodeKeys},
+        std::tuple{"polygon", &velocity, &io::nav2::kMonitorPolygonKeys},
+        std::tuple{"source", &source, &io::nav2::kMonitorSourceKeys}}) {
+    for (const std::vector<std::string>* list : {&keys->modelled, &keys->ignored}) {
+      for (const std::string& key : *list) {
+        INFO(level << "." << key);
+        // use_sim_time is rclcpp's own parameter, on every node.
+        CHECK((declared_keys->count(key) == 1 || key == "use_sim_time"));
+      }
+    }
+  }
+}
+
+TEST_CASE("export: bridge.yaml uses only ros_gz_bridge's keys, directions and type pairs",
+          "[deploy]") {
+  // data/ros_parameters/ros_gz_bridge.yaml: bridge_config.cpp's keys and mappings.py's pairs.
+  const YAML::Node table = YAML::LoadFile(source_path("data/ros_parameters/ros_gz_bridge.yaml"));
+  std::set<std::string> keys, directions;
+  std::set<std::pair<std::string, std::string>> pairs;
+  for (const YAML::Node& entry : table["keys"]) {
+    if (entry["humble"].as<bool>(false) && entry["jazzy"].as<bool>(false))
+      keys.insert(entry["key"].as<std::string>());
+  }
+  for (const YAML::Node& entry : table["directions"]) {
+    directions.insert(entry.IsMap() ? entry["value"].as<std::string>() : entry.as<std::string>());
+  }
+  for (const YAML::Node& entry : table["type_mappings"]) {
+    if (entry["humble"].as<bool>(false) && entry["jazzy"].as<bool>(false))
+      pairs.emplace(entry["ros"].as<std::string>(), entry["gz"].as<std::string>());
+  }
+  REQUIRE(keys.count("ros_topic_name") == 1);
+  REQUIRE(!directions.empty());
+  int bridged = 0;
+  for (const char* rig_file : {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
+                               "rigs/cart_two_scanners.yaml", "rigs/delivery_amr.yaml"}) {
+    INFO(rig_file);
+    test::TempFolder folder;
+    REQUIRE(test::run_cli({"export", source_path(rig_file), "--to", folder.path()}).exit_code == 0);
+    const YAML::Node bridge = YAML::LoadFile(folder.path() + "/bridge.yaml");
+    REQUIRE(bridge.IsSequence());  // the bridge reads a list of maps, else nothing
+    for (const YAML::Node& item : bridge) {
+      for (const auto& entry : item) CHECK(keys.count(entry.first.as<std::string>()) == 1);
+      // topic_name excludes ros_topic_name and gz_topic_name (the entry is dropped).
+      CHECK_FALSE((item["topic_name"] && (item["ros_topic_name"] || item["gz_topic_name"])));
+      if (item["direction"]) CHECK(directions.count(item["direction"].as<std::string>()) == 1);
+      const std::string ros = item["ros_type_name"].as<std::string>();
+      const std::string gz = item["gz_type_name"].as<std::string>();
+      INFO(ros << " <-> " << gz);
+      CHECK(pairs.count({ros, gz}) == 1);
+      ++bridged;
+    }
+  }
+  CHECK(bridged > 5);
 }

@@ -9,10 +9,12 @@
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "rigdesign/io/config/rig_loader.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 
@@ -22,13 +24,6 @@ namespace {
 
 double radians(double degrees) {
   return degrees * std::numbers::pi / 180.0;
-}
-
-std::string file_text_of(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 }  // namespace
@@ -66,7 +61,7 @@ TEST_CASE("export --layer stvl: 3D sources get STVL frustums, scanners stay in o
   std::ostringstream expected;
   expected.precision(4);
   expected << "offset " << offset << " rad and vertical_fov_angle " << angle << " rad";
-  CHECK(file_text_of(stvl + "/nav2_costmap.yaml").find(expected.str()) != std::string::npos);
+  CHECK(file_text(stvl + "/nav2_costmap.yaml").find(expected.str()) != std::string::npos);
   // The D455's pyramid, in its optical frame (STVL's camera frustum looks along +z).
   const YAML::Node camera = layer["front_depth"];
   CHECK(camera["model_type"].as<int>() == 0);
@@ -128,11 +123,26 @@ std::map<std::string, std::string> gazebo_frames(const std::string& text) {
   return frames;
 }
 
+// The links a macro's text adds (`<link name="${prefix}NAME"/>`), without the prefix.
+std::set<std::string> added_links(const std::string& text) {
+  std::set<std::string> links;
+  const std::string open = "<link name=\"";
+  for (std::size_t at = text.find(open); at != std::string::npos; at = text.find(open, at)) {
+    at += open.size();
+    std::string name = text.substr(at, text.find('"', at) - at);
+    if (name.rfind("${prefix}", 0) == 0) name = name.substr(9);
+    links.insert(name);
+  }
+  return links;
+}
+
 }  // namespace
 
-TEST_CASE("one name everywhere: nav2's voxel and STVL sources and Gazebo name one frame and topic",
-          "[deploy]") {
-  int compared = 0;
+TEST_CASE(
+    "one name everywhere: the URDF, nav2's voxel and STVL sources, the collision monitor "
+    "and Gazebo name one frame and topic",
+    "[deploy]") {
+  int compared = 0, monitored = 0;
   for (const char* rig : {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
                           "rigs/delivery_amr.yaml", "rigs/cell.yaml"}) {
     INFO(rig);
@@ -145,11 +155,22 @@ TEST_CASE("one name everywhere: nav2's voxel and STVL sources and Gazebo name on
     const YAML::Node voxel = YAML::LoadFile(folder.path() + "/voxel/nav2_costmap.yaml");
     const YAML::Node stvl = YAML::LoadFile(folder.path() + "/stvl/nav2_costmap.yaml");
     const std::map<std::string, std::string> gazebo =
-        gazebo_frames(file_text_of(folder.path() + "/voxel/sensors.gazebo.xacro"));
+        gazebo_frames(file_text(folder.path() + "/voxel/sensors.gazebo.xacro"));
     const YAML::Node voxel_local = voxel["local_costmap"]["local_costmap"]["ros__parameters"];
     const YAML::Node stvl_local = stvl["local_costmap"]["local_costmap"]["ros__parameters"];
     const YAML::Node voxel_layer =
         voxel_local["voxel_layer"] ? voxel_local["voxel_layer"] : voxel_local["obstacle_layer"];
+    const YAML::Node monitor = YAML::LoadFile(folder.path() + "/voxel/collision_monitor.yaml");
+    const YAML::Node monitor_parameters = monitor["collision_monitor"]["ros__parameters"];
+    // The URDF's frames: the description's links, those sensors.urdf.xacro adds, and the
+    // driver-broadcast frames sensors.gazebo.xacro supplies in simulation.
+    std::set<std::string> urdf_frames =
+        added_links(file_text(folder.path() + "/voxel/sensors.urdf.xacro"));
+    for (const std::string& link :
+         added_links(file_text(folder.path() + "/voxel/sensors.gazebo.xacro")))
+      urdf_frames.insert(link);
+    for (const auto& [link, pose] : rigdesign::io::load_rig(source_path(rig)).link_poses)
+      urdf_frames.insert(link);
     std::istringstream names(voxel_layer["observation_sources"].as<std::string>());
     for (std::string mount; names >> mount;) {
       INFO(mount);
@@ -166,8 +187,16 @@ TEST_CASE("one name everywhere: nav2's voxel and STVL sources and Gazebo name on
       std::string frame = gazebo.at(mount);
       if (frame.rfind("${prefix}", 0) == 0) frame = frame.substr(9);
       CHECK(frame == source["sensor_frame"].as<std::string>());
+      CHECK(urdf_frames.count(source["sensor_frame"].as<std::string>()) == 1);
+      // A collision-monitor source, where the mount feeds one, reads the costmap's topic.
+      if (monitor_parameters[mount].IsDefined()) {
+        CHECK(monitor_parameters[mount]["topic"].as<std::string>() ==
+              source["topic"].as<std::string>());
+        ++monitored;
+      }
       ++compared;
     }
   }
   CHECK(compared >= 10);
+  CHECK(monitored >= 6);
 }

@@ -24,13 +24,6 @@ sensors:
   - {sensor: pmd_pico_flexx, seconds_per_point: 2.0e-8}
 )";
 
-std::string read_text(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 }  // namespace
 
 TEST_CASE("a filtering-loads file round-trips and merges sensor by sensor", "[filtering_loads]") {
@@ -62,7 +55,7 @@ TEST_CASE("a filtering-loads file round-trips and merges sensor by sensor", "[fi
 
 TEST_CASE("a catalog takes measured loads unless a candidate gives its own", "[filtering_loads]") {
   const TempFolder folder;
-  std::string catalog = read_text(source_path("rigs/catalogs/ur_cleaner.yaml"));
+  std::string catalog = file_text(source_path("rigs/catalogs/ur_cleaner.yaml"));
   catalog.replace(catalog.find("sensor_library: "), 0, "filtering_loads: loads.yaml\n");
   const std::string own = "{sensor: pmd_pico_flexx, modes: [";
   REQUIRE(catalog.find(own) != std::string::npos);

@@ -10,6 +10,7 @@
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;
+using rigdesign::test::file_text;
 using rigdesign::test::line_of;
 using rigdesign::test::TempFolder;
 
@@ -17,13 +18,6 @@ namespace {
 
 const std::string kBundled =
     std::string(RIGDESIGN_SOURCE_DIR) + "/rigs/costmap/ur_cleaner_local_costmap.yaml";
-
-std::string text_of(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The first diagnostic of loading `text`, which must fail.
 model::Diagnostic failure_of(const std::string& text) {
@@ -101,7 +95,7 @@ TEST_CASE("keys the file does not give keep the caller's defaults", "[io][costma
 }
 
 TEST_CASE("bad costmap parameters are reported at the file's keys", "[io][costmap]") {
-  const std::string good = text_of(kBundled);
+  const std::string good = file_text(kBundled);
   const auto with = [&](const std::string& from, const std::string& to) {
     std::string text = good;
     const std::size_t at = text.find(from);
@@ -142,7 +136,7 @@ TEST_CASE("bad costmap parameters are reported at the file's keys", "[io][costma
 
 TEST_CASE("costmap --params runs the file and exits 2 on a bad one", "[cli][costmap]") {
   TempFolder folder;
-  std::string text = text_of(kBundled);
+  std::string text = file_text(kBundled);
   text.replace(text.find("cost_scaling_factor: 3.0"), 24, "cost_scaling_factor: -1");
   const std::string bad = folder.write("bad.yaml", text);
   const test::CliResult result =

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace rigdesign::test {
@@ -30,6 +31,13 @@ std::string TempFolder::write(const std::string& name, const std::string& conten
 int TempFolder::entries() const {
   const auto it = std::filesystem::directory_iterator(path_);
   return static_cast<int>(std::distance(it, std::filesystem::directory_iterator{}));
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream stream(path, std::ios::binary);
+  std::ostringstream text;
+  text << stream.rdbuf();
+  return text.str();
 }
 
 int line_of(const std::string& text, const std::string& marker) {

@@ -22,6 +22,9 @@ class TempFolder {
   std::string path_;
 };
 
+/// The whole text of the file at `path` ("" when it cannot be read).
+std::string file_text(const std::string& path);
+
 /// 1-based line on which `marker` first appears in `text` (0 if absent).
 int line_of(const std::string& text, const std::string& marker);
 

@@ -19,7 +19,7 @@
 namespace rigdesign::deploy {
 
 struct DeployOptions {
-  std::string parent;                        ///< sensor frames' parent link; empty: the base link
+  std::string parent;  ///< sensor frames' parent link; empty: the base link
   /// Topic templates of 2D scanners and of 3D sensors ({mount}: the mount id); empty: each
   /// driver's topic (sensors.yaml `ros2`, under the mount's namespace when two mounts' drivers
   /// would share it), else /{mount}/scan and /{mount}/points. A mount's `ros` wins over both.
@@ -42,6 +42,11 @@ struct DeployOptions {
   /// The 3D sensors' layer: nav2's voxel layer, or spatio_temporal_voxel_layer (`export
   /// --layer stvl`; 2D scanners stay in nav2's obstacle layer).
   bool stvl = false;
+  /// The nav2 release the collision monitor's file is written for (humble or jazzy: they
+  /// spell polygons differently), and the driver and filter time per frame [s] that sizes its
+  /// zones (nothing: one frame period).
+  std::string ros_distro = "jazzy";
+  std::optional<double> processing_latency;
 };
 
 /// One observation source as nav2's obstacle and voxel layers read it.
@@ -52,7 +57,7 @@ struct SourceConfig {
   /// its robot (plan_deployment), else the driver's topic `raw_topic`.
   std::string topic;
   std::string raw_topic;
-  std::string topic_note;  ///< how the driver must run to publish raw_topic, if it differs
+  std::string topic_note;    ///< how the driver must run to publish raw_topic, if it differs
   std::string sensor_frame;  ///< the frame the driver stamps its data with
   costmap::ObservationSource source;
   /// [m] the largest height error of a floor return within the marking range (0: the sensor

@@ -1,9 +1,11 @@
 #pragma once
 /// Everything a rig means for the ROS stack that runs it (issue 14): sensor frames, nav2
-/// costmap parameters, self-filters, Gazebo sensors. `rigdesign export` and `select --out` write it.
+/// costmap parameters, self-filters, Gazebo sensors. `rigdesign export` and `select --out` write
+/// it.
 #include <optional>
 #include <vector>
 
+#include "rigdesign/deploy/collision_monitor.hpp"
 #include "rigdesign/deploy/costmap_config.hpp"
 #include "rigdesign/deploy/gazebo_sensors.hpp"
 #include "rigdesign/deploy/self_filters.hpp"
@@ -17,7 +19,9 @@ struct Deployment {
   CostmapConfig costmap;
   std::vector<SelfFilter> self_filters;
   std::vector<GazeboSensor> gazebo;  ///< the rig in gz sim (issue 34)
-  std::optional<StvlLayer> stvl;      ///< DeployOptions::stvl: the 3D sources in STVL
+  std::optional<StvlLayer> stvl;     ///< DeployOptions::stvl: the 3D sources in STVL
+  /// nav2's collision monitor; nothing without a robot speed (requirements R5 or --max-speed).
+  std::optional<CollisionMonitor> collision_monitor;
 };
 
 /// Precondition: the rig's references resolve in `library`. `requirements` may be null.

@@ -14,4 +14,7 @@ namespace rigdesign::geometry {
 /// cylinders as 64-sided polygons). Collinear corners are dropped.
 std::vector<model::Vec2> footprint_hull(const model::RobotBody& body);
 
+/// Counter-clockwise convex hull of `points` (collinear points dropped).
+std::vector<model::Vec2> convex_hull(const std::vector<model::Vec2>& points);
+
 }  // namespace rigdesign::geometry

@@ -41,6 +41,12 @@ struct RobustnessRequirement {
   bool any() const { return single_failure || condition.has_value(); }
 };
 
+/// [m/s^2] The deceleration assumed when a requirements file states none: nav2's own default
+/// braking limit, velocity_smoother `max_decel` = -2.5 m/s^2 (nav2_velocity_smoother/src/
+/// velocity_smoother.cpp:71 at humble 3c3db59 and jazzy f4108e5), which TurtleBot 4's nav2.yaml
+/// keeps. A base that brakes more gently needs larger polygons: state yours.
+inline constexpr double kDefaultDeceleration = 2.5;
+
 struct Requirements {
   std::string name;
   // R1: body size and the area to perceive.
@@ -61,6 +67,11 @@ struct Requirements {
   // R4: object dynamics; R5: robot speed.
   std::optional<MotionBetweenFrames> object_dynamics;
   std::optional<MotionBetweenFrames> robot_speed;
+  /// [m/s^2] how hard the robot brakes from its speed to a stop (`robot_speed.deceleration`):
+  /// sizes the collision monitor's stop and slowdown polygons (deploy/collision_monitor.hpp).
+  /// Not stated: kDefaultDeceleration.
+  std::optional<double> deceleration;
+  SourceLocation deceleration_where;
   // R6: smallest obstacle to notice at distance d.
   std::optional<double> smallest_obstacle;  ///< [m]
   SourceLocation smallest_obstacle_where;
@@ -76,6 +87,8 @@ struct Requirements {
 
   /// Satisficing frequency: the largest of R3's rate, R4's and R5's v / travel [Hz].
   double required_frequency() const;
+  /// The stated deceleration, else kDefaultDeceleration [m/s^2].
+  double braking_deceleration() const { return deceleration.value_or(kDefaultDeceleration); }
 };
 
 }  // namespace rigdesign::model

@@ -21,4 +21,10 @@ inline double wrap_angle(double angle) {
   return wrapped >= kTwoPi ? 0.0 : wrapped;  // -1e-17 + 2 pi rounds to 2 pi
 }
 
+/// `value` rounded up to a whole number of `unit` (a setting written in centimetres), with a
+/// 1e-9 unit's slack so that a value already whole is not pushed up by its rounding error.
+inline double round_up(double value, double unit) {
+  return std::ceil(value / unit - 1e-9) * unit;
+}
+
 }  // namespace rigdesign::model

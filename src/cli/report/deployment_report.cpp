@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "rigdesign/io/deploy/export_readme.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
@@ -54,6 +55,17 @@ void print_deployment(std::ostream& out, const model::Rig& rig,
   } else {
     out << "  blind-gap memory: observation_persistence (nav2); " << costmap.memory.rule << '\n';
   }
+  if (deployment.collision_monitor) {
+    for (const deploy::ProtectiveZone& zone : deployment.collision_monitor->zones) {
+      double unseen = 0.0;
+      for (const deploy::BoundaryArc& arc : zone.visibility.unseen) unseen += arc.length;
+      out << "  collision monitor " << zone.name << ": " << zone.sizing << "; "
+          << model::format_number(unseen, 3) << " m of its edge seen by no source\n";
+    }
+  } else {
+    out << "  no collision monitor: no robot speed (requirements R5 or --max-speed)\n";
+  }
+  out << '\n' << io::visibility_table(deployment) << '\n';
   for (const std::string& path : written) out << "  wrote " << path << '\n';
 }
 

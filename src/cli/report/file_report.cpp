@@ -5,12 +5,15 @@
 
 #include "command.hpp"
 #include "inputs.hpp"
+#include "rigdesign/deploy/collision_monitor_check.hpp"
 #include "rigdesign/deploy/deployed_check.hpp"
+#include "rigdesign/deploy/deployment.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
+#include "rigdesign/io/nav2/collision_monitor_reader.hpp"
 #include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/self_filters/self_filters_reader.hpp"
 #include "rigdesign/metrics/coverage_findings.hpp"
@@ -81,6 +84,32 @@ deploy::DeployedConfig load_deployment(const DeploymentFiles& files, const model
   return config;
 }
 
+// The collision monitor's file, its sources matched to mounts by name or by the topics
+// `export` gives them (the driver's, or the self-filter's output).
+deploy::DeployedCollisionMonitor load_monitor(const std::string& path, const RigInputs& inputs) {
+  const deploy::Deployment deployment =
+      deploy::plan_deployment(inputs.rig, inputs.library, nullptr, deploy::DeployOptions{});
+  std::vector<io::MountTopic> topics;
+  for (const deploy::SourceConfig& source : deployment.costmap.sources) {
+    topics.emplace_back(source.topic, source.mount_id);
+    if (source.raw_topic != source.topic) topics.emplace_back(source.raw_topic, source.mount_id);
+  }
+  return io::load_collision_monitor(path, inputs.rig, topics);
+}
+
+// Appends D4 for each zone of `monitor`, timed from `started`.
+void judge_monitor(const RigInputs& inputs, const deploy::DeployedCollisionMonitor& monitor,
+                   FileReport& report) {
+  const auto step = Clock::now();
+  std::vector<metrics::RequirementResult> results =
+      deploy::check_collision_monitor(inputs.rig, inputs.library, monitor);
+  const double seconds = seconds_since(step);
+  for (metrics::RequirementResult& result : results) {
+    report.results.push_back(std::move(result));
+    report.result_seconds.push_back(seconds);
+  }
+}
+
 // The verdicts on the rig and its deployment, each with the time of what it rests on.
 void judge_rig(const RigInputs& inputs, const std::optional<deploy::DeployedConfig>& config,
                FileReport& report) {
@@ -134,18 +163,27 @@ void check_rig(const std::string& path, const std::string& sensors_path,
     report.diagnostics.insert(report.diagnostics.end(), config->warnings.begin(),
                               config->warnings.end());
   }
-  report.load_seconds = seconds_since(started);
-  if (inputs.requirements) return judge_rig(inputs, config, report);
-  if (!config) return;
-  const model::Requirements none;  // only what every deployment must keep is judged
-  deploy::DeploymentCheck deployed =
-      deploy::check_deployment(inputs.rig, inputs.library, none, *config, nullptr);
-  report.diagnostics.insert(report.diagnostics.end(), deployed.warnings.begin(),
-                            deployed.warnings.end());
-  for (metrics::RequirementResult& result : deployed.results) {
-    report.results.push_back(std::move(result));
-    report.result_seconds.push_back(seconds_since(started));
+  std::optional<deploy::DeployedCollisionMonitor> monitor;
+  if (!deployment.collision_monitor.empty()) {
+    monitor = load_monitor(deployment.collision_monitor, inputs);
+    report.diagnostics.insert(report.diagnostics.end(), monitor->warnings.begin(),
+                              monitor->warnings.end());
   }
+  report.load_seconds = seconds_since(started);
+  if (inputs.requirements) {
+    judge_rig(inputs, config, report);
+  } else if (config) {
+    const model::Requirements none;  // only what every deployment must keep is judged
+    deploy::DeploymentCheck deployed =
+        deploy::check_deployment(inputs.rig, inputs.library, none, *config, nullptr);
+    report.diagnostics.insert(report.diagnostics.end(), deployed.warnings.begin(),
+                              deployed.warnings.end());
+    for (metrics::RequirementResult& result : deployed.results) {
+      report.results.push_back(std::move(result));
+      report.result_seconds.push_back(seconds_since(started));
+    }
+  }
+  if (monitor) judge_monitor(inputs, *monitor, report);
 }
 
 }  // namespace

@@ -35,6 +35,8 @@ struct DeploymentFiles {
   std::string nav2;
   std::vector<std::string> filters;
   double global_frame_height = 0.0;  ///< [m] of the nav2 file's global frame above the floor
+  std::string collision_monitor;     ///< nav2 collision_monitor parameters (D4)
+  /// No costmap or filter file (the collision monitor is judged on its own).
   bool empty() const { return nav2.empty() && filters.empty(); }
 };
 

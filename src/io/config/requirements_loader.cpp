@@ -48,6 +48,23 @@ model::MotionBetweenFrames read_motion(MapReader& reader, const std::string& spe
   return motion;
 }
 
+// robot_speed.deceleration [m/s^2], read before read_motion rejects keys it does not know.
+void read_deceleration(MapReader& speed, model::Requirements& requirements) {
+  if (!speed.has("deceleration")) return;
+  const std::string expected = "braking deceleration in m/s^2, > 0 (e.g. 1.0)";
+  requirements.deceleration_where = speed.location("deceleration");
+  requirements.deceleration = io::positive(speed, "deceleration", Need::required, expected);
+  // Above ~1 g a wheeled robot skids: probably g, cm/s^2 or a typo, not m/s^2.
+  constexpr double kSkidLimit = 9.81;
+  if (requirements.deceleration && *requirements.deceleration > kSkidLimit) {
+    speed.diagnostics().warning(
+        speed.location("deceleration"), speed.field("deceleration"),
+        "is above 1 g (" + model::format_number(*requirements.deceleration, 4) +
+            " m/s^2): a wheeled robot's tyres slip before it brakes that hard",
+        "m/s^2; a value in g or cm/s^2 must be converted");
+  }
+}
+
 void read_lighting(MapReader& top, model::Requirements& requirements) {
   const std::string expected =
       "a list of conditions from: " + model::join(model::names_of(model::kLightConditionNames));
@@ -80,9 +97,10 @@ model::RobustnessRequirement read_robustness(MapReader& reader,
                                              const std::vector<model::SectorRequirement>& sectors) {
   model::RobustnessRequirement robustness;
   robustness.where = reader.location();
-  const std::string expected = "a list of failures: n-1 (any one sensor), or a lighting condition "
-                               "in which every sensor not immune to it fails (" +
-                               model::join(model::names_of(model::kLightConditionNames)) + ")";
+  const std::string expected =
+      "a list of failures: n-1 (any one sensor), or a lighting condition "
+      "in which every sensor not immune to it fails (" +
+      model::join(model::names_of(model::kLightConditionNames)) + ")";
   const YAML::Node list = reader.node("survive");
   if (!list.IsSequence() || list.size() == 0) {
     reader.require(false, "survive", list.IsDefined() ? "is not a non-empty list" : "is missing",
@@ -97,9 +115,9 @@ model::RobustnessRequirement read_robustness(MapReader& reader,
                  condition && !robustness.condition) {
         robustness.condition = *condition;
       } else {
-        reader.diagnostics().error(io::location_of(list[i], reader.file()), field,
-                                   condition ? "names a second condition" : "unknown failure '" + value + "'",
-                                   expected);
+        reader.diagnostics().error(
+            io::location_of(list[i], reader.file()), field,
+            condition ? "names a second condition" : "unknown failure '" + value + "'", expected);
       }
     }
   }
@@ -107,9 +125,11 @@ model::RobustnessRequirement read_robustness(MapReader& reader,
   for (MapReader& entry : reader.maps("sectors", Need::optional)) {
     model::SectorRequirement relaxed;
     relaxed.where = entry.location();
-    relaxed.name = entry.text("name", Need::required, "the name of one of the sectors").value_or("");
-    const auto named = std::find_if(sectors.begin(), sectors.end(),
-                                    [&](const model::SectorRequirement& s) { return s.name == relaxed.name; });
+    relaxed.name =
+        entry.text("name", Need::required, "the name of one of the sectors").value_or("");
+    const auto named =
+        std::find_if(sectors.begin(), sectors.end(),
+                     [&](const model::SectorRequirement& s) { return s.name == relaxed.name; });
     std::vector<std::string> names;
     for (const model::SectorRequirement& sector : sectors) names.push_back(sector.name);
     entry.require(named != sectors.end() || relaxed.name.empty(), "name",
@@ -146,8 +166,8 @@ model::Requirements load_requirements(const std::string& path) {
   }
   if (top.has("area_height")) {
     requirements.area_height_where = top.location("area_height");
-    requirements.area_height = io::positive_length(top, "area_height", Need::required,
-                                            "the top of the area to perceive in metres, > 0");
+    requirements.area_height = io::positive_length(
+        top, "area_height", Need::required, "the top of the area to perceive in metres, > 0");
   }
   std::set<std::string> sector_names;
   for (MapReader& reader : top.maps("sectors", Need::optional)) {  // R2
@@ -171,6 +191,7 @@ model::Requirements load_requirements(const std::string& path) {
     requirements.object_dynamics = read_motion(*dynamics, "max_object_speed");
   }
   if (auto speed = top.map("robot_speed", Need::optional)) {  // R5
+    read_deceleration(*speed, requirements);
     requirements.robot_speed = read_motion(*speed, "max_speed");
   }
   if (auto obstacle = top.map("smallest_obstacle", Need::optional)) {  // R6

@@ -8,8 +8,8 @@
 #include <map>
 #include <sstream>
 
-#include "rigdesign/io/file_bytes.hpp"
 #include "io/text_encoding.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/closest_name.hpp"
 #include "rigdesign/model/format_number.hpp"
 
@@ -216,6 +216,10 @@ std::vector<MapReader> MapReader::maps(const std::string& key, Need need,
 void MapReader::require(bool ok, const std::string& key, const std::string& problem,
                         const std::string& expected) {
   if (!ok) error(key, problem, expected);
+}
+
+void MapReader::accept_keys(const std::vector<std::string>& keys) {
+  read_.insert(keys.begin(), keys.end());
 }
 
 void MapReader::reject_unknown_keys() {

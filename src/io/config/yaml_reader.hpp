@@ -67,6 +67,8 @@ class MapReader {
   /// Records an error at `key` unless `ok`.
   void require(bool ok, const std::string& key, const std::string& problem,
                const std::string& expected);
+  /// Marks `keys` as known without reading them: keys a reader reads past.
+  void accept_keys(const std::vector<std::string>& keys);
   /// Reports keys not read so far and keys given twice.
   void reject_unknown_keys();
   /// Reports keys outside `allowed` (for maps that are read on behalf of another).

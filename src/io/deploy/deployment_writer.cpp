@@ -4,7 +4,9 @@
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/clearpath/clearpath_sensors.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
+#include "rigdesign/io/deploy/export_readme.hpp"
 #include "rigdesign/io/gazebo/sensors_gazebo_writer.hpp"
+#include "rigdesign/io/nav2/collision_monitor_writer.hpp"
 #include "rigdesign/io/nav2/costmap_params_writer.hpp"
 #include "rigdesign/io/robot/sensors_xacro_writer.hpp"
 #include "rigdesign/io/self_filters/self_filters_launch_writer.hpp"
@@ -30,7 +32,7 @@ std::vector<std::string> write_deployment(const std::string& folder, const model
   std::vector<std::string> unmapped;
   const std::vector<ClearpathSensor> clearpath =
       clearpath_sensors_of(rig, deployment.frames, unmapped);
-  const std::vector<std::pair<std::string, std::string>> files = {
+  std::vector<std::pair<std::string, std::string>> files = {
       {"sensors.urdf.xacro", sensors_xacro_text(deployment.frames, header)},
       {"nav2_costmap.yaml",
        nav2_costmap_text(
@@ -44,6 +46,15 @@ std::vector<std::string> write_deployment(const std::string& folder, const model
       {"sensors.gazebo.xacro", sensors_gazebo_xacro_text(deployment.gazebo, header)},
       {"bridge.yaml", gz_bridge_yaml_text(deployment.gazebo, header)},
       {"clearpath_sensors.yaml", clearpath_sensors_text(clearpath, unmapped, header)}};
+  if (deployment.collision_monitor) {
+    files.emplace_back(
+        "collision_monitor.yaml",
+        collision_monitor_text(*deployment.collision_monitor, deployment.costmap, header));
+  }
+  std::vector<std::string> names;
+  for (const auto& file : files) names.push_back(file.first);
+  names.push_back("README.md");
+  files.emplace_back("README.md", export_readme_text(rig, deployment, names, header));
   std::vector<std::string> written;
   for (const auto& [name, text] : files) {
     const std::string path = (std::filesystem::path(folder) / name).string();

@@ -89,4 +89,11 @@ std::string yaml_bool(bool value) {
   return value ? "true" : "false";
 }
 
+void write_key(std::ostream& out, const std::string& indent, std::string_view key,
+               const std::string& value, const std::string& comment) {
+  out << indent << key << ": " << value;
+  if (!comment.empty()) out << "  # " << comment;
+  out << '\n';
+}
+
 }  // namespace rigdesign::io

@@ -1,7 +1,9 @@
 #pragma once
 // How io's writers put text into YAML: comments, keys and scalars each go through one function
 // here, so what reaches a file is quoted or escaped in one place (STYLE.md, "foreign formats").
+#include <ostream>
 #include <string>
+#include <string_view>
 
 namespace rigdesign::io {
 
@@ -17,5 +19,9 @@ std::string yaml_quoted(const std::string& text);
 std::string yaml_float(double value);
 /// `true` or `false`.
 std::string yaml_bool(bool value);
+/// `indent` + `key: value` on a line of its own, `comment` (one line) after it when given.
+/// `value` is already YAML (from the functions above).
+void write_key(std::ostream& out, const std::string& indent, std::string_view key,
+               const std::string& value, const std::string& comment = "");
 
 }  // namespace rigdesign::io

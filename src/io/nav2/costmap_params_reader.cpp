@@ -16,10 +16,6 @@ namespace {
 
 constexpr const char* kMetres = "metres, >= 0";
 
-void ignore(MapReader& m, const std::vector<std::string>& keys) {
-  for (const std::string& key : keys) m.has(key);  // asking marks a key as known
-}
-
 // nav2 writes `observation_sources: front_camera top_lidar`; a YAML list is taken too.
 std::vector<std::string> source_names(MapReader& m) {
   const YAML::Node node = m.node("observation_sources");
@@ -55,7 +51,7 @@ costmap::ObservationSource read_source(MapReader& m, costmap::ObservationSource 
   m.require(source.observation_persistence >= 0.0, persistence, "is negative", "seconds, >= 0");
   m.require(source.min_obstacle_height <= source.max_obstacle_height, "min_obstacle_height",
             "is above max_obstacle_height", "min_obstacle_height <= max_obstacle_height");
-  ignore(m, nav2::kIgnoredSourceKeys);
+  m.accept_keys(nav2::kIgnoredSourceKeys);
   m.reject_unknown_keys();
   return source;
 }
@@ -90,7 +86,7 @@ void read_obstacle_layer(MapReader& m, bool voxel, const costmap::ObservationSou
                                        source->location("max_obstacle_height")});
     }
   }
-  ignore(m, nav2::kIgnoredLayerKeys);
+  m.accept_keys(nav2::kIgnoredLayerKeys);
   m.reject_unknown_keys();
 }
 
@@ -100,7 +96,7 @@ void read_hit_layer(MapReader& m, costmap::HitLayerParams& hit) {
   read_if_present(m, "d_threshold", hit.d_threshold,
                   "metres the robot must move to count as moving");
   read_if_present(m, "d_duration", hit.d_duration, "seconds over which the motion is judged");
-  ignore(m, {"plugin", "enabled"});
+  m.accept_keys({"plugin", "enabled"});
   m.reject_unknown_keys();
 }
 
@@ -108,7 +104,7 @@ void read_inflation_layer(MapReader& m, costmap::InflationParams& inflation) {
   read_if_present(m, "inflation_radius", inflation.inflation_radius, kMetres);
   read_if_present(m, "cost_scaling_factor", inflation.cost_scaling_factor, "a rate in 1/m, > 0");
   read_if_present(m, "inflate_unknown", inflation.inflate_unknown);
-  ignore(m, {"plugin", "enabled"});
+  m.accept_keys({"plugin", "enabled"});
   m.reject_unknown_keys();
 }
 
@@ -193,7 +189,8 @@ void warn_if_unknown_class(const YAML::Node& plugin, const std::string& layer,
   const auto& known = nav2::kKnownLayerClasses;
   if (std::find(known.begin(), known.end(), name) != known.end()) return;
   std::string classes;
-  for (const std::string& known_class : known) classes += (classes.empty() ? "" : ", ") + known_class;
+  for (const std::string& known_class : known)
+    classes += (classes.empty() ? "" : ", ") + known_class;
   warnings.push_back({location_of(plugin, path), layer + ".plugin",
                       "names '" + name +
                           "', a class neither nav2 (Humble, Jazzy) nor "
@@ -302,7 +299,7 @@ CostmapParamsFile load_costmap_params(const std::string& path,
   if (auto inflation = m.map(std::string(nav2::kInflationLayer), Need::optional)) {
     read_inflation_layer(*inflation, p.inflation);
   }
-  ignore(m, nav2::kIgnoredCostmapKeys);
+  m.accept_keys(nav2::kIgnoredCostmapKeys);
   m.reject_unknown_keys();
   diagnostics.throw_if_errors();
   // The file's heights are in its global frame; rigdesign's above the floor.

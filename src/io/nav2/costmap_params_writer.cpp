@@ -44,14 +44,6 @@ std::string obstacle_layer_name(const deploy::CostmapConfig& config,
   return std::string(voxel_layer(config, stvl) ? nav2::kVoxelLayer : nav2::kObstacleLayer);
 }
 
-// One key and its value on a line of its own, with an optional comment after it.
-void write_key(std::ostringstream& out, const std::string& indent, std::string_view key,
-               const std::string& value, const std::string& comment = "") {
-  out << indent << key << ": " << value;
-  if (!comment.empty()) out << "  # " << comment;
-  out << '\n';
-}
-
 // The obstacle or voxel layer's column and its observation sources.
 void write_obstacle_layer(std::ostringstream& out, const deploy::CostmapConfig& config,
                           const deploy::StvlLayer* stvl, const std::string& in) {

@@ -13,10 +13,6 @@ constexpr const char* kStvlMetres = "metres, >= 0";
 // long: longer than any check asks for.
 constexpr double kForever = 1e9;  // [s]
 
-void mark_known(MapReader& m, const std::vector<std::string>& keys) {
-  for (const std::string& key : keys) m.has(key);  // asking marks a key as known
-}
-
 const std::vector<std::string> kIgnoredStvlLayerKeys = {"plugin",
                                                         "enabled",
                                                         "voxel_size",
@@ -74,7 +70,7 @@ costmap::ObservationSource read_stvl_source(MapReader& m, costmap::ObservationSo
             "seconds, >= 0");
   // The layer's decay keeps a marked voxel however the source's own buffer is kept.
   source.observation_persistence = std::max(source.observation_persistence, keep);
-  mark_known(m, kIgnoredStvlSourceKeys);
+  m.accept_keys(kIgnoredStvlSourceKeys);
   m.reject_unknown_keys();
   return source;
 }
@@ -103,7 +99,7 @@ void read_stvl_layer(MapReader& m, const costmap::ObservationSource& defaults,
            source->location("min_obstacle_height"), source->location("max_obstacle_height")});
     }
   }
-  mark_known(m, kIgnoredStvlLayerKeys);
+  m.accept_keys(kIgnoredStvlLayerKeys);
   m.reject_unknown_keys();
 }
 

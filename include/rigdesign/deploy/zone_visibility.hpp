@@ -1,0 +1,57 @@
+#pragma once
+/// What a collision monitor's sources see of a protective zone (issue 34): an obstacle enters
+/// a zone across its boundary, so every boundary point outside the robot's own outline must be
+/// seen by some source, on the column from the floor to the top of the area to perceive within
+/// the heights that source passes. Exact along each column (MountedFov::covered_along, with
+/// the body's occlusion); sampled along the boundary every `kBoundaryStep`, so an unseen gap
+/// narrower than that step can be missed.
+#include <vector>
+
+#include "rigdesign/geometry/mounted_fov.hpp"
+#include "rigdesign/model/eigen_types.hpp"
+
+namespace rigdesign::deploy {
+
+/// [m] spacing of the boundary samples; interior samples (whether a source sees the zone at
+/// all) are kInteriorStep apart.
+inline constexpr double kBoundaryStep = 0.005;
+inline constexpr double kInteriorStep = 0.02;
+
+/// One source as the collision monitor filters it.
+struct ZoneViewer {
+  const geometry::MountedFov* fov = nullptr;
+  /// [m] above the floor: the heights whose points the source passes (a LaserScan source
+  /// passes every height its plane meets).
+  double min_z = 0.0;
+  double max_z = 0.0;
+};
+
+/// The robot's own outline: nothing can enter a zone through it. A round body is its radius
+/// (`hull` empty), any other the convex hull nav2's footprint is.
+struct BodyOutline {
+  std::vector<model::Vec2> hull;  ///< counter-clockwise
+  double radius = 0.0;            ///< [m] for a round body
+  /// True when `p` lies inside the outline or within `tolerance` [m] of it.
+  bool holds(const model::Vec2& p, double tolerance) const;
+};
+
+/// A stretch of a zone's boundary [m, robot frame], counter-clockwise from `from` to `to`.
+struct BoundaryArc {
+  model::Vec2 from = model::Vec2::Zero();
+  model::Vec2 to = model::Vec2::Zero();
+  double length = 0.0;
+};
+
+struct ZoneVisibility {
+  std::vector<bool> sees;             ///< per viewer: some boundary or interior point
+  std::vector<double> seen_boundary;  ///< per viewer: boundary length it sees [m]
+  std::vector<BoundaryArc> unseen;    ///< boundary outside the body that no viewer sees
+  double checked_boundary = 0.0;      ///< boundary length outside the body [m]
+};
+
+/// `zone`: a simple polygon (either winding) in the robot frame (z up from the floor).
+/// `area_top` [m]: an obstacle is a column from the floor to it.
+ZoneVisibility zone_visibility(const std::vector<model::Vec2>& zone, const BodyOutline& body,
+                               const std::vector<ZoneViewer>& viewers, double area_top);
+
+}  // namespace rigdesign::deploy
