@@ -10,6 +10,18 @@ install(FILES "${PROJECT_SOURCE_DIR}/sensors.yaml" DESTINATION ${CMAKE_INSTALL_D
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/rigs" "${PROJECT_SOURCE_DIR}/data"
         DESTINATION ${CMAKE_INSTALL_DATADIR}/rigdesign)
 install(FILES "${PROJECT_SOURCE_DIR}/README.md" DESTINATION ${CMAKE_INSTALL_DOCDIR})
+
+# A ROS 2 workspace finds a package by an empty marker file named after it in the ament index
+# (ament_index_python: <prefix>/share/ament_index/resource_index/packages/<name>, searched in
+# each prefix of AMENT_PREFIX_PATH) and reads share/<name>/package.xml. colcon's cmake build
+# type adds neither, and no AMENT_PREFIX_PATH hook: the hook below, named in colcon.pkg, adds
+# the prefix (docs/colcon.md has the sources).
+file(WRITE "${PROJECT_BINARY_DIR}/ament_index/rigdesign" "")
+install(FILES "${PROJECT_BINARY_DIR}/ament_index/rigdesign"
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/ament_index/resource_index/packages)
+install(FILES "${PROJECT_SOURCE_DIR}/package.xml" DESTINATION ${CMAKE_INSTALL_DATADIR}/rigdesign)
+install(FILES "${PROJECT_SOURCE_DIR}/cmake/colcon/ament_prefix_path.dsv"
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/rigdesign/hook)
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/docs/" DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
 # Debian package: `cpack -G DEB` in a Release build folder (README, "Install"). The runtime
@@ -22,7 +34,7 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
     "Design and check the sensor rig of an autonomous mobile robot")
 set(CPACK_PACKAGE_INSTALL_DIRECTORY rigdesign)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
-set(CPACK_DEBIAN_PACKAGE_MAINTAINER "rigdesign developers <rigdesign@invalid>")
+set(CPACK_DEBIAN_PACKAGE_MAINTAINER "rigdesign developers <rigdesign@developers.invalid>")
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)

@@ -24,6 +24,9 @@ packages=(
   libbenchmark-dev                       # Google Benchmark for scripts/bench.sh
   fonts-dejavu-core                      # the font Cairo draws labels with
   chromium                               # headless browser: the test that renders `report`'s page
+  python3-ament-index                    # tests: ROS 2's package index finds the installed prefix
+  colcon python3-colcon-ros python3-colcon-cmake python3-colcon-metadata  # rigdesign in a ROS 2
+  python3-colcon-package-information python3-colcon-recursive-crawl      # workspace (package.xml)
 )
 
 missing=()

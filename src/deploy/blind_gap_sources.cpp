@@ -42,7 +42,7 @@ bool sees_approach(const model::Rig& rig, const geometry::MountedFov& fov,
 }  // namespace
 
 void keep_blind_gap_clouds(const model::Rig& rig, const model::SensorLibrary& library,
-                           const metrics::RigCoverage& coverage, CostmapConfig& config) {
+                           const metrics::RigCoverage& coverage, CostmapConfig& config, bool stvl) {
   const geometry::BodyOccluder body(rig.body);
   std::vector<std::string> kept;
   std::vector<bool> remembered(config.memory.gaps.size(), false);
@@ -59,8 +59,9 @@ void keep_blind_gap_clouds(const model::Rig& rig, const model::SensorLibrary& li
       persistence = std::max(persistence, gap.persistence);
       remembered[g] = true;
     }
-    if (persistence > 0.0)
-      kept.push_back(config.sources[m].mount_id + " " + model::format_number(persistence, 3) + " s");
+    if (persistence > 0.0 && (!stvl || config.sources[m].laser_scan))
+      kept.push_back(config.sources[m].mount_id + " " + model::format_number(persistence, 3) +
+                     " s");
   }
   for (std::size_t g = 0; g < config.memory.gaps.size(); ++g) {
     if (remembered[g]) continue;
@@ -71,12 +72,16 @@ void keep_blind_gap_clouds(const model::Rig& rig, const model::SensorLibrary& li
                            " deg, so nothing can remember it (export --hit-layer-plugin does not "
                            "help either)");
   }
-  if (kept.empty()) return;
-  std::string list;
-  for (const std::string& entry : kept) list += (list.empty() ? "" : ", ") + entry;
-  config.notes.push_back("blind memory: observation_persistence " + list +
+  const std::string stvl_memory =
+      stvl ? "; the 3D sources remember in stvl_layer through voxel_decay" : "";
+  if (kept.empty()) {
+    if (stvl) config.notes.push_back("blind memory" + stvl_memory + ": " + config.memory.rule);
+    return;
+  }
+  config.notes.push_back("blind memory: observation_persistence " + model::join(kept) +
                          ", the sources that see an obstacle grazing the body on its approach to "
-                         "a blind gap: " + config.memory.rule);
+                         "a blind gap" +
+                         stvl_memory + ": " + config.memory.rule);
 }
 
 }  // namespace rigdesign::deploy

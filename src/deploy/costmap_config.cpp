@@ -138,7 +138,8 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
     config.memory =
         blind_memory(coverage, speed, std::min(speed, options.min_speed), options.update_rate);
     p.hit = config.memory.hit;
-    if (options.hit_layer_plugin.empty()) keep_blind_gap_clouds(rig, library, coverage, config);
+    if (options.hit_layer_plugin.empty())
+      keep_blind_gap_clouds(rig, library, coverage, config, options.stvl);
   } else {
     config.memory.rule = "no robot speed (requirements R5 or --max-speed): paper 1's values";
   }

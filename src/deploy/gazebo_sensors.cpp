@@ -10,8 +10,6 @@
 namespace rigdesign::deploy {
 namespace {
 
-// A horizontal FOV this close to a full turn wraps: its first and last rays would coincide.
-constexpr double kGazeboFullTurnTolerance = 1e-6;  // [rad]
 // gz-sensors publishes a gpu_lidar's or depth camera's cloud on `<topic>` + this.
 constexpr std::string_view kCloudSuffix = "/points";
 
@@ -23,7 +21,7 @@ int ray_count(double fov, double spacing, bool wraps) {
 void plan_lidar(const model::SensorMode& mode, GazeboSensor& sensor) {
   sensor.type = GazeboSensorType::gpu_lidar;
   const double horizontal = mode.fov.horizontal();
-  const bool wraps = horizontal >= 2.0 * std::numbers::pi - kGazeboFullTurnTolerance;
+  const bool wraps = mode.fov.full_turn();
   sensor.horizontal_samples = ray_count(horizontal, mode.angular_resolution_h, wraps);
   // A full turn of N rays spans N - 1 spacings, so its last ray stops one spacing short.
   const double span = wraps ? horizontal - mode.angular_resolution_h : horizontal;

@@ -12,7 +12,6 @@ namespace {
 // STVL's lidar frustum takes a horizontal angle above 6.27 rad as a full turn; 6.29 is what its
 // examples write.
 constexpr double kStvlFullTurn = 6.29;
-constexpr double kStvlFullTurnTolerance = 1e-6;  // [rad]
 // Degrees, for the notes.
 std::string in_degrees(double radians) {
   return model::format_number(radians * 180.0 / std::numbers::pi, 4);
@@ -21,8 +20,7 @@ std::string in_degrees(double radians) {
 void plan_lidar_band(const model::SensorMode& mode, StvlSource& s) {
   const double low = mode.fov.elevation_min(), high = mode.fov.elevation_max();
   const double horizontal = mode.fov.horizontal();
-  s.horizontal_fov =
-      horizontal >= 2.0 * std::numbers::pi - kStvlFullTurnTolerance ? kStvlFullTurn : horizontal;
+  s.horizontal_fov = mode.fov.full_turn() ? kStvlFullTurn : horizontal;
   // STVL's band: |z| / r <= tan(vertical_fov / 2) about the sensor's plane.
   const double half = std::max(0.0, std::min(-low, high));
   s.vertical_fov = 2.0 * half;

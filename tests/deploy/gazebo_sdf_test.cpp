@@ -137,7 +137,12 @@ TEST_CASE("export: libsdformat reads every bundled rig's Gazebo sensors as the d
     REQUIRE(root.Model() != nullptr);
     const YAML::Node nav2 = YAML::LoadFile(folder.path() + "/nav2_costmap.yaml");
     const YAML::Node bridge = YAML::LoadFile(folder.path() + "/bridge.yaml");
-    REQUIRE(bridge.size() == rig.mounts.size());
+    // One entry per mount, then gz sim's clock for use_sim_time.
+    REQUIRE(bridge.size() == rig.mounts.size() + 1);
+    const YAML::Node clock = bridge[rig.mounts.size()];
+    CHECK(clock["ros_topic_name"].as<std::string>() == "/clock");
+    CHECK(clock["ros_type_name"].as<std::string>() == "rosgraph_msgs/msg/Clock");
+    CHECK(clock["direction"].as<std::string>() == "GZ_TO_ROS");
     for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
       const model::Mount& mount = rig.mounts[m];
       INFO(mount.id);

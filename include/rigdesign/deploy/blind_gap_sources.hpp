@@ -13,8 +13,11 @@
 namespace rigdesign::deploy {
 
 /// Sets each source's observation_persistence in `config` (sources in mount order, memory
-/// already sized from `coverage`) and adds the notes that say which and why.
+/// already sized from `coverage`) and adds the notes that say which and why. With `stvl` the
+/// 3D sources remember through spatio_temporal_voxel_layer's voxel_decay instead, and the
+/// note says so.
 void keep_blind_gap_clouds(const model::Rig& rig, const model::SensorLibrary& library,
-                           const metrics::RigCoverage& coverage, CostmapConfig& config);
+                           const metrics::RigCoverage& coverage, CostmapConfig& config,
+                           bool stvl = false);
 
 }  // namespace rigdesign::deploy

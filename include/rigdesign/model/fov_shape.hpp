@@ -123,8 +123,13 @@ class FieldOfView {
   double vertical() const { return shape_->vertical(); }
   double elevation_min() const { return shape_->elevation_min(); }
   double elevation_max() const { return shape_->elevation_max(); }
+  /// The horizontal angle is a whole turn (within 1e-6 rad of 2 pi, as files round it): the
+  /// first and last rays coincide, which exporters must not count twice.
+  bool full_turn() const { return horizontal() >= kFullTurn - kFullTurnTolerance; }
 
  private:
+  static constexpr double kFullTurn = 6.283185307179586;
+  static constexpr double kFullTurnTolerance = 1e-6;  // [rad]
   std::shared_ptr<const FovShape> shape_;
 };
 

@@ -43,12 +43,12 @@ std::string device_value(const YAML::Node& parameters, const std::string& key) {
 }
 
 std::string known_models(const std::string& type) {
-  std::string names;
+  std::vector<std::string> names;
   for (const ClearpathModel& m : clearpath_models()) {
-    if (m.type != type || names.find(m.model) != std::string::npos) continue;
-    names += (names.empty() ? "" : ", ") + m.model;
+    if (m.type == type && std::find(names.begin(), names.end(), m.model) == names.end())
+      names.push_back(m.model);
   }
-  return names;
+  return model::join(names);
 }
 
 model::Vec3 triple(MapReader& entry, const std::string& key, const std::string& unit) {

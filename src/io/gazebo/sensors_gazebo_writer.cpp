@@ -163,18 +163,22 @@ std::string gz_bridge_yaml_text(const std::vector<deploy::GazeboSensor>& sensors
   out << yaml_comment(
       "ros_gz_bridge: ros2 run ros_gz_bridge parameter_bridge --ros-args -p "
       "config_file:=bridge.yaml. One entry per sensor of sensors.gazebo.xacro, from gz sim to "
-      "the topic nav2's source reads (scans as gz publishes them, clouds from <topic>/points).");
-  if (sensors.empty()) out << "[]\n";
+      "the topic nav2's source reads (scans as gz publishes them, clouds from <topic>/points), "
+      "then the simulation clock, which nodes with use_sim_time:=true wait for.");
   for (const deploy::GazeboSensor& s : sensors) {
     const bool scan = s.type == deploy::GazeboSensorType::gpu_lidar && s.laser_scan;
     out << "- ros_topic_name: " << yaml_quoted(s.ros_topic) << "\n"
         << "  gz_topic_name: " << yaml_quoted(s.gz_data_topic) << "\n"
         << "  ros_type_name: "
         << (scan ? "sensor_msgs/msg/LaserScan" : "sensor_msgs/msg/PointCloud2") << "\n"
-        << "  gz_type_name: " << (scan ? "gz.msgs.LaserScan" : "gz.msgs.PointCloudPacked")
-        << "\n"
+        << "  gz_type_name: " << (scan ? "gz.msgs.LaserScan" : "gz.msgs.PointCloudPacked") << "\n"
         << "  direction: GZ_TO_ROS\n";
   }
+  out << "- ros_topic_name: \"/clock\"\n"
+      << "  gz_topic_name: \"/clock\"\n"
+      << "  ros_type_name: rosgraph_msgs/msg/Clock\n"
+      << "  gz_type_name: gz.msgs.Clock\n"
+      << "  direction: GZ_TO_ROS\n";
   return out.str();
 }
 

@@ -55,14 +55,16 @@ for joint in joints:
 
 py_compile.compile(folder + '/self_filters.launch.py', doraise=True)
 
-# The Gazebo macro: one <sensor> per mount, named after it; the bridge: one entry per mount.
+# The Gazebo macro: one <sensor> per mount, named after it; the bridge: one entry per mount,
+# then the simulation clock.
 gazebo = ET.parse(folder + '/sensors.gazebo.xacro').getroot()
 sensor_names = sorted(s.get('name') for s in gazebo.iter('sensor'))
 if sensor_names != sorted(mounts):
     problems.append('Gazebo sensors %r, rig mounts %r' % (sensor_names, mounts))
 bridge = yaml.safe_load(open(folder + '/bridge.yaml', encoding='utf-8'))
-if not isinstance(bridge, list) or len(bridge) != len(mounts):
-    problems.append('bridge.yaml holds %r, not one entry per mount' % (bridge,))
+if (not isinstance(bridge, list) or len(bridge) != len(mounts) + 1
+        or bridge[-1].get('ros_topic_name') != '/clock'):
+    problems.append('bridge.yaml holds %r, not one entry per mount and the clock' % (bridge,))
 elif 'injected' in set(keys_of(bridge)):
     problems.append('a key from the rig name reached bridge.yaml')
 
