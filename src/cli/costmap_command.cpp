@@ -20,6 +20,7 @@
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/io/maps/map_files.hpp"
 #include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/output_folder.hpp"
@@ -42,9 +43,9 @@ struct CostmapOptions {
   std::string rig;
   std::string sensors;
   std::string scenario;
-  std::string params;  // nav2 costmap parameter file
+  std::string params;                // nav2 costmap parameter file
   double global_frame_height = 0.0;  // [m] of the file's global frame above the floor
-  std::string layer;   // empty: the parameters' layer (the scenario's default: obstacle)
+  std::string layer;  // empty: the parameters' layer (the scenario's default: obstacle)
   bool no_hit_layer = false;
   bool no_memory = false;  // neither the Hit Layer nor any source's observation_persistence
   bool compare = false;
@@ -55,6 +56,9 @@ struct CostmapOptions {
   int frame_every = 5;
   std::uint64_t seed = 1;
   std::string out;
+  std::string filtering_loads;                 // measured seconds per point (filter --write-loads)
+  std::string local_planner = "pure-pursuit";  // or dwa
+  bool full_rays = false;                      // every ray of every sensor, no decimation
 };
 
 struct Variant {
@@ -299,6 +303,33 @@ std::string persistence_text(const model::Rig& rig, const scenarios::ScenarioPar
   return text;
 }
 
+// Each mount's rate and latency as the run senses them, and the rays it casts.
+void print_sensing(std::ostream& out, const RigInputs& inputs,
+                   const scenarios::ScenarioParams& params, const std::string& loads_file) {
+  out << "  sensing at each sensor's own rate, frames reaching the costmap after driver + "
+         "filter time ("
+      << (loads_file.empty()
+              ? "filters " + model::format_number(params.filtering_seconds_per_point) +
+                    " core-s per point, paper 1's figure"
+              : "filters as measured in " + loads_file)
+      << "; rays: cameras every " << params.camera_decimation << ", lidars every "
+      << params.lidar_decimation
+      << (params.camera_decimation == 1 && params.lidar_decimation == 1
+              ? " (full patterns)"
+              : " (--full-rays casts all)")
+      << "):\n";
+  for (const model::Mount& mount : inputs.rig.mounts) {
+    const model::SensorMode& mode = inputs.library.resolved_mode(mount.sensor_id, mount.mode_id);
+    const model::FilteringLoad* measured =
+        params.filtering_loads ? params.filtering_loads->find(mount.sensor_id) : nullptr;
+    const scenarios::MountTiming timing = scenarios::mount_timing(
+        mount, mode, measured ? measured->seconds_per_point : params.filtering_seconds_per_point,
+        0.0);
+    out << "    " << mount.id << ": " << scenarios::describe(timing)
+        << (mount.throttle_hz ? " (throttled)" : "") << "\n";
+  }
+}
+
 std::string window_text(const costmap::CostmapParams& costmap) {
   if (costmap.size_x == costmap.size_y) return model::format_number(costmap.size_x);
   return model::format_number(costmap.size_x) + " x " + model::format_number(costmap.size_y);
@@ -337,6 +368,15 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
   params.follower.speed = options.speed;
   params.update_rate = options.update_rate;
   params.seed = options.seed;
+  model::FilteringLoads loads;
+  if (!options.filtering_loads.empty()) {
+    loads = io::load_filtering_loads(options.filtering_loads);
+    params.filtering_loads = &loads;
+  }
+  if (options.full_rays) params.camera_decimation = params.lidar_decimation = 1;
+  require_option(options.local_planner == "pure-pursuit" || options.local_planner == "dwa",
+                 "--local-planner", "is '" + options.local_planner + "'", "pure-pursuit or dwa");
+  if (options.local_planner == "dwa") params.local_planner = scenarios::LocalPlanner::dwa;
   scenarios::check_scenario_inputs(inputs.rig, inputs.library, params);
 
   const scenarios::ScenarioDefinition scenario =
@@ -350,6 +390,14 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
       << " Hz updates, " << model::format_number(options.speed) << " m/s; Hit Layer hit "
       << params.costmap.hit.hit << ", hit_max " << params.costmap.hit.hit_max
       << persistence_text(inputs.rig, params) << "\n";
+  print_sensing(out, inputs, params, options.filtering_loads);
+  out << "  local planner: "
+      << (params.local_planner == scenarios::LocalPlanner::dwa
+              ? "DWA (sim_time " + model::format_number(params.dwa.sim_time) + " s, " +
+                    std::to_string(params.dwa.linear_samples) + " x " +
+                    std::to_string(params.dwa.angular_samples) + " velocities)"
+              : std::string("pure pursuit"))
+      << ", Dijkstra global plans at each update\n";
   const bool persistence = any_persistence(inputs.rig, params) && !options.no_memory;
   std::vector<Variant> variants;
   if (options.compare) {
@@ -423,7 +471,18 @@ Command setup_costmap(CLI::App& parent) {
   app->add_option("--frame-every", options->frame_every,
                   "Write a PNG frame every N updates (default 5, 0: none)")
       ->check(finite_in(0, 100000, "0 (none) or an update count"));
-  app->add_option("--seed", options->seed, "Seed of the scene and the sensor noise (default 1)");
+  app->add_option("--seed", options->seed,
+                  "Seed of the scene, the sensor noise and the sensors' frame phases (default 1)");
+  app->add_option("--filtering-loads", options->filtering_loads,
+                  "Measured filtering cost per point (rigdesign filter --write-loads): the "
+                  "filters' share of each frame's latency (default paper 1's 3.5e-7 core-s)");
+  app->add_option("--local-planner", options->local_planner,
+                  "pure-pursuit (default) or dwa: paper 2's Dynamic Window Approach with "
+                  "dwa_local_planner's defaults")
+      ->capture_default_str();
+  app->add_flag("--full-rays", options->full_rays,
+                "Cast every ray of every sensor (default: every 8th camera pixel row and "
+                "column, every 4th lidar ray along the scan)");
   app->add_option("--out", options->out, "Output folder (default costmap/<scenario>)");
   return {app, [options](std::ostream& out, std::ostream& err) {
             return run_costmap(*options, out, err);

@@ -42,9 +42,9 @@ std::vector<FilteringLoadRow> filtering_load_rows(const metrics::ResultantMetric
   std::vector<FilteringLoadRow> rows;
   for (const metrics::MountMetrics& mount : metrics.mounts) {
     const model::FilteringLoad* load = loads.find(mount.sensor_id);
-    rows.push_back({mount.mount_id,
-                    load ? std::optional<double>(load->seconds_per_point * mount.points_per_second)
-                         : std::nullopt});
+    rows.push_back({mount.mount_id, load ? std::optional<double>(load->seconds_per_point *
+                                                                 mount.filtered_points_per_second)
+                                         : std::nullopt});
   }
   return rows;
 }

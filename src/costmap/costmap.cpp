@@ -56,6 +56,25 @@ Costmap::Costmap(const CostmapParams& params, const model::SourceLocation& where
   hit_ = HitLayer(window, params.hit);
 }
 
+void Costmap::clear_outside(const model::Vec2& centre_world, double radius) {
+  // Every layer shares the master's window (update recentres them together).
+  const GridWindow& window = master_.window();
+  CostGrid& obstacles = obstacle_.grid();
+  RollingVoxelGrid& voxels = voxel_.grid();
+  const bool has_voxels = voxels.window().size() == window.size();
+  const bool has_hits = hit_.counts().window().size() == window.size();
+  for (int y = 0; y < window.height; ++y) {
+    for (int x = 0; x < window.width; ++x) {
+      if ((window.centre_of(x, y) - centre_world).norm() <= radius) continue;
+      if (obstacles.window().size() == window.size()) obstacles.at(x, y) = obstacles.fill_value();
+      if (has_voxels) {
+        for (int z = 0; z < voxels.layers(); ++z) voxels.set(x, y, z, VoxelState::unknown);
+      }
+      if (has_hits) hit_.counts().at(x, y) = 0;
+    }
+  }
+}
+
 const CostGrid& Costmap::obstacle_grid() const {
   return params_.layer == ObstacleLayerKind::obstacle ? obstacle_.grid() : projection_;
 }

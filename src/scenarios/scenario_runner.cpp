@@ -4,11 +4,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <numbers>
 #include <optional>
 #include <random>
 
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
+#include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/statistics.hpp"
 #include "rigdesign/sim/noise_stream.hpp"
 #include "rigdesign/sim/ray_caster.hpp"
@@ -96,6 +99,75 @@ std::optional<model::Vec2> local_goal(const model::Vec2& leg_start, const model:
   }
 }
 
+// The robot's poses and commands at every control step so far: where it was when a sensor
+// captured a frame between two steps.
+class PoseHistory {
+ public:
+  void record(double t, const costmap::Pose2& pose, const costmap::VelocityCommand& command) {
+    steps_.push_back({t, pose, command});
+  }
+  bool empty() const { return steps_.empty(); }
+  /// The pose at time `t` [s], at most the last recorded step's time + its step; before the
+  /// first step, the first pose.
+  costmap::Pose2 at(double t) const {
+    const auto after = std::upper_bound(steps_.begin(), steps_.end(), t,
+                                        [](double time, const Step& s) { return time < s.t; });
+    if (after == steps_.begin()) return steps_.front().pose;
+    const Step& step = *std::prev(after);
+    return costmap::integrate_unicycle(step.pose, step.command, t - step.t);
+  }
+
+ private:
+  struct Step {
+    double t;
+    costmap::Pose2 pose;
+    costmap::VelocityCommand command;
+  };
+  std::vector<Step> steps_;
+};
+
+// Paper 2's deadlock handling: stuck (no plan, or no admissible velocity) for the patience,
+// stop, clear the obstacles beyond 0.5 m and turn 360 degrees; stuck again on the same leg,
+// clear everything and turn again; a third time, give up.
+struct Recovery {
+  double stuck_since = -1.0;    // [s] when the robot last stopped making progress; < 0: moving
+  int level = 0;                // recoveries on the current leg
+  std::size_t leg = 0;          // the route stop they were for
+  double turning_until = -1.0;  // [s] end of the current recovery turn
+};
+
+// Returns true when the run must stop: recoveries exhausted.
+bool recover_if_stuck(Recovery& recovery, bool blocked, double t, std::size_t stop,
+                      const costmap::Pose2& pose, costmap::Costmap& costmap,
+                      const ScenarioParams& params, ScenarioResult& result) {
+  if (stop != recovery.leg) {  // a stop reached: a new leg starts without recoveries
+    recovery.leg = stop;
+    recovery.level = 0;
+  }
+  if (!blocked) {
+    recovery.stuck_since = -1.0;
+    return false;
+  }
+  if (recovery.stuck_since < 0.0) recovery.stuck_since = t;
+  if (t - recovery.stuck_since < params.deadlock_patience) return false;
+  recovery.stuck_since = -1.0;
+  if (recovery.level >= 2) {
+    result.gave_up = true;
+    result.gave_up_reason =
+        "no way to route stop " + std::to_string(stop + 1) +
+        " after two recoveries (cleared "
+        "the costmap beyond " +
+        model::format_number(params.deadlock_clear_radius) +
+        " m, then entirely, turning 360 deg each time): the goal is unreachable";
+    return true;
+  }
+  ++recovery.level;
+  ++result.recoveries;
+  costmap.clear_outside(pose.position, recovery.level == 1 ? params.deadlock_clear_radius : 0.0);
+  recovery.turning_until = t + 2.0 * std::numbers::pi / params.follower.max_angular_speed;
+  return false;
+}
+
 }  // namespace
 
 TimeSummary summarize_times(const std::vector<double>& seconds) {
@@ -131,12 +203,22 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
                                           2 * setup.costmap.resolution);
 
   ScenarioResult result;
+  for (const detail::SimulatedMount& mount : setup.mounts) result.timings.push_back(mount.timing);
+  // Frames simulated so far and still held by the costmap, by capture index, per mount.
+  std::vector<std::map<long, model::PointCloud>> frames(setup.mounts.size());
+  std::vector<long> last_passed(setup.mounts.size(), -1);  // newest frame given to the costmap
+  PoseHistory history;
   costmap::Pose2 pose = scenario.start;
   std::size_t stop = 0;
   bool waiting = false;
   double wait_until = 0.0;
   costmap::VelocityCommand command;
   costmap::PlannedPath path;
+  model::Vec2 goal = scenario.start.position;  // the local goal of the latest plan
+  Recovery recovery;
+  costmap::DwaParams dwa = params.dwa;
+  dwa.max_speed = params.follower.speed;
+  dwa.max_angular_speed = params.follower.max_angular_speed;
   std::vector<model::PointCloud> clouds(setup.mounts.size());
   for (long k = 0;; ++k) {
     const double t = static_cast<double>(k) / params.control_rate;
@@ -179,23 +261,46 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
 
     if (k % steps_per_update == 0) {
       const model::Pose3 T_world_robot = detail::to_pose3(pose);
-      std::optional<sim::RayCaster> moving_caster;
-      if (!static_scene) moving_caster.emplace(scenario.scene.at(t));
-      const sim::RayCaster& caster = static_scene ? *still_caster : *moving_caster;
+      // Each mount's frames, captured at their own times, from where the robot was then, in
+      // the scene as it was then, arrived a latency later. Without persistence nav2's buffer
+      // holds the newest frame until the next one arrives, so it marks at every update; with
+      // persistence each frame goes to the costmap once, which keeps it for its persistence.
       std::vector<costmap::CloudObservation> observations;
       for (std::size_t i = 0; i < setup.mounts.size(); ++i) {
         const detail::SimulatedMount& mount = setup.mounts[i];
-        clouds[i] =
-            sim::simulate_frame(caster, mount.mode, mount.rays,
-                                T_world_robot * mount.mount.T_robot_sensor, settings, streams[i]);
-        observations.push_back({&clouds[i], model::Pose3::Identity(), setup.mounts[i].source});
+        const bool keeps = mount.source.observation_persistence > 0.0;
+        std::vector<long> held = frames_held(mount.timing, t, mount.source.observation_persistence);
+        if (keeps) std::erase_if(held, [&](long index) { return index <= last_passed[i]; });
+        std::map<long, model::PointCloud>& cache = frames[i];
+        std::erase_if(cache, [&](const auto& frame) {
+          return !std::binary_search(held.begin(), held.end(), frame.first);
+        });
+        for (const long index : held) {
+          if (cache.count(index)) continue;
+          const double captured = mount.timing.capture(index);
+          std::optional<sim::RayCaster> moving_caster;
+          if (!static_scene) moving_caster.emplace(scenario.scene.at(captured));
+          const sim::RayCaster& caster = static_scene ? *still_caster : *moving_caster;
+          const model::Pose3 T_world_sensor =
+              detail::to_pose3(history.empty() ? pose : history.at(captured)) *
+              mount.mount.T_robot_sensor;
+          cache[index] = sim::simulate_frame(caster, mount.mode, mount.rays, T_world_sensor,
+                                             settings, streams[i]);
+          ++result.frames_cast;
+        }
+        for (const auto& [index, cloud] : cache)
+          observations.push_back({&cloud, model::Pose3::Identity(), mount.source});
+        if (!cache.empty()) {
+          clouds[i] = cache.rbegin()->second;
+          last_passed[i] = cache.rbegin()->first;
+        }
       }
       const bool velocity_command = !command.is_zero();
       const Clock::time_point update_start = Clock::now();
       costmap.update(t, T_world_robot, observations, velocity_command);
       result.update_seconds.push_back(seconds_since(update_start));
 
-      model::Vec2 goal = pose.position;
+      goal = pose.position;
       path = costmap::PlannedPath{};
       if (!waiting) {
         const model::Vec2 leg_start =
@@ -227,8 +332,30 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
       }
       ++result.updates;
     }
-    command = waiting || !path.found ? costmap::VelocityCommand{}
-                                     : costmap::pursue(path.waypoints_world, pose, params.follower);
+    bool blocked = false;
+    if (t < recovery.turning_until) {
+      // Paper 2's recovery turn: on the spot, a full turn, sensing all the while.
+      command = costmap::VelocityCommand{0.0, params.follower.max_angular_speed};
+      result.recovery_seconds += dt;
+    } else if (waiting) {
+      command = costmap::VelocityCommand{};
+    } else if (!path.found) {
+      command = costmap::VelocityCommand{};
+      blocked = true;
+    } else if (params.local_planner == LocalPlanner::dwa) {
+      const costmap::DwaResult chosen =
+          costmap::plan_dwa(costmap.master(), pose, command, path.waypoints_world, goal, dt, dwa);
+      if (!chosen.found) ++result.dwa_blocked_steps;
+      command = chosen.command;
+      blocked = !chosen.found;
+    } else {
+      command = costmap::pursue(path.waypoints_world, pose, params.follower);
+    }
+    if (params.deadlock_recovery &&
+        recover_if_stuck(recovery, blocked, t, stop, pose, costmap, params, result)) {
+      break;  // gave up: the goal is unreachable
+    }
+    history.record(t, pose, command);
     pose = costmap::integrate_unicycle(pose, command, dt);
   }
   result.trajectory.push_back({result.end_time, pose});

@@ -2,13 +2,31 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/sim/decimation.hpp"
+#include "rigdesign/sim/noise_stream.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
 namespace rigdesign::scenarios::detail {
+namespace {
+
+// Stream ids of the frame phases: far from the mounts' noise streams (0, 1, ...).
+constexpr std::uint64_t kPhaseStream = 1u << 20;
+
+// Mount i's first capture: given, else uniform over its period from the seed.
+double frame_phase(const ScenarioParams& params, std::size_t i, const model::SensorMode& mode,
+                   const model::Mount& mount) {
+  if (i < params.frame_phases.size()) return params.frame_phases[i];
+  const double rate = std::min(mode.frequency, mount.throttle_hz.value_or(mode.frequency));
+  std::mt19937_64 stream = sim::noise_stream(params.seed, kPhaseStream + i);
+  return std::uniform_real_distribution<double>(0.0, 1.0 / rate)(stream);
+}
+
+}  // namespace
+
 Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
                  const ScenarioParams& params) {
   Setup setup;
@@ -27,11 +45,17 @@ Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
     const model::Sensor* sensor = library.find(mount.sensor_id);
     const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
     if (!mode) continue;
+    const model::FilteringLoad* measured =
+        params.filtering_loads ? params.filtering_loads->find(mount.sensor_id) : nullptr;
+    const double per_point =
+        measured ? measured->seconds_per_point : params.filtering_seconds_per_point;
     SimulatedMount simulated{
         mount,
         sim::decimated_mode(*mode, params.camera_decimation, params.lidar_decimation),
         {},
-        sources[i]};
+        sources[i],
+        mount_timing(mount, *mode, per_point, frame_phase(params, i, *mode, mount))};
+    if (!params.model_latency) simulated.timing.driver = simulated.timing.filtering = 0.0;
     simulated.rays = sim::ray_pattern(simulated.mode);
     setup.mounts.push_back(std::move(simulated));
   }
@@ -135,8 +159,8 @@ void check_scenario_inputs(const model::Rig& rig, const model::SensorLibrary& li
         "width, height",
         "the window is " + model::format_number(setup.costmap.size_x) + " x " +
             model::format_number(setup.costmap.size_y) + " m at " +
-            model::format_number(setup.costmap.resolution) + " m: " +
-            model::format_number(cells, 4) + " cells, about " +
+            model::format_number(setup.costmap.resolution) +
+            " m: " + model::format_number(cells, 4) + " cells, about " +
             model::format_number(cells * 1e3 / 1e9, 3) + " GB for the simulation",
         "at most 1e6 cells (about 1 GB): a smaller window or coarser cells (nav2's local "
         "costmaps are 3-10 m)"});

@@ -12,6 +12,7 @@ struct SimulatedMount {
   model::SensorMode mode;             ///< the mount's mode with the decimated angular steps
   std::vector<model::Vec3> rays;      ///< ray_pattern(mode), sensor frame
   costmap::ObservationSource source;  ///< what its clouds mark and clear (mount_sources_of)
+  MountTiming timing;                 ///< when its frames are captured and arrive
 };
 
 struct Setup {

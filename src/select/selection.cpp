@@ -59,16 +59,15 @@ std::optional<std::string> sector_needing_one_slot(
           if (k == failed) continue;
           for (const CatalogOption* option : kept[k]) others |= (*option->sections)[angle];
         }
-        if (meets(others.complete_share(), min_complete) &&
-            meets(others.floor_share(), min_floor))
+        if (meets(others.complete_share(), min_complete) && meets(others.floor_share(), min_floor))
           continue;
         const std::string slot = catalog.slots[kept[failed].front()->slot].id;
         return "under --robust n-1 the sector '" + targets.sectors[i].name + "' needs slot '" +
                slot + "': without it every other option together covers " +
                model::format_number(100 * others.complete_share(), 3) + " % (floor " +
                model::format_number(100 * others.floor_share(), 3) + " %) at " +
-               model::format_number(model::rad_to_deg(space.angle(angle)), 4) +
-               " deg, below " + model::format_number(100 * min_complete, 3) + " % (" +
+               model::format_number(model::rad_to_deg(space.angle(angle)), 4) + " deg, below " +
+               model::format_number(100 * min_complete, 3) + " % (" +
                model::format_number(100 * min_floor, 3) +
                " %): no rig survives the failure of its sensor (a second slot that sees the "
                "sector, or robustness.sectors with a lower threshold after a failure)";
@@ -185,7 +184,7 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
           // U_f: filtering time per point times points per second (paper 1, eq. 5).
           option.filtering =
               candidate.filtering_seconds_per_point.value_or(catalog.filtering_seconds_per_point) *
-              option.metrics.points_per_second;
+              option.metrics.filtered_points_per_second;
           const geometry::MountedFov fov(*option.mode, mount.T_robot_sensor, body);
           std::vector<geometry::SectionRaster> sections;
           for (int a = 0; a < angles; ++a)
@@ -223,8 +222,8 @@ SearchProblem SelectionSpace::problem_for(
       const bool survives = !targets.robustness || !targets.robustness->condition ||
                             option.metrics.light.immune_to(*targets.robustness->condition);
       problem.slots.back().push_back({option.metrics.price, option.metrics.bandwidth,
-                                      option.metrics.driver_cpu + option.filtering,
-                                      option.sections, survives});
+                                      option.metrics.driver_cpu + option.filtering, option.sections,
+                                      survives});
       kept[k].push_back(&option);
     }
   }
@@ -315,18 +314,17 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
   PhaseClock clock(selection.phases, &progress);
   const auto search_progress = [&](const std::string& phase) {
     return [&progress, phase](const SearchProgress& at) {
-      if (progress)
-        progress({phase, at.fraction, 1.0, "", std::to_string(at.nodes) + " nodes"});
+      if (progress) progress({phase, at.fraction, 1.0, "", std::to_string(at.nodes) + " nodes"});
     };
   };
   std::vector<std::vector<int>> excluded;
   metrics::CoverageSettings exact = space.settings();
   exact.exact = true;
   while (true) {
-    const std::string phase =
-        excluded.empty() ? std::string("search")
-                         : "search " + std::to_string(excluded.size() + 1) +
-                               " (raster winners the exact path rejected excluded)";
+    const std::string phase = excluded.empty()
+                                  ? std::string("search")
+                                  : "search " + std::to_string(excluded.size() + 1) +
+                                        " (raster winners the exact path rejected excluded)";
     clock.start(phase);
     selection.search = branch_and_bound(problem, excluded, search_progress(phase));
     clock.stop(std::to_string(selection.search.nodes) + " nodes, " +
@@ -345,11 +343,12 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
     bool verified =
         std::all_of(selection.coverage.sectors.begin(), selection.coverage.sectors.end(),
                     [](const metrics::SectorCoverage& sector) { return sector.pass; });
-    clock.stop(std::string("the rig's coverage on the exact path") + (verified ? "" : ": rejected"));
+    clock.stop(std::string("the rig's coverage on the exact path") +
+               (verified ? "" : ": rejected"));
     if (verified && targets.robustness && targets.robustness->any()) {
       clock.start("exact verification of failures");
-      selection.failures = failure_impacts(
-          selection.rig, space, targets, exact, [&](double done, double total) {
+      selection.failures =
+          failure_impacts(selection.rig, space, targets, exact, [&](double done, double total) {
             if (progress)
               progress({"exact verification of failures", done, total, "sector angles", ""});
           });
@@ -376,7 +375,8 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
       if (selection.refinement.accepted) {
         selection.rig = selection.refinement.rig;
         selection.coverage = selection.refinement.coverage;
-        if (!selection.refinement.failures.empty()) selection.failures = selection.refinement.failures;
+        if (!selection.refinement.failures.empty())
+          selection.failures = selection.refinement.failures;
       }
       break;
     }
@@ -403,7 +403,8 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
       selection.infeasible_reason = infeasibility_cause(problem, space.options(), targets, space);
       clock.stop("searches relaxing one constraint at a time");
     } else {
-      selection.infeasible_reason = "no combination of the catalog's options meets every requirement";
+      selection.infeasible_reason =
+          "no combination of the catalog's options meets every requirement";
     }
   }
   return finish();

@@ -64,11 +64,17 @@ class Costmap {
   /// the robot (the overlap kept, entering cells reset), clear then mark with every
   /// observation and every persisted one of an earlier update (nav2's ObservationBuffer: an
   /// observation stays while `time` minus its time is at most its source's
-  /// observation_persistence), project the voxels, apply the Hit Layer (its motion condition from the
-  /// robot's positions and `velocity_command`), copy into the master grid, mark the Hit
-  /// Layer's cells lethal there, and inflate.
+  /// observation_persistence), project the voxels, apply the Hit Layer (its motion condition from
+  /// the robot's positions and `velocity_command`), copy into the master grid, mark the Hit Layer's
+  /// cells lethal there, and inflate.
   void update(double time, const model::Pose3& T_world_robot,
               std::span<const CloudObservation> observations, bool velocity_command = false);
+
+  /// Forgets every obstacle farther than `radius` [m] from `centre_world`: the obstacle
+  /// layer's and the voxel layer's cells go back to their starting state, the Hit Layer's counts
+  /// to 0 (nav2's clear_costmap_except_region; paper 2's deadlock recovery clears beyond 0.5 m).
+  /// Clouds kept for their persistence mark again at the next update, as nav2's buffers do.
+  void clear_outside(const model::Vec2& centre_world, double radius);
 
   const CostmapParams& params() const { return params_; }
   const GridWindow& window() const { return master_.window(); }

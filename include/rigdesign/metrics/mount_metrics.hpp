@@ -12,13 +12,14 @@ struct MountMetrics {
   std::string sensor_id;
   std::string mode_id;
   double distance = 0.0;       ///< d_i [m] at which spacing and noise are judged
-  double frequency = 0.0;      ///< F_i [Hz]
+  double frequency = 0.0;      ///< F_i [Hz]: the mode's, or the mount's throttle_hz when lower
   double point_spacing = 0.0;  ///< R_i [m] = d_i * tan(coarser angular resolution)
   double noise = 0.0;          ///< N_i [m] = sigma(d_i)
   model::LightImmunity light;
-  double points_per_second = 0.0;
-  double bandwidth = 0.0;   ///< B_i [B/s] = w_i * f_i (paper 1, eq. 2)
-  double driver_cpu = 0.0;  ///< U_p,i [core-equivalents] (paper 1, eq. 5)
+  double points_per_second = 0.0;           ///< what the driver delivers (the mode's rate)
+  double filtered_points_per_second = 0.0;  ///< what passes the throttle to the filters
+  double bandwidth = 0.0;                   ///< B_i [B/s] = w_i * f_i (paper 1, eq. 2)
+  double driver_cpu = 0.0;                  ///< U_p,i [core-equivalents] (paper 1, eq. 5)
   model::Basis driver_cpu_basis = model::Basis::estimate;
   double price = 0.0;  ///< [USD]
   model::Basis price_basis = model::Basis::datasheet;

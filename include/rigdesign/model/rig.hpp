@@ -58,7 +58,12 @@ struct Mount {
   /// Maps sensor-frame points into the robot frame (sensor frame: x along the optical axis).
   Pose3 T_robot_sensor = Pose3::Identity();
   std::optional<double> distance_of_interest;  ///< [m] overrides the rig's for this mount
-  SourceLocation where;                        ///< the mount's entry
+  /// [Hz] The stack passes on at most this many of the sensor's frames a second (paper 2
+  /// throttled its lidar to 5 Hz and its Kinect to 2 Hz to save CPU): the rate F the rig is
+  /// judged on and the scenarios sense at. Nothing: every frame of the mode.
+  std::optional<double> throttle_hz;
+  SourceLocation throttle_where;
+  SourceLocation where;         ///< the mount's entry
   SourceLocation sensor_where;  ///< its `sensor` value, for findings about the reference
   SourceLocation mode_where;    ///< its `mode` value
   SourceLocation pose_where;    ///< its `pose`

@@ -13,13 +13,19 @@
 
 #include "rigdesign/costmap/costmap.hpp"
 #include "rigdesign/costmap/dijkstra_planner.hpp"
+#include "rigdesign/costmap/dwa_planner.hpp"
 #include "rigdesign/costmap/path_follower.hpp"
+#include "rigdesign/model/filtering_loads.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/scene.hpp"
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/scenarios/scenario_library.hpp"
+#include "rigdesign/scenarios/sensor_timing.hpp"
 
 namespace rigdesign::scenarios {
+
+/// What turns the global plan into velocity commands.
+enum class LocalPlanner { pure_pursuit, dwa };
 
 struct ScenarioParams {
   /// robot_radius and the inscribed radius are set from the rig's body; the inflation radius
@@ -35,6 +41,17 @@ struct ScenarioParams {
   std::vector<costmap::NamedObservationSource> mount_sources;
   costmap::PlannerParams planner;
   costmap::FollowerParams follower;
+  /// Pure pursuit (the default) or paper 2's DWA, whose speed limits are the follower's.
+  LocalPlanner local_planner = LocalPlanner::pure_pursuit;
+  costmap::DwaParams dwa;
+  /// Paper 2's deadlock handling: stuck (no plan, or no admissible DWA velocity) for
+  /// `deadlock_patience` [s], stop, clear the costmap beyond `deadlock_clear_radius` [m] and
+  /// turn 360 deg on the spot; stuck again before the next route stop, clear it entirely and
+  /// turn again; a third time, give up (the goal is unreachable). The patience is ours (paper
+  /// 2 gives none): 2 s, ten costmap updates.
+  bool deadlock_recovery = true;
+  double deadlock_patience = 2.0;
+  double deadlock_clear_radius = 0.5;
   double update_rate = 5.0;      ///< [Hz] sensing, costmap update and planning
   double control_rate = 20.0;    ///< [Hz] follower commands and collision checks
   double goal_lookahead = 2.0;   ///< [m] local goal distance along the route (capped by the window)
@@ -48,7 +65,18 @@ struct ScenarioParams {
   int camera_decimation = 8;
   int lidar_decimation = 4;
   bool add_noise = true;   ///< range noise per sensor model
-  std::uint64_t seed = 1;  ///< sensor noise streams
+  std::uint64_t seed = 1;  ///< sensor noise streams and frame phases
+  /// Sensors as they run (sensor_timing.hpp): each mount captures at its own rate and its
+  /// frame reaches the costmap a latency later; the filters' share of that latency is this
+  /// many core-seconds per point, or the sensor's measured figure in `filtering_loads`.
+  double filtering_seconds_per_point = kPaperFilteringSecondsPerPoint;
+  const model::FilteringLoads* filtering_loads = nullptr;
+  /// [s] each mount's first capture, in mount order; empty: drawn from the seed.
+  std::vector<double> frame_phases;
+  /// False: frames reach the costmap the moment they are captured (no driver or filter time),
+  /// the idealised loop in which, with phases 0 and rates that are multiples of the update
+  /// rate, every update sees the world as it is at that update.
+  bool model_latency = true;
 };
 
 /// A sampled pose of the run.
@@ -67,7 +95,9 @@ struct ScenarioStep {
   const costmap::Costmap* costmap = nullptr;
   const costmap::PlannedPath* path = nullptr;  ///< the plan of this update (empty while waiting)
   model::Vec2 goal = model::Vec2::Zero();      ///< the local goal planned to [m]
-  std::span<const model::PointCloud> clouds;   ///< this update's clouds, world frame, one per mount
+  /// The newest frame the costmap holds of each mount, world frame, one per mount (empty before
+  /// its first frame arrives).
+  std::span<const model::PointCloud> clouds;
 };
 
 struct ScenarioResult {
@@ -82,10 +112,17 @@ struct ScenarioResult {
   bool reached_goal = false;
   double end_time = 0.0;  ///< [s] goal, collision or max_duration
   int updates = 0;
-  int planner_failures = 0;  ///< updates whose plan found no path (the robot held still)
+  int planner_failures = 0;       ///< updates whose plan found no path (the robot held still)
+  int dwa_blocked_steps = 0;      ///< control steps at which DWA found no admissible velocity
+  int recoveries = 0;             ///< deadlock recoveries started
+  double recovery_seconds = 0.0;  ///< [s] spent turning in them
+  bool gave_up = false;           ///< recoveries exhausted: the goal is unreachable
+  std::string gave_up_reason;
   std::vector<TrajectorySample> trajectory;  ///< one sample per costmap update and the last pose
   std::vector<double> update_seconds;        ///< wall time of each Costmap::update [s]
   std::vector<double> planner_seconds;       ///< wall time of each plan [s]
+  std::vector<MountTiming> timings;          ///< per simulated mount, in mount order
+  int frames_cast = 0;                       ///< frames simulated over the run
 };
 
 /// Throws InputError at the rig's `mounts` (file:line:column) when no mount can mark: none

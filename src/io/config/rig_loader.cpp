@@ -38,14 +38,20 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
     mount.distance_of_interest =
         io::positive_length(reader, "distance_of_interest", Need::required, "metres, > 0");
   }
+  if (reader.has("throttle_hz")) {
+    mount.throttle_where = reader.location("throttle_hz");
+    mount.throttle_hz = io::positive(reader, "throttle_hz", Need::required,
+                                     "frames per second the stack passes on [Hz], > 0");
+  }
   if (auto ros = reader.map("ros", Need::optional, "a map with namespace, topic, frame")) {
     if (ros->has("namespace"))
       mount.ros_namespace = io::ros_name(*ros, "namespace", "the driver's namespace");
     mount.ros_topic =
         io::topic_name(*ros, "topic", Need::optional, "the data's topic, e.g. /front/points");
-    ros->require(mount.ros_topic.empty() || mount.ros_topic.front() == '/', "topic",
-                 "is relative", "an absolute topic, starting with '/'");
-    mount.ros_frame = io::frame_id(*ros, "frame", Need::optional, "the frame the data is stamped with");
+    ros->require(mount.ros_topic.empty() || mount.ros_topic.front() == '/', "topic", "is relative",
+                 "an absolute topic, starting with '/'");
+    mount.ros_frame =
+        io::frame_id(*ros, "frame", Need::optional, "the frame the data is stamped with");
     ros->reject_unknown_keys();
   }
   reader.text("note", Need::optional);
@@ -91,10 +97,11 @@ model::Rig load_rig(const std::string& path) {
   }
   if (top.has("area_height")) {
     rig.body.area_height = io::positive_length(top, "area_height", Need::required,
-                                        "the top of the area to perceive in metres, > 0");
+                                               "the top of the area to perceive in metres, > 0");
   }
-  rig.distance_of_interest = io::positive_length(top, "distance_of_interest", Need::required,
-                                          "the distance of interest d in metres, > body radius");
+  rig.distance_of_interest =
+      io::positive_length(top, "distance_of_interest", Need::required,
+                          "the distance of interest d in metres, > body radius");
   if (rig.distance_of_interest > 0 && rig.body.radius > 0) {
     top.require(rig.distance_of_interest > rig.body.radius, "distance_of_interest",
                 "is not beyond the body radius", "d > r");

@@ -41,7 +41,8 @@ model::Diagnostics check_rig_references(const model::Rig& rig,
       diagnostics.error(
           mount.sensor_where, mount_field(i, "sensor"),
           "unknown sensor '" + mount.sensor_id + "' in " + library.file +
-              suggestion(mount.sensor_id, library.sensors, [](const model::Sensor& s) { return s.id; }),
+              suggestion(mount.sensor_id, library.sensors,
+                         [](const model::Sensor& s) { return s.id; }),
           "one of: " + list_ids(library.sensors, [](const model::Sensor& s) { return s.id; }));
       continue;
     }
@@ -50,9 +51,17 @@ model::Diagnostics check_rig_references(const model::Rig& rig,
       diagnostics.error(
           mount.mode_where, mount_field(i, "mode"),
           "unknown mode '" + mount.mode_id + "' of sensor '" + sensor->id + "'" +
-              suggestion(mount.mode_id, sensor->modes, [](const model::SensorMode& m) { return m.id; }),
+              suggestion(mount.mode_id, sensor->modes,
+                         [](const model::SensorMode& m) { return m.id; }),
           "one of: " + list_ids(sensor->modes, [](const model::SensorMode& m) { return m.id; }));
       continue;
+    }
+    if (mount.throttle_hz && *mount.throttle_hz >= mode->frequency) {
+      diagnostics.warning(mount.throttle_where, mount_field(i, "throttle_hz"),
+                          "throttles to " + model::format_number(*mount.throttle_hz) +
+                              " Hz, not below the mode's " + model::format_number(mode->frequency) +
+                              " Hz: it passes every frame",
+                          "a rate below the mode's frequency, or no throttle_hz");
     }
     const double distance = rig.distance_for(mount);
     if (distance > mode->max_range || distance < mode->min_range) {
