@@ -114,8 +114,24 @@ std::string outcome_text(const scenarios::ScenarioResult& result) {
            fixed(result.collision_position.x(), 2) + ", y " +
            fixed(result.collision_position.y(), 2) + " m)";
   }
+  if (result.gave_up) return "none; gave up at t = " + fixed(result.end_time, 2) + " s";
   return result.reached_goal ? "none; goal reached at t = " + fixed(result.end_time, 2) + " s"
                              : "none; goal not reached by t = " + fixed(result.end_time, 2) + " s";
+}
+
+// Each simulated mount's rate and latency, as the run used them.
+nlohmann::json sensors_json(const model::Rig& rig, const scenarios::ScenarioResult& result) {
+  nlohmann::json sensors = nlohmann::json::array();
+  for (std::size_t i = 0; i < result.timings.size() && i < rig.mounts.size(); ++i) {
+    const scenarios::MountTiming& t = result.timings[i];
+    sensors.push_back({{"mount", rig.mounts[i].id},
+                       {"rate_hz", 1.0 / t.period},
+                       {"phase_s", t.phase},
+                       {"driver_s", t.driver},
+                       {"filtering_s", t.filtering},
+                       {"latency_s", t.latency()}});
+  }
+  return sensors;
 }
 
 nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig,
@@ -156,6 +172,15 @@ nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig
       {"update_ms", {{"median", milliseconds(update.median)}, {"p99", milliseconds(update.p99)}}},
       {"planner_ms", {{"median", milliseconds(plan.median)}, {"p99", milliseconds(plan.p99)}}},
       {"frames", run.frames},
+      {"local_planner",
+       params.local_planner == scenarios::LocalPlanner::dwa ? "dwa" : "pure_pursuit"},
+      {"dwa_blocked_steps", result.dwa_blocked_steps},
+      {"recoveries", result.recoveries},
+      {"recovery_s", result.recovery_seconds},
+      {"gave_up", result.gave_up},
+      {"gave_up_reason", result.gave_up_reason},
+      {"frames_cast", result.frames_cast},
+      {"sensors", sensors_json(rig, result)},
       {"trajectory", trajectory},
   };
   return json;
@@ -248,6 +273,12 @@ void print_run(std::ostream& out, const VariantRun& run) {
       << fixed(milliseconds(update.p99), 2) << " ms over " << result.updates
       << " updates; planner median " << fixed(milliseconds(plan.median), 2) << " ms, p99 "
       << fixed(milliseconds(plan.p99), 2) << " ms\n";
+  if (result.recoveries > 0 || result.dwa_blocked_steps > 0) {
+    out << "  deadlock: " << result.recoveries << " recovery(ies), "
+        << fixed(result.recovery_seconds, 2) << " s turning; DWA found no admissible velocity at "
+        << result.dwa_blocked_steps << " control step(s)"
+        << (result.gave_up ? "; " + result.gave_up_reason : "") << "\n";
+  }
   out << "  wrote " << run.folder
       << "/summary.json, final.png, master.yaml (+ .pgm), obstacles.yaml (+ .pgm), " << run.frames
       << " frame(s) in frames/\n";

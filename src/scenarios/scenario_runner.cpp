@@ -126,39 +126,52 @@ class PoseHistory {
   std::vector<Step> steps_;
 };
 
-// Paper 2's deadlock handling: stuck (no plan, or no admissible velocity) for the patience,
-// stop, clear the obstacles beyond 0.5 m and turn 360 degrees; stuck again on the same leg,
-// clear everything and turn again; a third time, give up.
+// Paper 2's deadlock handling: stuck (no plan or no admissible velocity for the patience, or
+// no progress for three patiences), stop, clear the obstacles beyond 0.5 m and turn 360
+// degrees; stuck again on the same leg, clear everything and turn again; a third time, give up.
 struct Recovery {
-  double stuck_since = -1.0;    // [s] when the robot last stopped making progress; < 0: moving
+  double stuck_since = -1.0;    // [s] since when no plan or velocity was found; < 0: found
   int level = 0;                // recoveries on the current leg
   std::size_t leg = 0;          // the route stop they were for
   double turning_until = -1.0;  // [s] end of the current recovery turn
+  model::Vec2 anchor = model::Vec2::Zero();  // where the robot last made progress
+  double anchor_time = 0.0;                  // [s] and when
 };
 
+// [m] moving this far counts as progress; without it for this many patiences the robot is
+// stuck too (it stands at a substitute local goal short of a walled-off stop, say).
+constexpr double kProgress = 0.1;
+constexpr double kProgressPatiences = 3.0;
+
 // Returns true when the run must stop: recoveries exhausted.
-bool recover_if_stuck(Recovery& recovery, bool blocked, double t, std::size_t stop,
+bool recover_if_stuck(Recovery& recovery, bool blocked, bool waiting, double t, std::size_t stop,
                       const costmap::Pose2& pose, costmap::Costmap& costmap,
                       const ScenarioParams& params, ScenarioResult& result) {
   if (stop != recovery.leg) {  // a stop reached: a new leg starts without recoveries
     recovery.leg = stop;
     recovery.level = 0;
   }
-  if (!blocked) {
-    recovery.stuck_since = -1.0;
-    return false;
+  if (waiting || t < recovery.turning_until ||
+      (pose.position - recovery.anchor).norm() > kProgress) {
+    recovery.anchor = pose.position;
+    recovery.anchor_time = t;
   }
-  if (recovery.stuck_since < 0.0) recovery.stuck_since = t;
-  if (t - recovery.stuck_since < params.deadlock_patience) return false;
+  if (!blocked) recovery.stuck_since = -1.0;
+  if (blocked && recovery.stuck_since < 0.0) recovery.stuck_since = t;
+  const bool no_plan = blocked && t - recovery.stuck_since >= params.deadlock_patience;
+  const bool no_progress =
+      t - recovery.anchor_time >= kProgressPatiences * params.deadlock_patience;
+  if (!no_plan && !no_progress) return false;
   recovery.stuck_since = -1.0;
+  recovery.anchor = pose.position;
+  recovery.anchor_time = t;
   if (recovery.level >= 2) {
     result.gave_up = true;
-    result.gave_up_reason =
-        "no way to route stop " + std::to_string(stop + 1) +
-        " after two recoveries (cleared "
-        "the costmap beyond " +
-        model::format_number(params.deadlock_clear_radius) +
-        " m, then entirely, turning 360 deg each time): the goal is unreachable";
+    result.gave_up_reason = "no way to route stop " + std::to_string(stop + 1) +
+                            " after two recoveries (cleared the costmap beyond " +
+                            model::format_number(params.deadlock_clear_radius) +
+                            " m, then entirely, turning 360 deg each time): the goal is "
+                            "unreachable";
     return true;
   }
   ++recovery.level;
@@ -216,6 +229,7 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
   costmap::PlannedPath path;
   model::Vec2 goal = scenario.start.position;  // the local goal of the latest plan
   Recovery recovery;
+  recovery.anchor = scenario.start.position;
   costmap::DwaParams dwa = params.dwa;
   dwa.max_speed = params.follower.speed;
   dwa.max_angular_speed = params.follower.max_angular_speed;
@@ -352,7 +366,7 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
       command = costmap::pursue(path.waypoints_world, pose, params.follower);
     }
     if (params.deadlock_recovery &&
-        recover_if_stuck(recovery, blocked, t, stop, pose, costmap, params, result)) {
+        recover_if_stuck(recovery, blocked, waiting, t, stop, pose, costmap, params, result)) {
       break;  // gave up: the goal is unreachable
     }
     history.record(t, pose, command);
