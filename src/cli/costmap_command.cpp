@@ -19,6 +19,7 @@
 #include "progress_line.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
+#include "rigdesign/geometry/footprint_hull.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/io/maps/map_files.hpp"
@@ -199,6 +200,9 @@ VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const R
   costmap::CostGrid last_master;
   costmap::CostGrid last_obstacles;
   render::CostmapFrame frame;
+  // The body's real outline in the frames (a prism's footprint or a description's parts).
+  if (!inputs.rig.body.footprint.empty() || inputs.rig.body.has_parts())
+    frame.footprint = geometry::footprint_hull(inputs.rig.body);
   std::vector<model::Vec2> trail;
   const auto outlines_at = [&](double t) {
     std::vector<costmap::NamedMesh> meshes;
@@ -411,7 +415,7 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
   scenarios::check_scenario_inputs(inputs.rig, inputs.library, params);
 
   const scenarios::ScenarioDefinition scenario =
-      scenarios::make_costmap_scenario(options.scenario, options.seed);
+      scenarios::make_costmap_scenario(options.scenario, options.seed, inputs.rig.body.radius);
   const std::string folder = options.out.empty() ? "costmap/" + options.scenario : options.out;
   io::prepare_output_folder(folder, "--out");
   out << inputs.rig.name << " in scenario " << scenario.name << " (seed " << options.seed

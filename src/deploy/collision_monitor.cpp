@@ -44,11 +44,12 @@ std::vector<model::Vec2> swept_zone(const BodyOutline& body, double reach) {
 }
 
 CollisionSource collision_source(std::size_t index, const SourceConfig& config,
-                                 const model::SensorMode& mode,
+                                 const model::Mount& mount, const model::SensorMode& mode,
                                  const CollisionMonitorOptions& options) {
   CollisionSource source;
   source.source = index;
-  const double frame = 1.0 / mode.frequency;
+  // The frames the stack passes on: the mode's, or the mount's throttle_hz when lower.
+  const double frame = 1.0 / std::min(mode.frequency, mount.throttle_hz.value_or(mode.frequency));
   const double processing = options.processing_latency.value_or(frame);
   const double command = 1.0 / kControllerFrequency;
   source.latency = frame + processing + command;
@@ -131,7 +132,7 @@ std::optional<CollisionMonitor> collision_monitor(const model::Rig& rig,
     fovs.emplace_back(mode, mount.T_robot_sensor, occluder);
     modes.push_back(&mode);
     origins.push_back(mount.T_robot_sensor.translation());
-    monitor.sources.push_back(collision_source(m, config.sources[m], mode, options));
+    monitor.sources.push_back(collision_source(m, config.sources[m], mount, mode, options));
     monitor.latency = std::max(monitor.latency, monitor.sources.back().latency);
   }
   std::vector<ZoneViewer> viewers;

@@ -112,12 +112,33 @@ void draw_outlines_and_robot(cairo_t* cairo, const CostmapFrame& frame, const Ma
   polyline(frame.path, kPath, 2.5);
   const model::Vec2 robot = view.px(frame.robot);
   set_colour(cairo, frame.collided ? kCollision : kBodyColour, 0.55);
-  cairo_arc(cairo, robot.x(), robot.y(), frame.robot_radius * view.pixels_per_metre, 0,
-            2 * std::numbers::pi);
+  if (frame.footprint.empty()) {
+    cairo_arc(cairo, robot.x(), robot.y(), frame.robot_radius * view.pixels_per_metre, 0,
+              2 * std::numbers::pi);
+  } else {
+    // The outline turned by the robot's yaw and moved to its position.
+    const Eigen::Rotation2Dd turn(frame.yaw);
+    for (std::size_t i = 0; i < frame.footprint.size(); ++i) {
+      const model::Vec2 corner = view.px(frame.robot + turn * frame.footprint[i]);
+      if (i == 0) {
+        cairo_move_to(cairo, corner.x(), corner.y());
+      } else {
+        cairo_line_to(cairo, corner.x(), corner.y());
+      }
+    }
+    cairo_close_path(cairo);
+  }
   cairo_fill_preserve(cairo);
   set_colour(cairo, kInkColour);
   cairo_set_line_width(cairo, 1.5);
   cairo_stroke(cairo);
+  if (!frame.footprint.empty()) {
+    // The circumscribed cylinder the collision check uses, thin.
+    cairo_set_line_width(cairo, 0.75);
+    cairo_arc(cairo, robot.x(), robot.y(), frame.robot_radius * view.pixels_per_metre, 0,
+              2 * std::numbers::pi);
+    cairo_stroke(cairo);
+  }
   const model::Vec2 nose = view.px(
       frame.robot + frame.robot_radius * model::Vec2(std::cos(frame.yaw), std::sin(frame.yaw)));
   cairo_move_to(cairo, robot.x(), robot.y());

@@ -1,6 +1,8 @@
 // The named robot-in-the-loop scenarios (issue 6 items 2 and 4).
 #include "rigdesign/scenarios/scenario_library.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "rigdesign/sim/mesh_primitives.hpp"
@@ -33,25 +35,47 @@ costmap::Pose2 start_of(const model::Scene& scene) {
   return start;
 }
 
-ScenarioDefinition wall_following(std::uint64_t seed) {
+// [m] between the robot's side and the followed wall: paper 1's UR Cleaner (r = 0.45 m)
+// drives 0.6 m from the wall's face, and every robot keeps the same gap, so the foam reaches
+// equally far into its swept band.
+constexpr double kSideToWall = 0.15;
+
+// The face of the scene's followed wall (its lowest y): the lane is placed from it.
+double wall_face_y(const model::Scene& scene) {
+  for (const model::SceneObject& object : scene.objects) {
+    if (object.name != "wall") continue;
+    double face = std::numeric_limits<double>::infinity();
+    for (const model::Vec3& v : object.mesh.vertices) face = std::min(face, v.y());
+    return face;
+  }
+  throw std::logic_error("the wall-following scene has no wall");
+}
+
+ScenarioDefinition wall_following(std::uint64_t seed, double body_radius) {
   ScenarioDefinition scenario;
   scenario.name = "wall_following";
   scenario.description =
       "drive 6 m along the wall past a table whose foam top (0.37-0.45 m) overhangs the lane";
   scenario.scene = sim::make_scene("wall_following", seed);
   scenario.start = start_of(scenario.scene);
+  scenario.start.position.y() = wall_face_y(scenario.scene) - body_radius - kSideToWall;
   scenario.route = {{model::Vec2(kWallFollowingGoalX, scenario.start.position.y()), 0.0}};
   scenario.max_duration = kWallFollowingMaxDuration;
   return scenario;
 }
 
-ScenarioDefinition stationary(std::uint64_t seed) {
-  ScenarioDefinition scenario = wall_following(seed);
+ScenarioDefinition stationary(std::uint64_t seed, double body_radius) {
+  ScenarioDefinition scenario = wall_following(seed, body_radius);
   scenario.name = "stationary";
   scenario.description = "wait 12 s while a cart 1.3 m ahead is taken away at 2.9 s, then drive";
   model::MovingObject cart;
   cart.name = "cart";
-  cart.mesh = sim::aligned_box(kCartLow, kCartHigh);
+  // Beside the lane, as for the UR Cleaner (lane y = 0), short of the wall for any robot.
+  const double lane = scenario.start.position.y();
+  const double wall = wall_face_y(scenario.scene);
+  cart.mesh =
+      sim::aligned_box({kCartLow.x(), lane + kCartLow.y(), kCartLow.z()},
+                       {kCartHigh.x(), std::min(lane + kCartHigh.y(), wall - 0.05), kCartHigh.z()});
   // Taken away: moved far below the floor, where no ray and no body reaches.
   cart.T_world_object = [](double t) {
     return t < kCartGoneAt ? model::Pose3::Identity()
@@ -70,9 +94,10 @@ const std::vector<std::string>& costmap_scenario_names() {
   return names;
 }
 
-ScenarioDefinition make_costmap_scenario(const std::string& name, std::uint64_t seed) {
-  if (name == "wall_following") return wall_following(seed);
-  if (name == "stationary") return stationary(seed);
+ScenarioDefinition make_costmap_scenario(const std::string& name, std::uint64_t seed,
+                                         double body_radius) {
+  if (name == "wall_following") return wall_following(seed, body_radius);
+  if (name == "stationary") return stationary(seed, body_radius);
   throw std::invalid_argument("unknown costmap scenario '" + name + "'");
 }
 

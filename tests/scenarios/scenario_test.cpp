@@ -42,8 +42,9 @@ scenarios::ScenarioResult run(
   params.costmap.layer = layer;
   params.costmap.use_hit_layer = hit_layer;
   params.costmap.hit.d_threshold = d_threshold;
-  return scenarios::run_scenario(scenarios::make_costmap_scenario(name, 1), ur_cleaner().rig,
-                                 ur_cleaner().library, params, on_update);
+  return scenarios::run_scenario(
+      scenarios::make_costmap_scenario(name, 1, ur_cleaner().rig.body.radius), ur_cleaner().rig,
+      ur_cleaner().library, params, on_update);
 }
 
 // Largest Hit Layer count over the cells whose centres lie in the stationary scenario's
@@ -233,8 +234,30 @@ TEST_CASE("scenario inputs: a rig whose sensors cannot mark is refused", "[scena
     CHECK(error.diagnostics().front().field == "mounts");
     CHECK(error.diagnostics().front().where.file == rig.where.file);
   }
-  CHECK_THROWS_AS(scenarios::make_costmap_scenario("moon", 1), std::invalid_argument);
+  CHECK_THROWS_AS(scenarios::make_costmap_scenario("moon", 1, 0.45), std::invalid_argument);
   const scenarios::TimeSummary times = scenarios::summarize_times({0.004, 0.001, 0.003, 0.002});
   CHECK(times.median == Approx(0.0025));
   CHECK(times.p99 == Approx(0.004));
+}
+
+TEST_CASE("any robot: the wall-following lane keeps the robot's side 0.15 m from the wall",
+          "[scenario]") {
+  // The wall's face stands at y = 0.6 m (sim/wall_following_scene.cpp). A robot of radius r
+  // starts at y = 0.6 - r - 0.15, so at the start its body is 0.15 m from the wall whatever r
+  // is: the UR Cleaner (0.45 m) at y = 0 as in paper 1, a Husky-sized 0.57 m at y = -0.12
+  // (before, every robot started at y = 0: 0.03 m from the wall).
+  for (const double radius : {0.2, 0.45, 0.57}) {
+    INFO("radius " << radius);
+    const scenarios::ScenarioDefinition scenario =
+        scenarios::make_costmap_scenario("wall_following", 1, radius);
+    CHECK(scenario.start.position.y() == Approx(0.6 - radius - 0.15).margin(1e-12));
+    CHECK(scenario.route.back().position.y() == scenario.start.position.y());
+    std::vector<costmap::NamedMesh> meshes;
+    for (const model::SceneObject& object : scenario.scene.objects)
+      meshes.push_back({object.name, &object.mesh});
+    const costmap::FootprintCollisionChecker checker(meshes, costmap::HeightBand{0.02, 1.0});
+    const costmap::Clearance at_start = checker.clearance(scenario.start.position, radius);
+    CHECK(at_start.distance == Approx(0.15).margin(1e-9));
+    CHECK(at_start.object == "wall");
+  }
 }

@@ -43,7 +43,10 @@ struct CostmapFrame {
   std::vector<model::Vec2> trail;  ///< driven so far [m]
   model::Vec2 robot = model::Vec2::Zero();
   double yaw = 0.0;
-  double robot_radius = 0.0;
+  double robot_radius = 0.0;  ///< the collision check's circumscribed cylinder, outlined
+  /// The body's real outline in the robot frame (counter-clockwise), filled at the robot's pose;
+  /// empty: a round body, filled as its radius.
+  std::vector<model::Vec2> footprint;
   bool collided = false;  ///< draws the body in red
 };
 

@@ -30,9 +30,13 @@ struct ScenarioDefinition {
 /// "wall_following" (paper 1 Fig. 12) and "stationary" (the motion condition).
 const std::vector<std::string>& costmap_scenario_names();
 
-/// Builds a named scenario with its scene (seeded like make_scene). Throws
-/// std::invalid_argument for an unknown name (the CLI checks names first).
-ScenarioDefinition make_costmap_scenario(const std::string& name, std::uint64_t seed);
+/// Builds a named scenario with its scene (seeded like make_scene), laid out for a robot of
+/// `body_radius` [m]: its lane keeps the robot's side 0.15 m from the followed wall (paper 1's
+/// UR Cleaner, r = 0.45 m, drives 0.6 m from it), so the foam and the cart reach as far into
+/// any robot's path. Throws std::invalid_argument for an unknown name (the CLI checks names
+/// first).
+ScenarioDefinition make_costmap_scenario(const std::string& name, std::uint64_t seed,
+                                         double body_radius);
 
 /// The costmap a scenario starts from: nav2's local costmap (5 cm cells) on a 6 x 6 m window,
 /// the 2D obstacle layer (paper 1's setup), the Hit Layer on with paper 1's values.
