@@ -12,20 +12,6 @@ namespace {
 // side, or round a round robot's polygon approximation.
 constexpr double kOnBodyTolerance = kBoundaryStep;
 
-// Even-odd rule: whether `p` lies inside the simple polygon `polygon`.
-bool inside_polygon(const std::vector<model::Vec2>& polygon, const model::Vec2& p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const model::Vec2& a = polygon[i];
-    const model::Vec2& b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
-      inside = !inside;
-    }
-  }
-  return inside;
-}
-
 // Whether `viewer` sees some point of the obstacle column standing at `p`.
 bool sees_column(const ZoneViewer& viewer, const model::Vec2& p, double area_top) {
   const double low = std::max(0.0, viewer.min_z);
@@ -131,7 +117,7 @@ ZoneVisibility zone_visibility(const std::vector<model::Vec2>& given, const Body
          x += kInteriorStep) {
       for (double y = low.y() + kInteriorStep / 2; y < high.y(); y += kInteriorStep) {
         const model::Vec2 p(x, y);
-        if (!inside_polygon(zone, p) || body.holds(p, 0.0)) continue;
+        if (!model::inside_polygon(zone, p) || body.holds(p, 0.0)) continue;
         if (sees_column(viewers[v], p, area_top)) {
           visibility.sees[v] = true;
           break;

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "rigdesign/model/line_crossings.hpp"
+#include "rigdesign/model/polygon_area.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::geometry {
@@ -17,19 +18,6 @@ constexpr double kGrazing = 1e-9;
 
 double cross2(const model::Vec2& a, const model::Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();
-}
-
-bool inside_polygon(const std::vector<model::Vec2>& polygon, const model::Vec2& p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const model::Vec2& a = polygon[i];
-    const model::Vec2& b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
-      inside = !inside;
-    }
-  }
-  return inside;
 }
 
 // Where the lines a + s d and p + t e meet: false when they are parallel.
@@ -68,7 +56,7 @@ bool overlaps_inside(const std::vector<model::Vec2>& polygon, const model::Vec2&
     const double to = std::min(cuts[i + 1], high);
     if (to - from <= kGrazing) continue;
     const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
-    if (inside_polygon(polygon, a + mid * (b - a))) return true;
+    if (model::inside_polygon(polygon, a + mid * (b - a))) return true;
   }
   return false;
 }
@@ -201,7 +189,7 @@ bool BodyOccluder::contains(const model::Vec3& point) const {
   constexpr double kSurface = 1e-9;
   if (point.z() <= kSurface || point.z() >= height_ - kSurface) return false;
   if (!footprint_.empty()) {
-    if (!inside_polygon(footprint_, point.head<2>())) return false;
+    if (!model::inside_polygon(footprint_, point.head<2>())) return false;
     // On an edge counts as outside: a sensor may sit flush on the body.
     for (std::size_t i = 0; i < footprint_.size(); ++i) {
       const model::Vec2& a = footprint_[i];

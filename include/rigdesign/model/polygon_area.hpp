@@ -9,6 +9,10 @@ namespace rigdesign::model {
 /// vertices run counter-clockwise.
 double signed_area(const std::vector<Vec2>& polygon);
 
+/// Whether `p` lies inside the simple polygon `polygon` (either winding), by the even-odd
+/// rule; a point exactly on an edge may fall either way.
+bool inside_polygon(const std::vector<Vec2>& polygon, const Vec2& p);
+
 /// A footprint's two radii about the origin, as nav2 derives them from its polygon: the
 /// circumscribed one (the farthest corner) and the inscribed one (the nearest edge's line,
 /// never more than the circumscribed one; zero-length edges are skipped) [m].
