@@ -11,9 +11,11 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
+#include <span>
 
 #include "app.hpp"
 #include "command.hpp"
+#include "costmap_variants.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
 #include "progress_line.hpp"
@@ -26,7 +28,9 @@
 #include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/idle_cores.hpp"
 #include "rigdesign/render/costmap_frame.hpp"
+#include "rigdesign/scenarios/floor_ahead.hpp"
 #include "rigdesign/scenarios/scenario_runner.hpp"
 #include "text_table.hpp"
 
@@ -60,6 +64,10 @@ struct CostmapOptions {
   std::string filtering_loads;                 // measured seconds per point (filter --write-loads)
   std::string local_planner = "pure-pursuit";  // or dwa
   bool full_rays = false;                      // every ray of every sensor, no decimation
+  double clearance_margin = 0.0;               // [m] footprint padding where the costmap inflates
+  bool variants = false;                       // paper 2's Table 1 over the rig's mount subsets
+  int seeds = 20;
+  std::vector<double> margins = scenarios::SweepSettings{}.margins;
 };
 
 struct Variant {
@@ -115,6 +123,11 @@ std::string outcome_text(const scenarios::ScenarioResult& result) {
            fixed(result.collision_position.x(), 2) + ", y " +
            fixed(result.collision_position.y(), 2) + " m)";
   }
+  if (result.drove_off) {
+    return "none; drove off the " + result.drop_name +
+           " at t = " + fixed(result.drove_off_time, 2) + " s at " +
+           fixed(result.drove_off_speed, 2) + " m/s";
+  }
   if (result.gave_up) return "none; gave up at t = " + fixed(result.end_time, 2) + " s";
   return result.reached_goal ? "none; goal reached at t = " + fixed(result.end_time, 2) + " s"
                              : "none; goal not reached by t = " + fixed(result.end_time, 2) + " s";
@@ -133,6 +146,21 @@ nlohmann::json sensors_json(const model::Rig& rig, const scenarios::ScenarioResu
                        {"latency_s", t.latency()}});
   }
   return sensors;
+}
+
+nlohmann::json stops_json(const scenarios::ScenarioResult& result) {
+  nlohmann::json stops = nlohmann::json::array();
+  for (const scenarios::StopOutcome& stop : result.stops) {
+    stops.push_back(
+        {{"name", stop.name},
+         {"reached", stop.reached},
+         {"reached_time_s", stop.reached ? nlohmann::json(stop.reached_time) : nlohmann::json()},
+         {"refused", stop.refused},
+         {"reason", stop.reason},
+         {"leg_distance_m", stop.leg_distance},
+         {"leg_s", stop.leg_seconds}});
+  }
+  return stops;
 }
 
 nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig,
@@ -182,6 +210,15 @@ nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig
       {"gave_up_reason", result.gave_up_reason},
       {"frames_cast", result.frames_cast},
       {"sensors", sensors_json(rig, result)},
+      {"clearance_margin_m", params.clearance_margin},
+      {"goals_reached", result.goals_reached},
+      {"goals", result.route_size},
+      {"average_speed_m_per_s", result.average_speed},
+      {"distance_m", result.distance},
+      {"drove_off", result.drove_off},
+      {"drop", result.drop_name},
+      {"struck_while_standing", result.struck_while_standing},
+      {"stops", stops_json(result)},
       {"trajectory", trajectory},
   };
   return json;
@@ -204,18 +241,21 @@ VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const R
   if (!inputs.rig.body.footprint.empty() || inputs.rig.body.has_parts())
     frame.footprint = geometry::footprint_hull(inputs.rig.body);
   std::vector<model::Vec2> trail;
-  const auto outlines_at = [&](double t) {
+  const auto outlines_at = [&](std::span<const double> clocks) {
     std::vector<costmap::NamedMesh> meshes;
     for (const model::SceneObject& object : scenario.scene.objects)
       meshes.push_back({object.name, &object.mesh});
     moved.clear();
-    for (const model::MovingObject& object : scenario.scene.moving)
-      moved.emplace_back().append(object.mesh, object.T_world_object(t));
+    for (std::size_t i = 0; i < scenario.scene.moving.size(); ++i) {
+      const model::MovingObject& object = scenario.scene.moving[i];
+      moved.emplace_back().append(object.mesh,
+                                  object.T_world_object(i < clocks.size() ? clocks[i] : 0.0));
+    }
     for (std::size_t i = 0; i < moved.size(); ++i)
       meshes.push_back({scenario.scene.moving[i].name, &moved[i]});
     return costmap::FootprintCollisionChecker(meshes, band).outlines();
   };
-  const std::vector<std::vector<model::Vec2>> still_outlines = outlines_at(0.0);
+  const std::vector<std::vector<model::Vec2>> still_outlines = outlines_at({});
   const std::string title = inputs.rig.name + ", " + options.scenario + ", " + variant.label();
   std::vector<double> marking_ranges;
   for (const costmap::ObservationSource& source : scenarios::mount_sources_of(inputs.rig, params))
@@ -229,7 +269,8 @@ VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const R
         last_obstacles = step.costmap->obstacle_grid();
         frame.title = title + ", t = " + fixed(step.time, 1) + " s";
         frame.remembered = costmap::remembered_cells(*step.costmap);
-        frame.obstacles = scenario.scene.moving.empty() ? still_outlines : outlines_at(step.time);
+        frame.obstacles =
+            scenario.scene.moving.empty() ? still_outlines : outlines_at(step.object_clocks);
         frame.fovs = render::fov_wedges(inputs.rig, inputs.library, step.pose, marking_ranges);
         frame.path = step.path->waypoints_world;
         frame.trail = trail;
@@ -277,6 +318,23 @@ void print_run(std::ostream& out, const VariantRun& run) {
       << fixed(milliseconds(update.p99), 2) << " ms over " << result.updates
       << " updates; planner median " << fixed(milliseconds(plan.median), 2) << " ms, p99 "
       << fixed(milliseconds(plan.p99), 2) << " ms\n";
+  if (result.route_size > 1) {
+    out << "  goals: " << result.goals_reached << " of " << result.route_size
+        << " reached, average speed " << fixed(result.average_speed * 100.0, 1)
+        << " cm/s on the way to them, " << fixed(result.distance, 2) << " m driven";
+    if (result.struck_while_standing > 0)
+      out << "; a walker touched the standing robot " << result.struck_while_standing << " time(s)";
+    out << "\n";
+    for (std::size_t i = 0; i < result.stops.size(); ++i) {
+      const scenarios::StopOutcome& stop = result.stops[i];
+      out << "    " << (i + 1) << ". " << stop.name << ": "
+          << (stop.reached
+                  ? "reached at t = " + fixed(stop.reached_time, 1) + " s (" +
+                        fixed(stop.leg_distance, 2) + " m in " + fixed(stop.leg_seconds, 1) + " s)"
+                  : stop.reason)
+          << "\n";
+    }
+  }
   if (result.recoveries > 0 || result.dwa_blocked_steps > 0) {
     out << "  deadlock: " << result.recoveries << " recovery(ies), "
         << fixed(result.recovery_seconds, 2) << " s turning; DWA found no admissible velocity at "
@@ -338,6 +396,44 @@ std::string persistence_text(const model::Rig& rig, const scenarios::ScenarioPar
   return text;
 }
 
+// Each mount's rate and latency as the runs sense them (phase 0), in rig order.
+std::vector<scenarios::MountTiming> timings_of(const RigInputs& inputs,
+                                               const scenarios::ScenarioParams& params) {
+  std::vector<scenarios::MountTiming> timings;
+  for (const model::Mount& mount : inputs.rig.mounts) {
+    const model::SensorMode& mode = inputs.library.resolved_mode(mount.sensor_id, mount.mode_id);
+    const model::FilteringLoad* measured =
+        params.filtering_loads ? params.filtering_loads->find(mount.sensor_id) : nullptr;
+    timings.push_back(scenarios::mount_timing(
+        mount, mode, measured ? measured->seconds_per_point : params.filtering_seconds_per_point,
+        0.0));
+  }
+  return timings;
+}
+
+// The closed-loop reading of "see the floor ahead": how far the rig sees the floor in its
+// path, and the speed from which it can stop for a drop first seen there.
+void print_floor_ahead(std::ostream& out, const RigInputs& inputs,
+                       const scenarios::ScenarioParams& params) {
+  const double deceleration = inputs.requirements ? inputs.requirements->braking_deceleration()
+                                                  : model::kDefaultDeceleration;
+  const scenarios::FloorAhead floor =
+      scenarios::floor_ahead(inputs.rig, inputs.library, timings_of(inputs, params),
+                             1.0 / params.update_rate, 1.0 / params.control_rate, deceleration);
+  if (floor.mount.empty()) {
+    out << "  drops: no mount sees the floor ahead within the body's width, so no drop is ever "
+           "marked: the robot would drive off one at any speed\n";
+    return;
+  }
+  out << "  drops: " << floor.mount << " sees the floor to " << fixed(floor.distance, 2)
+      << " m ahead; seen there, a drop stops the robot from up to "
+      << fixed(floor.stoppable_speed, 2) << " m/s (reaction " << fixed(floor.reaction, 3)
+      << " s: frame period + latency + costmap update + control step; "
+      << model::format_number(deceleration) << " m/s^2 braking)"
+      << (floor.stoppable_speed < params.follower.speed ? "; slower than the run's speed" : "")
+      << "\n";
+}
+
 // Each mount's rate and latency as the run senses them, and the rays it casts.
 void print_sensing(std::ostream& out, const RigInputs& inputs,
                    const scenarios::ScenarioParams& params, const std::string& loads_file) {
@@ -353,14 +449,10 @@ void print_sensing(std::ostream& out, const RigInputs& inputs,
               ? " (full patterns)"
               : " (--full-rays casts all)")
       << "):\n";
-  for (const model::Mount& mount : inputs.rig.mounts) {
-    const model::SensorMode& mode = inputs.library.resolved_mode(mount.sensor_id, mount.mode_id);
-    const model::FilteringLoad* measured =
-        params.filtering_loads ? params.filtering_loads->find(mount.sensor_id) : nullptr;
-    const scenarios::MountTiming timing = scenarios::mount_timing(
-        mount, mode, measured ? measured->seconds_per_point : params.filtering_seconds_per_point,
-        0.0);
-    out << "    " << mount.id << ": " << scenarios::describe(timing)
+  const std::vector<scenarios::MountTiming> timings = timings_of(inputs, params);
+  for (std::size_t i = 0; i < timings.size(); ++i) {
+    const model::Mount& mount = inputs.rig.mounts[i];
+    out << "    " << mount.id << ": " << scenarios::describe(timings[i])
         << (mount.throttle_hz ? " (throttled)" : "") << "\n";
   }
 }
@@ -412,10 +504,13 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
   require_option(options.local_planner == "pure-pursuit" || options.local_planner == "dwa",
                  "--local-planner", "is '" + options.local_planner + "'", "pure-pursuit or dwa");
   if (options.local_planner == "dwa") params.local_planner = scenarios::LocalPlanner::dwa;
-  scenarios::check_scenario_inputs(inputs.rig, inputs.library, params);
-
+  params.clearance_margin = options.clearance_margin;
   const scenarios::ScenarioDefinition scenario =
       scenarios::make_costmap_scenario(options.scenario, options.seed, inputs.rig.body.radius);
+  scenarios::apply_scenario_settings(scenario, params);
+  if (options.full_rays) params.camera_decimation = params.lidar_decimation = 1;
+  scenarios::check_scenario_inputs(inputs.rig, inputs.library, params);
+
   const std::string folder = options.out.empty() ? "costmap/" + options.scenario : options.out;
   io::prepare_output_folder(folder, "--out");
   out << inputs.rig.name << " in scenario " << scenario.name << " (seed " << options.seed
@@ -426,6 +521,7 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
       << params.costmap.hit.hit << ", hit_max " << params.costmap.hit.hit_max
       << persistence_text(inputs.rig, params) << "\n";
   print_sensing(out, inputs, params, options.filtering_loads);
+  if (!scenario.drops.empty()) print_floor_ahead(out, inputs, params);
   out << "  local planner: "
       << (params.local_planner == scenarios::LocalPlanner::dwa
               ? "DWA (sim_time " + model::format_number(params.dwa.sim_time) + " s, " +
@@ -433,6 +529,23 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
                     std::to_string(params.dwa.angular_samples) + " velocities)"
               : std::string("pure pursuit"))
       << ", Dijkstra global plans at each update\n";
+  if (options.variants) {
+    require_option(std::is_sorted(options.margins.begin(), options.margins.end()) &&
+                       options.margins.front() >= 0.0,
+                   "--margins", "must be ascending and not negative", "e.g. 0,0.05,0.1");
+    scenarios::SweepSettings settings;
+    settings.seeds = options.seeds;
+    settings.first_seed = options.seed;
+    settings.margins = options.margins;
+    settings.threads = 1 + model::idle_cores();
+    params.costmap.use_hit_layer =
+        params.costmap.use_hit_layer && !options.no_hit_layer && !options.no_memory;
+    if (options.no_memory) forget_persistence(params);
+    if (!options.layer.empty())
+      params.costmap.layer = *model::value_in(costmap::kObstacleLayerNames, options.layer);
+    run_costmap_variants(out, err, inputs, options.scenario, params, settings, folder);
+    return kOk;
+  }
   const bool persistence = any_persistence(inputs.rig, params) && !options.no_memory;
   std::vector<Variant> variants;
   if (options.compare) {
@@ -476,7 +589,8 @@ Command setup_costmap(CLI::App& parent) {
                                         "costmap, planner and follower in the loop");
   app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
   app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
-  app->add_option("--scenario", options->scenario, "wall_following or stationary")->required();
+  app->add_option("--scenario", options->scenario, "wall_following, stationary or office_goals")
+      ->required();
   app->add_option("--params", options->params,
                   "nav2 costmap parameter file (docs/costmap.md); options below override it");
   app->add_option("--global-frame-height", options->global_frame_height,
@@ -518,6 +632,22 @@ Command setup_costmap(CLI::App& parent) {
   app->add_flag("--full-rays", options->full_rays,
                 "Cast every ray of every sensor (default: every 8th camera pixel row and "
                 "column, every 4th lidar ray along the scan)");
+  app->add_option("--clearance-margin", options->clearance_margin,
+                  "Footprint padding [m] where the costmap inflates: how close the planners let "
+                  "the robot come to what its sensors see (default 0)")
+      ->check(finite_in(0.0, 2.0, "a margin in [0, 2] m"));
+  app->add_flag("--variants", options->variants,
+                "Paper 2's Table 1: run the whole rig, every subset without one mount and each "
+                "mount alone, --seeds seeds each, at the smallest --margins margin without a "
+                "collision (the critical distance), and print them beside paper 2's numbers");
+  app->add_option("--seeds", options->seeds,
+                  "Seeds per variant and margin, from --seed (default 20)")
+      ->check(finite_in(1, 1000, "a count from 1 to 1000"));
+  app->add_option("--margins", options->margins,
+                  "Clearance margins [m] the critical-distance sweep tries, ascending "
+                  "(default 0,0.05,...,0.3)")
+      ->delimiter(',')
+      ->check(finite_in(0.0, 2.0, "margins in [0, 2] m"));
   app->add_option("--out", options->out, "Output folder (default costmap/<scenario>)");
   return {app, [options](std::ostream& out, std::ostream& err) {
             return run_costmap(*options, out, err);

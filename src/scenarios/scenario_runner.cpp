@@ -8,9 +8,11 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <set>
 
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
+#include "rigdesign/filters/floor_removal.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/statistics.hpp"
 #include "rigdesign/sim/noise_stream.hpp"
@@ -27,27 +29,83 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The scene's objects at time t with their names; `storage` keeps moved copies alive.
-std::vector<costmap::NamedMesh> named_meshes_at(const model::Scene& scene, double t,
-                                                std::vector<model::TriangleMesh>& storage) {
+// The scene's still objects with their names.
+std::vector<costmap::NamedMesh> still_meshes(const model::Scene& scene) {
   std::vector<costmap::NamedMesh> meshes;
   for (const model::SceneObject& object : scene.objects)
     meshes.push_back({object.name, &object.mesh});
-  storage.clear();
-  storage.reserve(scene.moving.size());
-  for (const model::MovingObject& object : scene.moving) {
-    storage.emplace_back().append(object.mesh, object.T_world_object(t));
-  }
-  for (std::size_t i = 0; i < scene.moving.size(); ++i) {
-    meshes.push_back({scene.moving[i].name, &storage[i]});
-  }
   return meshes;
 }
 
-costmap::FootprintCollisionChecker checker_at(const model::Scene& scene, double t,
-                                              const costmap::HeightBand& band) {
-  std::vector<model::TriangleMesh> storage;
-  return costmap::FootprintCollisionChecker(named_meshes_at(scene, t, storage), band);
+// Every triangle of the still objects, for the ray caster built once per run.
+model::TriangleMesh still_mesh(const model::Scene& scene) {
+  model::TriangleMesh mesh;
+  for (const model::SceneObject& object : scene.objects) mesh.append(object.mesh);
+  return mesh;
+}
+
+// The moving objects' own clocks: scene time, except that one which gives way stands still
+// while the robot's centre is within its distance. Recorded at every control step; a frame
+// captured between two steps sees each object at the earlier step's clock plus the time since
+// (exact for objects that never wait; off by at most one 50 ms step for one that just stopped).
+class ObjectClocks {
+ public:
+  explicit ObjectClocks(const model::Scene& scene)
+      : scene_(scene), clocks_(scene.moving.size(), 0.0) {}
+  void record(double t) { history_.push_back({t, clocks_}); }
+  /// To scene time `t_next`, the robot standing at `robot` now.
+  void advance(double t_next, double dt, const model::Vec2& robot) {
+    for (std::size_t i = 0; i < clocks_.size(); ++i) {
+      const model::MovingObject& object = scene_.moving[i];
+      if (!(object.gives_way_within > 0.0)) {
+        clocks_[i] = t_next;
+        continue;
+      }
+      const model::Vec2 at = object.T_world_object(clocks_[i]).translation().head<2>();
+      if ((at - robot).norm() >= object.gives_way_within) clocks_[i] += dt;
+    }
+  }
+  const std::vector<double>& now() const { return clocks_; }
+  std::vector<double> at(double t) const {
+    const auto after = std::upper_bound(history_.begin(), history_.end(), t,
+                                        [](double time, const Step& s) { return time < s.t; });
+    if (after == history_.begin()) return clocks_;
+    const Step& step = *std::prev(after);
+    std::vector<double> clocks = step.clocks;
+    for (double& clock : clocks) clock += t - step.t;
+    return clocks;
+  }
+
+ private:
+  struct Step {
+    double t;
+    std::vector<double> clocks;
+  };
+  const model::Scene& scene_;
+  std::vector<double> clocks_;
+  std::vector<Step> history_;
+};
+
+// The moving objects at their clocks: `storage` keeps the moved copies alive for the named
+// meshes.
+std::vector<costmap::NamedMesh> moving_meshes_at(const model::Scene& scene,
+                                                 const std::vector<double>& clocks,
+                                                 std::vector<model::TriangleMesh>& storage) {
+  storage.clear();
+  storage.reserve(scene.moving.size());
+  for (std::size_t i = 0; i < scene.moving.size(); ++i)
+    storage.emplace_back().append(scene.moving[i].mesh, scene.moving[i].T_world_object(clocks[i]));
+  std::vector<costmap::NamedMesh> meshes;
+  for (std::size_t i = 0; i < scene.moving.size(); ++i)
+    meshes.push_back({scene.moving[i].name, &storage[i]});
+  return meshes;
+}
+
+model::TriangleMesh moving_mesh_at(const model::Scene& scene, const std::vector<double>& clocks) {
+  model::TriangleMesh mesh;
+  for (std::size_t i = 0; i < scene.moving.size(); ++i)
+    mesh.append(scene.moving[i].mesh, scene.moving[i].T_world_object(clocks[i]));
+  return mesh;
 }
 
 bool passable(std::uint8_t cost, const costmap::PlannerParams& planner) {
@@ -127,33 +185,38 @@ class PoseHistory {
 };
 
 // Paper 2's deadlock handling: stuck (no plan or no admissible velocity for the patience, or
-// no progress for three patiences), stop, clear the obstacles beyond 0.5 m and turn 360
-// degrees; stuck again on the same leg, clear everything and turn again; a third time, give up.
+// no progress towards the stop for three patiences), stop, clear the obstacles beyond 0.5 m and
+// turn 360 degrees; stuck again on the same leg, clear everything and turn again; a third time,
+// give up.
 struct Recovery {
   double stuck_since = -1.0;    // [s] since when no plan or velocity was found; < 0: found
   int level = 0;                // recoveries on the current leg
   std::size_t leg = 0;          // the route stop they were for
   double turning_until = -1.0;  // [s] end of the current recovery turn
-  model::Vec2 anchor = model::Vec2::Zero();  // where the robot last made progress
-  double anchor_time = 0.0;                  // [s] and when
+  double closest = 0.0;         // [m] the robot's least distance to the stop since progress began
+  double anchor_time = 0.0;     // [s] when it last came this much closer
 };
 
-// [m] moving this far counts as progress; without it for this many patiences the robot is
-// stuck too (it stands at a substitute local goal short of a walled-off stop, say).
+// [m] coming this much closer to the stop counts as progress; without it for this many
+// patiences the robot is stuck too: it stands at a substitute local goal short of a walled-off
+// stop, or rocks to and fro in front of an obstacle it cannot pass.
 constexpr double kProgress = 0.1;
 constexpr double kProgressPatiences = 3.0;
 
-// Returns true when the run must stop: recoveries exhausted.
+// Returns true when the recoveries for the current stop are exhausted: it is unreachable.
 bool recover_if_stuck(Recovery& recovery, bool blocked, bool waiting, double t, std::size_t stop,
-                      const costmap::Pose2& pose, costmap::Costmap& costmap,
-                      const ScenarioParams& params, ScenarioResult& result) {
+                      const model::Vec2& stop_position, const costmap::Pose2& pose,
+                      costmap::Costmap& costmap, const ScenarioParams& params,
+                      ScenarioResult& result) {
+  const double distance = (stop_position - pose.position).norm();
   if (stop != recovery.leg) {  // a stop reached: a new leg starts without recoveries
     recovery.leg = stop;
     recovery.level = 0;
+    recovery.closest = distance;
+    recovery.anchor_time = t;
   }
-  if (waiting || t < recovery.turning_until ||
-      (pose.position - recovery.anchor).norm() > kProgress) {
-    recovery.anchor = pose.position;
+  if (waiting || t < recovery.turning_until || distance < recovery.closest - kProgress) {
+    recovery.closest = distance;
     recovery.anchor_time = t;
   }
   if (!blocked) recovery.stuck_since = -1.0;
@@ -163,17 +226,9 @@ bool recover_if_stuck(Recovery& recovery, bool blocked, bool waiting, double t, 
       t - recovery.anchor_time >= kProgressPatiences * params.deadlock_patience;
   if (!no_plan && !no_progress) return false;
   recovery.stuck_since = -1.0;
-  recovery.anchor = pose.position;
+  recovery.closest = distance;
   recovery.anchor_time = t;
-  if (recovery.level >= 2) {
-    result.gave_up = true;
-    result.gave_up_reason = "no way to route stop " + std::to_string(stop + 1) +
-                            " after two recoveries (cleared the costmap beyond " +
-                            model::format_number(params.deadlock_clear_radius) +
-                            " m, then entirely, turning 360 deg each time): the goal is "
-                            "unreachable";
-    return true;
-  }
+  if (recovery.level >= 2) return true;
   ++recovery.level;
   ++result.recoveries;
   costmap.clear_outside(pose.position, recovery.level == 1 ? params.deadlock_clear_radius : 0.0);
@@ -181,7 +236,75 @@ bool recover_if_stuck(Recovery& recovery, bool blocked, bool waiting, double t, 
   return false;
 }
 
+// World cells [costmap resolution] where the negative-obstacle stage put virtual points: the
+// drops the costmap was told of, for naming why a stop is unreachable.
+using CellSet = std::set<std::pair<long, long>>;
+
+std::pair<long, long> cell_of(const model::Vec2& p, double resolution) {
+  return {static_cast<long>(std::floor(p.x() / resolution)),
+          static_cast<long>(std::floor(p.y() / resolution))};
+}
+
+// Paper 2's negative obstacles on a world-frame frame (floor at z = 0); the virtual points,
+// which the stage appends after the others, are recorded in `drops`.
+model::PointCloud with_negative_obstacles(const model::PointCloud& frame, double resolution,
+                                          CellSet& drops) {
+  const model::NegativeObstacleParams stage;
+  const std::size_t below = static_cast<std::size_t>(
+      std::count_if(frame.points.begin(), frame.points.end(),
+                    [&](const model::Point3f& p) { return p.z() < stage.below; }));
+  model::PointCloud marked = filters::mark_negative_obstacles(frame, stage);
+  for (std::size_t i = marked.size() - below; i < marked.size(); ++i) {
+    const model::Point3f& p = marked.points[i];
+    drops.insert(cell_of(model::Vec2(p.x(), p.y()), resolution));
+  }
+  return marked;
+}
+
+// Why route stop `stop` is unreachable: a marked drop within reach of the straight way there
+// (the nearest to the robot), else the recoveries that found no way.
+std::string unreachable_reason(std::size_t stop, const std::string& name, const model::Vec2& robot,
+                               const model::Vec2& goal, const CellSet& drops, double resolution,
+                               double reach, const ScenarioParams& params) {
+  const std::string which =
+      "route stop " + std::to_string(stop + 1) + (name.empty() ? "" : " (" + name + ")");
+  const model::Vec2 way = goal - robot;
+  const double length = way.norm();
+  std::optional<model::Vec2> nearest;
+  double nearest_distance = std::numeric_limits<double>::infinity();
+  for (const auto& [x, y] : drops) {
+    const model::Vec2 centre((static_cast<double>(x) + 0.5) * resolution,
+                             (static_cast<double>(y) + 0.5) * resolution);
+    const double along =
+        length > 0 ? std::clamp((centre - robot).dot(way) / length, 0.0, length) : 0.0;
+    const model::Vec2 closest = length > 0 ? model::Vec2(robot + along * way / length) : robot;
+    if ((centre - closest).norm() > reach) continue;
+    const double distance = (centre - robot).norm();
+    if (distance < nearest_distance) {
+      nearest_distance = distance;
+      nearest = centre;
+    }
+  }
+  const std::string recoveries = "after two recoveries (cleared the costmap beyond " +
+                                 model::format_number(params.deadlock_clear_radius) +
+                                 " m, then entirely, turning 360 deg each time)";
+  if (nearest) {
+    return which + " refused: a drop (stairs or a hole) the negative-obstacle stage marked at (" +
+           model::format_number(nearest->x(), 3) + ", " + model::format_number(nearest->y(), 3) +
+           ") m lies on the way, and no way round it was found " + recoveries;
+  }
+  return which + " unreachable: no way there " + recoveries;
+}
+
 }  // namespace
+
+void apply_scenario_settings(const ScenarioDefinition& scenario, ScenarioParams& params) {
+  if (scenario.min_obstacle_height)
+    params.source.min_obstacle_height = *scenario.min_obstacle_height;
+  if (scenario.camera_decimation) params.camera_decimation = *scenario.camera_decimation;
+  if (scenario.lidar_decimation) params.lidar_decimation = *scenario.lidar_decimation;
+  if (scenario.negative_obstacles) params.negative_obstacles = *scenario.negative_obstacles;
+}
 
 TimeSummary summarize_times(const std::vector<double>& seconds) {
   if (seconds.empty()) return {};
@@ -196,12 +319,9 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
   costmap::Costmap costmap(setup.costmap);
   const costmap::HeightBand band{params.ground_clearance, rig.body.height};
   const bool static_scene = scenario.scene.moving.empty();
-  std::optional<sim::RayCaster> still_caster;
-  std::optional<costmap::FootprintCollisionChecker> still_checker;
-  if (static_scene) {
-    still_caster.emplace(scenario.scene.at(0.0));
-    still_checker.emplace(checker_at(scenario.scene, 0.0, band));
-  }
+  // The still objects' tree and outlines are built once; the moving ones at each instant.
+  const sim::RayCaster still_caster(still_mesh(scenario.scene));
+  const costmap::FootprintCollisionChecker still_checker(still_meshes(scenario.scene), band);
   std::vector<std::mt19937_64> streams;
   for (std::size_t i = 0; i < setup.mounts.size(); ++i)
     streams.push_back(sim::noise_stream(params.seed, i));
@@ -217,6 +337,15 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
 
   ScenarioResult result;
   for (const detail::SimulatedMount& mount : setup.mounts) result.timings.push_back(mount.timing);
+  result.route_size = scenario.route.size();
+  CellSet drop_marks;
+  const double resolution = setup.costmap.resolution;
+  // The leg being driven: where and when it started, how far the robot has come on it.
+  model::Vec2 leg_start = scenario.start.position;
+  double leg_start_time = 0.0;
+  double leg_distance = 0.0;
+  bool touched_by_walker = false;
+  ObjectClocks clocks(scenario.scene);
   // Frames simulated so far and still held by the costmap, by capture index, per mount.
   std::vector<std::map<long, model::PointCloud>> frames(setup.mounts.size());
   std::vector<long> last_passed(setup.mounts.size(), -1);  // newest frame given to the costmap
@@ -229,19 +358,37 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
   costmap::PlannedPath path;
   model::Vec2 goal = scenario.start.position;  // the local goal of the latest plan
   Recovery recovery;
-  recovery.anchor = scenario.start.position;
+  recovery.closest = scenario.route.empty()
+                         ? 0.0
+                         : (scenario.route.front().position - scenario.start.position).norm();
   costmap::DwaParams dwa = params.dwa;
   dwa.max_speed = params.follower.speed;
   dwa.max_angular_speed = params.follower.max_angular_speed;
   std::vector<model::PointCloud> clouds(setup.mounts.size());
+  const auto start_leg = [&](double t) {
+    leg_start = pose.position;
+    leg_start_time = t;
+    leg_distance = 0.0;
+  };
   for (long k = 0;; ++k) {
     const double t = static_cast<double>(k) / params.control_rate;
     result.end_time = t;
-    // Ground truth first: the pose reached by the last command.
-    const costmap::Clearance clearance =
-        static_scene
-            ? still_checker->clearance(pose.position, rig.body.radius)
-            : checker_at(scenario.scene, t, band).clearance(pose.position, rig.body.radius);
+    // Ground truth first: the pose reached by the last command. Walkers count only while the
+    // robot drives: one who walks into a standing robot is not the robot's collision.
+    costmap::Clearance clearance = still_checker.clearance(pose.position, rig.body.radius);
+    if (!static_scene) {
+      std::vector<model::TriangleMesh> storage;
+      const costmap::Clearance walker =
+          costmap::FootprintCollisionChecker(
+              moving_meshes_at(scenario.scene, clocks.now(), storage), band)
+              .clearance(pose.position, rig.body.radius);
+      if (command.linear != 0.0) {
+        if (walker.distance < clearance.distance) clearance = walker;
+      } else if (walker.distance < 0.0 && !touched_by_walker) {
+        ++result.struck_while_standing;
+      }
+      touched_by_walker = walker.distance < 0.0;
+    }
     if (clearance.distance < result.min_clearance) {
       result.min_clearance = clearance.distance;
       result.min_clearance_time = t;
@@ -254,17 +401,36 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
       result.collision_position = pose.position;
       break;
     }
+    const auto drop = std::find_if(scenario.drops.begin(), scenario.drops.end(),
+                                   [&](const FloorDrop& d) { return d.contains(pose.position); });
+    if (drop != scenario.drops.end()) {
+      result.drove_off = true;
+      result.drop_name = drop->name;
+      result.drove_off_time = t;
+      result.drove_off_speed = command.linear;
+      break;
+    }
     // Stops: arrive, wait, leave.
     if (waiting && t >= wait_until - 1e-9) {
       waiting = false;
       ++stop;
+      start_leg(t);
     } else if (!waiting &&
                (pose.position - scenario.route[stop].position).norm() < params.goal_tolerance) {
+      StopOutcome reached;
+      reached.name = scenario.route[stop].name;
+      reached.reached = true;
+      reached.reached_time = t;
+      reached.leg_distance = leg_distance;
+      reached.leg_seconds = t - leg_start_time;
+      result.stops.push_back(reached);
+      ++result.goals_reached;
       if (scenario.route[stop].wait > 0.0) {
         waiting = true;
         wait_until = t + scenario.route[stop].wait;
       } else {
         ++stop;
+        start_leg(t);
       }
     }
     if (stop >= scenario.route.size()) {
@@ -293,13 +459,18 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
           if (cache.count(index)) continue;
           const double captured = mount.timing.capture(index);
           std::optional<sim::RayCaster> moving_caster;
-          if (!static_scene) moving_caster.emplace(scenario.scene.at(captured));
-          const sim::RayCaster& caster = static_scene ? *still_caster : *moving_caster;
+          if (!static_scene)
+            moving_caster.emplace(moving_mesh_at(scenario.scene, clocks.at(captured)),
+                                  still_caster);
+          const sim::RayCaster& caster = static_scene ? still_caster : *moving_caster;
           const model::Pose3 T_world_sensor =
               detail::to_pose3(history.empty() ? pose : history.at(captured)) *
               mount.mount.T_robot_sensor;
-          cache[index] = sim::simulate_frame(caster, mount.mode, mount.rays, T_world_sensor,
-                                             settings, streams[i]);
+          model::PointCloud frame = sim::simulate_frame(caster, mount.mode, mount.rays,
+                                                        T_world_sensor, settings, streams[i]);
+          if (params.negative_obstacles)
+            frame = with_negative_obstacles(frame, resolution, drop_marks);
+          cache[index] = std::move(frame);
           ++result.frames_cast;
         }
         for (const auto& [index, cloud] : cache)
@@ -317,8 +488,6 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
       goal = pose.position;
       path = costmap::PlannedPath{};
       if (!waiting) {
-        const model::Vec2 leg_start =
-            stop == 0 ? scenario.start.position : scenario.route[stop - 1].position;
         const std::optional<model::Vec2> chosen =
             local_goal(leg_start, scenario.route[stop].position, pose.position, lookahead,
                        params.goal_search_radius, costmap.master(), params.planner);
@@ -342,6 +511,7 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
         step.path = &path;
         step.goal = goal;
         step.clouds = clouds;
+        step.object_clocks = clocks.now();
         on_update(step);
       }
       ++result.updates;
@@ -366,13 +536,43 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
       command = costmap::pursue(path.waypoints_world, pose, params.follower);
     }
     if (params.deadlock_recovery &&
-        recover_if_stuck(recovery, blocked, waiting, t, stop, pose, costmap, params, result)) {
-      break;  // gave up: the goal is unreachable
+        recover_if_stuck(recovery, blocked, waiting, t, stop, scenario.route[stop].position, pose,
+                         costmap, params, result)) {
+      StopOutcome refused;
+      refused.name = scenario.route[stop].name;
+      refused.refused = true;
+      refused.reason = unreachable_reason(
+          stop, refused.name, pose.position, scenario.route[stop].position, drop_marks, resolution,
+          setup.costmap.inflation.inscribed_radius + resolution, params);
+      refused.leg_distance = leg_distance;
+      refused.leg_seconds = t - leg_start_time;
+      result.stops.push_back(refused);
+      if (!scenario.skip_unreachable || stop + 1 >= scenario.route.size()) {
+        result.gave_up = true;
+        result.gave_up_reason = refused.reason;
+        break;
+      }
+      ++stop;  // on to the next goal, as a robot given a list of goals does
+      start_leg(t);
+      command = costmap::VelocityCommand{};
     }
     history.record(t, pose, command);
-    pose = costmap::integrate_unicycle(pose, command, dt);
+    clocks.record(t);
+    clocks.advance(static_cast<double>(k + 1) / params.control_rate, dt, pose.position);
+    const costmap::Pose2 next = costmap::integrate_unicycle(pose, command, dt);
+    leg_distance += (next.position - pose.position).norm();
+    result.distance += (next.position - pose.position).norm();
+    pose = next;
   }
   result.trajectory.push_back({result.end_time, pose});
+  double reached_distance = 0.0;
+  double reached_seconds = 0.0;
+  for (const StopOutcome& outcome : result.stops) {
+    if (!outcome.reached) continue;
+    reached_distance += outcome.leg_distance;
+    reached_seconds += outcome.leg_seconds;
+  }
+  if (reached_seconds > 0.0) result.average_speed = reached_distance / reached_seconds;
   return result;
 }
 

@@ -31,7 +31,7 @@ Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
                  const ScenarioParams& params) {
   Setup setup;
   setup.costmap = params.costmap;
-  const double radius = rig.body.radius;
+  const double radius = rig.body.radius + std::max(0.0, params.clearance_margin);
   setup.costmap.robot_radius = radius;
   setup.costmap.inflation.inscribed_radius = radius;
   // nav2 asks for an inflation radius above the inscribed one; 0.1 m keeps a cost gradient.

@@ -24,41 +24,6 @@ constexpr double kSemiAxisX = 2.0;
 constexpr double kSemiAxisY = 1.0;
 constexpr double kLapPeriod = 48.0;
 
-// Body [m], a 1.75 m adult about 0.5 m across the arms (shoulder breadth ~0.45 m plus arms);
-// every part is centred on the body's vertical axis in x and symmetric in y, so the mesh's
-// vertex centroid lies on that axis.
-constexpr double kLegTop = 0.85;
-constexpr double kLegSide = 0.14;
-constexpr double kLegSpacing = 0.2;  // between the legs' centres
-constexpr double kTorsoTop = 1.45;
-constexpr double kTorsoDepth = 0.24;
-constexpr double kTorsoWidth = 0.34;
-constexpr double kArmSide = 0.08;
-constexpr double kArmBottom = 0.8;
-constexpr double kNeckRadius = 0.05;
-constexpr double kHeadBottom = 1.5;
-constexpr double kHeadRadius = 0.1;
-constexpr double kBodyHeight = 1.75;
-
-model::TriangleMesh person_mesh() {
-  model::TriangleMesh body;
-  auto part = [&](double half_x, double y0, double y1, double z0, double z1) {
-    body.append(aligned_box({-half_x, y0, z0}, {half_x, y1, z1}));
-  };
-  const double leg_half = kLegSide / 2;
-  part(leg_half, kLegSpacing / 2 - leg_half, kLegSpacing / 2 + leg_half, 0, kLegTop);
-  part(leg_half, -kLegSpacing / 2 - leg_half, -kLegSpacing / 2 + leg_half, 0, kLegTop);
-  part(kTorsoDepth / 2, -kTorsoWidth / 2, kTorsoWidth / 2, kLegTop, kTorsoTop);
-  const double arm_half = kArmSide / 2;
-  part(arm_half, kTorsoWidth / 2, kTorsoWidth / 2 + kArmSide, kArmBottom, kTorsoTop);
-  part(arm_half, -kTorsoWidth / 2 - kArmSide, -kTorsoWidth / 2, kArmBottom, kTorsoTop);
-  body.append(cylinder_mesh(kNeckRadius, kHeadBottom - kTorsoTop,
-                            model::Pose3(Eigen::Translation3d(0, 0, kTorsoTop))));
-  body.append(cylinder_mesh(kHeadRadius, kBodyHeight - kHeadBottom,
-                            model::Pose3(Eigen::Translation3d(0, 0, kHeadBottom))));
-  return body;
-}
-
 // On the ellipse at angle 2 pi t / period, counter-clockwise from (a, 0), facing along the
 // tangent (the way the person walks).
 model::Pose3 T_world_person(double t) {
@@ -79,7 +44,7 @@ model::Scene make_cell_scene() {
   add_object(scene, "floor", floor_rectangle({{-half, -half}, {half, half}}, 0));
   add_object(scene, "plate",
              box_mesh(kPlateSize, model::Pose3(Eigen::Translation3d(0, 0, kPlateSize.z() / 2))));
-  scene.moving.push_back({"person", person_mesh(), T_world_person});
+  scene.moving.push_back({"person", person_mesh(), T_world_person, 0.0});
   return scene;
 }
 

@@ -4,6 +4,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "rigdesign/sim/ray_caster.hpp"
@@ -41,12 +42,26 @@ RayCaster::RayCaster(const model::TriangleMesh& mesh) : tree_(std::make_unique<T
   tree_->tree.accelerate_distance_queries();
 }
 
+RayCaster::RayCaster(const model::TriangleMesh& mesh, const RayCaster& underlay) : RayCaster(mesh) {
+  underlay_ = &underlay;
+}
+
 RayCaster::~RayCaster() = default;
 RayCaster::RayCaster(RayCaster&&) noexcept = default;
 RayCaster& RayCaster::operator=(RayCaster&&) noexcept = default;
 
 std::optional<double> RayCaster::first_hit(const model::Vec3& origin,
                                            const model::Vec3& direction) const {
+  const std::optional<double> own = own_first_hit(origin, direction);
+  if (!underlay_) return own;
+  const std::optional<double> under = underlay_->first_hit(origin, direction);
+  if (!own) return under;
+  if (!under) return own;
+  return std::min(*own, *under);
+}
+
+std::optional<double> RayCaster::own_first_hit(const model::Vec3& origin,
+                                               const model::Vec3& direction) const {
   if (tree_->triangles.empty()) return std::nullopt;
   const Kernel::Ray_3 ray(point(origin),
                           Kernel::Vector_3(direction.x(), direction.y(), direction.z()));

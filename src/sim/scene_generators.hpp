@@ -20,6 +20,10 @@ model::Scene make_wall_following_scene();
 /// Paper 3's 4 x 4 m cell: a plate in the centre and a person walking an ellipse around it.
 model::Scene make_cell_scene();
 
+/// A 1.75 m adult standing on the floor at its frame's origin, facing +x, about 0.5 m across
+/// the arms; every part is symmetric about the body's vertical axis.
+model::TriangleMesh person_mesh();
+
 /// Adds a static object to `scene`.
 inline void add_object(model::Scene& scene, std::string name, model::TriangleMesh mesh) {
   scene.objects.push_back({std::move(name), std::move(mesh)});

@@ -47,8 +47,9 @@ void add_table(model::Scene& scene) {
   int leg = 0;
   for (double x : leg_x) {
     for (double y : leg_y) {
-      add_object(scene, "table_leg_" + std::to_string(++leg),
-                 aligned_box({x, y, 0}, {x + kFoamTableLegSide, y + kFoamTableLegSide, foam_bottom}));
+      add_object(
+          scene, "table_leg_" + std::to_string(++leg),
+          aligned_box({x, y, 0}, {x + kFoamTableLegSide, y + kFoamTableLegSide, foam_bottom}));
     }
   }
 }

@@ -102,9 +102,9 @@ class FixedMapper final : public occupancy::OccupancyMapper {
 model::Scene sliding_box_scene() {
   model::Scene scene;
   scene.name = "sliding box";
-  scene.moving.push_back({"box", test::box_mesh({-0.2, -0.2, 0.0}, {0.2, 0.2, 1.0}), [](double t) {
-                            return model::Pose3(Eigen::Translation3d(-2.0 + 0.5 * t, 0.0, 0.0));
-                          }});
+  scene.moving.push_back(
+      {"box", test::box_mesh({-0.2, -0.2, 0.0}, {0.2, 0.2, 1.0}),
+       [](double t) { return model::Pose3(Eigen::Translation3d(-2.0 + 0.5 * t, 0.0, 0.0)); }, 0.0});
   return scene;
 }
 

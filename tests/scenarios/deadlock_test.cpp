@@ -17,8 +17,8 @@ using Catch::Matchers::WithinAbs;
 TEST_CASE("deadlock: a walled-in goal gets two recoveries, then the run gives up", "[scenario]") {
   model::SensorMode mode;
   mode.id = "m";
-  mode.fov = model::FieldOfView(model::band_fov(2 * std::numbers::pi, model::deg_to_rad(-15),
-                                                model::deg_to_rad(15)));
+  mode.fov = model::FieldOfView(
+      model::band_fov(2 * std::numbers::pi, model::deg_to_rad(-15), model::deg_to_rad(15)));
   mode.min_range = 0.1;
   mode.max_range = 10.0;
   mode.frequency = 10.0;
@@ -51,7 +51,7 @@ TEST_CASE("deadlock: a walled-in goal gets two recoveries, then the run gives up
   wall({2.25, -0.30, 0.0}, {2.30, 0.30, 1.0});
   wall({1.70, -0.30, 0.0}, {2.30, -0.25, 1.0});
   wall({1.70, 0.25, 0.0}, {2.30, 0.30, 1.0});
-  scenario.route = {{{2.0, 0.0}, 0.0}};
+  scenario.route = {{{2.0, 0.0}, 0.0, "walled-in goal"}};
   scenario.max_duration = 90.0;
 
   scenarios::ScenarioParams params;

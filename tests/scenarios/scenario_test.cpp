@@ -129,7 +129,7 @@ TEST_CASE("path follower reaches the goal on an empty floor", "[scenario]") {
   scenarios::ScenarioDefinition scenario;
   scenario.name = "empty";
   scenario.scene.objects.push_back({"floor", test::box_mesh({-5, -5, -0.1}, {5, 5, 0.0})});
-  scenario.route = {{model::Vec2(3.0, 1.0), 0.0}};
+  scenario.route = {{model::Vec2(3.0, 1.0), 0.0, "goal"}};
   scenario.max_duration = 20.0;
   scenarios::ScenarioParams params;
   const scenarios::ScenarioResult result =

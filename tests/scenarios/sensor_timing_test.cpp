@@ -104,7 +104,7 @@ TEST_CASE("a 30 Hz camera sees a pole one costmap update before the same camera 
       return T;
     };
     scenario.scene.moving.push_back(pole);
-    scenario.route = {{model::Vec2::Zero(), 1.0}};  // the robot waits where it stands
+    scenario.route = {{model::Vec2::Zero(), 1.0, "start"}};  // the robot waits where it stands
     scenario.max_duration = 1.2;
     scenarios::ScenarioParams params;
     params.camera_decimation = 1;  // every 1-degree ray: the pole spans 3.8 degrees

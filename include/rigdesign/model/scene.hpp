@@ -21,6 +21,10 @@ struct MovingObject {
   std::string name;
   TriangleMesh mesh;                            ///< in the object's own frame
   std::function<Pose3(double)> T_world_object;  ///< pose at time t [s]
+  /// [m] a person who lets a robot pass: the object stands still while the robot's centre is
+  /// within this distance of its origin, so its own clock falls behind the scene's (the
+  /// scenario runner keeps it); 0: it never waits (Scene::at uses scene time throughout).
+  double gives_way_within = 0.0;
 };
 
 struct Scene {

@@ -73,10 +73,38 @@ struct ScenarioParams {
   const model::FilteringLoads* filtering_loads = nullptr;
   /// [s] each mount's first capture, in mount order; empty: drawn from the seed.
   std::vector<double> frame_phases;
+  /// [m] added to the body's radius where the costmap inflates (nav2's footprint_padding): how
+  /// close the planners let the robot come to what the sensors see. The ground-truth collision
+  /// check keeps the body's own radius. The critical-distance sweep varies it.
+  double clearance_margin = 0.0;
+  /// Paper 2's negative obstacles on every frame before the costmap (filters::
+  /// mark_negative_obstacles: returns below -2 cm mirrored, a virtual point 10 cm up where the
+  /// ray crossed the floor), so a stairwell a sensor looks into is marked at its edge. Off by
+  /// default: a sensor whose floor returns scatter past 2 cm (the Azure Kinect's 17 mm at a
+  /// steep angle) marks drops on flat floor, as the stage would on the robot without noise
+  /// removal before it; scenarios with drops turn it on (apply_scenario_settings).
+  bool negative_obstacles = false;
   /// False: frames reach the costmap the moment they are captured (no driver or filter time),
   /// the idealised loop in which, with phases 0 and rates that are multiples of the update
   /// rate, every update sees the world as it is at that update.
   bool model_latency = true;
+};
+
+/// A scenario's own sensing settings (ScenarioDefinition's min_obstacle_height and ray
+/// strides), written into `params` where the scenario sets them; mount sources named by a
+/// parameter file keep theirs.
+void apply_scenario_settings(const ScenarioDefinition& scenario, ScenarioParams& params);
+
+/// What became of one route stop.
+struct StopOutcome {
+  std::string name;
+  bool reached = false;
+  double reached_time = 0.0;  ///< [s]
+  /// Found unreachable (recoveries exhausted) and skipped; `reason` says why.
+  bool refused = false;
+  std::string reason;
+  double leg_distance = 0.0;  ///< [m] driven since the previous stop ended
+  double leg_seconds = 0.0;   ///< [s] and how long it took (waits at stops excluded)
 };
 
 /// A sampled pose of the run.
@@ -98,6 +126,9 @@ struct ScenarioStep {
   /// The newest frame the costmap holds of each mount, world frame, one per mount (empty before
   /// its first frame arrives).
   std::span<const model::PointCloud> clouds;
+  /// Each moving object's own clock [s] (scene.moving order): the time to pose it at, behind
+  /// the scene's for one that gave way to the robot.
+  std::span<const double> object_clocks;
 };
 
 struct ScenarioResult {
@@ -118,6 +149,20 @@ struct ScenarioResult {
   double recovery_seconds = 0.0;  ///< [s] spent turning in them
   bool gave_up = false;           ///< recoveries exhausted: the goal is unreachable
   std::string gave_up_reason;
+  std::vector<StopOutcome> stops;  ///< one per route stop tried, in route order
+  std::size_t route_size = 0;      ///< the scenario's stops
+  int goals_reached = 0;
+  /// The robot's centre passed over a floor drop: it drove off (the run ends there).
+  bool drove_off = false;
+  std::string drop_name;
+  double drove_off_time = 0.0;   ///< [s]
+  double drove_off_speed = 0.0;  ///< [m/s] commanded at the edge
+  /// A walker touched the robot while it stood still (not the robot's collision; counted).
+  int struck_while_standing = 0;
+  double distance = 0.0;  ///< [m] driven over the run
+  /// [m/s] distance over time on the legs to stops reached (paper 2's average speed); 0 when
+  /// none was reached.
+  double average_speed = 0.0;
   std::vector<TrajectorySample> trajectory;  ///< one sample per costmap update and the last pose
   std::vector<double> update_seconds;        ///< wall time of each Costmap::update [s]
   std::vector<double> planner_seconds;       ///< wall time of each plan [s]

@@ -20,8 +20,8 @@ namespace rigdesign::sim {
 std::vector<model::Vec3> ray_pattern(const model::SensorMode& mode);
 
 struct SimulationSettings {
-  double dropout = 0.0;       ///< share of rays that return nothing, in [0, 1)
-  bool add_noise = true;      ///< range noise N(0, sigma(d)^2) along each ray
+  double dropout = 0.0;   ///< share of rays that return nothing, in [0, 1)
+  bool add_noise = true;  ///< range noise N(0, sigma(d)^2) along each ray
   /// Points in the sensor's own frame as its driver publishes them (else the world frame):
   /// a camera's optical frame (REP-103: z forward, x right, y down), a lidar's x-forward
   /// frame. `filter --mount` assumes the same by default.

@@ -1,0 +1,205 @@
+#include "costmap_variants.hpp"
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <ostream>
+
+#include "progress_line.hpp"
+#include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "text_table.hpp"
+
+namespace rigdesign::cli {
+namespace {
+
+// Paper 2, Table 1 (Elektron: SICK LMS100 and Kinect, 20 repeats each; ../shared/DESIGN.md
+// section 9): average speed [m/s] and obstacle critical distance [m].
+struct PaperRow {
+  const char* variant;
+  double speed;
+  double critical_distance;
+};
+constexpr PaperRow kPaper2Table1[] = {
+    {"Kinect + lidar", 0.17, 0.05}, {"lidar only", 0.16, 0.20}, {"Kinect only", 0.12, 0.05}};
+
+bool is_lidar(const model::SensorLibrary& library, const model::Mount& mount) {
+  const model::Sensor* sensor = library.find(mount.sensor_id);
+  if (!sensor) return false;
+  return sensor->technology == model::Technology::lidar_2d ||
+         sensor->technology == model::Technology::lidar_3d_spinning ||
+         sensor->technology == model::Technology::solid_state_lidar;
+}
+
+std::string centimetres(double metres) {
+  return fixed(metres * 100.0, 1);
+}
+
+std::string critical_text(const scenarios::VariantOutcome& outcome,
+                          const scenarios::SweepSettings& settings) {
+  if (!outcome.skipped.empty()) return "-";
+  if (outcome.critical_distance) return centimetres(*outcome.critical_distance);
+  return "> " + centimetres(settings.margins.back());
+}
+
+std::string below_text(const scenarios::VariantOutcome& outcome) {
+  if (!outcome.skipped.empty()) return "skipped: cannot mark the costmap";
+  if (outcome.failures.empty()) return "-";
+  const scenarios::RunSummary& last = outcome.failures.back();
+  return "at " + centimetres(last.margin) + " cm seed " + std::to_string(last.seed) + " hit " +
+         last.collision_object + " (t " + fixed(last.collision_time, 1) + " s)";
+}
+
+nlohmann::json run_json(const scenarios::RunSummary& run) {
+  return {
+      {"seed", run.seed},
+      {"margin_m", run.margin},
+      {"collided", run.collided},
+      {"collision_object", run.collision_object},
+      {"collision_time_s", run.collided ? nlohmann::json(run.collision_time) : nlohmann::json()},
+      {"goals_reached", run.goals_reached},
+      {"goals_refused", run.goals_refused},
+      {"goals", run.goals},
+      {"average_speed_m_per_s", run.average_speed},
+      {"recovery_s", run.recovery_seconds},
+      {"recoveries", run.recoveries},
+      {"drove_off", run.drove_off},
+      {"drop", run.drop_name},
+      {"end_time_s", run.end_time}};
+}
+
+nlohmann::json outcome_json(const scenarios::VariantOutcome& outcome) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const scenarios::RunSummary& run : outcome.runs) runs.push_back(run_json(run));
+  nlohmann::json failures = nlohmann::json::array();
+  for (const scenarios::RunSummary& run : outcome.failures) failures.push_back(run_json(run));
+  const scenarios::VariantMeans means = scenarios::means_of(outcome.runs);
+  return {
+      {"variant", outcome.variant.label},
+      {"skipped", outcome.skipped},
+      {"critical_distance_m",
+       outcome.critical_distance ? nlohmann::json(*outcome.critical_distance) : nlohmann::json()},
+      {"mean_average_speed_m_per_s", means.average_speed},
+      {"mean_goals_reached", means.goals_reached},
+      {"mean_goals_refused", means.goals_refused},
+      {"mean_recovery_s", means.recovery_seconds},
+      {"drove_off_runs", means.drove_off},
+      {"runs_made", outcome.runs_made},
+      {"runs", runs},
+      {"collisions_below", failures}};
+}
+
+// Paper 2's qualitative outcome, for a rig of one lidar and one camera: the whole rig first,
+// then each mount alone (rig_variants' order for two mounts).
+void print_paper2_checks(std::ostream& out, const RigInputs& inputs,
+                         const std::vector<scenarios::VariantOutcome>& outcomes,
+                         const scenarios::SweepSettings& settings) {
+  const model::Rig& rig = inputs.rig;
+  if (rig.mounts.size() != 2 || outcomes.size() != 3) return;
+  const bool first_lidar = is_lidar(inputs.library, rig.mounts[0]);
+  if (first_lidar == is_lidar(inputs.library, rig.mounts[1])) return;
+  const scenarios::VariantOutcome& both = outcomes[0];
+  const scenarios::VariantOutcome& lidar = outcomes[first_lidar ? 1 : 2];
+  const scenarios::VariantOutcome& camera = outcomes[first_lidar ? 2 : 1];
+  if (!both.skipped.empty() || !lidar.skipped.empty() || !camera.skipped.empty()) return;
+  const double v_both = scenarios::means_of(both.runs).average_speed;
+  const double v_lidar = scenarios::means_of(lidar.runs).average_speed;
+  const double v_camera = scenarios::means_of(camera.runs).average_speed;
+  // A variant with no clear margin counts as beyond the largest tried.
+  const auto distance = [](const scenarios::VariantOutcome& o) {
+    return o.critical_distance.value_or(1e9);
+  };
+  const auto verdict = [](bool holds) { return holds ? "holds" : "does not hold"; };
+  out << "paper 2's qualitative outcome (lidar " << lidar.variant.label << ", camera "
+      << camera.variant.label << "):\n";
+  out << "  lidar only faster than camera only: " << verdict(v_lidar > v_camera) << " ("
+      << centimetres(v_lidar) << " vs " << centimetres(v_camera) << " cm/s)\n";
+  out << "  camera's critical distance smaller than the lidar's: "
+      << verdict(distance(camera) < distance(lidar)) << " (" << critical_text(camera, settings)
+      << " vs " << critical_text(lidar, settings) << " cm)\n";
+  out << "  both at least as fast as the faster alone: "
+      << verdict(v_both >= std::max(v_lidar, v_camera)) << " (" << centimetres(v_both) << " vs "
+      << centimetres(std::max(v_lidar, v_camera)) << " cm/s)\n";
+  const scenarios::VariantOutcome& closer = distance(lidar) <= distance(camera) ? lidar : camera;
+  out << "  both as close as the closer alone: " << verdict(distance(both) <= distance(closer))
+      << " (" << critical_text(both, settings) << " vs " << critical_text(closer, settings)
+      << " cm)\n";
+}
+
+}  // namespace
+
+void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs& inputs,
+                          const std::string& scenario_name, const scenarios::ScenarioParams& params,
+                          const scenarios::SweepSettings& settings, const std::string& folder) {
+  const std::vector<scenarios::RigVariant> variants = scenarios::rig_variants(inputs.rig);
+  std::string margins;
+  for (const double m : settings.margins)
+    margins += (margins.empty() ? "" : ", ") + model::format_number(m);
+  out << "rig variants, seeds " << settings.first_seed << " to "
+      << settings.first_seed + static_cast<std::uint64_t>(settings.seeds) - 1
+      << " each; critical distance: the smallest clearance margin (" << margins
+      << " m) at which no run collides; the table's means are over the runs at that margin\n";
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<scenarios::VariantOutcome> outcomes;
+  int runs = 0;
+  {
+    ProgressLine progress(err, "costmap variants", "runs");
+    for (const scenarios::RigVariant& variant : variants) {
+      progress.retitle("costmap variants: " + variant.label);
+      outcomes.push_back(scenarios::sweep_variant(
+          scenario_name, inputs.rig, inputs.library, params, variant, settings,
+          [&](const scenarios::RunSummary& run) {
+            ++runs;
+            progress.update(runs, static_cast<double>(variants.size()) * settings.seeds,
+                            "margin " + model::format_number(run.margin) + " m, seed " +
+                                std::to_string(run.seed));
+          }));
+    }
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  TextTable table;
+  table.add_column("variant", TextTable::Align::left);
+  table.add_column("critical distance [cm]", TextTable::Align::right);
+  table.add_column("avg speed [cm/s]", TextTable::Align::right);
+  table.add_column("goals reached", TextTable::Align::right);
+  table.add_column("refused", TextTable::Align::right);
+  table.add_column("recovery [s]", TextTable::Align::right);
+  table.add_column("drove off", TextTable::Align::right);
+  table.add_column("collision just below", TextTable::Align::left);
+  nlohmann::json json = nlohmann::json::array();
+  for (const scenarios::VariantOutcome& outcome : outcomes) {
+    const scenarios::VariantMeans means = scenarios::means_of(outcome.runs);
+    const std::string of =
+        outcome.runs.empty() ? "" : " of " + std::to_string(outcome.runs.front().goals);
+    const bool ran = outcome.skipped.empty();
+    table.add_row(
+        {outcome.variant.label, critical_text(outcome, settings),
+         ran ? centimetres(means.average_speed) : "-",
+         ran ? fixed(means.goals_reached, 2) + of : "-", ran ? fixed(means.goals_refused, 2) : "-",
+         ran ? fixed(means.recovery_seconds, 1) : "-",
+         ran ? std::to_string(means.drove_off) + "/" + std::to_string(outcome.runs.size()) : "-",
+         below_text(outcome)});
+    json.push_back(outcome_json(outcome));
+  }
+  table.print(out, "  ");
+  out << "paper 2, Table 1 (Elektron, SICK LMS100 270 deg + Kinect 57 deg, office and workshop, "
+         "20 repeats):\n";
+  TextTable paper;
+  paper.add_column("variant", TextTable::Align::left);
+  paper.add_column("critical distance [cm]", TextTable::Align::right);
+  paper.add_column("avg speed [cm/s]", TextTable::Align::right);
+  for (const PaperRow& row : kPaper2Table1) {
+    paper.add_row({row.variant, centimetres(row.critical_distance), centimetres(row.speed)});
+  }
+  paper.print(out, "  ");
+  print_paper2_checks(out, inputs, outcomes, settings);
+  int made = 0;
+  for (const scenarios::VariantOutcome& outcome : outcomes) made += outcome.runs_made;
+  out << "  " << made << " runs in " << fixed(seconds, 1) << " s on " << settings.threads
+      << " thread(s)\n";
+  io::write_file_atomically(folder + "/variants.json", json.dump(2) + "\n");
+  out << "  wrote " << folder << "/variants.json\n";
+}
+
+}  // namespace rigdesign::cli
