@@ -159,6 +159,12 @@ def other_seeds():
         b"        decay_model: 0\n        voxel_decay: 5.4\n        observation_sources: lidar\n"
         b"        lidar: {obstacle_range: 3.0, min_z: 0.1, max_z: 3.5, filter: passthrough,"
         b" min_obstacle_height: 0.05, max_obstacle_height: 1.2, model_type: 1}\n")
+    yield "scenario_yaml", "goals.scenario.yaml", (
+        b"name: goals\nscene: lab.yaml\nstart: {xy: [0, 0], yaw_deg: 90}\n"
+        b"route:\n  - {name: a, xy: [1, 2], wait: 1}\n"
+        b"drops:\n  - {name: well, low: [2, -1], high: [3, 1]}\n"
+        b"skip_unreachable: true\nmax_duration: 60\n"
+        b"sensing: {min_obstacle_height: 0.04, negative_obstacles: true, lidar_decimation: 1}\n")
     yield "pipeline_yaml", "pipeline.yaml", (
         b"name: mine\nstages:\n  - voxel_grid: {leaf: 0.05}\n  - statistical_outlier\n"
         b"  - floor_removal_2: {ransac: {max_tilt_deg: 10}}\n")

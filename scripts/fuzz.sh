@@ -13,7 +13,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build/fuzz"
-own_targets=(rig_yaml sensors_yaml requirements_yaml catalog_yaml policy_yaml scene_yaml
+own_targets=(rig_yaml sensors_yaml requirements_yaml catalog_yaml policy_yaml scene_yaml scenario_yaml
   pipeline_yaml costmap_params_yaml filtering_loads_yaml artifacts_json clearpath_robot_yaml
   collision_monitor_yaml
   cloud_pcd cloud_ply
@@ -41,7 +41,8 @@ bundled_seeds() {
     requirements_yaml) ls rigs/requirements/*.yaml ;;
     catalog_yaml) ls rigs/catalogs/*.yaml ;;
     policy_yaml) ls rigs/policies/*.yaml ;;
-    scene_yaml) ls rigs/scenes/*/*.yaml ;;
+    scene_yaml) ls rigs/scenes/*/*.yaml | grep -v "\.scenario\.yaml$" ;;
+    scenario_yaml) ls rigs/scenes/*/*.scenario.yaml ;;
     costmap_params_yaml) ls rigs/costmap/*.yaml ;;
     clearpath_robot_yaml) ls tests/data/clearpath/*.yaml ;;
     collision_monitor_yaml) ls tests/data/collision_monitor/*.yaml ;;

@@ -27,6 +27,7 @@
 #include "rigdesign/io/maps/map_files.hpp"
 #include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/output_folder.hpp"
+#include "rigdesign/io/scene/scenario_file_loader.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/idle_cores.hpp"
 #include "rigdesign/render/costmap_frame.hpp"
@@ -464,9 +465,11 @@ std::string window_text(const costmap::CostmapParams& costmap) {
 
 int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& err) {
   const std::vector<std::string>& names = scenarios::costmap_scenario_names();
-  require_option(std::find(names.begin(), names.end(), options.scenario) != names.end(),
-                 "--scenario", "unknown scenario '" + options.scenario + "'",
-                 "one of: " + joined(names));
+  const bool from_file = io::is_scenario_file(options.scenario);
+  require_option(
+      from_file || std::find(names.begin(), names.end(), options.scenario) != names.end(),
+      "--scenario", "unknown scenario '" + options.scenario + "'",
+      "one of: " + joined(names) + ", or a scenario file ending in .yaml");
   require_option(options.layer.empty() ||
                      model::value_in(costmap::kObstacleLayerNames, options.layer).has_value(),
                  "--layer", "unknown layer '" + options.layer + "'", "obstacle or voxel");
@@ -505,13 +508,25 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
                  "--local-planner", "is '" + options.local_planner + "'", "pure-pursuit or dwa");
   if (options.local_planner == "dwa") params.local_planner = scenarios::LocalPlanner::dwa;
   params.clearance_margin = options.clearance_margin;
+  // A scenario file is read once; a bundled one is laid out for each seed and the body.
+  std::optional<scenarios::ScenarioDefinition> from_disk;
+  if (from_file) from_disk = io::load_scenario_file(options.scenario);
+  const scenarios::ScenarioFactory make_scenario = [&](std::uint64_t seed, double radius) {
+    return from_disk ? *from_disk
+                     : scenarios::make_costmap_scenario(options.scenario, seed, radius);
+  };
   const scenarios::ScenarioDefinition scenario =
-      scenarios::make_costmap_scenario(options.scenario, options.seed, inputs.rig.body.radius);
+      make_scenario(options.seed, inputs.rig.body.radius);
   scenarios::apply_scenario_settings(scenario, params);
   if (options.full_rays) params.camera_decimation = params.lidar_decimation = 1;
   scenarios::check_scenario_inputs(inputs.rig, inputs.library, params);
 
-  const std::string folder = options.out.empty() ? "costmap/" + options.scenario : options.out;
+  // A file's stem names its default folder ("lab_goals.scenario"), never a path inside it.
+  const std::string folder =
+      !options.out.empty()
+          ? options.out
+          : "costmap/" + (from_file ? std::filesystem::path(options.scenario).stem().string()
+                                    : options.scenario);
   io::prepare_output_folder(folder, "--out");
   out << inputs.rig.name << " in scenario " << scenario.name << " (seed " << options.seed
       << "): " << scenario.description << "\n";
@@ -543,7 +558,7 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
     if (options.no_memory) forget_persistence(params);
     if (!options.layer.empty())
       params.costmap.layer = *model::value_in(costmap::kObstacleLayerNames, options.layer);
-    run_costmap_variants(out, err, inputs, options.scenario, params, settings, folder);
+    run_costmap_variants(out, err, inputs, make_scenario, params, settings, folder);
     return kOk;
   }
   const bool persistence = any_persistence(inputs.rig, params) && !options.no_memory;
@@ -589,7 +604,9 @@ Command setup_costmap(CLI::App& parent) {
                                         "costmap, planner and follower in the loop");
   app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
   app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
-  app->add_option("--scenario", options->scenario, "wall_following, stationary or office_goals")
+  app->add_option("--scenario", options->scenario,
+                  "wall_following, stationary, office_goals, or a scenario file (FILE.yaml: "
+                  "docs/costmap_scenarios.md)")
       ->required();
   app->add_option("--params", options->params,
                   "nav2 costmap parameter file (docs/costmap.md); options below override it");

@@ -129,7 +129,8 @@ void print_paper2_checks(std::ostream& out, const RigInputs& inputs,
 }  // namespace
 
 void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs& inputs,
-                          const std::string& scenario_name, const scenarios::ScenarioParams& params,
+                          const scenarios::ScenarioFactory& make_scenario,
+                          const scenarios::ScenarioParams& params,
                           const scenarios::SweepSettings& settings, const std::string& folder) {
   const std::vector<scenarios::RigVariant> variants = scenarios::rig_variants(inputs.rig);
   std::string margins;
@@ -147,7 +148,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
     for (const scenarios::RigVariant& variant : variants) {
       progress.retitle("costmap variants: " + variant.label);
       outcomes.push_back(scenarios::sweep_variant(
-          scenario_name, inputs.rig, inputs.library, params, variant, settings,
+          make_scenario, inputs.rig, inputs.library, params, variant, settings,
           [&](const scenarios::RunSummary& run) {
             ++runs;
             progress.update(runs, static_cast<double>(variants.size()) * settings.seeds,

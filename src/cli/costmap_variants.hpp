@@ -9,11 +9,12 @@
 
 namespace rigdesign::cli {
 
-/// Sweeps every variant of `inputs.rig` (scenarios::rig_variants) on `scenario_name`, prints
+/// Sweeps every variant of `inputs.rig` (scenarios::rig_variants) on the scenario, prints
 /// the table beside paper 2's, the qualitative checks for a rig of one lidar and one camera,
 /// and writes `folder`/variants.json. Progress on `err`.
 void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs& inputs,
-                          const std::string& scenario_name, const scenarios::ScenarioParams& params,
+                          const scenarios::ScenarioFactory& make_scenario,
+                          const scenarios::ScenarioParams& params,
                           const scenarios::SweepSettings& settings, const std::string& folder);
 
 }  // namespace rigdesign::cli

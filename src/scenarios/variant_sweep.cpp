@@ -17,7 +17,7 @@ std::string label_of(const model::Rig& rig, const std::vector<std::size_t>& moun
 
 // Seeds [first, first + count) at `margin`, `threads` at a time, in seed order; stops after
 // the first batch with a collision. Results in seed order.
-std::vector<RunSummary> run_seeds(const std::string& scenario_name, const model::Rig& rig,
+std::vector<RunSummary> run_seeds(const ScenarioFactory& make_scenario, const model::Rig& rig,
                                   const model::SensorLibrary& library, const ScenarioParams& params,
                                   double margin, const SweepSettings& settings,
                                   const std::function<void(const RunSummary&)>& on_run) {
@@ -34,8 +34,7 @@ std::vector<RunSummary> run_seeds(const std::string& scenario_name, const model:
         ScenarioParams run_params = params;
         run_params.seed = seed;
         run_params.clearance_margin = margin;
-        const ScenarioDefinition scenario =
-            make_costmap_scenario(scenario_name, seed, rig.body.radius);
+        const ScenarioDefinition scenario = make_scenario(seed, rig.body.radius);
         results[slot] =
             summarize_run(seed, margin, run_scenario(scenario, rig, library, run_params));
       } catch (...) {
@@ -116,7 +115,7 @@ RunSummary summarize_run(std::uint64_t seed, double margin, const ScenarioResult
   return run;
 }
 
-VariantOutcome sweep_variant(const std::string& scenario_name, const model::Rig& rig,
+VariantOutcome sweep_variant(const ScenarioFactory& make_scenario, const model::Rig& rig,
                              const model::SensorLibrary& library, const ScenarioParams& params,
                              const RigVariant& variant, const SweepSettings& settings,
                              const std::function<void(const RunSummary&)>& on_run) {
@@ -131,7 +130,7 @@ VariantOutcome sweep_variant(const std::string& scenario_name, const model::Rig&
   }
   for (const double margin : settings.margins) {
     std::vector<RunSummary> runs =
-        run_seeds(scenario_name, subset, library, params, margin, settings, on_run);
+        run_seeds(make_scenario, subset, library, params, margin, settings, on_run);
     outcome.runs_made += static_cast<int>(runs.size());
     const auto collision =
         std::find_if(runs.begin(), runs.end(), [](const RunSummary& r) { return r.collided; });

@@ -2,8 +2,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "rigdesign/io/maps/map_files.hpp"
 #include "support/cli_runner.hpp"
@@ -147,12 +147,47 @@ TEST_CASE("costmap: a window too large to simulate is refused at its line before
   params.replace(params.find("width: 6"), 8, "width: 1638");
   params.replace(params.find("height: 6\n"), 9, "height: 1638");
   const std::string path = folder.write("p.yaml", params);
-  const CliResult result = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"),
-                                    "--scenario", "stationary", "--params", path, "--out",
-                                    folder.path() + "/out"});
+  const CliResult result =
+      run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"), "--scenario", "stationary",
+               "--params", path, "--out", folder.path() + "/out"});
   INFO(result.err);
   CHECK(result.exit_code == 2);
   CHECK(result.err.find(path + ":" + std::to_string(width_line) + ":") == 0);
   CHECK(result.err.find("1.073e+09 cells") != std::string::npos);  // 32760^2
   CHECK(!std::filesystem::exists(folder.path() + "/out"));
+}
+
+TEST_CASE("costmap CLI: a scenario file of one's own, goal by goal, and its variants",
+          "[scenario]") {
+  TempFolder folder;
+  const std::string scenario = source_path("rigs/scenes/lab/lab_goals.scenario.yaml");
+  const std::string rig = source_path("rigs/cart_two_scanners.yaml");
+  const CliResult run = run_cli({"costmap", "--rig", rig, "--scenario", scenario, "--frame-every",
+                                 "0", "--out", folder.path() + "/run"});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.out.find("in scenario lab_goals") != std::string::npos);
+  CHECK(run.out.find(" of 3 reached") != std::string::npos);
+  CHECK(run.out.find("1. far corner: ") != std::string::npos);
+  const auto summary = nlohmann::json::parse(read_all(folder.path() + "/run/summary.json"));
+  CHECK(summary["goals"] == 3);
+  CHECK(summary["stops"].size() >= 1);
+  CHECK(summary["stops"][0]["name"] == "far corner");
+
+  const CliResult variants =
+      run_cli({"costmap", "--rig", rig, "--scenario", scenario, "--variants", "--seeds", "1",
+               "--margins", "0.1", "--frame-every", "0", "--out", folder.path() + "/variants"});
+  INFO(variants.err);
+  REQUIRE(variants.exit_code == 0);
+  const auto table = nlohmann::json::parse(read_all(folder.path() + "/variants/variants.json"));
+  REQUIRE(table.size() == 3);  // both scanners, then each alone
+  CHECK(table[0]["variant"].get<std::string>().find(" + ") != std::string::npos);
+  CHECK(variants.out.find("paper 2, Table 1") != std::string::npos);
+
+  const CliResult missing =
+      run_cli({"costmap", "--rig", rig, "--scenario", folder.path() + "/nowhere.yaml", "--out",
+               folder.path() + "/none"});
+  CHECK(missing.exit_code == 2);
+  CHECK(missing.err.find("nowhere.yaml") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(folder.path() + "/none"));
 }

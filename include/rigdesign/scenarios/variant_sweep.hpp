@@ -72,12 +72,16 @@ struct VariantOutcome {
   int runs_made = 0;  ///< all runs of the sweep
 };
 
-/// Runs scenario `scenario_name` with `variant`'s mounts: for each margin in order, seeds in
-/// order (params.seed and the scenario's layout both take the seed), stopping at a margin's
-/// first collision (the lowest colliding seed: runs go in seed-ordered batches of `threads`),
-/// until a margin runs every seed without collision. `on_run` is called after each run, from
-/// the calling thread. Deterministic for the settings, whatever the thread count.
-VariantOutcome sweep_variant(const std::string& scenario_name, const model::Rig& rig,
+/// Builds the scenario for a seed and a body radius [m] (make_costmap_scenario's arguments; a
+/// scenario file ignores them).
+using ScenarioFactory = std::function<ScenarioDefinition(std::uint64_t seed, double body_radius)>;
+
+/// Runs the scenario `make_scenario` builds with `variant`'s mounts: for each margin in order,
+/// seeds in order (params.seed and the scenario's layout both take the seed), stopping at a
+/// margin's first collision (the lowest colliding seed: runs go in seed-ordered batches of
+/// `threads`), until a margin runs every seed without collision. `on_run` is called after each run,
+/// from the calling thread. Deterministic for the settings, whatever the thread count.
+VariantOutcome sweep_variant(const ScenarioFactory& make_scenario, const model::Rig& rig,
                              const model::SensorLibrary& library, const ScenarioParams& params,
                              const RigVariant& variant, const SweepSettings& settings,
                              const std::function<void(const RunSummary&)>& on_run = {});

@@ -186,9 +186,14 @@ model::Scene load_scene_file(const std::string& yaml_path) {
     const auto mesh = meshes.read(object);
     const Eigen::Affine3d T_object_mesh = read_placement(object);
     std::function<model::Pose3(double)> T_world_object = read_motion(object);
+    const double gives_way =
+        object.has("gives_way_within")
+            ? io::non_negative(object, "gives_way_within", Need::required, "metres, >= 0")
+            : 0.0;
     object.reject_unknown_keys();
     if (mesh) {
-      scene.moving.push_back({std::move(name), placed(*mesh, T_object_mesh), T_world_object});
+      scene.moving.push_back(
+          {std::move(name), placed(*mesh, T_object_mesh), T_world_object, gives_way});
     }
   }
   if (declared == 0 && !diagnostics.has_errors()) {
