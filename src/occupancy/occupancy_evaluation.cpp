@@ -10,6 +10,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "rigdesign/occupancy/occupancy_actor_points.hpp"
+#include "rigdesign/occupancy/occupancy_hull_region.hpp"
 #include "rigdesign/occupancy/occupancy_trail.hpp"
 #include "rigdesign/sim/decimation.hpp"
 #include "rigdesign/sim/noise_stream.hpp"
@@ -62,6 +64,25 @@ std::vector<costmap::VoxelKey> near_object(const std::vector<costmap::VoxelKey>&
     near.push_back(key);
   }
   return near;
+}
+
+// Paper 3's candidates: the shown voxels in the truth, and those whose centre lies within half a
+// voxel side of the hull of the object's points; static scenery left out.
+std::vector<costmap::VoxelKey> in_hull(const std::vector<costmap::VoxelKey>& predicted,
+                                       const LatticeTruth& truth, const HullRegion& hull) {
+  const VoxelLattice& lattice = truth.lattice;
+  const double grow = 0.5 * std::min(lattice.resolution, lattice.z_resolution);
+  std::vector<costmap::VoxelKey> inside;
+  for (const costmap::VoxelKey& key : predicted) {
+    if (std::binary_search(truth.scenery.begin(), truth.scenery.end(), key)) continue;
+    const model::Vec3 centre((key.x + 0.5) * lattice.resolution, (key.y + 0.5) * lattice.resolution,
+                             lattice.z_min + (key.z + 0.5) * lattice.z_resolution);
+    if (std::binary_search(truth.object.begin(), truth.object.end(), key) ||
+        hull.contains(centre, grow)) {
+      inside.push_back(key);
+    }
+  }
+  return inside;
 }
 
 // Per mapper: the running state of its whole-window measures.
@@ -172,8 +193,24 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
     odometer.record(t, T_world_object.translation().head<2>());
     model::TriangleMesh object_now;
     object_now.append(object.mesh, T_world_object);
+    std::vector<model::Vec3> seen_on_object;
+    if (params.truth == TruthKind::sensor_points) {
+      Eigen::AlignedBox3d box;
+      for (const model::Vec3& v : object_now.vertices) box.extend(v);
+      const sim::RayCaster object_caster(object_now);
+      for (const model::PointCloud& cloud : clouds) {
+        const std::vector<model::Vec3> on_object =
+            actor_points(cloud, caster, object_caster, box, params.truth_reach);
+        seen_on_object.insert(seen_on_object.end(), on_object.begin(), on_object.end());
+      }
+    }
+    std::vector<model::Vec3> hull_points = seen_on_object;
+    if (params.truth == TruthKind::mesh_surface) hull_points = object_now.vertices;
+    const HullRegion hull(hull_points);
     for (LatticeTruth& truth : truths) {
-      truth.object = voxelise_surface(object_now, truth.lattice, params.min_height);
+      truth.object = params.truth == TruthKind::sensor_points
+                         ? voxelise_points(seen_on_object, truth.lattice, params.min_height)
+                         : voxelise_surface(object_now, truth.lattice, params.min_height);
       // Only the object's voxels can be misses, so only marking points inside its x span count.
       truth.seen.clear();
       if (!truth.object.empty()) {
@@ -205,8 +242,10 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
       frame.update_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const std::vector<costmap::VoxelKey> predicted = mappers[m]->occupied();
-      frame.object =
-          compare_voxel_sets(near_object(predicted, truth, params.object_margin), truth.object);
+      frame.object = compare_voxel_sets(params.region == ScoringRegion::hull
+                                            ? in_hull(predicted, truth, hull)
+                                            : near_object(predicted, truth, params.object_margin),
+                                        truth.object);
       frame.misses = split_misses(predicted, truth.object, truth.seen);
       const std::vector<std::uint8_t> shown = column_mask(predicted, truth.window);
       const TrailFrame trail = tracking[m].trail.record(t, truth.columns, shown);

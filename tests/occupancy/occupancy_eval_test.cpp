@@ -117,6 +117,10 @@ TEST_CASE("frames split into the moving and the standing phase", "[occupancy]") 
   params.rate = 2.0;
   params.duration = 4.0;
   params.moving_until = 1.0;
+  // No sensor here: the box's mesh surface is the truth (paper 3's sensor-point truth would be
+  // empty, checked at the end) and the earlier box + margin region counts false positives.
+  params.truth = occupancy::TruthKind::mesh_surface;
+  params.region = occupancy::ScoringRegion::box_margin;
   const auto runs = occupancy::evaluate_occupancy(sliding_box_scene(), {}, mappers, params);
   REQUIRE(runs.size() == 1u);
   // Frames at 0, 0.5 (moving) and 1.0 .. 3.5 (standing).
@@ -135,6 +139,15 @@ TEST_CASE("frames split into the moving and the standing phase", "[occupancy]") 
   // No sensor: every miss is "never seen".
   CHECK(runs[0].all.seen_not_kept == 0u);
   CHECK(runs[0].all.never_seen > 0u);
+  // Paper 3's truth is what the sensors saw of the box: with none, nothing to recall.
+  FixedMapper unseen;
+  occupancy::OccupancyMapper* unseen_mappers[] = {&unseen};
+  params.truth = occupancy::TruthKind::sensor_points;
+  params.region = occupancy::ScoringRegion::hull;
+  const auto paper3 =
+      occupancy::evaluate_occupancy(sliding_box_scene(), {}, unseen_mappers, params);
+  CHECK(std::isnan(paper3[0].all.object.recall));
+  CHECK(paper3[0].all.never_seen == 0u);
 }
 
 TEST_CASE("a scene without a moving object cannot be scored", "[occupancy]") {

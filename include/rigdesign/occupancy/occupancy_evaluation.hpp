@@ -33,6 +33,26 @@ struct CellSensor {
 /// is the cell (world) frame. Every mount's sensor and mode must be in `library`.
 std::vector<CellSensor> cell_sensors(const model::Rig& rig, const model::SensorLibrary& library);
 
+/// What the scored object's truth voxels are.
+enum class TruthKind {
+  /// Paper 3 (section III-B): the object's points in the sensors' own clouds, voxelised
+  /// (occupancy_actor_points.hpp): what the sensors saw of it this frame.
+  sensor_points,
+  /// The voxels of the object's whole mesh surface, its unseen back included: the project's
+  /// earlier truth, kept as a labelled alternative (a miss there may be a coverage gap).
+  mesh_surface,
+};
+
+/// Where a shown voxel that is not in the truth counts as a false positive.
+enum class ScoringRegion {
+  /// Paper 3 (section III-C): inside the convex hull of the object's points (its truth points:
+  /// the sensors' points on it, or its mesh's vertices with TruthKind::mesh_surface), a voxel
+  /// counted when its centre lies within half a voxel side of the hull.
+  hull,
+  /// The project's earlier region: within object_margin (x, y) of the truth voxels' box.
+  box_margin,
+};
+
 struct OccupancyEvalParams {
   double rate = 5.0;       ///< [Hz] frames per second; every sensor records each frame
   double duration = 96.0;  ///< [s] paper 3: two laps of the ellipse in about 96 s
@@ -41,6 +61,11 @@ struct OccupancyEvalParams {
   double moving_until = 48.0;
   std::uint64_t seed = 1;      ///< range noise; each sensor draws from (seed, sensor index)
   double object_margin = 0.3;  ///< [m] paper 3's neighbourhood of the object, in x and y
+  TruthKind truth = TruthKind::sensor_points;
+  ScoringRegion region = ScoringRegion::hull;
+  /// [m] how far from the object's box a point may lie and still be re-cast as the object's:
+  /// 5 sigma of the cell's noisiest sensors (3 cm), since noise moves points along their rays.
+  double truth_reach = 0.15;
   /// [m] truth voxels start here; set the mappers' min_obstacle_height to the same. 0.1 m is
   /// 3 sigma of the cell's noisiest lidars (3 cm): lower, and noisy floor returns mark ghosts.
   double min_height = 0.1;
