@@ -403,11 +403,8 @@ std::vector<scenarios::MountTiming> timings_of(const RigInputs& inputs,
   std::vector<scenarios::MountTiming> timings;
   for (const model::Mount& mount : inputs.rig.mounts) {
     const model::SensorMode& mode = inputs.library.resolved_mode(mount.sensor_id, mount.mode_id);
-    const model::FilteringLoad* measured =
-        params.filtering_loads ? params.filtering_loads->find(mount.sensor_id) : nullptr;
-    timings.push_back(scenarios::mount_timing(
-        mount, mode, measured ? measured->seconds_per_point : params.filtering_seconds_per_point,
-        0.0));
+    timings.push_back(
+        scenarios::mount_timing(mount, mode, params.seconds_per_point(mount.sensor_id), 0.0));
   }
   return timings;
 }

@@ -45,10 +45,7 @@ Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
     const model::Sensor* sensor = library.find(mount.sensor_id);
     const model::SensorMode* mode = sensor ? sensor->find_mode(mount.mode_id) : nullptr;
     if (!mode) continue;
-    const model::FilteringLoad* measured =
-        params.filtering_loads ? params.filtering_loads->find(mount.sensor_id) : nullptr;
-    const double per_point =
-        measured ? measured->seconds_per_point : params.filtering_seconds_per_point;
+    const double per_point = params.seconds_per_point(mount.sensor_id);
     SimulatedMount simulated{
         mount,
         sim::decimated_mode(*mode, params.camera_decimation, params.lidar_decimation),
@@ -93,6 +90,12 @@ namespace {
 constexpr double kMaxSimulatedCells = 1e6;
 
 }  // namespace
+
+double ScenarioParams::seconds_per_point(const std::string& sensor_id) const {
+  const model::FilteringLoad* measured =
+      filtering_loads ? filtering_loads->find(sensor_id) : nullptr;
+  return measured ? measured->seconds_per_point : filtering_seconds_per_point;
+}
 
 std::vector<costmap::ObservationSource> mount_sources_of(const model::Rig& rig,
                                                          const ScenarioParams& params) {

@@ -71,6 +71,9 @@ struct ScenarioParams {
   /// many core-seconds per point, or the sensor's measured figure in `filtering_loads`.
   double filtering_seconds_per_point = kPaperFilteringSecondsPerPoint;
   const model::FilteringLoads* filtering_loads = nullptr;
+  /// The filters' core-seconds per point for a sensor: its measured figure in
+  /// `filtering_loads`, else `filtering_seconds_per_point`.
+  double seconds_per_point(const std::string& sensor_id) const;
   /// [s] each mount's first capture, in mount order; empty: drawn from the seed.
   std::vector<double> frame_phases;
   /// [m] added to the body's radius where the costmap inflates (nav2's footprint_padding): how
