@@ -17,7 +17,6 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 only="${1:-}"
 "$root/scripts/setup.sh" >&2
 if [ -z "$only" ] || [ "$only" = "filters" ]; then "$root/scripts/install-pcl.sh" >&2; fi
-if [ -z "$only" ] || [ "$only" = "occupancy" ]; then "$root/scripts/install-octomap.sh" >&2; fi
 build="$root/build/bench"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRIGDESIGN_BUILD_TESTS=OFF \
   -DRIGDESIGN_BUILD_BENCHMARKS=ON -DRIGDESIGN_UNITY_BUILD=ON >/dev/null

@@ -17,6 +17,7 @@ packages=(
   libsdformat-dev                        # tests: Gazebo's own SDF parser reads the exported sensors
   libtinyxml2-dev                        # xacro robot descriptions, parsed with line numbers
   libassimp-dev                          # collision meshes of robot descriptions (STL, COLLADA, OBJ)
+  liboctomap-dev                         # paper 3's OctoMap in `occupancy --sweep octomap:*`
   python3                                # an independent XML parser for the JUnit test; fuzz seeds
   python3-yaml                           # an independent YAML parser for the exported files (tests)
   clang libclang-rt-14-dev               # libFuzzer and its runtime for the fuzz targets (fuzz/)

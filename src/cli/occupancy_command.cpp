@@ -15,6 +15,7 @@
 #include "command.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
+#include "occupancy_paper3_report.hpp"
 #include "progress_line.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/nav2/costmap_params_reader.hpp"
@@ -44,8 +45,10 @@ struct OccupancyOptions {
   double robot_radius = 0.3;
   // [m] 3 sigma of the cell's noisiest lidars (3 cm): lower, and floor returns mark ghosts.
   double min_height = 0.1;
-  std::string truth = "points";  // paper 3's sensor points, or the mesh's whole surface
-  std::string region = "hull";   // paper 3's convex hull, or the box + object margin
+  std::string truth = "points";     // paper 3's sensor points, or the mesh's whole surface
+  std::string region = "hull";      // paper 3's convex hull, or the box + object margin
+  std::vector<std::string> sweeps;  // paper 3's sweeps; empty: the voxels x persistence grid
+  int threads = 2;
   std::string out;
   bool json = false;
 };
@@ -263,11 +266,28 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
   if (!options.params.empty()) apply_params_file(options.params, base);
   const std::vector<occupancy::PersistenceSetting> persistence =
       persistence_named(options.persistence, base.hit);
-  const std::vector<occupancy::VoxelMapperParams> grid =
-      occupancy::sweep_grid(options.voxels, persistence, base);
-  const auto owned = occupancy::make_sweep_mappers(grid, model::SourceLocation{"(command line)"});
+  // Paper 3's sweeps replace the grid by their mappers (each distinct setting once) and our
+  // voxel layer at 0.1 m, without and with the Hit Layer, as additional rows.
+  const std::vector<double> tenth = {0.1};
+  const std::vector<occupancy::VoxelMapperParams> grid = occupancy::sweep_grid(
+      options.sweeps.empty() ? std::span<const double>(options.voxels) : tenth,
+      options.sweeps.empty() ? persistence : persistence_named("paper", base.hit), base);
+  auto owned = occupancy::make_sweep_mappers(grid, model::SourceLocation{"(command line)"});
+  std::vector<std::string> extra;
+  for (const auto& mapper : owned) extra.push_back(mapper->name());
+  const std::vector<occupancy::Paper3Sweep> sweeps = paper3_sweeps_named(
+      options.sweeps, occupancy::Paper3Common{options.min_height, base.z_max, params.window_size});
+  for (const occupancy::Paper3Sweep& sweep : sweeps) {
+    for (const occupancy::Paper3Setting& row : sweep.rows) {
+      const std::string name = occupancy::paper3_mapper_name(row);
+      if (std::none_of(owned.begin(), owned.end(),
+                       [&](const auto& m) { return m->name() == name; }))
+        owned.push_back(occupancy::make_paper3_mapper(row, sensors));
+    }
+  }
   std::vector<occupancy::OccupancyMapper*> mappers;
   for (const auto& mapper : owned) mappers.push_back(mapper.get());
+  params.threads = options.threads;
   ProgressLine progress(err, "occupancy: " + std::to_string(mappers.size()) + " mapper(s)",
                         "frames");
   params.progress = [&progress](double done, double total) { progress.update(done, total); };
@@ -285,12 +305,15 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
                            {"false_positive_region", region_label(params)},
                            {"runs", nlohmann::json::array()}};
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    points.push_back(
-        {model::format_number(grid[i].voxel, 3) + " m, " + occupancy::persistence_label(grid[i]),
-         runs[i].all.object.f2, runs[i].all.ghost_area, runs[i].all.update_ms});
+    const bool ours = i < grid.size();
+    points.push_back({ours ? model::format_number(grid[i].voxel, 3) + " m, " +
+                                 occupancy::persistence_label(grid[i])
+                           : runs[i].mapper,
+                      runs[i].all.object.f2, runs[i].all.ghost_area, runs[i].all.update_ms});
     report["runs"].push_back({{"mapper", runs[i].mapper},
-                              {"voxel_m", grid[i].voxel},
-                              {"persistence", occupancy::persistence_label(grid[i])},
+                              {"voxel_m", runs[i].resolution},
+                              {"persistence", ours ? occupancy::persistence_label(grid[i]) : "-"},
+                              {"memory_bytes", runs[i].memory_bytes},
                               {"all", phase_json(runs[i].all)},
                               {"moving", phase_json(runs[i].moving)},
                               {"stationary", phase_json(runs[i].stationary)},
@@ -298,6 +321,7 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
                               {"missed_marks", runs[i].missed_marks},
                               {"missed_clears", runs[i].missed_clears}});
   }
+  if (!sweeps.empty()) report["paper3"] = paper3_report_json(sweeps, runs);
   if (!options.out.empty()) {
     const std::filesystem::path folder(options.out);
     io::write_file_atomically((folder / "occupancy_frames.csv").string(), frames_csv(runs));
@@ -315,7 +339,13 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
       << model::format_number(options.moving_until, 4) << " s\n"
       << "truth: " << truth_label(params.truth) << "\n"
       << "false positives counted " << region_label(params) << "\n\n";
-  print_tables(runs, grid, out);
+  if (sweeps.empty()) {
+    print_tables(runs, grid, out);
+  } else {
+    out << "paper 3's sweeps: every setting once, " << runs.size()
+        << " mappers on the same frames\n";
+    print_paper3_report(sweeps, runs, extra, out);
+  }
   out << "\nPareto-optimal (F2 up, ghost area down, ms per update down):";
   for (const std::size_t i : render::pareto_front(points)) out << "\n  " << points[i].label;
   out << '\n';
@@ -370,6 +400,16 @@ Command setup_occupancy(CLI::App& parent) {
                   "hull: false positives inside the convex hull of the person's truth points "
                   "(paper 3, default); margin: within 0.3 m of the truth's box")
       ->check(CLI::IsMember({"hull", "margin"}));
+  std::vector<std::string> sweep_names = occupancy::paper3_sweep_names();
+  sweep_names.push_back("paper3");
+  app->add_option("--sweep", options->sweeps,
+                  "Paper 3's sweeps beside its numbers (repeatable): octomap:resolution|hit|miss, "
+                  "skimap:resolution|min_weight, voxblox:resolution|truncation|const_weight, or "
+                  "paper3 for all; replaces --voxels/--persistence")
+      ->check(CLI::IsMember(sweep_names));
+  app->add_option("--threads", options->threads,
+                  "Mappers updated at once within a frame (default 2; results do not depend on it)")
+      ->check(finite_in(1, 64, "1 to 64 threads"));
   app->add_option("--seed", options->seed, "Seed of the range noise (default 1)");
   app->add_option("--out", options->out,
                   "Folder for occupancy_frames.csv, occupancy_summary.json, occupancy_pareto.png "

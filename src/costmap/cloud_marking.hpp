@@ -4,7 +4,7 @@
 // apply the same rules (ObservationSource::marks, the raytrace range).
 #include <optional>
 
-#include "grid_traversal.hpp"
+#include "rigdesign/costmap/grid_traversal.hpp"
 #include "rigdesign/costmap/observation.hpp"
 
 namespace rigdesign::costmap::detail {

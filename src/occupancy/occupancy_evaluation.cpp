@@ -10,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "rigdesign/model/parallel_for.hpp"
 #include "rigdesign/occupancy/occupancy_actor_points.hpp"
 #include "rigdesign/occupancy/occupancy_hull_region.hpp"
 #include "rigdesign/occupancy/occupancy_trail.hpp"
@@ -231,7 +232,8 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
       truth.columns = column_mask(all, truth.window);
       truth.dilated = dilate_mask(truth.columns, truth.window, params.robot_radius);
     }
-    for (std::size_t m = 0; m < mappers.size(); ++m) {
+    // Each mapper's update and scores touch only its own state and run's slot.
+    model::parallel_for(mappers.size(), params.threads, [&](std::size_t m) {
       const LatticeTruth& truth = truths[truth_of[m]];
       OccupancyFrame frame;
       frame.time = t;
@@ -276,7 +278,7 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
         frame.master_ghost_area = ghost_area(blocked, truth.dilated, truth.window.resolution);
       }
       runs[m].frames.push_back(frame);
-    }
+    });
     if (params.progress) params.progress(k + 1, frames);
   }
   for (std::size_t m = 0; m < mappers.size(); ++m) {
@@ -298,6 +300,7 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
     run.pending_changes = tracking[m].delays.pending();
     run.missed_marks = tracking[m].delays.missed_marks();
     run.missed_clears = tracking[m].delays.missed_clears();
+    run.memory_bytes = mappers[m]->memory_bytes();
   }
   return runs;
 }

@@ -78,6 +78,12 @@ class VoxelMapper final : public OccupancyMapper {
     return keys;
   }
 
+  // The voxel grid (a byte per voxel), the hit counts and the master grid (a byte per cell).
+  std::size_t memory_bytes() const override {
+    return costmap_.voxel_layer().grid().voxels().size() + counts_.size() * sizeof(std::uint16_t) +
+           costmap_.master().window().size();
+  }
+
   std::vector<std::uint8_t> blocked_cells(const costmap::GridWindow& window) const override {
     const costmap::CostGrid& master = costmap_.master();
     std::vector<std::uint8_t> blocked(window.size(), 0);

@@ -1,8 +1,8 @@
-// Issue 6, item 6: our voxel layer against OctoMap 1.9 (Debian's liboctomap-dev, default
-// probabilities, 0.1 m) on the same simulated frames of paper 3's cell, same process, one
-// thread: paper 3's scores near the person, the whole-cell ghost area and trail, and insertion
-// throughput on the same rays. Built only when liboctomap-dev is present
-// (scripts/install-octomap.sh). Usage: occupancy_vs_octomap_bench [duration_s [rate_hz]].
+// Issue 6, item 6: our voxel layer against OctoMap 1.9 (Debian's liboctomap-dev, its library
+// defaults and paper 3's hit 1, 0.1 m) on the same simulated frames of paper 3's cell, same
+// process, one thread: paper 3's scores near the person, the whole-cell ghost area and trail,
+// and insertion throughput on the same rays.
+// Usage: occupancy_vs_octomap_bench [duration_s [rate_hz]].
 #include <octomap/octomap.h>
 
 #include <algorithm>
@@ -19,6 +19,7 @@
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/occupancy/occupancy_evaluation.hpp"
+#include "rigdesign/occupancy/octomap_mapper.hpp"
 #include "rigdesign/occupancy/occupancy_sweep.hpp"
 #include "rigdesign/sim/ray_caster.hpp"
 #include "rigdesign/sim/scene_library.hpp"
@@ -30,70 +31,6 @@ using namespace rigdesign;
 
 constexpr double kResolution = 0.1;  // [m] paper 3's OctoMap row in DESIGN.md
 constexpr double kMinHeight = 0.1;   // [m] as `rigdesign occupancy`'s default
-constexpr double kZMax = 2.0;        // [m] the scored band
-
-// OctoMap with its defaults (hit 0.7, miss 0.4, clamping 0.12/0.97, threshold 0.5). Points
-// below kMinHeight clear along their rays but do not mark, as octomap_server treats ground
-// points, so both mappers mark exactly the same end points.
-class OctoMapMapper final : public occupancy::OccupancyMapper {
- public:
-  std::string name() const override { return "OctoMap 0.1 m (defaults)"; }
-  occupancy::VoxelLattice lattice() const override {
-    return {kResolution, kResolution, 0.0, kZMax};
-  }
-
-  void update(double, std::span<const model::PointCloud> clouds, bool) override {
-    for (const model::PointCloud& cloud : clouds) {
-      const octomap::point3d origin(cloud.origin.x(), cloud.origin.y(), cloud.origin.z());
-      octomap::Pointcloud marking;
-      octomap::KeySet free_cells, occupied_cells;
-      octomap::KeyRay ray;
-      std::vector<octomap::point3d> ground;
-      for (const model::Point3f& p : cloud.points) {
-        if (p.z() >= kMinHeight) {
-          marking.push_back(p.x(), p.y(), p.z());
-        } else {
-          ground.emplace_back(p.x(), p.y(), p.z());
-        }
-      }
-      tree_.computeUpdate(marking, origin, free_cells, occupied_cells, -1.0);
-      for (const octomap::point3d& end : ground) {
-        if (!tree_.computeRayKeys(origin, end, ray)) continue;
-        for (const octomap::OcTreeKey& key : ray) free_cells.insert(key);
-      }
-      for (const octomap::OcTreeKey& key : free_cells) {
-        if (occupied_cells.find(key) == occupied_cells.end()) tree_.updateNode(key, false);
-      }
-      for (const octomap::OcTreeKey& key : occupied_cells) tree_.updateNode(key, true);
-    }
-  }
-
-  std::vector<costmap::VoxelKey> occupied() const override {
-    std::vector<costmap::VoxelKey> keys;
-    for (auto it = tree_.begin_leafs(), end = tree_.end_leafs(); it != end; ++it) {
-      if (!tree_.isNodeOccupied(*it)) continue;
-      // A pruned leaf covers several voxels: expand it into its voxel centres.
-      const double size = it.getSize();
-      const int n = static_cast<int>(std::lround(size / kResolution));
-      const octomap::point3d c = it.getCoordinate();
-      for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-          for (int k = 0; k < n; ++k) {
-            const model::Vec3 p(c.x() - size / 2 + (i + 0.5) * kResolution,
-                                c.y() - size / 2 + (j + 0.5) * kResolution,
-                                c.z() - size / 2 + (k + 0.5) * kResolution);
-            if (p.z() < 0.0 || p.z() >= kZMax) continue;
-            keys.push_back(lattice().key_at(p));
-          }
-        }
-      }
-    }
-    return keys;
-  }
-
- private:
-  octomap::OcTree tree_{kResolution};
-};
 
 std::string cell(double value, int decimals) {
   if (std::isnan(value)) return "-";
@@ -228,8 +165,15 @@ int main(int argc, char** argv) {
       grid.push_back(params);
   }
   auto ours = occupancy::make_sweep_mappers(grid, model::SourceLocation{"(bench)"});
-  OctoMapMapper octomap_mapper;
-  std::vector<occupancy::OccupancyMapper*> mappers = {&octomap_mapper};
+  // OctoMap with its library defaults (hit 0.7, miss 0.4, clamps 0.1192 / 0.971) and as paper 3
+  // ran it (hit 1, octomap_server's clamps 0.12 / 0.97).
+  occupancy::OctoMapParams library_defaults;
+  library_defaults.hit = 0.7;
+  library_defaults.clamp_min = 0.1192;
+  library_defaults.clamp_max = 0.971;
+  const auto octomap_defaults = occupancy::make_octomap_mapper(library_defaults);
+  const auto octomap_paper = occupancy::make_octomap_mapper({});
+  std::vector<occupancy::OccupancyMapper*> mappers = {octomap_defaults.get(), octomap_paper.get()};
   for (const auto& mapper : ours) mappers.push_back(mapper.get());
   occupancy::OccupancyEvalParams params;
   params.duration = duration;

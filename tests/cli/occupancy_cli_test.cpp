@@ -77,10 +77,26 @@ TEST_CASE("occupancy --params: the file's Hit Layer is the one --persistence pap
                                           "hit_layer:\n"
                                           "  hit: 2\n"
                                           "  hit_max: 40\n");
-  const CliResult result = run_cli(
-      {"occupancy", "--rig", source_path("rigs/cell.yaml"), "--scene", "cell", "--duration",
-       "0.4", "--moving-until", "0.2", "--voxels", "0.2", "--persistence", "paper",
-       "--camera-stride", "8", "--params", params, "--json", "--out", folder.path() + "/occ"});
+  const CliResult result = run_cli({"occupancy",
+                                    "--rig",
+                                    source_path("rigs/cell.yaml"),
+                                    "--scene",
+                                    "cell",
+                                    "--duration",
+                                    "0.4",
+                                    "--moving-until",
+                                    "0.2",
+                                    "--voxels",
+                                    "0.2",
+                                    "--persistence",
+                                    "paper",
+                                    "--camera-stride",
+                                    "8",
+                                    "--params",
+                                    params,
+                                    "--json",
+                                    "--out",
+                                    folder.path() + "/occ"});
   INFO(result.out << result.err);
   REQUIRE(result.exit_code == 0);
   // The label names the counts the file gives, not paper 1's 3/1500.
@@ -93,4 +109,41 @@ TEST_CASE("occupancy --params: the file's Hit Layer is the one --persistence pap
   CHECK(refused.exit_code == 2);
   CHECK(refused.err.find(bad + ":3") != std::string::npos);
   CHECK(refused.err.find("hit_layer.hit_max") != std::string::npos);
+}
+
+TEST_CASE("occupancy --sweep: paper 3's rows beside ours, its trends, speed and memory",
+          "[occupancy]") {
+  const CliResult result =
+      run_cli({"occupancy", source_path("rigs/cell.yaml"), "--duration", "0.4", "--camera-stride",
+               "4", "--sweep", "octomap:hit", "--sweep", "skimap:min_weight", "--json"});
+  INFO(result.err);
+  REQUIRE(result.exit_code == 0);
+  const nlohmann::json report = nlohmann::json::parse(result.out);
+  const nlohmann::json& sweeps = report["paper3"]["sweeps"];
+  REQUIRE(sweeps.size() == 2);
+  // Paper 3's Tab. 3 and Tab. 6 as ../shared/DESIGN.md section 9 prints them.
+  CHECK(sweeps[0]["name"] == "octomap:hit");
+  REQUIRE(sweeps[0]["rows"].size() == 3);
+  CHECK(sweeps[0]["rows"][1]["setting"] == "0.7");
+  CHECK(sweeps[0]["rows"][1]["paper"]["precision"].get<double>() == Approx(0.675));
+  CHECK(sweeps[0]["rows"][1]["paper"]["recall"].get<double>() == Approx(0.218));
+  CHECK(sweeps[0]["rows"][1]["mapper"] == "OctoMap 0.1 m, hit 0.7, miss 0.4");
+  CHECK(sweeps[1]["rows"][2]["setting"] == "10");
+  CHECK(sweeps[1]["rows"][2]["paper"]["f1"].get<double>() == Approx(0.580));
+  CHECK(sweeps[1]["rows"][2]["mapper"] == "SkiMap 0.1 m, min weight 10");
+  // Every row has its own run with a memory figure; the 3 + 3 settings and our two voxel-layer
+  // rows are 8 mappers.
+  CHECK(report["runs"].size() == 8);
+  for (const nlohmann::json& run : report["runs"]) CHECK(run["memory_bytes"].get<double>() > 0);
+  // The hit trend and SkiMap's trail are judged on this run; the paper's side holds.
+  const nlohmann::json& trends = report["paper3"]["trends"];
+  REQUIRE(trends.size() == 2);
+  for (const nlohmann::json& trend : trends) CHECK(trend["holds_in_paper"] == true);
+}
+
+TEST_CASE("occupancy --sweep refuses an unknown sweep with exit code 2", "[occupancy]") {
+  const CliResult result =
+      run_cli({"occupancy", source_path("rigs/cell.yaml"), "--sweep", "octomap:gain"});
+  CHECK(result.exit_code == 2);
+  CHECK(result.err.find("--sweep") != std::string::npos);
 }

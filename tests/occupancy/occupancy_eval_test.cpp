@@ -96,6 +96,7 @@ class FixedMapper final : public occupancy::OccupancyMapper {
     flags.push_back(robot_moving);
   }
   std::vector<costmap::VoxelKey> occupied() const override { return {{4, 4, 1}}; }
+  std::size_t memory_bytes() const override { return sizeof(costmap::VoxelKey); }
   std::vector<bool> flags;
 };
 

@@ -74,6 +74,8 @@ struct OccupancyEvalParams {
   /// sim::decimated_mode's camera stride (1: every pixel): ray casting a full camera frame is
   /// the evaluation's slowest step. Lidars are never decimated.
   int camera_stride = 1;
+  /// Mappers updated and scored at once within a frame (their results do not depend on it).
+  int threads = 1;
   /// Called after every frame with (frames done, frames in all).
   model::ProgressCallback progress;
 };
@@ -124,6 +126,7 @@ struct OccupancyRun {
   std::size_t pending_changes = 0;  ///< truth changes the grid had not followed at the end
   std::size_t missed_marks = 0;
   std::size_t missed_clears = 0;
+  std::size_t memory_bytes = 0;  ///< the mapper's storage after the last frame
 };
 
 /// Runs every mapper on the same frames of `scene` (its first moving object is the scored

@@ -28,6 +28,9 @@ class OccupancyMapper {
                       bool robot_moving) = 0;
   /// The voxels shown occupied now.
   virtual std::vector<costmap::VoxelKey> occupied() const = 0;
+  /// [bytes] the map's own storage now (its voxels, counts and grids; not the scratch space
+  /// of an update): what the comparison reports as memory at the end of the run.
+  virtual std::size_t memory_bytes() const = 0;
   /// The planner's grid over `window`: 1 where the robot's centre may not go (inscribed or
   /// lethal cost), 0 elsewhere; empty when the mapper feeds no planner.
   virtual std::vector<std::uint8_t> blocked_cells(const costmap::GridWindow& window) const;

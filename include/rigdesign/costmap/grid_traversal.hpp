@@ -1,8 +1,8 @@
 #pragma once
-// Private to src/costmap: the cells a straight segment crosses, by Amanatides and Woo's
-// "A Fast Voxel Traversal Algorithm for Ray Tracing" (1987), on a flat array. Coordinates are
-// in cell units (world position minus the grid's corner, divided by the cell size), so one
-// routine serves the 2D obstacle layer and the 3D voxel layer.
+/// The cells a straight segment crosses, by Amanatides and Woo's "A Fast Voxel Traversal
+/// Algorithm for Ray Tracing" (1987), on a flat array. Coordinates are in cell units (world
+/// position minus the grid's corner, divided by the cell size), so one routine serves the 2D
+/// obstacle layer, the 3D voxel layer and the occupancy comparison's TSDF.
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
