@@ -41,6 +41,7 @@ struct OccupancyOptions {
   std::string persistence = "sweep";
   std::string params;  // nav2 costmap parameter file
   int camera_stride = 1;
+  int camera_pooling = 1;
   std::uint64_t seed = 1;
   double robot_radius = 0.3;
   // [m] 3 sigma of the cell's noisiest lidars (3 cm): lower, and floor returns mark ghosts.
@@ -251,6 +252,7 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
   params.moving_until = options.moving_until;
   params.seed = options.seed;
   params.camera_stride = options.camera_stride;
+  params.camera_pooling = options.camera_pooling;
   params.robot_radius = options.robot_radius;
   params.min_height = options.min_height;
   params.truth = options.truth == "surface" ? occupancy::TruthKind::mesh_surface
@@ -301,6 +303,8 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
                            {"rate_hz", options.rate},
                            {"duration_s", options.duration},
                            {"moving_until_s", options.moving_until},
+                           {"camera_stride", options.camera_stride},
+                           {"camera_pooling", options.camera_pooling},
                            {"truth", truth_label(params.truth)},
                            {"false_positive_region", region_label(params)},
                            {"runs", nlohmann::json::array()}};
@@ -387,6 +391,10 @@ Command setup_occupancy(CLI::App& parent) {
   app->add_option("--camera-stride", options->camera_stride,
                   "Keep every n-th camera pixel row and column (default 1)")
       ->check(finite_in(1, 64, "a stride from 1 to 64"));
+  app->add_option("--camera-pooling", options->camera_pooling,
+                  "Mean-pool each camera's depth image in k x k pixel blocks, as paper 3 "
+                  "downsampled its RGB-D camera (default 1: every pixel)")
+      ->check(finite_in(1, 16, "a block side from 1 to 16 pixels"));
   app->add_option("--robot-radius", options->robot_radius,
                   "Robot radius for the planner grid's truth [m] (default 0.3)");
   app->add_option(

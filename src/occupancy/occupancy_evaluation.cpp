@@ -15,6 +15,7 @@
 #include "rigdesign/occupancy/occupancy_hull_region.hpp"
 #include "rigdesign/occupancy/occupancy_trail.hpp"
 #include "rigdesign/sim/decimation.hpp"
+#include "rigdesign/sim/mean_pooling.hpp"
 #include "rigdesign/sim/noise_stream.hpp"
 #include "rigdesign/sim/ray_caster.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
@@ -142,10 +143,18 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
   std::vector<std::vector<model::Vec3>> rays;
   std::vector<model::SensorMode> modes;
   std::vector<std::mt19937_64> streams;
+  std::vector<int> pooled_columns;  // > 0: the sensor's organised frame is mean-pooled
   for (std::size_t i = 0; i < sensors.size(); ++i) {
     modes.push_back(sim::decimated_mode(sensors[i].mode, params.camera_stride, 1));
     rays.push_back(sim::ray_pattern(modes.back()));
     streams.push_back(sim::noise_stream(params.seed, i));
+    const int columns = sim::pattern_columns(rays.back());
+    const bool pooled = params.camera_pooling > 1 && modes.back().is_camera();
+    if (pooled && (columns == 0 || rays.back().size() % static_cast<std::size_t>(columns) != 0)) {
+      throw std::invalid_argument("evaluate_occupancy: camera '" + sensors[i].id +
+                                  "' has no full pixel grid to mean-pool (a cone FOV)");
+    }
+    pooled_columns.push_back(pooled ? columns : 0);
   }
   // One truth per distinct lattice; mappers share it.
   const model::TriangleMesh scenery = static_scenery(scene);
@@ -176,7 +185,8 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                         ChangeDelays(window.size())});
   }
   PathOdometer odometer;
-  const sim::SimulationSettings settings{0.0, true, false};
+  const sim::SimulationSettings settings{0.0, true, false, false};
+  const sim::SimulationSettings organised{0.0, true, false, true};
   const int frames =
       std::max(1, static_cast<int>(std::floor(params.duration * params.rate + 1e-9)));
   std::vector<model::PointCloud> clouds(sensors.size());
@@ -186,8 +196,15 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
     const sim::RayCaster caster(scene.at(t));
     std::size_t points = 0;
     for (std::size_t i = 0; i < sensors.size(); ++i) {
-      clouds[i] = sim::simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor,
-                                      settings, streams[i]);
+      if (pooled_columns[i] > 0) {
+        clouds[i] =
+            sim::mean_pool(sim::simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor,
+                                               organised, streams[i]),
+                           pooled_columns[i], params.camera_pooling);
+      } else {
+        clouds[i] = sim::simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor,
+                                        settings, streams[i]);
+      }
       points += clouds[i].size();
     }
     const model::Pose3 T_world_object = object.T_world_object(t);

@@ -1,6 +1,7 @@
 #include "rigdesign/sim/sensor_simulator.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "rigdesign/model/optical_frame.hpp"
@@ -20,16 +21,26 @@ model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode
   cloud.points.reserve(rays.size());
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> gaussian(0.0, 1.0);
+  constexpr float kNoReturn = std::numeric_limits<float>::quiet_NaN();
+  const auto no_return = [&] {
+    if (settings.keep_misses) cloud.points.emplace_back(kNoReturn, kNoReturn, kNoReturn);
+  };
   const model::Vec3 origin = T_world_sensor.translation();
   const model::Mat3 R_world_sensor = T_world_sensor.linear();
   for (const model::Vec3& ray : rays) {
     // Draw both numbers for every ray so a hit or miss elsewhere never shifts the sequence.
     const double lost = unit(rng);
     const double normal = gaussian(rng);
-    if (lost < settings.dropout) continue;
+    if (lost < settings.dropout) {
+      no_return();
+      continue;
+    }
     const model::Vec3 direction = R_world_sensor * ray;
     const std::optional<double> hit = scene.first_hit(origin, direction);
-    if (!hit || *hit < mode.min_range || *hit > mode.max_range) continue;
+    if (!hit || *hit < mode.min_range || *hit > mode.max_range) {
+      no_return();
+      continue;
+    }
     const double range = *hit + (settings.add_noise ? normal * mode.noise.sigma(*hit) : 0.0);
     const model::Vec3 point =
         settings.sensor_frame ? model::Vec3(ray * range) : model::Vec3(origin + direction * range);

@@ -74,6 +74,10 @@ struct OccupancyEvalParams {
   /// sim::decimated_mode's camera stride (1: every pixel): ray casting a full camera frame is
   /// the evaluation's slowest step. Lidars are never decimated.
   int camera_stride = 1;
+  /// Paper 3's downsampling of its RGB-D camera (section III-B): mean pooling of k x k pixel
+  /// blocks of the organised depth image (sim/mean_pooling.hpp); 1 keeps every pixel. Applies
+  /// to cameras whose ray pattern is a full pixel grid (pyramid FOVs).
+  int camera_pooling = 1;
   /// Mappers updated and scored at once within a frame (their results do not depend on it).
   int threads = 1;
   /// Called after every frame with (frames done, frames in all).

@@ -26,6 +26,9 @@ struct SimulationSettings {
   /// a camera's optical frame (REP-103: z forward, x right, y down), a lidar's x-forward
   /// frame. `filter --mount` assumes the same by default.
   bool sensor_frame = false;
+  /// An organised cloud, as depth cameras publish one: every ray keeps its place, a ray that
+  /// returns nothing gives a NaN point (what mean pooling of the depth image needs).
+  bool keep_misses = false;
 };
 
 /// One frame. `T_world_sensor` places the sensor; the cloud's origin and orientation record
