@@ -10,6 +10,9 @@
 #   scripts/bench.sh paper2_table1   # paper 2's Table 1 on rigs/elektron.yaml: 3 variants x 20
 #                                    # seeds in office_goals with DWA, the critical-distance
 #                                    # sweep included (issue 35: under 5 minutes here)
+#   scripts/bench.sh paper3_sweeps   # paper 3's Tables 2-9 on rigs/cell.yaml (occupancy
+#                                    # --sweep paper3, 32 mappers, 480 frames; issue 36: under
+#                                    # 10 minutes here, checked), beside paper 3's numbers
 #   scripts/bench.sh localize_frozen # the frozen validation set (a second generator, seeds
 #                                    # fixed before tuning; issue 33): report, never tune
 set -euo pipefail
@@ -44,6 +47,17 @@ if [ -z "$only" ] || [ "$only" = "paper2_table1" ]; then
   rm -rf "$table_out"
   if [ "$holds" != 4 ]; then
     echo "paper2_table1: $holds of paper 2's 4 orderings hold" >&2
+    exit 1
+  fi
+fi
+if [ -z "$only" ] || [ "$only" = "paper3_sweeps" ]; then
+  started=$(date +%s)
+  (cd "$root" && RIGDESIGN_PROGRESS=1 "$build/src/rigdesign" occupancy rigs/cell.yaml \
+    --sweep paper3 --threads 2)
+  seconds=$(( $(date +%s) - started ))
+  echo "paper3_sweeps: ${seconds} s (target < 600 s)"
+  if [ "$seconds" -ge 600 ]; then
+    echo "paper3_sweeps: took ${seconds} s, over the 10-minute target" >&2
     exit 1
   fi
 fi

@@ -170,6 +170,7 @@ nlohmann::json phase_json(const occupancy::OccupancyPhase& phase) {
           {"master", scores(phase.master)},
           {"ghost_area_m2", value(phase.ghost_area)},
           {"ghost_area_max_m2", phase.ghost_area_max},
+          {"trail_area_m2", value(phase.trail_area)},
           {"trail_length_m", value(phase.trail_length)},
           {"trail_length_max_m", phase.trail_length_max},
           {"master_ghost_area_m2", value(phase.master_ghost_area)},

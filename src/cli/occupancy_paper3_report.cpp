@@ -31,12 +31,12 @@ std::vector<std::string> score_cells(const occupancy::Scores& s) {
 }
 
 void add_run_columns(TextTable& table) {
-  for (const char* h : {"trail m", "ghost m2", "ms/upd", "Mpts/s", "memory MB"})
+  for (const char* h : {"trail m2", "ghost m2", "ms/upd", "Mpts/s", "memory MB"})
     table.add_column(h, TextTable::Align::right);
 }
 
 std::vector<std::string> run_cells(const occupancy::OccupancyRun& run) {
-  return {number(run.all.trail_length, 2), number(run.all.ghost_area, 2),
+  return {number(run.all.trail_area, 2), number(run.all.ghost_area, 2),
           number(run.all.update_ms, 1), number(run.all.points_per_second / 1e6, 2),
           number(static_cast<double>(run.memory_bytes) / 1e6, 2)};
 }
@@ -121,7 +121,7 @@ nlohmann::json paper3_report_json(std::span<const occupancy::Paper3Sweep> sweeps
                       {"mapper", run->mapper},
                       {"paper", scores_json(row.paper)},
                       {"rigdesign", scores_json(run->all.object)},
-                      {"trail_length_m", run->all.trail_length},
+                      {"trail_area_m2", run->all.trail_area},
                       {"ghost_area_m2", run->all.ghost_area},
                       {"update_ms", run->all.update_ms},
                       {"points_per_second", run->all.points_per_second},

@@ -102,6 +102,7 @@ void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*
     if (frame->has_master) master.push_back(scores_of(frame->master));
     phase.ghost_area += frame->ghost_area;
     phase.ghost_area_max = std::max(phase.ghost_area_max, frame->ghost_area);
+    phase.trail_area += frame->trail_area;
     phase.trail_length += frame->trail_length;
     phase.trail_length_max = std::max(phase.trail_length_max, frame->trail_length);
     phase.master_ghost_area += frame->master_ghost_area;
@@ -114,6 +115,7 @@ void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*
   phase.object = mean_scores(object);
   phase.master = master.empty() ? Scores{kNaN, kNaN, kNaN, kNaN, kNaN} : mean_scores(master);
   phase.ghost_area /= n;
+  phase.trail_area /= n;
   phase.trail_length /= n;
   phase.master_ghost_area /= n;
   phase.update_ms = seconds / n * 1e3;

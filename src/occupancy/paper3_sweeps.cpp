@@ -306,12 +306,12 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
     const OccupancyRun* ski = runs(paper3_mapper_name(reference(Paper3Mapper::skimap, common)));
     const OccupancyRun* octo = runs(paper3_mapper_name(reference(Paper3Mapper::octomap, common)));
     if (ski && octo) {
-      add("SkiMap keeps the voxels the actor passed through occupied (its trail behind the "
-          "person longer than OctoMap's, 0.1 m reference rows)",
-          skimap->name + ", " + octomap->name, true, ski->all.trail_length > octo->all.trail_length,
+      add("SkiMap keeps the voxels the actor passed through occupied (more of the person's trail "
+          "shown than OctoMap's, 0.1 m reference rows)",
+          skimap->name + ", " + octomap->name, true, ski->all.trail_area > octo->all.trail_area,
           "stated in the text, no number",
-          "mean trail " + model::format_number(ski->all.trail_length, 3) + " m vs OctoMap " +
-              model::format_number(octo->all.trail_length, 3) + " m; ghost area " +
+          "mean trail area " + model::format_number(ski->all.trail_area, 3) + " m2 vs OctoMap " +
+              model::format_number(octo->all.trail_area, 3) + " m2; ghost area " +
               model::format_number(ski->all.ghost_area, 3) + " vs " +
               model::format_number(octo->all.ghost_area, 3) + " m2");
     }

@@ -53,14 +53,14 @@ TEST_CASE("paper 3's trends hold on its own tables", "[occupancy][paper3]") {
   for (const std::string& name : occupancy::paper3_sweep_names())
     sweeps.push_back(occupancy::paper3_sweep(name));
   // "Our" runs carry the paper's own scores: every trend must then hold here too. The trail
-  // trend reads trail lengths, set SkiMap's longer as the paper says.
+  // trend reads trail areas, set SkiMap's larger as the paper says.
   std::map<std::string, occupancy::OccupancyRun> runs;
   for (const occupancy::Paper3Sweep& sweep : sweeps) {
     for (const occupancy::Paper3Setting& row : sweep.rows) {
       occupancy::OccupancyRun run;
       run.mapper = occupancy::paper3_mapper_name(row);
       run.all.object = row.paper;
-      run.all.trail_length = row.mapper == occupancy::Paper3Mapper::skimap ? 1.0 : 0.5;
+      run.all.trail_area = row.mapper == occupancy::Paper3Mapper::skimap ? 1.0 : 0.5;
       runs[run.mapper] = run;
     }
   }

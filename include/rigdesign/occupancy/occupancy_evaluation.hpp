@@ -109,6 +109,7 @@ struct OccupancyPhase {
   Scores master;
   double ghost_area = 0.0;           ///< [m^2] mean
   double ghost_area_max = 0.0;       ///< [m^2]
+  double trail_area = 0.0;           ///< [m^2] mean: columns the person left, still shown
   double trail_length = 0.0;         ///< [m] mean
   double trail_length_max = 0.0;     ///< [m]
   double master_ghost_area = 0.0;    ///< [m^2] mean

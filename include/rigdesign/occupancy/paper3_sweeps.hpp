@@ -76,7 +76,7 @@ using RunLookup = std::function<const OccupancyRun*(const std::string& mapper_na
 /// mapper), OctoMap's recall peaking near 0.1 m and SkiMap's at 0.075-0.1 m, Voxblox's recall
 /// dropping below 0.15 m, a voxel/truncation ratio >= 1.5 beating 1 and 0.5, constant weight
 /// lowering Voxblox's recall, hit 1 best and miss 0.7 collapsing for OctoMap, and SkiMap
-/// keeping the actor's trail (its trail longer than OctoMap's at 0.1 m; no number in the paper,
+/// keeping the actor's trail (more trail area shown than OctoMap at 0.1 m; no number in the paper,
 /// so "holds in paper" means stated).
 std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, const RunLookup& runs);
 
