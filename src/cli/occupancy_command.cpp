@@ -25,7 +25,9 @@
 #include "rigdesign/occupancy/occupancy_evaluation.hpp"
 #include "rigdesign/occupancy/occupancy_sweep.hpp"
 #include "rigdesign/render/occupancy_pareto.hpp"
+#include "rigdesign/sim/mean_pooling.hpp"
 #include "rigdesign/sim/scene_library.hpp"
+#include "rigdesign/sim/sensor_simulator.hpp"
 #include "text_table.hpp"
 
 namespace rigdesign::cli {
@@ -247,6 +249,15 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
                  "cell (the scene with a moving person)");
   const std::vector<occupancy::CellSensor> sensors =
       occupancy::cell_sensors(inputs.rig, inputs.library);
+  for (const occupancy::CellSensor& sensor : sensors) {
+    const std::vector<model::Vec3> rays = sim::ray_pattern(sensor.mode);
+    const int columns = sim::pattern_columns(rays);
+    require_option(options.camera_pooling == 1 || !sensor.mode.is_camera() ||
+                       (columns > 0 && rays.size() % static_cast<std::size_t>(columns) == 0),
+                   "--camera-pooling",
+                   "camera '" + sensor.id + "' has no full pixel grid to pool (a cone FOV)",
+                   "1 for a rig with a cone-FOV camera");
+  }
   occupancy::OccupancyEvalParams params;
   params.rate = options.rate;
   params.duration = options.duration;
@@ -270,11 +281,12 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
   const std::vector<occupancy::PersistenceSetting> persistence =
       persistence_named(options.persistence, base.hit);
   // Paper 3's sweeps replace the grid by their mappers (each distinct setting once) and our
-  // voxel layer at 0.1 m, without and with the Hit Layer, as additional rows.
+  // voxel layer at 0.1 m with every persistence setting of the default sweep (none and four
+  // Hit Layer settings) as additional rows.
   const std::vector<double> tenth = {0.1};
   const std::vector<occupancy::VoxelMapperParams> grid = occupancy::sweep_grid(
       options.sweeps.empty() ? std::span<const double>(options.voxels) : tenth,
-      options.sweeps.empty() ? persistence : persistence_named("paper", base.hit), base);
+      options.sweeps.empty() ? persistence : persistence_named("sweep", base.hit), base);
   auto owned = occupancy::make_sweep_mappers(grid, model::SourceLocation{"(command line)"});
   std::vector<std::string> extra;
   for (const auto& mapper : owned) extra.push_back(mapper->name());

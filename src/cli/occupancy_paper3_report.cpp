@@ -9,7 +9,7 @@
 namespace rigdesign::cli {
 namespace {
 
-std::string number(double value, int decimals) {
+std::string cell_text(double value, int decimals) {
   return std::isnan(value) ? "-" : fixed(value, decimals);
 }
 
@@ -26,8 +26,8 @@ void add_score_columns(TextTable& table, const char* prefix) {
 }
 
 std::vector<std::string> score_cells(const occupancy::Scores& s) {
-  return {number(s.precision, 3), number(s.recall, 3), number(s.f1, 3), number(s.f2, 3),
-          number(s.f3, 3)};
+  return {cell_text(s.precision, 3), cell_text(s.recall, 3), cell_text(s.f1, 3), cell_text(s.f2, 3),
+          cell_text(s.f3, 3)};
 }
 
 void add_run_columns(TextTable& table) {
@@ -36,9 +36,9 @@ void add_run_columns(TextTable& table) {
 }
 
 std::vector<std::string> run_cells(const occupancy::OccupancyRun& run) {
-  return {number(run.all.trail_area, 2), number(run.all.ghost_area, 2),
-          number(run.all.update_ms, 1), number(run.all.points_per_second / 1e6, 2),
-          number(static_cast<double>(run.memory_bytes) / 1e6, 2)};
+  return {cell_text(run.all.trail_area, 2), cell_text(run.all.ghost_area, 2),
+          cell_text(run.all.update_ms, 1), cell_text(run.all.points_per_second / 1e6, 2),
+          cell_text(static_cast<double>(run.memory_bytes) / 1e6, 2)};
 }
 
 nlohmann::json scores_json(const occupancy::Scores& s) {

@@ -25,7 +25,7 @@ double log_odds(double probability) {
   return std::log(probability / (1.0 - probability));
 }
 
-void check(const OctoMapParams& p) {
+void check_octomap_params(const OctoMapParams& p) {
   const auto probability = [](double v) { return v >= 0.0 && v <= 1.0; };
   if (!(p.resolution >= 0.01 && p.resolution <= 1.0))
     throw std::invalid_argument("OctoMap: resolution must lie in [0.01, 1] m");
@@ -124,7 +124,7 @@ std::string octomap_label(const OctoMapParams& params) {
 }
 
 std::unique_ptr<OccupancyMapper> make_octomap_mapper(const OctoMapParams& params) {
-  check(params);
+  check_octomap_params(params);
   return std::make_unique<OctoMapMapper>(params);
 }
 

@@ -11,7 +11,7 @@
 namespace rigdesign::occupancy {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kUndefined = std::numeric_limits<double>::quiet_NaN();
 
 struct TableRow {
   const char* label;
@@ -84,7 +84,7 @@ Paper3Sweep make_sweep(std::string name, std::string table, std::string swept, P
   return sweep;
 }
 
-const Scores kNoScores{kNaN, kNaN, kNaN, kNaN, kNaN};
+const Scores kNoScores{kUndefined, kUndefined, kUndefined, kUndefined, kUndefined};
 
 struct Column {
   std::vector<double> x;
@@ -129,17 +129,17 @@ double argmax_x(const std::vector<double>& x, const std::vector<Scores>& scores,
   std::size_t best = 0;
   for (std::size_t i = 1; i < scores.size(); ++i)
     if (scores[i].*field > scores[best].*field) best = i;
-  return scores.empty() ? kNaN : x[best];
+  return scores.empty() ? kUndefined : x[best];
 }
 
 double at_x(const std::vector<double>& x, const std::vector<Scores>& scores, double value,
             double Scores::*field) {
   for (std::size_t i = 0; i < x.size(); ++i)
     if (std::abs(x[i] - value) < 1e-9) return scores[i].*field;
-  return kNaN;
+  return kUndefined;
 }
 
-const Paper3Sweep* find(std::span<const Paper3Sweep> sweeps, const std::string& name) {
+const Paper3Sweep* find_sweep(std::span<const Paper3Sweep> sweeps, const std::string& name) {
   for (const Paper3Sweep& sweep : sweeps)
     if (sweep.name == name) return &sweep;
   return nullptr;
@@ -215,7 +215,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
         {statement, names, in_paper, here, std::move(paper_detail), std::move(our_detail)});
   };
   for (const char* name : {"octomap:resolution", "skimap:resolution", "voxblox:resolution"}) {
-    const Paper3Sweep* sweep = find(sweeps, name);
+    const Paper3Sweep* sweep = find_sweep(sweeps, name);
     if (!sweep) continue;
     const Column c = column_of(*sweep, runs);
     if (!c.complete) continue;
@@ -248,7 +248,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
           listed("R", c.ours, &Scores::recall));
     }
   }
-  if (const Paper3Sweep* sweep = find(sweeps, "voxblox:truncation")) {
+  if (const Paper3Sweep* sweep = find_sweep(sweeps, "voxblox:truncation")) {
     const Column c = column_of(*sweep, runs);
     const auto ratio_wins = [&](const std::vector<Scores>& s) {
       const double r2 = at_x(c.x, s, 0.05, &Scores::recall),
@@ -262,7 +262,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
           sweep->name, ratio_wins(c.paper), ratio_wins(c.ours),
           listed("R", c.paper, &Scores::recall), listed("R", c.ours, &Scores::recall));
   }
-  if (const Paper3Sweep* sweep = find(sweeps, "voxblox:const_weight")) {
+  if (const Paper3Sweep* sweep = find_sweep(sweeps, "voxblox:const_weight")) {
     const Column c = column_of(*sweep, runs);
     const auto lowers = [&](const std::vector<Scores>& s) {
       return at_x(c.x, s, 1.0, &Scores::recall) < at_x(c.x, s, 0.0, &Scores::recall);
@@ -272,7 +272,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
           listed("R (true, false)", c.paper, &Scores::recall),
           listed("R (true, false)", c.ours, &Scores::recall));
   }
-  if (const Paper3Sweep* sweep = find(sweeps, "octomap:hit")) {
+  if (const Paper3Sweep* sweep = find_sweep(sweeps, "octomap:hit")) {
     const Column c = column_of(*sweep, runs);
     const auto best = [&](const std::vector<Scores>& s) {
       return std::abs(argmax_x(c.x, s, &Scores::f1) - 1.0) < 1e-9;
@@ -282,7 +282,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
           listed("F1 (0.5, 0.7, 1)", c.paper, &Scores::f1),
           listed("F1 (0.5, 0.7, 1)", c.ours, &Scores::f1));
   }
-  if (const Paper3Sweep* sweep = find(sweeps, "octomap:miss")) {
+  if (const Paper3Sweep* sweep = find_sweep(sweeps, "octomap:miss")) {
     const Column c = column_of(*sweep, runs);
     const auto collapses = [&](const std::vector<Scores>& s) {
       const double f07 = at_x(c.x, s, 0.7, &Scores::f1);
@@ -295,11 +295,11 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
           listed("F1 (0.2, 0.4, 0.7)", c.ours, &Scores::f1));
   }
   // SkiMap keeps what the actor passed through: compared on the reference rows at 0.1 m.
-  const Paper3Sweep* skimap = find(sweeps, "skimap:resolution");
-  if (!skimap) skimap = find(sweeps, "skimap:min_weight");
-  const Paper3Sweep* octomap = find(sweeps, "octomap:resolution");
-  if (!octomap) octomap = find(sweeps, "octomap:hit");
-  if (!octomap) octomap = find(sweeps, "octomap:miss");
+  const Paper3Sweep* skimap = find_sweep(sweeps, "skimap:resolution");
+  if (!skimap) skimap = find_sweep(sweeps, "skimap:min_weight");
+  const Paper3Sweep* octomap = find_sweep(sweeps, "octomap:resolution");
+  if (!octomap) octomap = find_sweep(sweeps, "octomap:hit");
+  if (!octomap) octomap = find_sweep(sweeps, "octomap:miss");
   if (skimap && octomap) {
     const Paper3Common common{skimap->rows.front().skimap.min_height,
                               skimap->rows.front().skimap.z_max, 6.0};

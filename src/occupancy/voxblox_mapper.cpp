@@ -18,7 +18,7 @@ std::int64_t packed(const costmap::VoxelKey& key) {
   return (field(key.x) << 42) | (field(key.y) << 21) | field(key.z);
 }
 
-void check(const VoxbloxParams& p) {
+void check_voxblox_params(const VoxbloxParams& p) {
   if (!(p.voxel >= 0.01 && p.voxel <= 1.0))
     throw std::invalid_argument("Voxblox: voxel must lie in [0.01, 1] m");
   if (!(p.truncation > 0.0 && p.truncation <= 2.0))
@@ -32,7 +32,7 @@ void check(const VoxbloxParams& p) {
 }
 
 const VoxbloxParams& checked(const VoxbloxParams& params) {
-  check(params);
+  check_voxblox_params(params);
   return params;
 }
 

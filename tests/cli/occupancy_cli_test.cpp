@@ -131,9 +131,9 @@ TEST_CASE("occupancy --sweep: paper 3's rows beside ours, its trends, speed and 
   CHECK(sweeps[1]["rows"][2]["setting"] == "10");
   CHECK(sweeps[1]["rows"][2]["paper"]["f1"].get<double>() == Approx(0.580));
   CHECK(sweeps[1]["rows"][2]["mapper"] == "SkiMap 0.1 m, min weight 10");
-  // Every row has its own run with a memory figure; the 3 + 3 settings and our two voxel-layer
-  // rows are 8 mappers.
-  CHECK(report["runs"].size() == 8);
+  // Every row has its own run with a memory figure; the 3 + 3 settings and our voxel layer with
+  // its five persistence settings (none and four Hit Layers) are 11 mappers.
+  CHECK(report["runs"].size() == 11);
   for (const nlohmann::json& run : report["runs"]) CHECK(run["memory_bytes"].get<double>() > 0);
   // The hit trend and SkiMap's trail are judged on this run; the paper's side holds.
   const nlohmann::json& trends = report["paper3"]["trends"];
