@@ -119,6 +119,14 @@ def mesh_seeds():
 
 
 def other_seeds():
+    yield "rig_text_edit", "styles.yaml", (
+        "# every style a value is edited in (°)\nname: r\nmounts:\n"
+        "  - id: front   # flow pose\n    sensor: \"cam\"\n    mode: 'a''b'\n"
+        "    pose: {xyz: [0.20, 0, 0.3], rpy_deg: [0, 10, 0]}  # c\n"
+        "  - id: rear\n    sensor: lidar\n    mode: m\n    pose:\n      xyz:\n"
+        "        - -0.2    # behind\n        - 0.0\n        - 0.45\n"
+        "      rpy_deg: [0, 0, 180]\n  - id: linked\n    sensor: s\n    mode: m\n"
+        "    pose: {urdf_link: camera_link}\n").encode()
     yield "map_pgm", "map.pgm", b"P5\n# seed\n4 3\n255\n" + bytes([254, 0, 205, 254] * 3)
     yield "rssi_csv", "rssi.csv", (
         "t,x,y,z,bssid,rssi\n" + "".join(

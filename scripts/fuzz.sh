@@ -13,7 +13,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build/fuzz"
-own_targets=(rig_yaml sensors_yaml requirements_yaml catalog_yaml policy_yaml scene_yaml scenario_yaml
+own_targets=(rig_yaml rig_text_edit sensors_yaml requirements_yaml catalog_yaml policy_yaml scene_yaml scenario_yaml
   pipeline_yaml costmap_params_yaml filtering_loads_yaml artifacts_json clearpath_robot_yaml
   collision_monitor_yaml
   cloud_pcd cloud_ply
@@ -36,7 +36,7 @@ fi
 bundled_seeds() {
   cd "$root"
   case "$1" in
-    rig_yaml) ls rigs/*.yaml ;;
+    rig_yaml|rig_text_edit) ls rigs/*.yaml ;;
     sensors_yaml) echo sensors.yaml ;;
     requirements_yaml) ls rigs/requirements/*.yaml ;;
     catalog_yaml) ls rigs/catalogs/*.yaml ;;
@@ -60,7 +60,7 @@ bundled_seeds() {
 
 dictionary_of() {
   case "$1" in
-    *_yaml | artifacts_json) echo yaml ;;
+    *_yaml | artifacts_json | rig_text_edit) echo yaml ;;
     cloud_pcd) echo pcd ;;
     cloud_ply | mesh_ply) echo ply ;;
     mesh_obj) echo obj ;;

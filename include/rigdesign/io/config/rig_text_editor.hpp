@@ -1,0 +1,35 @@
+#pragma once
+/// Writing a rig file back after an edit by hand (issue 37's studio): only the characters of
+/// the values edited change; comments, key order, quoting and the formatting of every other
+/// line stay byte for byte. Each edited value is located by the YAML parser's mark (line and
+/// column) and replaced in the text; nothing is re-serialised.
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace rigdesign::io {
+
+/// New values for one mount; unset fields stay as written.
+struct MountEdit {
+  std::string mount_id;
+  std::optional<std::string> sensor;
+  std::optional<std::string> mode;
+  std::optional<std::array<double, 3>> xyz;      ///< [m]
+  std::optional<std::array<double, 3>> rpy_deg;  ///< [deg]
+};
+
+/// `text` (the rig file read from `path`, which names it in errors) with `edits` applied.
+/// Numbers are written as the shortest text that reads back exactly. Throws InputError at the
+/// value's file:line:col when the file is not a rig the edit can apply to: no such mount, a
+/// pose taken from urdf_link (edit the robot description), or a field the edit needs missing.
+std::string edit_rig_text(const std::string& text, const std::string& path,
+                          std::span<const MountEdit> edits);
+
+/// Applies `edits` to the rig file at `path` and writes it atomically. `loaded_text` is the
+/// file as it was read when editing began: if the file on disk differs now, nothing is written
+/// and InputError says so (someone else changed it). Returns the text written.
+std::string save_rig_edits(const std::string& path, const std::string& loaded_text,
+                           std::span<const MountEdit> edits);
+
+}  // namespace rigdesign::io

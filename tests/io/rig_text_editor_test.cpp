@@ -1,0 +1,145 @@
+// Issue 37 item 4: a rig file written back after an edit by hand changes only the characters of
+// the values edited. Every expected text below is written out by hand from the input text.
+#include "rigdesign/io/config/rig_text_editor.hpp"
+
+#include <catch2/catch.hpp>
+
+#include "rigdesign/io/config/rig_loader.hpp"
+#include "rigdesign/model/input_error.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign;
+
+namespace {
+
+// Flow-style and block-style poses, comments (one with a two-byte character), quoted names.
+const std::string kRig = R"(# Test rig — comments and formatting must survive (°, UTF-8).
+name: Editor test
+body:
+  radius: 0.2
+  height: 0.4
+distance_of_interest: 2.0
+mounts:
+  - id: front   # the front camera
+    sensor: orbbec_astra
+    mode: "qvga_30"
+    pose: {xyz: [0.20, 0, 0.3], rpy_deg: [0, 10, 0]}   # pitched down
+  - id: rear
+    sensor: velodyne_vlp16
+    mode: vlp16_10hz
+    pose:
+      xyz:
+        - -0.2    # behind the centre
+        - 0.0
+        - 0.45
+      rpy_deg: [0, 0, 180]
+)";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST_CASE("rig text editor: only the edited values change", "[io][editor]") {
+  io::MountEdit front;
+  front.mount_id = "front";
+  front.xyz = {0.25, 0.0, 0.35};
+  front.rpy_deg = {0.0, 12.5, -3.0};
+  io::MountEdit rear;
+  rear.mount_id = "rear";
+  rear.xyz = {-0.25, 0.0, 0.45};
+  rear.mode = "vlp16_20hz";
+  const std::vector<io::MountEdit> edits = {front, rear};
+  std::string expected = replaced(kRig, "pose: {xyz: [0.20, 0, 0.3], rpy_deg: [0, 10, 0]}",
+                                  "pose: {xyz: [0.25, 0, 0.35], rpy_deg: [0, 12.5, -3]}");
+  expected = replaced(expected, "        - -0.2    # behind", "        - -0.25    # behind");
+  expected = replaced(expected, "        - 0.0\n", "        - 0\n");
+  expected = replaced(expected, "mode: vlp16_10hz", "mode: vlp16_20hz");
+  CHECK(io::edit_rig_text(kRig, "test.yaml", edits) == expected);
+}
+
+TEST_CASE("rig text editor: a quoted name stays quoted, a hostile one is escaped", "[io][editor]") {
+  io::MountEdit edit;
+  edit.mount_id = "front";
+  edit.mode = "vga_30";
+  const std::vector<io::MountEdit> one = {edit};
+  CHECK(io::edit_rig_text(kRig, "t.yaml", one) ==
+        replaced(kRig, "mode: \"qvga_30\"", "mode: \"vga_30\""));
+  edit.mode.reset();
+  edit.sensor = "a: b # c";
+  const std::vector<io::MountEdit> hostile = {edit};
+  CHECK(io::edit_rig_text(kRig, "t.yaml", hostile) ==
+        replaced(kRig, "sensor: orbbec_astra", "sensor: \"a: b # c\""));
+  // Single quotes, with YAML's doubled quote inside, stay single quotes.
+  const std::string single = replaced(kRig, "mode: \"qvga_30\"", "mode: 'it''s'   # q");
+  edit.sensor.reset();
+  edit.mode = "o'k";
+  const std::vector<io::MountEdit> quoted = {edit};
+  CHECK(io::edit_rig_text(single, "t.yaml", quoted) ==
+        replaced(single, "mode: 'it''s'   # q", "mode: 'o''k'   # q"));
+}
+
+TEST_CASE("rig text editor: refusals name the file, line and column", "[io][editor]") {
+  io::MountEdit edit;
+  edit.mount_id = "side";
+  edit.xyz = {0, 0, 0};
+  const std::vector<io::MountEdit> missing = {edit};
+  try {
+    io::edit_rig_text(kRig, "rig.yaml", missing);
+    FAIL("no error");
+  } catch (const model::InputError& error) {
+    CHECK(error.diagnostics().front().message().find("rig.yaml:8:") == 0);  // the mounts list
+    CHECK(error.diagnostics().front().message().find("no mount 'side'") != std::string::npos);
+  }
+  const std::string urdf_rig = replaced(kRig, "pose: {xyz: [0.20, 0, 0.3], rpy_deg: [0, 10, 0]}",
+                                        "pose: {urdf_link: camera_link}");
+  edit.mount_id = "front";
+  const std::vector<io::MountEdit> linked = {edit};
+  try {
+    io::edit_rig_text(urdf_rig, "rig.yaml", linked);
+    FAIL("no error");
+  } catch (const model::InputError& error) {
+    CHECK(error.diagnostics().front().message().find("rig.yaml:11:11:") == 0);
+    CHECK(error.diagnostics().front().message().find("urdf_link 'camera_link'") !=
+          std::string::npos);
+  }
+}
+
+TEST_CASE("saving edits: atomic, and refused when the file changed on disk", "[io][editor]") {
+  test::TempFolder folder;
+  const std::string path = folder.write("rig.yaml", kRig);
+  io::MountEdit edit;
+  edit.mount_id = "front";
+  edit.rpy_deg = {0, 20, 0};
+  const std::vector<io::MountEdit> edits = {edit};
+  const std::string written = io::save_rig_edits(path, kRig, edits);
+  CHECK(test::file_text(path) == written);
+  CHECK(written == replaced(kRig, "rpy_deg: [0, 10, 0]", "rpy_deg: [0, 20, 0]"));
+  CHECK(folder.entries() == 1);  // no temporary left behind
+  // The file on disk is now `written`; a save from the stale text must not overwrite it.
+  CHECK_THROWS_AS(io::save_rig_edits(path, kRig, edits), model::InputError);
+  CHECK(test::file_text(path) == written);
+}
+
+TEST_CASE("rig text editor: a mount without the edited key or not a map is refused (fuzz)",
+          "[io][editor]") {
+  // Found by fuzz/targets/rig_text_edit.cpp: indexing a missing key threw yaml-cpp's
+  // InvalidNode instead of the project's InputError.
+  io::MountEdit edit;
+  edit.mount_id = "front";
+  edit.mode = "m";
+  const std::vector<io::MountEdit> edits = {edit};
+  const std::string no_mode = "mounts:\n  - id: front\n    sensor: s\n  - just a scalar\n";
+  try {
+    io::edit_rig_text(no_mode, "f.yaml", edits);
+    FAIL("no error");
+  } catch (const model::InputError& error) {
+    CHECK(error.diagnostics().front().field == "mounts[0].mode");
+  }
+  CHECK_THROWS_AS(io::edit_rig_text("- a\n- b\n", "f.yaml", edits), model::InputError);
+  CHECK_THROWS_AS(io::edit_rig_text("mounts: [1, {id: front}]\n", "f.yaml", edits),
+                  model::InputError);
+}
