@@ -16,9 +16,11 @@
 #include "number_checks.hpp"
 #include "report/deployment_report.hpp"
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/deploy/deployment_files.hpp"
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/ros_names.hpp"
+#include "rigdesign/render/gltf_scene.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -30,6 +32,7 @@ struct ExportOptions {
   std::string to;
   std::string layer = "voxel";       // --layer voxel|stvl
   double processing_latency = -1.0;  // --processing-latency; negative: not given
+  bool gltf = false;                 // --gltf: the body and FOV volumes as rig_fov.gltf
   deploy::DeployOptions deploy;
 };
 
@@ -83,8 +86,15 @@ int run_export(const ExportOptions& given, std::ostream& out) {
   // never the new macro beside the old costmap file.
   io::StagedFolder staged(options.to, "--to");
   staged.refuse_inputs_inside(files_read(inputs));
-  const std::vector<std::string> written = io::write_deployment(
+  std::vector<std::string> written = io::write_deployment(
       staged.path(), inputs.rig, deployment, deployment_header(inputs.rig, requirements));
+  if (options.gltf) {
+    written.push_back(staged.path() + "/rig_fov.gltf");
+    io::write_file_atomically(
+        written.back(),
+        render::gltf_scene(inputs.rig.name, inputs.rig.base_link, inputs.rig.base_link_height,
+                           render::rig_gltf_parts(inputs.rig, inputs.library)));
+  }
   staged.commit();
   print_deployment(out, inputs.rig, deployment, staged.final_names(written));
   return kOk;
@@ -139,6 +149,9 @@ Command setup_export(CLI::App& parent) {
                   "the collision monitor's zones (default: one frame period, the most a chain "
                   "that keeps up with its sensor takes)")
       ->check(finite_in(0.0, 10.0, "seconds in [0, 10]"));
+  app->add_flag("--gltf", options->gltf,
+                "Also write rig_fov.gltf: the body and each mount's FOV volume (cut where the "
+                "body blocks it) as glTF 2.0, for Foxglove, RViz's mesh marker or Blender");
   app->add_option("--hit-layer-plugin", options->deploy.hit_layer_plugin,
                   "Add paper 1's Hit Layer as this costmap plugin class (one you built; nav2 "
                   "has none). Default: none, nav2's observation_persistence remembers the "

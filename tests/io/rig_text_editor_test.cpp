@@ -13,7 +13,7 @@ using namespace rigdesign;
 namespace {
 
 // Flow-style and block-style poses, comments (one with a two-byte character), quoted names.
-const std::string kRig = R"(# Test rig — comments and formatting must survive (°, UTF-8).
+const std::string kEditorRig = R"(# Test rig — comments and formatting must survive (°, UTF-8).
 name: Editor test
 body:
   radius: 0.2
@@ -35,7 +35,7 @@ mounts:
       rpy_deg: [0, 0, 180]
 )";
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
+std::string with_replaced(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
   REQUIRE(at != std::string::npos);
   return text.replace(at, from.size(), to);
@@ -53,12 +53,13 @@ TEST_CASE("rig text editor: only the edited values change", "[io][editor]") {
   rear.xyz = {-0.25, 0.0, 0.45};
   rear.mode = "vlp16_20hz";
   const std::vector<io::MountEdit> edits = {front, rear};
-  std::string expected = replaced(kRig, "pose: {xyz: [0.20, 0, 0.3], rpy_deg: [0, 10, 0]}",
-                                  "pose: {xyz: [0.25, 0, 0.35], rpy_deg: [0, 12.5, -3]}");
-  expected = replaced(expected, "        - -0.2    # behind", "        - -0.25    # behind");
-  expected = replaced(expected, "        - 0.0\n", "        - 0\n");
-  expected = replaced(expected, "mode: vlp16_10hz", "mode: vlp16_20hz");
-  CHECK(io::edit_rig_text(kRig, "test.yaml", edits) == expected);
+  std::string expected =
+      with_replaced(kEditorRig, "pose: {xyz: [0.20, 0, 0.3], rpy_deg: [0, 10, 0]}",
+                    "pose: {xyz: [0.25, 0, 0.35], rpy_deg: [0, 12.5, -3]}");
+  expected = with_replaced(expected, "        - -0.2    # behind", "        - -0.25    # behind");
+  expected = with_replaced(expected, "        - 0.0\n", "        - 0\n");
+  expected = with_replaced(expected, "mode: vlp16_10hz", "mode: vlp16_20hz");
+  CHECK(io::edit_rig_text(kEditorRig, "test.yaml", edits) == expected);
 }
 
 TEST_CASE("rig text editor: a quoted name stays quoted, a hostile one is escaped", "[io][editor]") {
@@ -66,20 +67,20 @@ TEST_CASE("rig text editor: a quoted name stays quoted, a hostile one is escaped
   edit.mount_id = "front";
   edit.mode = "vga_30";
   const std::vector<io::MountEdit> one = {edit};
-  CHECK(io::edit_rig_text(kRig, "t.yaml", one) ==
-        replaced(kRig, "mode: \"qvga_30\"", "mode: \"vga_30\""));
+  CHECK(io::edit_rig_text(kEditorRig, "t.yaml", one) ==
+        with_replaced(kEditorRig, "mode: \"qvga_30\"", "mode: \"vga_30\""));
   edit.mode.reset();
   edit.sensor = "a: b # c";
   const std::vector<io::MountEdit> hostile = {edit};
-  CHECK(io::edit_rig_text(kRig, "t.yaml", hostile) ==
-        replaced(kRig, "sensor: orbbec_astra", "sensor: \"a: b # c\""));
+  CHECK(io::edit_rig_text(kEditorRig, "t.yaml", hostile) ==
+        with_replaced(kEditorRig, "sensor: orbbec_astra", "sensor: \"a: b # c\""));
   // Single quotes, with YAML's doubled quote inside, stay single quotes.
-  const std::string single = replaced(kRig, "mode: \"qvga_30\"", "mode: 'it''s'   # q");
+  const std::string single = with_replaced(kEditorRig, "mode: \"qvga_30\"", "mode: 'it''s'   # q");
   edit.sensor.reset();
   edit.mode = "o'k";
   const std::vector<io::MountEdit> quoted = {edit};
   CHECK(io::edit_rig_text(single, "t.yaml", quoted) ==
-        replaced(single, "mode: 'it''s'   # q", "mode: 'o''k'   # q"));
+        with_replaced(single, "mode: 'it''s'   # q", "mode: 'o''k'   # q"));
 }
 
 TEST_CASE("rig text editor: refusals name the file, line and column", "[io][editor]") {
@@ -88,14 +89,15 @@ TEST_CASE("rig text editor: refusals name the file, line and column", "[io][edit
   edit.xyz = {0, 0, 0};
   const std::vector<io::MountEdit> missing = {edit};
   try {
-    io::edit_rig_text(kRig, "rig.yaml", missing);
+    io::edit_rig_text(kEditorRig, "rig.yaml", missing);
     FAIL("no error");
   } catch (const model::InputError& error) {
     CHECK(error.diagnostics().front().message().find("rig.yaml:8:") == 0);  // the mounts list
     CHECK(error.diagnostics().front().message().find("no mount 'side'") != std::string::npos);
   }
-  const std::string urdf_rig = replaced(kRig, "pose: {xyz: [0.20, 0, 0.3], rpy_deg: [0, 10, 0]}",
-                                        "pose: {urdf_link: camera_link}");
+  const std::string urdf_rig =
+      with_replaced(kEditorRig, "pose: {xyz: [0.20, 0, 0.3], rpy_deg: [0, 10, 0]}",
+                    "pose: {urdf_link: camera_link}");
   edit.mount_id = "front";
   const std::vector<io::MountEdit> linked = {edit};
   try {
@@ -110,17 +112,17 @@ TEST_CASE("rig text editor: refusals name the file, line and column", "[io][edit
 
 TEST_CASE("saving edits: atomic, and refused when the file changed on disk", "[io][editor]") {
   test::TempFolder folder;
-  const std::string path = folder.write("rig.yaml", kRig);
+  const std::string path = folder.write("rig.yaml", kEditorRig);
   io::MountEdit edit;
   edit.mount_id = "front";
   edit.rpy_deg = {0, 20, 0};
   const std::vector<io::MountEdit> edits = {edit};
-  const std::string written = io::save_rig_edits(path, kRig, edits);
+  const std::string written = io::save_rig_edits(path, kEditorRig, edits);
   CHECK(test::file_text(path) == written);
-  CHECK(written == replaced(kRig, "rpy_deg: [0, 10, 0]", "rpy_deg: [0, 20, 0]"));
+  CHECK(written == with_replaced(kEditorRig, "rpy_deg: [0, 10, 0]", "rpy_deg: [0, 20, 0]"));
   CHECK(folder.entries() == 1);  // no temporary left behind
   // The file on disk is now `written`; a save from the stale text must not overwrite it.
-  CHECK_THROWS_AS(io::save_rig_edits(path, kRig, edits), model::InputError);
+  CHECK_THROWS_AS(io::save_rig_edits(path, kEditorRig, edits), model::InputError);
   CHECK(test::file_text(path) == written);
 }
 

@@ -19,7 +19,7 @@ std::vector<model::PointCloud> ray_to(float x) {
   return {cloud};
 }
 
-bool occupied(const occupancy::OccupancyMapper& mapper, const costmap::VoxelKey& key) {
+bool octomap_shows(const occupancy::OccupancyMapper& mapper, const costmap::VoxelKey& key) {
   const std::vector<costmap::VoxelKey> keys = mapper.occupied();
   return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
@@ -34,16 +34,16 @@ TEST_CASE("OctoMap hit 1: one hit occupies, nine misses free (clamp 0.97, miss 0
   const auto mapper = occupancy::make_octomap_mapper({});  // 0.1 m, hit 1, miss 0.4
   const costmap::VoxelKey voxel{10, 0, 10};                // holds x = 1.05
   mapper->update(0.0, ray_to(1.05f), true);
-  CHECK(occupied(*mapper, voxel));
+  CHECK(octomap_shows(*mapper, voxel));
   CHECK(mapper->occupied().size() == 1);
   for (int miss = 1; miss <= 8; ++miss) {
     mapper->update(0.2 * miss, ray_to(2.05f), true);  // the ray passes through the voxel
-    CHECK(occupied(*mapper, voxel));
+    CHECK(octomap_shows(*mapper, voxel));
   }
   mapper->update(2.0, ray_to(2.05f), true);
-  CHECK_FALSE(occupied(*mapper, voxel));
+  CHECK_FALSE(octomap_shows(*mapper, voxel));
   // And the ninth miss's own end voxel is occupied from its first (and only) hit.
-  CHECK(occupied(*mapper, {20, 0, 10}));
+  CHECK(octomap_shows(*mapper, {20, 0, 10}));
 }
 
 TEST_CASE("OctoMap hit 0.7: after clamping at the bottom, three hits to occupy",
@@ -56,7 +56,7 @@ TEST_CASE("OctoMap hit 0.7: after clamping at the bottom, three hits to occupy",
   for (int miss = 0; miss < 10; ++miss) mapper->update(0.0, ray_to(2.05f), true);
   for (int hit = 1; hit <= 3; ++hit) {
     mapper->update(0.0, ray_to(1.05f), true);
-    CHECK(occupied(*mapper, voxel) == (hit == 3));
+    CHECK(octomap_shows(*mapper, voxel) == (hit == 3));
   }
 }
 

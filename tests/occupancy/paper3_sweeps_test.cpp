@@ -11,7 +11,7 @@ using namespace rigdesign;
 
 namespace {
 
-bool same_scores(const occupancy::Scores& a, const occupancy::Scores& b) {
+bool same_paper_scores(const occupancy::Scores& a, const occupancy::Scores& b) {
   return a.precision == b.precision && a.recall == b.recall && a.f1 == b.f1 && a.f2 == b.f2 &&
          a.f3 == b.f3;
 }
@@ -35,7 +35,7 @@ TEST_CASE("paper 3's sweeps: reference rows shared across tables run one mapper"
       const auto [it, inserted] = by_mapper.emplace(name, row.paper);
       if (!inserted) {
         INFO(name);
-        CHECK(same_scores(it->second, row.paper));
+        CHECK(same_paper_scores(it->second, row.paper));
       }
     }
   }
