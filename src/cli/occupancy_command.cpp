@@ -156,20 +156,10 @@ std::string frames_csv(const std::vector<occupancy::OccupancyRun>& runs) {
 }
 
 nlohmann::json phase_json(const occupancy::OccupancyPhase& phase) {
-  const auto scores = [](const occupancy::Scores& s) {
-    const auto value = [](double v) {
-      return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
-    };
-    return nlohmann::json{{"precision", value(s.precision)},
-                          {"recall", value(s.recall)},
-                          {"f1", value(s.f1)},
-                          {"f2", value(s.f2)},
-                          {"f3", value(s.f3)}};
-  };
   const auto value = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
   return {{"frames", phase.frames},
-          {"person", scores(phase.object)},
-          {"master", scores(phase.master)},
+          {"person", scores_json(phase.object)},
+          {"master", scores_json(phase.master)},
           {"ghost_area_m2", value(phase.ghost_area)},
           {"ghost_area_max_m2", phase.ghost_area_max},
           {"trail_area_m2", value(phase.trail_area)},
@@ -250,10 +240,8 @@ int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostre
   const std::vector<occupancy::CellSensor> sensors =
       occupancy::cell_sensors(inputs.rig, inputs.library);
   for (const occupancy::CellSensor& sensor : sensors) {
-    const std::vector<model::Vec3> rays = sim::ray_pattern(sensor.mode);
-    const int columns = sim::pattern_columns(rays);
     require_option(options.camera_pooling == 1 || !sensor.mode.is_camera() ||
-                       (columns > 0 && rays.size() % static_cast<std::size_t>(columns) == 0),
+                       sim::pixel_grid_columns(sim::ray_pattern(sensor.mode)) > 0,
                    "--camera-pooling",
                    "camera '" + sensor.id + "' has no full pixel grid to pool (a cone FOV)",
                    "1 for a rig with a cone-FOV camera");

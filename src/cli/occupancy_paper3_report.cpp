@@ -41,6 +41,8 @@ std::vector<std::string> run_cells(const occupancy::OccupancyRun& run) {
           cell_text(static_cast<double>(run.memory_bytes) / 1e6, 2)};
 }
 
+}  // namespace
+
 nlohmann::json scores_json(const occupancy::Scores& s) {
   const auto value = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
   return {{"precision", value(s.precision)},
@@ -49,8 +51,6 @@ nlohmann::json scores_json(const occupancy::Scores& s) {
           {"f2", value(s.f2)},
           {"f3", value(s.f3)}};
 }
-
-}  // namespace
 
 std::vector<occupancy::Paper3Sweep> paper3_sweeps_named(std::span<const std::string> names,
                                                         const occupancy::Paper3Common& common) {

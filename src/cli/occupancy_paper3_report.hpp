@@ -21,6 +21,10 @@ void print_paper3_report(std::span<const occupancy::Paper3Sweep> sweeps,
                          std::span<const occupancy::OccupancyRun> runs,
                          std::span<const std::string> extra, std::ostream& out);
 
+/// P, R, F1, F2, F3 as JSON, an undefined score (NaN) as null: `occupancy`'s report and the
+/// sweep tables write scores the same way.
+nlohmann::json scores_json(const occupancy::Scores& scores);
+
 nlohmann::json paper3_report_json(std::span<const occupancy::Paper3Sweep> sweeps,
                                   std::span<const occupancy::OccupancyRun> runs);
 

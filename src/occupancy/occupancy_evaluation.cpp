@@ -150,9 +150,9 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
     modes.push_back(sim::decimated_mode(sensors[i].mode, params.camera_stride, 1));
     rays.push_back(sim::ray_pattern(modes.back()));
     streams.push_back(sim::noise_stream(params.seed, i));
-    const int columns = sim::pattern_columns(rays.back());
+    const int columns = sim::pixel_grid_columns(rays.back());
     const bool pooled = params.camera_pooling > 1 && modes.back().is_camera();
-    if (pooled && (columns == 0 || rays.back().size() % static_cast<std::size_t>(columns) != 0)) {
+    if (pooled && columns == 0) {
       throw std::invalid_argument("evaluate_occupancy: camera '" + sensors[i].id +
                                   "' has no full pixel grid to mean-pool (a cone FOV)");
     }

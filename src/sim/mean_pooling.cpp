@@ -44,4 +44,9 @@ int pattern_columns(const std::vector<model::Vec3>& rays) {
   return columns;
 }
 
+int pixel_grid_columns(const std::vector<model::Vec3>& rays) {
+  const int columns = pattern_columns(rays);
+  return columns > 0 && rays.size() % static_cast<std::size_t>(columns) == 0 ? columns : 0;
+}
+
 }  // namespace rigdesign::sim

@@ -18,4 +18,8 @@ model::PointCloud mean_pool(const model::PointCloud& organised, int columns, int
 /// (sim::ray_pattern's rectangular grid of a pyramid camera); 0 for an empty pattern.
 int pattern_columns(const std::vector<model::Vec3>& rays);
 
+/// Whether `rays` form a full row-major pixel grid mean_pool can take (a pyramid camera's;
+/// a cone's grid is clipped to its circle). Returns its columns, or 0 when it is not one.
+int pixel_grid_columns(const std::vector<model::Vec3>& rays);
+
 }  // namespace rigdesign::sim
