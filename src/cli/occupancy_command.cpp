@@ -88,10 +88,6 @@ void apply_params_file(const std::string& path, occupancy::VoxelMapperParams& ba
   base.source = file.sources.front().source;
 }
 
-std::string number(double value, int decimals) {
-  return std::isnan(value) ? "-" : fixed(value, decimals);
-}
-
 void check_options(const OccupancyOptions& options) {
   require_option(options.rate > 0.0 && options.rate <= 100.0, "--rate", "is out of range",
                  "0 < rate <= 100 Hz");
@@ -199,27 +195,29 @@ void print_tables(const std::vector<occupancy::OccupancyRun>& runs,
     const occupancy::OccupancyRun& r = runs[i];
     const std::string voxel = fixed(grid[i].voxel, 2),
                       label = occupancy::persistence_label(grid[i]);
-    scores.add_row({voxel, label, number(r.all.object.precision, 3), number(r.all.object.recall, 3),
-                    number(r.all.object.f1, 3), number(r.all.object.f2, 3),
-                    number(r.all.object.f3, 3), number(r.moving.object.precision, 3),
-                    number(r.moving.object.recall, 3), number(r.moving.object.f2, 3),
-                    number(r.stationary.object.precision, 3), number(r.stationary.object.recall, 3),
-                    number(r.stationary.object.f2, 3)});
+    scores.add_row(
+        {voxel, label, fixed_or_dash(r.all.object.precision, 3),
+         fixed_or_dash(r.all.object.recall, 3), fixed_or_dash(r.all.object.f1, 3),
+         fixed_or_dash(r.all.object.f2, 3), fixed_or_dash(r.all.object.f3, 3),
+         fixed_or_dash(r.moving.object.precision, 3), fixed_or_dash(r.moving.object.recall, 3),
+         fixed_or_dash(r.moving.object.f2, 3), fixed_or_dash(r.stationary.object.precision, 3),
+         fixed_or_dash(r.stationary.object.recall, 3), fixed_or_dash(r.stationary.object.f2, 3)});
     const std::size_t misses = r.all.never_seen + r.all.seen_not_kept;
     const auto share = [&](std::size_t n) {
       return misses == 0
                  ? std::string("-")
                  : fixed(100.0 * static_cast<double>(n) / static_cast<double>(misses), 0) + "%";
     };
-    cell.add_row({voxel, label, number(r.moving.ghost_area, 2), number(r.stationary.ghost_area, 2),
-                  number(r.moving.trail_length_max, 2), number(r.stationary.trail_length_max, 2),
-                  number(model::median(r.all.mark_delays), 1),
-                  number(model::median(r.moving.clear_delays), 1),
-                  number(model::median(r.stationary.clear_delays), 1),
-                  std::to_string(r.pending_changes), share(r.all.never_seen),
-                  share(r.all.seen_not_kept), number(r.all.master.f2, 3),
-                  number(r.all.master_ghost_area, 2), number(r.all.update_ms, 1),
-                  number(r.all.points_per_second / 1e6, 2)});
+    cell.add_row(
+        {voxel, label, fixed_or_dash(r.moving.ghost_area, 2),
+         fixed_or_dash(r.stationary.ghost_area, 2), fixed_or_dash(r.moving.trail_length_max, 2),
+         fixed_or_dash(r.stationary.trail_length_max, 2),
+         fixed_or_dash(model::median(r.all.mark_delays), 1),
+         fixed_or_dash(model::median(r.moving.clear_delays), 1),
+         fixed_or_dash(model::median(r.stationary.clear_delays), 1),
+         std::to_string(r.pending_changes), share(r.all.never_seen), share(r.all.seen_not_kept),
+         fixed_or_dash(r.all.master.f2, 3), fixed_or_dash(r.all.master_ghost_area, 2),
+         fixed_or_dash(r.all.update_ms, 1), fixed_or_dash(r.all.points_per_second / 1e6, 2)});
   }
   out << "Near the person (paper 3's score), mean over frames; mov = robot moving, still = "
          "standing\n";

@@ -9,10 +9,6 @@
 namespace rigdesign::cli {
 namespace {
 
-std::string cell_text(double value, int decimals) {
-  return std::isnan(value) ? "-" : fixed(value, decimals);
-}
-
 const occupancy::OccupancyRun* run_named(std::span<const occupancy::OccupancyRun> runs,
                                          const std::string& name) {
   for (const occupancy::OccupancyRun& run : runs)
@@ -26,8 +22,8 @@ void add_score_columns(TextTable& table, const char* prefix) {
 }
 
 std::vector<std::string> score_cells(const occupancy::Scores& s) {
-  return {cell_text(s.precision, 3), cell_text(s.recall, 3), cell_text(s.f1, 3), cell_text(s.f2, 3),
-          cell_text(s.f3, 3)};
+  return {fixed_or_dash(s.precision, 3), fixed_or_dash(s.recall, 3), fixed_or_dash(s.f1, 3),
+          fixed_or_dash(s.f2, 3), fixed_or_dash(s.f3, 3)};
 }
 
 void add_run_columns(TextTable& table) {
@@ -36,9 +32,9 @@ void add_run_columns(TextTable& table) {
 }
 
 std::vector<std::string> run_cells(const occupancy::OccupancyRun& run) {
-  return {cell_text(run.all.trail_area, 2), cell_text(run.all.ghost_area, 2),
-          cell_text(run.all.update_ms, 1), cell_text(run.all.points_per_second / 1e6, 2),
-          cell_text(static_cast<double>(run.memory_bytes) / 1e6, 2)};
+  return {fixed_or_dash(run.all.trail_area, 2), fixed_or_dash(run.all.ghost_area, 2),
+          fixed_or_dash(run.all.update_ms, 1), fixed_or_dash(run.all.points_per_second / 1e6, 2),
+          fixed_or_dash(static_cast<double>(run.memory_bytes) / 1e6, 2)};
 }
 
 }  // namespace

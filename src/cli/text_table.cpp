@@ -1,6 +1,7 @@
 #include "text_table.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 
@@ -40,6 +41,10 @@ std::string fixed(double value, int decimals) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
   return buffer;
+}
+
+std::string fixed_or_dash(double value, int decimals) {
+  return std::isnan(value) ? "-" : fixed(value, decimals);
 }
 
 }  // namespace rigdesign::cli

@@ -21,5 +21,7 @@ class TextTable {
 
 /// Fixed-point text with `decimals` digits after the point.
 std::string fixed(double value, int decimals);
+/// fixed(), or "-" for an undefined value (NaN): a table cell.
+std::string fixed_or_dash(double value, int decimals);
 
 }  // namespace rigdesign::cli
