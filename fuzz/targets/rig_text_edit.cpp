@@ -1,6 +1,7 @@
 // Fuzz target: the rig text editor behind `serve`'s save (io/config/rig_text_editor): any text
 // with an edit of every value kind to the first mount (by the id after the first "id:") and to
-// a mount "front". The token scan must stay inside the text and refuse what it cannot place.
+// a mount "front", that mount's removal, and a mount added. The token and line scans must stay
+// inside the text and refuse what they cannot place.
 #include <algorithm>
 #include <vector>
 
@@ -33,6 +34,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::vector<rigdesign::io::MountEdit> edits = {edit};
     rigdesign::fuzz::expect_input_errors(
         [&] { rigdesign::io::edit_rig_text(text, "rig.yaml", edits); });
+    rigdesign::io::MountEdit removed;
+    removed.kind = rigdesign::io::MountEdit::Kind::remove;
+    removed.mount_id = id;
+    rigdesign::io::MountEdit added = edit;
+    added.kind = rigdesign::io::MountEdit::Kind::add;
+    added.mount_id = "new mount";
+    const std::vector<rigdesign::io::MountEdit> list_edits = {removed, added};
+    rigdesign::fuzz::expect_input_errors(
+        [&] { rigdesign::io::edit_rig_text(text, "rig.yaml", list_edits); });
   }
   return 0;
 }

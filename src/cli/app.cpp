@@ -24,7 +24,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
       setup_metrics(app), setup_check(app),    setup_coverage(app),         setup_select(app),
       setup_filter(app),  setup_simulate(app), setup_occupancy(app),        setup_localize(app),
       setup_costmap(app), setup_export(app),   setup_clearpath_import(app), setup_sensors(app),
-      setup_report(app)};
+      setup_report(app),  setup_serve(app)};
 
   // CLI11 would say only that the word "was not expected": name it and list the commands.
   if (!args.empty() && !args.front().empty() && args.front().front() != '-') {

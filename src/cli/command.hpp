@@ -32,5 +32,6 @@ Command setup_export(CLI::App& parent);
 Command setup_clearpath_import(CLI::App& parent);
 Command setup_sensors(CLI::App& parent);
 Command setup_report(CLI::App& parent);
+Command setup_serve(CLI::App& parent);
 
 }  // namespace rigdesign::cli

@@ -21,7 +21,8 @@ std::vector<std::vector<std::size_t>> sectors_broken_by(
     fovs.emplace_back(library.resolved_mode(mount.sensor_id, mount.mode_id), mount.T_robot_sensor,
                       body, mount.limits);
   }
-  const int steps = std::max(1, static_cast<int>(std::lround((2 * std::numbers::pi) / settings.step)));
+  const int steps =
+      std::max(1, static_cast<int>(std::lround((2 * std::numbers::pi) / settings.step)));
   std::vector<double> thetas;
   for (int step = 0; step < steps; ++step) {
     const double theta = (2 * std::numbers::pi) * step / steps;
@@ -31,7 +32,8 @@ std::vector<std::vector<std::size_t>> sectors_broken_by(
   }
   constexpr double kNone = std::numeric_limits<double>::infinity();
   // Per failure and sector: the smallest complete and floor share over the sector's angles.
-  std::vector<std::vector<double>> complete(failures.size(), std::vector<double>(sectors.size(), kNone));
+  std::vector<std::vector<double>> complete(failures.size(),
+                                            std::vector<double>(sectors.size(), kNone));
   std::vector<std::vector<double>> floor = complete;
   for (std::size_t t = 0; t < thetas.size(); ++t) {
     const geometry::SectionFrame frame =

@@ -10,8 +10,12 @@
 
 namespace rigdesign::io {
 
-/// New values for one mount; unset fields stay as written.
+/// New values for one mount; unset fields stay as written. A mount added needs every field
+/// (it is appended to the list in the style of the file's last mount); a mount removed loses
+/// its lines. A pose given by urdf_link that is edited becomes xyz and rpy_deg (both needed).
 struct MountEdit {
+  enum class Kind { change, add, remove };
+  Kind kind = Kind::change;
   std::string mount_id;
   std::optional<std::string> sensor;
   std::optional<std::string> mode;
@@ -22,7 +26,7 @@ struct MountEdit {
 /// `text` (the rig file read from `path`, which names it in errors) with `edits` applied.
 /// Numbers are written as the shortest text that reads back exactly. Throws InputError at the
 /// value's file:line:col when the file is not a rig the edit can apply to: no such mount, a
-/// pose taken from urdf_link (edit the robot description), or a field the edit needs missing.
+/// field the edit needs missing, or a list or pose written in a form it cannot place text in.
 std::string edit_rig_text(const std::string& text, const std::string& path,
                           std::span<const MountEdit> edits);
 

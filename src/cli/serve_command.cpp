@@ -1,0 +1,133 @@
+// `rigdesign serve RIG [--port N] [--no-open] [--sensors FILE] [--requirements FILE]`: the
+// studio (issue 37). Serves one page on loopback where the rig's mounts are moved, turned,
+// swapped, added and removed by hand, with the coverage and the verdicts recomputed on every
+// change, and saved back into the rig file's own text. Stops on Ctrl-C (SIGINT) or SIGTERM.
+#include <pthread.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <CLI/CLI.hpp>
+#include <csignal>
+#include <cstdlib>
+#include <memory>
+#include <ostream>
+#include <thread>
+
+#include "app.hpp"
+#include "command.hpp"
+#include "report/check_text.hpp"
+#include "report/file_report.hpp"
+#include "rigdesign/studio/request_guard.hpp"
+#include "rigdesign/studio/studio_server.hpp"
+#include "rigdesign/studio/studio_session.hpp"
+#include "studio_api.hpp"
+
+extern char** environ;
+
+namespace rigdesign::cli {
+namespace {
+
+struct ServeOptions {
+  std::string rig;
+  std::string sensors;
+  std::string requirements;
+  int port = 8765;
+  bool no_open = false;
+};
+
+bool has_display() {
+  for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY"}) {
+    const char* value = std::getenv(name);
+    if (value != nullptr && *value != '\0') return true;
+  }
+  return false;
+}
+
+// xdg-open in the background (no shell: the URL is one argument); reaped by a detached thread.
+bool open_browser(const std::string& url) {
+  pid_t child = 0;
+  std::string program = "xdg-open";
+  std::string argument = url;
+  char* argv[] = {program.data(), argument.data(), nullptr};
+  if (posix_spawnp(&child, "xdg-open", nullptr, nullptr, argv, environ) != 0) return false;
+  std::thread([child] {
+    int status = 0;
+    waitpid(child, &status, 0);
+  }).detach();
+  return true;
+}
+
+std::pair<int, std::string> check_saved_rig(const std::string& path, const ServeOptions& options) {
+  const std::vector<FileReport> reports = {check_file(path, options.sensors, options.requirements)};
+  const int exit_code = reports.front().invalid()   ? kBadInput
+                        : reports.front().failing() ? kRequirementFails
+                                                    : kOk;
+  return {exit_code, format_text(reports)};
+}
+
+int run_serve(const ServeOptions& options, std::ostream& out, std::ostream& err) {
+  studio::StudioSession session(options.rig, options.sensors, options.requirements);
+  if (!session.loaded()) {
+    // The page shows these too; the server stays up so the file can be mended and reloaded.
+    for (const model::Diagnostic& d : session.diagnostics()) err << d.message() << '\n';
+  }
+  StudioApi api(session,
+                [&options](const std::string& path) { return check_saved_rig(path, options); });
+
+  // SIGINT and SIGTERM go to one waiting thread that stops the server (blocked in every other
+  // thread, the server's included, which inherit the mask).
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  sigset_t previous;
+  pthread_sigmask(SIG_BLOCK, &stop_signals, &previous);
+  int exit_code = kOk;
+  {
+    studio::StudioServer server(
+        studio::new_token(), options.port,
+        [&api](const std::string& method, const std::string& name, const std::string& query,
+               const std::string& body) { return api(method, name, query, body); });
+    out << "rigdesign studio for " << options.rig << " at\n  " << server.url() << '\n'
+        << "  (loopback only" << (server.ipv6() ? ", also [::1]" : "")
+        << "; saves write only that rig file; Ctrl-C stops)" << std::endl;
+    if (!options.no_open && has_display() && !open_browser(server.url()))
+      err << "serve: could not start xdg-open; open the address above in a browser\n";
+    std::thread watcher([&server, &stop_signals] {
+      int signal = 0;
+      sigwait(&stop_signals, &signal);
+      server.stop();
+    });
+    server.run();
+    pthread_kill(watcher.native_handle(), SIGTERM);  // wakes the watcher if no signal came
+    watcher.join();
+  }
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+  out << "studio stopped" << (session.loaded() && session.dirty() ? " (unsaved edits dropped)" : "")
+      << '\n';
+  return exit_code;
+}
+
+}  // namespace
+
+Command setup_serve(CLI::App& parent) {
+  auto options = std::make_shared<ServeOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "serve",
+      "Design the rig by hand in a browser: move, turn and swap sensors and see the coverage "
+      "and verdicts update (a local page on 127.0.0.1 with a token)");
+  app->add_option("rig,--rig", options->rig, "Rig file to edit (positional or --rig)")->required();
+  app->add_option("--port", options->port, "Port on 127.0.0.1 and ::1 (0: any free port)")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  app->add_flag("--no-open", options->no_open,
+                "Do not open a browser (it opens when there is a display)");
+  app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
+  app->add_option("--requirements", options->requirements,
+                  "Requirements to judge the rig against (default: the file the rig names)");
+  return {app, [options](std::ostream& out, std::ostream& err) {
+            return run_serve(*options, out, err);
+          }};
+}
+
+}  // namespace rigdesign::cli

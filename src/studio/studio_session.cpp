@@ -1,0 +1,229 @@
+#include "rigdesign/studio/studio_session.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "rigdesign/geometry/mount_placement.hpp"
+#include "rigdesign/io/config/rig_references.hpp"
+#include "rigdesign/model/rotation.hpp"
+#include "rigdesign/model/units.hpp"
+
+namespace rigdesign::studio {
+namespace {
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+model::Pose3 pose_from(const MountPose& pose) {
+  return model::pose_from_xyz_rpy(
+      {pose.xyz[0], pose.xyz[1], pose.xyz[2]},
+      {model::deg_to_rad(pose.rpy_deg[0]), model::deg_to_rad(pose.rpy_deg[1]),
+       model::deg_to_rad(pose.rpy_deg[2])});
+}
+
+bool same_pose(const model::Pose3& a, const model::Pose3& b) {
+  return a.matrix() == b.matrix();
+}
+
+}  // namespace
+
+MountPose pose_of(const model::Mount& mount) {
+  const model::Vec3 xyz = mount.T_robot_sensor.translation();
+  const model::Vec3 rpy = model::rpy_from_rotation(mount.T_robot_sensor.linear());
+  return {{xyz.x(), xyz.y(), xyz.z()},
+          {model::rad_to_deg(rpy.x()), model::rad_to_deg(rpy.y()), model::rad_to_deg(rpy.z())}};
+}
+
+StudioSession::StudioSession(std::string rig_path, std::string sensors_path,
+                             std::string requirements_path)
+    : rig_path_(std::move(rig_path)),
+      sensors_path_(std::move(sensors_path)),
+      requirements_path_(std::move(requirements_path)) {
+  reload();
+}
+
+void StudioSession::reload() {
+  inputs_.reset();
+  raster_.reset();
+  loaded_mounts_.clear();
+  given_poses_.clear();
+  diagnostics_.clear();
+  try {
+    // Saves go to this file, and only while the path still leads to it (a rig swapped for a
+    // symbolic link elsewhere after loading is not followed).
+    std::error_code ignored;
+    target_ = std::filesystem::weakly_canonical(rig_path_, ignored).string();
+    loaded_text_ = file_text(rig_path_);
+    io::RigInputs inputs = io::load_rig_inputs(rig_path_, sensors_path_, requirements_path_);
+    // Every core: a dragged mount's sections are rasterised while the user waits.
+    raster_.emplace(inputs.rig, inputs.library, metrics::CoverageSettings{},
+                    static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));
+    loaded_mounts_ = inputs.rig.mounts;
+    diagnostics_ = inputs.warnings;
+    inputs_ = std::move(inputs);
+  } catch (const model::InputError& error) {
+    diagnostics_ = error.diagnostics();
+  }
+}
+
+MountPose StudioSession::pose(const model::Mount& mount) const {
+  const auto given = given_poses_.find(mount.id);
+  return given != given_poses_.end() ? given->second : pose_of(mount);
+}
+
+StudioNumbers StudioSession::numbers(bool exact) const {
+  const auto start = std::chrono::steady_clock::now();
+  const io::RigInputs& in = *inputs_;
+  StudioNumbers numbers;
+  numbers.resultant = metrics::compute_resultant(in.rig, in.library);
+  const std::vector<model::SectorRequirement> sectors =
+      in.requirements ? in.requirements->sectors : std::vector<model::SectorRequirement>{};
+  numbers.coverage =
+      exact ? metrics::compute_coverage(in.rig, in.library, sectors) : raster_->coverage(sectors);
+  if (in.requirements) {
+    numbers.requirements = metrics::evaluate_requirements(in.rig, numbers.resultant,
+                                                          *in.requirements, &numbers.coverage);
+  }
+  numbers.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return numbers;
+}
+
+std::size_t StudioSession::index_of(const std::string& mount_id) const {
+  const std::vector<model::Mount>& mounts = inputs_->rig.mounts;
+  for (std::size_t i = 0; i < mounts.size(); ++i)
+    if (mounts[i].id == mount_id) return i;
+  throw model::InputError(model::Diagnostic({rig_path_, 0, 0}, "mount",
+                                            "'" + mount_id + "' is not a mount of the rig",
+                                            "the id of one of the rig's mounts"));
+}
+
+// The checks load_rig_inputs makes of a rig's mounts, so an edit is refused with check's words.
+void StudioSession::validate(const model::Rig& rig) const {
+  model::Diagnostics found = io::check_rig_references(rig, inputs_->library);
+  const model::Diagnostics placement = geometry::check_mount_placement(rig);
+  for (const model::Diagnostic& d : placement.items()) found.add(d);
+  found.throw_if_errors();
+}
+
+void StudioSession::set_pose(const std::string& mount_id, const MountPose& pose) {
+  const std::size_t index = index_of(mount_id);
+  model::Rig edited = inputs_->rig;
+  model::Mount& mount = edited.mounts[index];
+  mount.T_robot_sensor = pose_from(pose);
+  // Saved as numbers from now on: the description's link no longer places this sensor.
+  mount.urdf_link.clear();
+  mount.urdf_link_optical = false;
+  validate(edited);
+  raster_->set_mount(index, mount);
+  given_poses_[mount_id] = pose;
+  inputs_->rig = std::move(edited);
+}
+
+void StudioSession::set_sensor(const std::string& mount_id, const std::string& sensor,
+                               const std::string& mode) {
+  const std::size_t index = index_of(mount_id);
+  model::Rig edited = inputs_->rig;
+  edited.mounts[index].sensor_id = sensor;
+  edited.mounts[index].mode_id = mode;
+  validate(edited);
+  raster_->set_mount(index, edited.mounts[index]);
+  inputs_->rig = std::move(edited);
+}
+
+std::string StudioSession::add_mount(const std::string& sensor, const std::string& mode,
+                                     const MountPose& pose) {
+  const auto taken = [&](const std::string& id) {
+    for (const model::Mount& m : inputs_->rig.mounts)
+      if (m.id == id) return true;
+    for (const model::Mount& m : loaded_mounts_)
+      if (m.id == id) return true;  // a removed mount's id would make its save ambiguous
+    return false;
+  };
+  std::string id = sensor;
+  for (int n = 2; taken(id); ++n) id = sensor + "_" + std::to_string(n);
+  model::Mount mount;
+  mount.id = id;
+  mount.sensor_id = sensor;
+  mount.mode_id = mode;
+  mount.T_robot_sensor = pose_from(pose);
+  mount.where = {rig_path_, 0, 0};
+  model::Rig edited = inputs_->rig;
+  edited.mounts.push_back(mount);
+  validate(edited);
+  raster_->add_mount(mount);
+  given_poses_[id] = pose;
+  inputs_->rig = std::move(edited);
+  return id;
+}
+
+void StudioSession::remove_mount(const std::string& mount_id) {
+  const std::size_t index = index_of(mount_id);
+  if (inputs_->rig.mounts.size() == 1)
+    throw model::InputError(model::Diagnostic(inputs_->rig.mounts.front().where, "mounts",
+                                              "would be empty without '" + mount_id + "'",
+                                              "at least one mount"));
+  raster_->remove_mount(index);
+  inputs_->rig.mounts.erase(inputs_->rig.mounts.begin() + static_cast<std::ptrdiff_t>(index));
+  given_poses_.erase(mount_id);
+}
+
+std::vector<io::MountEdit> StudioSession::pending_edits() const {
+  std::vector<io::MountEdit> edits;
+  const std::vector<model::Mount>& now = inputs_->rig.mounts;
+  const auto find = [](const std::vector<model::Mount>& list, const std::string& id) {
+    for (const model::Mount& m : list)
+      if (m.id == id) return &m;
+    return static_cast<const model::Mount*>(nullptr);
+  };
+  for (const model::Mount& before : loaded_mounts_) {
+    if (find(now, before.id) != nullptr) continue;
+    io::MountEdit edit;
+    edit.mount_id = before.id;
+    edit.kind = io::MountEdit::Kind::remove;
+    edits.push_back(std::move(edit));
+  }
+  for (const model::Mount& mount : now) {
+    const model::Mount* before = find(loaded_mounts_, mount.id);
+    io::MountEdit edit;
+    edit.mount_id = mount.id;
+    edit.kind = before != nullptr ? io::MountEdit::Kind::change : io::MountEdit::Kind::add;
+    if (before == nullptr || before->sensor_id != mount.sensor_id) edit.sensor = mount.sensor_id;
+    if (before == nullptr || before->mode_id != mount.mode_id) edit.mode = mount.mode_id;
+    if (before == nullptr || !same_pose(before->T_robot_sensor, mount.T_robot_sensor)) {
+      const MountPose pose = this->pose(mount);
+      edit.xyz = pose.xyz;
+      edit.rpy_deg = pose.rpy_deg;
+    }
+    if (edit.kind == io::MountEdit::Kind::add || edit.sensor || edit.mode || edit.xyz)
+      edits.push_back(std::move(edit));
+  }
+  return edits;
+}
+
+bool StudioSession::dirty() const {
+  return loaded() && !pending_edits().empty();
+}
+
+void StudioSession::save() {
+  const std::vector<io::MountEdit> edits = pending_edits();
+  std::error_code ignored;
+  if (std::filesystem::weakly_canonical(rig_path_, ignored).string() != target_)
+    throw model::InputError(model::Diagnostic(
+        {rig_path_, 0, 0}, "file",
+        "now leads to another file than the one loaded (" + target_ + "); not written",
+        "the rig file the studio was started on"));
+  // The file itself, so a rig reached through a symbolic link stays a link.
+  io::save_rig_edits(target_, loaded_text_, edits);
+  // Read back as `check` reads it: new lines for added mounts, the written text as baseline.
+  reload();
+}
+
+}  // namespace rigdesign::studio

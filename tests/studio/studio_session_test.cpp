@@ -1,0 +1,191 @@
+// Issue 37: the studio's session. Every expected value comes from another way in: the rig
+// written by hand with the edited values and run through `rigdesign metrics` and `check`, or
+// the file's text edited by hand.
+#include "rigdesign/studio/studio_session.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign;
+
+namespace {
+
+const std::string kFrontPose = "{xyz: [0.5, 0, 0.2], rpy_deg: [0, 0, 0]}";
+
+// The bundled cart with its requirements named by absolute path (the copy lives elsewhere).
+std::string cart_text() {
+  std::string text = test::file_text(test::source_path("rigs/cart_two_scanners.yaml"));
+  const std::string from = "requirements: requirements/cart_two_scanners.yaml";
+  text.replace(text.find(from), from.size(),
+               "requirements: " + test::source_path("rigs/requirements/cart_two_scanners.yaml"));
+  return text;
+}
+
+std::string with_text_replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+std::string library_path() {
+  return test::source_path("sensors.yaml");
+}
+
+}  // namespace
+
+TEST_CASE("studio: a moved mount gets the numbers `metrics` gives the rig written with its pose",
+          "[studio]") {
+  test::TempFolder folder;
+  const std::string path = folder.write("cart.yaml", cart_text());
+  studio::StudioSession session(path, library_path(), "");
+  REQUIRE(session.loaded());
+  CHECK_FALSE(session.dirty());
+  session.set_pose("front_lidar", {{0.5, 0, 0.35}, {0, 10, 0}});
+  CHECK(session.dirty());
+  const studio::StudioNumbers exact = session.numbers(true);
+  const studio::StudioNumbers raster = session.numbers(false);
+
+  const std::string by_hand =
+      with_text_replaced(cart_text(), kFrontPose, "{xyz: [0.5, 0, 0.35], rpy_deg: [0, 10, 0]}");
+  const std::string other = folder.write("by_hand.yaml", by_hand);
+  const test::CliResult metrics =
+      test::run_cli({"metrics", other, "--sensors", library_path(), "--json"});
+  REQUIRE(metrics.exit_code == 0);
+  const nlohmann::json report = nlohmann::json::parse(metrics.out);
+  CHECK(exact.coverage.complete.min == Approx(report["coverage"]["complete"]["min"].get<double>()));
+  CHECK(exact.coverage.complete.mean ==
+        Approx(report["coverage"]["complete"]["mean"].get<double>()));
+  // The raster path as `metrics` reports it (its N-1 baseline is the raster run).
+  CHECK(raster.coverage.complete.mean ==
+        Approx(report["coverage"]["n_minus_1_baseline"]["complete"]["mean"].get<double>()));
+  const nlohmann::json& results = report["requirements"]["results"];
+  REQUIRE(results.size() == exact.requirements.size());
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    INFO(results[i]["id"]);
+    CHECK(to_string(exact.requirements[i].verdict) == results[i]["verdict"].get<std::string>());
+  }
+
+  // Saving changes the pose's characters and nothing else; `check` reads the file back.
+  session.save();
+  CHECK(test::file_text(path) == by_hand);
+  CHECK_FALSE(session.dirty());
+  // check's exit code is what the verdicts of `metrics` make it: 1 when one fails.
+  bool any_fails = false;
+  for (const nlohmann::json& result : results) any_fails = any_fails || result["verdict"] == "fail";
+  CHECK(test::run_cli({"check", path, "--sensors", library_path()}).exit_code ==
+        (any_fails ? 1 : 0));
+}
+
+TEST_CASE("studio: an edit that makes the rig invalid is refused with check's message",
+          "[studio]") {
+  test::TempFolder folder;
+  const std::string path = folder.write("cart.yaml", cart_text());
+  studio::StudioSession session(path, library_path(), "");
+  REQUIRE(session.loaded());
+  const model::Pose3 before = session.inputs().rig.mounts.front().T_robot_sensor;
+
+  // A mode the sensor lacks: `check` on the file with that mode written names the same place.
+  std::string message;
+  try {
+    session.set_sensor("front_lidar", "rplidar_a1m8", "20hz");
+    FAIL("accepted");
+  } catch (const model::InputError& error) {
+    message = error.diagnostics().front().message();
+  }
+  const std::string bad_mode = folder.write(
+      "bad_mode.yaml", with_text_replaced(cart_text(), "sensor: rplidar_a1m8, mode: 5_5hz",
+                                          "sensor: rplidar_a1m8, mode: 20hz"));
+  test::CliResult check = test::run_cli({"check", bad_mode, "--sensors", library_path()});
+  CHECK(check.exit_code == 2);
+  // The message names the studio's file; check's names its copy: compare after the file name.
+  const std::string tail = message.substr(message.find(':'));
+  CHECK(check.out.find(tail) != std::string::npos);
+
+  // A sensor inside the cart's prism.
+  try {
+    session.set_pose("front_lidar", {{0.1, 0, 0.2}, {0, 0, 0}});
+    FAIL("accepted");
+  } catch (const model::InputError& error) {
+    message = error.diagnostics().front().message();
+  }
+  const std::string inside = folder.write(
+      "inside.yaml",
+      with_text_replaced(cart_text(), kFrontPose, "{xyz: [0.1, 0, 0.2], rpy_deg: [0, 0, 0]}"));
+  check = test::run_cli({"check", inside, "--sensors", library_path()});
+  CHECK(check.exit_code == 2);
+  CHECK(check.out.find(message.substr(message.find(':'))) != std::string::npos);
+
+  // The last valid state is kept.
+  CHECK(session.inputs().rig.mounts.front().T_robot_sensor.matrix() == before.matrix());
+  CHECK(session.inputs().rig.mounts.front().mode_id == "5_5hz");
+  CHECK_FALSE(session.dirty());
+}
+
+TEST_CASE("studio: a rig that fails to load is kept as its errors", "[studio]") {
+  test::TempFolder folder;
+  const std::string path = folder.write("broken.yaml", "name: x\nbody: {radius: 0.2, height: [\n");
+  studio::StudioSession session(path, library_path(), "");
+  CHECK_FALSE(session.loaded());
+  REQUIRE_FALSE(session.diagnostics().empty());
+  CHECK(session.diagnostics().front().message().find(path + ":") == 0);
+  // Mended on disk, a reload takes it.
+  folder.write("broken.yaml", cart_text());
+  session.reload();
+  CHECK(session.loaded());
+}
+
+TEST_CASE("studio: saves go only to the file loaded, never over a change on disk", "[studio]") {
+  test::TempFolder folder;
+  const std::string real = folder.write("real.yaml", cart_text());
+  const std::string link = folder.path() + "/rig.yaml";
+  std::filesystem::create_symlink(real, link);
+  studio::StudioSession session(link, library_path(), "");
+  REQUIRE(session.loaded());
+
+  // Through a symbolic link: the file it leads to is written, the link stays a link.
+  session.set_pose("rear_lidar", {{-0.55, 0, 0.2}, {0, 0, 180}});
+  session.save();
+  CHECK(std::filesystem::is_symlink(link));
+  CHECK(test::file_text(real) ==
+        with_text_replaced(cart_text(), "xyz: [-0.5, 0, 0.2]", "xyz: [-0.55, 0, 0.2]"));
+
+  // Someone edits the file: the save is refused and their text kept.
+  session.set_pose("rear_lidar", {{-0.6, 0, 0.2}, {0, 0, 180}});
+  const std::string theirs = test::file_text(real) + "# a comment added by hand\n";
+  folder.write("real.yaml", theirs);
+  CHECK_THROWS_AS(session.save(), model::InputError);
+  CHECK(test::file_text(real) == theirs);
+
+  // The link now leads elsewhere: not followed.
+  const std::string elsewhere = folder.write("elsewhere.yaml", cart_text());
+  std::filesystem::remove(link);
+  std::filesystem::create_symlink(elsewhere, link);
+  CHECK_THROWS_AS(session.save(), model::InputError);
+  CHECK(test::file_text(elsewhere) == cart_text());
+}
+
+TEST_CASE("studio: mounts added and removed are saved as list items", "[studio]") {
+  test::TempFolder folder;
+  const std::string path = folder.write("cart.yaml", cart_text());
+  studio::StudioSession session(path, library_path(), "");
+  REQUIRE(session.loaded());
+  const std::string id = session.add_mount("rplidar_a1m8", "5_5hz", {{0, 0.4, 0.2}, {0, 0, 90}});
+  CHECK(id == "rplidar_a1m8");
+  session.remove_mount("rear_lidar");
+  session.save();
+  const std::string text = cart_text();
+  const std::string expected =
+      text.substr(0, text.find("  - {id: rear_lidar")) +
+      "  - {id: rplidar_a1m8, sensor: rplidar_a1m8, mode: 5_5hz, pose: {xyz: [0, 0.4, 0.2], "
+      "rpy_deg: [0, 0, 90]}}\n";
+  CHECK(test::file_text(path) == expected);
+  REQUIRE(session.loaded());
+  CHECK(session.inputs().rig.mounts.size() == 2);
+  // The last mount cannot go.
+  session.remove_mount("front_lidar");
+  CHECK_THROWS_AS(session.remove_mount("rplidar_a1m8"), model::InputError);
+}
