@@ -13,6 +13,8 @@
 #   scripts/bench.sh paper3_sweeps   # paper 3's Tables 2-9 on rigs/cell.yaml (occupancy
 #                                    # --sweep paper3, 32 mappers, 480 frames; issue 36: under
 #                                    # 10 minutes here, checked), beside paper 3's numbers
+#   scripts/bench.sh studio_latency  # issue 37: a pose change in `serve` to the numbers drawn and
+#                                    # to the next frame, every bundled rig, headless Chromium
 #   scripts/bench.sh localize_frozen # the frozen validation set (a second generator, seeds
 #                                    # fixed before tuning; issue 33): report, never tune
 set -euo pipefail
@@ -69,5 +71,8 @@ if [ -z "$only" ] || [ "$only" = "localize_matrix" ]; then
 fi
 if [ -z "$only" ] || [ "$only" = "localize_frozen" ]; then
   python3 "$root/scripts/localize/frozen_benchmark.py" "$build/src/rigdesign"
+fi
+if [ -z "$only" ] || [ "$only" = "studio_latency" ]; then
+  python3 "$root/tests/bench/studio_latency.py" "$build/src/rigdesign" "$root"
 fi
 echo "load average after the run: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -72,6 +72,22 @@ json mounts_json(const studio::StudioSession& session) {
 
 // `since`: when the request arrived, so `seconds` covers the edit (the moved mount's rasters)
 // and the numbers; `compute_seconds` the numbers alone.
+// `metrics --json`'s coverage summaries with the curves as three plain lists: a pose update
+// is a third the size of the per-angle records `to_json(coverage, true)` gives.
+json coverage_json(const metrics::RigCoverage& coverage) {
+  json report = to_json(coverage, false);
+  json theta = json::array(), complete = json::array(), floor = json::array();
+  for (const metrics::AngleCoverage& angle : coverage.angles) {
+    theta.push_back(model::rad_to_deg(angle.theta));
+    complete.push_back(angle.complete);
+    floor.push_back(angle.floor);
+  }
+  report["curve_theta_deg"] = theta;
+  report["curve_complete"] = complete;
+  report["curve_floor"] = floor;
+  return report;
+}
+
 json numbers_json(const studio::StudioSession& session, bool exact,
                   std::chrono::steady_clock::time_point since) {
   const studio::StudioNumbers numbers = session.numbers(exact);
@@ -93,7 +109,7 @@ json numbers_json(const studio::StudioSession& session, bool exact,
       {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count()},
       {"compute_seconds", numbers.seconds},
       {"metrics", to_json(session.inputs(), numbers.resultant)},
-      {"coverage", to_json(numbers.coverage, true)},
+      {"coverage", coverage_json(numbers.coverage)},
       {"sector_bounds", sectors},
       {"requirements", requirements},
       {"mounts", mounts_json(session)},

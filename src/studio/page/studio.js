@@ -51,7 +51,9 @@ const view = {};
 
 function setUpView() {
   const host = $('view3d');
-  view.renderer = new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
+  // No multisampling and per-vertex (Lambert) shading: a frame of the TurtleBot 4 (59k
+  // triangles) took 200 ms with them on a machine without a GPU (SwiftShader).
+  view.renderer = new THREE.WebGLRenderer({antialias: false, preserveDrawingBuffer: true});
   view.renderer.setPixelRatio(window.devicePixelRatio || 1);
   host.appendChild(view.renderer.domElement);
   view.scene = new THREE.Scene();
@@ -134,6 +136,14 @@ async function loadScene() {
   const gltf = await new Promise((resolve, reject) =>
     new THREE.GLTFLoader().parse(typeof text === 'string' ? text : JSON.stringify(text), '', resolve, reject));
   view.gltfRoot = gltf.scene;
+  view.gltfRoot.traverse((node) => {
+    if (!node.isMesh) return;
+    const pbr = node.material;
+    node.material = new THREE.MeshLambertMaterial({
+      color: pbr.color, transparent: pbr.transparent, opacity: pbr.opacity,
+      depthWrite: !pbr.transparent, side: pbr.side});
+    pbr.dispose();
+  });
   view.scene.add(view.gltfRoot);
   view.root = gltf.scene.children[0];  // the base link's node: its children are in the robot frame
   view.gltfRoot.updateMatrixWorld(true);
@@ -188,7 +198,7 @@ async function refreshVolume(mountId) {
   geometry.setIndex(fov.indices);
   geometry.computeVertexNormals();
   if (!volume) {
-    volume = new THREE.Mesh(geometry, new THREE.MeshStandardMaterial(
+    volume = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial(
       {color: 0x2a9d8f, transparent: true, opacity: 0.35, depthWrite: false}));
     volume.name = mountId;
     pivot.userData.holder = new THREE.Object3D();
@@ -380,11 +390,15 @@ function showNumbers(numbers) {
   drawCurves(numbers);
   drawVerdicts(numbers);
   drawResultant(numbers);
+  // The list is rebuilt only when a mount's name, sensor or mode changed (not on a move).
+  const labels = numbers.mounts.map((m) => m.id + ': ' + m.sensor + ' / ' + m.mode);
   const list = $('mounts');
-  const keep = studio.selected;
-  list.innerHTML = '';
-  for (const m of numbers.mounts) list.add(new Option(m.id + ': ' + m.sensor + ' / ' + m.mode, m.id));
-  if (keep) list.value = keep;
+  if (labels.join('\n') !== Array.from(list.options).map((o) => o.text).join('\n')) {
+    const keep = studio.selected;
+    list.innerHTML = '';
+    numbers.mounts.forEach((m, i) => list.add(new Option(labels[i], m.id)));
+    if (keep) list.value = keep;
+  }
   studio.updates += 1;
   if (!studio.dragging) loadSection();
 }
@@ -405,28 +419,39 @@ function drawCurves(numbers) {
   }
   for (let d = -180; d <= 180; d += 45) g.fillText(String(d), x(d === 180 ? 179.99 : d) - 8, H - 10);
   g.fillText('azimuth [deg], 0 = forward, + = left', W / 2 - 90, H - 0);
+  // A sector as at most two spans on the axis (it may wrap past 180 degrees); each span one
+  // rectangle and one path per required level: a few draw calls however wide the sector.
+  const spans = (from, to) => {
+    const start = ((((from + 180) % 360) + 360) % 360) - 180, end = start + (to - from);
+    return end <= 180 ? [[start, end]] : [[start, 180], [-180, end - 360]];
+  };
+  const px = (deg) => left + (deg + 180) / 360 * (W - left - right);
   const bounds = numbers.sector_bounds || [];
   numbers.coverage.sectors.forEach((sector, i) => {
     const b = bounds[i];
     if (!b) return;
     g.fillStyle = sector.pass ? 'rgba(40,160,60,0.10)' : 'rgba(200,30,30,0.12)';
-    for (let d = b.from_deg; d < b.to_deg; d += 1) g.fillRect(x(d), top, Math.max(1, x(d + 1) - x(d)), H - top - bottom);
-    g.strokeStyle = '#1f4e9c'; g.setLineDash([4, 3]);
-    for (let d = b.from_deg; d < b.to_deg; d += 1) { g.beginPath(); g.moveTo(x(d), y(sector.required_complete)); g.lineTo(x(d) + (x(d + 1) - x(d) > 0 ? x(d + 1) - x(d) : 1), y(sector.required_complete)); g.stroke(); }
-    g.strokeStyle = '#c05a00';
-    for (let d = b.from_deg; d < b.to_deg; d += 1) { g.beginPath(); g.moveTo(x(d), y(sector.required_floor)); g.lineTo(x(d) + (x(d + 1) - x(d) > 0 ? x(d + 1) - x(d) : 1), y(sector.required_floor)); g.stroke(); }
-    g.setLineDash([]);
+    for (const [from, to] of spans(b.from_deg, b.to_deg)) {
+      g.fillRect(px(from), top, px(to) - px(from), H - top - bottom);
+      g.setLineDash([4, 3]);
+      for (const [share, colour] of [[sector.required_complete, '#1f4e9c'], [sector.required_floor, '#c05a00']]) {
+        g.strokeStyle = colour;
+        g.beginPath(); g.moveTo(px(from), y(share)); g.lineTo(px(to), y(share)); g.stroke();
+      }
+      g.setLineDash([]);
+    }
   });
-  const samples = numbers.coverage.curves || [];
+  const thetas = numbers.coverage.curve_theta_deg;
   const curve = (key, colour) => {
     g.strokeStyle = colour; g.lineWidth = 1.5;
-    const points = samples.map((s) => [((s.theta_deg + 180) % 360) - 180, s[key]]).sort((a, b) => a[0] - b[0]);
+    const values = numbers.coverage[key];
+    const points = thetas.map((theta, i) => [((theta + 180) % 360) - 180, values[i]]).sort((a, b) => a[0] - b[0]);
     g.beginPath();
     points.forEach(([deg, share], i) => { if (i === 0) g.moveTo(x(deg), y(share)); else g.lineTo(x(deg), y(share)); });
     g.stroke(); g.lineWidth = 1;
   };
-  curve('complete', '#1f4e9c');
-  curve('floor', '#c05a00');
+  curve('curve_complete', '#1f4e9c');
+  curve('curve_floor', '#c05a00');
   g.fillStyle = '#1f4e9c'; g.fillText('SC complete', left + 6, top + 12);
   g.fillStyle = '#c05a00'; g.fillText('SC floor', left + 90, top + 12);
 }
