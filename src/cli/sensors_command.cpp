@@ -3,7 +3,6 @@
 // [--sensors FILE]`: lists and searches the sensor library, or prints one sensor in full.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <cctype>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -17,6 +16,7 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/units.hpp"
+#include "sensor_query.hpp"
 #include "sensor_sheet.hpp"
 #include "text_table.hpp"
 
@@ -25,55 +25,11 @@ namespace {
 
 struct SensorsOptions {
   std::string sensor;
-  std::vector<std::string> technologies;
-  std::string search;
-  double min_range = 0.0;
-  double max_price = 0.0;  // 0: no limit
-  double min_rate = 0.0;
-  double min_fov_deg = 0.0;
+  SensorQuery query;
   std::string sort = "id";
   std::string format = "text";
   std::string sensors;
 };
-
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
-// A mode answers a query only if it meets every mode criterion at once: a lidar that reaches
-// 40 m at 10 Hz and 20 m at 20 Hz does not answer "40 m at 20 Hz".
-bool mode_matches(const model::SensorMode& mode, const SensorsOptions& options) {
-  return mode.max_range >= options.min_range && mode.frequency >= options.min_rate &&
-         model::rad_to_deg(mode.fov.horizontal()) >= options.min_fov_deg - 1e-9;
-}
-
-std::vector<const model::SensorMode*> matching_modes(const model::Sensor& sensor,
-                                                     const SensorsOptions& options) {
-  std::vector<const model::SensorMode*> modes;
-  for (const model::SensorMode& mode : sensor.modes) {
-    if (mode_matches(mode, options)) modes.push_back(&mode);
-  }
-  return modes;
-}
-
-bool sensor_matches(const model::Sensor& sensor, const SensorsOptions& options) {
-  if (!options.technologies.empty() &&
-      std::find(options.technologies.begin(), options.technologies.end(),
-                model::to_string(sensor.technology)) == options.technologies.end()) {
-    return false;
-  }
-  if (!options.search.empty()) {
-    const std::string needle = lowercase(options.search);
-    if (lowercase(sensor.id).find(needle) == std::string::npos &&
-        lowercase(sensor.name).find(needle) == std::string::npos) {
-      return false;
-    }
-  }
-  if (options.max_price > 0 && sensor.price.usd > options.max_price) return false;
-  return !matching_modes(sensor, options).empty();
-}
 
 double sort_key(const model::Sensor& sensor, const std::string& key) {
   double best = 0.0;
@@ -87,7 +43,7 @@ std::vector<const model::Sensor*> select_sensors(const model::SensorLibrary& lib
                                                  const SensorsOptions& options) {
   std::vector<const model::Sensor*> found;
   for (const model::Sensor& sensor : library.sensors) {
-    if (sensor_matches(sensor, options)) found.push_back(&sensor);
+    if (sensor_matches(sensor, options.query)) found.push_back(&sensor);
   }
   std::stable_sort(found.begin(), found.end(), [&](const model::Sensor* a, const model::Sensor* b) {
     if (options.sort == "id") return a->id < b->id;
@@ -114,7 +70,7 @@ void print_list(const std::vector<const model::Sensor*>& sensors, const SensorsO
   table.add_column("price [USD]", TextTable::Align::right);
   table.add_column("name", TextTable::Align::left);
   for (const model::Sensor* sensor : sensors) {
-    const std::vector<const model::SensorMode*> modes = matching_modes(*sensor, options);
+    const std::vector<const model::SensorMode*> modes = matching_modes(*sensor, options.query);
     double range_low = 1e300, range_high = 0, rate_low = 1e300, rate_high = 0;
     for (const model::SensorMode* mode : modes) {
       range_low = std::min(range_low, mode->max_range);
@@ -138,7 +94,7 @@ void print_list(const std::vector<const model::Sensor*>& sensors, const SensorsO
 int run_sensors(const SensorsOptions& options, std::ostream& out) {
   const model::SensorLibrary library = io::load_sensor_library(
       options.sensors.empty() ? io::bundled_sensor_library() : options.sensors);
-  for (const std::string& technology : options.technologies) {
+  for (const std::string& technology : options.query.technologies) {
     const std::vector<std::string> names = model::names_of(model::kTechnologyNames);
     require_option(std::find(names.begin(), names.end(), technology) != names.end(), "--technology",
                    "unknown technology '" + technology + "'", "one of " + model::join(names));
@@ -179,20 +135,20 @@ Command setup_sensors(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand(
       "sensors", "List and search the sensor library, or print one sensor in full");
   app->add_option("sensor", options->sensor, "A sensor id: print its datasheet values and modes");
-  app->add_option("--technology", options->technologies,
+  app->add_option("--technology", options->query.technologies,
                   "Only these technologies (repeatable, or comma-separated)")
       ->delimiter(',');
-  app->add_option("--search", options->search,
+  app->add_option("--search", options->query.search,
                   "Only sensors whose id or name contains this text (any case)");
-  app->add_option("--min-range", options->min_range,
+  app->add_option("--min-range", options->query.min_range,
                   "Only sensors with a mode reaching at least this far [m]")
       ->check(finite_in(0.0, 1e6, "metres, >= 0"));
-  app->add_option("--max-price", options->max_price, "Only sensors costing at most this [USD]")
+  app->add_option("--max-price", options->query.max_price, "Only sensors costing at most this [USD]")
       ->check(positive_up_to(1e9, "a price in USD, > 0"));
-  app->add_option("--min-rate", options->min_rate,
+  app->add_option("--min-rate", options->query.min_rate,
                   "Only sensors with a mode at least this fast [Hz]")
       ->check(finite_in(0.0, 1e6, "a rate in Hz, >= 0"));
-  app->add_option("--min-fov-deg", options->min_fov_deg,
+  app->add_option("--min-fov-deg", options->query.min_fov_deg,
                   "Only sensors with a mode at least this wide horizontally [deg]")
       ->check(finite_in(0.0, 360.0, "degrees in [0, 360]"));
   app->add_option("--sort", options->sort, "Order of the list (range and rate: largest first)")

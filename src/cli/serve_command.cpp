@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <csignal>
 #include <cstdlib>
 #include <memory>
@@ -93,13 +94,17 @@ int run_serve(const ServeOptions& options, std::ostream& out, std::ostream& err)
         << "; saves write only that rig file; Ctrl-C stops)" << std::endl;
     if (!options.no_open && has_display() && !open_browser(server.url()))
       err << "serve: could not start xdg-open; open the address above in a browser\n";
-    std::thread watcher([&server, &stop_signals] {
+    std::atomic<bool> signalled{false};
+    std::thread watcher([&server, &stop_signals, &signalled] {
       int signal = 0;
       sigwait(&stop_signals, &signal);
+      signalled = true;
       server.stop();
     });
     server.run();
-    pthread_kill(watcher.native_handle(), SIGTERM);  // wakes the watcher if no signal came
+    // run() returned without a signal (the sockets failed): wake the watcher with one aimed
+    // at it alone, so none is left pending for the process when the mask is restored.
+    if (!signalled) pthread_kill(watcher.native_handle(), SIGTERM);
     watcher.join();
   }
   pthread_sigmask(SIG_SETMASK, &previous, nullptr);

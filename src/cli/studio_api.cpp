@@ -1,9 +1,11 @@
 #include "studio_api.hpp"
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "report/json_report.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
@@ -11,6 +13,7 @@
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
 #include "rigdesign/render/gltf_scene.hpp"
+#include "sensor_query.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -188,18 +191,75 @@ json section_json(const studio::StudioSession& session, double theta_deg) {
           {"mounts", mounts}};
 }
 
-std::string query_value(const std::string& query, const std::string& key) {
+// A query value with its %XX escapes and '+' decoded (the page encodes with encodeURIComponent).
+std::string decoded(const std::string& value) {
+  std::string text;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (value[i] == '%' && i + 2 < value.size() &&
+        std::isxdigit(static_cast<unsigned char>(value[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(value[i + 2]))) {
+      text += static_cast<char>(std::stoi(value.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      text += value[i] == '+' ? ' ' : value[i];
+    }
+  }
+  return text;
+}
+
+std::optional<std::string> optional_query_value(const std::string& query, const std::string& key) {
   const std::string prefix = key + "=";
   std::size_t at = 0;
   while (at <= query.size()) {
     const std::size_t amp = query.find('&', at);
     const std::string pair =
         query.substr(at, amp == std::string::npos ? std::string::npos : amp - at);
-    if (pair.rfind(prefix, 0) == 0) return pair.substr(prefix.size());
+    if (pair.rfind(prefix, 0) == 0) return decoded(pair.substr(prefix.size()));
     if (amp == std::string::npos) break;
     at = amp + 1;
   }
-  throw BadRequest{"the query needs " + key};
+  return std::nullopt;
+}
+
+double query_number(const std::string& query, const std::string& key) {
+  const std::optional<std::string> value = optional_query_value(query, key);
+  if (!value || value->empty()) return 0.0;
+  char* end = nullptr;
+  const double number = std::strtod(value->c_str(), &end);
+  if (end == value->c_str() || *end != '\0' || !std::isfinite(number) || number < 0)
+    throw BadRequest{key + " must be a number >= 0"};
+  return number;
+}
+
+// `rigdesign sensors`' filters over the session's library: the sensors that answer, each with
+// its modes that do.
+json sensors_json(const model::SensorLibrary& library, const std::string& query) {
+  SensorQuery filter;
+  filter.search = optional_query_value(query, "search").value_or("");
+  const std::string technologies = optional_query_value(query, "technology").value_or("");
+  for (std::size_t at = 0; at < technologies.size();) {
+    const std::size_t comma = std::min(technologies.find(',', at), technologies.size());
+    if (comma > at) filter.technologies.push_back(technologies.substr(at, comma - at));
+    at = comma + 1;
+  }
+  filter.min_range = query_number(query, "min_range");
+  filter.max_price = query_number(query, "max_price");
+  filter.min_rate = query_number(query, "min_rate");
+  filter.min_fov_deg = query_number(query, "min_fov_deg");
+  json sensors = json::array();
+  for (const model::Sensor& sensor : library.sensors) {
+    if (!sensor_matches(sensor, filter)) continue;
+    json modes = json::array();
+    for (const model::SensorMode* mode : matching_modes(sensor, filter)) modes.push_back(mode->id);
+    sensors.push_back({{"id", sensor.id}, {"modes", modes}});
+  }
+  return {{"sensors", sensors}};
+}
+
+std::string query_value(const std::string& query, const std::string& key) {
+  std::optional<std::string> value = optional_query_value(query, key);
+  if (!value) throw BadRequest{"the query needs " + key};
+  return *value;
 }
 
 }  // namespace
@@ -227,6 +287,8 @@ studio::Reply StudioApi::operator()(const std::string& method, const std::string
     }
     if (method == "GET" && name == "fov")
       return json_reply(fov_json(session_, query_value(query, "mount")));
+    if (method == "GET" && name == "sensors")
+      return json_reply(sensors_json(session_.inputs().library, query));
     if (method == "GET" && name == "section") {
       const std::string theta = query_value(query, "theta_deg");
       char* end = nullptr;

@@ -23,6 +23,7 @@
 #include "rigdesign/io/nav2/costmap_params_writer.hpp"
 #include "rigdesign/io/self_filters/self_filters_writer.hpp"
 #include "support/cli_runner.hpp"
+#include "support/shared_export.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign;
@@ -166,22 +167,21 @@ TEST_CASE("export: every nav2 key is declared by nav2 with the type written", "[
   for (const char* rig_file : {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
                                "rigs/cart_two_scanners.yaml", "rigs/delivery_amr.yaml"}) {
     INFO(rig_file);
-    const model::Rig rig = io::load_rig(source_path(rig_file));
-    deploy::DeployOptions options;
-    options.max_speed = 1.0;  // sizes the blind-gap memory: observation_persistence is written
-    // Only nav2's own layers by default (issue 30 item 2).
-    CHECK(checked_classes(
-              tables, io::nav2_costmap_text(
-                          deploy::plan_deployment(rig, library, nullptr, options).costmap, "test"))
+    // --max-speed sizes the blind-gap memory: observation_persistence is written. Only nav2's
+    // own layers by default (issue 30 item 2).
+    CHECK(checked_classes(tables,
+                          test::file_text(test::shared_export(rig_file, {"--max-speed", "1"}) +
+                                          "/nav2_costmap.yaml"))
               .empty());
     // --layer stvl: the 3D sources in spatio_temporal_voxel_layer, every key declared by STVL.
-    options.stvl = true;
-    const deploy::Deployment with_stvl = deploy::plan_deployment(rig, library, nullptr, options);
-    CHECK(checked_classes(tables, io::nav2_costmap_text(
-                                      with_stvl.costmap, "test",
-                                      with_stvl.stvl->sources.empty() ? nullptr : &*with_stvl.stvl))
+    CHECK(checked_classes(
+              tables, test::file_text(
+                          test::shared_export(rig_file, {"--max-speed", "1", "--layer", "stvl"}) +
+                          "/nav2_costmap.yaml"))
               .empty());
-    options.stvl = false;
+    const model::Rig rig = io::load_rig(source_path(rig_file));
+    deploy::DeployOptions options;
+    options.max_speed = 1.0;
     // Paper 1's Hit Layer only when asked for, under the class the user gave.
     options.hit_layer_plugin = "my_layers::HitLayer";
     CHECK(checked_classes(
@@ -286,7 +286,6 @@ TEST_CASE("export: every collision_monitor key is declared by nav2 for the relea
           "[deploy]") {
   const YAML::Node table =
       YAML::LoadFile(source_path("data/ros_parameters/nav2_collision_monitor.yaml"));
-  const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   int zones = 0, sources = 0;
   for (const char* distro : {"humble", "jazzy"}) {
     const Declared node = monitor_declared(table["node"], distro);
@@ -295,14 +294,9 @@ TEST_CASE("export: every collision_monitor key is declared by nav2 for the relea
     for (const char* rig_file : {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
                                  "rigs/cart_two_scanners.yaml", "rigs/delivery_amr.yaml"}) {
       INFO(distro << " " << rig_file);
-      const model::Rig rig = io::load_rig(source_path(rig_file));
-      deploy::DeployOptions options;
-      options.max_speed = 1.0;
-      options.ros_distro = distro;
-      const deploy::Deployment deployment = deploy::plan_deployment(rig, library, nullptr, options);
-      REQUIRE(deployment.collision_monitor);
-      const YAML::Node file = YAML::Load(
-          io::collision_monitor_text(*deployment.collision_monitor, deployment.costmap, "test"));
+      const YAML::Node file = YAML::LoadFile(
+          test::shared_export(rig_file, {"--max-speed", "1", "--ros-distro", distro}) +
+          "/collision_monitor.yaml");
       const YAML::Node parameters = file["collision_monitor"]["ros__parameters"];
       REQUIRE(parameters.IsMap());
       std::set<std::string> polygons, source_names;
@@ -380,9 +374,9 @@ TEST_CASE("export: bridge.yaml uses only ros_gz_bridge's keys, directions and ty
   for (const char* rig_file : {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
                                "rigs/cart_two_scanners.yaml", "rigs/delivery_amr.yaml"}) {
     INFO(rig_file);
-    test::TempFolder folder;
-    REQUIRE(test::run_cli({"export", source_path(rig_file), "--to", folder.path()}).exit_code == 0);
-    const YAML::Node bridge = YAML::LoadFile(folder.path() + "/bridge.yaml");
+    // The bridge does not depend on --max-speed: the export the other key tests read.
+    const std::string folder = test::shared_export(rig_file, {"--max-speed", "1"});
+    const YAML::Node bridge = YAML::LoadFile(folder + "/bridge.yaml");
     REQUIRE(bridge.IsSequence());  // the bridge reads a list of maps, else nothing
     for (const YAML::Node& item : bridge) {
       for (const auto& entry : item) CHECK(keys.count(entry.first.as<std::string>()) == 1);

@@ -16,6 +16,7 @@
 
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "support/cli_runner.hpp"
+#include "support/shared_export.hpp"
 #include "support/temp_folder.hpp"
 
 using namespace rigdesign::test;
@@ -30,14 +31,9 @@ double radians(double degrees) {
 
 TEST_CASE("export --layer stvl: 3D sources get STVL frustums, scanners stay in obstacle_layer",
           "[deploy]") {
-  TempFolder folder;
-  const std::string stvl = folder.path() + "/stvl", voxel = folder.path() + "/voxel";
-  for (const auto& [to, layer] : {std::pair{stvl, "stvl"}, std::pair{voxel, "voxel"}}) {
-    const CliResult result = run_cli({"export", source_path("rigs/delivery_amr.yaml"), "--to", to,
-                                      "--max-speed", "1", "--layer", layer});
-    INFO(result.err);
-    REQUIRE(result.exit_code == 0);
-  }
+  const std::string stvl =
+      shared_export("rigs/delivery_amr.yaml", {"--max-speed", "1", "--layer", "stvl"});
+  const std::string voxel = shared_export("rigs/delivery_amr.yaml", {"--max-speed", "1"});
   const YAML::Node file = YAML::LoadFile(stvl + "/nav2_costmap.yaml");
   const YAML::Node local = file["local_costmap"]["local_costmap"]["ros__parameters"];
   REQUIRE(local["plugins"].size() == 3);
@@ -82,13 +78,10 @@ TEST_CASE("export --layer stvl: 3D sources get STVL frustums, scanners stay in o
 
 TEST_CASE("check --nav2 reads an STVL export's sources and gives the voxel export's verdicts",
           "[deploy]") {
-  TempFolder folder;
   std::vector<std::string> verdicts;
   for (const char* layer : {"voxel", "stvl"}) {
-    const std::string to = folder.path() + "/" + layer;
-    REQUIRE(run_cli({"export", source_path("rigs/delivery_amr.yaml"), "--to", to, "--max-speed",
-                     "1", "--layer", layer})
-                .exit_code == 0);
+    const std::string to =
+        shared_export("rigs/delivery_amr.yaml", {"--max-speed", "1", "--layer", layer});
     const CliResult check = run_cli(
         {"check", source_path("rigs/delivery_amr.yaml"), "--nav2", to + "/nav2_costmap.yaml"});
     INFO(check.out << check.err);
@@ -146,28 +139,24 @@ TEST_CASE(
   for (const char* rig : {"rigs/turtlebot4.yaml", "rigs/jackal.yaml", "rigs/ur_cleaner.yaml",
                           "rigs/delivery_amr.yaml", "rigs/cell.yaml"}) {
     INFO(rig);
-    TempFolder folder;
-    for (const char* layer : {"voxel", "stvl"}) {
-      REQUIRE(run_cli({"export", source_path(rig), "--to", folder.path() + "/" + layer,
-                       "--max-speed", "1", "--layer", layer})
-                  .exit_code == 0);
-    }
-    const YAML::Node voxel = YAML::LoadFile(folder.path() + "/voxel/nav2_costmap.yaml");
-    const YAML::Node stvl = YAML::LoadFile(folder.path() + "/stvl/nav2_costmap.yaml");
+    // The exports the nav2 key tests read too (voxel is export's default layer).
+    const std::string voxel_folder = shared_export(rig, {"--max-speed", "1"});
+    const std::string stvl_folder = shared_export(rig, {"--max-speed", "1", "--layer", "stvl"});
+    const YAML::Node voxel = YAML::LoadFile(voxel_folder + "/nav2_costmap.yaml");
+    const YAML::Node stvl = YAML::LoadFile(stvl_folder + "/nav2_costmap.yaml");
     const std::map<std::string, std::string> gazebo =
-        gazebo_frames(file_text(folder.path() + "/voxel/sensors.gazebo.xacro"));
+        gazebo_frames(file_text(voxel_folder + "/sensors.gazebo.xacro"));
     const YAML::Node voxel_local = voxel["local_costmap"]["local_costmap"]["ros__parameters"];
     const YAML::Node stvl_local = stvl["local_costmap"]["local_costmap"]["ros__parameters"];
     const YAML::Node voxel_layer =
         voxel_local["voxel_layer"] ? voxel_local["voxel_layer"] : voxel_local["obstacle_layer"];
-    const YAML::Node monitor = YAML::LoadFile(folder.path() + "/voxel/collision_monitor.yaml");
+    const YAML::Node monitor = YAML::LoadFile(voxel_folder + "/collision_monitor.yaml");
     const YAML::Node monitor_parameters = monitor["collision_monitor"]["ros__parameters"];
     // The URDF's frames: the description's links, those sensors.urdf.xacro adds, and the
     // driver-broadcast frames sensors.gazebo.xacro supplies in simulation.
     std::set<std::string> urdf_frames =
-        added_links(file_text(folder.path() + "/voxel/sensors.urdf.xacro"));
-    for (const std::string& link :
-         added_links(file_text(folder.path() + "/voxel/sensors.gazebo.xacro")))
+        added_links(file_text(voxel_folder + "/sensors.urdf.xacro"));
+    for (const std::string& link : added_links(file_text(voxel_folder + "/sensors.gazebo.xacro")))
       urdf_frames.insert(link);
     for (const auto& [link, pose] : rigdesign::io::load_rig(source_path(rig)).link_poses)
       urdf_frames.insert(link);

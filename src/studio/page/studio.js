@@ -308,13 +308,33 @@ function select(mountId) {
     : '';
 }
 
-function fillSensors(sensorId, modeId) {
-  const filter = $('sensor-filter').value.trim().toLowerCase();
-  const sensors = studio.state.sensors.filter((s) => !filter || s.id === sensorId ||
-    [s.id, s.name, s.technology].some((t) => t.toLowerCase().includes(filter)));
+// The sensor list through `rigdesign sensors`' own filters (the server applies them); the
+// selected mount's sensor stays in the list even when the filters leave it out.
+let sensorQuery = 0;
+async function fillSensors(sensorId, modeId) {
+  const params = new URLSearchParams();
+  const add = (key, id) => { const v = $(id).value.trim(); if (v) params.set(key, v); };
+  add('search', 'sensor-filter');
+  add('technology', 'filter-technology');
+  add('min_range', 'filter-range');
+  add('min_rate', 'filter-rate');
+  add('min_fov_deg', 'filter-fov');
+  add('max_price', 'filter-price');
+  const query = ++sensorQuery;
+  let found;
+  try { found = (await api('GET', 'sensors?' + params.toString())).sensors; } catch (error) { showErrors(error); return; }
+  if (query !== sensorQuery) return;  // a newer filter's answer is coming
+  studio.matching = new Map(found.map((s) => [s.id, s.modes]));
   const sensorSelect = $('sensor');
   sensorSelect.innerHTML = '';
-  for (const s of sensors) sensorSelect.add(new Option(s.id + ' (' + s.technology + ', ' + s.price_usd + ' USD)', s.id));
+  const listed = found.map((s) => s.id);
+  if (sensorId && !listed.includes(sensorId)) listed.unshift(sensorId);
+  for (const id of listed) {
+    const s = studio.state.sensors.find((x) => x.id === id);
+    const note = studio.matching.has(id) ? '' : ', filtered out';
+    sensorSelect.add(new Option(id + ' (' + s.technology + ', ' + s.price_usd + ' USD' + note + ')', id));
+  }
+  $('filter-count').textContent = found.length + ' of ' + studio.state.sensors.length + ' sensors match';
   if (sensorId) sensorSelect.value = sensorId;
   fillModes(modeId);
 }
@@ -324,8 +344,12 @@ function fillModes(modeId) {
   const modeSelect = $('mode');
   modeSelect.innerHTML = '';
   if (!sensor) return;
-  for (const m of sensor.modes) modeSelect.add(new Option(m, m));
-  if (modeId && sensor.modes.includes(modeId)) modeSelect.value = modeId;
+  const modes = (studio.matching && studio.matching.get(sensor.id)) || sensor.modes;
+  for (const m of modes) modeSelect.add(new Option(m, m));
+  if (modeId && sensor.modes.includes(modeId)) {
+    if (!modes.includes(modeId)) modeSelect.add(new Option(modeId + ' (filtered out)', modeId));
+    modeSelect.value = modeId;
+  }
 }
 
 async function edit(name, body) {
@@ -529,8 +553,12 @@ async function showState(state) {
     return;
   }
   $('rig-name').textContent = state.rig.name;
+  const technologies = $('filter-technology');
+  if (technologies.options.length === 1) {
+    for (const t of [...new Set(state.sensors.map((s) => s.technology))].sort()) technologies.add(new Option(t, t));
+  }
   showNumbers(state.numbers);
-  fillSensors(null, null);
+  await fillSensors(null, null);
   await loadScene();
   if (studio.selected) select(studio.selected);
   else if (state.numbers.mounts.length) select(state.numbers.mounts[0].id);
@@ -541,7 +569,8 @@ async function start() {
   ['x', 'y', 'z', 'roll', 'pitch', 'yaw'].forEach((id) => $(id).addEventListener('change', onFieldChange));
   $('mounts').addEventListener('change', () => select($('mounts').value));
   $('sensor').addEventListener('change', () => fillModes(null));
-  $('sensor-filter').addEventListener('input', () => fillSensors($('sensor').value, $('mode').value));
+  for (const id of ['sensor-filter', 'filter-technology', 'filter-range', 'filter-rate', 'filter-fov', 'filter-price'])
+    $(id).addEventListener('input', () => fillSensors($('sensor').value, $('mode').value));
   $('apply-sensor').addEventListener('click', applySensor);
   $('add-mount').addEventListener('click', addMount);
   $('remove-mount').addEventListener('click', removeMount);
