@@ -26,14 +26,19 @@ PlacedMount place_mount(const model::Rig& rig, const model::Mount& mount,
           ray_spacing(distance, mode.worst_angular_resolution()), mode.noise.sigma(distance)};
 }
 
-SectionSamples section_samples(const geometry::BodyOccluder& body, double distance,
-                               const CoverageSettings& settings) {
+std::vector<double> sampled_azimuths(const CoverageSettings& settings) {
   const int steps =
       std::max(1, static_cast<int>(std::lround((2 * std::numbers::pi) / settings.step)));
+  std::vector<double> thetas;
+  for (int step = 0; step < steps; ++step) thetas.push_back((2 * std::numbers::pi) * step / steps);
+  return thetas;
+}
+
+SectionSamples section_samples(const geometry::BodyOccluder& body, double distance,
+                               const CoverageSettings& settings) {
   SectionSamples samples;
-  for (int step = 0; step < steps; ++step) {
-    samples.frames.push_back(
-        geometry::section_frame(body, (2 * std::numbers::pi) * step / steps, distance));
+  for (const double theta : sampled_azimuths(settings)) {
+    samples.frames.push_back(geometry::section_frame(body, theta, distance));
     samples.grids.push_back(section_raster_grid(samples.frames.back(), settings.raster_cell));
   }
   return samples;

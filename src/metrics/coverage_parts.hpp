@@ -26,6 +26,9 @@ struct PlacedMount {
 PlacedMount place_mount(const model::Rig& rig, const model::Mount& mount,
                         const model::SensorLibrary& library, const geometry::BodyOccluder& body);
 
+/// The azimuths coverage samples [rad]: 0 and every settings.step (rounded to divide 360 deg).
+std::vector<double> sampled_azimuths(const CoverageSettings& settings);
+
 /// The cross-sections every mount is cut with: per sampled azimuth, its frame and raster grid.
 struct SectionSamples {
   std::vector<geometry::SectionFrame> frames;

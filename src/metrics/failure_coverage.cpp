@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
 
+#include "coverage_parts.hpp"
 #include "rigdesign/geometry/cross_section.hpp"
 
 namespace rigdesign::metrics {
@@ -21,11 +21,8 @@ std::vector<std::vector<std::size_t>> sectors_broken_by(
     fovs.emplace_back(library.resolved_mode(mount.sensor_id, mount.mode_id), mount.T_robot_sensor,
                       body, mount.limits);
   }
-  const int steps =
-      std::max(1, static_cast<int>(std::lround((2 * std::numbers::pi) / settings.step)));
   std::vector<double> thetas;
-  for (int step = 0; step < steps; ++step) {
-    const double theta = (2 * std::numbers::pi) * step / steps;
+  for (const double theta : detail::sampled_azimuths(settings)) {
     if (std::any_of(sectors.begin(), sectors.end(),
                     [&](const model::SectorRequirement& s) { return in_sector(s, theta); }))
       thetas.push_back(theta);

@@ -138,6 +138,8 @@ async function loadScene() {
   view.gltfRoot = gltf.scene;
   view.gltfRoot.traverse((node) => {
     if (!node.isMesh) return;
+    // Lambert shades per vertex: the file has no normals (three.js shaded it flat).
+    if (!node.geometry.attributes.normal) node.geometry.computeVertexNormals();
     const pbr = node.material;
     node.material = new THREE.MeshLambertMaterial({
       color: pbr.color, transparent: pbr.transparent, opacity: pbr.opacity,
@@ -148,6 +150,11 @@ async function loadScene() {
   view.root = gltf.scene.children[0];  // the base link's node: its children are in the robot frame
   view.gltfRoot.updateMatrixWorld(true);
   addAreaToPerceive();
+  // The whole area to perceive in view: the camera d * 1.6 away, looking down on the robot.
+  const d = studio.state.rig.distance_m;
+  view.camera.position.set(1.1 * d, 1.0 * d, 1.1 * d);
+  view.orbit.target.set(0, 0, 0);
+  view.orbit.update();
   for (const mount of studio.state.numbers.mounts) attachPivot(mount);
   requestRender();
 }
@@ -243,9 +250,12 @@ function fieldsPose() {
   return {xyz: [n('x'), n('y'), n('z')], rpy_deg: [n('roll'), n('pitch'), n('yaw')]};
 }
 
+// Shown to a micrometre and a microdegree: a pose read back from a rotation matrix carries
+// noise in its last digits (-19.999999999999996), which the fields would send back on a change.
 function fillFields(pose) {
-  ['x', 'y', 'z'].forEach((id, i) => { $(id).value = pose.xyz[i]; });
-  ['roll', 'pitch', 'yaw'].forEach((id, i) => { $(id).value = pose.rpy_deg[i]; });
+  const shown = (v) => Number(v.toFixed(6));
+  ['x', 'y', 'z'].forEach((id, i) => { $(id).value = shown(pose.xyz[i]); });
+  ['roll', 'pitch', 'yaw'].forEach((id, i) => { $(id).value = shown(pose.rpy_deg[i]); });
 }
 
 // Pose changes: while dragging only the newest waits, so the numbers follow the gizmo.
@@ -294,18 +304,18 @@ function onFieldChange() {
   sendPose(studio.selected, true, pose);
 }
 
-function select(mountId) {
+async function select(mountId) {
   studio.selected = mountId;
   const mount = studio.numbers.mounts.find((m) => m.id === mountId);
   if (!mount) { view.gizmo.detach(); return; }
   $('mounts').value = mountId;
   fillFields(mount);
-  fillSensors(mount.sensor, mount.mode);
   view.gizmo.attach(studio.pivots.get(mountId));
   $('link-note').hidden = !mount.urdf_link;
   $('link-note').textContent = mount.urdf_link
     ? 'Placed by the description\'s link ' + mount.urdf_link + '. Moved here, it is saved as xyz and rpy_deg: move the link in the description too.'
     : '';
+  await fillSensors(mount.sensor, mount.mode);
 }
 
 // The sensor list through `rigdesign sensors`' own filters (the server applies them); the
@@ -372,7 +382,7 @@ async function applySensor() {
 async function addMount() {
   const pose = fieldsPose();
   const state = await edit('add', {sensor: $('sensor').value, mode: $('mode').value, xyz: pose.xyz, rpy_deg: pose.rpy_deg});
-  if (state) { await showState(state); select(state.added); }
+  if (state) { await showState(state); await select(state.added); }
 }
 
 async function removeMount() {
@@ -384,10 +394,9 @@ async function removeMount() {
 async function save() {
   const state = await edit('save', {});
   if (!state) return;
+  await showState(state);  // keeps the selected mount
+  // Last, once the page shows the saved rig: what waits for the report sees it settled.
   $('check').textContent = 'check exit code ' + state.check.exit_code + '\n' + state.check.report;
-  const keep = studio.selected;
-  await showState(state);
-  if (keep) select(keep);
 }
 
 async function reload() {
@@ -398,9 +407,10 @@ async function reload() {
 // ---------------------------------------------------------------- numbers
 function percent(v) { return v === null || v === undefined ? '-' : (100 * v).toFixed(1) + ' %'; }
 
-function formatValue(value, unit) {
+// As `metrics` prints them: ray spacing R and noise N in millimetres, other lengths in metres.
+function formatValue(value, unit, metric) {
   if (value === null || value === undefined) return '-';
-  if (unit === 'm') return (value * 1000).toFixed(1) + ' mm';
+  if (unit === 'm' && (metric === 'R' || metric === 'N')) return (value * 1000).toFixed(1) + ' mm';
   if (unit === '') return percent(value);
   return Number(value.toPrecision(4)) + ' ' + unit;
 }
@@ -486,8 +496,9 @@ function drawVerdicts(numbers) {
   for (const r of numbers.requirements) {
     const row = body.insertRow();
     row.dataset.id = r.id;
-    const cells = [r.id, r.title, r.verdict, formatValue(r.actual, r.unit), formatValue(r.required, r.unit),
-                   r.margin === null ? '-' : formatValue(r.margin, r.unit), (r.limiting_mounts || []).join(', ')];
+    const cells = [r.id, r.title, r.verdict, formatValue(r.actual, r.unit, r.metric),
+                   formatValue(r.required, r.unit, r.metric),
+                   r.margin === null ? '-' : formatValue(r.margin, r.unit, r.metric), (r.limiting_mounts || []).join(', ')];
     cells.forEach((text, i) => {
       const cell = row.insertCell();
       cell.textContent = text;
@@ -560,8 +571,9 @@ async function showState(state) {
   showNumbers(state.numbers);
   await fillSensors(null, null);
   await loadScene();
-  if (studio.selected) select(studio.selected);
-  else if (state.numbers.mounts.length) select(state.numbers.mounts[0].id);
+  const keep = state.numbers.mounts.find((m) => m.id === studio.selected);
+  if (keep) await select(keep.id);
+  else if (state.numbers.mounts.length) await select(state.numbers.mounts[0].id);
 }
 
 async function start() {
