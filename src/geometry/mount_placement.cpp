@@ -6,8 +6,11 @@
 namespace rigdesign::geometry {
 
 model::Diagnostics check_mount_placement(const model::Rig& rig) {
+  return check_mount_placement(rig, BodyOccluder(rig.body));
+}
+
+model::Diagnostics check_mount_placement(const model::Rig& rig, const BodyOccluder& body) {
   model::Diagnostics diagnostics;
-  const BodyOccluder body(rig.body);
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
     const model::Mount& mount = rig.mounts[i];
     const model::Vec3 origin = mount.T_robot_sensor.translation();

@@ -51,8 +51,9 @@ StudioSession::StudioSession(std::string rig_path, std::string sensors_path,
 }
 
 void StudioSession::reload() {
-  inputs_.reset();
   raster_.reset();
+  body_.reset();
+  inputs_.reset();
   loaded_mounts_.clear();
   given_poses_.clear();
   diagnostics_.clear();
@@ -69,6 +70,7 @@ void StudioSession::reload() {
     loaded_mounts_ = inputs.rig.mounts;
     diagnostics_ = inputs.warnings;
     inputs_ = std::move(inputs);
+    body_ = std::make_unique<geometry::BodyOccluder>(inputs_->rig.body);
   } catch (const model::InputError& error) {
     diagnostics_ = error.diagnostics();
   }
@@ -106,36 +108,46 @@ std::size_t StudioSession::index_of(const std::string& mount_id) const {
 }
 
 // The checks load_rig_inputs makes of a rig's mounts, so an edit is refused with check's words.
+// Against the occluder kept for the session: building one bins every triangle of the body.
 void StudioSession::validate(const model::Rig& rig) const {
   model::Diagnostics found = io::check_rig_references(rig, inputs_->library);
-  const model::Diagnostics placement = geometry::check_mount_placement(rig);
+  const model::Diagnostics placement = geometry::check_mount_placement(rig, *body_);
   for (const model::Diagnostic& d : placement.items()) found.add(d);
   found.throw_if_errors();
 }
 
-void StudioSession::set_pose(const std::string& mount_id, const MountPose& pose) {
-  const std::size_t index = index_of(mount_id);
-  model::Rig edited = inputs_->rig;
-  model::Mount& mount = edited.mounts[index];
-  mount.T_robot_sensor = pose_from(pose);
-  // Saved as numbers from now on: the description's link no longer places this sensor.
-  mount.urdf_link.clear();
-  mount.urdf_link_optical = false;
-  validate(edited);
+// Applies `change` to mount `index` in place (no copy of the rig and its body), validates the
+// rig, and puts the mount back as it was when the rig would be invalid.
+template <typename Change>
+void StudioSession::change_mount(std::size_t index, Change change) {
+  model::Mount& mount = inputs_->rig.mounts[index];
+  const model::Mount before = mount;
+  change(mount);
+  try {
+    validate(inputs_->rig);
+  } catch (...) {
+    mount = before;
+    throw;
+  }
   raster_->set_mount(index, mount);
+}
+
+void StudioSession::set_pose(const std::string& mount_id, const MountPose& pose) {
+  change_mount(index_of(mount_id), [&](model::Mount& mount) {
+    mount.T_robot_sensor = pose_from(pose);
+    // Saved as numbers from now on: the description's link no longer places this sensor.
+    mount.urdf_link.clear();
+    mount.urdf_link_optical = false;
+  });
   given_poses_[mount_id] = pose;
-  inputs_->rig = std::move(edited);
 }
 
 void StudioSession::set_sensor(const std::string& mount_id, const std::string& sensor,
                                const std::string& mode) {
-  const std::size_t index = index_of(mount_id);
-  model::Rig edited = inputs_->rig;
-  edited.mounts[index].sensor_id = sensor;
-  edited.mounts[index].mode_id = mode;
-  validate(edited);
-  raster_->set_mount(index, edited.mounts[index]);
-  inputs_->rig = std::move(edited);
+  change_mount(index_of(mount_id), [&](model::Mount& mount) {
+    mount.sensor_id = sensor;
+    mount.mode_id = mode;
+  });
 }
 
 std::string StudioSession::add_mount(const std::string& sensor, const std::string& mode,
@@ -155,12 +167,16 @@ std::string StudioSession::add_mount(const std::string& sensor, const std::strin
   mount.mode_id = mode;
   mount.T_robot_sensor = pose_from(pose);
   mount.where = {rig_path_, 0, 0};
-  model::Rig edited = inputs_->rig;
-  edited.mounts.push_back(mount);
-  validate(edited);
+  std::vector<model::Mount>& mounts = inputs_->rig.mounts;
+  mounts.push_back(mount);
+  try {
+    validate(inputs_->rig);
+  } catch (...) {
+    mounts.pop_back();
+    throw;
+  }
   raster_->add_mount(mount);
   given_poses_[id] = pose;
-  inputs_->rig = std::move(edited);
   return id;
 }
 

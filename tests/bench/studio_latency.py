@@ -3,8 +3,8 @@
 on screen, for every bundled rig, in Debian's headless Chromium (software WebGL, no GPU).
 
 For each rig and mount, 12 small pose changes (z +-1 cm, pitch -1/0/+1 deg) are made as the
-gizmo makes them (the mount's pivot moved, then the page's own raster-path request), one at a
-time; each is timed from the change to the numbers drawn (curves, verdicts: the DOM and the 2D
+gizmo makes them (the drag begun, the mount's pivot moved, then the page's own raster-path
+request), one at a time; each is timed from the change to the numbers drawn (curves, verdicts: the DOM and the 2D
 canvases updated) and to the first animation frame after that (what is on screen, including a
 software-rendered WebGL frame on a machine without a GPU). Prints per rig the medians and the
 largest time to the frame, and the server's share; exits 1 when a rig's median to the frame is
@@ -32,6 +32,7 @@ const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
   for (const mount of studio.numbers.mounts.map((m) => JSON.parse(JSON.stringify(m)))) {
     const pivot = studio.pivots.get(mount.id);
     const times = [];
+    setDragging(true);  // what the gizmo does when a drag starts
     for (let i = 0; i < changes; i++) {
       const xyz = [mount.xyz[0], mount.xyz[1], mount.xyz[2] + (i % 2 ? 0.01 : -0.01)];
       const rpy = [mount.rpy_deg[0], mount.rpy_deg[1] + (i % 3) - 1, mount.rpy_deg[2]];
@@ -45,6 +46,7 @@ const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
       await new Promise((resolve) => requestAnimationFrame(resolve));
       times.push([performance.now() - started, studio.lastServerMs, drawn]);
     }
+    setDragging(false);
     setPivotPose(pivot, mount.xyz, mount.rpy_deg);
     sendPose(mount.id, true, {xyz: mount.xyz, rpy_deg: mount.rpy_deg});
     while (studio.inFlight || studio.queued) await sleep(5);

@@ -69,7 +69,7 @@ function setUpView() {
   view.gizmo.setSize(0.8);
   view.gizmo.addEventListener('dragging-changed', (event) => {
     view.orbit.enabled = !event.value;
-    studio.dragging = event.value;
+    setDragging(event.value);
     if (!event.value && studio.selected) sendPose(studio.selected, true);  // the exact path
   });
   view.gizmo.addEventListener('objectChange', () => {
@@ -83,6 +83,14 @@ function setUpView() {
   view.orbit.addEventListener('change', requestRender);
   view.gizmo.addEventListener('change', requestRender);
   window.addEventListener('resize', resize);
+  resize();
+}
+
+// While a mount is dragged the 3D view renders at half resolution (a quarter of the pixels):
+// on a machine without a GPU a full frame of the TurtleBot 4 costs more than the numbers do.
+function setDragging(on) {
+  studio.dragging = on;
+  view.renderer.setPixelRatio((window.devicePixelRatio || 1) * (on ? 0.5 : 1));
   resize();
 }
 
