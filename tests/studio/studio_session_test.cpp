@@ -189,3 +189,21 @@ TEST_CASE("studio: mounts added and removed are saved as list items", "[studio]"
   session.remove_mount("front_lidar");
   CHECK_THROWS_AS(session.remove_mount("rplidar_a1m8"), model::InputError);
 }
+
+TEST_CASE("studio: another mode is judged and saved as that one word", "[studio]") {
+  test::TempFolder folder;
+  const std::string path = folder.write("cart.yaml", cart_text());
+  studio::StudioSession session(path, library_path(), "");
+  REQUIRE(session.loaded());
+  // sensors.yaml: the A1's 10hz mode runs at 10 Hz with 0.45 deg between rays (5_5hz: 5.5 Hz);
+  // both scanners set F, so F stays the rear's 5.5 Hz until it changes too.
+  session.set_sensor("front_lidar", "rplidar_a1m8", "10hz");
+  CHECK(session.numbers(false).resultant.frequency.value == Approx(5.5));
+  session.set_sensor("rear_lidar", "rplidar_a1m8", "10hz");
+  CHECK(session.numbers(false).resultant.frequency.value == Approx(10.0));
+  session.save();
+  std::string expected = cart_text();
+  for (int i = 0; i < 2; ++i)
+    expected = with_text_replaced(expected, "mode: 5_5hz", "mode: 10hz");
+  CHECK(test::file_text(path) == expected);
+}
