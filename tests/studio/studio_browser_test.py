@@ -10,6 +10,7 @@ numbers typed and dragged. A screenshot is kept as an artifact.
 
 usage: studio_browser_test.py RIGDESIGN SOURCE_DIR ARTIFACT_DIR
 """
+import csv
 import json
 import os
 import subprocess
@@ -41,6 +42,28 @@ def metrics_of(binary, folder, text, sensors):
     run = subprocess.run([binary, "metrics", path, "--sensors", sensors, "--json"],
                          capture_output=True, text=True, check=True)
     return json.loads(run.stdout)
+
+
+def curves_of(binary, folder, sensors):
+    """The SC curves `rigdesign coverage` writes for by_hand.yaml (coverage.csv, 8 digits)."""
+    out = os.path.join(folder, "coverage_out")
+    subprocess.run([binary, "coverage", os.path.join(folder, "by_hand.yaml"), "--sensors", sensors,
+                    "--out", out, "--no-3d", "--angles", "0"], capture_output=True, check=True)
+    with open(os.path.join(out, "coverage.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return ([float(r["theta_deg"]) for r in rows], [float(r["sc_complete"]) for r in rows],
+            [float(r["sc_floor"]) for r in rows])
+
+
+def expect_curves_match(page, curves):
+    """The page's curves, angle by angle, are the ones `rigdesign coverage` computes."""
+    theta, complete, floor = curves
+    coverage = page["coverage"]
+    assert len(coverage["curve_theta_deg"]) == len(theta), (len(coverage["curve_theta_deg"]), len(theta))
+    for i, t in enumerate(theta):
+        assert abs(coverage["curve_theta_deg"][i] - t) < 1e-6, (i, t)
+        assert abs(coverage["curve_complete"][i] - complete[i]) < 1e-7, (t, complete[i])
+        assert abs(coverage["curve_floor"][i] - floor[i]) < 1e-7, (t, floor[i])
 
 
 def front_of(numbers):
@@ -138,9 +161,11 @@ def main(binary, source, artifacts):
         by_hand = original.replace(link_line, pose_line(dragged))
         page = driver.js("return window.studio.numbers")
         after_drag = expect_page_matches_metrics(page, metrics_of(binary, folder, by_hand, sensors))
+        expect_curves_match(page, curves_of(binary, folder, sensors))
         latencies = driver.js("return window.studio.rasterLatenciesMs")
         print(f"dragged to x = {dragged[0]} m: front SC complete min {after_drag[0]:.4f}, floor "
-              f"min {after_drag[1]:.4f}, R2 front {after_drag[2]} (= rigdesign metrics); "
+              f"min {after_drag[1]:.4f}, R2 front {after_drag[2]} (= rigdesign metrics; the 360-angle "
+              f"curves = rigdesign coverage); "
               f"{len(latencies)} raster updates while dragging, change to numbers drawn: "
               f"median {sorted(latencies)[len(latencies) // 2]:.1f} ms, "
               f"max {max(latencies):.1f} ms" if latencies else "no raster updates")
