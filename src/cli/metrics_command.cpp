@@ -16,6 +16,7 @@
 #include "rigdesign/metrics/coverage_findings.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/metrics/resultant.hpp"
+#include "rigdesign/metrics/tolerance_coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 #include "text_table.hpp"
@@ -213,6 +214,70 @@ void print_text(const RigInputs& inputs, const metrics::ResultantMetrics& metric
   table.print(out, "  ");
 }
 
+// "x +5 mm, pitch -1 deg": the axes of a pose error that are not zero.
+std::string error_text(const metrics::PoseError& error) {
+  std::vector<std::string> parts;
+  const char* axes[] = {"x", "y", "z"};
+  const char* turns[] = {"roll", "pitch", "yaw"};
+  const auto sign = [](double v) { return v > 0 ? "+" : ""; };
+  for (int i = 0; i < 3; ++i) {
+    if (error.xyz[i] != 0)
+      parts.push_back(std::string(axes[i]) + " " + sign(error.xyz[i]) +
+                      model::format_number(error.xyz[i] * 1000, 4) + " mm");
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (error.rpy[i] != 0)
+      parts.push_back(std::string(turns[i]) + " " + sign(error.rpy[i]) +
+                      model::format_number(model::rad_to_deg(error.rpy[i]), 4) + " deg");
+  }
+  return parts.empty() ? "nominal" : model::join(parts);
+}
+
+std::string worst_text(double nominal, const metrics::WorstShare& worst) {
+  return percent(nominal) + " -> " + percent(worst.share) +
+         (worst.mount_id.empty() ? ""
+                                 : " (" + worst.mount_id + ": " + error_text(worst.error) + ")");
+}
+
+void print_tolerance(const std::vector<metrics::SectorTolerance>& sectors, std::ostream& out) {
+  out << "\nMounting tolerance: each sector's minimum with one mount at a time anywhere in its "
+         "tolerance box (its corners and face centres, exact path)\n";
+  using Align = TextTable::Align;
+  TextTable table;
+  for (const char* header :
+       {"sector", "SC complete nominal -> worst", "SC floor nominal -> worst", "still met"})
+    table.add_column(header, Align::left);
+  for (const metrics::SectorTolerance& sector : sectors) {
+    table.add_row({sector.sector.name, worst_text(sector.nominal_complete, sector.complete),
+                   worst_text(sector.nominal_floor, sector.floor), yes_no(sector.pass)});
+  }
+  table.print(out, "  ");
+}
+
+nlohmann::json error_json(const metrics::PoseError& error) {
+  return {{"xyz_m", {error.xyz.x(), error.xyz.y(), error.xyz.z()}},
+          {"rpy_deg",
+           {model::rad_to_deg(error.rpy.x()), model::rad_to_deg(error.rpy.y()),
+            model::rad_to_deg(error.rpy.z())}}};
+}
+
+nlohmann::json tolerance_json(const std::vector<metrics::SectorTolerance>& sectors) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const metrics::SectorTolerance& sector : sectors) {
+    const auto worst = [](double nominal, const metrics::WorstShare& share) {
+      return nlohmann::json{{"nominal", nominal},
+                            {"worst", share.share},
+                            {"mount", share.mount_id},
+                            {"error", error_json(share.error)}};
+    };
+    list.push_back({{"sector", sector.sector.name},
+                    {"complete", worst(sector.nominal_complete, sector.complete)},
+                    {"floor", worst(sector.nominal_floor, sector.floor)},
+                    {"still_met", sector.pass}});
+  }
+  return list;
+}
+
 int run_metrics(const MetricsOptions& options, std::ostream& out) {
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
   const metrics::ResultantMetrics metrics = metrics::compute_resultant(inputs.rig, inputs.library);
@@ -224,6 +289,9 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
   if (inputs.requirements) {
     results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements, &coverage);
   }
+  // Issue 38: the sectors over the mounts' tolerance boxes, when the rig gives any.
+  const std::vector<metrics::SectorTolerance> tolerance =
+      metrics::tolerance_coverage(inputs.rig, inputs.library, sectors);
   std::optional<model::FilteringLoads> loads;
   if (!options.filtering_loads.empty()) loads = io::load_filtering_loads(options.filtering_loads);
   if (options.json) {
@@ -240,6 +308,7 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
                                   {"total_cores", total_cores(rows)}};
     }
     report["coverage"] = to_json(coverage, false);
+    if (!tolerance.empty()) report["tolerance"] = tolerance_json(tolerance);
     if (inputs.requirements) {
       nlohmann::json list = nlohmann::json::array();
       for (const metrics::RequirementResult& result : results) list.push_back(to_json(result));
@@ -248,6 +317,7 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
     out << report.dump(2) << '\n';
   } else {
     print_text(inputs, metrics, coverage, results, loads, out);
+    if (!tolerance.empty()) print_tolerance(tolerance, out);
   }
   return kOk;
 }

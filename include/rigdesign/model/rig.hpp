@@ -34,6 +34,17 @@ struct BodyPart {
   SourceLocation where;
 };
 
+/// How far a mount may sit from its nominal pose (issue 38: brackets bend, cameras sit a degree
+/// off): half-widths of a box of errors. A pose in the box is the nominal one rotated about the
+/// sensor's own x, y, z axes by (roll, pitch, yaw) and moved in the robot frame by xyz.
+struct PoseTolerance {
+  Vec3 xyz = Vec3::Zero();  ///< [m] half-widths along the robot frame's x, y, z
+  Vec3 rpy = Vec3::Zero();  ///< [rad] half-widths about the sensor's x (roll), y (pitch), z (yaw)
+  SourceLocation where;
+
+  bool any() const { return xyz.any() || rpy.any(); }
+};
+
 /// The robot's body, which bounds the area to perceive (rho >= r(theta), z in [0, h]) and
 /// occludes: a solid cylinder or footprint prism from the floor to `height`, or the union of
 /// a robot description's collision geometry (`parts`).
@@ -80,6 +91,8 @@ struct Mount {
   /// What the deployed stack removes from this mount's data (`check` with nav2 parameters and
   /// self-filters); empty for the design itself.
   MountLimits limits;
+  /// This mount's own mounting tolerance; nothing: the rig's.
+  std::optional<PoseTolerance> tolerance;
 };
 
 /// How a rig (or catalog) names its robot description, resolved: enough to load the same
@@ -123,6 +136,14 @@ struct Rig {
   std::map<std::string, std::string> parent_link;
   /// The description the links come from; nothing without one.
   std::optional<RobotSource> robot;
+  /// Every mount's mounting tolerance unless the mount gives its own; nothing: none.
+  std::optional<PoseTolerance> tolerance;
+
+  /// The tolerance `mount` is judged with: its own, else the rig's, else nothing.
+  const PoseTolerance* tolerance_for(const Mount& mount) const {
+    if (mount.tolerance) return &*mount.tolerance;
+    return tolerance ? &*tolerance : nullptr;
+  }
 
   /// The distance at which a mount's resolution and noise are judged [m].
   double distance_for(const Mount& mount) const {

@@ -158,4 +158,38 @@ void warn_if_radians(MapReader& reader, const std::string& key,
       "degrees (read as radians these would be " + in_degrees + "] deg)");
 }
 
+model::PoseTolerance pose_tolerance(MapReader& tolerance) {
+  model::PoseTolerance result;
+  result.where = tolerance.location();
+  const auto half_widths = [&](const std::string& key, const std::string& unit) {
+    const auto values = tolerance.numbers(key, Need::optional, 3, 3,
+                                          "three half-widths in " + unit + ", >= 0, finite");
+    if (values) {
+      tolerance.require(std::all_of(values->begin(), values->end(), [](double v) { return v >= 0; }),
+                        key, "has a negative half-width", "half-widths >= 0 (the box is +-)");
+    }
+    return values;
+  };
+  if (const auto xyz = half_widths("xyz", "metres")) {
+    result.xyz = model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]);
+    if (result.xyz.maxCoeff() > 0.1) {
+      tolerance.diagnostics().warning(
+          tolerance.location("xyz"), tolerance.field("xyz"),
+          "allows a mount to sit more than 0.1 m from its pose: millimetres typed as metres?",
+          "metres (5 mm is 0.005)");
+    }
+  }
+  if (const auto rpy = half_widths("rpy_deg", "degrees")) {
+    if (*std::max_element(rpy->begin(), rpy->end()) > 10.0) {
+      tolerance.diagnostics().warning(tolerance.location("rpy_deg"), tolerance.field("rpy_deg"),
+                                      "allows more than 10 deg of rotation: not a mounting error",
+                                      "degrees of bracket or calibration error, e.g. [1, 1, 1]");
+    }
+    result.rpy = model::Vec3(model::deg_to_rad((*rpy)[0]), model::deg_to_rad((*rpy)[1]),
+                             model::deg_to_rad((*rpy)[2]));
+  }
+  tolerance.reject_unknown_keys();
+  return result;
+}
+
 }  // namespace rigdesign::io

@@ -8,6 +8,7 @@
 
 #include "io/config/yaml_reader.hpp"
 #include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
 
 namespace rigdesign::io {
@@ -53,6 +54,10 @@ model::Pose3 xyz_rpy_deg_pose(MapReader& pose, Need xyz_need);
 /// a degrees field: all within +-pi and some not a whole number of degrees. A warning, not an
 /// error: a tilt of 2.5 deg is possible, just rare beside whole-degree mounts.
 void warn_if_radians(MapReader& reader, const std::string& key, const std::vector<double>& degrees);
+/// A mounting tolerance map, `{xyz: [m, m, m], rpy_deg: [deg, deg, deg]}` (half-widths >= 0,
+/// either may be left out). Warns where a value is probably in another unit: a translation over
+/// 0.1 m (millimetres typed as metres?) or a rotation over 10 deg (not a mounting error).
+model::PoseTolerance pose_tolerance(MapReader& tolerance);
 /// `basis: datasheet | measured | estimate`.
 model::Basis basis(MapReader& reader, Need need);
 

@@ -54,6 +54,9 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
         io::frame_id(*ros, "frame", Need::optional, "the frame the data is stamped with");
     ros->reject_unknown_keys();
   }
+  if (auto tolerance = reader.map("tolerance", Need::optional,
+                                  "a map with xyz [m] and rpy_deg [deg] half-widths"))
+    mount.tolerance = io::pose_tolerance(*tolerance);
   reader.text("note", Need::optional);
   reader.reject_unknown_keys();
   return mount;
@@ -106,6 +109,9 @@ model::Rig load_rig(const std::string& path) {
     top.require(rig.distance_of_interest > rig.body.radius, "distance_of_interest",
                 "is not beyond the body radius", "d > r");
   }
+  if (auto tolerance = top.map("tolerance", Need::optional,
+                               "a map with xyz [m] and rpy_deg [deg] half-widths"))
+    rig.tolerance = io::pose_tolerance(*tolerance);
   std::set<std::string> ids;
   for (MapReader& reader : top.maps("mounts", Need::required, "a list of mounts")) {
     model::Mount mount = read_mount(reader, robot);
