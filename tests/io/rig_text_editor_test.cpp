@@ -217,6 +217,14 @@ TEST_CASE("rig text editor: mounts removed lose their lines, added ones follow t
   const std::size_t front = kEditorRig.find("  - id: front");
   CHECK(io::edit_rig_text(kEditorRig, "rig.yaml", first) ==
         kEditorRig.substr(0, front) + kEditorRig.substr(rear));
+  // A file that ends without a line break after its last mount: the new one starts a line.
+  const std::vector<io::MountEdit> add_only = {added};
+  std::string unterminated = kEditorRig;
+  unterminated.pop_back();
+  CHECK(io::edit_rig_text(unterminated, "rig.yaml", add_only) ==
+        unterminated +
+            "\n  - {id: \"side cam\", sensor: orbbec_astra, mode: qvga_30, pose: {xyz: [0, 0.2, "
+            "0.3], rpy_deg: [0, 0, 90]}}\n");
   // An id already taken is refused.
   added.mount_id = "front";
   const std::vector<io::MountEdit> taken = {added};

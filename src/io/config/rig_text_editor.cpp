@@ -274,9 +274,12 @@ std::vector<Replacement> additions_of(const std::string& text, const std::string
     const Replacement last = item_lines(text, path, mounts[mounts.size() - 1],
                                         "mounts[" + std::to_string(mounts.size() - 1) + "]");
     const std::size_t dash = text.find('-', last.begin);
+    const std::string line_break(yaml_text::line_break_at(text, last.begin));
+    // A file whose last mount has no line break after it gets one before the new mount.
+    const bool unterminated = last.end == text.size() && !text.empty() && text.back() != '\n';
     additions.push_back({last.end, last.end,
-                         std::string(dash - last.begin, ' ') + "- " + new_item_text(edit) +
-                             std::string(yaml_text::line_break_at(text, last.begin))});
+                         (unterminated ? line_break : "") + std::string(dash - last.begin, ' ') +
+                             "- " + new_item_text(edit) + line_break});
   }
   return additions;
 }
