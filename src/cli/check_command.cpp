@@ -34,11 +34,7 @@ int run_check(const CheckOptions& options, std::ostream& out) {
   for (const std::string& file : options.files) {
     reports.push_back(check_file(file, options.sensors, options.requirements, options.deployment));
   }
-  int exit_code = kOk;
-  for (const FileReport& report : reports) {
-    if (report.invalid()) exit_code = kBadInput;
-    if (report.failing() && exit_code == kOk) exit_code = kRequirementFails;
-  }
+  const int exit_code = check_exit_code(reports);
   std::string text;
   if (options.format == "json") {
     text = format_json(reports, exit_code);

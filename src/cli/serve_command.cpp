@@ -60,10 +60,7 @@ bool open_browser(const std::string& url) {
 
 std::pair<int, std::string> check_saved_rig(const std::string& path, const ServeOptions& options) {
   const std::vector<FileReport> reports = {check_file(path, options.sensors, options.requirements)};
-  const int exit_code = reports.front().invalid()   ? kBadInput
-                        : reports.front().failing() ? kRequirementFails
-                                                    : kOk;
-  return {exit_code, format_text(reports)};
+  return {check_exit_code(reports), format_text(reports)};
 }
 
 int run_serve(const ServeOptions& options, std::ostream& out, std::ostream& err) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
 #include "rigdesign/deploy/collision_monitor_check.hpp"
@@ -228,6 +229,15 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
     report.load_seconds = seconds_since(started);
   }
   return report;
+}
+
+int check_exit_code(const std::vector<FileReport>& reports) {
+  int exit_code = kOk;
+  for (const FileReport& report : reports) {
+    if (report.invalid()) exit_code = kBadInput;
+    if (report.failing() && exit_code == kOk) exit_code = kRequirementFails;
+  }
+  return exit_code;
 }
 
 }  // namespace rigdesign::cli

@@ -43,6 +43,10 @@ struct DeploymentFiles {
 FileReport check_file(const std::string& path, const std::string& sensors_path,
                       const std::string& requirements_path, const DeploymentFiles& deployment = {});
 
+/// `check`'s exit code for these reports: 2 when any file is invalid, else 1 when any
+/// requirement fails, else 0.
+int check_exit_code(const std::vector<FileReport>& reports);
+
 /// How many of `results` have `verdict`.
 std::size_t count_verdicts(const std::vector<metrics::RequirementResult>& results,
                            metrics::Verdict verdict);
