@@ -104,6 +104,10 @@ std::vector<SectorTolerance> tolerance_coverage(
   });
   if (!any || sectors.empty()) return {};
   const geometry::BodyOccluder body(rig.body);
+  // Every mount placed once (a description's body makes each placement build a shadow).
+  std::vector<detail::PlacedMount> nominal_mounts;
+  for (const model::Mount& mount : rig.mounts)
+    nominal_mounts.push_back(detail::place_mount(rig, mount, library, body));
   std::vector<SectorAngle> angles;
   for (const double theta : detail::sampled_azimuths(settings)) {
     if (std::none_of(sectors.begin(), sectors.end(),
@@ -112,8 +116,7 @@ std::vector<SectorTolerance> tolerance_coverage(
     SectorAngle angle;
     angle.theta = theta;
     angle.frame = geometry::section_frame(body, theta, rig.distance_of_interest);
-    for (const model::Mount& mount : rig.mounts) {
-      const detail::PlacedMount placed = detail::place_mount(rig, mount, library, body);
+    for (const detail::PlacedMount& placed : nominal_mounts) {
       angle.polygons.push_back(
           geometry::section_polygons(placed.fov, angle.frame, settings.tessellation));
       angle.floors.push_back(geometry::floor_coverage(placed.fov, angle.frame));
