@@ -1,6 +1,5 @@
 #include "studio_api.hpp"
 
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +12,7 @@
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
 #include "rigdesign/render/gltf_scene.hpp"
+#include "rigdesign/studio/request_guard.hpp"
 #include "sensor_query.hpp"
 
 namespace rigdesign::cli {
@@ -73,8 +73,6 @@ json mounts_json(const studio::StudioSession& session) {
   return mounts;
 }
 
-// `since`: when the request arrived, so `seconds` covers the edit (the moved mount's rasters)
-// and the numbers; `compute_seconds` the numbers alone.
 // `metrics --json`'s coverage summaries with the curves as three plain lists: a pose update
 // is a third the size of the per-angle records `to_json(coverage, true)` gives.
 json coverage_json(const metrics::RigCoverage& coverage) {
@@ -91,6 +89,8 @@ json coverage_json(const metrics::RigCoverage& coverage) {
   return report;
 }
 
+// `since`: when the request arrived, so `seconds` covers the edit (the moved mount's rasters)
+// and the numbers; `compute_seconds` the numbers alone.
 json numbers_json(const studio::StudioSession& session, bool exact,
                   std::chrono::steady_clock::time_point since) {
   const studio::StudioNumbers numbers = session.numbers(exact);
@@ -191,38 +191,8 @@ json section_json(const studio::StudioSession& session, double theta_deg) {
           {"mounts", mounts}};
 }
 
-// A query value with its %XX escapes and '+' decoded (the page encodes with encodeURIComponent).
-std::string decoded(const std::string& value) {
-  std::string text;
-  for (std::size_t i = 0; i < value.size(); ++i) {
-    if (value[i] == '%' && i + 2 < value.size() &&
-        std::isxdigit(static_cast<unsigned char>(value[i + 1])) &&
-        std::isxdigit(static_cast<unsigned char>(value[i + 2]))) {
-      text += static_cast<char>(std::stoi(value.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      text += value[i] == '+' ? ' ' : value[i];
-    }
-  }
-  return text;
-}
-
-std::optional<std::string> optional_query_value(const std::string& query, const std::string& key) {
-  const std::string prefix = key + "=";
-  std::size_t at = 0;
-  while (at <= query.size()) {
-    const std::size_t amp = query.find('&', at);
-    const std::string pair =
-        query.substr(at, amp == std::string::npos ? std::string::npos : amp - at);
-    if (pair.rfind(prefix, 0) == 0) return decoded(pair.substr(prefix.size()));
-    if (amp == std::string::npos) break;
-    at = amp + 1;
-  }
-  return std::nullopt;
-}
-
 double query_number(const std::string& query, const std::string& key) {
-  const std::optional<std::string> value = optional_query_value(query, key);
+  const std::optional<std::string> value = studio::query_parameter(query, key);
   if (!value || value->empty()) return 0.0;
   char* end = nullptr;
   const double number = std::strtod(value->c_str(), &end);
@@ -235,8 +205,8 @@ double query_number(const std::string& query, const std::string& key) {
 // its modes that do.
 json sensors_json(const model::SensorLibrary& library, const std::string& query) {
   SensorQuery filter;
-  filter.search = optional_query_value(query, "search").value_or("");
-  const std::string technologies = optional_query_value(query, "technology").value_or("");
+  filter.search = studio::query_parameter(query, "search").value_or("");
+  const std::string technologies = studio::query_parameter(query, "technology").value_or("");
   for (std::size_t at = 0; at < technologies.size();) {
     const std::size_t comma = std::min(technologies.find(',', at), technologies.size());
     if (comma > at) filter.technologies.push_back(technologies.substr(at, comma - at));
@@ -257,7 +227,7 @@ json sensors_json(const model::SensorLibrary& library, const std::string& query)
 }
 
 std::string query_value(const std::string& query, const std::string& key) {
-  std::optional<std::string> value = optional_query_value(query, key);
+  std::optional<std::string> value = studio::query_parameter(query, key);
   if (!value) throw BadRequest{"the query needs " + key};
   return *value;
 }

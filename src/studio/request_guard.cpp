@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <random>
+#include <string>
 
 namespace rigdesign::studio {
 namespace {
@@ -21,6 +22,21 @@ bool loopback_authority(std::string_view authority, int port) {
   if (authority.size() <= suffix.size() || !authority.ends_with(suffix)) return false;
   const std::string_view host = authority.substr(0, authority.size() - suffix.size());
   return host == "127.0.0.1" || host == "[::1]" || equal_ignoring_case(host, "localhost");
+}
+
+std::string percent_decoded(std::string_view value) {
+  std::string text;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (value[i] == '%' && i + 2 < value.size() &&
+        std::isxdigit(static_cast<unsigned char>(value[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(value[i + 2]))) {
+      text += static_cast<char>(std::stoi(std::string(value.substr(i + 1, 2)), nullptr, 16));
+      i += 2;
+    } else {
+      text += value[i] == '+' ? ' ' : value[i];
+    }
+  }
+  return text;
 }
 
 }  // namespace
@@ -58,11 +74,12 @@ bool origin_allowed(std::optional<std::string_view> origin, int port) {
   return origin->starts_with(kScheme) && loopback_authority(origin->substr(kScheme.size()), port);
 }
 
-std::optional<std::string> token_in_query(std::string_view query) {
+std::optional<std::string> query_parameter(std::string_view query, std::string_view key) {
   while (!query.empty()) {
     const std::size_t amp = query.find('&');
     const std::string_view pair = query.substr(0, amp);
-    if (pair.starts_with("token=")) return std::string(pair.substr(6));
+    if (pair.size() > key.size() && pair.starts_with(key) && pair[key.size()] == '=')
+      return percent_decoded(pair.substr(key.size() + 1));
     if (amp == std::string_view::npos) break;
     query.remove_prefix(amp + 1);
   }

@@ -36,8 +36,8 @@ Reply StudioRouter::handle(const IncomingRequest& request) const {
   if (!host_allowed(request.host, port_))
     return refusal(403, "Host '" + request.host + "' is not the studio's loopback address");
   if (!origin_allowed(request.origin, port_))
-    return refusal(403, "requests from origin '" + request.origin.value_or("") +
-                            "' are not accepted");
+    return refusal(403,
+                   "requests from origin '" + request.origin.value_or("") + "' are not accepted");
   if (request.body.size() > kMaxRequestBytes)
     return refusal(413, "request body over " + std::to_string(kMaxRequestBytes) + " bytes");
   if (request.path.starts_with("/api/")) {
@@ -47,7 +47,7 @@ Reply StudioRouter::handle(const IncomingRequest& request) const {
   }
   if (request.method != "GET") return refusal(405, "only GET outside /api/");
   if (request.path == "/" || request.path == "/index.html") {
-    const std::optional<std::string> token = token_in_query(request.query);
+    const std::optional<std::string> token = query_parameter(request.query, "token");
     if (!token || !token_matches(*token, token_))
       return refusal(401, "open the address `rigdesign serve` printed (it carries the token)");
   }

@@ -78,8 +78,8 @@ TEST_CASE("request guard: host, origin and token rules", "[studio]") {
   CHECK_FALSE(studio::token_matches(kToken.substr(0, 31), kToken));
   CHECK_FALSE(studio::token_matches(kToken + "0", kToken));
   CHECK_FALSE(studio::token_matches("", ""));
-  CHECK(studio::token_in_query("a=1&token=abc&b=2") == std::optional<std::string>("abc"));
-  CHECK_FALSE(studio::token_in_query("xtoken=abc"));
+  CHECK(studio::query_parameter("a=1&token=abc&b=2", "token") == std::optional<std::string>("abc"));
+  CHECK_FALSE(studio::query_parameter("xtoken=abc", "token"));
   const std::string a = studio::new_token(), b = studio::new_token();
   CHECK(a.size() == 64);
   CHECK(a != b);

@@ -28,7 +28,8 @@ bool host_allowed(std::string_view host, int port);
 /// http://127.0.0.1:PORT, http://[::1]:PORT or http://localhost:PORT.
 bool origin_allowed(std::optional<std::string_view> origin, int port);
 
-/// The token in a URL query (`token=...` among `&`-separated pairs), if any.
-std::optional<std::string> token_in_query(std::string_view query);
+/// The value of `key` in a URL query (`key=value` among `&`-separated pairs), with its %XX
+/// escapes and '+' decoded (the page encodes with encodeURIComponent); nothing when absent.
+std::optional<std::string> query_parameter(std::string_view query, std::string_view key);
 
 }  // namespace rigdesign::studio
