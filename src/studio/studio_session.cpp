@@ -3,24 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "rigdesign/geometry/mount_placement.hpp"
 #include "rigdesign/io/config/rig_references.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::studio {
 namespace {
-
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 model::Pose3 pose_from(const MountPose& pose) {
   return model::pose_from_xyz_rpy(
@@ -62,8 +54,8 @@ void StudioSession::reload() {
     // symbolic link elsewhere after loading is not followed).
     std::error_code ignored;
     target_ = std::filesystem::weakly_canonical(rig_path_, ignored).string();
-    loaded_text_ = file_text(rig_path_);
     io::RigInputs inputs = io::load_rig_inputs(rig_path_, sensors_path_, requirements_path_);
+    loaded_text_ = io::read_file_bytes(rig_path_, "a rig file");
     // Every core: a dragged mount's sections are rasterised while the user waits.
     raster_.emplace(inputs.rig, inputs.library, metrics::CoverageSettings{},
                     static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));

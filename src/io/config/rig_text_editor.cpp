@@ -5,12 +5,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 #include <string_view>
 #include <vector>
 
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "yaml_reader.hpp"
@@ -113,16 +112,6 @@ void edit_triple(const std::string& text, const std::string& path, const YAML::N
     r.text = model::exact_number(values[i]);
     out.push_back(std::move(r));
   }
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw model::InputError(
-        model::Diagnostic({path, 0, 0}, "file", "cannot be read", "a rig file"));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::string triple_text(const std::array<double, 3>& values) {
@@ -330,7 +319,7 @@ std::string edit_rig_text(const std::string& text, const std::string& path,
 
 std::string save_rig_edits(const std::string& path, const std::string& loaded_text,
                            std::span<const MountEdit> edits) {
-  if (read_text(path) != loaded_text) {
+  if (read_file_bytes(path, "a rig file") != loaded_text) {
     throw model::InputError(model::Diagnostic(
         {path, 0, 0}, "file", "changed on disk since it was loaded; not overwritten",
         "reload the rig, then edit again"));
