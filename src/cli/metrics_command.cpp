@@ -17,6 +17,7 @@
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/metrics/tolerance_coverage.hpp"
+#include "rigdesign/metrics/tolerance_verdicts.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 #include "text_table.hpp"
@@ -127,6 +128,11 @@ std::string percent(double share) {
   return fixed(share * 100, 1) + " %";
 }
 
+// "+1.8 %", "-0.4 %": a margin in points of share.
+std::string signed_percent(double share) {
+  return (share >= 0 ? "+" : "") + percent(share);
+}
+
 std::string summary_line(const metrics::CoverageSummary& summary) {
   return "min " + percent(summary.min) + " (at " + fixed(model::rad_to_deg(summary.min_theta), 0) +
          " deg), mean " + percent(summary.mean) + ", 100 % at " + percent(summary.full_share) +
@@ -214,42 +220,28 @@ void print_text(const RigInputs& inputs, const metrics::ResultantMetrics& metric
   table.print(out, "  ");
 }
 
-// "x +5 mm, pitch -1 deg": the axes of a pose error that are not zero.
-std::string error_text(const metrics::PoseError& error) {
-  std::vector<std::string> parts;
-  const char* axes[] = {"x", "y", "z"};
-  const char* turns[] = {"roll", "pitch", "yaw"};
-  const auto sign = [](double v) { return v > 0 ? "+" : ""; };
-  for (int i = 0; i < 3; ++i) {
-    if (error.xyz[i] != 0)
-      parts.push_back(std::string(axes[i]) + " " + sign(error.xyz[i]) +
-                      model::format_number(error.xyz[i] * 1000, 4) + " mm");
-  }
-  for (int i = 0; i < 3; ++i) {
-    if (error.rpy[i] != 0)
-      parts.push_back(std::string(turns[i]) + " " + sign(error.rpy[i]) +
-                      model::format_number(model::rad_to_deg(error.rpy[i]), 4) + " deg");
-  }
-  return parts.empty() ? "nominal" : model::join(parts);
-}
-
 std::string worst_text(double nominal, const metrics::WorstShare& worst) {
+  std::vector<std::string> errors;
+  for (const metrics::MountError& error : worst.errors)
+    errors.push_back(error.mount_id + ": " + metrics::error_text(error.error));
   return percent(nominal) + " -> " + percent(worst.share) +
-         (worst.mount_id.empty() ? ""
-                                 : " (" + worst.mount_id + ": " + error_text(worst.error) + ")");
+         (errors.empty() ? "" : " (" + model::join(errors, "; ") + ")");
 }
 
 void print_tolerance(const std::vector<metrics::SectorTolerance>& sectors, std::ostream& out) {
-  out << "\nMounting tolerance: each sector's minimum with one mount at a time anywhere in its "
-         "tolerance box (its corners and face centres, exact path)\n";
+  out << "\nMounting tolerance: each sector's minimum with the mounts anywhere in their "
+         "tolerance boxes (corners and face centres one mount at a time, then the mounts' worst "
+         "together; exact path)\n";
   using Align = TextTable::Align;
   TextTable table;
   for (const char* header :
-       {"sector", "SC complete nominal -> worst", "SC floor nominal -> worst", "still met"})
+       {"sector", "SC complete nominal -> worst", "SC floor nominal -> worst", "margin left",
+        "still met"})
     table.add_column(header, Align::left);
   for (const metrics::SectorTolerance& sector : sectors) {
     table.add_row({sector.sector.name, worst_text(sector.nominal_complete, sector.complete),
-                   worst_text(sector.nominal_floor, sector.floor), yes_no(sector.pass)});
+                   worst_text(sector.nominal_floor, sector.floor), signed_percent(sector.margin()),
+                   yes_no(sector.pass)});
   }
   table.print(out, "  ");
 }
@@ -265,15 +257,16 @@ nlohmann::json tolerance_json(const std::vector<metrics::SectorTolerance>& secto
   nlohmann::json list = nlohmann::json::array();
   for (const metrics::SectorTolerance& sector : sectors) {
     const auto worst = [](double nominal, const metrics::WorstShare& share) {
-      return nlohmann::json{{"nominal", nominal},
-                            {"worst", share.share},
-                            {"mount", share.mount_id},
-                            {"error", error_json(share.error)}};
+      nlohmann::json errors = nlohmann::json::array();
+      for (const metrics::MountError& error : share.errors)
+        errors.push_back({{"mount", error.mount_id}, {"error", error_json(error.error)}});
+      return nlohmann::json{{"nominal", nominal}, {"worst", share.share}, {"errors", errors}};
     };
     list.push_back({{"sector", sector.sector.name},
                     {"complete", worst(sector.nominal_complete, sector.complete)},
                     {"floor", worst(sector.nominal_floor, sector.floor)},
-                    {"still_met", sector.pass}});
+                    {"still_met", sector.pass},
+                    {"margin", sector.margin()}});
   }
   return list;
 }
@@ -292,6 +285,8 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
   // Issue 38: the sectors over the mounts' tolerance boxes, when the rig gives any.
   const std::vector<metrics::SectorTolerance> tolerance =
       metrics::tolerance_coverage(inputs.rig, inputs.library, sectors);
+  for (metrics::RequirementResult& result : metrics::tolerance_verdicts(inputs.rig, tolerance))
+    results.push_back(std::move(result));
   std::optional<model::FilteringLoads> loads;
   if (!options.filtering_loads.empty()) loads = io::load_filtering_loads(options.filtering_loads);
   if (options.json) {

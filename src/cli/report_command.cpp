@@ -14,7 +14,10 @@
 #include "report/html_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/staged_folder.hpp"
+#include "rigdesign/metrics/pair_findings.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
+#include "rigdesign/metrics/tolerance_coverage.hpp"
+#include "rigdesign/metrics/tolerance_verdicts.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::cli {
@@ -51,6 +54,14 @@ int run_report(const ReportOptions& options, std::ostream& out) {
   if (inputs.requirements) {
     content.results =
         metrics::evaluate_requirements(inputs.rig, resultant, *inputs.requirements, &coverage);
+    // Issue 38: the sectors again over the mounts' tolerance boxes, when the rig gives any.
+    for (metrics::RequirementResult& result : metrics::tolerance_verdicts(
+             inputs.rig, metrics::tolerance_coverage(inputs.rig, inputs.library, sectors, settings)))
+      content.results.push_back(std::move(result));
+    // Crosstalk (D5) and calibration overlap (R9), as check judges them.
+    for (metrics::RequirementResult& result :
+         metrics::pair_findings(inputs.rig, inputs.library, &*inputs.requirements).verdicts)
+      content.results.push_back(std::move(result));
   }
 
   const std::string figures = staged.path() + "/figures";

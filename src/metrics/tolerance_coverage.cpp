@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <limits>
+#include <thread>
 
 #include "coverage_parts.hpp"
 #include "rigdesign/geometry/cross_section.hpp"
 #include "rigdesign/geometry/section_polygons.hpp"
+#include "rigdesign/model/parallel_for.hpp"
 #include "rigdesign/model/rotation.hpp"
 
 namespace rigdesign::metrics {
@@ -19,16 +21,28 @@ struct SectorAngle {
   std::vector<geometry::IntervalSet> floors;              // per mount
 };
 
-// SC complete and floor at one angle with mount `replaced` seeing `polygons` and `floor`
-// instead of its nominal region (no replacement when `replaced` is past the last mount).
-std::pair<double, double> shares_at(const SectorAngle& angle, std::size_t replaced,
-                                    const std::vector<geometry::Polygon2>& polygons,
-                                    const geometry::IntervalSet& floor) {
+// One mount's region in one cross-section.
+struct MountSection {
+  std::vector<geometry::Polygon2> polygons;
+  geometry::IntervalSet floor;
+};
+
+MountSection cut_section(const detail::PlacedMount& placed, const SectorAngle& angle,
+                         const geometry::TessellationSettings& tessellation) {
+  return {geometry::section_polygons(placed.fov, angle.frame, tessellation),
+          geometry::floor_coverage(placed.fov, angle.frame)};
+}
+
+// SC complete and floor at one angle with the mounts whose entry in `moved` is set seeing that
+// section instead of their nominal region (`moved` empty: every mount nominal).
+std::pair<double, double> shares_at(const SectorAngle& angle,
+                                    const std::vector<const MountSection*>& moved) {
   std::vector<std::vector<geometry::Polygon2>> regions;
   geometry::IntervalSet seen;
   for (std::size_t m = 0; m < angle.polygons.size(); ++m) {
-    regions.push_back(m == replaced ? polygons : angle.polygons[m]);
-    seen = seen.united(m == replaced ? floor : angle.floors[m]);
+    const MountSection* section = m < moved.size() ? moved[m] : nullptr;
+    regions.push_back(section != nullptr ? section->polygons : angle.polygons[m]);
+    seen = seen.united(section != nullptr ? section->floor : angle.floors[m]);
   }
   return {geometry::union_area(regions) / angle.frame.area(), seen.length() / angle.frame.width()};
 }
@@ -52,6 +66,42 @@ std::vector<std::pair<double, double>> sector_minima(
     floor = floor == kNone ? 0.0 : judged_share(floor);
   }
   return minima;
+}
+
+// A mount with a tolerance: its samples and each one's per-sector minima (complete, floor)
+// with the other mounts nominal. Sections are not kept: 76 samples of six axes at 360 angles
+// of four mounts would hold some 100 MB of polygons for the few the joint step reuses.
+struct ToleratedMount {
+  std::size_t index = 0;
+  std::vector<PoseError> errors;
+  std::vector<std::vector<std::pair<double, double>>> minima;  // per sample, per sector
+};
+
+// `mount` of the rig moved by `error`, cut at every angle.
+std::vector<MountSection> moved_sections(const model::Rig& rig, const model::Mount& mount,
+                                         const PoseError& error,
+                                         const model::SensorLibrary& library,
+                                         const geometry::BodyOccluder& body,
+                                         const std::vector<SectorAngle>& angles,
+                                         const geometry::TessellationSettings& tessellation) {
+  model::Mount moved = mount;
+  moved.T_robot_sensor = with_error(moved.T_robot_sensor, error);
+  const detail::PlacedMount placed = detail::place_mount(rig, moved, library, body);
+  std::vector<MountSection> sections;
+  for (const SectorAngle& angle : angles) sections.push_back(cut_section(placed, angle, tessellation));
+  return sections;
+}
+
+// The sample of `mount` with the smallest share of sector `s` (the first of equals).
+std::size_t worst_sample(const ToleratedMount& mount, std::size_t s, bool floor) {
+  std::size_t worst = 0;
+  for (std::size_t i = 1; i < mount.minima.size(); ++i) {
+    const auto share = [&](std::size_t k) {
+      return floor ? mount.minima[k][s].second : mount.minima[k][s].first;
+    };
+    if (share(i) < share(worst)) worst = i;
+  }
+  return worst;
 }
 
 }  // namespace
@@ -124,8 +174,7 @@ std::vector<SectorTolerance> tolerance_coverage(
     angles.push_back(std::move(angle));
   }
   std::vector<std::pair<double, double>> nominal_shares;
-  for (const SectorAngle& angle : angles)
-    nominal_shares.push_back(shares_at(angle, rig.mounts.size(), {}, {}));
+  for (const SectorAngle& angle : angles) nominal_shares.push_back(shares_at(angle, {}));
   const std::vector<std::pair<double, double>> nominal =
       sector_minima(sectors, angles, nominal_shares);
 
@@ -139,25 +188,77 @@ std::vector<SectorTolerance> tolerance_coverage(
     sector.floor.share = nominal[s].second;
     result.push_back(sector);
   }
+  // One mount at a time, the others nominal: every (mount, sample) is a job of its own, run on
+  // every core (CGAL's lazy exact kernel is thread-safe for objects no two threads share).
+  std::vector<ToleratedMount> tolerated;
+  std::vector<std::pair<std::size_t, std::size_t>> jobs;  // tolerated mount, sample
   for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
     const model::PoseTolerance* tolerance = rig.tolerance_for(rig.mounts[m]);
     if (tolerance == nullptr || !tolerance->any()) continue;
-    for (const PoseError& error : tolerance_samples(*tolerance)) {
-      model::Mount moved = rig.mounts[m];
-      moved.T_robot_sensor = with_error(moved.T_robot_sensor, error);
-      const detail::PlacedMount placed = detail::place_mount(rig, moved, library, body);
-      std::vector<std::pair<double, double>> shares;
-      for (const SectorAngle& angle : angles) {
-        shares.push_back(shares_at(
-            angle, m, geometry::section_polygons(placed.fov, angle.frame, settings.tessellation),
-            geometry::floor_coverage(placed.fov, angle.frame)));
+    tolerated.push_back({m, tolerance_samples(*tolerance), {}});
+    tolerated.back().minima.resize(tolerated.back().errors.size());
+    for (std::size_t i = 0; i < tolerated.back().errors.size(); ++i)
+      jobs.emplace_back(tolerated.size() - 1, i);
+  }
+  const int threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  model::parallel_for(jobs.size(), threads, [&](std::size_t job) {
+    ToleratedMount& mount = tolerated[jobs[job].first];
+    const std::size_t m = mount.index;
+    const std::vector<MountSection> sections =
+        moved_sections(rig, rig.mounts[m], mount.errors[jobs[job].second], library, body, angles,
+                       settings.tessellation);
+    std::vector<std::pair<double, double>> shares;
+    std::vector<const MountSection*> replaced(rig.mounts.size(), nullptr);
+    for (std::size_t a = 0; a < angles.size(); ++a) {
+      // A section the mount misses whether moved or not keeps the nominal shares: most
+      // angles of a camera's box, and the exact union is the cost of this loop.
+      if (sections[a].polygons.empty() && sections[a].floor.empty() &&
+          angles[a].polygons[m].empty() && angles[a].floors[m].empty()) {
+        shares.push_back(nominal_shares[a]);
+        continue;
       }
-      const std::vector<std::pair<double, double>> minima = sector_minima(sectors, angles, shares);
+      replaced[m] = &sections[a];
+      shares.push_back(shares_at(angles[a], replaced));
+    }
+    mount.minima[jobs[job].second] = sector_minima(sectors, angles, shares);
+  });
+  // In a fixed order, so that equal shares name the same error on every run.
+  for (const ToleratedMount& mount : tolerated) {
+    for (std::size_t i = 0; i < mount.errors.size(); ++i) {
       for (std::size_t s = 0; s < sectors.size(); ++s) {
-        if (minima[s].first < result[s].complete.share)
-          result[s].complete = {minima[s].first, moved.id, error};
-        if (minima[s].second < result[s].floor.share)
-          result[s].floor = {minima[s].second, moved.id, error};
+        const std::vector<MountError> errors = {{rig.mounts[mount.index].id, mount.errors[i]}};
+        const auto& [complete, floor] = mount.minima[i][s];
+        if (complete < result[s].complete.share) result[s].complete = {complete, errors};
+        if (floor < result[s].floor.share) result[s].floor = {floor, errors};
+      }
+    }
+  }
+  // Every mount at once at its own worst sample for the sector and share.
+  if (tolerated.size() > 1) {
+    for (std::size_t s = 0; s < sectors.size(); ++s) {
+      for (const bool floor : {false, true}) {
+        std::vector<MountError> errors;
+        std::vector<std::pair<std::size_t, std::vector<MountSection>>> chosen;  // mount, cuts
+        for (const ToleratedMount& mount : tolerated) {
+          const std::size_t worst = worst_sample(mount, s, floor);
+          const double share = floor ? mount.minima[worst][s].second : mount.minima[worst][s].first;
+          if (share >= (floor ? nominal[s].second : nominal[s].first)) continue;  // no worse
+          errors.push_back({rig.mounts[mount.index].id, mount.errors[worst]});
+          chosen.emplace_back(mount.index,
+                              moved_sections(rig, rig.mounts[mount.index], mount.errors[worst],
+                                             library, body, angles, settings.tessellation));
+        }
+        if (chosen.size() < 2) continue;  // one mount's worst is already recorded
+        std::vector<std::pair<double, double>> shares;
+        std::vector<const MountSection*> replaced(rig.mounts.size(), nullptr);
+        for (std::size_t a = 0; a < angles.size(); ++a) {
+          for (const auto& [index, sections] : chosen) replaced[index] = &sections[a];
+          shares.push_back(shares_at(angles[a], replaced));
+        }
+        const std::pair<double, double> joint = sector_minima(sectors, angles, shares)[s];
+        WorstShare& worst = floor ? result[s].floor : result[s].complete;
+        const double share = floor ? joint.second : joint.first;
+        if (share < worst.share) worst = {share, errors};
       }
     }
   }
@@ -166,6 +267,15 @@ std::vector<SectorTolerance> tolerance_coverage(
                   sector.floor.share >= sector.sector.min_floor_coverage;
   }
   return result;
+}
+
+double SectorTolerance::margin() const {
+  return std::min(complete.share - sector.min_complete_coverage,
+                  floor.share - sector.min_floor_coverage);
+}
+
+bool SectorTolerance::floor_binds() const {
+  return floor.share - sector.min_floor_coverage < complete.share - sector.min_complete_coverage;
 }
 
 }  // namespace rigdesign::metrics

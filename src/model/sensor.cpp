@@ -14,6 +14,10 @@ bool LightImmunity::immune_to(LightCondition condition) const {
   return false;
 }
 
+bool Emitter::supports(const std::string& measure) const {
+  return std::find(mitigation.begin(), mitigation.end(), measure) != mitigation.end();
+}
+
 double NoiseModel::sigma(double distance) const {
   return a + b * distance + c * distance * distance;
 }

@@ -5,6 +5,7 @@
 // past d). With +-5 mm in x and z and +-1 deg of pitch the floor edge is farthest at x + 5 mm,
 // z + 5 mm, pitch - 1 deg.
 #include "rigdesign/metrics/tolerance_coverage.hpp"
+#include "rigdesign/metrics/tolerance_verdicts.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -54,13 +55,25 @@ TEST_CASE("tolerance: the floor edge at the box's worst corner, by hand", "[metr
   CHECK(nominal == Approx(0.64118).margin(1e-5));  // the numbers above, to 5 digits
   CHECK(result[0].nominal_floor == Approx(nominal).margin(1e-6));
   CHECK(result[0].floor.share == Approx(worst).margin(1e-6));
-  CHECK(result[0].floor.mount_id == "front");
-  CHECK(result[0].floor.error.xyz.x() == Approx(0.005));
-  CHECK(result[0].floor.error.xyz.z() == Approx(0.005));
-  CHECK(result[0].floor.error.rpy.y() == Approx(model::deg_to_rad(-1.0)));
+  REQUIRE(result[0].floor.errors.size() == 1);
+  const metrics::MountError& worst_error = result[0].floor.errors.front();
+  CHECK(worst_error.mount_id == "front");
+  CHECK(worst_error.error.xyz.x() == Approx(0.005));
+  CHECK(worst_error.error.xyz.z() == Approx(0.005));
+  CHECK(worst_error.error.rpy.y() == Approx(model::deg_to_rad(-1.0)));
   // 1 deg and 5 mm take the sector from pass to fail.
   CHECK(nominal >= ahead.min_floor_coverage);
   CHECK_FALSE(result[0].pass);
+  CHECK(result[0].margin() == Approx(worst - 0.64).margin(1e-6));
+  // check's verdict: R2 fails on the floor and points at the rig's tolerance line (line 4).
+  const std::vector<metrics::RequirementResult> verdicts =
+      metrics::tolerance_verdicts(rig, result);
+  REQUIRE(verdicts.size() == 1);
+  CHECK(verdicts[0].id == "R2");
+  CHECK(verdicts[0].metric == "SC floor");
+  CHECK(verdicts[0].verdict == metrics::Verdict::fail);
+  CHECK(verdicts[0].limiting_mounts == std::vector<std::string>{"front"});
+  CHECK(verdicts[0].rig_where.line == 4);
 }
 
 TEST_CASE("tolerance: the box's corners and face centres, axes of zero width left out",

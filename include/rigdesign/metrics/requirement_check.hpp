@@ -34,6 +34,9 @@ struct RequirementResult {
   /// itself for coverage and body); empty when the finding is about another file (a nav2
   /// parameter). CI annotations go here: the rig is what a reviewer changes.
   model::SourceLocation rig_where;
+  /// Further rig lines the verdict rests on (the other mount of a crosstalk pair): CI
+  /// annotations are put there too.
+  std::vector<model::SourceLocation> also_where;
 
   /// actual - required for at-least bounds, required - actual for at-most ones: positive is
   /// headroom, negative how far it misses. Empty without both values or a bound.

@@ -41,6 +41,16 @@ struct RobustnessRequirement {
   bool any() const { return single_failure || condition.has_value(); }
 };
 
+/// Target-free extrinsic calibration needs sensors that see common structure (issue 38, item
+/// 3): the co-visible area of two mounts (model in metrics/covisibility.hpp) must reach
+/// `min_overlap` for the pair to count, and the graph of such pairs must be connected (every
+/// mount calibrated to every other through a chain) or, with `all_pairs`, complete.
+struct CalibrationRequirement {
+  double min_overlap = 0.0;  ///< [m^2]
+  bool all_pairs = false;
+  SourceLocation where;
+};
+
 /// [m/s^2] The deceleration assumed when a requirements file states none: nav2's own default
 /// braking limit, velocity_smoother `max_decel` = -2.5 m/s^2 (nav2_velocity_smoother/src/
 /// velocity_smoother.cpp:71 at humble 3c3db59 and jazzy f4108e5), which TurtleBot 4's nav2.yaml
@@ -82,6 +92,7 @@ struct Requirements {
   std::vector<LightCondition> lighting;
   SourceLocation lighting_where;
   std::optional<RobustnessRequirement> robustness;
+  std::optional<CalibrationRequirement> calibration;
 
   std::string file;
 

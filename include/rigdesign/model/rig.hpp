@@ -62,6 +62,17 @@ struct RobotBody {
   double area_top() const { return area_height.value_or(height); }
 };
 
+/// What a rig does against crosstalk between this mount's emitter and others' (issue 38, item
+/// 2; sensors.yaml `emitter.mitigation` says what each sensor supports): mounts in the same
+/// `sync` group are wired to one hardware sync and capture at their `delay` offsets; mounts on
+/// different modulation `channel`s do not demodulate each other's light.
+struct CrosstalkMitigation {
+  std::string sync_group;       ///< empty: not synchronised
+  std::optional<double> delay;  ///< [s] capture offset within the group
+  std::optional<int> channel;
+  SourceLocation where;
+};
+
 struct Mount {
   std::string id;
   std::string sensor_id;
@@ -93,6 +104,8 @@ struct Mount {
   MountLimits limits;
   /// This mount's own mounting tolerance; nothing: the rig's.
   std::optional<PoseTolerance> tolerance;
+  /// `crosstalk: {sync, delay_us, channel}`; nothing: no measure stated.
+  std::optional<CrosstalkMitigation> crosstalk;
 };
 
 /// How a rig (or catalog) names its robot description, resolved: enough to load the same

@@ -87,6 +87,28 @@ struct DriverCpuLoad {
   }
 };
 
+/// What a sensor's vendor says about several units lighting each other (sensors.yaml
+/// `emitter.interferes`): they corrupt each other's depth, they do not (Intel's D4xx), or
+/// nothing was found.
+enum class Crosstalk { unknown, interferes, immune };
+
+/// The light an active sensor sends out (issue 38, item 2) and what its vendor supports
+/// against crosstalk between units, with the source of each fact.
+struct Emitter {
+  std::optional<double> wavelength;  ///< [m]; nothing: not published
+  std::string modulation;            ///< "AMCW ToF", "static dot pattern", "pulsed ToF"
+  Crosstalk crosstalk = Crosstalk::unknown;
+  /// Mitigations the vendor supports: sync (a hardware sync cable or trigger), delay (captures
+  /// offset in time), phase_lock (spinning lidars locked to a common phase), channels
+  /// (modulation channels), emitter_off.
+  std::vector<std::string> mitigation;
+  std::optional<double> min_delay;  ///< [s] offset synchronised units need; nothing: none
+  std::string source;
+  SourceLocation where;
+
+  bool supports(const std::string& measure) const;
+};
+
 struct SensorMode {
   std::string id;
   FieldOfView fov;
@@ -101,6 +123,8 @@ struct SensorMode {
   NoiseModel noise;
   LightImmunity light;
   DriverCpuLoad driver_cpu;
+  /// The light it sends out; nothing for a passive sensor (or one whose file says nothing).
+  std::optional<Emitter> emitter;
   SourceLocation where;
 
   /// The coarser of the two ray spacings [rad]: what sets the smallest obstacle seen.

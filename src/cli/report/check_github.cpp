@@ -42,6 +42,8 @@ void annotate_failure(std::ostream& out, const metrics::RequirementResult& resul
   message += "\nrequirement at " + to_string(result.where);
   annotate(out, "error", result.annotated_where(), "rigdesign " + result.id + " " + result.title,
            message);
+  for (const model::SourceLocation& where : result.also_where)
+    annotate(out, "error", where, "rigdesign " + result.id + " " + result.title, message);
 }
 
 }  // namespace

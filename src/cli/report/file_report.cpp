@@ -18,6 +18,9 @@
 #include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/self_filters/self_filters_reader.hpp"
 #include "rigdesign/metrics/coverage_findings.hpp"
+#include "rigdesign/metrics/pair_findings.hpp"
+#include "rigdesign/metrics/tolerance_coverage.hpp"
+#include "rigdesign/metrics/tolerance_verdicts.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 
 namespace rigdesign::cli {
@@ -136,6 +139,15 @@ void judge_rig(const RigInputs& inputs, const std::optional<deploy::DeployedConf
     report.result_seconds.push_back(resultant_seconds + judge_seconds +
                                     (result.metric.rfind("SC", 0) == 0 ? coverage_seconds : 0.0));
   }
+  // Issue 38: each sector again over the mounts' tolerance boxes, when the rig gives any.
+  step = Clock::now();
+  const std::vector<metrics::SectorTolerance> tolerance = metrics::tolerance_coverage(
+      inputs.rig, inputs.library, inputs.requirements->sectors);
+  const double tolerance_seconds = seconds_since(step);
+  for (metrics::RequirementResult& result : metrics::tolerance_verdicts(inputs.rig, tolerance)) {
+    report.results.push_back(std::move(result));
+    report.result_seconds.push_back(tolerance_seconds);
+  }
   if (!config) return;
   step = Clock::now();
   deploy::DeploymentCheck deployed = deploy::check_deployment(
@@ -171,6 +183,12 @@ void check_rig(const std::string& path, const std::string& sensors_path,
                               monitor->warnings.end());
   }
   report.load_seconds = seconds_since(started);
+  // Issue 38: crosstalk (D5, needs no requirements) and calibration overlap (R9).
+  const auto pairs_started = Clock::now();
+  metrics::PairFindings pairs = metrics::pair_findings(
+      inputs.rig, inputs.library, inputs.requirements ? &*inputs.requirements : nullptr);
+  const double pairs_seconds = seconds_since(pairs_started);
+  report.diagnostics.insert(report.diagnostics.end(), pairs.warnings.begin(), pairs.warnings.end());
   if (inputs.requirements) {
     judge_rig(inputs, config, report);
   } else if (config) {
@@ -185,6 +203,10 @@ void check_rig(const std::string& path, const std::string& sensors_path,
     }
   }
   if (monitor) judge_monitor(inputs, *monitor, report);
+  for (metrics::RequirementResult& result : pairs.verdicts) {
+    report.results.push_back(std::move(result));
+    report.result_seconds.push_back(pairs_seconds);
+  }
 }
 
 }  // namespace

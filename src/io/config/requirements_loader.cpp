@@ -210,6 +210,16 @@ model::Requirements load_requirements(const std::string& path) {
   if (auto robustness = top.map("robustness", Need::optional, "a map with survive (and sectors)")) {
     requirements.robustness = read_robustness(*robustness, requirements.sectors);
   }
+  if (auto calibration =
+          top.map("calibration", Need::optional, "a map with pairs and min_overlap_m2")) {
+    model::CalibrationRequirement needed;
+    needed.where = calibration->location();
+    needed.all_pairs = calibration->choice("pairs", Need::required, {"connected", "all"}) == 1U;
+    needed.min_overlap = io::positive(*calibration, "min_overlap_m2", Need::required,
+                                      "the co-visible area a pair needs, in square metres, > 0");
+    calibration->reject_unknown_keys();
+    requirements.calibration = needed;
+  }
   top.text("note", Need::optional);
   top.reject_unknown_keys();
   diagnostics.throw_if_errors();

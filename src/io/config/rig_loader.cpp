@@ -57,6 +57,26 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
   if (auto tolerance = reader.map("tolerance", Need::optional,
                                   "a map with xyz [m] and rpy_deg [deg] half-widths"))
     mount.tolerance = io::pose_tolerance(*tolerance);
+  if (auto crosstalk = reader.map("crosstalk", Need::optional,
+                                  "a map with sync (a group name), delay_us, channel")) {
+    model::CrosstalkMitigation mitigation;
+    mitigation.where = crosstalk->location();
+    mitigation.sync_group = crosstalk->text("sync", Need::optional, "a sync group's name").value_or("");
+    if (const auto delay = crosstalk->number("delay_us", Need::optional,
+                                             "the capture offset in microseconds, >= 0")) {
+      crosstalk->require(*delay >= 0 && *delay <= 1e6, "delay_us", "is outside 0..1e6",
+                         "the capture offset in microseconds, 0..1e6");
+      crosstalk->require(!mitigation.sync_group.empty(), "delay_us", "is given without sync",
+                         "a delay within a sync group: give `sync` too");
+      mitigation.delay = *delay * 1e-6;
+    }
+    mitigation.channel =
+        crosstalk->integer("channel", Need::optional, "a modulation channel number");
+    crosstalk->require(!mitigation.sync_group.empty() || mitigation.channel.has_value(), "sync",
+                       "is missing, and so is channel", "sync (with delay_us) or channel");
+    crosstalk->reject_unknown_keys();
+    mount.crosstalk = mitigation;
+  }
   reader.text("note", Need::optional);
   reader.reject_unknown_keys();
   return mount;

@@ -1,5 +1,6 @@
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -27,7 +28,11 @@ const std::vector<std::string> kModeKeys = {"id",
                                             "noise",
                                             "light",
                                             "driver_cpu",
+                                            "emitter",
                                             "note"};
+
+const std::vector<std::string> kMitigations = {"sync", "delay", "phase_lock", "channels",
+                                               "emitter_off"};
 
 // A mode's field comes from the mode itself, else from the sensor's `mode_defaults`.
 MapReader& source_of(const std::string& key, MapReader& mode, std::optional<MapReader>& defaults) {
@@ -143,6 +148,57 @@ model::DriverCpuLoad read_driver_cpu(MapReader& cpu) {
   return load;
 }
 
+// `emitter: none` (a passive sensor) or its light and crosstalk facts (issue 38).
+std::optional<model::Emitter> read_emitter(MapReader& reader) {
+  const YAML::Node node = reader.node("emitter");
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  const std::string expected =
+      "`none`, or a map {wavelength_nm, modulation, interferes: true|false|unknown, mitigation: "
+      "[sync, delay, phase_lock, channels, emitter_off], min_delay_us, source}";
+  if (node.IsScalar()) {
+    reader.require(node.Scalar() == "none", "emitter", "is not `none` or a map", expected);
+    return std::nullopt;
+  }
+  auto map = reader.map("emitter", Need::required, expected);
+  if (!map) return std::nullopt;
+  model::Emitter emitter;
+  emitter.where = map->location();
+  if (const auto nm = map->number("wavelength_nm", Need::optional, "nanometres, 300..2000")) {
+    map->require(*nm >= 300 && *nm <= 2000, "wavelength_nm", "is outside 300..2000",
+                 "nanometres, 300..2000 (a near-infrared emitter is 780..1600)");
+    emitter.wavelength = *nm * 1e-9;
+  }
+  emitter.modulation = map->text("modulation", Need::required,
+                                 "how the light is sent: pulsed ToF, AMCW ToF, dot pattern ...")
+                           .value_or("");
+  if (const auto crosstalk = map->choice("interferes", Need::required,
+                                         {"unknown", "true", "false"})) {
+    emitter.crosstalk = *crosstalk == 1   ? model::Crosstalk::interferes
+                        : *crosstalk == 2 ? model::Crosstalk::immune
+                                          : model::Crosstalk::unknown;
+  }
+  const YAML::Node list = map->node("mitigation");
+  if (list.IsDefined() && !list.IsNull()) {
+    const bool ok = list.IsSequence() && std::all_of(list.begin(), list.end(), [](const YAML::Node& n) {
+                      return n.IsScalar() && std::find(kMitigations.begin(), kMitigations.end(),
+                                                       n.Scalar()) != kMitigations.end();
+                    });
+    map->require(ok, "mitigation", "is not a list of known measures",
+                 "a list of sync, delay, phase_lock, channels, emitter_off");
+    if (ok)
+      for (const YAML::Node& item : list) emitter.mitigation.push_back(item.Scalar());
+  }
+  if (const auto delay = map->number("min_delay_us", Need::optional, "microseconds, > 0")) {
+    map->require(*delay > 0, "min_delay_us", "is not above 0", "microseconds, > 0");
+    emitter.min_delay = *delay * 1e-6;
+  }
+  emitter.source =
+      map->text("source", Need::required, "where the facts come from").value_or("");
+  map->text("note", Need::optional);
+  map->reject_unknown_keys();
+  return emitter;
+}
+
 model::SensorMode read_mode(MapReader& reader, std::optional<MapReader>& defaults) {
   model::SensorMode mode;
   mode.where = reader.location();
@@ -170,6 +226,7 @@ model::SensorMode read_mode(MapReader& reader, std::optional<MapReader>& default
   if (auto cpu = source_of("driver_cpu", reader, defaults).map("driver_cpu", Need::required)) {
     mode.driver_cpu = read_driver_cpu(*cpu);
   }
+  mode.emitter = read_emitter(source_of("emitter", reader, defaults));
   source_of("note", reader, defaults).text("note", Need::optional);
   reader.reject_keys_other_than(kModeKeys);
   return mode;
