@@ -234,9 +234,8 @@ void print_tolerance(const std::vector<metrics::SectorTolerance>& sectors, std::
          "together; exact path)\n";
   using Align = TextTable::Align;
   TextTable table;
-  for (const char* header :
-       {"sector", "SC complete nominal -> worst", "SC floor nominal -> worst", "margin left",
-        "still met"})
+  for (const char* header : {"sector", "SC complete nominal -> worst", "SC floor nominal -> worst",
+                             "margin left", "still met"})
     table.add_column(header, Align::left);
   for (const metrics::SectorTolerance& sector : sectors) {
     table.add_row({sector.sector.name, worst_text(sector.nominal_complete, sector.complete),

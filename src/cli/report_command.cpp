@@ -8,9 +8,9 @@
 
 #include "app.hpp"
 #include "command.hpp"
-#include "number_checks.hpp"
 #include "coverage_files.hpp"
 #include "inputs.hpp"
+#include "number_checks.hpp"
 #include "report/html_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/staged_folder.hpp"
@@ -56,7 +56,8 @@ int run_report(const ReportOptions& options, std::ostream& out) {
         metrics::evaluate_requirements(inputs.rig, resultant, *inputs.requirements, &coverage);
     // Issue 38: the sectors again over the mounts' tolerance boxes, when the rig gives any.
     for (metrics::RequirementResult& result : metrics::tolerance_verdicts(
-             inputs.rig, metrics::tolerance_coverage(inputs.rig, inputs.library, sectors, settings)))
+             inputs.rig,
+             metrics::tolerance_coverage(inputs.rig, inputs.library, sectors, settings)))
       content.results.push_back(std::move(result));
     // Crosstalk (D5) and calibration overlap (R9), as check judges them.
     for (metrics::RequirementResult& result :

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -24,6 +25,7 @@
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
 #include "rigdesign/io/staged_folder.hpp"
+#include "rigdesign/metrics/tolerance_coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/select/relaxation.hpp"
@@ -46,6 +48,7 @@ struct SelectOptions {
   std::string sensors;
   std::string out;
   std::vector<std::string> robust;  // n-1 and/or a lighting condition
+  std::vector<double> tolerance;    // XYZ_M,RPY_DEG or x,y,z,roll,pitch,yaw (m, deg)
   double budget = -1.0;
   double step_deg = 1.0;
   bool json = false;
@@ -108,7 +111,32 @@ double checked_option_count(const SelectOptions& options, const model::Catalog& 
   return options_total;
 }
 
+// `--tolerance 0.005,1` (every translation axis 5 mm, every rotation 1 deg) or six values
+// x,y,z [m], roll,pitch,yaw [deg]: the box every mount must meet the requirements over.
+std::optional<model::PoseTolerance> tolerance_option(const std::vector<double>& values) {
+  if (values.empty()) return std::nullopt;
+  const std::string expected =
+      "XYZ_M,RPY_DEG (e.g. 0.005,1) or x,y,z,roll,pitch,yaw: half-widths in metres (<= 0.1) "
+      "and degrees (<= 10), >= 0";
+  require_option(values.size() == 2 || values.size() == 6, "--tolerance",
+                 "has " + std::to_string(values.size()) + " values", expected);
+  std::array<double, 6> axes{};
+  for (std::size_t i = 0; i < 6; ++i) axes[i] = values.size() == 2 ? values[i / 3] : values[i];
+  for (std::size_t i = 0; i < 6; ++i) {
+    const double limit = i < 3 ? 0.1 : 10.0;
+    require_option(std::isfinite(axes[i]) && axes[i] >= 0 && axes[i] <= limit, "--tolerance",
+                   "value " + model::format_number(axes[i]) + " is out of range", expected);
+  }
+  model::PoseTolerance tolerance;
+  tolerance.xyz = model::Vec3(axes[0], axes[1], axes[2]);
+  tolerance.rpy = model::Vec3(model::deg_to_rad(axes[3]), model::deg_to_rad(axes[4]),
+                              model::deg_to_rad(axes[5]));
+  tolerance.where = model::SourceLocation{"(command line)"};
+  return tolerance;
+}
+
 int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
+  const std::optional<model::PoseTolerance> tolerance = tolerance_option(options.tolerance);
   model::Catalog catalog = io::load_catalog(options.catalog);
   const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
   io::check_catalog_references(catalog, library).throw_if_errors();
@@ -141,10 +169,15 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
 
   metrics::CoverageSettings settings;
   settings.step = model::deg_to_rad(options.step_deg);
-  ProgressLine progress(
-      err, "select: rasterising " + model::format_number(options_total) + " slot options", "");
+  const std::size_t poses =
+      1 + (tolerance && tolerance->any() ? metrics::tolerance_samples(*tolerance).size() : 0);
+  ProgressLine progress(err,
+                        "select: rasterising " + model::format_number(options_total) +
+                            " slot options" +
+                            (poses > 1 ? " at " + std::to_string(poses) + " poses each" : ""),
+                        "");
   progress.update_share(0.0, "at " + model::format_number(options.step_deg) + " deg steps");
-  const select::SelectionSpace space(catalog, library, settings);
+  const select::SelectionSpace space(catalog, library, settings, tolerance);
   // Every phase of every step (search, exact verification, refinement, robustness cost,
   // binding requirements, files) shows with its own count and clock.
   std::size_t step = 0;  // the relaxation steps shown
@@ -222,6 +255,13 @@ Command setup_select(CLI::App& parent) {
                   "robustness");
   app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)")
       ->check(finite_in(kFinestSelectStepDeg, 45, "degrees in [0.25, 45]"));
+  app->add_option("--tolerance", options->tolerance,
+                  "Mounting tolerance every mount must meet the requirements over: XYZ_M,RPY_DEG "
+                  "(e.g. 0.005,1) or x,y,z,roll,pitch,yaw in m and deg; options are rasterised "
+                  "at the box's corners and face centres and the winner verified over the box on "
+                  "the exact path")
+      ->delimiter(',')
+      ->expected(2, 6);
   app->add_flag("--json", options->json, "Print JSON instead of the trace");
   app->add_flag("--no-renders", options->no_renders, "Skip the chosen rig's coverage pictures");
   return {app, [options](std::ostream& out, std::ostream& err) {

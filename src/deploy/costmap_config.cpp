@@ -22,7 +22,7 @@ constexpr double kRoundShare = 0.9;
 // planner can use to keep clear of walls.
 constexpr double kInflationMargin = 0.1;
 // nav2's VoxelLayer packs a column into 16 bits.
-constexpr int kMaxVoxels = 16;
+constexpr int kMaxConfigVoxels = 16;
 
 // The largest height error of a floor return within `range` of a sensor `height` above the
 // floor: a return at range D along a ray of elevation e errs by sigma(D) sin e = sigma(D) H / D
@@ -126,7 +126,7 @@ CostmapConfig costmap_config(const model::Rig& rig, const model::SensorLibrary& 
   }
   p.layer = any_3d ? costmap::ObstacleLayerKind::voxel : costmap::ObstacleLayerKind::obstacle;
   p.voxel.z_min = 0.0;
-  p.voxel.z_resolution = std::max(0.05, model::round_up(top / kMaxVoxels, 0.01));
+  p.voxel.z_resolution = std::max(0.05, model::round_up(top / kMaxConfigVoxels, 0.01));
   p.voxel.z_max = std::ceil(top / p.voxel.z_resolution - 1e-9) * p.voxel.z_resolution;
   const double speed =
       options.max_speed > 0.0

@@ -18,7 +18,7 @@ constexpr double kLossTolerance = 1e-4;
 // past the body loses whole degrees (percent).
 constexpr double kWarnedLoss = 1e-3;
 
-std::string percent(double share) {
+std::string deployed_percent(double share) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.1f %%", 100 * share);
   return buffer;
@@ -184,8 +184,7 @@ void warn_if_beyond_body(const model::Rig& rig, const model::SensorLibrary& libr
 
 DeploymentCheck check_deployment(const model::Rig& rig, const model::SensorLibrary& library,
                                  const model::Requirements& requirements,
-                                 const DeployedConfig& config,
-                                 const metrics::RigCoverage* design) {
+                                 const DeployedConfig& config, const metrics::RigCoverage* design) {
   DeploymentCheck check;
   std::vector<metrics::RequirementResult>& results = check.results;
   if (!config.nav2_file.empty()) check_sources(rig, requirements, config, results);
@@ -210,9 +209,10 @@ DeploymentCheck check_deployment(const model::Rig& rig, const model::SensorLibra
     r.required = binding.required;
     r.bound = metrics::Bound::at_least;
     r.actual = binding.actual;
-    r.explanation = "complete min " + percent(before.complete.min) + " -> " +
-                    percent(after.complete.min) + ", floor min " + percent(before.floor.min) +
-                    " -> " + percent(after.floor.min) + " after the deployed limits and filters";
+    r.explanation = "complete min " + deployed_percent(before.complete.min) + " -> " +
+                    deployed_percent(after.complete.min) + ", floor min " +
+                    deployed_percent(before.floor.min) + " -> " +
+                    deployed_percent(after.floor.min) + " after the deployed limits and filters";
     if (after.pass || !before.pass) {
       if (!before.pass) r.verdict = metrics::Verdict::not_evaluated;
       results.push_back(r);
@@ -229,10 +229,11 @@ DeploymentCheck check_deployment(const model::Rig& rig, const model::SensorLibra
       if (culprits.empty()) r.where = setting.setting.where;
       r.limiting_mounts.push_back(setting.mount_id);
       culprits += "; " + setting.setting.what + " (" + model::to_string(setting.setting.where) +
-                  ") loses " + percent(own);
+                  ") loses " + deployed_percent(own);
     }
-    r.explanation += ": the sector needs complete " + percent(before.sector.min_complete_coverage) +
-                     " and floor " + percent(before.sector.min_floor_coverage) + culprits;
+    r.explanation += ": the sector needs complete " +
+                     deployed_percent(before.sector.min_complete_coverage) + " and floor " +
+                     deployed_percent(before.sector.min_floor_coverage) + culprits;
     results.push_back(r);
   }
   // One setting alone removes no more than all of them together (each only takes rays away),

@@ -6,9 +6,9 @@
 namespace rigdesign::localize {
 namespace {
 
-constexpr int kKeyBits = 21;  // three signed cell indices packed in 63 bits
-constexpr std::int64_t kKeyOffset = std::int64_t{1} << (kKeyBits - 1);
-constexpr std::uint64_t kKeyMask = (std::uint64_t{1} << kKeyBits) - 1;
+constexpr int kChunkKeyBits = 21;  // three signed cell indices packed in 63 bits
+constexpr std::int64_t kKeyOffset = std::int64_t{1} << (kChunkKeyBits - 1);
+constexpr std::uint64_t kKeyMask = (std::uint64_t{1} << kChunkKeyBits) - 1;
 
 std::uint64_t cell_key(const model::Vec3& position, double size) {
   std::uint64_t key = 0;
@@ -17,7 +17,7 @@ std::uint64_t cell_key(const model::Vec3& position, double size) {
     // the conversion defined for absurd coordinates.
     const double index = std::clamp(std::floor(position[axis] / size), -1e15, 1e15);
     const auto cell = static_cast<std::int64_t>(index) + kKeyOffset;
-    key |= (static_cast<std::uint64_t>(cell) & kKeyMask) << (kKeyBits * axis);
+    key |= (static_cast<std::uint64_t>(cell) & kKeyMask) << (kChunkKeyBits * axis);
   }
   return key;
 }

@@ -64,14 +64,14 @@ RequirementResult calibration_verdict(const model::Rig& rig,
   const std::vector<std::vector<std::size_t>> components =
       overlap_components(overlap, required.min_overlap);
   std::string found = "pairs sharing >= " + square_metres(required.min_overlap) + " within " +
-                      model::format_number(overlap.distance, 3) + " m: " +
-                      (edges.empty() ? std::string("none") : model::join(edges));
+                      model::format_number(overlap.distance, 3) +
+                      " m: " + (edges.empty() ? std::string("none") : model::join(edges));
   if (required.all_pairs) {
     result.metric = "smallest pair overlap";
     result.actual = weakest;
     result.verdict = missing.empty() ? Verdict::pass : Verdict::fail;
-    result.explanation = "every pair must share >= " + square_metres(required.min_overlap) +
-                         "; " + (missing.empty() ? found : "too little: " + model::join(missing));
+    result.explanation = "every pair must share >= " + square_metres(required.min_overlap) + "; " +
+                         (missing.empty() ? found : "too little: " + model::join(missing));
   } else {
     result.metric = "sensors cut off";
     result.unit = "";

@@ -11,7 +11,7 @@
 namespace rigdesign::metrics {
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
+constexpr double kCoverageTwoPi = 2 * std::numbers::pi;
 
 using detail::PlacedMount;
 
@@ -51,7 +51,8 @@ SectionView section_view(const model::Rig& rig, const model::SensorLibrary& libr
 }
 
 bool in_sector(const model::SectorRequirement& sector, double theta) {
-  const double offset = std::fmod(std::fmod(theta - sector.from, kTwoPi) + kTwoPi, kTwoPi);
+  const double offset =
+      std::fmod(std::fmod(theta - sector.from, kCoverageTwoPi) + kCoverageTwoPi, kCoverageTwoPi);
   return offset <= sector.to - sector.from + 1e-12;
 }
 

@@ -35,7 +35,8 @@ bool sees_floor(const geometry::IntervalSet& column) {
 
 double covisibility_distance(const model::Rig& rig) {
   double distance = rig.distance_of_interest;
-  for (const model::Mount& mount : rig.mounts) distance = std::max(distance, rig.distance_for(mount));
+  for (const model::Mount& mount : rig.mounts)
+    distance = std::max(distance, rig.distance_for(mount));
   return distance;
 }
 

@@ -23,8 +23,8 @@ struct Mitigated {
   std::string why;
 };
 
-Mitigated mitigation_of(const model::Mount& a, const model::Emitter& light_a,
-                        const model::Mount& b, const model::Emitter& light_b) {
+Mitigated mitigation_of(const model::Mount& a, const model::Emitter& light_a, const model::Mount& b,
+                        const model::Emitter& light_b) {
   if (!a.crosstalk || !b.crosstalk) return {};
   const model::CrosstalkMitigation& x = *a.crosstalk;
   const model::CrosstalkMitigation& y = *b.crosstalk;
@@ -36,22 +36,22 @@ Mitigated mitigation_of(const model::Mount& a, const model::Emitter& light_a,
                                                       : model::join(light->mitigation)) +
                            ")"};
     }
-    const double needed = std::max(light_a.min_delay.value_or(0.0), light_b.min_delay.value_or(0.0));
+    const double needed =
+        std::max(light_a.min_delay.value_or(0.0), light_b.min_delay.value_or(0.0));
     const double apart = std::abs(x.delay.value_or(0.0) - y.delay.value_or(0.0));
     if (apart + 1e-12 < needed)
       return {false, "sync group '" + x.sync_group + "': captures " + microseconds(apart) +
                          " apart, the sensors need " + microseconds(needed)};
     return {true, "sync group '" + x.sync_group + "'" +
-                      (needed > 0 ? ", captures " + microseconds(apart) + " apart >= " +
-                                        microseconds(needed)
+                      (needed > 0 ? ", captures " + microseconds(apart) +
+                                        " apart >= " + microseconds(needed)
                                   : std::string())};
   }
   if (x.channel && y.channel) {
     if (!light_a.supports("channels") || !light_b.supports("channels"))
       return {false, "channels stated, but sensors.yaml lists no modulation channels for " +
                          (light_a.supports("channels") ? b.sensor_id : a.sensor_id)};
-    if (*x.channel == *y.channel)
-      return {false, "both on channel " + std::to_string(*x.channel)};
+    if (*x.channel == *y.channel) return {false, "both on channel " + std::to_string(*x.channel)};
     return {true, "channels " + std::to_string(*x.channel) + " and " + std::to_string(*y.channel)};
   }
   return {};
@@ -101,14 +101,13 @@ CrosstalkFindings crosstalk_findings(const model::Rig& rig, const model::SensorL
     if (light_a.wavelength && light_b.wavelength &&
         std::abs(*light_a.wavelength - *light_b.wavelength) > kFilterPassband)
       continue;
-    const std::string shared =
-        "they share " + model::format_number(pair.area, 3) + " m^2 within " +
-        model::format_number(overlap.distance, 3) + " m (floor " +
-        model::format_number(pair.floor_area, 3) + " m^2)" +
-        (light_a.wavelength && light_b.wavelength
-             ? ", emitters at " + nanometres(*light_a.wavelength) + " and " +
-                   nanometres(*light_b.wavelength)
-             : std::string());
+    const std::string shared = "they share " + model::format_number(pair.area, 3) + " m^2 within " +
+                               model::format_number(overlap.distance, 3) + " m (floor " +
+                               model::format_number(pair.floor_area, 3) + " m^2)" +
+                               (light_a.wavelength && light_b.wavelength
+                                    ? ", emitters at " + nanometres(*light_a.wavelength) + " and " +
+                                          nanometres(*light_b.wavelength)
+                                    : std::string());
     const Mitigated measure = mitigation_of(a, light_a, b, light_b);
     // The vendors' statements are about several units of their own sensor: they judge a pair of
     // one model. Two models are judged only when both flood a scene with light (cameras), and
@@ -120,8 +119,8 @@ CrosstalkFindings crosstalk_findings(const model::Rig& rig, const model::SensorL
     if (!interferes && !immune && !measure.ok) {
       findings.warnings.emplace_back(
           a.where, "mounts",
-          a.id + " (" + a.sensor_id + ") and " + b.id + " (" + b.sensor_id + ") light each other: " +
-              shared + "; " +
+          a.id + " (" + a.sensor_id + ") and " + b.id + " (" + b.sensor_id +
+              ") light each other: " + shared + "; " +
               (same_model ? "sensors.yaml has no vendor statement on crosstalk between two of them"
                           : "no vendor statement covers two different cameras") +
               (measure.why.empty() ? std::string() : "; " + measure.why),
@@ -131,8 +130,8 @@ CrosstalkFindings crosstalk_findings(const model::Rig& rig, const model::SensorL
     }
     RequirementResult result = pair_result(a, b, pair);
     if (immune) {
-      result.explanation = shared + "; both vendors state units do not interfere (" +
-                           light_a.source + ")";
+      result.explanation =
+          shared + "; both vendors state units do not interfere (" + light_a.source + ")";
       result.verdict = Verdict::pass;
     } else if (measure.ok) {
       result.explanation = shared + "; kept apart by " + measure.why;

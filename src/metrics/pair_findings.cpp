@@ -11,15 +11,16 @@ namespace rigdesign::metrics {
 PairFindings pair_findings(const model::Rig& rig, const model::SensorLibrary& library,
                            const model::Requirements* requirements) {
   const bool calibration = requirements != nullptr && requirements->calibration.has_value();
-  const auto active = std::count_if(rig.mounts.begin(), rig.mounts.end(), [&](const model::Mount& m) {
-    return library.resolved_mode(m.sensor_id, m.mode_id).emitter.has_value();
-  });
+  const auto active =
+      std::count_if(rig.mounts.begin(), rig.mounts.end(), [&](const model::Mount& m) {
+        return library.resolved_mode(m.sensor_id, m.mode_id).emitter.has_value();
+      });
   PairFindings findings;
   if (rig.mounts.size() < 2 || (active < 2 && !calibration)) {
     if (calibration && rig.mounts.size() < 2) {
       // One sensor has nothing to be calibrated to: connected by definition.
-      findings.verdicts.push_back(
-          calibration_verdict(rig, *requirements->calibration, Covisibility{rig.mount_ids(), {}, 0, 0}));
+      findings.verdicts.push_back(calibration_verdict(rig, *requirements->calibration,
+                                                      Covisibility{rig.mount_ids(), {}, 0, 0}));
     }
     return findings;
   }

@@ -88,7 +88,8 @@ std::vector<MountSection> moved_sections(const model::Rig& rig, const model::Mou
   moved.T_robot_sensor = with_error(moved.T_robot_sensor, error);
   const detail::PlacedMount placed = detail::place_mount(rig, moved, library, body);
   std::vector<MountSection> sections;
-  for (const SectorAngle& angle : angles) sections.push_back(cut_section(placed, angle, tessellation));
+  for (const SectorAngle& angle : angles)
+    sections.push_back(cut_section(placed, angle, tessellation));
   return sections;
 }
 

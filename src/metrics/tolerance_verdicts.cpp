@@ -72,8 +72,8 @@ std::vector<RequirementResult> tolerance_verdicts(const model::Rig& rig,
         tolerance_percent(sector.complete.share) + " (" + worst_errors_text(sector.complete) +
         ") >= " + tolerance_percent(sector.sector.min_complete_coverage) + ", SC floor " +
         tolerance_percent(sector.nominal_floor) + " -> " + tolerance_percent(sector.floor.share) +
-        " (" + worst_errors_text(sector.floor) + ") >= " +
-        tolerance_percent(sector.sector.min_floor_coverage);
+        " (" + worst_errors_text(sector.floor) +
+        ") >= " + tolerance_percent(sector.sector.min_floor_coverage);
     results.push_back(std::move(result));
   }
   return results;

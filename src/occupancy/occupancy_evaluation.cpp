@@ -23,7 +23,7 @@
 namespace rigdesign::occupancy {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNoScore = std::numeric_limits<double>::quiet_NaN();
 
 model::TriangleMesh static_scenery(const model::Scene& scene) {
   model::TriangleMesh mesh;
@@ -111,15 +111,16 @@ void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*
     seconds += frame->update_seconds;
     points += static_cast<double>(frame->points);
   }
-  const double n = frames.empty() ? kNaN : static_cast<double>(frames.size());
+  const double n = frames.empty() ? kNoScore : static_cast<double>(frames.size());
   phase.object = mean_scores(object);
-  phase.master = master.empty() ? Scores{kNaN, kNaN, kNaN, kNaN, kNaN} : mean_scores(master);
+  phase.master = master.empty() ? Scores{kNoScore, kNoScore, kNoScore, kNoScore, kNoScore}
+                                : mean_scores(master);
   phase.ghost_area /= n;
   phase.trail_area /= n;
   phase.trail_length /= n;
   phase.master_ghost_area /= n;
   phase.update_ms = seconds / n * 1e3;
-  phase.points_per_second = seconds > 0.0 ? points / seconds : kNaN;
+  phase.points_per_second = seconds > 0.0 ? points / seconds : kNoScore;
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 namespace rigdesign::occupancy {
 namespace {
 
-constexpr double kUndefined = std::numeric_limits<double>::quiet_NaN();
+constexpr double kSweepUndefined = std::numeric_limits<double>::quiet_NaN();
 
 struct TableRow {
   const char* label;
@@ -84,17 +84,18 @@ Paper3Sweep make_sweep(std::string name, std::string table, std::string swept, P
   return sweep;
 }
 
-const Scores kNoScores{kUndefined, kUndefined, kUndefined, kUndefined, kUndefined};
+const Scores kNoScores{kSweepUndefined, kSweepUndefined, kSweepUndefined, kSweepUndefined,
+                       kSweepUndefined};
 
-struct Column {
+struct SweepColumn {
   std::vector<double> x;
   std::vector<Scores> paper;
   std::vector<Scores> ours;
   bool complete = true;  // every row has a run
 };
 
-Column column_of(const Paper3Sweep& sweep, const RunLookup& runs) {
-  Column column;
+SweepColumn column_of(const Paper3Sweep& sweep, const RunLookup& runs) {
+  SweepColumn column;
   for (const Paper3Setting& row : sweep.rows) {
     column.x.push_back(row.value);
     column.paper.push_back(row.paper);
@@ -129,14 +130,14 @@ double argmax_x(const std::vector<double>& x, const std::vector<Scores>& scores,
   std::size_t best = 0;
   for (std::size_t i = 1; i < scores.size(); ++i)
     if (scores[i].*field > scores[best].*field) best = i;
-  return scores.empty() ? kUndefined : x[best];
+  return scores.empty() ? kSweepUndefined : x[best];
 }
 
 double at_x(const std::vector<double>& x, const std::vector<Scores>& scores, double value,
             double Scores::*field) {
   for (std::size_t i = 0; i < x.size(); ++i)
     if (std::abs(x[i] - value) < 1e-9) return scores[i].*field;
-  return kUndefined;
+  return kSweepUndefined;
 }
 
 const Paper3Sweep* find_sweep(std::span<const Paper3Sweep> sweeps, const std::string& name) {
@@ -217,7 +218,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
   for (const char* name : {"octomap:resolution", "skimap:resolution", "voxblox:resolution"}) {
     const Paper3Sweep* sweep = find_sweep(sweeps, name);
     if (!sweep) continue;
-    const Column c = column_of(*sweep, runs);
+    const SweepColumn c = column_of(*sweep, runs);
     if (!c.complete) continue;
     add("precision rises with voxel length", name, non_decreasing(c.paper, &Scores::precision),
         non_decreasing(c.ours, &Scores::precision), listed("P", c.paper, &Scores::precision),
@@ -249,7 +250,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
     }
   }
   if (const Paper3Sweep* sweep = find_sweep(sweeps, "voxblox:truncation")) {
-    const Column c = column_of(*sweep, runs);
+    const SweepColumn c = column_of(*sweep, runs);
     const auto ratio_wins = [&](const std::vector<Scores>& s) {
       const double r2 = at_x(c.x, s, 0.05, &Scores::recall),
                    r1 = at_x(c.x, s, 0.1, &Scores::recall),
@@ -263,7 +264,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
           listed("R", c.paper, &Scores::recall), listed("R", c.ours, &Scores::recall));
   }
   if (const Paper3Sweep* sweep = find_sweep(sweeps, "voxblox:const_weight")) {
-    const Column c = column_of(*sweep, runs);
+    const SweepColumn c = column_of(*sweep, runs);
     const auto lowers = [&](const std::vector<Scores>& s) {
       return at_x(c.x, s, 1.0, &Scores::recall) < at_x(c.x, s, 0.0, &Scores::recall);
     };
@@ -273,7 +274,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
           listed("R (true, false)", c.ours, &Scores::recall));
   }
   if (const Paper3Sweep* sweep = find_sweep(sweeps, "octomap:hit")) {
-    const Column c = column_of(*sweep, runs);
+    const SweepColumn c = column_of(*sweep, runs);
     const auto best = [&](const std::vector<Scores>& s) {
       return std::abs(argmax_x(c.x, s, &Scores::f1) - 1.0) < 1e-9;
     };
@@ -283,7 +284,7 @@ std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, cons
           listed("F1 (0.5, 0.7, 1)", c.ours, &Scores::f1));
   }
   if (const Paper3Sweep* sweep = find_sweep(sweeps, "octomap:miss")) {
-    const Column c = column_of(*sweep, runs);
+    const SweepColumn c = column_of(*sweep, runs);
     const auto collapses = [&](const std::vector<Scores>& s) {
       const double f07 = at_x(c.x, s, 0.7, &Scores::f1);
       return f07 < 0.5 * std::min(at_x(c.x, s, 0.2, &Scores::f1), at_x(c.x, s, 0.4, &Scores::f1));

@@ -14,7 +14,7 @@
 namespace rigdesign::select {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kNoBound = std::numeric_limits<double>::infinity();
 constexpr long kProgressEvery = 4096;
 
 class BranchAndBound {
@@ -82,7 +82,7 @@ class BranchAndBound {
     counts_.assign(angles, {});
     choice_.assign(slots, -1);
     position_.assign(slots, 0);
-    result_.cost.total = kInfinity;
+    result_.cost.total = kNoBound;
   }
 
   SearchResult run() {
@@ -202,7 +202,7 @@ class BranchAndBound {
   // Each sector's smallest margin over its angles, smallest first; `tightest` gets, per
   // sector, the need where it is smallest.
   std::vector<double> sector_margins(std::vector<std::size_t>* tightest = nullptr) const {
-    std::vector<double> margins(problem_.sectors.size(), kInfinity);
+    std::vector<double> margins(problem_.sectors.size(), kNoBound);
     if (tightest != nullptr) tightest->assign(problem_.sectors.size(), needs_.size());
     for (std::size_t i = 0; i < needs_.size(); ++i) {
       const double margin = margin_at(needs_[i], counts_[needs_[i].angle]);
@@ -231,7 +231,7 @@ class BranchAndBound {
   // they do not beat the incumbent no completion does. First at the incumbent's tightest
   // angle per sector (cheap, usually decisive), then at every angle.
   bool may_widen_margins(std::size_t depth) const {
-    std::vector<double> bound(problem_.sectors.size(), kInfinity);
+    std::vector<double> bound(problem_.sectors.size(), kNoBound);
     const auto beats_incumbent = [&] {
       std::vector<double> sorted = bound;
       std::sort(sorted.begin(), sorted.end());

@@ -7,7 +7,7 @@
 namespace rigdesign::select {
 namespace {
 
-constexpr std::size_t kWordBits = 64;
+constexpr std::size_t kClassWordBits = 64;
 
 // A fixed pseudo-random key per option (splitmix64): a cell's signature is the sum of the
 // keys of the options covering it, so equal signatures mean equal option sets except with
@@ -24,7 +24,7 @@ template <typename Visit>
 void for_each_bit(const std::vector<std::uint64_t>& words, std::size_t base, Visit visit) {
   for (std::size_t w = 0; w < words.size(); ++w) {
     for (std::uint64_t x = words[w]; x != 0; x &= x - 1) {
-      visit(base + w * kWordBits + static_cast<std::size_t>(std::countr_zero(x)));
+      visit(base + w * kClassWordBits + static_cast<std::size_t>(std::countr_zero(x)));
     }
   }
 }
@@ -83,11 +83,11 @@ ClassCoverage::ClassCoverage(const SearchProblem& problem) {
       ++(bit < cells ? cell_weight : floor_weight)[it->second];
     }
     const std::size_t classes = cell_weight.size();
-    const std::size_t words = (classes + kWordBits - 1) / kWordBits;
+    const std::size_t words = (classes + kClassWordBits - 1) / kClassWordBits;
     begin_.push_back(begin_.back() + words);
     classes_ += classes;
-    cell_weight.resize(words * kWordBits, 0);
-    floor_weight.resize(words * kWordBits, 0);
+    cell_weight.resize(words * kClassWordBits, 0);
+    floor_weight.resize(words * kClassWordBits, 0);
     cell_weight_.insert(cell_weight_.end(), cell_weight.begin(), cell_weight.end());
     floor_weight_.insert(floor_weight_.end(), floor_weight.begin(), floor_weight.end());
     for (std::size_t g = 0; g < options.size(); ++g) {
@@ -108,7 +108,7 @@ ClassCoverage::ClassCoverage(const SearchProblem& problem) {
         // An option covers all of a class or none of it; anything else is a key collision.
         if (members[c] != cell_weight[c] + floor_weight[c])
           throw std::logic_error("coverage classes: two option sets share a signature");
-        bits[c / kWordBits] |= std::uint64_t{1} << (c % kWordBits);
+        bits[c / kClassWordBits] |= std::uint64_t{1} << (c % kClassWordBits);
       }
     }
   }
@@ -126,7 +126,7 @@ ClassCoverage::ClassCoverage(const SearchProblem& problem) {
 
 void ClassCoverage::add_weights(std::size_t word, std::uint64_t classes, CellCounts& counts) const {
   for (std::uint64_t x = classes; x != 0; x &= x - 1) {
-    const std::size_t c = word * kWordBits + static_cast<std::size_t>(std::countr_zero(x));
+    const std::size_t c = word * kClassWordBits + static_cast<std::size_t>(std::countr_zero(x));
     counts.cells += cell_weight_[c];
     counts.floor += floor_weight_[c];
   }

@@ -5,10 +5,12 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <thread>
 
 #include "rigdesign/geometry/cross_section.hpp"
 #include "rigdesign/metrics/failure_coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/parallel_for.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/select/pose_refinement.hpp"
 #include "select/infeasibility.hpp"
@@ -17,7 +19,7 @@
 namespace rigdesign::select {
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
+constexpr double kSelectionTwoPi = 2 * std::numbers::pi;
 constexpr int kMaxExactRejections = 50;
 
 bool meets_alone(const CatalogOption& option, const SatisficingTargets& targets) {
@@ -151,19 +153,21 @@ SatisficingTargets satisficing_targets(const model::Requirements& requirements) 
 }
 
 SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::SensorLibrary& library,
-                               const metrics::CoverageSettings& settings)
-    : catalog_(&catalog), library_(&library), settings_(settings) {
+                               const metrics::CoverageSettings& settings,
+                               const std::optional<model::PoseTolerance>& tolerance)
+    : catalog_(&catalog), library_(&library), settings_(settings), tolerance_(tolerance) {
   const geometry::BodyOccluder body(catalog.body);
-  const int angles = std::max(1, static_cast<int>(std::lround(kTwoPi / settings.step)));
+  const int angles = std::max(1, static_cast<int>(std::lround(kSelectionTwoPi / settings.step)));
   std::vector<geometry::SectionFrame> frames;
   for (int a = 0; a < angles; ++a) {
     frames.push_back(
-        geometry::section_frame(body, kTwoPi * a / angles, catalog.distance_of_interest));
+        geometry::section_frame(body, kSelectionTwoPi * a / angles, catalog.distance_of_interest));
     grids_.push_back(
         {std::max(1, static_cast<int>(std::ceil(frames.back().width() / settings.raster_cell))),
          std::max(1, static_cast<int>(std::ceil(frames.back().h / settings.raster_cell)))});
   }
   options_.resize(catalog.slots.size());
+  std::vector<CatalogOption*> all;
   for (std::size_t k = 0; k < catalog.slots.size(); ++k) {
     const model::MountingSlot& slot = catalog.slots[k];
     const double distance = slot.distance_of_interest.value_or(catalog.distance_of_interest);
@@ -185,17 +189,38 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
           option.filtering =
               candidate.filtering_seconds_per_point.value_or(catalog.filtering_seconds_per_point) *
               option.metrics.filtered_points_per_second;
-          const geometry::MountedFov fov(*option.mode, mount.T_robot_sensor, body);
-          std::vector<geometry::SectionRaster> sections;
-          for (int a = 0; a < angles; ++a)
-            sections.push_back(geometry::rasterize(fov, frames[a], grids_[a]));
-          option.sections =
-              std::make_shared<const std::vector<geometry::SectionRaster>>(std::move(sections));
           options_[k].push_back(std::move(option));
         }
       }
     }
   }
+  for (auto& slot : options_)
+    for (CatalogOption& option : slot) all.push_back(&option);
+  // The poses each option is rasterised at: the nominal one, and the tolerance box's samples.
+  std::vector<metrics::PoseError> errors = {metrics::PoseError{}};
+  if (tolerance_ && tolerance_->any()) {
+    for (const metrics::PoseError& error : metrics::tolerance_samples(*tolerance_))
+      errors.push_back(error);
+  }
+  const int threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  model::parallel_for(all.size(), threads, [&](std::size_t i) {
+    CatalogOption& option = *all[i];
+    const model::Pose3& nominal = catalog.slots[option.slot].poses[option.pose].T_robot_sensor;
+    std::vector<geometry::SectionRaster> sections;
+    for (const metrics::PoseError& error : errors) {
+      const geometry::MountedFov fov(*option.mode, metrics::with_error(nominal, error), body);
+      for (int a = 0; a < angles; ++a) {
+        geometry::SectionRaster seen = geometry::rasterize(fov, frames[a], grids_[a]);
+        if (sections.size() < static_cast<std::size_t>(angles)) {
+          sections.push_back(std::move(seen));
+        } else {
+          sections[a] &= seen;  // seen at every pose so far
+        }
+      }
+    }
+    option.sections =
+        std::make_shared<const std::vector<geometry::SectionRaster>>(std::move(sections));
+  });
 }
 
 std::size_t SelectionSpace::option_count() const {
@@ -205,7 +230,7 @@ std::size_t SelectionSpace::option_count() const {
 }
 
 double SelectionSpace::angle(std::size_t index) const {
-  return kTwoPi * static_cast<double>(index) / static_cast<double>(grids_.size());
+  return kSelectionTwoPi * static_cast<double>(index) / static_cast<double>(grids_.size());
 }
 
 SearchProblem SelectionSpace::problem_for(
@@ -264,6 +289,7 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
   rig.link_where = catalog_->link_where;
   rig.joint_where = catalog_->joint_where;
   rig.parent_link = catalog_->parent_link;
+  rig.tolerance = tolerance_;
   for (const CatalogOption* option : chosen) {
     const model::MountingSlot& slot = catalog_->slots[option->slot];
     model::Mount mount;
@@ -345,6 +371,16 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
                     [](const metrics::SectorCoverage& sector) { return sector.pass; });
     clock.stop(std::string("the rig's coverage on the exact path") +
                (verified ? "" : ": rejected"));
+    if (verified && space.tolerance() && space.tolerance()->any()) {
+      clock.start("exact verification over the tolerance box");
+      selection.tolerance =
+          metrics::tolerance_coverage(selection.rig, space.library(), targets.sectors, exact);
+      verified = std::all_of(selection.tolerance.begin(), selection.tolerance.end(),
+                             [](const metrics::SectorTolerance& sector) { return sector.pass; });
+      clock.stop(std::to_string(selection.tolerance.size()) +
+                 " sectors at every mount's box corners and face centres" +
+                 (verified ? "" : ": rejected"));
+    }
     if (verified && targets.robustness && targets.robustness->any()) {
       clock.start("exact verification of failures");
       selection.failures =
@@ -361,7 +397,8 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
       selection.found = true;
       selection.cost = selection.search.cost;
       selection.grid_rig = selection.rig;
-      if (!probe) {
+      // The refinement moves poses on nominal rasters: with a tolerance the grid's poses stay.
+      if (!probe && !space.tolerance()) {
         clock.start("pose refinement");
         selection.refinement = refine_poses(space, selection, targets, progress);
         const PoseRefinement& r = selection.refinement;

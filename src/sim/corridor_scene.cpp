@@ -12,7 +12,7 @@ namespace {
 // Corridor [m]: floor x in [0, 15], y in [-1, 1].
 constexpr double kLength = 15.0;
 constexpr double kHalfWidth = 1.0;
-constexpr double kWallHeight = 2.5;
+constexpr double kCorridorWallHeight = 2.5;
 // Side walls are solid masonry, 25 cm thick; a door sits 20 cm back in it, leaving a recess.
 constexpr double kWallThickness = 0.25;
 constexpr double kRecessDepth = 0.2;
@@ -40,10 +40,10 @@ void add_side_wall(model::Scene& scene, const std::string& name, double side, do
     return aligned_box({x0, std::min(y0, y1), z0}, {x1, std::max(y0, y1), z1});
   };
   const double door_end = door_x + kDoorWidth;
-  add_object(scene, name + "_1", span(0, door_x, inner, outer, 0, kWallHeight));
-  add_object(scene, name + "_2", span(door_end, kLength, inner, outer, 0, kWallHeight));
+  add_object(scene, name + "_1", span(0, door_x, inner, outer, 0, kCorridorWallHeight));
+  add_object(scene, name + "_2", span(door_end, kLength, inner, outer, 0, kCorridorWallHeight));
   add_object(scene, name + "_lintel",
-             span(door_x, door_end, inner, outer, kDoorHeight, kWallHeight));
+             span(door_x, door_end, inner, outer, kDoorHeight, kCorridorWallHeight));
   add_object(scene, name + "_door", span(door_x, door_end, door_back, outer, 0, kDoorHeight));
 }
 
@@ -64,10 +64,10 @@ model::Scene make_corridor_scene() {
 
   const double outer_y = kHalfWidth + kWallThickness;
   add_object(scene, "wall_start",
-             aligned_box({-kEndWallThickness, -outer_y, 0}, {0, outer_y, kWallHeight}));
-  add_object(
-      scene, "wall_end",
-      aligned_box({kLength, -outer_y, 0}, {kLength + kEndWallThickness, outer_y, kWallHeight}));
+             aligned_box({-kEndWallThickness, -outer_y, 0}, {0, outer_y, kCorridorWallHeight}));
+  add_object(scene, "wall_end",
+             aligned_box({kLength, -outer_y, 0},
+                         {kLength + kEndWallThickness, outer_y, kCorridorWallHeight}));
   add_side_wall(scene, "wall_left", +1, kDoorLeftX);
   add_side_wall(scene, "wall_right", -1, kDoorRightX);
 

@@ -19,8 +19,8 @@ namespace {
 
 // Room [m]: floor x in [0, 8], y in [-3, 3]; walls are 10 cm partitions outside it, 2.6 m
 // high (a common office ceiling height).
-constexpr double kRoomLength = 8.0;
-constexpr double kRoomWidth = 6.0;
+constexpr double kOfficeRoomLength = 8.0;
+constexpr double kOfficeRoomWidth = 6.0;
 constexpr double kOfficeWallHeight = 2.6;
 constexpr double kOfficeWallThickness = 0.1;
 
@@ -86,18 +86,20 @@ model::Pose3 place_in_slot(int slot, double half_x, double half_y, double yaw,
 }
 
 void add_room(model::Scene& scene) {
-  add_object(scene, "floor",
-             floor_rectangle({{0, -kRoomWidth / 2}, {kRoomLength, kRoomWidth / 2}}, 0));
+  add_object(
+      scene, "floor",
+      floor_rectangle({{0, -kOfficeRoomWidth / 2}, {kOfficeRoomLength, kOfficeRoomWidth / 2}}, 0));
   const double t = kOfficeWallThickness;
-  const double y = kRoomWidth / 2;
+  const double y = kOfficeRoomWidth / 2;
   // The side walls run past the end walls so the corners are closed.
   add_object(scene, "wall_back", aligned_box({-t, -y, 0}, {0, y, kOfficeWallHeight}));
-  add_object(scene, "wall_front",
-             aligned_box({kRoomLength, -y, 0}, {kRoomLength + t, y, kOfficeWallHeight}));
+  add_object(
+      scene, "wall_front",
+      aligned_box({kOfficeRoomLength, -y, 0}, {kOfficeRoomLength + t, y, kOfficeWallHeight}));
   add_object(scene, "wall_left",
-             aligned_box({-t, y, 0}, {kRoomLength + t, y + t, kOfficeWallHeight}));
+             aligned_box({-t, y, 0}, {kOfficeRoomLength + t, y + t, kOfficeWallHeight}));
   add_object(scene, "wall_right",
-             aligned_box({-t, -y - t, 0}, {kRoomLength + t, -y, kOfficeWallHeight}));
+             aligned_box({-t, -y - t, 0}, {kOfficeRoomLength + t, -y, kOfficeWallHeight}));
 }
 
 }  // namespace

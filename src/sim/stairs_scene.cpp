@@ -20,9 +20,9 @@ constexpr double kStairwellLength = 2.5;
 constexpr double kStairwellHalfWidth = 0.6;
 // Flight: one storey step of 1 m in 6 risers of 1/6 m (within building codes' usual
 // 15-18 cm) and 28 cm treads (the common code minimum); the 6th riser lands on the lower floor.
-constexpr double kLowerFloorZ = -1.0;
-constexpr int kRisers = 6;
-constexpr double kTread = 0.28;
+constexpr double kStairsLowerFloorZ = -1.0;
+constexpr int kStairsRisers = 6;
+constexpr double kStairsTread = 0.28;
 // Walls below the floor line the stairwell and the pit [m].
 constexpr double kStairwellWallThickness = 0.1;
 
@@ -31,27 +31,30 @@ const Rect2 kPit{{1.0, 1.0}, {1.4, 1.4}};
 constexpr double kPitDepth = 0.5;
 constexpr double kPitWallThickness = 0.05;
 
-void add_stairwell(model::Scene& scene) {
+void add_stairs_stairwell(model::Scene& scene) {
   const double x0 = kStairwellStartX;
   const double x1 = kStairwellStartX + kStairwellLength;
   const double y = kStairwellHalfWidth;
   const double t = kStairwellWallThickness;
-  const double rise = -kLowerFloorZ / kRisers;
+  const double rise = -kStairsLowerFloorZ / kStairsRisers;
   // Each step is a solid block from the lower floor up to its tread.
-  for (int step = 1; step < kRisers; ++step) {
+  for (int step = 1; step < kStairsRisers; ++step) {
     add_object(scene, "step_" + std::to_string(step),
-               aligned_box({x0 + (step - 1) * kTread, -y, kLowerFloorZ},
-                           {x0 + step * kTread, y, -step * rise}));
+               aligned_box({x0 + (step - 1) * kStairsTread, -y, kStairsLowerFloorZ},
+                           {x0 + step * kStairsTread, y, -step * rise}));
   }
-  const double flight_end = x0 + (kRisers - 1) * kTread;
-  add_object(scene, "lower_floor", floor_rectangle({{flight_end, -y}, {x1, y}}, kLowerFloorZ));
+  const double flight_end = x0 + (kStairsRisers - 1) * kStairsTread;
+  add_object(scene, "lower_floor",
+             floor_rectangle({{flight_end, -y}, {x1, y}}, kStairsLowerFloorZ));
   // The start wall is the upper floor's edge, which the first riser drops from.
   add_object(scene, "stairwell_wall_start",
-             aligned_box({x0 - t, -y - t, kLowerFloorZ}, {x0, y + t, 0}));
+             aligned_box({x0 - t, -y - t, kStairsLowerFloorZ}, {x0, y + t, 0}));
   add_object(scene, "stairwell_wall_end",
-             aligned_box({x1, -y - t, kLowerFloorZ}, {x1 + t, y + t, 0}));
-  add_object(scene, "stairwell_wall_left", aligned_box({x0, y, kLowerFloorZ}, {x1, y + t, 0}));
-  add_object(scene, "stairwell_wall_right", aligned_box({x0, -y - t, kLowerFloorZ}, {x1, -y, 0}));
+             aligned_box({x1, -y - t, kStairsLowerFloorZ}, {x1 + t, y + t, 0}));
+  add_object(scene, "stairwell_wall_left",
+             aligned_box({x0, y, kStairsLowerFloorZ}, {x1, y + t, 0}));
+  add_object(scene, "stairwell_wall_right",
+             aligned_box({x0, -y - t, kStairsLowerFloorZ}, {x1, -y, 0}));
 }
 
 void add_pit(model::Scene& scene) {
@@ -81,7 +84,7 @@ model::Scene make_stairs_scene() {
   const Rect2 stairwell{{kStairwellStartX, -kStairwellHalfWidth},
                         {kStairwellStartX + kStairwellLength, kStairwellHalfWidth}};
   add_object(scene, "floor", floor_with_openings(kFloor, {stairwell, kPit}, 0));
-  add_stairwell(scene);
+  add_stairs_stairwell(scene);
   add_pit(scene);
   return scene;
 }

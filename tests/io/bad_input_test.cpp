@@ -14,13 +14,13 @@ namespace {
 struct BadCase {
   const char* name;
   const char* file;  // "sensors.yaml", "rig.yaml" or "req.yaml"
-  std::string from;  // text replaced in the valid fixture
+  std::string from;  // text input_replaced in the valid fixture
   std::string to;
   std::string field;        // field path the message must name
   std::string line_marker;  // text on the line the message must point at
 };
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
+std::string input_replaced(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
   REQUIRE(at != std::string::npos);
   return text.replace(at, from.size(), to);
@@ -98,11 +98,11 @@ TEST_CASE("bad input: exit 2 with file:line:col and the field") {
     DYNAMIC_SECTION(bad.name) {
       TempFolder folder;
       const std::string library =
-          bad.file == std::string("sensors.yaml") ? replaced(kLibrary, bad.from, bad.to) : kLibrary;
+          bad.file == std::string("sensors.yaml") ? input_replaced(kLibrary, bad.from, bad.to) : kLibrary;
       const std::string rig_text =
-          bad.file == std::string("rig.yaml") ? replaced(kRig, bad.from, bad.to) : kRig;
+          bad.file == std::string("rig.yaml") ? input_replaced(kRig, bad.from, bad.to) : kRig;
       const std::string requirements = bad.file == std::string("req.yaml")
-                                           ? replaced(kRequirements, bad.from, bad.to)
+                                           ? input_replaced(kRequirements, bad.from, bad.to)
                                            : kRequirements;
       folder.write("sensors.yaml", library);
       folder.write("req.yaml", requirements);
@@ -140,7 +140,7 @@ TEST_CASE("a mount id that is not a ROS name is refused with file:line:col") {
       TempFolder folder;
       folder.write("sensors.yaml", kLibrary);
       folder.write("req.yaml", kRequirements);
-      const std::string text = replaced(kRig, "id: front", "id: " + id);
+      const std::string text = input_replaced(kRig, "id: front", "id: " + id);
       const std::string rig = folder.write("rig.yaml", text);
       // The value's line and column, found in the text written (1-based).
       const int line = line_of(text, "id: " + id);
@@ -164,7 +164,7 @@ TEST_CASE("a mount id that is not a ROS name is refused with file:line:col") {
   folder.write("sensors.yaml", kLibrary);
   folder.write("req.yaml", kRequirements);
   const std::string rig =
-      folder.write("rig.yaml", replaced(kRig, "id: front", "id: \"fr\\u0001ont\""));
+      folder.write("rig.yaml", input_replaced(kRig, "id: front", "id: \"fr\\u0001ont\""));
   const CliResult junit = run_cli({"check", rig, "--format", "junit"});
   CHECK(junit.exit_code == 2);
   CHECK(junit.out.find('\x01') == std::string::npos);
@@ -177,7 +177,7 @@ TEST_CASE("rpy_deg that looks like radians is a warning naming file:line:col") {
   TempFolder folder;
   folder.write("sensors.yaml", kLibrary);
   folder.write("req.yaml", kRequirements);
-  const std::string text = replaced(kRig, "rpy_deg: [0, 20, 0]", "rpy_deg: [0, 0.35, 0]");
+  const std::string text = input_replaced(kRig, "rpy_deg: [0, 20, 0]", "rpy_deg: [0, 0.35, 0]");
   const std::string rig = folder.write("rig.yaml", text);
   const int line = line_of(text, "rpy_deg: [0, 0.35, 0]");
   REQUIRE(line > 0);
@@ -191,7 +191,7 @@ TEST_CASE("rpy_deg that looks like radians is a warning naming file:line:col") {
   CHECK(metrics.out.find("20.05") != std::string::npos);  // 0.35 rad in degrees
   // Whole degrees, or any angle beyond pi, read as meant.
   const std::string whole =
-      folder.write("whole.yaml", replaced(kRig, "rpy_deg: [0, 20, 0]", "rpy_deg: [0, 2.5, 90]"));
+      folder.write("whole.yaml", input_replaced(kRig, "rpy_deg: [0, 20, 0]", "rpy_deg: [0, 2.5, 90]"));
   CHECK(run_cli({"metrics", whole}).out.find("looks like radians") == std::string::npos);
 }
 
@@ -258,7 +258,7 @@ TEST_CASE("a sector of +-0.52 looks like radians: a warning at the sector") {
   TempFolder folder;
   folder.write("sensors.yaml", kLibrary);
   const std::string requirements =
-      replaced(kRequirements, "from_deg: -45, to_deg: 45", "from_deg: -0.52, to_deg: 0.52");
+      input_replaced(kRequirements, "from_deg: -45, to_deg: 45", "from_deg: -0.52, to_deg: 0.52");
   folder.write("req.yaml", requirements);
   const std::string rig = folder.write("rig.yaml", kRig);
   const CliResult result = run_cli({"metrics", rig});
@@ -284,24 +284,24 @@ TEST_CASE("a URDF origin in degrees is refused at its line; near-miss links and 
                            "</robot>\n";
   folder.write("r.urdf", urdf);
   const std::string with_urdf =
-      replaced(kRig, "distance_of_interest: 3.0", "urdf: {file: r.urdf}\ndistance_of_interest: 3.0");
+      input_replaced(kRig, "distance_of_interest: 3.0", "urdf: {file: r.urdf}\ndistance_of_interest: 3.0");
   const CliResult degrees = run_cli({"metrics", folder.write("deg.yaml", with_urdf)});
   INFO(degrees.out << degrees.err);
   CHECK(degrees.exit_code == 2);
   CHECK(degrees.err.find(folder.path() + "/r.urdf:6:") != std::string::npos);
   CHECK(degrees.err.find("looks like degrees") != std::string::npos);
   // The same joint in radians; a mount naming the link without its suffix is pointed at it.
-  folder.write("r.urdf", replaced(urdf, "rpy=\"0 0 90\"", "rpy=\"0 0 1.5707963267948966\""));
+  folder.write("r.urdf", input_replaced(urdf, "rpy=\"0 0 90\"", "rpy=\"0 0 1.5707963267948966\""));
   const CliResult near_link = run_cli(
       {"metrics", folder.write("near.yaml",
-                               replaced(with_urdf, "pose: {xyz: [0.41, 0.0, 0.5], rpy_deg: [0, 20, 0]}",
+                               input_replaced(with_urdf, "pose: {xyz: [0.41, 0.0, 0.5], rpy_deg: [0, 20, 0]}",
                                         "pose: {urdf_link: cam}"))});
   CHECK(near_link.exit_code == 2);
   CHECK(near_link.err.find("no link 'cam' in the URDF (did you mean 'cam_link'?)") !=
         std::string::npos);
   // A sensor id with a letter doubled.
   const CliResult near_sensor =
-      run_cli({"metrics", folder.write("sensor.yaml", replaced(kRig, "sensor: spin", "sensor: spinn"))});
+      run_cli({"metrics", folder.write("sensor.yaml", input_replaced(kRig, "sensor: spin", "sensor: spinn"))});
   CHECK(near_sensor.exit_code == 2);
   CHECK(near_sensor.err.find("unknown sensor 'spinn'") != std::string::npos);
   CHECK(near_sensor.err.find("(did you mean 'spin'?)") != std::string::npos);
@@ -350,7 +350,7 @@ TEST_CASE("a package found in two package_paths folders is a warning naming both
                "<?xml version=\"1.0\"?>\n<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
                "  <link name=\"base_footprint\"/>\n"
                "  <xacro:include filename=\"$(find tiny)/urdf/part.xacro\"/>\n</robot>\n");
-  const std::string rig = replaced(
+  const std::string rig = input_replaced(
       kRig, "distance_of_interest: 3.0",
       "robot: {description: robot.urdf.xacro, package_paths: [first, second], expander: builtin}\n"
       "distance_of_interest: 3.0");

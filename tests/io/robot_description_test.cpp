@@ -17,7 +17,7 @@ using Catch::Matchers::WithinAbs;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kDescriptionPi = std::numbers::pi;
 
 model::RobotDescription load(const std::string& description,
                              std::map<std::string, std::string> environment = {}) {
@@ -48,7 +48,8 @@ TEST_CASE("TurtleBot 4: link poses from the xacro text") {
   check_translation(robot, "base_link", "shell_link", {0, 0, shell_z});
   // rplidar_link on shell_link (:114-116): xyz (-4 cm, 0, 9.8715 cm) (:31-33), yaw pi/2.
   check_translation(robot, "base_link", "rplidar_link", {-0.04, 0, shell_z + 0.098715});
-  const model::Mat3 yaw = Eigen::AngleAxisd(kPi / 2, model::Vec3::UnitZ()).toRotationMatrix();
+  const model::Mat3 yaw =
+      Eigen::AngleAxisd(kDescriptionPi / 2, model::Vec3::UnitZ()).toRotationMatrix();
   CHECK(robot.T_base("base_link", "rplidar_link")->linear().isApprox(yaw, 1e-12));
   // oakd_camera_bracket on shell_link (:119-121, camera_bracket's default parent): (-11.8 cm,
   // 0, 5.257 cm) (:35-37); oakd_link on it (:123-125): (5.84 cm, 0, 9.676 cm) (:39-41); the

@@ -46,13 +46,18 @@ sensors:
 
 std::string covisibility_rig(const std::string& mounts) {
   return "name: covisibility case\nbody: {radius: 0.2, height: 0.3}\narea_height: 0.5\n"
-         "distance_of_interest: 2.0\nmounts:\n" + mounts;
+         "distance_of_interest: 2.0\nmounts:\n" +
+         mounts;
 }
 
-const std::string kFull = "  - {id: a, sensor: scan, mode: full, pose: {xyz: [0, 0, 0.4], rpy_deg: [0, 0, 0]}}\n";
-const std::string kFullToo = "  - {id: b, sensor: scan, mode: full, pose: {xyz: [0, 0, 0.45], rpy_deg: [0, 0, 0]}}\n";
-const std::string kHalf = "  - {id: c, sensor: scan, mode: half, pose: {xyz: [0, 0, 0.35], rpy_deg: [0, 0, 0]}}\n";
-const std::string kAbove = "  - {id: e, sensor: scan, mode: full, pose: {xyz: [0, 0, 0.6], rpy_deg: [0, 0, 0]}}\n";
+const std::string kFull =
+    "  - {id: a, sensor: scan, mode: full, pose: {xyz: [0, 0, 0.4], rpy_deg: [0, 0, 0]}}\n";
+const std::string kFullToo =
+    "  - {id: b, sensor: scan, mode: full, pose: {xyz: [0, 0, 0.45], rpy_deg: [0, 0, 0]}}\n";
+const std::string kHalf =
+    "  - {id: c, sensor: scan, mode: half, pose: {xyz: [0, 0, 0.35], rpy_deg: [0, 0, 0]}}\n";
+const std::string kAbove =
+    "  - {id: e, sensor: scan, mode: full, pose: {xyz: [0, 0, 0.6], rpy_deg: [0, 0, 0]}}\n";
 
 }  // namespace
 
@@ -86,7 +91,8 @@ TEST_CASE("covisibility: shared columns of two scanners, by hand", "[metrics][co
   CHECK(connected.explanation.find("cut off from the rest: e") != std::string::npos);
   // Without e every pair shares more than 1 m^2: `pairs: all` passes, and fails above the
   // half scanner's share.
-  const model::Rig three = io::load_rig(folder.write("three.yaml", covisibility_rig(kFull + kFullToo + kHalf)));
+  const model::Rig three =
+      io::load_rig(folder.write("three.yaml", covisibility_rig(kFull + kFullToo + kHalf)));
   const metrics::Covisibility three_overlap = metrics::covisibility(three, library, 2.0);
   needed.all_pairs = true;
   CHECK(metrics::calibration_verdict(three, needed, three_overlap).verdict ==
@@ -102,19 +108,23 @@ TEST_CASE("calibration: a rear lidar sharing nothing with the front cameras fail
   // Two D435 looking ahead and a TiM571 (270 deg) looking back from the rear edge: its edges
   // at +-135 deg from behind diverge from the cameras' +-43.5 deg (87 deg FOV) ahead.
   test::TempFolder folder;
-  const model::SensorLibrary library =
-      io::load_sensor_library(test::source_path("sensors.yaml"));
+  const model::SensorLibrary library = io::load_sensor_library(test::source_path("sensors.yaml"));
   const std::string cameras =
-      "  - {id: cam_left, sensor: realsense_d435, mode: z16_848x480_30, pose: {xyz: [0.21, 0.05, 0.3], rpy_deg: [0, 15, 0]}}\n"
-      "  - {id: cam_right, sensor: realsense_d435, mode: z16_848x480_30, pose: {xyz: [0.21, -0.05, 0.3], rpy_deg: [0, 15, 0]}}\n";
+      "  - {id: cam_left, sensor: realsense_d435, mode: z16_848x480_30, pose: {xyz: [0.21, 0.05, "
+      "0.3], rpy_deg: [0, 15, 0]}}\n"
+      "  - {id: cam_right, sensor: realsense_d435, mode: z16_848x480_30, pose: {xyz: [0.21, -0.05, "
+      "0.3], rpy_deg: [0, 15, 0]}}\n";
   const std::string rear =
-      "  - {id: rear_lidar, sensor: sick_tim571, mode: 0.33deg_15hz, pose: {xyz: [-0.21, 0, 0.2], rpy_deg: [0, 0, 180]}}\n";
+      "  - {id: rear_lidar, sensor: sick_tim571, mode: 0.33deg_15hz, pose: {xyz: [-0.21, 0, 0.2], "
+      "rpy_deg: [0, 0, 180]}}\n";
   const std::string front =
-      "  - {id: front_lidar, sensor: sick_tim571, mode: 0.33deg_15hz, pose: {xyz: [0.21, 0, 0.2], rpy_deg: [0, 0, 0]}}\n";
+      "  - {id: front_lidar, sensor: sick_tim571, mode: 0.33deg_15hz, pose: {xyz: [0.21, 0, 0.2], "
+      "rpy_deg: [0, 0, 0]}}\n";
   const auto rig_with = [&](const std::string& name, const std::string& lidar) {
-    return io::load_rig(folder.write(
-        name, "name: calibration case\nbody: {radius: 0.2, height: 0.5}\n"
-              "distance_of_interest: 3.0\nmounts:\n" + cameras + lidar));
+    return io::load_rig(folder.write(name,
+                                     "name: calibration case\nbody: {radius: 0.2, height: 0.5}\n"
+                                     "distance_of_interest: 3.0\nmounts:\n" +
+                                         cameras + lidar));
   };
   model::CalibrationRequirement needed;
   needed.min_overlap = 0.5;

@@ -20,10 +20,11 @@ namespace {
 std::string pair_rig(const std::string& left, const std::string& right) {
   return "name: crosstalk case\nbody: {radius: 0.2, height: 0.5}\ndistance_of_interest: 3.0\n"
          "mounts:\n"
-         "  - id: left\n" + left +
+         "  - id: left\n" +
+         left +
          "    pose: {xyz: [0.21, 0.1, 0.4], rpy_deg: [0, 20, 0]}\n"
-         "  - id: right\n" + right +
-         "    pose: {xyz: [0.21, -0.1, 0.4], rpy_deg: [0, 20, 0]}\n";
+         "  - id: right\n" +
+         right + "    pose: {xyz: [0.21, -0.1, 0.4], rpy_deg: [0, 20, 0]}\n";
 }
 
 const std::string kAzure = "    sensor: azure_kinect_dk\n    mode: nfov_unbinned_30\n";

@@ -5,13 +5,13 @@
 // past d). With +-5 mm in x and z and +-1 deg of pitch the floor edge is farthest at x + 5 mm,
 // z + 5 mm, pitch - 1 deg.
 #include "rigdesign/metrics/tolerance_coverage.hpp"
-#include "rigdesign/metrics/tolerance_verdicts.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
+#include "rigdesign/metrics/tolerance_verdicts.hpp"
 #include "rigdesign/model/units.hpp"
 #include "support/fixture_files.hpp"
 #include "support/temp_folder.hpp"
@@ -66,8 +66,7 @@ TEST_CASE("tolerance: the floor edge at the box's worst corner, by hand", "[metr
   CHECK_FALSE(result[0].pass);
   CHECK(result[0].margin() == Approx(worst - 0.64).margin(1e-6));
   // check's verdict: R2 fails on the floor and points at the rig's tolerance line (line 4).
-  const std::vector<metrics::RequirementResult> verdicts =
-      metrics::tolerance_verdicts(rig, result);
+  const std::vector<metrics::RequirementResult> verdicts = metrics::tolerance_verdicts(rig, result);
   REQUIRE(verdicts.size() == 1);
   CHECK(verdicts[0].id == "R2");
   CHECK(verdicts[0].metric == "SC floor");
@@ -87,8 +86,8 @@ TEST_CASE("tolerance: the box's corners and face centres, axes of zero width lef
   CHECK(metrics::tolerance_samples(tolerance).size() == 2);  // one axis: -w and +w
   // A pitch error turns about the sensor's own y axis: a level camera pitched +1 deg looks
   // 1 deg down (its x axis gains -sin(1 deg) in z).
-  const model::Pose3 turned = metrics::with_error(model::Pose3::Identity(),
-                                                  {model::Vec3::Zero(), tolerance.rpy});
+  const model::Pose3 turned =
+      metrics::with_error(model::Pose3::Identity(), {model::Vec3::Zero(), tolerance.rpy});
   CHECK(turned.linear().col(0).z() == Approx(-std::sin(model::deg_to_rad(1.0))));
 }
 

@@ -4,8 +4,8 @@
 // +-1 deg box (a fixed seed) and a whole compute_coverage of the moved rig gives each sector's
 // minima; the reported worst must be realised by its own errors and no random point may fall
 // below it by more than the bound docs/tolerance.md states.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <random>
 
 #include "rigdesign/io/config/requirements_loader.hpp"
@@ -58,15 +58,15 @@ TEST_CASE("tolerance: the reported worst case against brute-force sampling of th
       const auto& found = *std::find_if(
           moved.sectors.begin(), moved.sectors.end(),
           [&](const metrics::SectorCoverage& s) { return s.sector.name == sector.sector.name; });
-      CHECK(worst.share ==
-            Approx(metrics::judged_share(floor ? found.floor.min : found.complete.min))
-                .margin(1e-9));
+      CHECK(
+          worst.share ==
+          Approx(metrics::judged_share(floor ? found.floor.min : found.complete.min)).margin(1e-9));
     }
   }
 
   // Random joint errors: none below the reported worst by more than the stated bound.
   constexpr double kBound = 0.002;  // docs/tolerance.md: measured gap 0.0 on this rig
-  std::mt19937 random(38);  // fixed before any run
+  std::mt19937 random(38);          // fixed before any run
   double largest_gap = 0.0;
   int lowered = 0;
   for (int sample = 0; sample < 24; ++sample) {
@@ -84,8 +84,8 @@ TEST_CASE("tolerance: the reported worst case against brute-force sampling of th
     for (std::size_t s = 0; s < sectors.size(); ++s) {
       const double complete = metrics::judged_share(moved.sectors[s].complete.min);
       const double floor = metrics::judged_share(moved.sectors[s].floor.min);
-      largest_gap = std::max({largest_gap, reported[s].complete.share - complete,
-                              reported[s].floor.share - floor});
+      largest_gap = std::max(
+          {largest_gap, reported[s].complete.share - complete, reported[s].floor.share - floor});
       lowered += complete < reported[s].nominal_complete || floor < reported[s].nominal_floor;
     }
   }

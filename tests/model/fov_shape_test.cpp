@@ -16,12 +16,12 @@ using namespace rigdesign;
 
 namespace {
 
-constexpr double kPi = 3.141592653589793;
+constexpr double kFovPi = 3.141592653589793;
 
 std::vector<std::shared_ptr<const model::FovShape>> every_shape() {
   return {model::pyramid_fov(model::deg_to_rad(87), model::deg_to_rad(58)),
           model::cone_fov(model::deg_to_rad(90)),
-          model::band_fov(2 * kPi, model::deg_to_rad(-15), model::deg_to_rad(15)),
+          model::band_fov(2 * kFovPi, model::deg_to_rad(-15), model::deg_to_rad(15)),
           model::band_fov(model::deg_to_rad(120), model::deg_to_rad(-30), model::deg_to_rad(60)),
           model::planar_fov(model::deg_to_rad(270), model::deg_to_rad(1))};
 }
@@ -54,21 +54,22 @@ TEST_CASE("FOV shapes: the steepest ray down, by hand", "[model]") {
   const model::Mat3 level = model::Mat3::Identity();
   // A level 60 x 40 frustum: along its bottom face z = -x tan 20, the normalised z is
   // tan 20 / sqrt(1 + tan^2 u + tan^2 20), steepest at u = 0: sin 20 deg (not a corner).
-  CHECK(model::pyramid_fov(kPi / 3, 2 * kPi / 9)->steepest_down(level) ==
-        Approx(std::sin(kPi / 9)).epsilon(1e-12));
+  CHECK(model::pyramid_fov(kFovPi / 3, 2 * kFovPi / 9)->steepest_down(level) ==
+        Approx(std::sin(kFovPi / 9)).epsilon(1e-12));
   // Rolled 90 deg, its 60 deg side points down: sin 30 deg.
-  CHECK(model::pyramid_fov(kPi / 3, 2 * kPi / 9)
-            ->steepest_down(model::rotation_from_rpy(kPi / 2, 0, 0)) == Approx(0.5).epsilon(1e-12));
+  CHECK(model::pyramid_fov(kFovPi / 3, 2 * kFovPi / 9)
+            ->steepest_down(model::rotation_from_rpy(kFovPi / 2, 0, 0)) ==
+        Approx(0.5).epsilon(1e-12));
   // A band's lowest beam: sin 15 deg below the plane.
-  CHECK(model::band_fov(2 * kPi, -kPi / 12, kPi / 12)->steepest_down(level) ==
-        Approx(std::sin(kPi / 12)).epsilon(1e-12));
+  CHECK(model::band_fov(2 * kFovPi, -kFovPi / 12, kFovPi / 12)->steepest_down(level) ==
+        Approx(std::sin(kFovPi / 12)).epsilon(1e-12));
   // A 90 deg cone pitched 10 deg down reaches 55 deg below the horizon.
   const model::Mat3 pitched = model::rotation_from_rpy(0, model::deg_to_rad(10), 0);
-  CHECK(model::cone_fov(kPi / 2)->steepest_down(pitched) ==
+  CHECK(model::cone_fov(kFovPi / 2)->steepest_down(pitched) ==
         Approx(std::sin(model::deg_to_rad(55))).epsilon(1e-12));
   // A camera looking up has no ray pointing down.
-  const model::Mat3 up = model::rotation_from_rpy(0, -kPi / 2, 0);
-  CHECK(model::pyramid_fov(kPi / 3, kPi / 4)->steepest_down(up) < 0.0);
+  const model::Mat3 up = model::rotation_from_rpy(0, -kFovPi / 2, 0);
+  CHECK(model::pyramid_fov(kFovPi / 3, kFovPi / 4)->steepest_down(up) < 0.0);
 }
 
 TEST_CASE("FOV shapes: directions of the domain lie inside, crossings bound the pieces",

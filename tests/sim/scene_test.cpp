@@ -21,7 +21,7 @@ bool is_floor_plane(const std::string& name) {
   return name == "floor" || name == "lower_floor";
 }
 
-const model::SceneObject& object_named(const model::Scene& scene, const std::string& name) {
+const model::SceneObject& scene_object_named(const model::Scene& scene, const std::string& name) {
   for (const model::SceneObject& object : scene.objects) {
     if (object.name == name) return object;
   }
@@ -29,12 +29,12 @@ const model::SceneObject& object_named(const model::Scene& scene, const std::str
   throw std::logic_error("unreachable");
 }
 
-bool contains(const std::string& text, const std::string& part) {
+bool scene_contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
 // Volume enclosed by a closed mesh (divergence theorem): positive iff normals point out.
-double signed_volume(const model::TriangleMesh& mesh) {
+double scene_signed_volume(const model::TriangleMesh& mesh) {
   double six_volume = 0;
   for (const auto& t : mesh.triangles) {
     const model::Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
@@ -134,7 +134,7 @@ TEST_CASE("every named scene builds with triangles") {
     const model::Scene scene = sim::make_scene(name, 1);
     CHECK(scene.name == name);
     CHECK_FALSE(scene.at(0).triangles.empty());
-    CHECK(object_named(scene, "floor").mesh.triangles.size() >= 2);
+    CHECK(scene_object_named(scene, "floor").mesh.triangles.size() >= 2);
   }
   CHECK_THROWS_AS(sim::make_scene("kitchen", 1), std::invalid_argument);
 }
@@ -145,8 +145,8 @@ TEST_CASE("scenes are deterministic for a seed; the office's furniture follows t
   }
   const model::Scene seven = sim::make_scene("office", 7);
   const model::Scene eight = sim::make_scene("office", 8);
-  CHECK(vertex_centroid(object_named(seven, "table_1_top").mesh) !=
-        vertex_centroid(object_named(eight, "table_1_top").mesh));
+  CHECK(vertex_centroid(scene_object_named(seven, "table_1_top").mesh) !=
+        vertex_centroid(scene_object_named(eight, "table_1_top").mesh));
 }
 
 TEST_CASE("closed solids have outward normals and their true volume") {
@@ -156,19 +156,20 @@ TEST_CASE("closed solids have outward normals and their true volume") {
       if (is_floor_plane(object.name)) continue;
       INFO(name << ": " << object.name);
       CHECK(watertight(object.mesh));
-      CHECK(signed_volume(object.mesh) > 0);
+      CHECK(scene_signed_volume(object.mesh) > 0);
     }
     for (const model::MovingObject& object : scene.moving) {
       INFO(name << ": " << object.name);
       CHECK(watertight(object.mesh));
-      CHECK(signed_volume(object.mesh) > 0);
+      CHECK(scene_signed_volume(object.mesh) > 0);
     }
   }
   // Boxes of known size: the cell's 0.8 x 0.6 x 1 m plate, the 1.2 x 0.45 x 0.06 m foam.
-  CHECK(signed_volume(object_named(sim::make_scene("cell", 0), "plate").mesh) ==
+  CHECK(scene_signed_volume(scene_object_named(sim::make_scene("cell", 0), "plate").mesh) ==
         Approx(0.8 * 0.6 * 1.0));
-  CHECK(signed_volume(object_named(sim::make_scene("wall_following", 0), "foam").mesh) ==
-        Approx(1.2 * 0.45 * 0.06));
+  CHECK(
+      scene_signed_volume(scene_object_named(sim::make_scene("wall_following", 0), "foam").mesh) ==
+      Approx(1.2 * 0.45 * 0.06));
 }
 
 TEST_CASE("office chairs stand on thin legs and a cable hangs to the floor") {
@@ -177,13 +178,13 @@ TEST_CASE("office chairs stand on thin legs and a cable hangs to the floor") {
     INFO("seed " << seed);
     int chair_legs = 0;
     for (const model::SceneObject& object : office.objects) {
-      if (!contains(object.name, "chair") || !contains(object.name, "_leg_")) continue;
+      if (!scene_contains(object.name, "chair") || !scene_contains(object.name, "_leg_")) continue;
       ++chair_legs;
       CHECK(horizontal_thickness(object.mesh) <= 0.03);
       CHECK(bounds(object.mesh).sizes().z() <= 0.03);
     }
     CHECK(chair_legs >= 3 * 5);  // at least 3 chairs with a five-star base each
-    const Eigen::AlignedBox3d cable = bounds(object_named(office, "cable").mesh);
+    const Eigen::AlignedBox3d cable = bounds(scene_object_named(office, "cable").mesh);
     // Its end rests on the floor: the cord's 5 mm radius above it at most, never below.
     CHECK(cable.min().z() >= 0);
     CHECK(cable.min().z() < 0.005);
@@ -200,7 +201,7 @@ TEST_CASE("office chairs stand on thin legs and a cable hangs to the floor") {
       INFO(object.name);
       CHECK(footprint.exteriorDistance(Eigen::Vector2d(robot.head<2>())) >= 1.0);
       // Furniture stays inside the 8 x 6 m room.
-      if (!contains(object.name, "wall")) {
+      if (!scene_contains(object.name, "wall")) {
         CHECK(footprint.min().x() >= 0);
         CHECK(footprint.max().x() <= 8);
         CHECK(std::abs(footprint.min().y()) <= 3);
@@ -219,17 +220,17 @@ TEST_CASE("stairs: nothing covers the openings at floor level, and the steps go 
   CHECK_FALSE(floor_covers(stairs, pit_centre));
   CHECK(floor_covers(stairs, Eigen::Vector2d(1.0, 0.0)));  // sanity: the floor is there
   CHECK(bounds(stairs.at(0)).min().z() < -0.5);
-  CHECK(bounds(object_named(stairs, "lower_floor").mesh).min().z() == Approx(-1.0));
-  CHECK(bounds(object_named(stairs, "pit_bottom").mesh).max().z() == Approx(-0.5));
+  CHECK(bounds(scene_object_named(stairs, "lower_floor").mesh).min().z() == Approx(-1.0));
+  CHECK(bounds(scene_object_named(stairs, "pit_bottom").mesh).max().z() == Approx(-0.5));
 }
 
 TEST_CASE("wall following: the foam top overhangs its legs into the path, low down") {
   const model::Scene scene = sim::make_scene("wall_following", 0);
-  const Eigen::AlignedBox3d foam = bounds(object_named(scene, "foam").mesh);
+  const Eigen::AlignedBox3d foam = bounds(scene_object_named(scene, "foam").mesh);
   double legs_path_side = std::numeric_limits<double>::infinity();
   int legs = 0;
   for (const model::SceneObject& object : scene.objects) {
-    if (!contains(object.name, "table_leg")) continue;
+    if (!scene_contains(object.name, "table_leg")) continue;
     ++legs;
     legs_path_side = std::min(legs_path_side, bounds(object.mesh).min().y());
   }

@@ -1,9 +1,10 @@
 #pragma once
 /// R9, calibration overlap (issue 38, item 3): target-free extrinsic calibration registers
 /// structure two sensors both see, so every pair whose shared columns (column_area of
-/// metrics/covisibility.hpp: an upright target standing there is seen by both) reach the requirement's min_overlap is an edge of a graph over the mounts; the rig passes
-/// when that graph is connected (every sensor calibrated to every other through a chain of
-/// pairs) or, with `pairs: all`, complete. A failure names the sensors cut off.
+/// metrics/covisibility.hpp: an upright target standing there is seen by both) reach the
+/// requirement's min_overlap is an edge of a graph over the mounts; the rig passes when that graph
+/// is connected (every sensor calibrated to every other through a chain of pairs) or, with `pairs:
+/// all`, complete. A failure names the sensors cut off.
 #include <vector>
 
 #include "rigdesign/metrics/covisibility.hpp"

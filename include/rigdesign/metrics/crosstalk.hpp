@@ -25,8 +25,8 @@ namespace rigdesign::metrics {
 inline constexpr double kFilterPassband = 50e-9;
 
 struct CrosstalkFindings {
-  std::vector<RequirementResult> verdicts;     ///< D5, one per judged pair
-  std::vector<model::Diagnostic> warnings;     ///< pairs whose vendors say nothing
+  std::vector<RequirementResult> verdicts;  ///< D5, one per judged pair
+  std::vector<model::Diagnostic> warnings;  ///< pairs whose vendors say nothing
 };
 
 /// `overlap` must be covisibility() of the same rig.

@@ -10,6 +10,7 @@
 
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/mount_metrics.hpp"
+#include "rigdesign/metrics/tolerance_coverage.hpp"
 #include "rigdesign/model/catalog.hpp"
 #include "rigdesign/model/requirements.hpp"
 #include "rigdesign/select/phase_progress.hpp"
@@ -37,8 +38,8 @@ struct CatalogOption {
   std::size_t pose = 0;  ///< index into the slot's poses
   const model::Sensor* sensor = nullptr;
   const model::SensorMode* mode = nullptr;
-  metrics::MountMetrics metrics;                  ///< at the slot's distance of interest
-  double filtering = 0.0;                         ///< U_f [core-equivalents]
+  metrics::MountMetrics metrics;  ///< at the slot's distance of interest
+  double filtering = 0.0;         ///< U_f [core-equivalents]
   std::shared_ptr<const std::vector<geometry::SectionRaster>> sections;  ///< per angle of the space
 };
 
@@ -47,14 +48,23 @@ struct CatalogOption {
 std::size_t count_catalog_options(const model::Catalog& catalog);
 
 /// Every option of a catalog rasterised once; searches for different requirements reuse it.
+/// With a mounting tolerance (issue 38: `select --tolerance`) an option's raster keeps only
+/// the cells it sees at its nominal pose and at every sample of the tolerance box
+/// (metrics::tolerance_samples): a union of such rasters is seen wherever in their boxes the
+/// mounts sit (at the samples), so a rig the search accepts meets the sectors over the box,
+/// and the search's leximin tie-break prefers the poses whose worst case keeps the largest
+/// margins. Options are rasterised on every core.
 class SelectionSpace {
  public:
   SelectionSpace(const model::Catalog& catalog, const model::SensorLibrary& library,
-                 const metrics::CoverageSettings& settings = {});
+                 const metrics::CoverageSettings& settings = {},
+                 const std::optional<model::PoseTolerance>& tolerance = {});
 
   const model::Catalog& catalog() const { return *catalog_; }
   const model::SensorLibrary& library() const { return *library_; }
   const metrics::CoverageSettings& settings() const { return settings_; }
+  /// The tolerance every option is rasterised over; nothing: the nominal poses.
+  const std::optional<model::PoseTolerance>& tolerance() const { return tolerance_; }
   const std::vector<geometry::RasterGrid>& grids() const { return grids_; }
   std::size_t option_count() const;
   /// Every option, per slot (before any requirement filters them).
@@ -74,6 +84,7 @@ class SelectionSpace {
   const model::Catalog* catalog_;
   const model::SensorLibrary* library_;
   metrics::CoverageSettings settings_;
+  std::optional<model::PoseTolerance> tolerance_;
   std::vector<geometry::RasterGrid> grids_;
   std::vector<std::vector<CatalogOption>> options_;  // per slot
 };
@@ -95,18 +106,18 @@ struct RefinedAxis {
 };
 
 struct PoseRefinement {
-  bool tried = false;     ///< some chosen slot has a pose range
-  bool accepted = false;  ///< the exact path confirms the refined rig
+  bool tried = false;           ///< some chosen slot has a pose range
+  bool accepted = false;        ///< the exact path confirms the refined rig
   double grid_margin = 0.0;     ///< smallest raster margin of the grid optimum [share]
   double refined_margin = 0.0;  ///< of the refined poses
   /// The margins compared include each after-failure margin (robustness asked).
   bool counts_failures = false;
-  int evaluations = 0;          ///< rigs rasterised by the compass search
+  int evaluations = 0;  ///< rigs rasterised by the compass search
   std::vector<RefinedAxis> axes;
   std::vector<std::array<double, 6>> values;  ///< per mount: its pose values after refinement
-  model::Rig rig;  ///< the refined rig
-  metrics::RigCoverage coverage;        ///< its exact path
-  std::vector<FailureImpact> failures;  ///< with robustness: its failures on the exact path
+  model::Rig rig;                             ///< the refined rig
+  metrics::RigCoverage coverage;              ///< its exact path
+  std::vector<FailureImpact> failures;        ///< with robustness: its failures on the exact path
 };
 
 struct Selection {
@@ -115,8 +126,10 @@ struct Selection {
   model::Rig rig;
   std::vector<const CatalogOption*> chosen;
   CostBreakdown cost;
-  SearchResult search;             ///< of the last (accepted) search
-  metrics::RigCoverage coverage;   ///< the winner on the exact path
+  SearchResult search;            ///< of the last (accepted) search
+  metrics::RigCoverage coverage;  ///< the winner on the exact path
+  /// With a tolerance: each sector over the box on the exact path (all met).
+  std::vector<metrics::SectorTolerance> tolerance;
   int rejected_by_exact_path = 0;  ///< raster winners the exact path turned down
   double seconds = 0.0;
   /// With robustness: each failure of the chosen rig (all survived), and the cheapest rig's

@@ -19,9 +19,9 @@
 #include "rigdesign/io/self_filters/self_filters_reader.hpp"
 #include "rigdesign/metrics/coverage_findings.hpp"
 #include "rigdesign/metrics/pair_findings.hpp"
+#include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/metrics/tolerance_coverage.hpp"
 #include "rigdesign/metrics/tolerance_verdicts.hpp"
-#include "rigdesign/metrics/resultant.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -141,8 +141,8 @@ void judge_rig(const RigInputs& inputs, const std::optional<deploy::DeployedConf
   }
   // Issue 38: each sector again over the mounts' tolerance boxes, when the rig gives any.
   step = Clock::now();
-  const std::vector<metrics::SectorTolerance> tolerance = metrics::tolerance_coverage(
-      inputs.rig, inputs.library, inputs.requirements->sectors);
+  const std::vector<metrics::SectorTolerance> tolerance =
+      metrics::tolerance_coverage(inputs.rig, inputs.library, inputs.requirements->sectors);
   const double tolerance_seconds = seconds_since(step);
   for (metrics::RequirementResult& result : metrics::tolerance_verdicts(inputs.rig, tolerance)) {
     report.results.push_back(std::move(result));

@@ -21,7 +21,7 @@ std::string mm(double metres) {
   return fixed(metres * 1000, 1);
 }
 
-std::string yes_no(bool value) {
+std::string html_yes_no(bool value) {
   return value ? "yes" : "<b class=\"fail\">no</b>";
 }
 
@@ -75,9 +75,9 @@ void metrics_table(std::ostringstream& html, const metrics::ResultantMetrics& me
          << model::xml_escaped(mount.sensor_id + " / " + mount.mode_id) << "</td><td>"
          << fixed(mount.distance, 2) << "</td><td>" << fixed(mount.frequency, 1) << "</td><td>"
          << mm(mount.point_spacing) << "</td><td>" << mm(mount.noise) << "</td><td>"
-         << yes_no(mount.light.dark) << "</td><td>" << yes_no(mount.light.indoor) << "</td><td>"
-         << yes_no(mount.light.sunlight) << "</td><td>" << fixed(mount.bandwidth / 1e6, 2)
-         << "</td><td>" << fixed(mount.driver_cpu, 2)
+         << html_yes_no(mount.light.dark) << "</td><td>" << html_yes_no(mount.light.indoor)
+         << "</td><td>" << html_yes_no(mount.light.sunlight) << "</td><td>"
+         << fixed(mount.bandwidth / 1e6, 2) << "</td><td>" << fixed(mount.driver_cpu, 2)
          << (mount.driver_cpu_basis == model::Basis::estimate ? "*" : "") << "</td><td>"
          << fixed(mount.price, 0) << (mount.price_basis == model::Basis::estimate ? "*" : "")
          << "</td></tr>\n";

@@ -61,7 +61,8 @@ std::string result_line(const metrics::RequirementResult& result) {
     }
     text += "]";
   }
-  for (const model::SourceLocation& where : result.also_where) text += " (also " + to_string(where) + ")";
+  for (const model::SourceLocation& where : result.also_where)
+    text += " (also " + to_string(where) + ")";
   if (!result.rig_where.file.empty()) text += " (requirement at " + to_string(result.where) + ")";
   return text;
 }

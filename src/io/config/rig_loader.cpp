@@ -61,7 +61,8 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
                                   "a map with sync (a group name), delay_us, channel")) {
     model::CrosstalkMitigation mitigation;
     mitigation.where = crosstalk->location();
-    mitigation.sync_group = crosstalk->text("sync", Need::optional, "a sync group's name").value_or("");
+    mitigation.sync_group =
+        crosstalk->text("sync", Need::optional, "a sync group's name").value_or("");
     if (const auto delay = crosstalk->number("delay_us", Need::optional,
                                              "the capture offset in microseconds, >= 0")) {
       crosstalk->require(*delay >= 0 && *delay <= 1e6, "delay_us", "is outside 0..1e6",
@@ -129,8 +130,8 @@ model::Rig load_rig(const std::string& path) {
     top.require(rig.distance_of_interest > rig.body.radius, "distance_of_interest",
                 "is not beyond the body radius", "d > r");
   }
-  if (auto tolerance = top.map("tolerance", Need::optional,
-                               "a map with xyz [m] and rpy_deg [deg] half-widths"))
+  if (auto tolerance =
+          top.map("tolerance", Need::optional, "a map with xyz [m] and rpy_deg [deg] half-widths"))
     rig.tolerance = io::pose_tolerance(*tolerance);
   std::set<std::string> ids;
   for (MapReader& reader : top.maps("mounts", Need::required, "a list of mounts")) {

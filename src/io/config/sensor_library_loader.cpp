@@ -171,18 +171,19 @@ std::optional<model::Emitter> read_emitter(MapReader& reader) {
   emitter.modulation = map->text("modulation", Need::required,
                                  "how the light is sent: pulsed ToF, AMCW ToF, dot pattern ...")
                            .value_or("");
-  if (const auto crosstalk = map->choice("interferes", Need::required,
-                                         {"unknown", "true", "false"})) {
+  if (const auto crosstalk =
+          map->choice("interferes", Need::required, {"unknown", "true", "false"})) {
     emitter.crosstalk = *crosstalk == 1   ? model::Crosstalk::interferes
                         : *crosstalk == 2 ? model::Crosstalk::immune
                                           : model::Crosstalk::unknown;
   }
   const YAML::Node list = map->node("mitigation");
   if (list.IsDefined() && !list.IsNull()) {
-    const bool ok = list.IsSequence() && std::all_of(list.begin(), list.end(), [](const YAML::Node& n) {
-                      return n.IsScalar() && std::find(kMitigations.begin(), kMitigations.end(),
-                                                       n.Scalar()) != kMitigations.end();
-                    });
+    const bool ok =
+        list.IsSequence() && std::all_of(list.begin(), list.end(), [](const YAML::Node& n) {
+          return n.IsScalar() && std::find(kMitigations.begin(), kMitigations.end(), n.Scalar()) !=
+                                     kMitigations.end();
+        });
     map->require(ok, "mitigation", "is not a list of known measures",
                  "a list of sync, delay, phase_lock, channels, emitter_off");
     if (ok)
@@ -192,8 +193,7 @@ std::optional<model::Emitter> read_emitter(MapReader& reader) {
     map->require(*delay > 0, "min_delay_us", "is not above 0", "microseconds, > 0");
     emitter.min_delay = *delay * 1e-6;
   }
-  emitter.source =
-      map->text("source", Need::required, "where the facts come from").value_or("");
+  emitter.source = map->text("source", Need::required, "where the facts come from").value_or("");
   map->text("note", Need::optional);
   map->reject_unknown_keys();
   return emitter;
@@ -263,7 +263,8 @@ std::vector<std::string> read_frame_names(MapReader& reader, const std::string& 
 model::RosDriver read_ros_driver(MapReader& reader) {
   model::RosDriver driver;
   driver.where = reader.location();
-  driver.source = reader.text("source", Need::required, "where the facts are recorded").value_or("");
+  driver.source =
+      reader.text("source", Need::required, "where the facts are recorded").value_or("");
   driver.note = reader.text("note", Need::optional).value_or("");
   if (reader.has("driver")) {
     reader.require(reader.text("driver", Need::required).value_or("") == "none", "driver",
@@ -275,12 +276,12 @@ model::RosDriver read_ros_driver(MapReader& reader) {
   driver.package = reader.text("package", Need::required, "the ROS 2 package").value_or("");
   driver.launch = reader.text("launch", Need::required, "the launch command").value_or("");
   for (const std::string& distro : read_frame_names(reader, "distros")) {
-    reader.require(distro == "humble" || distro == "jazzy", "distros",
-                   "names '" + distro + "'", "humble and/or jazzy");
+    reader.require(distro == "humble" || distro == "jazzy", "distros", "names '" + distro + "'",
+                   "humble and/or jazzy");
     driver.distros.push_back(distro);
   }
-  driver.topic = io::topic_name(reader, "topic", Need::required,
-                                "the data's topic, e.g. /velodyne_points");
+  driver.topic =
+      io::topic_name(reader, "topic", Need::required, "the data's topic, e.g. /velodyne_points");
   driver.message_type = reader.choice("type", Need::required,
                                       {"sensor_msgs/msg/PointCloud2", "sensor_msgs/msg/LaserScan"})
                                 .has_value()

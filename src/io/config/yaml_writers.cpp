@@ -94,6 +94,13 @@ std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library
   if (rig.body.area_height) out << "area_height: " << number(*rig.body.area_height) << '\n';
   if (!rig.body.has_parts()) write_body(out, rig.body);
   out << "distance_of_interest: " << number(rig.distance_of_interest) << '\n';
+  if (rig.tolerance) {
+    const model::PoseTolerance& t = *rig.tolerance;
+    out << "tolerance: {xyz: [" << number(t.xyz.x()) << ", " << number(t.xyz.y()) << ", "
+        << number(t.xyz.z()) << "], rpy_deg: [" << number(model::rad_to_deg(t.rpy.x())) << ", "
+        << number(model::rad_to_deg(t.rpy.y())) << ", " << number(model::rad_to_deg(t.rpy.z()))
+        << "]}\n";
+  }
   out << "mounts:\n";
   for (const model::Mount& mount : rig.mounts) {
     out << "  - id: " << yaml_quoted(mount.id) << "\n    sensor: " << yaml_quoted(mount.sensor_id)

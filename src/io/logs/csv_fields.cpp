@@ -14,13 +14,13 @@
 namespace rigdesign::io::csv {
 namespace {
 
-bool is_blank(char c) {
+bool is_csv_blank(char c) {
   return c == ' ' || c == '\t';
 }
 
 Field trimmed(const std::string& line, std::size_t begin, std::size_t end) {
-  while (begin < end && is_blank(line[begin])) ++begin;
-  while (end > begin && is_blank(line[end - 1])) --end;
+  while (begin < end && is_csv_blank(line[begin])) ++begin;
+  while (end > begin && is_csv_blank(line[end - 1])) --end;
   return {line.substr(begin, end - begin), static_cast<int>(begin) + 1};
 }
 
@@ -104,10 +104,10 @@ std::vector<Field> split_fields(const std::string& line, char separator) {
   if (separator == ' ') {
     std::size_t i = 0;
     while (i < line.size()) {
-      while (i < line.size() && is_blank(line[i])) ++i;
+      while (i < line.size() && is_csv_blank(line[i])) ++i;
       if (i == line.size()) break;
       const std::size_t start = i;
-      while (i < line.size() && !is_blank(line[i])) ++i;
+      while (i < line.size() && !is_csv_blank(line[i])) ++i;
       fields.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
     }
     return fields;

@@ -4,8 +4,8 @@
 #include <cctype>
 #include <filesystem>
 
-#include "rigdesign/io/file_bytes.hpp"
 #include "io/mesh/mesh_formats.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io {
@@ -15,7 +15,7 @@ enum class MeshFormat { ply, obj, off, unknown };
 
 constexpr const char* kReadable = "a readable .ply, .obj or .off mesh file";
 
-MeshFormat format_of(const std::string& path) {
+MeshFormat mesh_format_of(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -28,11 +28,11 @@ MeshFormat format_of(const std::string& path) {
 }  // namespace
 
 bool has_mesh_extension(const std::string& path) {
-  return format_of(path) != MeshFormat::unknown;
+  return mesh_format_of(path) != MeshFormat::unknown;
 }
 
 model::TriangleMesh load_mesh(const std::string& path) {
-  const MeshFormat format = format_of(path);
+  const MeshFormat format = mesh_format_of(path);
   if (format == MeshFormat::unknown) {
     throw model::InputError(model::Diagnostic{
         {path, 0, 0},

@@ -12,17 +12,17 @@
 namespace rigdesign::io {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kFilterPi = std::numbers::pi;
 constexpr const char* kAngle = "an angle in radians in [-pi, pi]";
 constexpr const char* kMetres = "metres";
 
 // laser_filters reads its bounds in radians; beyond a full turn either way no scan angle lies,
 // so such a value is degrees typed into a radians field (-135.1 for -2.358).
 void refuse_degrees(MapReader& params, const std::string& key, double value) {
-  params.require(std::abs(value) <= 2 * kPi, key,
+  params.require(std::abs(value) <= 2 * kFilterPi, key,
                  "looks like degrees: " + model::format_number(value, 6) + " is beyond +-2 pi",
                  std::string(kAngle) + " (" + model::format_number(value, 6) + " deg is " +
-                     model::format_number(value * kPi / 180, 4) + " rad)");
+                     model::format_number(value * kFilterPi / 180, 4) + " rad)");
 }
 
 // The mount a node filters, from its name: the longest mount id it equals or starts with
@@ -127,12 +127,13 @@ void read_laser_filter(MapReader& entry, const std::string& mount, const model::
       // drops nothing.
       if (*lower < *upper) bands.push_back({*lower, *upper});
     } else {  // keeps [lower, upper], drops the rest
-      if (*lower > -kPi) bands.push_back({-kPi, *lower});
-      if (*upper < kPi) bands.push_back({*upper, kPi});
+      if (*lower > -kFilterPi) bands.push_back({-kFilterPi, *lower});
+      if (*upper < kFilterPi) bands.push_back({*upper, kFilterPi});
     }
     filter.setting.what =
-        label + (in_place ? (bands.empty() ? " drops nothing (lower >= upper) " : " drops ")
-                          : " keeps only ") +
+        label +
+        (in_place ? (bands.empty() ? " drops nothing (lower >= upper) " : " drops ")
+                  : " keeps only ") +
         band_text(*lower, *upper);
   } else if (type == "laser_filters/LaserScanRangeFilter") {
     if (!params) return;
