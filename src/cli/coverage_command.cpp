@@ -5,12 +5,10 @@
 // display.
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <ostream>
-#include <sstream>
 
 #include "app.hpp"
 #include "command.hpp"
@@ -25,7 +23,8 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/units.hpp"
-#include "rigdesign/render/swept_plot.hpp"
+#include "sweep_files.hpp"
+#include "tolerance_figures.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -42,159 +41,12 @@ struct CoverageOptions {
   std::string sensors;
   bool raster = false;
   bool no_3d = false;
-  std::string sweep;                    // rotate or arc:R; empty: no sweep
-  std::optional<double> turn_rate_deg;  // [deg/s] rotate; default: the rim at the robot speed
-  std::optional<double> sweep_time;     // [s] default: a full turn, or d at the robot speed
+  SweepOptions sweep_options;  // --sweep (empty: no sweep), --turn-rate, --sweep-time
 };
-
-constexpr const char* kSweepForm =
-    "rotate or arc:R (R: the arc's radius [m], not 0; > 0 turns left)";
-
-// `--sweep`'s value: the motion's kind, an arc's radius and the files' name (sweep_<label>).
-struct SweepChoice {
-  metrics::SweepKind kind = metrics::SweepKind::rotate;
-  double arc_radius = 0.0;
-  std::string label;
-};
-
-std::optional<SweepChoice> parse_sweep(const std::string& text) {
-  if (text == "rotate") return SweepChoice{metrics::SweepKind::rotate, 0.0, "rotate"};
-  const std::string prefix = "arc:";
-  if (text.rfind(prefix, 0) != 0 || text.size() == prefix.size()) return std::nullopt;
-  const std::string number = text.substr(prefix.size());
-  if (number.find_first_of(" \t\n") != std::string::npos) return std::nullopt;  // strtod skips it
-  char* end = nullptr;
-  const double radius = std::strtod(number.c_str(), &end);
-  if (end != number.c_str() + number.size() || !std::isfinite(radius) || radius == 0.0)
-    return std::nullopt;
-  return SweepChoice{metrics::SweepKind::arc, radius, "arc_" + model::format_number(radius)};
-}
-
-// The motion and settings `--sweep` asks for, from the options and the requirements (R5's
-// speed and deceleration, R6's obstacle size). Checked before any work starts.
-struct SweepRequest {
-  std::string option;  // as given: rotate, arc:0.8
-  std::string label;   // in file names: rotate, arc_0.8
-  metrics::SweepMotion motion;
-  metrics::SweepSettings settings;
-};
-
-SweepRequest sweep_request(const CoverageOptions& options, const SweepChoice& choice,
-                           const RigInputs& inputs, const metrics::CoverageSettings& coverage) {
-  const std::optional<model::Requirements>& requirements = inputs.requirements;
-  const bool has_speed = requirements && requirements->robot_speed;
-  const std::string no_speed = requirements ? requirements->file + " states no robot_speed"
-                                            : "the rig names no requirements";
-  SweepRequest request;
-  request.option = options.sweep;
-  request.label = choice.label;
-  request.motion.kind = choice.kind;
-  if (choice.kind == metrics::SweepKind::rotate) {
-    require_option(options.turn_rate_deg || has_speed, "--turn-rate",
-                   "is needed: " + no_speed + " (the default turns the rim at the robot speed)",
-                   "--turn-rate DEG_PER_S, or requirements with robot_speed");
-    request.motion.turn_rate =
-        options.turn_rate_deg
-            ? model::deg_to_rad(*options.turn_rate_deg)
-            : metrics::rim_turn_rate(requirements->robot_speed->speed, inputs.rig.body);
-  } else {
-    require_option(has_speed, "--sweep", options.sweep + " drives at the robot speed: " + no_speed,
-                   "requirements with robot_speed (--requirements FILE)");
-    request.motion.arc_radius = choice.arc_radius;
-    request.motion.speed = requirements->robot_speed->speed;
-  }
-  request.settings.horizon = options.sweep_time.value_or(
-      metrics::default_horizon(request.motion, inputs.rig.distance_of_interest));
-  if (requirements) {
-    request.settings.cell = requirements->smallest_obstacle.value_or(metrics::kDefaultSweepCell);
-    request.settings.deceleration = requirements->braking_deceleration();
-  }
-  request.settings.coverage = coverage;
-  return request;
-}
-
-// One row per cell of the run: centre, first-seen and reached times (empty: never), late.
-std::string sweep_csv(const metrics::SweepRun& run) {
-  std::ostringstream csv;
-  csv << "x_m,y_m,first_seen_s,reached_s,late\n";
-  const auto time = [](const std::optional<double>& t) {
-    return t ? model::format_number(*t, 8) : std::string();
-  };
-  for (const metrics::SweepCell& cell : run.cells) {
-    csv << model::format_number(cell.centre.x(), 8) << ','
-        << model::format_number(cell.centre.y(), 8) << ',' << time(cell.first_seen) << ','
-        << time(cell.reached) << ',' << (cell.late ? "1" : "0") << '\n';
-  }
-  return csv.str();
-}
-
-std::string sweep_direction(const metrics::SweepRun& run) {
-  if (run.motion.kind == metrics::SweepKind::arc) return "arc";
-  return run.motion.turn_rate > 0 ? "left" : "right";
-}
-
-// What a run sees: the share of cells, and for a turn the angle after which all are seen.
-void print_sweep_run(std::ostream& out, const metrics::SweepRun& run) {
-  out << "  " << sweep_direction(run) << ": " << model::format_number(run.seen_share * 100, 4)
-      << " % of the cells seen";
-  if (run.all_seen_time && run.motion.kind == metrics::SweepKind::rotate) {
-    out << "; everything seen after a turn of "
-        << model::format_number(
-               model::rad_to_deg(*run.all_seen_time * std::abs(run.motion.turn_rate)), 4)
-        << " deg (" << model::format_number(*run.all_seen_time, 3) << " s)";
-  } else if (run.all_seen_time) {
-    out << ", all after " << model::format_number(*run.all_seen_time, 3) << " s";
-  } else {
-    out << "; the others never within the horizon";
-  }
-  out << '\n';
-}
-
-// The check: the swept path's cells seen at least the stopping time before the body.
-void print_sweep_check(std::ostream& out, const metrics::SweptCoverage& sweep) {
-  const metrics::SweepRun& run = sweep.worst_run();
-  out << "  swept path (" << sweep_direction(run) << "): " << run.swept << " cells, "
-      << run.reached_too_soon
-      << " reached within t_stop = " << model::format_number(sweep.stopping_time, 3)
-      << " s (not judged), " << run.late << " late\n";
-  if (run.worst_late) {
-    const metrics::SweepCell& cell = run.cells[*run.worst_late];
-    out << "  worst: cell at (" << model::format_number(cell.centre.x(), 3) << ", "
-        << model::format_number(cell.centre.y(), 3) << ") m, reached at "
-        << model::format_number(*cell.reached, 3) << " s, "
-        << (cell.first_seen ? "first seen " + model::format_number(*cell.first_seen, 3) + " s"
-                            : std::string("never seen before"))
-        << '\n';
-  }
-  out << "  check: no cell of the swept path unseen within t_stop of the body: "
-      << (run.swept == run.reached_too_soon ? "pass (nothing to judge)"
-          : sweep.pass()                    ? "pass"
-                                            : "FAIL")
-      << '\n';
-}
-
-void print_sweep(std::ostream& out, const SweepRequest& request,
-                 const metrics::SweptCoverage& sweep) {
-  const metrics::SweepMotion& motion = request.motion;
-  out << "sweep " << request.option << ": ";
-  if (motion.kind == metrics::SweepKind::rotate) {
-    out << "turning in place at " << model::format_number(model::rad_to_deg(motion.turn_rate), 4)
-        << " deg/s, both ways";
-  } else {
-    out << "arc of radius " << model::format_number(motion.arc_radius, 4) << " m at "
-        << model::format_number(motion.speed, 4) << " m/s";
-  }
-  out << ", " << model::format_number(sweep.horizon, 4) << " s; " << sweep.worst_run().cells.size()
-      << " cells of " << model::format_number(sweep.cell * 100, 3) << " cm within "
-      << model::format_number(sweep.distance, 4) << " m, time step "
-      << model::format_number(sweep.time_step * 1000, 3) << " ms\n";
-  for (const metrics::SweepRun& run : sweep.runs) print_sweep_run(out, run);
-  print_sweep_check(out, sweep);
-}
 
 int run_coverage(const CoverageOptions& options, std::ostream& out, std::ostream& err) {
   // --sweep's form is checked by its validator; an empty value means no sweep.
-  const std::optional<SweepChoice> sweep_choice = parse_sweep(options.sweep);
+  const std::optional<SweepChoice> sweep_choice = parse_sweep(options.sweep_options.sweep);
   const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
   const std::string folder = options.out.empty()
                                  ? "coverage/" + std::filesystem::path(options.rig).stem().string()
@@ -206,8 +58,9 @@ int run_coverage(const CoverageOptions& options, std::ostream& out, std::ostream
   settings.step = model::deg_to_rad(options.step_deg);
   settings.exact = !options.raster;
   const std::optional<SweepRequest> sweep =
-      sweep_choice ? std::optional(sweep_request(options, *sweep_choice, inputs, settings))
-                   : std::nullopt;
+      sweep_choice
+          ? std::optional(sweep_request(options.sweep_options, *sweep_choice, inputs, settings))
+          : std::nullopt;
   const std::vector<model::SectorRequirement> sectors =
       inputs.requirements ? inputs.requirements->sectors : std::vector<model::SectorRequirement>{};
   // Two steps of similar length on the bundled rigs: the cut at every angle, the pictures.
@@ -222,23 +75,12 @@ int run_coverage(const CoverageOptions& options, std::ostream& out, std::ostream
   progress.update(1, steps);
   std::vector<std::string> files = write_coverage_files(
       inputs.rig, inputs.library, coverage, options.angles_deg, staged.path(), !options.no_3d);
+  // Issue 38: SC margin against each mount's pitch and yaw error, where the rig gives them.
+  write_tolerance_figures(inputs.rig, inputs.library, sectors, settings, staged.path(), &files);
   std::optional<metrics::SweptCoverage> swept;
   if (sweep) {
     progress.update(2, steps);
-    try {
-      swept = metrics::swept_coverage(inputs.rig, inputs.library, sweep->motion, sweep->settings);
-    } catch (const model::InputError& error) {  // too many samples: the options asked for it
-      const model::Diagnostic& refusal = error.diagnostics().front();
-      require_option(false, "--sweep", refusal.problem, refusal.expected);
-    }
-    const std::string stem = staged.path() + "/sweep_" + sweep->label;
-    io::write_file_atomically(stem + ".csv", sweep_csv(swept->worst_run()));
-    render::plot_swept_coverage(*swept, swept->worst_run(),
-                                inputs.rig.name + ": sweep " + sweep->option + " (" +
-                                    sweep_direction(swept->worst_run()) + ")",
-                                stem + ".png");
-    files.push_back(stem + ".csv");
-    files.push_back(stem + ".png");
+    swept = write_sweep_files(inputs, *sweep, staged.path(), files);
   }
   const std::vector<std::string> written = staged.final_names(files);
   staged.commit();
@@ -285,7 +127,7 @@ Command setup_coverage(CLI::App& parent) {
   app->add_flag("--raster", options->raster, "Use the fast raster path for the curves");
   app->add_flag("--no-3d", options->no_3d, "Skip the OSMesa 3D views");
   CLI::Option* sweep =
-      app->add_option("--sweep", options->sweep,
+      app->add_option("--sweep", options->sweep_options.sweep,
                       "Swept coverage: rotate (in place, both ways) or arc:R (R [m], > 0 left) at "
                       "the requirements' robot speed; writes sweep_<mode>.csv and .png")
           ->check(CLI::Validator(
@@ -294,12 +136,12 @@ Command setup_coverage(CLI::App& parent) {
                                          : "is " + text + " (expected " + kSweepForm + ")";
               },
               "rotate|arc:R"));
-  app->add_option("--turn-rate", options->turn_rate_deg,
+  app->add_option("--turn-rate", options->sweep_options.turn_rate_deg,
                   "Turn rate of --sweep rotate, deg/s (default: the body's rim at the "
                   "requirements' robot speed)")
       ->check(positive_up_to(3600, "deg/s in (0, 3600]"))
       ->needs(sweep);
-  app->add_option("--sweep-time", options->sweep_time,
+  app->add_option("--sweep-time", options->sweep_options.sweep_time,
                   "How long the --sweep motion runs, s (default: one full turn, or the distance "
                   "of interest at the robot speed)")
       ->check(positive_up_to(600, "seconds in (0, 600]"))

@@ -19,6 +19,7 @@
 #include "rigdesign/metrics/tolerance_coverage.hpp"
 #include "rigdesign/metrics/tolerance_verdicts.hpp"
 #include "rigdesign/model/units.hpp"
+#include "tolerance_figures.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -70,6 +71,10 @@ int run_report(const ReportOptions& options, std::ostream& out) {
   const std::vector<double> angles = {0, 90, 180, 270};
   write_coverage_files(inputs.rig, inputs.library, coverage, angles, figures, true);
   content.figures = coverage_figures(figures, angles);
+  // Issue 38: SC margin against each mount's pitch and yaw error, where the rig gives them.
+  for (ReportFigure& figure :
+       write_tolerance_figures(inputs.rig, inputs.library, sectors, settings, figures))
+    content.figures.push_back(std::move(figure));
 
   const std::string page = staged.path() + "/report.html";
   io::write_file_atomically(page, html_report(content));

@@ -69,10 +69,10 @@ model::RobustnessRequirement robustness_option(const std::vector<std::string>& v
                    "n-1 (any one sensor) or a lighting condition: " +
                        model::join(model::names_of(model::kLightConditionNames)));
     const bool repeated = condition ? robust.condition.has_value() : robust.single_failure;
-    require_option(!repeated, "--robust",
-                   condition ? "names a second lighting condition ('" + value + "')"
-                             : "gives n-1 twice",
-                   "each failure once: n-1 and at most one lighting condition");
+    require_option(
+        !repeated, "--robust",
+        condition ? "names a second lighting condition ('" + value + "')" : "gives n-1 twice",
+        "each failure once: n-1 and at most one lighting condition");
     if (condition)
       robust.condition = *condition;
     else
@@ -180,7 +180,7 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   const select::SelectionSpace space(catalog, library, settings, tolerance);
   // Every phase of every step (search, exact verification, refinement, robustness cost,
   // binding requirements, files) shows with its own count and clock.
-  std::size_t step = 0;  // the relaxation steps shown
+  std::size_t step = 0;     // the relaxation steps shown
   bool steps_done = false;  // then the binding-requirement probes and the files
   std::string shown_phase;
   const select::ProgressSink on_progress = [&](const select::PhaseProgress& at) {
@@ -203,7 +203,19 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   };
   SelectReport report{
       &catalog, space.option_count(), &requirements, &policy, options.budget, nullptr, {}, {}};
-  if (!options.json) print_select_header(report, out);
+  if (!options.json) {
+    print_select_header(report, out);
+    if (tolerance && tolerance->any()) {
+      out << "Mounting tolerance: +-" << model::format_number(tolerance->xyz.x() * 1000) << ", "
+          << model::format_number(tolerance->xyz.y() * 1000) << ", "
+          << model::format_number(tolerance->xyz.z() * 1000) << " mm, +-"
+          << model::format_number(model::rad_to_deg(tolerance->rpy.x())) << ", "
+          << model::format_number(model::rad_to_deg(tolerance->rpy.y())) << ", "
+          << model::format_number(model::rad_to_deg(tolerance->rpy.z()))
+          << " deg on every mount: each option keeps the cells it sees at all " << poses
+          << " poses of its box, the winner is verified over the box on the exact path\n\n";
+    }
+  }
   const select::RelaxationOutcome outcome = select::select_within_budget(
       space, requirements, policy, options.budget,
       [&](const select::RelaxationIteration& iteration) {

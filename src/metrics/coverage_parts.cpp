@@ -71,6 +71,8 @@ std::vector<AngleCoverage> raster_angles(
       seen_twice |= overlap;
       seen_once |= rasters[i][a];
       angle.mount_sees.push_back(rasters[i][a].any());
+      angle.mount_complete.push_back(rasters[i][a].complete_share());
+      angle.mount_floor.push_back(rasters[i][a].floor_share());
     }
     angle.complete_raster = seen_once.complete_share();
     angle.floor_raster = seen_once.floor_share();

@@ -1,6 +1,9 @@
 #include "rigdesign/metrics/requirement_check.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
@@ -60,8 +63,43 @@ std::string percent(double share) {
   return model::format_number(share * 100, 4) + " %";
 }
 
-void check_sectors(const model::Requirements& requirements, const RigCoverage* coverage,
-                   std::vector<RequirementResult>& results) {
+// The mount a sector's verdict rests on (issue 39: CI annotations go to its line): at the
+// angle of the binding share's minimum, the mount that sees most of that share there; when no
+// mount sees anything there, the one seeing the nearest angle (the one to turn towards it).
+// Nothing without any mount seeing anything.
+std::optional<std::size_t> sector_limiting_mount(const RigCoverage& coverage, double theta,
+                                                 bool floor) {
+  const auto share = [&](const AngleCoverage& angle, std::size_t m) {
+    const std::vector<double>& shares = floor ? angle.mount_floor : angle.mount_complete;
+    return m < shares.size() ? shares[m] : 0.0;
+  };
+  const auto best_at = [&](const AngleCoverage& angle) -> std::optional<std::size_t> {
+    std::optional<std::size_t> best;
+    for (std::size_t m = 0; m < coverage.mount_ids.size(); ++m) {
+      if (share(angle, m) > 0 && (!best || share(angle, m) > share(angle, *best))) best = m;
+    }
+    return best;
+  };
+  const auto at =
+      std::min_element(coverage.angles.begin(), coverage.angles.end(),
+                       [&](const AngleCoverage& x, const AngleCoverage& y) {
+                         return std::abs(std::remainder(x.theta - theta, 2 * std::numbers::pi)) <
+                                std::abs(std::remainder(y.theta - theta, 2 * std::numbers::pi));
+                       });
+  if (at == coverage.angles.end()) return std::nullopt;
+  if (auto best = best_at(*at)) return best;
+  const std::size_t n = coverage.angles.size();
+  const auto start = static_cast<std::size_t>(at - coverage.angles.begin());
+  for (std::size_t step = 1; step <= n / 2; ++step) {
+    for (const std::size_t a : {(start + step) % n, (start + n - step) % n}) {
+      if (auto best = best_at(coverage.angles[a])) return best;
+    }
+  }
+  return std::nullopt;
+}
+
+void check_sectors(const model::Rig& rig, const model::Requirements& requirements,
+                   const RigCoverage* coverage, std::vector<RequirementResult>& results) {
   for (std::size_t i = 0; i < requirements.sectors.size(); ++i) {
     const model::SectorRequirement& sector = requirements.sectors[i];
     RequirementResult result = named("R2", "direction of motion: " + sector.name,
@@ -80,6 +118,14 @@ void check_sectors(const model::Requirements& requirements, const RigCoverage* c
     result.bound = Bound::at_least;
     result.actual = binding.actual;
     result.verdict = verdict(measured.pass);
+    const double binding_theta =
+        binding.floor ? measured.floor.min_theta : measured.complete.min_theta;
+    if (const auto limiting = sector_limiting_mount(*coverage, binding_theta, binding.floor);
+        limiting && *limiting < rig.mounts.size()) {
+      result.limiting_mounts = {rig.mounts[*limiting].id};
+      const model::Mount& mount = rig.mounts[*limiting];
+      result.rig_where = mount.pose_where.file.empty() ? mount.where : mount.pose_where;
+    }
     result.explanation = "over " + model::format_number(model::rad_to_deg(sector.from)) + ".." +
                          model::format_number(model::rad_to_deg(sector.to)) +
                          " deg: SC complete min " + percent(measured.complete.min) + " (at " +
@@ -183,10 +229,12 @@ void check_lighting(const ResultantMetrics& metrics, const model::Requirements& 
   results.push_back(std::move(result));
 }
 
-// The rig's line behind each verdict: the first limiting mount's `mode` (the mode sets F, R, N
-// and L), else the rig itself (coverage, body, distance of interest come from the whole rig).
+// The rig's line behind each verdict not placed already (a sector's, at its limiting mount's
+// pose): the first limiting mount's `mode` (the mode sets F, R, N and L), else the rig itself
+// (body and distance of interest come from the whole rig).
 void locate_in_rig(const model::Rig& rig, std::vector<RequirementResult>& results) {
   for (RequirementResult& result : results) {
+    if (!result.rig_where.file.empty()) continue;
     result.rig_where = rig.where;
     if (result.limiting_mounts.empty()) continue;
     for (const model::Mount& mount : rig.mounts) {
@@ -220,7 +268,7 @@ std::vector<RequirementResult> evaluate_requirements(const model::Rig& rig,
                                                      const RigCoverage* coverage) {
   std::vector<RequirementResult> results;
   check_body(rig, requirements, results);
-  check_sectors(requirements, coverage, results);
+  check_sectors(rig, requirements, coverage, results);
   check_range(rig, requirements, results);
   check_frequency(metrics, requirements, results);
   check_resolution(metrics, requirements, results);

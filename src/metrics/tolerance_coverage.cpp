@@ -27,12 +27,6 @@ struct MountSection {
   geometry::IntervalSet floor;
 };
 
-MountSection cut_section(const detail::PlacedMount& placed, const SectorAngle& angle,
-                         const geometry::TessellationSettings& tessellation) {
-  return {geometry::section_polygons(placed.fov, angle.frame, tessellation),
-          geometry::floor_coverage(placed.fov, angle.frame)};
-}
-
 // SC complete and floor at one angle with the mounts whose entry in `moved` is set seeing that
 // section instead of their nominal region (`moved` empty: every mount nominal).
 std::pair<double, double> shares_at(const SectorAngle& angle,
@@ -77,19 +71,21 @@ struct ToleratedMount {
   std::vector<std::vector<std::pair<double, double>>> minima;  // per sample, per sector
 };
 
-// `mount` of the rig moved by `error`, cut at every angle.
-std::vector<MountSection> moved_sections(const model::Rig& rig, const model::Mount& mount,
-                                         const PoseError& error,
+// `mount` of the rig moved by `error` (its FOV at the narrowest when the error says so), cut
+// at every angle.
+std::vector<MountSection> moved_sections(const model::Mount& mount, const PoseError& error,
                                          const model::SensorLibrary& library,
                                          const geometry::BodyOccluder& body,
                                          const std::vector<SectorAngle>& angles,
                                          const geometry::TessellationSettings& tessellation) {
-  model::Mount moved = mount;
-  moved.T_robot_sensor = with_error(moved.T_robot_sensor, error);
-  const detail::PlacedMount placed = detail::place_mount(rig, moved, library, body);
+  const model::SensorMode& mode = library.resolved_mode(mount.sensor_id, mount.mode_id);
+  const model::SensorMode narrowed = mode.narrowest();  // MountedFov keeps a pointer to it
+  const geometry::MountedFov fov(error.narrowest_fov ? narrowed : mode,
+                                 with_error(mount.T_robot_sensor, error), body, mount.limits);
   std::vector<MountSection> sections;
   for (const SectorAngle& angle : angles)
-    sections.push_back(cut_section(placed, angle, tessellation));
+    sections.push_back({geometry::section_polygons(fov, angle.frame, tessellation),
+                        geometry::floor_coverage(fov, angle.frame)});
   return sections;
 }
 
@@ -103,6 +99,62 @@ std::size_t worst_sample(const ToleratedMount& mount, std::size_t s, bool floor)
     if (share(i) < share(worst)) worst = i;
   }
   return worst;
+}
+
+// The sectors' sampled azimuths, each with every nominal mount's region there (every mount
+// placed once: a description's body makes each placement build a shadow).
+std::vector<SectorAngle> sector_angles(const model::Rig& rig, const model::SensorLibrary& library,
+                                       const geometry::BodyOccluder& body,
+                                       const std::vector<model::SectorRequirement>& sectors,
+                                       const CoverageSettings& settings) {
+  std::vector<detail::PlacedMount> nominal_mounts;
+  for (const model::Mount& mount : rig.mounts)
+    nominal_mounts.push_back(detail::place_mount(rig, mount, library, body));
+  std::vector<SectorAngle> angles;
+  for (const double theta : detail::sampled_azimuths(settings)) {
+    if (std::none_of(sectors.begin(), sectors.end(),
+                     [&](const model::SectorRequirement& s) { return in_sector(s, theta); }))
+      continue;
+    SectorAngle angle;
+    angle.theta = theta;
+    angle.frame = geometry::section_frame(body, theta, rig.distance_of_interest);
+    for (const detail::PlacedMount& placed : nominal_mounts) {
+      angle.polygons.push_back(
+          geometry::section_polygons(placed.fov, angle.frame, settings.tessellation));
+      angle.floors.push_back(geometry::floor_coverage(placed.fov, angle.frame));
+    }
+    angles.push_back(std::move(angle));
+  }
+  return angles;
+}
+
+// Per sector, the shares' minima with mount `m` moved by `error` (the others nominal).
+std::vector<std::pair<double, double>> minima_with_error(
+    const model::Rig& rig, std::size_t m, const PoseError& error,
+    const model::SensorLibrary& library, const geometry::BodyOccluder& body,
+    const std::vector<model::SectorRequirement>& sectors, const std::vector<SectorAngle>& angles,
+    const std::vector<std::pair<double, double>>& nominal_shares,
+    const geometry::TessellationSettings& tessellation) {
+  const std::vector<MountSection> sections =
+      moved_sections(rig.mounts[m], error, library, body, angles, tessellation);
+  std::vector<std::pair<double, double>> shares;
+  std::vector<const MountSection*> replaced(rig.mounts.size(), nullptr);
+  for (std::size_t a = 0; a < angles.size(); ++a) {
+    // A section the mount misses whether moved or not keeps the nominal shares: most
+    // angles of a camera's box, and the exact union is the cost of this loop.
+    if (sections[a].polygons.empty() && sections[a].floor.empty() &&
+        angles[a].polygons[m].empty() && angles[a].floors[m].empty()) {
+      shares.push_back(nominal_shares[a]);
+      continue;
+    }
+    replaced[m] = &sections[a];
+    shares.push_back(shares_at(angles[a], replaced));
+  }
+  return sector_minima(sectors, angles, shares);
+}
+
+int worker_threads() {
+  return static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
 }
 
 }  // namespace
@@ -138,6 +190,16 @@ std::vector<PoseError> tolerance_samples(const model::PoseTolerance& tolerance) 
   return samples;
 }
 
+std::vector<PoseError> mount_error_samples(const model::PoseTolerance& tolerance,
+                                           const model::SensorMode& mode) {
+  std::vector<PoseError> errors;
+  if (tolerance.any()) errors = tolerance_samples(tolerance);
+  if (!mode.fov_spread) return errors;
+  if (errors.empty()) errors.emplace_back();  // the nominal pose at the narrowest FOV
+  for (PoseError& error : errors) error.narrowest_fov = true;
+  return errors;
+}
+
 model::Pose3 with_error(const model::Pose3& nominal, const PoseError& error) {
   model::Pose3 moved = nominal;
   moved.linear() =
@@ -151,29 +213,12 @@ std::vector<SectorTolerance> tolerance_coverage(
     const std::vector<model::SectorRequirement>& sectors, const CoverageSettings& settings) {
   const bool any = std::any_of(rig.mounts.begin(), rig.mounts.end(), [&](const model::Mount& m) {
     const model::PoseTolerance* tolerance = rig.tolerance_for(m);
-    return tolerance != nullptr && tolerance->any();
+    return tolerance != nullptr &&
+           !mount_error_samples(*tolerance, library.resolved_mode(m.sensor_id, m.mode_id)).empty();
   });
   if (!any || sectors.empty()) return {};
   const geometry::BodyOccluder body(rig.body);
-  // Every mount placed once (a description's body makes each placement build a shadow).
-  std::vector<detail::PlacedMount> nominal_mounts;
-  for (const model::Mount& mount : rig.mounts)
-    nominal_mounts.push_back(detail::place_mount(rig, mount, library, body));
-  std::vector<SectorAngle> angles;
-  for (const double theta : detail::sampled_azimuths(settings)) {
-    if (std::none_of(sectors.begin(), sectors.end(),
-                     [&](const model::SectorRequirement& s) { return in_sector(s, theta); }))
-      continue;
-    SectorAngle angle;
-    angle.theta = theta;
-    angle.frame = geometry::section_frame(body, theta, rig.distance_of_interest);
-    for (const detail::PlacedMount& placed : nominal_mounts) {
-      angle.polygons.push_back(
-          geometry::section_polygons(placed.fov, angle.frame, settings.tessellation));
-      angle.floors.push_back(geometry::floor_coverage(placed.fov, angle.frame));
-    }
-    angles.push_back(std::move(angle));
-  }
+  const std::vector<SectorAngle> angles = sector_angles(rig, library, body, sectors, settings);
   std::vector<std::pair<double, double>> nominal_shares;
   for (const SectorAngle& angle : angles) nominal_shares.push_back(shares_at(angle, {}));
   const std::vector<std::pair<double, double>> nominal =
@@ -195,33 +240,20 @@ std::vector<SectorTolerance> tolerance_coverage(
   std::vector<std::pair<std::size_t, std::size_t>> jobs;  // tolerated mount, sample
   for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
     const model::PoseTolerance* tolerance = rig.tolerance_for(rig.mounts[m]);
-    if (tolerance == nullptr || !tolerance->any()) continue;
-    tolerated.push_back({m, tolerance_samples(*tolerance), {}});
+    if (tolerance == nullptr) continue;
+    std::vector<PoseError> errors = mount_error_samples(
+        *tolerance, library.resolved_mode(rig.mounts[m].sensor_id, rig.mounts[m].mode_id));
+    if (errors.empty()) continue;
+    tolerated.push_back({m, std::move(errors), {}});
     tolerated.back().minima.resize(tolerated.back().errors.size());
     for (std::size_t i = 0; i < tolerated.back().errors.size(); ++i)
       jobs.emplace_back(tolerated.size() - 1, i);
   }
-  const int threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-  model::parallel_for(jobs.size(), threads, [&](std::size_t job) {
+  model::parallel_for(jobs.size(), worker_threads(), [&](std::size_t job) {
     ToleratedMount& mount = tolerated[jobs[job].first];
-    const std::size_t m = mount.index;
-    const std::vector<MountSection> sections =
-        moved_sections(rig, rig.mounts[m], mount.errors[jobs[job].second], library, body, angles,
-                       settings.tessellation);
-    std::vector<std::pair<double, double>> shares;
-    std::vector<const MountSection*> replaced(rig.mounts.size(), nullptr);
-    for (std::size_t a = 0; a < angles.size(); ++a) {
-      // A section the mount misses whether moved or not keeps the nominal shares: most
-      // angles of a camera's box, and the exact union is the cost of this loop.
-      if (sections[a].polygons.empty() && sections[a].floor.empty() &&
-          angles[a].polygons[m].empty() && angles[a].floors[m].empty()) {
-        shares.push_back(nominal_shares[a]);
-        continue;
-      }
-      replaced[m] = &sections[a];
-      shares.push_back(shares_at(angles[a], replaced));
-    }
-    mount.minima[jobs[job].second] = sector_minima(sectors, angles, shares);
+    mount.minima[jobs[job].second] =
+        minima_with_error(rig, mount.index, mount.errors[jobs[job].second], library, body, sectors,
+                          angles, nominal_shares, settings.tessellation);
   });
   // In a fixed order, so that equal shares name the same error on every run.
   for (const ToleratedMount& mount : tolerated) {
@@ -246,8 +278,8 @@ std::vector<SectorTolerance> tolerance_coverage(
           if (share >= (floor ? nominal[s].second : nominal[s].first)) continue;  // no worse
           errors.push_back({rig.mounts[mount.index].id, mount.errors[worst]});
           chosen.emplace_back(mount.index,
-                              moved_sections(rig, rig.mounts[mount.index], mount.errors[worst],
-                                             library, body, angles, settings.tessellation));
+                              moved_sections(rig.mounts[mount.index], mount.errors[worst], library,
+                                             body, angles, settings.tessellation));
         }
         if (chosen.size() < 2) continue;  // one mount's worst is already recorded
         std::vector<std::pair<double, double>> shares;
@@ -268,6 +300,60 @@ std::vector<SectorTolerance> tolerance_coverage(
                   sector.floor.share >= sector.sector.min_floor_coverage;
   }
   return result;
+}
+
+std::vector<ErrorSweep> tolerance_sweeps(const model::Rig& rig, const model::SensorLibrary& library,
+                                         const std::vector<model::SectorRequirement>& sectors,
+                                         const CoverageSettings& settings, int steps) {
+  std::vector<ErrorSweep> sweeps;
+  std::vector<std::size_t> mount_of;  // per sweep
+  for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
+    const model::PoseTolerance* tolerance = rig.tolerance_for(rig.mounts[m]);
+    if (tolerance == nullptr) continue;
+    for (const int axis : {1, 2}) {
+      const double width = tolerance->rpy[axis];
+      if (width <= 0) continue;
+      ErrorSweep sweep;
+      sweep.mount_id = rig.mounts[m].id;
+      sweep.axis = axis;
+      sweep.half_width = width;
+      for (int i = 0; i < steps; ++i)
+        sweep.errors.push_back(-3 * width + 6 * width * i / std::max(1, steps - 1));
+      sweeps.push_back(std::move(sweep));
+      mount_of.push_back(m);
+    }
+  }
+  if (sweeps.empty() || sectors.empty()) return {};
+  const geometry::BodyOccluder body(rig.body);
+  const std::vector<SectorAngle> angles = sector_angles(rig, library, body, sectors, settings);
+  std::vector<std::pair<double, double>> nominal_shares;
+  for (const SectorAngle& angle : angles) nominal_shares.push_back(shares_at(angle, {}));
+  const std::size_t per_sweep = static_cast<std::size_t>(steps);
+  std::vector<std::vector<std::pair<double, double>>> minima(sweeps.size() * per_sweep);
+  model::parallel_for(minima.size(), worker_threads(), [&](std::size_t job) {
+    const ErrorSweep& sweep = sweeps[job / per_sweep];
+    PoseError error;
+    error.rpy[sweep.axis] = sweep.errors[job % per_sweep];
+    minima[job] = minima_with_error(rig, mount_of[job / per_sweep], error, library, body, sectors,
+                                    angles, nominal_shares, settings.tessellation);
+  });
+  for (std::size_t k = 0; k < sweeps.size(); ++k) {
+    ErrorSweep& sweep = sweeps[k];
+    for (const model::SectorRequirement& sector : sectors)
+      sweep.sectors.push_back({sector.name, {}});
+    for (std::size_t i = 0; i < per_sweep; ++i) {
+      double smallest = std::numeric_limits<double>::infinity();
+      for (std::size_t s = 0; s < sectors.size(); ++s) {
+        const auto& [complete, floor] = minima[k * per_sweep + i][s];
+        const double margin = std::min(complete - sectors[s].min_complete_coverage,
+                                       floor - sectors[s].min_floor_coverage);
+        sweep.sectors[s].second.push_back(margin);
+        smallest = std::min(smallest, margin);
+      }
+      sweep.smallest.push_back(smallest);
+    }
+  }
+  return sweeps;
 }
 
 double SectorTolerance::margin() const {

@@ -44,6 +44,7 @@ std::string error_text(const PoseError& error) {
       parts.push_back(std::string(turns[i]) + " " + sign(error.rpy[i]) +
                       model::format_number(model::rad_to_deg(error.rpy[i]), 4) + " deg");
   }
+  if (error.narrowest_fov) parts.push_back("FOV at its datasheet narrowest");
   return parts.empty() ? "nominal" : model::join(parts);
 }
 

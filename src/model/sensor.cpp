@@ -18,6 +18,19 @@ bool Emitter::supports(const std::string& measure) const {
   return std::find(mitigation.begin(), mitigation.end(), measure) != mitigation.end();
 }
 
+SensorMode SensorMode::narrowest() const {
+  SensorMode narrowed = *this;
+  if (!fov_spread) return narrowed;
+  const FovShape& shape = fov.shape();
+  if (shape.name() == "pyramid") {
+    narrowed.fov = FieldOfView(
+        pyramid_fov(shape.horizontal() - (*fov_spread)[0], shape.vertical() - (*fov_spread)[1]));
+  } else if (shape.name() == "cone") {
+    narrowed.fov = FieldOfView(cone_fov(shape.horizontal() - (*fov_spread)[0]));
+  }
+  return narrowed;
+}
+
 double NoiseModel::sigma(double distance) const {
   return a + b * distance + c * distance * distance;
 }

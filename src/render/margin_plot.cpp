@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <string>
+#include <vector>
 
 #include "cairo_canvas.hpp"
 #include "chart_axes.hpp"
@@ -57,6 +59,7 @@ MarginChart margin_chart(const MarginCurve& curve, int width, int height) {
     if (varies(margins)) widen(chart.y_low, chart.y_high, margins);
   }
   widen(chart.x_low, chart.x_high, curve.grid);
+  for (const auto& [x, label] : curve.marks) widen(chart.x_low, chart.x_high, {x});
   if (chart.x_high - chart.x_low < 1e-9) chart.x_high = chart.x_low + 1.0;
   const double y_pad = std::max(1.0, 0.08 * (chart.y_high - chart.y_low));
   chart.y_low -= y_pad;
@@ -127,14 +130,20 @@ void draw_margin_choices(cairo_t* cairo, const MarginChart& chart, const MarginC
   struct Marker {
     double x;
     Rgb colour;
-    const char* label;
+    std::string label;
     double label_y;
   };
-  const Marker markers[] = {{curve.grid_choice, kGridChoice,
-                             same ? "grid optimum = refined" : "grid optimum", area.top + 16},
-                            {curve.refined, kRefined, "refined", area.top + 34}};
+  std::vector<Marker> markers;
+  if (curve.marks.empty()) {
+    markers.push_back({curve.grid_choice, kGridChoice,
+                       same ? "grid optimum = refined" : "grid optimum", area.top + 16});
+    if (!same) markers.push_back({curve.refined, kRefined, "refined", area.top + 34});
+  }
+  for (std::size_t i = 0; i < curve.marks.size(); ++i) {
+    markers.push_back({curve.marks[i].first, i % 2 == 0 ? kRefined : kGridChoice,
+                       curve.marks[i].second, area.top + 16 + 18.0 * static_cast<double>(i % 2)});
+  }
   for (const Marker& marker : markers) {
-    if (same && &marker != &markers[0]) continue;
     set_colour(cairo, marker.colour);
     cairo_set_dash(cairo, dash, 2, 0);
     cairo_move_to(cairo, chart.px(marker.x), area.top);

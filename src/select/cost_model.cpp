@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "rigdesign/model/format_number.hpp"
+
 namespace rigdesign::select {
 
 namespace {
@@ -17,17 +19,37 @@ const model::PricedCapacity* cheapest_exceeding(const std::vector<model::PricedC
   return best;
 }
 
+std::vector<const model::PricedCapacity*> cheapest_per_kind(
+    const std::vector<model::PricedCapacity>& items, double load) {
+  std::vector<const model::PricedCapacity*> chosen;
+  for (std::size_t begin = 0; begin < items.size();) {
+    std::size_t end = begin;
+    const model::PricedCapacity* best = nullptr;
+    for (; end < items.size() && items[end].kind == items[begin].kind; ++end) {
+      if (items[end].capacity > load && (best == nullptr || items[end].price < best->price))
+        best = &items[end];
+    }
+    if (best == nullptr) return {};  // this kind carries no such load: nothing does
+    chosen.push_back(best);
+    begin = end;
+  }
+  return chosen;
+}
+
 CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
                        const std::vector<model::PricedCapacity>& cpus) {
   CostBreakdown cost;
   cost.sensors = load.sensor_cost;
-  const model::PricedCapacity* link = cheapest_exceeding(transfer, load.bandwidth * kBitsPerByte);
+  const std::vector<const model::PricedCapacity*> links =
+      cheapest_per_kind(transfer, load.bandwidth * kBitsPerByte);
   const model::PricedCapacity* cpu = cheapest_exceeding(cpus, load.cpu);
-  cost.feasible = link != nullptr && cpu != nullptr;
-  if (link != nullptr) {
-    cost.transfer = link->price;
-    cost.transfer_id = link->id;
+  cost.feasible = !links.empty() && cpu != nullptr;
+  std::vector<std::string> ids;
+  for (const model::PricedCapacity* link : links) {
+    cost.transfer += link->price;
+    ids.push_back(link->id);
   }
+  cost.transfer_id = model::join(ids, " + ");
   if (cpu != nullptr) {
     cost.cpu = cpu->price;
     cost.cpu_id = cpu->id;
@@ -38,10 +60,24 @@ CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapac
 
 double total_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
                   const std::vector<model::PricedCapacity>& cpus) {
-  const model::PricedCapacity* link = cheapest_exceeding(transfer, load.bandwidth * kBitsPerByte);
+  constexpr double kNone = std::numeric_limits<double>::infinity();
   const model::PricedCapacity* cpu = cheapest_exceeding(cpus, load.cpu);
-  if (link == nullptr || cpu == nullptr) return std::numeric_limits<double>::infinity();
-  return load.sensor_cost + link->price + cpu->price;
+  if (cpu == nullptr) return kNone;
+  // Eq. 4 without the vector: per kind (contiguous) the cheapest item above the bandwidth.
+  const double bits = load.bandwidth * kBitsPerByte;
+  double transfer_cost = 0.0;
+  for (std::size_t begin = 0; begin < transfer.size();) {
+    double best = kNone;
+    std::size_t end = begin;
+    for (; end < transfer.size() && transfer[end].kind == transfer[begin].kind; ++end) {
+      if (transfer[end].capacity > bits && transfer[end].price < best) best = transfer[end].price;
+    }
+    if (best == kNone) return kNone;
+    transfer_cost += best;
+    begin = end;
+  }
+  if (transfer.empty()) return kNone;
+  return load.sensor_cost + transfer_cost + cpu->price;
 }
 
 }  // namespace rigdesign::select

@@ -100,6 +100,29 @@ double largest_capacity(const std::vector<model::PricedCapacity>& items, std::st
   return largest;
 }
 
+// The most a rig can send: each transfer kind carries up to its largest item (eq. 4 buys one of
+// each), so the kind whose largest item is smallest bounds it; `id` names that item.
+double transfer_bottleneck(const std::vector<model::PricedCapacity>& items, std::string& id) {
+  double bottleneck = 0.0;
+  bool first = true;
+  for (std::size_t begin = 0; begin < items.size();) {
+    std::size_t end = begin;
+    while (end < items.size() && items[end].kind == items[begin].kind) ++end;
+    std::string kind_id;
+    const double largest = largest_capacity(
+        std::vector<model::PricedCapacity>(items.begin() + static_cast<std::ptrdiff_t>(begin),
+                                           items.begin() + static_cast<std::ptrdiff_t>(end)),
+        kind_id);
+    if (first || largest < bottleneck) {
+      bottleneck = largest;
+      id = kind_id;
+      first = false;
+    }
+    begin = end;
+  }
+  return bottleneck;
+}
+
 }  // namespace
 
 std::string infeasibility_cause(const SearchProblem& problem,
@@ -108,8 +131,8 @@ std::string infeasibility_cause(const SearchProblem& problem,
   if (auto metric = unmet_metric(options, targets)) return *metric;
   if (auto sector = uncoverable_sector(problem, targets, space)) return *sector;
   SearchProblem unlimited = problem;
-  unlimited.transfer = {{"unlimited", kUnbounded, 0.0, {}}};
-  unlimited.cpus = {{"unlimited", kUnbounded, 0.0, {}}};
+  unlimited.transfer = {{"unlimited", kUnbounded, 0.0, {}, {}}};
+  unlimited.cpus = {{"unlimited", kUnbounded, 0.0, {}, {}}};
   const bool robust = problem.robustness.any();
   const std::string which = robust ? "meeting the requirements and surviving the failures"
                                    : "meeting the requirements";
@@ -130,7 +153,7 @@ std::string infeasibility_cause(const SearchProblem& problem,
   std::string cpu_id;
   const double cores = largest_capacity(problem.cpus, cpu_id);
   SearchProblem cpu_only = unlimited;
-  cpu_only.cpus = {{cpu_id, cores, 0.0, {}}};
+  cpu_only.cpus = {{cpu_id, cores, 0.0, {}, {}}};
   if (!branch_and_bound(cpu_only).found) {
     causes.push_back("CPU: no rig " + which + " loads less than the " +
                      model::format_number(cores, 4) + " core-equivalents of the catalog's largest "
@@ -138,9 +161,9 @@ std::string infeasibility_cause(const SearchProblem& problem,
                      model::format_number(needed.cpu, 4) + ")");
   }
   std::string link_id;
-  const double bits = largest_capacity(problem.transfer, link_id);
+  const double bits = transfer_bottleneck(problem.transfer, link_id);
   SearchProblem transfer_only = unlimited;
-  transfer_only.transfer = {{link_id, bits, 0.0, {}}};
+  transfer_only.transfer = {{link_id, bits, 0.0, {}, {}}};
   if (!branch_and_bound(transfer_only).found) {
     causes.push_back("transfer: no rig " + which + " sends less than the " +
                      model::format_number(bits / 1e9, 4) + " Gbit/s of the catalog's largest "

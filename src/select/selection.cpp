@@ -206,9 +206,13 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
   model::parallel_for(all.size(), threads, [&](std::size_t i) {
     CatalogOption& option = *all[i];
     const model::Pose3& nominal = catalog.slots[option.slot].poses[option.pose].T_robot_sensor;
+    // With a tolerance a mode with an FOV spread is judged at its narrowest (a subset of the
+    // nominal FOV's directions, so the nominal pose's cells are kept only where it sees too).
+    const model::SensorMode narrowed = option.mode->narrowest();
+    const model::SensorMode& judged = tolerance_ ? narrowed : *option.mode;
     std::vector<geometry::SectionRaster> sections;
     for (const metrics::PoseError& error : errors) {
-      const geometry::MountedFov fov(*option.mode, metrics::with_error(nominal, error), body);
+      const geometry::MountedFov fov(judged, metrics::with_error(nominal, error), body);
       for (int a = 0; a < angles; ++a) {
         geometry::SectionRaster seen = geometry::rasterize(fov, frames[a], grids_[a]);
         if (sections.size() < static_cast<std::size_t>(angles)) {

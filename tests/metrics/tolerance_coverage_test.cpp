@@ -105,3 +105,38 @@ TEST_CASE("tolerance: a translation over 0.1 m or a rotation over 10 deg is a wa
   text.replace(text.find("[0, 15, 0]"), 10, "[0, -1, 0]");
   CHECK_THROWS_AS(io::load_rig(folder.write("bad.yaml", text)), model::InputError);
 }
+
+TEST_CASE("tolerance: a mode's FOV spread is judged at its narrowest", "[metrics][tolerance]") {
+  // The same camera with a datasheet spread of 4 deg on its 40 deg vertical angle: the
+  // narrowest unit's lower edge is 18 deg below the axis, 38 deg below the horizon, and its
+  // floor starts at 0.25 + 0.5 / tan 38 deg. A zero box still judges the spread.
+  test::TempFolder folder;
+  std::string library_text = test::kLibrary;
+  library_text.replace(library_text.find("        range: {min: 0.1, max: 4.0}"), 0,
+                       "        fov_spread_deg: [0, 4]\n");
+  const model::SensorLibrary library =
+      io::load_sensor_library(folder.write("sensors.yaml", library_text));
+  std::string rig_text = kToleranceRig;
+  rig_text.replace(rig_text.find("xyz: [0.005, 0, 0.005], rpy_deg: [0, 1, 0]"),
+                   std::string("xyz: [0.005, 0, 0.005], rpy_deg: [0, 1, 0]").size(),
+                   "xyz: [0, 0, 0], rpy_deg: [0, 0, 0]");
+  const model::Rig rig = io::load_rig(folder.write("rig.yaml", rig_text));
+  model::SectorRequirement ahead;
+  ahead.name = "ahead";
+  ahead.min_floor_coverage = 0.6;
+  const std::vector<metrics::SectorTolerance> result =
+      metrics::tolerance_coverage(rig, library, {ahead});
+  REQUIRE(result.size() == 1);
+  const double narrowest = (2.0 - 0.25 - 0.5 / std::tan(model::deg_to_rad(38.0))) / 1.8;
+  CHECK(result[0].nominal_floor == Approx(floor_share(0.25, 0.5, 20.0)).margin(1e-6));
+  CHECK(result[0].floor.share == Approx(narrowest).margin(1e-6));
+  REQUIRE(result[0].floor.errors.size() == 1);
+  CHECK(result[0].floor.errors.front().error.narrowest_fov);
+  CHECK(metrics::error_text(result[0].floor.errors.front().error) ==
+        "FOV at its datasheet narrowest");
+  // A scanner has no FOV spread: the file says so at the field.
+  std::string scanner = test::kLibrary;
+  scanner.replace(scanner.find("        range: {min: 0.5, max: 50}"), 0,
+                  "        fov_spread_deg: [1, 1]\n");
+  CHECK_THROWS_AS(io::load_sensor_library(folder.write("bad.yaml", scanner)), model::InputError);
+}

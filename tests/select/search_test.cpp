@@ -1,6 +1,7 @@
 #include "rigdesign/select/search.hpp"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <random>
 
 #include "rigdesign/select/cost_model.hpp"
@@ -8,10 +9,10 @@
 using namespace rigdesign;
 
 TEST_CASE("cost model: the cheapest transfer and CPU whose capacity exceeds the load") {
-  const std::vector<model::PricedCapacity> transfer = {{"onboard", 1.0e9, 0, {}},
-                                                       {"card", 4.0e9, 80, {}}};
+  const std::vector<model::PricedCapacity> transfer = {{"onboard", 1.0e9, 0, {}, {}},
+                                                       {"card", 4.0e9, 80, {}, {}}};
   const std::vector<model::PricedCapacity> cpus = {
-      {"small", 2.0, 300, {}}, {"big", 8.0, 900, {}}, {"mid", 4.0, 500, {}}};
+      {"small", 2.0, 300, {}, {}}, {"big", 8.0, 900, {}, {}}, {"mid", 4.0, 500, {}, {}}};
   // 100 MB/s = 0.8 Gbit/s fits the onboard link; 2.5 cores need the 4-core CPU.
   select::CostBreakdown cost = select::rig_cost({1000.0, 100e6, 2.5, 2}, transfer, cpus);
   CHECK(cost.feasible);
@@ -26,6 +27,45 @@ TEST_CASE("cost model: the cheapest transfer and CPU whose capacity exceeds the 
   // Nothing carries 10 cores.
   CHECK_FALSE(select::rig_cost({0.0, 0.0, 10.0, 1}, transfer, cpus).feasible);
   CHECK(select::cheapest_exceeding(cpus, 8.0) == nullptr);
+}
+
+namespace {
+
+// A transfer component of `kind` (set field by field: GCC 12 warns on `where` left to {} in a
+// brace list of them).
+model::PricedCapacity component(const char* id, double capacity, double price, const char* kind) {
+  model::PricedCapacity item;
+  item.id = id;
+  item.capacity = capacity;
+  item.price = price;
+  item.kind = kind;
+  return item;
+}
+
+}  // namespace
+
+TEST_CASE("cost model: eq. 4 buys one component of each transfer kind and sums them") {
+  // Cables and switches (issue 39): 0.5 Gbit/s takes the 1 Gbit/s cable (10) and switch (100);
+  // 2 Gbit/s the 10 Gbit/s ones (50 + 300); 20 Gbit/s no cable carries.
+  std::vector<model::PricedCapacity> transfer = {component("cat5e", 1.0e9, 10, "cable"),
+                                                 component("cat6a", 10.0e9, 50, "cable"),
+                                                 component("gige_switch", 1.0e9, 100, "switch"),
+                                                 component("10g_switch", 10.0e9, 300, "switch")};
+  const std::vector<model::PricedCapacity> cpus = {{"cpu", 8.0, 200, {}, {}}};
+  select::CostBreakdown cost = select::rig_cost({1000.0, 62.5e6, 1.0, 2}, transfer, cpus);
+  CHECK(cost.feasible);
+  CHECK(cost.transfer == 10.0 + 100.0);
+  CHECK(cost.transfer_id == "cat5e + gige_switch");
+  CHECK(cost.total == 1000.0 + 110.0 + 200.0);
+  CHECK(select::total_cost({1000.0, 62.5e6, 1.0, 2}, transfer, cpus) == 1310.0);
+  cost = select::rig_cost({1000.0, 250e6, 1.0, 2}, transfer, cpus);
+  CHECK(cost.transfer == 50.0 + 300.0);
+  CHECK(cost.transfer_id == "cat6a + 10g_switch");
+  CHECK_FALSE(select::rig_cost({0.0, 2.5e9, 1.0, 1}, transfer, cpus).feasible);
+  CHECK(std::isinf(select::total_cost({0.0, 2.5e9, 1.0, 1}, transfer, cpus)));
+  // A flat list is one kind: the cheapest item above the load alone, as before.
+  for (model::PricedCapacity& item : transfer) item.kind.clear();
+  CHECK(select::rig_cost({1000.0, 62.5e6, 1.0, 2}, transfer, cpus).transfer == 10.0);
 }
 
 namespace {
@@ -80,8 +120,10 @@ select::SearchProblem random_problem(std::mt19937& rng) {
     sector.min_floor = 0.6 * unit(rng);
     problem.sectors.push_back(sector);
   }
-  problem.transfer = {{"slow", 4e8 + 4e8 * unit(rng), 0, {}}, {"fast", 4e9, 100 * unit(rng), {}}};
-  problem.cpus = {{"a", 1.0 + 2 * unit(rng), 200, {}}, {"b", 6.0, 400 + 400 * unit(rng), {}}};
+  problem.transfer = {{"slow", 4e8 + 4e8 * unit(rng), 0, {}, {}},
+                      {"fast", 4e9, 100 * unit(rng), {}, {}}};
+  problem.cpus = {{"a", 1.0 + 2 * unit(rng), 200, {}, {}},
+                  {"b", 6.0, 400 + 400 * unit(rng), {}, {}}};
   return problem;
 }
 
@@ -92,8 +134,8 @@ const geometry::RasterGrid kHandGrid{4, 2};
 select::SearchProblem one_angle_problem() {
   select::SearchProblem problem;
   problem.grids = {kHandGrid};
-  problem.transfer = {{"onboard", 1e9, 0, {}}};
-  problem.cpus = {{"cpu", 4.0, 100, {}}};
+  problem.transfer = {{"onboard", 1e9, 0, {}, {}}};
+  problem.cpus = {{"cpu", 4.0, 100, {}, {}}};
   return problem;
 }
 
@@ -133,6 +175,28 @@ TEST_CASE("branch and bound finds the brute-force optimum on 200 random small ca
     CHECK(bounded.nodes <= exhaustive.nodes * 3);
   }
   CHECK(feasible >= 50);  // enough of them have a solution to compare costs
+}
+
+TEST_CASE("branch and bound finds the brute-force optimum with transfer kinds (eq. 4)") {
+  std::mt19937 rng(20261128);  // seeded: the same catalogs every run
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int feasible = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    INFO("trial " << trial);
+    select::SearchProblem problem = random_problem(rng);
+    problem.transfer = {component("cable_slow", 3e8 + 6e8 * unit(rng), 0, "cable"),
+                        component("cable_fast", 4e9, 30 * unit(rng), "cable"),
+                        component("switch_slow", 3e8 + 6e8 * unit(rng), 20, "switch"),
+                        component("switch_fast", 4e9, 20 + 150 * unit(rng), "switch")};
+    const select::SearchResult exhaustive = select::brute_force(problem);
+    const select::SearchResult bounded = select::branch_and_bound(problem);
+    REQUIRE(bounded.found == exhaustive.found);
+    if (!exhaustive.found) continue;
+    ++feasible;
+    CHECK(bounded.cost.total == exhaustive.cost.total);
+    CHECK(bounded.margins == exhaustive.margins);
+  }
+  CHECK(feasible >= 30);
 }
 
 TEST_CASE("an excluded assignment is skipped and the next cheapest returned") {
@@ -232,7 +296,8 @@ TEST_CASE("a robust rig needs a second sensor where one suffices otherwise") {
   CHECK(robust.choice == std::vector<int>{0, 0});
 }
 
-TEST_CASE("the robustness bounds keep the brute-force optimum: n-1 alone, a condition alone, both") {
+TEST_CASE(
+    "the robustness bounds keep the brute-force optimum: n-1 alone, a condition alone, both") {
   // Issue 32's bounds (every undecided slot's failure survivable from the rest; two covers
   // under n-1, one surviving under a condition, each with its least price, bandwidth and CPU
   // load) and the cut of equal-cost subtrees that cannot widen the margins are exact only
@@ -258,7 +323,8 @@ TEST_CASE("the robustness bounds keep the brute-force optimum: n-1 alone, a cond
     // Equal prices make ties, so the margin cut is exercised.
     if (trial % 2 == 0) {
       for (auto& slot : problem.slots)
-        for (select::SearchOption& option : slot) option.price = 300 * std::max(1.0, std::round(option.price / 300));
+        for (select::SearchOption& option : slot)
+          option.price = 300 * std::max(1.0, std::round(option.price / 300));
     }
     const select::SearchResult exhaustive = select::brute_force(problem);
     const select::SearchResult bounded = select::branch_and_bound(problem);

@@ -93,3 +93,29 @@ TEST_CASE("select --tolerance: the requirements hold over the box, not only nomi
   CHECK(robust.tolerance.front().floor.share == Approx(floor_share(44)).margin(1e-6));
   CHECK(robust.tolerance.front().pass);
 }
+
+TEST_CASE("catalog transfer grouped by kind (eq. 4) is read kind by kind, in order",
+          "[select][io]") {
+  test::TempFolder folder;
+  folder.write("sensors.yaml", library_with_wide());
+  std::string text = kToleranceCatalog;
+  text.replace(text.find("transfer:\n  - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}\n"),
+               std::string("transfer:\n  - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}\n")
+                   .size(),
+               "transfer:\n  cable:\n    - {id: cat5e, capacity_bps: 1.0e9, price_usd: 10}\n"
+               "  switch:\n    - {id: gige, capacity_bps: 1.0e9, price_usd: 100}\n"
+               "    - {id: tengig, capacity_bps: 1.0e10, price_usd: 300}\n");
+  const model::Catalog catalog = io::load_catalog(folder.write("kinds.yaml", text));
+  REQUIRE(catalog.transfer.size() == 3);
+  CHECK(catalog.transfer[0].kind == "cable");
+  CHECK(catalog.transfer[1].kind == "switch");
+  CHECK(catalog.transfer[2].id == "tengig");
+  CHECK(catalog.transfer[2].where.line == 19);  // the file's text above: line 19
+  // A kind with no list is named at its line.
+  std::string bad = text;
+  bad.replace(bad.find("  cable:\n    - {id: cat5e, capacity_bps: 1.0e9, price_usd: 10}\n"),
+              std::string("  cable:\n    - {id: cat5e, capacity_bps: 1.0e9, price_usd: 10}\n")
+                  .size(),
+              "  cable: 5\n");
+  CHECK_THROWS_AS(io::load_catalog(folder.write("bad.yaml", bad)), model::InputError);
+}

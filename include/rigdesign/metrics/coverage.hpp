@@ -43,6 +43,10 @@ struct AngleCoverage {
   double floor_raster = 0.0;
   double redundancy = 0.0;  ///< share of the cross-section seen by two or more sensors (raster)
   std::vector<bool> mount_sees;   ///< per mount: sees part of this cross-section
+  /// Per mount, its own SC complete and floor here (raster): which mount a sector's verdict
+  /// rests on (issue 39: CI annotations on the mount's line).
+  std::vector<double> mount_complete;
+  std::vector<double> mount_floor;
   int coarsest_mount = -1;        ///< index of the covering mount with the widest ray spacing
   double coarsest_spacing = 0.0;  ///< [m] its spacing at its distance of interest
   int noisiest_mount = -1;

@@ -25,11 +25,21 @@ namespace rigdesign::metrics {
 struct PoseError {
   model::Vec3 xyz = model::Vec3::Zero();
   model::Vec3 rpy = model::Vec3::Zero();
+  /// The mode's FOV at its datasheet narrowest (SensorMode::narrowest): with a tolerance
+  /// stated, every pose of a mount whose mode has a spread is judged so, a narrower FOV seeing
+  /// a subset of a wider one's directions.
+  bool narrowest_fov = false;
 };
 
 /// The errors tried for a tolerance box: 2^k corners and 2k face centres of its k axes with a
 /// half-width above 0 (the two coincide for k = 1), in a fixed order.
 std::vector<PoseError> tolerance_samples(const model::PoseTolerance& tolerance);
+
+/// The errors tried for a mount with `tolerance` whose mode is `mode`: the box's samples, all
+/// at the narrowest FOV when the mode has a spread (then the nominal pose too). Empty when
+/// neither the box nor the FOV varies.
+std::vector<PoseError> mount_error_samples(const model::PoseTolerance& tolerance,
+                                           const model::SensorMode& mode);
 
 /// `nominal` with `error` applied.
 model::Pose3 with_error(const model::Pose3& nominal, const PoseError& error);
@@ -68,5 +78,24 @@ struct SectorTolerance {
 std::vector<SectorTolerance> tolerance_coverage(
     const model::Rig& rig, const model::SensorLibrary& library,
     const std::vector<model::SectorRequirement>& sectors, const CoverageSettings& settings = {});
+
+/// SC margin against one rotation error of one mount (issue 38: "a plot of SC margin against
+/// pitch/yaw error per mount"): the mount alone turned by each error, the others nominal,
+/// exact path at the sectors' sampled azimuths.
+struct ErrorSweep {
+  std::string mount_id;
+  int axis = 1;                  ///< 0 roll, 1 pitch, 2 yaw (about the sensor's own axes)
+  double half_width = 0.0;       ///< [rad] the mount's tolerance about that axis
+  std::vector<double> errors;    ///< [rad] from -3 to +3 half-widths
+  std::vector<double> smallest;  ///< the smallest margin over the sectors at each [share]
+  /// Each sector's margin at each error: min(complete - required, floor - required).
+  std::vector<std::pair<std::string, std::vector<double>>> sectors;
+};
+
+/// Pitch and yaw sweeps of every mount with a non-zero pitch or yaw tolerance, `steps` errors
+/// each (odd: the nominal pose is one). Empty without sectors or such tolerances.
+std::vector<ErrorSweep> tolerance_sweeps(const model::Rig& rig, const model::SensorLibrary& library,
+                                         const std::vector<model::SectorRequirement>& sectors,
+                                         const CoverageSettings& settings = {}, int steps = 13);
 
 }  // namespace rigdesign::metrics

@@ -59,13 +59,17 @@ struct MountingSlot {
   SourceLocation where;
 };
 
-/// A transfer component or CPU: the cheapest one whose capacity exceeds the rig's load is
-/// bought (paper 1, eqs. 3 and 6).
+/// A transfer component or CPU: of each kind, the cheapest one whose capacity exceeds the
+/// rig's load is bought (paper 1, eqs. 3, 4 and 6): a CPU, and per transfer kind (cable,
+/// switch, interface ...) one component, the transfer cost being their sum.
 struct PricedCapacity {
   std::string id;
   double capacity = 0.0;  ///< transfer: [bit/s]; CPU: [core-equivalents]
   double price = 0.0;     ///< [USD]
   SourceLocation where;
+  /// The component kind (`transfer:` grouped by kind); empty: the one kind of a flat list.
+  /// Items of one kind are contiguous.
+  std::string kind;
 };
 
 struct Catalog {

@@ -125,12 +125,18 @@ struct SensorMode {
   DriverCpuLoad driver_cpu;
   /// The light it sends out; nothing for a passive sensor (or one whose file says nothing).
   std::optional<Emitter> emitter;
+  /// [rad] How much narrower than nominal a unit's full horizontal and vertical angles may be
+  /// (a datasheet's "87 +- 3 deg"): the mounting tolerance judges the narrowest (issue 38).
+  std::optional<std::array<double, 2>> fov_spread;
   SourceLocation where;
 
   /// The coarser of the two ray spacings [rad]: what sets the smallest obstacle seen.
   double worst_angular_resolution() const;
   /// A camera mode (FovShape::is_camera of its FOV shape).
   bool is_camera() const { return fov.shape().is_camera(); }
+  /// This mode with its FOV at the datasheet's narrowest (fov_spread off each full angle of a
+  /// pyramid, the horizontal one off a cone's apex); itself without a spread.
+  SensorMode narrowest() const;
 };
 
 struct Price {

@@ -1,6 +1,7 @@
 #pragma once
 /// Paper 1's cost model, eqs. 1-7 (DESIGN.md section 5): C_s = sum of sensor prices;
-/// B = sum of w_i f_i; C_t = the cheapest transfer hardware whose capacity exceeds B;
+/// B = sum of w_i f_i; C_t = the sum over the m transfer component kinds (eq. 4: cables,
+/// switches, interfaces ...) of the cheapest component of each kind whose capacity exceeds B;
 /// U = sum of (U_p,i + U_f,i); C_c = the cheapest CPU whose capacity exceeds U;
 /// C = C_s + C_t + C_c.
 #include <string>
@@ -32,7 +33,13 @@ struct CostBreakdown {
 const model::PricedCapacity* cheapest_exceeding(const std::vector<model::PricedCapacity>& items,
                                                 double load);
 
-/// C for a load; transfer capacities are bit/s and the bandwidth bytes/s.
+/// Of each kind of `items` (contiguous runs of one `kind`), the cheapest whose capacity exceeds
+/// `load`; empty when some kind has none (or there are no items).
+std::vector<const model::PricedCapacity*> cheapest_per_kind(
+    const std::vector<model::PricedCapacity>& items, double load);
+
+/// C for a load; transfer capacities are bit/s and the bandwidth bytes/s. transfer_id names
+/// each kind's component, joined by " + ".
 CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
                        const std::vector<model::PricedCapacity>& cpus);
 

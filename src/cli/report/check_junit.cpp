@@ -1,5 +1,6 @@
 #include "report/check_junit.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -33,18 +34,18 @@ std::string seconds_text(double seconds) {
 }
 
 // file="..." line="..." as the JUnit readers of GitLab, Jenkins and GitHub's test reporters take
-// them (the Ant schema has no such attributes; the xunit/pytest dialect does).
+// them (the Ant schema has no such attributes; the xunit/pytest dialect does). Every case has
+// both (issue 39): a finding about a whole file points at its first line.
 std::string location_attributes(const model::SourceLocation& where) {
-  std::string text = " file=\"" + model::xml_escaped(where.file) + "\"";
-  if (where.line > 0) text += " line=\"" + std::to_string(where.line) + "\"";
-  return text;
+  return " file=\"" + model::xml_escaped(where.file) + "\" line=\"" +
+         std::to_string(std::max(1, where.line)) + "\"";
 }
 
 // The file's validity: an error with every problem when invalid, else what was checked.
 void validity_case(const FileReport& report, const std::string& name, std::ostream& xml) {
   const model::SourceLocation where = report.invalid() && !report.diagnostics.empty()
                                           ? report.diagnostics.front().where
-                                          : model::SourceLocation{report.file, 0, 0};
+                                          : model::SourceLocation{report.file, 1, 1};
   xml << "    <testcase classname=\"" << name << "\" name=\"valid "
       << model::xml_escaped(report.kind ? to_string(*report.kind) : "file") << "\""
       << location_attributes(where) << " time=\"" << seconds_text(report.load_seconds) << "\">\n";

@@ -49,6 +49,33 @@ model::PricedCapacity read_priced(MapReader& reader, const std::string& capacity
   return item;
 }
 
+/// `transfer:` as paper 1's eq. 4 has it, a map of component kinds (cable, switch, interface
+/// ...) each with its items, one of each bought; or a flat list, read as one kind.
+void read_transfer(MapReader& top, model::Catalog& catalog) {
+  const std::string expected =
+      "a list of transfer hardware, or a map from component kind (cable, switch, interface) "
+      "to such a list";
+  const YAML::Node node = top.node("transfer");
+  if (node.IsMap()) {
+    auto kinds = top.map("transfer", Need::required, expected);
+    if (!kinds) return;
+    for (const auto& entry : node) {
+      const std::string kind = entry.first.Scalar();
+      const std::vector<MapReader> items =
+          kinds->maps(kind, Need::required, "a list of " + kind + " components");
+      kinds->require(!items.empty(), kind, "is empty", "at least one component of the kind");
+      for (MapReader reader : items) {
+        model::PricedCapacity item = read_priced(reader, "capacity_bps", "bits per second, > 0");
+        item.kind = kind;
+        catalog.transfer.push_back(std::move(item));
+      }
+    }
+    return;
+  }
+  for (MapReader& reader : top.maps("transfer", Need::required, expected))
+    catalog.transfer.push_back(read_priced(reader, "capacity_bps", "bits per second, > 0"));
+}
+
 /// The measured loads file named by `filtering_loads` (relative to the catalog), if any.
 std::optional<model::FilteringLoads> read_measured_loads(MapReader& top,
                                                          const std::string& catalog_path) {
@@ -190,9 +217,7 @@ model::Catalog load_catalog(const std::string& path) {
   }
   top.require(!catalog.slots.empty() || !top.has("slots"), "slots", "is empty",
               "at least one mounting slot");
-  for (MapReader& reader : top.maps("transfer", Need::required, "a list of transfer hardware")) {
-    catalog.transfer.push_back(read_priced(reader, "capacity_bps", "bits per second, > 0"));
-  }
+  read_transfer(top, catalog);
   for (MapReader& reader : top.maps("cpus", Need::required, "a list of CPUs")) {
     catalog.cpus.push_back(
         read_priced(reader, "cores", "core-equivalents of the reference machine, > 0"));

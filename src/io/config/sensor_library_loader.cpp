@@ -29,6 +29,7 @@ const std::vector<std::string> kModeKeys = {"id",
                                             "light",
                                             "driver_cpu",
                                             "emitter",
+                                            "fov_spread_deg",
                                             "note"};
 
 const std::vector<std::string> kMitigations = {"sync", "delay", "phase_lock", "channels",
@@ -227,6 +228,23 @@ model::SensorMode read_mode(MapReader& reader, std::optional<MapReader>& default
     mode.driver_cpu = read_driver_cpu(*cpu);
   }
   mode.emitter = read_emitter(source_of("emitter", reader, defaults));
+  MapReader& spread_from = source_of("fov_spread_deg", reader, defaults);
+  if (const auto spread = spread_from.numbers(
+          "fov_spread_deg", Need::optional, 2, 2,
+          "[horizontal, vertical]: degrees a unit's full angles may fall short, >= 0")) {
+    const bool camera = mode.fov.shape().is_camera();
+    const bool fits = (*spread)[0] >= 0 && (*spread)[1] >= 0 &&
+                      model::deg_to_rad((*spread)[0]) < mode.fov.horizontal() &&
+                      model::deg_to_rad((*spread)[1]) < mode.fov.vertical();
+    spread_from.require(
+        camera && fits, "fov_spread_deg",
+        camera ? "is negative or not below the FOV's angles" : "is given for a scanner",
+        "[horizontal, vertical] in degrees, >= 0 and below the FOV's angles, "
+        "for a camera");
+    if (camera && fits)
+      mode.fov_spread =
+          std::array<double, 2>{model::deg_to_rad((*spread)[0]), model::deg_to_rad((*spread)[1])};
+  }
   source_of("note", reader, defaults).text("note", Need::optional);
   reader.reject_keys_other_than(kModeKeys);
   return mode;
