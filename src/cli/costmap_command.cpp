@@ -174,7 +174,7 @@ nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig
     trajectory.push_back(
         {sample.time, sample.pose.position.x(), sample.pose.position.y(), sample.pose.yaw});
   }
-  nlohmann::json json = {
+  nlohmann::json summary = {
       {"rig", rig.name},
       {"scenario", options.scenario},
       {"seed", options.seed},
@@ -222,7 +222,7 @@ nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig
       {"stops", stops_json(result)},
       {"trajectory", trajectory},
   };
-  return json;
+  return summary;
 }
 
 VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const RigInputs& inputs,

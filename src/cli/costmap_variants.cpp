@@ -168,7 +168,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
   table.add_column("recovery [s]", TextTable::Align::right);
   table.add_column("drove off", TextTable::Align::right);
   table.add_column("collision just below", TextTable::Align::left);
-  nlohmann::json json = nlohmann::json::array();
+  nlohmann::json outcomes_json = nlohmann::json::array();
   for (const scenarios::VariantOutcome& outcome : outcomes) {
     const scenarios::VariantMeans means = scenarios::means_of(outcome.runs);
     const std::string of =
@@ -181,7 +181,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
          ran ? fixed(means.recovery_seconds, 1) : "-",
          ran ? std::to_string(means.drove_off) + "/" + std::to_string(outcome.runs.size()) : "-",
          below_text(outcome)});
-    json.push_back(outcome_json(outcome));
+    outcomes_json.push_back(outcome_json(outcome));
   }
   table.print(out, "  ");
   out << "paper 2, Table 1 (Elektron, SICK LMS100 270 deg + Kinect 57 deg, office and workshop, "
@@ -199,7 +199,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
   for (const scenarios::VariantOutcome& outcome : outcomes) made += outcome.runs_made;
   out << "  " << made << " runs in " << fixed(seconds, 1) << " s on " << settings.threads
       << " thread(s)\n";
-  io::write_file_atomically(folder + "/variants.json", json.dump(2) + "\n");
+  io::write_file_atomically(folder + "/variants.json", outcomes_json.dump(2) + "\n");
   out << "  wrote " << folder << "/variants.json\n";
 }
 

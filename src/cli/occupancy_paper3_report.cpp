@@ -108,7 +108,8 @@ void print_paper3_report(std::span<const occupancy::Paper3Sweep> sweeps,
 nlohmann::json paper3_report_json(std::span<const occupancy::Paper3Sweep> sweeps,
                                   std::span<const occupancy::OccupancyRun> runs) {
   const auto lookup = [&](const std::string& name) { return run_named(runs, name); };
-  nlohmann::json json = {{"sweeps", nlohmann::json::array()}, {"trends", nlohmann::json::array()}};
+  nlohmann::json report = {{"sweeps", nlohmann::json::array()},
+                           {"trends", nlohmann::json::array()}};
   for (const occupancy::Paper3Sweep& sweep : sweeps) {
     nlohmann::json rows = nlohmann::json::array();
     for (const occupancy::Paper3Setting& row : sweep.rows) {
@@ -123,18 +124,18 @@ nlohmann::json paper3_report_json(std::span<const occupancy::Paper3Sweep> sweeps
                       {"points_per_second", run->all.points_per_second},
                       {"memory_bytes", run->memory_bytes}});
     }
-    json["sweeps"].push_back(
+    report["sweeps"].push_back(
         {{"name", sweep.name}, {"table", sweep.table}, {"swept", sweep.swept}, {"rows", rows}});
   }
   for (const occupancy::Paper3Trend& trend : occupancy::paper3_trends(sweeps, lookup)) {
-    json["trends"].push_back({{"statement", trend.statement},
-                              {"sweeps", trend.sweeps},
-                              {"holds_in_paper", trend.holds_in_paper},
-                              {"holds_here", trend.holds_here},
-                              {"paper", trend.paper_detail},
-                              {"rigdesign", trend.our_detail}});
+    report["trends"].push_back({{"statement", trend.statement},
+                                {"sweeps", trend.sweeps},
+                                {"holds_in_paper", trend.holds_in_paper},
+                                {"holds_here", trend.holds_here},
+                                {"paper", trend.paper_detail},
+                                {"rigdesign", trend.our_detail}});
   }
-  return json;
+  return report;
 }
 
 }  // namespace rigdesign::cli
