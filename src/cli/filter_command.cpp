@@ -55,7 +55,7 @@ model::Pipeline pipeline_named(const std::string& name) {
   throw model::InputError(model::Diagnostic{{"(command line)", 0, 0},
                                             "--pipeline",
                                             "'" + name + "' is neither a preset nor a file",
-                                            "P1, P2, P3, P4 or a pipeline YAML file"});
+                                            "P1, P2, P3, P4, P2_paper2 or a pipeline YAML file"});
 }
 
 // Merged into what the file already holds, so loads measured on several rigs collect there.
@@ -160,8 +160,8 @@ FilterCloudReport filter_cloud(const std::string& path, const FilterOptions& opt
   if (mode != nullptr) {
     report.load =
         CloudLoad{mount->id, mode->frequency,
-                  filters::filtering_load(timing.total.median, static_cast<double>(cloud.size()),
-                                          mode->frequency)};
+                  filters::pipeline_load(timing, pipeline, static_cast<double>(cloud.size()),
+                                         mode->frequency)};
   }
   if (!options.out.empty()) {
     io::prepare_output_folder(options.out, "--out");
@@ -234,7 +234,7 @@ Command setup_filter(CLI::App& parent) {
                   "Simulated frames per sensor with --scene (default 20)");
   app->add_option("--seed", options->seed, "Seed of the simulated scene and noise (default 1)");
   app->add_option("--pipeline", options->pipeline,
-                  "P1, P2, P3, P4 or a pipeline YAML file (default P4)");
+                  "P1, P2, P3, P4, P2_paper2 or a pipeline YAML file (default P4)");
   app->add_option("rig,--rig", options->rig,
                   "Rig whose mount recorded the clouds (positional or --rig)");
   app->add_option("--mount", options->mount,

@@ -19,32 +19,36 @@ model::PointCloud without(const model::PointCloud& cloud,
   result.origin = cloud.origin;
   result.orientation = cloud.orientation;
   result.points.reserve(cloud.size() - std::min(cloud.size(), removed.size()));
-  std::size_t next = 0;
-  for (std::uint32_t i = 0; i < cloud.size(); ++i) {
-    if (next < removed.size() && removed[next] == i) {
-      ++next;
-      continue;
-    }
-    result.points.push_back(cloud.points[i]);
+  // The runs between removed points copied whole: a floor is a few thousand points of a cloud
+  // of tens of thousands, so most of the cloud goes in a few long copies.
+  std::size_t from = 0;
+  for (const std::uint32_t i : removed) {
+    if (i < from) continue;  // a repeated index
+    result.points.insert(result.points.end(),
+                         cloud.points.begin() + static_cast<std::ptrdiff_t>(from),
+                         cloud.points.begin() + static_cast<std::ptrdiff_t>(i));
+    from = i + std::size_t{1};
   }
+  result.points.insert(result.points.end(),
+                       cloud.points.begin() + static_cast<std::ptrdiff_t>(from),
+                       cloud.points.end());
   return result;
 }
 
-// One pass that keeps what lies beyond `threshold` of the plane: no index list to build, sort
-// and walk again as `without` needs for a subset's inliers.
-model::PointCloud far_from_plane(const model::PointCloud& cloud, const PlaneFit& plane,
-                                 double threshold) {
-  model::PointCloud result;
-  result.origin = cloud.origin;
-  result.orientation = cloud.orientation;
-  result.points.reserve(cloud.size());
+// The slice's points within `threshold` of the plane, in cloud order (the distance in float,
+// as PCL's floor removal and the previous one-pass cut computed it).
+std::vector<std::uint32_t> slice_near_plane(const model::PointCloud& cloud,
+                                            const std::vector<std::uint32_t>& slice,
+                                            const PlaneFit& plane, double threshold) {
   const Eigen::Vector3f normal = plane.normal.cast<float>();
   const float offset = static_cast<float>(plane.offset);
   const float limit = static_cast<float>(threshold);
-  for (const model::Point3f& p : cloud.points) {
-    if (std::abs(normal.dot(p) + offset) > limit) result.points.push_back(p);
+  std::vector<std::uint32_t> near;
+  near.reserve(slice.size());
+  for (const std::uint32_t i : slice) {
+    if (std::abs(normal.dot(cloud.points[i]) + offset) <= limit) near.push_back(i);
   }
-  return result;
+  return near;
 }
 
 }  // namespace
@@ -57,14 +61,17 @@ model::PointCloud remove_floor_1(const model::PointCloud& cloud,
   return without(cloud, floor.inliers);
 }
 
+// Paper 1, section 3: floor removal 1 "enhanced": the plane is searched on a coarse copy of
+// the slice (a few hundred voxel centroids instead of the slice's thousands of points).
 model::PointCloud remove_floor_2(const model::PointCloud& cloud,
                                  const model::FloorRemoval2Params& params) {
+  const std::vector<std::uint32_t> slice = pass_through_indices(cloud, params.slice);
   model::VoxelGridParams coarse;
   coarse.leaf = params.coarse_leaf;
-  const model::PointCloud sparse = voxel_grid(cloud, coarse);
+  const model::PointCloud sparse = voxel_grid(select_points(cloud, slice), coarse);
   const PlaneFit floor = fit_plane_ransac(sparse, params.ransac);
   if (!floor.found) return cloud;
-  return far_from_plane(cloud, floor, params.ransac.threshold);
+  return without(cloud, slice_near_plane(cloud, slice, floor, params.ransac.threshold));
 }
 
 model::PointCloud mark_negative_obstacles(const model::PointCloud& cloud,

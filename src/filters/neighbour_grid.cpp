@@ -175,8 +175,7 @@ std::size_t NeighbourGrid::gather_below(std::uint32_t rank, float radius, float 
       const float chord = std::sqrt(room);
       const int x0 =
           std::max(from.x(), static_cast<int>((p.x() - chord - low_.x()) * inverse_cell_));
-      const int x1 =
-          std::min(to.x(), static_cast<int>((p.x() + chord - low_.x()) * inverse_cell_));
+      const int x1 = std::min(to.x(), static_cast<int>((p.x() + chord - low_.x()) * inverse_cell_));
       if (x0 > x1) continue;
       const std::uint32_t begin = cell_start_[cell_of({x0, y, z})];
       const std::uint32_t end = cell_start_[cell_of({x1, y, z}) + 1];
@@ -222,6 +221,62 @@ void NeighbourGrid::nearest(std::uint32_t rank, int k, NeighbourScratch& scratch
     }
     bound *= 4.0f;  // too few inside: twice the radius
   }
+}
+
+bool NeighbourGrid::has_neighbours(std::uint32_t rank, float squared_radius,
+                                   std::size_t enough) const {
+  if (enough == 0) return true;
+  const float px = x_[rank], py = y_[rank], pz = z_[rank];
+  const Eigen::Array3f position(px, py, pz);
+  // The cells are taken for a ball a hair larger than the radius, so float rounding in the
+  // cell test cannot drop a point the distance test keeps (as in `nearest`).
+  const float radius = std::sqrt(squared_radius) * (1.0f + 1e-5f) + 1e-7f;
+  const Eigen::Array3i from = ((position - radius - low_) * inverse_cell_).cast<int>().max(0);
+  const Eigen::Array3i to = ((position + radius - low_) * inverse_cell_).cast<int>().min(dims_ - 1);
+  const Eigen::Array3i own = cell_index(position);
+  const auto gap = [&](int axis, int index) {  // from the point to the cell's slab on one axis
+    const float lower = low_[axis] + static_cast<float>(index) * cell_;
+    return std::max({0.0f, lower - position[axis], position[axis] - (lower + cell_)});
+  };
+  // Counted in blocks the compiler vectorises, checked after each: a dense row stops early.
+  constexpr std::uint32_t kBlock = 32;
+  std::size_t found = 0;
+  const auto enough_in_row = [&](int y, int z) {
+    const float y_gap = gap(1, y);
+    const float z_gap = gap(2, z);
+    const float room = radius * radius - z_gap * z_gap - y_gap * y_gap;
+    if (room < 0) return false;
+    const float chord = std::sqrt(room);
+    const int x0 = std::max(from.x(), static_cast<int>((px - chord - low_.x()) * inverse_cell_));
+    const int x1 = std::min(to.x(), static_cast<int>((px + chord - low_.x()) * inverse_cell_));
+    if (x0 > x1) return false;
+    const std::uint32_t begin = cell_start_[cell_of({x0, y, z})];
+    const std::uint32_t end = cell_start_[cell_of({x1, y, z}) + 1];
+    // The query counts itself (distance 0) when its row holds it: one more is needed there.
+    const std::size_t needed = enough + (rank >= begin && rank < end ? 1 : 0);
+    for (std::uint32_t block = begin; block < end; block += kBlock) {
+      const std::uint32_t block_end = std::min(end, block + kBlock);
+      std::size_t inside = 0;
+      for (std::uint32_t i = block; i < block_end; ++i) {
+        const float dx = x_[i] - px;
+        const float dy = y_[i] - py;
+        const float dz = z_[i] - pz;
+        inside += dx * dx + dy * dy + dz * dz <= squared_radius ? 1 : 0;
+      }
+      found += inside;
+      if (found >= needed) return true;
+    }
+    if (needed > enough) --found;  // the query itself, counted above
+    return false;
+  };
+  if (enough_in_row(own.y(), own.z())) return true;
+  for (int z = from.z(); z <= to.z(); ++z) {
+    for (int y = from.y(); y <= to.y(); ++y) {
+      if (y == own.y() && z == own.z()) continue;
+      if (enough_in_row(y, z)) return true;
+    }
+  }
+  return false;
 }
 
 void build_grid_for(const std::vector<model::Point3f>& points, int per_cell, NeighbourGrid& grid) {

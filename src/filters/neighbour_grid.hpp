@@ -35,6 +35,11 @@ class NeighbourGrid {
   /// radius tight.
   void nearest(std::uint32_t rank, int k, NeighbourScratch& scratch) const;
 
+  /// Whether at least `enough` other points lie within squared distance `squared_radius`
+  /// (inclusive) of the point at position `rank` of the cell order. Counts row by row, the
+  /// query's own row first, and stops as soon as `enough` are found.
+  bool has_neighbours(std::uint32_t rank, float squared_radius, std::size_t enough) const;
+
   /// The input index of the point at position `rank` of the cell order.
   std::uint32_t index_at(std::uint32_t rank) const { return sorted_[rank]; }
 

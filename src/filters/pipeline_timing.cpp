@@ -1,5 +1,9 @@
 #include "rigdesign/filters/pipeline_timing.hpp"
 
+#include <algorithm>
+#include <optional>
+#include <variant>
+
 #include "rigdesign/model/statistics.hpp"
 
 namespace rigdesign::filters {
@@ -46,21 +50,47 @@ FilteringLoadRate filtering_load(double median_seconds_per_frame, double points_
           points_per_frame > 0 ? median_seconds_per_frame / points_per_frame : 0.0};
 }
 
+FilteringLoadRate pipeline_load(const PipelineTiming& timing, const model::Pipeline& pipeline,
+                                double points_per_frame, double frequency) {
+  if (throttled_rate(pipeline, frequency) >= frequency) {
+    return filtering_load(timing.total.median, points_per_frame, frequency);
+  }
+  double cores = 0.0;
+  double rate = frequency;
+  for (std::size_t s = 0; s < pipeline.stages.size() && s < timing.stages.size(); ++s) {
+    cores += timing.stages[s].seconds.median * rate;  // a throttle itself sees every frame
+    if (const auto* throttle = std::get_if<model::ThrottleParams>(&pipeline.stages[s])) {
+      rate = std::min(rate, throttle->rate_hz);
+    }
+  }
+  return {cores, points_per_frame > 0 ? cores / (points_per_frame * frequency) : 0.0};
+}
+
 FramesLoad measure_filtering_load(const model::Pipeline& pipeline,
                                   std::span<const model::PointCloud> frames, double frequency) {
   FramesLoad measured;
   measured.frames = frames.size();
-  std::vector<double> seconds;
-  for (const model::PointCloud& cloud : frames) {
+  PipelineStream stream(pipeline);
+  std::vector<double> passed_seconds;
+  std::vector<double> dropped_seconds;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
     std::vector<StageRun> runs;
-    measured.kept += run_pipeline(pipeline, cloud, &runs).size();
-    measured.points += cloud.size();
-    seconds.push_back(total_seconds(runs));
+    const std::optional<model::PointCloud> result =
+        stream.run(frames[i], frequency > 0 ? static_cast<double>(i) / frequency : 0.0, &runs);
+    measured.points += frames[i].size();
+    (result ? passed_seconds : dropped_seconds).push_back(total_seconds(runs));
+    if (result) measured.kept += result->size();
   }
-  measured.seconds_per_frame = spread_of(seconds);
-  measured.load = filtering_load(
-      measured.seconds_per_frame.median,
-      static_cast<double>(measured.points) / static_cast<double>(frames.size()), frequency);
+  measured.passed = passed_seconds.size();  // at least the first frame
+  measured.seconds_per_frame = spread_of(passed_seconds);
+  const double count = static_cast<double>(frames.size());
+  const double points_per_frame = static_cast<double>(measured.points) / count;
+  // Paper 1, eq. 5, with each kind of frame at its own rate (frames x frequency / count).
+  const double passed_rate = frequency * static_cast<double>(passed_seconds.size()) / count;
+  const double dropped_rate = frequency * static_cast<double>(dropped_seconds.size()) / count;
+  double cores = measured.seconds_per_frame.median * passed_rate;
+  if (!dropped_seconds.empty()) cores += model::median(dropped_seconds) * dropped_rate;
+  measured.load = {cores, points_per_frame > 0 ? cores / (points_per_frame * frequency) : 0.0};
   return measured;
 }
 

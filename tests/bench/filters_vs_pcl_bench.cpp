@@ -5,6 +5,7 @@
 #include <pcl/ModelCoefficients.h>
 #include <pcl/filters/extract_indices.h>
 #include <pcl/filters/passthrough.h>
+#include <pcl/filters/radius_outlier_removal.h>
 #include <pcl/filters/statistical_outlier_removal.h>
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/point_types.h>
@@ -21,6 +22,7 @@
 #include "front_camera_cloud.hpp"
 #include "openmp_regions.hpp"
 #include "rigdesign/filters/pipeline.hpp"
+#include "rigdesign/filters/radius_outlier.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
@@ -115,10 +117,11 @@ PclCloud::Ptr pcl_floor_1(const PclCloud::Ptr& in) {
   return out;
 }
 
-// Floor removal 2 in PCL: a plane within 15 degrees of horizontal on a 30 cm voxel copy (as
-// ours), then every point within 3 cm of it removed.
+// Floor removal 2 in PCL, as ours (paper 1): the slice, a 30 cm voxel copy of it on which a
+// plane within 15 degrees of horizontal is found, then the slice's points within 3 cm of it
+// removed.
 PclCloud::Ptr pcl_floor_2(const PclCloud::Ptr& in) {
-  const PclCloud::Ptr coarse = pcl_voxel(in, 0.30f);
+  const PclCloud::Ptr coarse = pcl_voxel(pcl_pass(in, false), 0.30f);
   pcl::ModelCoefficients c;
   pcl::PointIndices inliers;
   pcl::SACSegmentation<pcl::PointXYZ> segmentation;
@@ -134,9 +137,23 @@ PclCloud::Ptr pcl_floor_2(const PclCloud::Ptr& in) {
   PclCloud::Ptr out(new PclCloud);
   if (c.values.size() != 4) return in;
   for (const auto& p : *in) {
-    if (std::abs(c.values[0] * p.x + c.values[1] * p.y + c.values[2] * p.z + c.values[3]) > 0.03f)
+    const bool in_slice = p.z >= -0.10f && p.z <= 0.10f;
+    if (!in_slice ||
+        std::abs(c.values[0] * p.x + c.values[1] * p.y + c.values[2] * p.z + c.values[3]) > 0.03f)
       out->push_back(p);
   }
+  return out;
+}
+
+// Paper 2's outlier removal in PCL with our defaults (radius 5 cm, 2 neighbours).
+PclCloud::Ptr pcl_radius_outlier(const PclCloud::Ptr& in) {
+  const model::RadiusOutlierParams params;
+  PclCloud::Ptr out(new PclCloud);
+  pcl::RadiusOutlierRemoval<pcl::PointXYZ> filter;
+  filter.setInputCloud(in);
+  filter.setRadiusSearch(params.radius);
+  filter.setMinNeighborsInRadius(params.min_neighbours);
+  filter.filter(*out);
   return out;
 }
 
@@ -223,11 +240,20 @@ void compare(const std::string& name, const model::PointCloud& cloud) {
   rows.push_back(measure(
       "floor_removal_2", [&] { return filters::remove_floor_2(voxelised).size(); },
       [&] { return pcl_floor_2(pcl_voxelised)->size(); }));
-  for (const std::string pipeline : {"P2", "P3", "P4"}) {
+  rows.push_back(measure(
+      "radius_outlier raw", [&] { return filters::radius_outlier_removal(cloud).size(); },
+      [&] { return pcl_radius_outlier(input)->size(); }));
+  rows.push_back(measure(
+      "radius_outlier voxelised", [&] { return filters::radius_outlier_removal(voxelised).size(); },
+      [&] { return pcl_radius_outlier(pcl_voxelised)->size(); }));
+  for (const std::string pipeline : {"P2", "P3", "P4", "P2_paper2"}) {
     const model::Pipeline p = *filters::preset_pipeline(pipeline);
+    // P2_paper2 on one frame: its throttle keeps it (the first of its stream), so the frame is
+    // timed through radius outlier removal and the voxel grid.
     rows.push_back(measure(
         "pipeline " + pipeline, [&] { return filters::run_pipeline(p, cloud).size(); },
         [&] {
+          if (pipeline == "P2_paper2") return pcl_voxel(pcl_radius_outlier(input), 0.03f)->size();
           const PclCloud::Ptr v = pcl_voxel(input, 0.03f);
           if (pipeline == "P2") return pcl_floor_1(pcl_sor(v))->size();
           if (pipeline == "P3") return pcl_sor(pcl_floor_1(v))->size();

@@ -11,10 +11,11 @@ using namespace rigdesign;
 using rigdesign::test::TempFolder;
 
 TEST_CASE("every registered stage loads, runs and keeps its name", "[filters][io]") {
-  // The seven stages of DESIGN.md section 6 and paper 2, in StageParams' order.
+  // The nine stages of DESIGN.md section 6 and paper 2 (its throttle and radius outlier
+  // filter, issue 39), in StageParams' order.
   const std::vector<std::string> documented = {
-      "voxel_grid",      "statistical_outlier", "pass_through",      "ransac_plane",
-      "floor_removal_1", "floor_removal_2",     "negative_obstacles"};
+      "voxel_grid",      "statistical_outlier", "pass_through", "ransac_plane",  "floor_removal_1",
+      "floor_removal_2", "negative_obstacles",  "throttle",     "radius_outlier"};
   CHECK(model::stage_names() == documented);
   model::PointCloud cloud;
   for (int i = 0; i < 50; ++i)
@@ -51,14 +52,16 @@ TEST_CASE("an unknown stage names the registered ones", "[filters][io]") {
   }
 }
 
-TEST_CASE("statistical_outlier reads a thread count and refuses one out of range", "[filters][io]") {
+TEST_CASE("statistical_outlier reads a thread count and refuses one out of range",
+          "[filters][io]") {
   TempFolder folder;
   const model::Pipeline two = io::load_pipeline(folder.write(
       "two.yaml", "name: two\nstages:\n  - statistical_outlier: {neighbours: 8, threads: 2}\n"));
   REQUIRE(two.stages.size() == 1);
   CHECK(std::get<model::StatisticalOutlierParams>(two.stages[0]).threads == 2);
-  CHECK(std::get<model::StatisticalOutlierParams>(filters::with_threads(two, 3).stages[0])
-            .threads == 3);
+  CHECK(
+      std::get<model::StatisticalOutlierParams>(filters::with_threads(two, 3).stages[0]).threads ==
+      3);
   for (const std::string bad : {"0", "65", "two"}) {
     const std::string path = folder.write(
         "bad.yaml", "name: bad\nstages:\n  - statistical_outlier:\n      threads: " + bad + "\n");

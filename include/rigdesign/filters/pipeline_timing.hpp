@@ -42,15 +42,27 @@ struct FilteringLoadRate {
 FilteringLoadRate filtering_load(double median_seconds_per_frame, double points_per_frame,
                                  double frequency);
 
+/// U_f of a pipeline timed on one cloud (time_pipeline) for a sensor delivering `frequency`
+/// [Hz]: each stage's median time at the rate of the frames it sees, the sensor's before the
+/// first throttle stage and the throttled rate (throttled_rate) after it. Without a throttle
+/// stage, filtering_load(timing.total.median, ...), unchanged.
+FilteringLoadRate pipeline_load(const PipelineTiming& timing, const model::Pipeline& pipeline,
+                                double points_per_frame, double frequency);
+
 /// One sensor's simulated frames, each once through the pipeline.
 struct FramesLoad {
   std::size_t frames = 0;
-  std::size_t points = 0;  ///< delivered, all frames
-  std::size_t kept = 0;    ///< left after the pipeline, all frames
-  TimeSpread seconds_per_frame;
+  std::size_t passed = 0;        ///< frames no throttle stage dropped (all without a throttle)
+  std::size_t points = 0;        ///< delivered, all frames
+  std::size_t kept = 0;          ///< left after the pipeline, all frames
+  TimeSpread seconds_per_frame;  ///< over the frames that passed
+  /// Median time of the passed frames x their rate, plus the dropped frames' median (the
+  /// stages before the throttle) x theirs.
   FilteringLoadRate load;
 };
-/// `frames` must not be empty; `frequency` [Hz] is the sensor mode's frame rate.
+/// `frames` must not be empty; `frequency` [Hz] is the sensor mode's frame rate: frame i is
+/// taken at i / frequency and the frames run as one stream (PipelineStream), so throttle
+/// stages keep their share.
 FramesLoad measure_filtering_load(const model::Pipeline& pipeline,
                                   std::span<const model::PointCloud> frames, double frequency);
 

@@ -72,14 +72,18 @@ struct FloorRemoval1Params {
   RansacPlaneParams ransac;
 };
 
-/// Floor removal 2: the plane fitted on a copy voxelised at V2 = 30 cm, then every point
-/// within T of it removed. The plane must be near-horizontal (RANSAC ignores hypotheses
-/// tilted more than `ransac.max_tilt`, 15 degrees by default) so a wall cannot win.
+/// Floor removal 2, paper 1's "enhanced" floor removal 1: the same pass-through slice where
+/// the floor is searched, a copy of the slice voxelised at V2 = 30 cm on which RANSAC finds
+/// the plane, then every point of the slice within T of that plane removed. Nothing outside
+/// the slice is ever removed (a table top, a bed or a loading dock is not the floor). Inside
+/// the slice the plane must also be near-horizontal: RANSAC ignores hypotheses tilted more
+/// than `ransac.max_tilt` (15 degrees by default), a guard against a ramp or a low box side.
 struct FloorRemoval2Params {
   static constexpr std::string_view kName = "floor_removal_2";  ///< its name in pipelines
-  double coarse_leaf = 0.30;                                    ///< V2 [m]
-  /// All I hypotheses (confidence 1): the 30 cm copy holds a few hundred points, so the early
-  /// stop would save little and the plane it keeps could differ more from PCL's.
+  PassThroughParams slice;                                      ///< z in [-10, 10] cm
+  double coarse_leaf = 0.30;                                    ///< V2 [m]; > 0
+  /// All I hypotheses (confidence 1): the 30 cm copy of the slice holds a few hundred points,
+  /// so the early stop would save little and the plane it keeps could differ more from PCL's.
   RansacPlaneParams ransac{100, 0.03, 1, 1.0, 0.2617993877991494};
 };
 
@@ -99,9 +103,31 @@ struct RemovePlaneParams {
   RansacPlaneParams ransac;
 };
 
-using StageParams =
-    std::variant<VoxelGridParams, StatisticalOutlierParams, PassThroughParams, RemovePlaneParams,
-                 FloorRemoval1Params, FloorRemoval2Params, NegativeObstacleParams>;
+/// Paper 2's throttle (section 3.2: lidar data to 5 Hz, Kinect data to 2 Hz before
+/// filtering): whole frames are kept at `rate_hz` and the others dropped, as a stream. The
+/// frame at or after each multiple of 1 / rate_hz since the first kept frame is kept, so the
+/// kept rate is min(sensor rate, rate_hz) in the long run, as a mount's throttle_hz counts it
+/// (a 30 Hz Kinect at 2 Hz: every 15th frame). A lone cloud (run_pipeline) is the first frame
+/// of its stream and always kept; filters::PipelineStream runs a stream.
+struct ThrottleParams {
+  static constexpr std::string_view kName = "throttle";  ///< its name in pipelines
+  double rate_hz = 2.0;  ///< [Hz] paper 2: 2 for the Kinect (5 for the lidar); > 0
+};
+
+/// Paper 2's outlier removal (section 3.2): every point with fewer than `min_neighbours`
+/// other points within `radius` removed. PCL's RadiusOutlierRemoval with
+/// setMinNeighborsInRadius(min_neighbours): a neighbour at exactly `radius` counts. Paper 2
+/// gives no values; these keep a surface point of a Kinect v1 at 4 m (about 7 mm spacing) or
+/// of a scan line at 0.5 degrees and 3 m (26 mm) while removing isolated returns.
+struct RadiusOutlierParams {
+  static constexpr std::string_view kName = "radius_outlier";  ///< its name in pipelines
+  double radius = 0.05;                                        ///< [m]; > 0
+  int min_neighbours = 2;                                      ///< other points; > 0
+};
+
+using StageParams = std::variant<VoxelGridParams, StatisticalOutlierParams, PassThroughParams,
+                                 RemovePlaneParams, FloorRemoval1Params, FloorRemoval2Params,
+                                 NegativeObstacleParams, ThrottleParams, RadiusOutlierParams>;
 
 struct Pipeline {
   std::string name;
@@ -128,7 +154,8 @@ inline constexpr auto kStageNames = detail::StageNameList<StageParams>::names;
 static_assert(detail::all_distinct(kStageNames), "two stages registered under one name");
 
 /// kStageNames as strings, for messages: "voxel_grid", "statistical_outlier", "pass_through",
-/// "ransac_plane", "floor_removal_1", "floor_removal_2", "negative_obstacles".
+/// "ransac_plane", "floor_removal_1", "floor_removal_2", "negative_obstacles", "throttle",
+/// "radius_outlier".
 const std::vector<std::string>& stage_names();
 std::string stage_name(const StageParams& params);
 

@@ -100,6 +100,7 @@ void read_stage_fields(MapReader& m, model::FloorRemoval1Params& params) {
 }
 
 void read_stage_fields(MapReader& m, model::FloorRemoval2Params& params) {
+  if (auto slice = m.map("slice", Need::optional)) params.slice = read_pass_through(*slice);
   read_positive(m, "coarse_leaf", params.coarse_leaf, "V2 in metres, > 0");
   if (auto ransac = m.map("ransac", Need::optional))
     params.ransac = read_ransac(*ransac, params.ransac);
@@ -109,6 +110,20 @@ void read_stage_fields(MapReader& m, model::FloorRemoval2Params& params) {
 void read_stage_fields(MapReader& m, model::NegativeObstacleParams& params) {
   read_if_present(m, "below", params.below, "metres (negative: below the floor)");
   read_if_present(m, "virtual_height", params.virtual_height, "metres");
+  m.reject_unknown_keys();
+}
+
+void read_stage_fields(MapReader& m, model::ThrottleParams& params) {
+  read_positive(m, "rate_hz", params.rate_hz, "the frames kept per second, > 0");
+  m.reject_unknown_keys();
+}
+
+void read_stage_fields(MapReader& m, model::RadiusOutlierParams& params) {
+  read_positive(m, "radius", params.radius, "the search radius in metres, > 0");
+  if (const auto k = m.integer("min_neighbours", Need::optional, "a neighbour count, > 0")) {
+    m.require(*k > 0, "min_neighbours", "must be > 0", "a neighbour count, > 0");
+    params.min_neighbours = *k;
+  }
   m.reject_unknown_keys();
 }
 
