@@ -279,7 +279,8 @@ int run_metrics(const MetricsOptions& options, std::ostream& out) {
       metrics::compute_coverage(inputs.rig, inputs.library, sectors);
   std::vector<metrics::RequirementResult> results;
   if (inputs.requirements) {
-    results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements, &coverage);
+    results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements, &coverage,
+                                             &inputs.library);
   }
   // Issue 38: the sectors over the mounts' tolerance boxes, when the rig gives any.
   const std::vector<metrics::SectorTolerance> tolerance =

@@ -53,8 +53,8 @@ int run_report(const ReportOptions& options, std::ostream& out) {
   content.metrics = &resultant;
   content.coverage = &coverage;
   if (inputs.requirements) {
-    content.results =
-        metrics::evaluate_requirements(inputs.rig, resultant, *inputs.requirements, &coverage);
+    content.results = metrics::evaluate_requirements(inputs.rig, resultant, *inputs.requirements,
+                                                     &coverage, &inputs.library);
     // Issue 38: the sectors again over the mounts' tolerance boxes, when the rig gives any.
     for (metrics::RequirementResult& result : metrics::tolerance_verdicts(
              inputs.rig,

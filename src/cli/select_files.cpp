@@ -147,8 +147,8 @@ std::string selection_page(const SelectReport& report, const model::SensorLibrar
   content.inputs = &inputs;
   content.metrics = &resultant;
   content.coverage = &pick.selection.coverage;
-  content.results =
-      metrics::evaluate_requirements(rig, resultant, pick.requirements, &pick.selection.coverage);
+  content.results = metrics::evaluate_requirements(rig, resultant, pick.requirements,
+                                                   &pick.selection.coverage, &inputs.library);
   content.figures = coverage_figures(coverage_folder, angles);
   content.sections.push_back(
       {"selection", "Selection trace",

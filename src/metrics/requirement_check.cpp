@@ -5,6 +5,7 @@
 #include <numbers>
 #include <optional>
 
+#include "rigdesign/metrics/sector_blame.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
@@ -99,7 +100,8 @@ std::optional<std::size_t> sector_limiting_mount(const RigCoverage& coverage, do
 }
 
 void check_sectors(const model::Rig& rig, const model::Requirements& requirements,
-                   const RigCoverage* coverage, std::vector<RequirementResult>& results) {
+                   const RigCoverage* coverage, const model::SensorLibrary* library,
+                   std::vector<RequirementResult>& results) {
   for (std::size_t i = 0; i < requirements.sectors.size(); ++i) {
     const model::SectorRequirement& sector = requirements.sectors[i];
     RequirementResult result = named("R2", "direction of motion: " + sector.name,
@@ -120,10 +122,23 @@ void check_sectors(const model::Rig& rig, const model::Requirements& requirement
     result.verdict = verdict(measured.pass);
     const double binding_theta =
         binding.floor ? measured.floor.min_theta : measured.complete.min_theta;
-    if (const auto limiting = sector_limiting_mount(*coverage, binding_theta, binding.floor);
-        limiting && *limiting < rig.mounts.size()) {
-      result.limiting_mounts = {rig.mounts[*limiting].id};
+    std::string hidden_by_body;
+    const SectorBlame blame = library != nullptr
+                                  ? sector_blame(rig, *library, binding_theta, binding.floor)
+                                  : SectorBlame{};
+    if (blame.mount) {
+      result.limiting_mounts = {rig.mounts[*blame.mount].id};
+      result.rig_where = blame.where;
+      if (blame.body) {
+        hidden_by_body = "; at " + model::format_number(model::rad_to_deg(binding_theta), 4) +
+                         " deg the body" + (blame.part.empty() ? "" : " (" + blame.part + ")") +
+                         " hides " + percent(blame.hidden) + " of what " +
+                         rig.mounts[*blame.mount].id + " would see";
+      }
+    } else if (const auto limiting = sector_limiting_mount(*coverage, binding_theta, binding.floor);
+               limiting && *limiting < rig.mounts.size()) {
       const model::Mount& mount = rig.mounts[*limiting];
+      result.limiting_mounts = {mount.id};
       result.rig_where = mount.pose_where.file.empty() ? mount.where : mount.pose_where;
     }
     result.explanation = "over " + model::format_number(model::rad_to_deg(sector.from)) + ".." +
@@ -133,7 +148,7 @@ void check_sectors(const model::Rig& rig, const model::Requirements& requirement
                          " deg) >= " + percent(sector.min_complete_coverage) + ", SC floor min " +
                          percent(measured.floor.min) + " (at " +
                          model::format_number(model::rad_to_deg(measured.floor.min_theta), 4) +
-                         " deg) >= " + percent(sector.min_floor_coverage);
+                         " deg) >= " + percent(sector.min_floor_coverage) + hidden_by_body;
     results.push_back(std::move(result));
   }
 }
@@ -265,10 +280,11 @@ const model::SourceLocation& RequirementResult::annotated_where() const {
 std::vector<RequirementResult> evaluate_requirements(const model::Rig& rig,
                                                      const ResultantMetrics& metrics,
                                                      const model::Requirements& requirements,
-                                                     const RigCoverage* coverage) {
+                                                     const RigCoverage* coverage,
+                                                     const model::SensorLibrary* library) {
   std::vector<RequirementResult> results;
   check_body(rig, requirements, results);
-  check_sectors(rig, requirements, coverage, results);
+  check_sectors(rig, requirements, coverage, library, results);
   check_range(rig, requirements, results);
   check_frequency(metrics, requirements, results);
   check_resolution(metrics, requirements, results);

@@ -47,10 +47,14 @@ struct RequirementResult {
 
 /// `coverage` judges R2's sectors; computed with requirements.sectors (compute_coverage).
 /// Without it, R2 is reported as not evaluated.
+/// With `library`, a sector's verdict points at what decides it at its worst angle
+/// (metrics/sector_blame.hpp: the mount that would see most there, or the body hiding it);
+/// without, at the mount that sees most of it there (raster shares).
 std::vector<RequirementResult> evaluate_requirements(const model::Rig& rig,
                                                      const ResultantMetrics& metrics,
                                                      const model::Requirements& requirements,
-                                                     const RigCoverage* coverage = nullptr);
+                                                     const RigCoverage* coverage = nullptr,
+                                                     const model::SensorLibrary* library = nullptr);
 
 std::string to_string(Verdict verdict);
 

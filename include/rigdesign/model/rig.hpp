@@ -57,6 +57,9 @@ struct RobotBody {
   std::vector<BodyPart> parts;  ///< a description's collision geometry; empty otherwise
   /// Top of the area to perceive [m]; nothing means the body's height.
   std::optional<double> area_height;
+  /// The rig's `body` entry (or `robot`, for a description's geometry): where a verdict the
+  /// body decides points; each part keeps its own line in the description.
+  SourceLocation where;
 
   bool has_parts() const { return !parts.empty(); }
   double area_top() const { return area_height.value_or(height); }

@@ -133,7 +133,7 @@ void judge_rig(const RigInputs& inputs, const std::optional<deploy::DeployedConf
   }
   step = Clock::now();
   report.results = metrics::evaluate_requirements(inputs.rig, metrics, *inputs.requirements,
-                                                  coverage ? &*coverage : nullptr);
+                                                  coverage ? &*coverage : nullptr, &inputs.library);
   const double judge_seconds = seconds_since(step);
   for (const metrics::RequirementResult& result : report.results) {
     report.result_seconds.push_back(resultant_seconds + judge_seconds +

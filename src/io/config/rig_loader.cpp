@@ -113,9 +113,11 @@ model::Rig load_rig(const std::string& path) {
           top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,
                   "a map with height and radius or footprint")) {
     rig.body = read_body(*body);
+    rig.body.where = top.location("body");
   } else if (has_geometry) {
     rig.body =
         geometry::body_from_description(*robot->description, robot->base_link, robot->base_height);
+    rig.body.where = top.location("robot");
     top.require(rig.body.has_parts(), "robot", "has no collision geometry",
                 "links with <collision> elements, or a `body` (radius or footprint, height)");
   }
