@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the benchmarks (Release, no sanitizers) and runs them; prints medians, with the
-# machine and its load, so one run regenerates every speed table of the README.
+# machine and its load, so one run regenerates every speed table of docs/benchmarks.md.
 #   scripts/bench.sh                 # every benchmark (installs the PCL and OctoMap peers first)
 #   scripts/bench.sh coverage        # one Google Benchmark binary: coverage, select, costmap, localize
 #   scripts/bench.sh filters         # ours vs PCL (as shipped and serial), and the growth curve

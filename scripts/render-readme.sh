@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates renders/ (the pictures the README shows): the selection example's Pareto plot
+# Regenerates renders/ (the pictures the README and docs/ show): the selection example's Pareto plot
 # and chosen rig, and for the bundled rigs SC curves, cross-sections at 0, 45, 90 and 180
 # degrees and the 3D views. Off-screen; no display needed.
 set -euo pipefail
@@ -16,7 +16,7 @@ for rig in ur_cleaner elektron delivery_amr; do
   rm -rf "renders/$rig"
   ./build/release/src/rigdesign coverage "rigs/$rig.yaml" --out "renders/$rig" --angles 0,45,90,180
 done
-# The README shows the 3D views as PNG; their SVG twins embed the same pixels (large).
+# The README and docs/ show the 3D views as PNG; their SVG twins embed the same pixels (large).
 trap 'rm -f renders/*/view_*.svg' EXIT
 # Real robots from their descriptions: the TurtleBot 4 (58 deg: behind a tower standoff, as
 # the RPLIDAR sees it) and the Jackal.

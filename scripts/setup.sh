@@ -21,6 +21,7 @@ packages=(
   python3                                # an independent XML parser for the JUnit test; fuzz seeds
   python3-yaml                           # an independent YAML parser for the exported files (tests)
   clang libclang-rt-14-dev               # libFuzzer and its runtime for the fuzz targets (fuzz/)
+  clang-format                           # tests: every C++ file as .clang-format lays it out
   llvm                                   # llvm-symbolizer: readable stacks in fuzz findings
   libbenchmark-dev                       # Google Benchmark for scripts/bench.sh
   fonts-dejavu-core                      # the font Cairo draws labels with

@@ -92,7 +92,8 @@ void check_xacro(const std::string& text, const rigdesign::deploy::SensorFrames&
         children.insert(*read);
       }
     }
-    for (const tinyxml2::XMLElement* c = element->FirstChildElement(); c; c = c->NextSiblingElement())
+    for (const tinyxml2::XMLElement* c = element->FirstChildElement(); c;
+         c = c->NextSiblingElement())
       stack.push_back(c);
   }
   for (const rigdesign::deploy::SensorFrame& frame : frames.frames) {
@@ -186,9 +187,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::require_clear_message(error);
   }
   check_nav2(io::nav2_costmap_text(config, header), config);
-  check_filters(io::self_filters_text(filters, config.robot_base_frame, model::Pose3::Identity(),
-                                      header),
-                config.robot_base_frame);
+  check_filters(
+      io::self_filters_text(filters, config.robot_base_frame, model::Pose3::Identity(), header),
+      config.robot_base_frame);
   (void)io::self_filters_launch_text(filters, config.sources, "self_filters.yaml", header);
   return 0;
 }

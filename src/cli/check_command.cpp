@@ -9,6 +9,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "number_checks.hpp"
 #include "report/check_github.hpp"
 #include "report/check_json.hpp"
@@ -62,9 +63,8 @@ Command setup_check(CLI::App& parent) {
       "Validate rig, sensor and requirement files and judge rigs against requirements "
       "(exit 0 pass, 1 a requirement fails, 2 invalid input)");
   app->add_option("files", options->files, "Rig, sensors.yaml or requirement files")->required();
-  app->add_option("--requirements", options->requirements,
-                  "Requirements to judge every rig against (default: the file each rig names)");
-  app->add_option("--sensors", options->sensors, "Sensor library for every rig");
+  add_requirements_option(*app, options->requirements);
+  add_sensors_option(*app, options->sensors);
   app->add_option("--global-frame-height", options->deployment.global_frame_height,
                   "Height [m] of the nav2 file's global frame (odom) above the floor, as "
                   "export --global-frame-height wrote it (default 0)")

@@ -2,6 +2,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -18,6 +19,10 @@ struct Command {
 /// Throws InputError naming the command-line option unless `ok` (exit code 2).
 void require_option(bool ok, const std::string& option, const std::string& problem,
                     const std::string& expected);
+
+/// Registers every subcommand on `app` (grouped by purpose for --help) and sets the program's
+/// name, version flag and "one subcommand" rule; what `run` parses with, and tests enumerate.
+std::vector<Command> add_commands(CLI::App& app);
 
 Command setup_metrics(CLI::App& parent);
 Command setup_check(CLI::App& parent);

@@ -15,6 +15,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "costmap_variants.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
@@ -599,8 +600,8 @@ Command setup_costmap(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("costmap",
                                         "Drive the rig's robot through a scenario with the "
                                         "costmap, planner and follower in the loop");
-  app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
-  app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
+  add_rig_option(*app, options->rig);
+  add_sensors_option(*app, options->sensors);
   app->add_option("--scenario", options->scenario,
                   "wall_following, stationary, office_goals, or a scenario file (FILE.yaml: "
                   "docs/costmap_scenarios.md)")
@@ -634,8 +635,8 @@ Command setup_costmap(CLI::App& parent) {
   app->add_option("--frame-every", options->frame_every,
                   "Write a PNG frame every N updates (default 5, 0: none)")
       ->check(finite_in(0, 100000, "0 (none) or an update count"));
-  app->add_option("--seed", options->seed,
-                  "Seed of the scene, the sensor noise and the sensors' frame phases (default 1)");
+  add_seed_option(*app, options->seed,
+                  "the scene, the sensor noise and the sensors' frame phases (default 1)");
   app->add_option("--filtering-loads", options->filtering_loads,
                   "Measured filtering cost per point (rigdesign filter --write-loads): the "
                   "filters' share of each frame's latency (default paper 1's 3.5e-7 core-s)");
@@ -662,7 +663,7 @@ Command setup_costmap(CLI::App& parent) {
                   "(default 0,0.05,...,0.3)")
       ->delimiter(',')
       ->check(finite_in(0.0, 2.0, "margins in [0, 2] m"));
-  app->add_option("--out", options->out, "Output folder (default costmap/<scenario>)");
+  add_out_option(*app, options->out, "frames, grids and the summary (default costmap/<scenario>)");
   return {app, [options](std::ostream& out, std::ostream& err) {
             return run_costmap(*options, out, err);
           }};

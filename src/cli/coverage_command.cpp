@@ -12,6 +12,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "coverage_files.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
@@ -112,18 +113,17 @@ Command setup_coverage(CLI::App& parent) {
   auto options = std::make_shared<CoverageOptions>();
   CLI::App* app = parent.add_subcommand(
       "coverage", "Spatial coverage curves, cross-sections and 3D FOV views (PNG, SVG, CSV, JSON)");
-  app->add_option("rig,--rig", options->rig, "Rig file (rigs/*.yaml; positional or --rig)")
-      ->required();
-  app->add_option("--out", options->out, "Output folder (default: coverage/<rig file name>)");
+  add_rig_option(*app, options->rig);
+  add_out_option(*app, options->out,
+                 "curves, sections and views (default coverage/<rig file name>)");
   app->add_option("--angles", options->angles_deg,
                   "Azimuths of the cross-section images, degrees (default 0,45,90,180)")
       ->delimiter(',')
       ->check(finite_in(-360, 360, "degrees in [-360, 360]"));
   app->add_option("--step", options->step_deg, "Angle between SC samples, degrees (default 1)")
       ->check(finite_in(kFinestCoverageStepDeg, 45, "degrees in [0.05, 45]"));
-  app->add_option("--requirements", options->requirements,
-                  "Requirements whose sector thresholds are drawn (default: the rig's)");
-  app->add_option("--sensors", options->sensors, "Sensor library");
+  add_requirements_option(*app, options->requirements);
+  add_sensors_option(*app, options->sensors);
   app->add_flag("--raster", options->raster, "Use the fast raster path for the curves");
   app->add_flag("--no-3d", options->no_3d, "Skip the OSMesa 3D views");
   CLI::Option* sweep =

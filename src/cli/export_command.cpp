@@ -1,4 +1,4 @@
-// `rigdesign export RIG --to DIR [--parent LINK] [--scan-topic T] [--cloud-topic T]
+// `rigdesign export RIG --out DIR [--parent LINK] [--scan-topic T] [--cloud-topic T]
 // [--max-speed V] [--update-rate F] [--hit-layer-plugin CLASS]`: writes what the rig means for its
 // ROS 2 stack (issue 14): the sensors' URDF macro, nav2 costmap parameters, self-filters; prints
 // how each was derived.
@@ -12,6 +12,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
 #include "report/deployment_report.hpp"
@@ -84,7 +85,8 @@ int run_export(const ExportOptions& given, std::ostream& out) {
       deploy::plan_deployment(inputs.rig, inputs.library, requirements, options.deploy);
   // Staged as a whole: a full disk or a kill leaves the previous export or the new one,
   // never the new macro beside the old costmap file.
-  io::StagedFolder staged(options.to, "--to");
+  require_option(!options.to.empty(), "--out", "is missing", "--out FOLDER for the files");
+  io::StagedFolder staged(options.to, "--out");
   staged.refuse_inputs_inside(files_read(inputs));
   std::vector<std::string> written = io::write_deployment(
       staged.path(), inputs.rig, deployment, deployment_header(inputs.rig, requirements));
@@ -109,11 +111,12 @@ Command setup_export(CLI::App& parent) {
       "Write the rig's ROS 2 configuration: sensors.urdf.xacro, nav2_costmap.yaml, "
       "self_filters.yaml and its launch file, and for gz sim sensors.gazebo.xacro and "
       "bridge.yaml");
-  app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
-  app->add_option("--to", options->to, "Output folder (created if missing)")->required();
-  app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
-  app->add_option("--requirements", options->requirements,
-                  "Requirements (default: the rig's); R5's speed sizes the blind-gap memory");
+  add_rig_option(*app, options->rig);
+  add_out_option(*app, options->to, "the deployment's files, required (created if missing)",
+                 "--to");
+  add_sensors_option(*app, options->sensors);
+  // R5's speed sizes the blind-gap memory.
+  add_requirements_option(*app, options->requirements);
   app->add_option("--parent", options->deploy.parent,
                   "Parent link of the sensor joints (default: the rig's base link, "
                   "base_footprint without a description)");

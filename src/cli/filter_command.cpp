@@ -11,6 +11,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "inputs.hpp"
 #include "machine_info.hpp"
 #include "progress_line.hpp"
@@ -232,11 +233,11 @@ Command setup_filter(CLI::App& parent) {
                   "Simulate the --rig's sensors in this scene instead of --cloud");
   app->add_option("--frames", options->frames,
                   "Simulated frames per sensor with --scene (default 20)");
-  app->add_option("--seed", options->seed, "Seed of the simulated scene and noise (default 1)");
+  add_seed_option(*app, options->seed, "the simulated scene and noise (default 1)");
   app->add_option("--pipeline", options->pipeline,
                   "P1, P2, P3, P4, P2_paper2 or a pipeline YAML file (default P4)");
-  app->add_option("rig,--rig", options->rig,
-                  "Rig whose mount recorded the clouds (positional or --rig)");
+  // The rig whose mount recorded the clouds; optional, as --cloud needs none.
+  add_rig_option(*app, options->rig)->required(false);
   app->add_option("--mount", options->mount,
                   "Mount id in --rig: moves the clouds into the robot frame");
   app->add_option(
@@ -253,7 +254,7 @@ Command setup_filter(CLI::App& parent) {
   app->add_option(
       "--write-loads", options->write_loads,
       "With --scene: write each sensor's measured load to this file (catalogs read it)");
-  app->add_flag("--json", options->json, "Print JSON");
+  add_format_option(*app, options->json);
   return {app, [options](std::ostream& out, std::ostream& err) {
             return run_filter(*options, out, err);
           }};

@@ -12,6 +12,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "localize_calibration.hpp"
 #include "localize_options.hpp"
 #include "number_checks.hpp"
@@ -377,7 +378,7 @@ Command setup_localize(CLI::App& parent) {
                   "RSSI CSV (t,x,y,z,bssid,rssi) or CO2 logs (t,x,y,z,co2_ppm or 'x y co2_ppm')");
   app->add_option("--scenario", options->scenario,
                   "Synthetic scenario: loop, corner, room, hallway (all with --table)");
-  app->add_option("--seed", options->seed, "Seed of the synthetic scenario (default 1)");
+  add_seed_option(*app, options->seed, "the synthetic scenario (default 1)");
   app->add_flag("--table", options->table, "Accuracy table over seeds 1..--seeds, every method");
   app->add_option("--seeds", options->seeds, "Seeds for --table (default 20)")
       ->check(finite_in(1, 10000, "1 to 10000 seeds"));
@@ -388,7 +389,7 @@ Command setup_localize(CLI::App& parent) {
                   "SubT ground-truth JSON (gt_*.json) to score gas detections");
   add_range_fit_options(app, *options);
   add_kpi_scenario_and_gas_options(app, *options);
-  app->add_flag("--json", options->json, "Print JSON");
+  add_format_option(*app, options->json);
   app->add_option("--out", options->out,
                   "Write plots (PNG and SVG) and, for a scenario, its log and truth here");
   return {app, [options](std::ostream& out, std::ostream& err) {

@@ -1,6 +1,6 @@
-// `rigdesign metrics RIG [--requirements FILE] [--sensors FILE] [--filtering-loads FILE] [--json]`:
-// per-sensor and resultant F, R, N, L, bandwidth, driver CPU load and sensor cost (paper 1, section
-// 2).
+// `rigdesign metrics RIG [--requirements FILE] [--sensors FILE] [--filtering-loads FILE] [--format
+// json]`: per-sensor and resultant F, R, N, L, bandwidth, driver CPU load and sensor cost (paper 1,
+// section 2).
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -9,6 +9,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "inputs.hpp"
 #include "report/json_report.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
@@ -323,18 +324,13 @@ Command setup_metrics(CLI::App& parent) {
   auto options = std::make_shared<MetricsOptions>();
   CLI::App* app = parent.add_subcommand(
       "metrics", "Per-sensor and resultant F, R, N, L, bandwidth, driver CPU load and cost");
-  app->add_option("rig,--rig", options->rig, "Rig file (rigs/*.yaml; positional or --rig)")
-      ->required();
-  app->add_option("--requirements", options->requirements,
-                  "Application requirements R1-R8 to judge the rig against (default: the "
-                  "file the rig names)");
-  app->add_option("--sensors", options->sensors,
-                  "Sensor library (default: the rig's sensor_library, else a sensors.yaml in "
-                  "the rig's folder or above, else the bundled one)");
+  add_rig_option(*app, options->rig);
+  add_requirements_option(*app, options->requirements);
+  add_sensors_option(*app, options->sensors);
   app->add_option(
       "--filtering-loads", options->filtering_loads,
       "Measured filtering loads (`rigdesign filter --write-loads`): adds U_f per mount");
-  app->add_flag("--json", options->json, "Print JSON instead of tables");
+  add_format_option(*app, options->json);
   return {app, [options](std::ostream& out, std::ostream&) { return run_metrics(*options, out); }};
 }
 

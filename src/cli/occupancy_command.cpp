@@ -13,6 +13,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
 #include "occupancy_paper3_report.hpp"
@@ -399,10 +400,15 @@ Command setup_occupancy(CLI::App& parent) {
   app->add_option(
       "--min-height", options->min_height,
       "Points below this height [m] clear but never mark; truth starts here (default 0.1)");
-  app->add_option("--truth", options->truth,
-                  "points: the person's points in the sensors' clouds, voxelised (paper 3, "
-                  "default); surface: the person's whole mesh surface")
-      ->check(CLI::IsMember({"points", "surface"}));
+  // --truth names a ground-truth file elsewhere (localize): here it is what truth is made of.
+  CLI::Option* truth_from =
+      app->add_option("--truth-from", options->truth,
+                      "points: the person's points in the sensors' clouds, voxelised (paper 3, "
+                      "default); surface: the person's whole mesh surface")
+          ->check(CLI::IsMember({"points", "surface"}));
+  truth_from->excludes(app->add_option("--truth", options->truth, "Former name of --truth-from")
+                           ->check(CLI::IsMember({"points", "surface"}))
+                           ->group(""));
   app->add_option("--fp-region", options->region,
                   "hull: false positives inside the convex hull of the person's truth points "
                   "(paper 3, default); margin: within 0.3 m of the truth's box")
@@ -417,11 +423,11 @@ Command setup_occupancy(CLI::App& parent) {
   app->add_option("--threads", options->threads,
                   "Mappers updated at once within a frame (default 2; results do not depend on it)")
       ->check(finite_in(1, 64, "1 to 64 threads"));
-  app->add_option("--seed", options->seed, "Seed of the range noise (default 1)");
+  add_seed_option(*app, options->seed, "the range noise (default 1)");
   app->add_option("--out", options->out,
                   "Folder for occupancy_frames.csv, occupancy_summary.json, occupancy_pareto.png "
                   "(default: none, the table on standard output only)");
-  app->add_flag("--json", options->json, "Print JSON");
+  add_format_option(*app, options->json);
   return {app, [options](std::ostream& out, std::ostream& err) {
             return run_occupancy(*options, out, err);
           }};

@@ -8,6 +8,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "coverage_files.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
@@ -96,11 +97,10 @@ Command setup_report(CLI::App& parent) {
       "report",
       "One self-contained HTML page per rig: verdicts with margins, metrics, SC plots, "
       "sections, 3D views, N-1, costs (exit 1 when a requirement fails)");
-  app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
-  app->add_option("--out", options->out, "Output folder (default report/<rig file name>)");
-  app->add_option("--requirements", options->requirements,
-                  "Requirements (default: the file the rig names)");
-  app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's, or bundled)");
+  add_rig_option(*app, options->rig);
+  add_out_option(*app, options->out, "the page and its pictures (default report/<rig file name>)");
+  add_requirements_option(*app, options->requirements);
+  add_sensors_option(*app, options->sensors);
   app->add_option("--step", options->step_deg, "Azimuth step of the coverage cut [deg]")
       ->check(finite_in(0.1, 45.0, "degrees in [0.1, 45]"))
       ->capture_default_str();

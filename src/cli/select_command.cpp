@@ -15,6 +15,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
 #include "progress_line.hpp"
@@ -97,7 +98,8 @@ model::Requirements load_select_requirements(const SelectOptions& options,
 }
 
 // The catalog's slot options, refused when their rasters at --step would outgrow memory.
-// 303 options x 360 angles took 496 MB on the bundled robot (README, selection search).
+// 303 options x 360 angles took 496 MB on the bundled robot (docs/selection.md, The selection
+// search).
 double checked_option_count(const SelectOptions& options, const model::Catalog& catalog) {
   const double options_total = static_cast<double>(select::count_catalog_options(catalog));
   const double option_angles = options_total * std::ceil(360.0 / options.step_deg);
@@ -250,17 +252,16 @@ Command setup_select(CLI::App& parent) {
       "exhausted, 2 bad input)");
   app->add_option("--catalog", options->catalog, "Candidate catalog (rigs/catalogs/*.yaml)")
       ->required();
-  app->add_option("--requirements", options->requirements, "Application requirements R1-R8")
-      ->required();
+  add_requirements_option(*app, options->requirements)->required();
   app->add_option("--budget", options->budget, "Budget in US dollars")
       ->check(positive_up_to(1e9, "a budget in US dollars, > 0"))
       ->required();
   app->add_option("--policy", options->policy,
                   "Relaxation policy: the order in which requirements may be relaxed");
-  app->add_option("--sensors", options->sensors, "Sensor library (default: the catalog's)");
-  app->add_option("--out", options->out,
-                  "Folder for the chosen rig, the final requirements, the Pareto plot and the "
-                  "coverage renders (default: selection/<catalog file name>)");
+  add_sensors_option(*app, options->sensors);
+  add_out_option(*app, options->out,
+                 "the chosen rig, the final requirements, the Pareto plot and the coverage "
+                 "renders (default selection/<catalog file name>)");
   app->add_option("--robust", options->robust,
                   "Failures the rig must survive: n-1 (any one sensor) and/or a lighting "
                   "condition (every sensor not immune to it fails); overrides the requirements' "
@@ -274,7 +275,7 @@ Command setup_select(CLI::App& parent) {
                   "the exact path")
       ->delimiter(',')
       ->expected(2, 6);
-  app->add_flag("--json", options->json, "Print JSON instead of the trace");
+  add_format_option(*app, options->json);
   app->add_flag("--no-renders", options->no_renders, "Skip the chosen rig's coverage pictures");
   return {app, [options](std::ostream& out, std::ostream& err) {
             return run_select(*options, out, err);

@@ -51,13 +51,15 @@ void print_ros_driver(const model::Sensor& sensor, std::ostream& out) {
     return;
   }
   std::string distros;
-  for (const std::string& distro : driver.distros) distros += (distros.empty() ? "" : ", ") + distro;
+  for (const std::string& distro : driver.distros)
+    distros += (distros.empty() ? "" : ", ") + distro;
   out << "  ROS 2       " << driver.package << " (" << distros << "): " << driver.topic << " ("
       << driver.message_type << ") in " << driver.frame_id << "\n"
       << "              " << driver.launch << "\n";
   if (!driver.driver_frames.empty()) {
     std::string frames;
-    for (const std::string& frame : driver.driver_frames) frames += (frames.empty() ? "" : ", ") + frame;
+    for (const std::string& frame : driver.driver_frames)
+      frames += (frames.empty() ? "" : ", ") + frame;
     out << "              broadcasts " << frames << " itself (the URDF gives the first)\n";
   }
   if (!driver.note.empty()) out << "              " << driver.note << "\n";
@@ -67,10 +69,16 @@ nlohmann::json ros_driver_json(const model::Sensor& sensor) {
   if (!sensor.ros2) return nullptr;
   const model::RosDriver& d = *sensor.ros2;
   if (!d.exists) return {{"driver", "none"}, {"note", d.note}, {"source", d.source}};
-  return {{"package", d.package},   {"launch", d.launch},           {"distros", d.distros},
-          {"topic", d.topic},       {"type", d.message_type},       {"frame_id", d.frame_id},
-          {"driver_frames", d.driver_frames}, {"frame_parameter", d.frame_parameter},
-          {"note", d.note},         {"source", d.source}};
+  return {{"package", d.package},
+          {"launch", d.launch},
+          {"distros", d.distros},
+          {"topic", d.topic},
+          {"type", d.message_type},
+          {"frame_id", d.frame_id},
+          {"driver_frames", d.driver_frames},
+          {"frame_parameter", d.frame_parameter},
+          {"note", d.note},
+          {"source", d.source}};
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "number_checks.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
@@ -143,7 +144,8 @@ Command setup_sensors(CLI::App& parent) {
   app->add_option("--min-range", options->query.min_range,
                   "Only sensors with a mode reaching at least this far [m]")
       ->check(finite_in(0.0, 1e6, "metres, >= 0"));
-  app->add_option("--max-price", options->query.max_price, "Only sensors costing at most this [USD]")
+  app->add_option("--max-price", options->query.max_price,
+                  "Only sensors costing at most this [USD]")
       ->check(positive_up_to(1e9, "a price in USD, > 0"));
   app->add_option("--min-rate", options->query.min_rate,
                   "Only sensors with a mode at least this fast [Hz]")
@@ -157,8 +159,7 @@ Command setup_sensors(CLI::App& parent) {
   app->add_option("--format", options->format, "Output format")
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();
-  app->add_option("--sensors", options->sensors,
-                  "Sensor library (default: the bundled one, share/rigdesign/sensors.yaml)");
+  add_sensors_option(*app, options->sensors);
   return {app, [options](std::ostream& out, std::ostream&) { return run_sensors(*options, out); }};
 }
 

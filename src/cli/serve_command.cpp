@@ -16,6 +16,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "report/check_text.hpp"
 #include "report/file_report.hpp"
 #include "rigdesign/studio/request_guard.hpp"
@@ -118,15 +119,14 @@ Command setup_serve(CLI::App& parent) {
       "serve",
       "Design the rig by hand in a browser: move, turn and swap sensors and see the coverage "
       "and verdicts update (a local page on 127.0.0.1 with a token)");
-  app->add_option("rig,--rig", options->rig, "Rig file to edit (positional or --rig)")->required();
+  add_rig_option(*app, options->rig);
   app->add_option("--port", options->port, "Port on 127.0.0.1 and ::1 (0: any free port)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
   app->add_flag("--no-open", options->no_open,
                 "Do not open a browser (it opens when there is a display)");
-  app->add_option("--sensors", options->sensors, "Sensor library (default: the rig's)");
-  app->add_option("--requirements", options->requirements,
-                  "Requirements to judge the rig against (default: the file the rig names)");
+  add_sensors_option(*app, options->sensors);
+  add_requirements_option(*app, options->requirements);
   return {app, [options](std::ostream& out, std::ostream& err) {
             return run_serve(*options, out, err);
           }};

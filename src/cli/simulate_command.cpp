@@ -10,6 +10,7 @@
 
 #include "app.hpp"
 #include "command.hpp"
+#include "common_options.hpp"
 #include "inputs.hpp"
 #include "progress_line.hpp"
 #include "rigdesign/io/atomic_write.hpp"
@@ -114,15 +115,21 @@ Command setup_simulate(CLI::App& parent) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* app = parent.add_subcommand(
       "simulate", "Simulate what each mounted sensor records in a synthetic scene");
-  app->add_option("rig,--rig", options->rig, "Rig file (positional or --rig)")->required();
+  add_rig_option(*app, options->rig);
   app->add_option(
       "--scene", options->scene,
       "office, corridor, stairs, wall_following, cell, or a scene file (default office)");
   app->add_option("--frames", options->frames, "Frames per sensor (default 1)");
-  app->add_option("--seed", options->seed, "Seed of the scene and the sensor noise (default 1)");
-  app->add_option("--out", options->out, "Output folder (default simulation/<scene>)");
-  app->add_option("--format", options->format, "pcd (binary), pcd-ascii or ply (default pcd)")
-      ->check(CLI::IsMember({"pcd", "pcd-ascii", "ply"}));
+  add_seed_option(*app, options->seed, "the scene and the sensor noise (default 1)");
+  add_out_option(*app, options->out, "the clouds (default simulation/<scene>)");
+  // --format asks every other command for text or JSON; here it is the clouds' file format.
+  CLI::Option* cloud_format = app->add_option("--cloud-format", options->format,
+                                              "pcd (binary), pcd-ascii or ply (default pcd)")
+                                  ->check(CLI::IsMember({"pcd", "pcd-ascii", "ply"}));
+  cloud_format->excludes(
+      app->add_option("--format", options->format, "Former name of --cloud-format")
+          ->check(CLI::IsMember({"pcd", "pcd-ascii", "ply"}))
+          ->group(""));
   app->add_option("--frame", options->frame, "robot or sensor frame (default robot)")
       ->check(CLI::IsMember({"robot", "sensor"}));
   app->add_option("--dropout", options->dropout, "Share of rays that return nothing (default 0)");

@@ -73,7 +73,7 @@ json mounts_json(const studio::StudioSession& session) {
   return mounts;
 }
 
-// `metrics --json`'s coverage summaries with the curves as three plain lists: a pose update
+// `metrics --format json`'s coverage summaries with the curves as three plain lists: a pose update
 // is a third the size of the per-angle records `to_json(coverage, true)` gives.
 json coverage_json(const metrics::RigCoverage& coverage) {
   json report = to_json(coverage, false);

@@ -24,8 +24,8 @@ double folded(double theta) {
 // Blind azimuths: where none of the floor is seen (a cable or a foot there is invisible); for
 // a rig that sees no floor anywhere (level scan planes), where nothing of the section is seen.
 std::vector<bool> blind_azimuths(const std::vector<metrics::AngleCoverage>& angles) {
-  const bool sees_floor = std::any_of(angles.begin(), angles.end(),
-                                      [](const metrics::AngleCoverage& a) { return a.floor > 0.0; });
+  const bool sees_floor = std::any_of(
+      angles.begin(), angles.end(), [](const metrics::AngleCoverage& a) { return a.floor > 0.0; });
   std::vector<bool> blind;
   for (const metrics::AngleCoverage& angle : angles)
     blind.push_back(sees_floor ? angle.floor <= 0.0 : angle.complete <= 0.0);
@@ -34,8 +34,8 @@ std::vector<bool> blind_azimuths(const std::vector<metrics::AngleCoverage>& angl
 
 // What a grazing obstacle does on one side of the robot: kept while in the gap, seen before.
 struct Pass {
-  double keep = 0.0;  // [m]
-  double seen = 0.0;  // [m]
+  double keep = 0.0;   // [m]
+  double seen = 0.0;   // [m]
   int last_seen = -1;  // index of the azimuth where it is seen last before the gap; -1: none
 };
 
@@ -65,7 +65,8 @@ Pass pass_from(const std::vector<metrics::AngleCoverage>& angles, const std::vec
 
 // The Hit Layer's keep, in seconds: hit_max updates of the costmap.
 int hit_max_of(double keep_distance, double min_speed, double update_rate) {
-  return std::max(1, static_cast<int>(std::ceil(2 * update_rate * keep_distance / min_speed - 1e-9)));
+  return std::max(1,
+                  static_cast<int>(std::ceil(2 * update_rate * keep_distance / min_speed - 1e-9)));
 }
 
 double persistence_of(double keep_distance, double min_speed, double update_rate) {
@@ -159,16 +160,16 @@ BlindMemory blind_memory(const metrics::RigCoverage& coverage, double max_speed,
       memory.hit.hit_max);
   const auto number = [](double value) { return model::format_number(value, 3); };
   memory.rule = "largest blind gap " + number(model::rad_to_deg(worst.from)) + ".." +
-                number(model::rad_to_deg(worst.to)) + " deg: an obstacle grazing the body is in it for " +
-                number(worst.keep_distance) + " m of travel (" + number(keep_updates) +
-                " updates at " + number(min_speed) + " m/s, " + number(update_rate) +
-                " Hz) and seen for " + number(worst.seen_distance) + " m before it (" +
-                number(seen_updates) + " updates at " + number(max_speed) +
-                " m/s): hit_max = ceil(2 x " + number(keep_updates) + ") = " +
-                std::to_string(memory.hit.hit_max) + ", hit = ceil(hit_max / " +
-                number(std::max(seen_updates, 1.0)) + ") = " + std::to_string(memory.hit.hit) +
-                "; observation_persistence = hit_max / " + number(update_rate) + " Hz = " +
-                number(memory.persistence) + " s";
+                number(model::rad_to_deg(worst.to)) +
+                " deg: an obstacle grazing the body is in it for " + number(worst.keep_distance) +
+                " m of travel (" + number(keep_updates) + " updates at " + number(min_speed) +
+                " m/s, " + number(update_rate) + " Hz) and seen for " +
+                number(worst.seen_distance) + " m before it (" + number(seen_updates) +
+                " updates at " + number(max_speed) + " m/s): hit_max = ceil(2 x " +
+                number(keep_updates) + ") = " + std::to_string(memory.hit.hit_max) +
+                ", hit = ceil(hit_max / " + number(std::max(seen_updates, 1.0)) +
+                ") = " + std::to_string(memory.hit.hit) + "; observation_persistence = hit_max / " +
+                number(update_rate) + " Hz = " + number(memory.persistence) + " s";
   return memory;
 }
 

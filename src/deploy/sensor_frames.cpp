@@ -17,9 +17,9 @@ model::Pose3 T_robot_parent(const model::Rig& rig, const std::string& parent) {
   if (const std::optional<model::Pose3> pose = robot_frame_pose(rig, parent)) return *pose;
   std::vector<std::string> names = {"base_footprint"};
   for (const auto& [name, pose] : rig.link_poses) names.push_back(name);
-  throw model::InputError(model::Diagnostic{
-      model::SourceLocation{"(command line)"}, "--parent", "no link '" + parent + "' in " + rig.file,
-      "one of: " + model::join(names)});
+  throw model::InputError(model::Diagnostic{model::SourceLocation{"(command line)"}, "--parent",
+                                            "no link '" + parent + "' in " + rig.file,
+                                            "one of: " + model::join(names)});
 }
 
 }  // namespace
@@ -183,7 +183,8 @@ SensorFrames sensor_frames(const model::Rig& rig, const model::SensorLibrary& li
       if (mode->is_camera()) {
         if (on_link && mount.urdf_link_optical) {
           frame.optical_frame = mount.urdf_link;
-        } else if (const auto child = on_link ? optical_child(rig, mount.urdf_link) : std::nullopt) {
+        } else if (const auto child =
+                       on_link ? optical_child(rig, mount.urdf_link) : std::nullopt) {
           frame.optical_frame = *child;
         } else {
           frame.optical_frame = optical_frame_name(mount.id);

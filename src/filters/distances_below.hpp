@@ -35,7 +35,7 @@ std::size_t append_distances_below_portable(const float* xs, const float* ys, co
                                             const IndexRun* runs, std::size_t count, float px,
                                             float py, float pz, float bound, float* out);
 std::size_t append_distances_below_avx2(const float* xs, const float* ys, const float* zs,
-                                        const IndexRun* runs, std::size_t count, float px,
-                                        float py, float pz, float bound, float* out);
+                                        const IndexRun* runs, std::size_t count, float px, float py,
+                                        float pz, float bound, float* out);
 
 }  // namespace rigdesign::filters

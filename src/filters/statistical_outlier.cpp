@@ -1,14 +1,13 @@
 #include "rigdesign/filters/statistical_outlier.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <functional>
-#include <thread>
 
 #include "filters/neighbour_grid.hpp"
 #include "rigdesign/model/idle_cores.hpp"
 #include "rigdesign/model/input_error.hpp"
+#include "rigdesign/model/parallel_for.hpp"
 
 namespace rigdesign::filters {
 
@@ -51,45 +50,37 @@ std::vector<std::uint32_t> statistical_outlier_inliers(
   // taken from a shared counter: a thread slowed by other work on its core takes fewer chunks,
   // so two threads on a loaded machine are not held back by the slower one. Each point's mean
   // is written by whichever thread answers it.
-  constexpr std::uint32_t kChunk = 4096;
-  const auto points = static_cast<std::uint32_t>(cloud.size());
-  std::atomic<std::uint32_t> next_chunk{0};
-  const auto answer = [&](NeighbourScratch& scratch) {
-    std::vector<double>& roots = scratch.roots;
-    for (;;) {
-      const std::uint32_t from = next_chunk.fetch_add(kChunk, std::memory_order_relaxed);
-      if (from >= points) return;
-      const std::uint32_t to = std::min(points, from + kChunk);
-      scratch.bound = 0.0f;
-      for (std::uint32_t rank = from; rank < to; ++rank) {
-        grid.nearest(rank, params.neighbours, scratch);
-        const std::size_t found = scratch.nearest.size();
-        // The roots in one loop the compiler vectorises, then summed in order as before.
-        roots.resize(found);
-        for (std::size_t i = 0; i < found; ++i) {
-          roots[i] = std::sqrt(static_cast<double>(scratch.nearest[i]));
-        }
-        double total = 0.0;
-        for (const double root : roots) total += root;
-        mean_distance[grid.index_at(rank)] = total / static_cast<double>(found);
-      }
-    }
-  };
+  constexpr std::size_t kChunk = 4096;
   // At most the threads asked for, the points allow, and cores are idle now (see idle_cores).
   std::size_t threads = std::clamp<std::size_t>(
       cloud.size() / model::kMinPointsPerFilterThread, 1,
       static_cast<std::size_t>(std::clamp(params.threads, 1, model::kMaxFilterThreads)));
   if (threads > 1) threads = std::min(threads, static_cast<std::size_t>(1 + model::idle_cores()));
-  if (threads == 1) {
-    thread_local NeighbourScratch scratch;
-    answer(scratch);
-  } else {
-    std::vector<NeighbourScratch> scratches(threads);
-    std::vector<std::thread> helpers;
-    for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(answer, std::ref(scratches[t]));
-    answer(scratches[0]);
-    for (std::thread& helper : helpers) helper.join();
-  }
+  // This thread's scratch lives from call to call like the grid; the helpers get their own.
+  thread_local NeighbourScratch this_threads_scratch;
+  NeighbourScratch& callers_scratch = this_threads_scratch;
+  std::vector<NeighbourScratch> helper_scratches(threads - 1);
+  model::parallel_for_chunks(
+      cloud.size(), kChunk, static_cast<int>(threads),
+      [&](std::size_t from, std::size_t to, int worker) {
+        NeighbourScratch& scratch =
+            worker == 0 ? callers_scratch : helper_scratches[static_cast<std::size_t>(worker - 1)];
+        std::vector<double>& roots = scratch.roots;
+        scratch.bound = 0.0f;
+        for (std::size_t rank = from; rank < to; ++rank) {
+          grid.nearest(static_cast<std::uint32_t>(rank), params.neighbours, scratch);
+          const std::size_t found = scratch.nearest.size();
+          // The roots in one loop the compiler vectorises, then summed in order as before.
+          roots.resize(found);
+          for (std::size_t i = 0; i < found; ++i) {
+            roots[i] = std::sqrt(static_cast<double>(scratch.nearest[i]));
+          }
+          double total = 0.0;
+          for (const double root : roots) total += root;
+          mean_distance[grid.index_at(static_cast<std::uint32_t>(rank))] =
+              total / static_cast<double>(found);
+        }
+      });
   // Summed in input order whatever the thread count, so the threshold is the same bit for bit.
   double sum = 0.0;
   double sum_squares = 0.0;

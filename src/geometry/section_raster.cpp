@@ -87,7 +87,7 @@ double SectionRaster::floor_share() const {
 namespace {
 
 RIGDESIGN_POPCNT_CLONES std::size_t union_popcount(const std::vector<std::uint64_t>& a,
-                           const std::vector<std::uint64_t>& b) {
+                                                   const std::vector<std::uint64_t>& b) {
   std::size_t total = 0;
   for (std::size_t i = 0; i < a.size(); ++i)
     total += static_cast<std::size_t>(std::popcount(a[i] | b[i]));

@@ -68,7 +68,8 @@ std::string shown_path(const std::string& path) {
   const std::lock_guard<std::mutex> lock(live_mutex);
   for (const StagedFolder* folder : live_folders) {
     const std::string& staging = folder->path();
-    if (path.rfind(staging, 0) == 0 && (path.size() == staging.size() || path[staging.size()] == '/'))
+    if (path.rfind(staging, 0) == 0 &&
+        (path.size() == staging.size() || path[staging.size()] == '/'))
       return folder->final_name(path);
   }
   return path;

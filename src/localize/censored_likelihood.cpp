@@ -158,29 +158,37 @@ double CensoredLikelihood::wall_loss(const model::Vec2& q, const model::Vec2& p)
   return settings_.walls.empty() ? 0.0 : wall_loss_db(settings_.walls, p, q);
 }
 
-ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
-  const LikelihoodSettings& s = settings_;
-  const bool fit_exponent = s.exponent_sd > 0.0;
-  // Heard scans: the squared residuals are a quadratic in (a, n) whose coefficients are sums.
+namespace {
+
+// The heard scans' sums at one position: their squared residuals are a quadratic in (a, n)
+// with these coefficients. And the squared distance from the position to the nearest scan.
+struct CensoredSums {
   double C = 0, CL = 0, CLL = 0, Y = 0, YL = 0, Q = 0;
-  thread_local std::vector<CensoredTerm> censored;
-  censored.clear();
+  double nearest = std::numeric_limits<double>::infinity();
+};
+
+// The sums of the heard cells, and one term per unheard cell in `censored`.
+CensoredSums censored_sums(const CensoredLikelihood& likelihood, const model::Vec2& q,
+                           std::vector<CensoredTerm>& censored) {
+  const std::span<const ScanCell> cells = likelihood.cells();
+  const LikelihoodSettings& s = likelihood.settings();
+  CensoredSums sums;
+  auto& [C, CL, CLL, Y, YL, Q, nearest] = sums;
   // The logs of the distances, one per cell at every grid point, are most of the search's
   // time: Eigen evaluates them two at a time (its SIMD log).
   thread_local Eigen::ArrayXd log_distances;
-  log_distances.resize(static_cast<Eigen::Index>(cells_.size()));
+  log_distances.resize(static_cast<Eigen::Index>(cells.size()));
   const double h2 = s.vertical_offset * s.vertical_offset + 1e-6;
-  double nearest = std::numeric_limits<double>::infinity();  // squared, to the scans
-  for (std::size_t i = 0; i < cells_.size(); ++i) {
-    const double squared = (q - cells_[i].position).squaredNorm();
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const double squared = (q - cells[i].position).squaredNorm();
     nearest = std::min(nearest, squared);
     log_distances[static_cast<Eigen::Index>(i)] = squared + h2;
   }
   log_distances = kFiveOverLn10 * log_distances.log();
-  for (std::size_t i = 0; i < cells_.size(); ++i) {
-    const ScanCell& cell = cells_[i];
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const ScanCell& cell = cells[i];
     const double L = log_distances[static_cast<Eigen::Index>(i)];
-    const double W = wall_loss(q, cell.position);
+    const double W = likelihood.wall_loss(q, cell.position);
     if (cell.heard > 0) {
       const double y = cell.rssi_sum + cell.heard * W;  // sum of (y + W)
       C += cell.heard;
@@ -192,50 +200,73 @@ ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
     }
     if (cell.unheard > 0) censored.push_back({cell.unheard, L, W});
   }
+  return sums;
+}
+
+// The profile's objective in (a, n) at one position: the tempered log-likelihood of the heard
+// sums and the censored terms, and the priors.
+struct CensoredObjective {
+  const LikelihoodSettings& s;
+  const CensoredSums& sums;
+  const std::vector<CensoredTerm>& censored;
+  bool fit_exponent;
+  double k, inv_var, prior_a, prior_n;
+
+  // The objective, its gradient and Hessian in (a, n).
+  double operator()(double a, double n, Eigen::Vector2d* g, Eigen::Matrix2d* H) const;
+  // The heard scans alone (a linear least-squares problem with the priors).
+  void start(double& a, double& n) const;
+};
+
+CensoredObjective censored_objective(const LikelihoodSettings& s, const CensoredSums& sums,
+                                     const std::vector<CensoredTerm>& censored) {
+  const bool fit_exponent = s.exponent_sd > 0.0;
   const double k = s.effective_share;
   const double inv_var = 1.0 / (s.sigma_db * s.sigma_db);
   const double prior_a = 1.0 / (s.level_sd_db * s.level_sd_db);
   const double prior_n = fit_exponent ? 1.0 / (s.exponent_sd * s.exponent_sd) : 0.0;
+  return {s, sums, censored, fit_exponent, k, inv_var, prior_a, prior_n};
+}
 
-  // The objective, its gradient and Hessian in (a, n).
-  const auto evaluate = [&](double a, double n, Eigen::Vector2d* g, Eigen::Matrix2d* H) {
-    const double squares = Q - 2 * a * Y + 2 * n * YL + a * a * C - 2 * a * n * CL + n * n * CLL;
-    double value = -0.5 * k * inv_var * squares;
-    Eigen::Vector2d grad(k * inv_var * (Y - a * C + n * CL),
-                         k * inv_var * (-YL + a * CL - n * CLL));
-    Eigen::Matrix2d hess;
-    hess << -C, CL, CL, -CLL;
-    hess *= k * inv_var;
-    for (const CensoredTerm& t : censored) {
-      const double z = (s.floor_dbm - a + n * t.log_distance + t.wall) / s.sigma_db;
-      const NormalTail tail = normal_tail(z);
-      value += k * t.count * tail.log_cdf;
-      const double lambda = tail.inverse_mills;
-      const double kappa = lambda * (z + lambda);
-      const double scale = k * t.count / s.sigma_db;
-      grad(0) -= scale * lambda;
-      grad(1) += scale * lambda * t.log_distance;
-      const double curvature = k * t.count * kappa * inv_var;
-      hess(0, 0) -= curvature;
-      hess(0, 1) += curvature * t.log_distance;
-      hess(1, 0) += curvature * t.log_distance;
-      hess(1, 1) -= curvature * t.log_distance * t.log_distance;
-    }
-    value -= 0.5 * prior_a * (a - s.level_dbm) * (a - s.level_dbm);
-    grad(0) -= prior_a * (a - s.level_dbm);
-    hess(0, 0) -= prior_a;
-    if (fit_exponent) {
-      value -= 0.5 * prior_n * (n - s.exponent) * (n - s.exponent);
-      grad(1) -= prior_n * (n - s.exponent);
-      hess(1, 1) -= prior_n;
-    }
-    *g = grad;
-    *H = hess;
-    return value;
-  };
+double CensoredObjective::operator()(double a, double n, Eigen::Vector2d* g,
+                                     Eigen::Matrix2d* H) const {
+  const auto& [C, CL, CLL, Y, YL, Q, nearest] = sums;
+  const double squares = Q - 2 * a * Y + 2 * n * YL + a * a * C - 2 * a * n * CL + n * n * CLL;
+  double value = -0.5 * k * inv_var * squares;
+  Eigen::Vector2d grad(k * inv_var * (Y - a * C + n * CL), k * inv_var * (-YL + a * CL - n * CLL));
+  Eigen::Matrix2d hess;
+  hess << -C, CL, CL, -CLL;
+  hess *= k * inv_var;
+  for (const CensoredTerm& t : censored) {
+    const double z = (s.floor_dbm - a + n * t.log_distance + t.wall) / s.sigma_db;
+    const NormalTail tail = normal_tail(z);
+    value += k * t.count * tail.log_cdf;
+    const double lambda = tail.inverse_mills;
+    const double kappa = lambda * (z + lambda);
+    const double scale = k * t.count / s.sigma_db;
+    grad(0) -= scale * lambda;
+    grad(1) += scale * lambda * t.log_distance;
+    const double curvature = k * t.count * kappa * inv_var;
+    hess(0, 0) -= curvature;
+    hess(0, 1) += curvature * t.log_distance;
+    hess(1, 0) += curvature * t.log_distance;
+    hess(1, 1) -= curvature * t.log_distance * t.log_distance;
+  }
+  value -= 0.5 * prior_a * (a - s.level_dbm) * (a - s.level_dbm);
+  grad(0) -= prior_a * (a - s.level_dbm);
+  hess(0, 0) -= prior_a;
+  if (fit_exponent) {
+    value -= 0.5 * prior_n * (n - s.exponent) * (n - s.exponent);
+    grad(1) -= prior_n * (n - s.exponent);
+    hess(1, 1) -= prior_n;
+  }
+  *g = grad;
+  *H = hess;
+  return value;
+}
 
-  // Start: the heard scans alone (a linear least-squares problem with the priors).
-  double a = s.level_dbm, n = s.exponent;
+void CensoredObjective::start(double& a, double& n) const {
+  const auto& [C, CL, CLL, Y, YL, Q, nearest] = sums;
   if (fit_exponent) {
     Eigen::Matrix2d A;
     A << k * inv_var * C + prior_a, -k * inv_var * CL, -k * inv_var * CL,
@@ -248,12 +279,15 @@ ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
   } else {
     a = (k * inv_var * (Y + n * CL) + prior_a * s.level_dbm) / (k * inv_var * C + prior_a);
   }
-  Eigen::Vector2d g;
-  Eigen::Matrix2d H;
-  double value = evaluate(a, n, &g, &H);
+}
+
+// Newton's method from (a, n), where the objective is `value` with gradient `g` and Hessian
+// `H`; leaves all five at the optimum.
+void censored_newton(const CensoredObjective& evaluate, double& a, double& n, double& value,
+                     Eigen::Vector2d& g, Eigen::Matrix2d& H) {
   for (int step = 0; step < kNewtonSteps; ++step) {
     Eigen::Vector2d delta;
-    if (fit_exponent) {
+    if (evaluate.fit_exponent) {
       delta = -H.partialPivLu().solve(g);
     } else {
       delta = Eigen::Vector2d(-g(0) / H(0, 0), 0.0);
@@ -263,7 +297,9 @@ ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
     Eigen::Vector2d g_new;
     Eigen::Matrix2d H_new;
     // The exponent stays in its physical interval (a projected step).
-    const auto moved_n = [&](double f) { return std::clamp(n + f * delta(1), kMinExponent, kMaxExponent); };
+    const auto moved_n = [&](double f) {
+      return std::clamp(n + f * delta(1), kMinExponent, kMaxExponent);
+    };
     double value_new = evaluate(a + delta(0), moved_n(1.0), &g_new, &H_new);
     while (value_new < value - 1e-12 && factor > 1e-3) {
       factor *= 0.5;
@@ -281,7 +317,11 @@ ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
         std::abs(factor * delta(1)) < kExponentTolerance)
       break;
   }
-  if (s.path_prior_scale > 0) value -= std::sqrt(nearest) / s.path_prior_scale;
+}
+
+// The optimum with the Laplace term for marginalising (a, n), or a alone, out.
+ProfilePoint laplace_point(double a, double n, double value, const Eigen::Matrix2d& H,
+                           bool fit_exponent) {
   ProfilePoint point;
   point.level_dbm = a;
   point.exponent = n;
@@ -298,6 +338,24 @@ ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
     point.level_sd_db = std::sqrt(1.0 / information);
   }
   return point;
+}
+
+}  // namespace
+
+ProfilePoint CensoredLikelihood::profile(const model::Vec2& q) const {
+  const LikelihoodSettings& s = settings_;
+  thread_local std::vector<CensoredTerm> censored;
+  censored.clear();
+  const CensoredSums sums = censored_sums(*this, q, censored);
+  const CensoredObjective evaluate = censored_objective(s, sums, censored);
+  double a = s.level_dbm, n = s.exponent;
+  evaluate.start(a, n);
+  Eigen::Vector2d g;
+  Eigen::Matrix2d H;
+  double value = evaluate(a, n, &g, &H);
+  censored_newton(evaluate, a, n, value, g, H);
+  if (s.path_prior_scale > 0) value -= std::sqrt(sums.nearest) / s.path_prior_scale;
+  return laplace_point(a, n, value, H, evaluate.fit_exponent);
 }
 
 double CensoredLikelihood::log_likelihood(const model::Vec2& q, double level_dbm, double exponent,

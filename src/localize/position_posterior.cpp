@@ -68,7 +68,8 @@ double PositionPosterior::mass_within(const model::Vec2& point, double radius) c
   double mass = 0.0;
   const int reach = static_cast<int>(std::ceil(radius / cell)) + 1;
   const model::Vec2 offset = (point - origin) / cell;
-  const int c0 = static_cast<int>(std::floor(offset.x())), r0 = static_cast<int>(std::floor(offset.y()));
+  const int c0 = static_cast<int>(std::floor(offset.x())),
+            r0 = static_cast<int>(std::floor(offset.y()));
   for (int r = std::max(0, r0 - reach); r <= std::min(rows - 1, r0 + reach); ++r) {
     for (int c = std::max(0, c0 - reach); c <= std::min(columns - 1, c0 + reach); ++c) {
       const double value = log_density[static_cast<std::size_t>(r) * columns + c];

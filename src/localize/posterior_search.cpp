@@ -1,14 +1,13 @@
 #include "posterior_search.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <numeric>
-#include <thread>
 
 #include "rigdesign/model/idle_cores.hpp"
+#include "rigdesign/model/parallel_for.hpp"
 
 namespace rigdesign::localize::detail {
 namespace {
@@ -49,24 +48,18 @@ void evaluate_cells(const CensoredLikelihood& likelihood, const std::vector<int>
                     Grid* grid) {
   constexpr std::size_t kChunk = 64;
   constexpr std::size_t kMaxThreads = 4;
-  std::atomic<std::size_t> next{0};
-  const auto work = [&] {
-    for (std::size_t begin = next.fetch_add(kChunk); begin < cells.size();
-         begin = next.fetch_add(kChunk)) {
-      for (std::size_t i = begin; i < std::min(cells.size(), begin + kChunk); ++i) {
-        const int cell = cells[i];
-        grid->value[static_cast<std::size_t>(cell)] =
-            likelihood.profile(grid->centre(cell % grid->columns, cell / grid->columns))
-                .log_density;
-      }
-    }
-  };
   std::size_t threads = std::min(kMaxThreads, cells.size() / (4 * kChunk) + 1);
   if (threads > 1) threads = std::min(threads, static_cast<std::size_t>(1 + model::idle_cores()));
-  std::vector<std::thread> helpers;
-  for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
-  work();
-  for (std::thread& helper : helpers) helper.join();
+  model::parallel_for_chunks(
+      cells.size(), kChunk, static_cast<int>(threads),
+      [&](std::size_t begin, std::size_t end, int) {
+        for (std::size_t i = begin; i < end; ++i) {
+          const int cell = cells[i];
+          grid->value[static_cast<std::size_t>(cell)] =
+              likelihood.profile(grid->centre(cell % grid->columns, cell / grid->columns))
+                  .log_density;
+        }
+      });
 }
 
 Grid evaluate_all(const CensoredLikelihood& likelihood, const SearchBox& box, double cell) {

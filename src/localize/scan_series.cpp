@@ -69,12 +69,9 @@ double weakest_reading(const RssiLog& log) {
 
 std::string to_string(FloorSource source) {
   switch (source) {
-    case FloorSource::log:
-      return "the log's floor_dbm";
-    case FloorSource::option:
-      return "--floor";
-    case FloorSource::weakest_reading:
-      return "the weakest reading in the log (no floor given)";
+    case FloorSource::log: return "the log's floor_dbm";
+    case FloorSource::option: return "--floor";
+    case FloorSource::weakest_reading: return "the weakest reading in the log (no floor given)";
   }
   return "";
 }
@@ -90,9 +87,9 @@ ScanSeries scan_series(const RssiLog& log, int emitter, const ScanSeriesParams& 
   } else {
     series.floor_dbm = weakest_reading(log);
   }
-  series.scan_period_s = params.scan_period_s   ? *params.scan_period_s
-                         : log.scan_period_s    ? *log.scan_period_s
-                                                : median_scan_step(log);
+  series.scan_period_s = params.scan_period_s ? *params.scan_period_s
+                         : log.scan_period_s  ? *log.scan_period_s
+                                              : median_scan_step(log);
   const double period = series.scan_period_s;
   const std::vector<ScanEvent> events = scan_events(log, emitter, period);
 

@@ -123,6 +123,211 @@ void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*
   phase.points_per_second = seconds > 0.0 ? points / seconds : kNoScore;
 }
 
+// Per sensor: its mode decimated to the camera stride, its rays and its noise stream.
+struct OccupancySensing {
+  std::vector<std::vector<model::Vec3>> rays;
+  std::vector<model::SensorMode> modes;
+  std::vector<std::mt19937_64> streams;
+  std::vector<int> pooled_columns;  // > 0: the sensor's organised frame is mean-pooled
+};
+
+OccupancySensing occupancy_sensing(std::span<const CellSensor> sensors,
+                                   const OccupancyEvalParams& params) {
+  OccupancySensing sensing;
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    sensing.modes.push_back(sim::decimated_mode(sensors[i].mode, params.camera_stride, 1));
+    sensing.rays.push_back(sim::ray_pattern(sensing.modes.back()));
+    sensing.streams.push_back(sim::noise_stream(params.seed, i));
+    const int columns = sim::pixel_grid_columns(sensing.rays.back());
+    const bool pooled = params.camera_pooling > 1 && sensing.modes.back().is_camera();
+    if (pooled && columns == 0) {
+      throw std::invalid_argument("evaluate_occupancy: camera '" + sensors[i].id +
+                                  "' has no full pixel grid to mean-pool (a cone FOV)");
+    }
+    sensing.pooled_columns.push_back(pooled ? columns : 0);
+  }
+  return sensing;
+}
+
+// One truth per distinct lattice; mappers share it. `truth_of` gets each mapper's.
+std::vector<LatticeTruth> lattice_truths(const model::Scene& scene,
+                                         std::span<OccupancyMapper* const> mappers,
+                                         const OccupancyEvalParams& params,
+                                         std::vector<std::size_t>& truth_of) {
+  const model::TriangleMesh scenery = static_scenery(scene);
+  std::vector<LatticeTruth> truths;
+  for (OccupancyMapper* mapper : mappers) {
+    const VoxelLattice lattice = mapper->lattice();
+    auto found = std::find_if(truths.begin(), truths.end(), [&](const LatticeTruth& t) {
+      return same_lattice(t.lattice, lattice);
+    });
+    if (found == truths.end()) {
+      LatticeTruth truth;
+      truth.lattice = lattice;
+      truth.window = centred_window(params.window_size, lattice.resolution);
+      truth.scenery = voxelise_surface(scenery, lattice, params.min_height);
+      truths.push_back(std::move(truth));
+      found = truths.end() - 1;
+    }
+    truth_of.push_back(static_cast<std::size_t>(found - truths.begin()));
+  }
+  return truths;
+}
+
+// Every sensor's frame in the scene as `caster` holds it, in sensor order (each draws from its
+// own stream); returns the number of points.
+std::size_t simulate_cell_clouds(const sim::RayCaster& caster, std::span<const CellSensor> sensors,
+                                 OccupancySensing& sensing, const OccupancyEvalParams& params,
+                                 std::vector<model::PointCloud>& clouds) {
+  const sim::SimulationSettings settings{0.0, true, false, false};
+  const sim::SimulationSettings organised{0.0, true, false, true};
+  std::size_t points = 0;
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    if (sensing.pooled_columns[i] > 0) {
+      clouds[i] = sim::mean_pool(
+          sim::simulate_frame(caster, sensing.modes[i], sensing.rays[i], sensors[i].T_world_sensor,
+                              organised, sensing.streams[i]),
+          sensing.pooled_columns[i], params.camera_pooling);
+    } else {
+      clouds[i] = sim::simulate_frame(caster, sensing.modes[i], sensing.rays[i],
+                                      sensors[i].T_world_sensor, settings, sensing.streams[i]);
+    }
+    points += clouds[i].size();
+  }
+  return points;
+}
+
+// The sensors' points that lie on the moving object (TruthKind::sensor_points).
+std::vector<model::Vec3> points_on_object(const model::TriangleMesh& object_now,
+                                          const std::vector<model::PointCloud>& clouds,
+                                          const sim::RayCaster& caster,
+                                          const OccupancyEvalParams& params) {
+  std::vector<model::Vec3> seen_on_object;
+  Eigen::AlignedBox3d box;
+  for (const model::Vec3& v : object_now.vertices) box.extend(v);
+  const sim::RayCaster object_caster(object_now);
+  for (const model::PointCloud& cloud : clouds) {
+    const std::vector<model::Vec3> on_object =
+        actor_points(cloud, caster, object_caster, box, params.truth_reach);
+    seen_on_object.insert(seen_on_object.end(), on_object.begin(), on_object.end());
+  }
+  return seen_on_object;
+}
+
+// The truth's object, seen and column masks at this frame.
+void refresh_truth(LatticeTruth& truth, const model::TriangleMesh& object_now,
+                   const std::vector<model::Vec3>& seen_on_object,
+                   const std::vector<model::PointCloud>& clouds,
+                   const OccupancyEvalParams& params) {
+  truth.object = params.truth == TruthKind::sensor_points
+                     ? voxelise_points(seen_on_object, truth.lattice, params.min_height)
+                     : voxelise_surface(object_now, truth.lattice, params.min_height);
+  // Only the object's voxels can be misses, so only marking points inside its x span count.
+  truth.seen.clear();
+  if (!truth.object.empty()) {
+    const auto [low, high] = std::minmax_element(
+        truth.object.begin(), truth.object.end(),
+        [](const costmap::VoxelKey& a, const costmap::VoxelKey& b) { return a.x < b.x; });
+    const int x0 = low->x, x1 = high->x;
+    for (const model::PointCloud& cloud : clouds) {
+      for (const model::Point3f& p : cloud.points) {
+        if (p.z() < params.min_height) continue;  // below the band: clears, never marks
+        const costmap::VoxelKey key = truth.lattice.key_at(p.cast<double>());
+        if (key.x >= x0 && key.x <= x1) truth.seen.push_back(key);
+      }
+    }
+  }
+  std::vector<costmap::VoxelKey> all = truth.scenery;
+  all.insert(all.end(), truth.object.begin(), truth.object.end());
+  truth.columns = column_mask(all, truth.window);
+  truth.dilated = dilate_mask(truth.columns, truth.window, params.robot_radius);
+}
+
+// What every mapper is given and scored with at one frame, besides its own truth.
+struct OccupancyFrameInputs {
+  double t;
+  bool moving;
+  std::size_t points;
+  const std::vector<model::PointCloud>& clouds;
+  const HullRegion& hull;
+  const PathOdometer& odometer;
+};
+
+// The delays of the changes completed at this frame go to the phase it belongs to.
+void record_change_delays(ChangeDelays& delays, double t, const LatticeTruth& truth,
+                          const std::vector<std::uint8_t>& shown, OccupancyPhase& phase) {
+  const std::size_t marks_before = delays.mark_delays().size();
+  const std::size_t clears_before = delays.clear_delays().size();
+  delays.record(t, truth.columns, shown);
+  phase.mark_delays.insert(phase.mark_delays.end(),
+                           delays.mark_delays().begin() + static_cast<std::ptrdiff_t>(marks_before),
+                           delays.mark_delays().end());
+  phase.clear_delays.insert(
+      phase.clear_delays.end(),
+      delays.clear_delays().begin() + static_cast<std::ptrdiff_t>(clears_before),
+      delays.clear_delays().end());
+}
+
+// One mapper's update and scores at one frame: they touch only its own state and run, so the
+// mappers run in parallel.
+void score_mapper_frame(OccupancyMapper& mapper, const LatticeTruth& truth, Tracking& tracking,
+                        OccupancyRun& run, const OccupancyFrameInputs& in,
+                        const OccupancyEvalParams& params) {
+  OccupancyFrame frame;
+  frame.time = in.t;
+  frame.robot_moving = in.moving;
+  frame.points = in.points;
+  const auto start = std::chrono::steady_clock::now();
+  mapper.update(in.t, in.clouds, in.moving);
+  frame.update_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::vector<costmap::VoxelKey> predicted = mapper.occupied();
+  frame.object = compare_voxel_sets(params.region == ScoringRegion::hull
+                                        ? in_hull(predicted, truth, in.hull)
+                                        : near_object(predicted, truth, params.object_margin),
+                                    truth.object);
+  frame.misses = split_misses(predicted, truth.object, truth.seen);
+  const std::vector<std::uint8_t> shown = column_mask(predicted, truth.window);
+  const TrailFrame trail = tracking.trail.record(in.t, truth.columns, shown);
+  frame.ghost_area = trail.ghost_area;
+  frame.trail_area = trail.trail_area;
+  frame.trail_length =
+      std::isnan(trail.trail_p90_time) ? 0.0 : in.odometer.length_since(trail.trail_p90_time);
+  frame.trail_length_oldest =
+      std::isnan(trail.oldest_trail_time) ? 0.0 : in.odometer.length_since(trail.oldest_trail_time);
+  record_change_delays(tracking.delays, in.t, truth, shown,
+                       in.moving ? run.moving : run.stationary);
+  const std::vector<std::uint8_t> blocked = mapper.blocked_cells(truth.window);
+  frame.has_master = !blocked.empty();
+  if (frame.has_master) {
+    frame.master = compare_masks(blocked, truth.dilated);
+    frame.master_ghost_area = ghost_area(blocked, truth.dilated, truth.window.resolution);
+  }
+  run.frames.push_back(frame);
+}
+
+// The run's phases from its frames, and what the mapper's whole-window measures left pending.
+void finish_run(OccupancyRun& run, Tracking& tracking, const OccupancyMapper& mapper) {
+  std::vector<const OccupancyFrame*> moving, stationary, all;
+  for (const OccupancyFrame& frame : run.frames) {
+    (frame.robot_moving ? moving : stationary).push_back(&frame);
+    all.push_back(&frame);
+  }
+  finish_phase(run.moving, moving);
+  finish_phase(run.stationary, stationary);
+  finish_phase(run.all, all);
+  run.all.mark_delays = run.moving.mark_delays;
+  run.all.mark_delays.insert(run.all.mark_delays.end(), run.stationary.mark_delays.begin(),
+                             run.stationary.mark_delays.end());
+  run.all.clear_delays = run.moving.clear_delays;
+  run.all.clear_delays.insert(run.all.clear_delays.end(), run.stationary.clear_delays.begin(),
+                              run.stationary.clear_delays.end());
+  run.pending_changes = tracking.delays.pending();
+  run.missed_marks = tracking.delays.missed_marks();
+  run.missed_clears = tracking.delays.missed_clears();
+  run.memory_bytes = mapper.memory_bytes();
+}
+
 }  // namespace
 
 std::vector<CellSensor> cell_sensors(const model::Rig& rig, const model::SensorLibrary& library) {
@@ -143,41 +348,9 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                                 "' has no moving object");
   }
   const model::MovingObject& object = scene.moving.front();
-  std::vector<std::vector<model::Vec3>> rays;
-  std::vector<model::SensorMode> modes;
-  std::vector<std::mt19937_64> streams;
-  std::vector<int> pooled_columns;  // > 0: the sensor's organised frame is mean-pooled
-  for (std::size_t i = 0; i < sensors.size(); ++i) {
-    modes.push_back(sim::decimated_mode(sensors[i].mode, params.camera_stride, 1));
-    rays.push_back(sim::ray_pattern(modes.back()));
-    streams.push_back(sim::noise_stream(params.seed, i));
-    const int columns = sim::pixel_grid_columns(rays.back());
-    const bool pooled = params.camera_pooling > 1 && modes.back().is_camera();
-    if (pooled && columns == 0) {
-      throw std::invalid_argument("evaluate_occupancy: camera '" + sensors[i].id +
-                                  "' has no full pixel grid to mean-pool (a cone FOV)");
-    }
-    pooled_columns.push_back(pooled ? columns : 0);
-  }
-  // One truth per distinct lattice; mappers share it.
-  const model::TriangleMesh scenery = static_scenery(scene);
-  std::vector<LatticeTruth> truths;
+  OccupancySensing sensing = occupancy_sensing(sensors, params);
   std::vector<std::size_t> truth_of;
-  for (OccupancyMapper* mapper : mappers) {
-    const VoxelLattice lattice = mapper->lattice();
-    auto found = std::find_if(truths.begin(), truths.end(), [&](const LatticeTruth& t) {
-      return same_lattice(t.lattice, lattice);
-    });
-    if (found == truths.end()) {
-      LatticeTruth truth;
-      truth.lattice = lattice;
-      truth.window = centred_window(params.window_size, lattice.resolution);
-      truth.scenery = voxelise_surface(scenery, lattice, params.min_height);
-      truths.push_back(std::move(truth));
-      found = truths.end() - 1;
-    }
-    truth_of.push_back(static_cast<std::size_t>(found - truths.begin()));
-  }
+  std::vector<LatticeTruth> truths = lattice_truths(scene, mappers, params, truth_of);
   std::vector<OccupancyRun> runs(mappers.size());
   std::vector<Tracking> tracking;
   for (std::size_t m = 0; m < mappers.size(); ++m) {
@@ -188,8 +361,6 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                         ChangeDelays(window.size())});
   }
   PathOdometer odometer;
-  const sim::SimulationSettings settings{0.0, true, false, false};
-  const sim::SimulationSettings organised{0.0, true, false, true};
   const int frames =
       std::max(1, static_cast<int>(std::floor(params.duration * params.rate + 1e-9)));
   std::vector<model::PointCloud> clouds(sensors.size());
@@ -197,131 +368,26 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
     const double t = k / params.rate;
     const bool moving = t < params.moving_until;
     const sim::RayCaster caster(scene.at(t));
-    std::size_t points = 0;
-    for (std::size_t i = 0; i < sensors.size(); ++i) {
-      if (pooled_columns[i] > 0) {
-        clouds[i] =
-            sim::mean_pool(sim::simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor,
-                                               organised, streams[i]),
-                           pooled_columns[i], params.camera_pooling);
-      } else {
-        clouds[i] = sim::simulate_frame(caster, modes[i], rays[i], sensors[i].T_world_sensor,
-                                        settings, streams[i]);
-      }
-      points += clouds[i].size();
-    }
+    const std::size_t points = simulate_cell_clouds(caster, sensors, sensing, params, clouds);
     const model::Pose3 T_world_object = object.T_world_object(t);
     odometer.record(t, T_world_object.translation().head<2>());
     model::TriangleMesh object_now;
     object_now.append(object.mesh, T_world_object);
     std::vector<model::Vec3> seen_on_object;
-    if (params.truth == TruthKind::sensor_points) {
-      Eigen::AlignedBox3d box;
-      for (const model::Vec3& v : object_now.vertices) box.extend(v);
-      const sim::RayCaster object_caster(object_now);
-      for (const model::PointCloud& cloud : clouds) {
-        const std::vector<model::Vec3> on_object =
-            actor_points(cloud, caster, object_caster, box, params.truth_reach);
-        seen_on_object.insert(seen_on_object.end(), on_object.begin(), on_object.end());
-      }
-    }
+    if (params.truth == TruthKind::sensor_points)
+      seen_on_object = points_on_object(object_now, clouds, caster, params);
     std::vector<model::Vec3> hull_points = seen_on_object;
     if (params.truth == TruthKind::mesh_surface) hull_points = object_now.vertices;
     const HullRegion hull(hull_points);
-    for (LatticeTruth& truth : truths) {
-      truth.object = params.truth == TruthKind::sensor_points
-                         ? voxelise_points(seen_on_object, truth.lattice, params.min_height)
-                         : voxelise_surface(object_now, truth.lattice, params.min_height);
-      // Only the object's voxels can be misses, so only marking points inside its x span count.
-      truth.seen.clear();
-      if (!truth.object.empty()) {
-        const auto [low, high] = std::minmax_element(
-            truth.object.begin(), truth.object.end(),
-            [](const costmap::VoxelKey& a, const costmap::VoxelKey& b) { return a.x < b.x; });
-        const int x0 = low->x, x1 = high->x;
-        for (const model::PointCloud& cloud : clouds) {
-          for (const model::Point3f& p : cloud.points) {
-            if (p.z() < params.min_height) continue;  // below the band: clears, never marks
-            const costmap::VoxelKey key = truth.lattice.key_at(p.cast<double>());
-            if (key.x >= x0 && key.x <= x1) truth.seen.push_back(key);
-          }
-        }
-      }
-      std::vector<costmap::VoxelKey> all = truth.scenery;
-      all.insert(all.end(), truth.object.begin(), truth.object.end());
-      truth.columns = column_mask(all, truth.window);
-      truth.dilated = dilate_mask(truth.columns, truth.window, params.robot_radius);
-    }
-    // Each mapper's update and scores touch only its own state and run's slot.
+    for (LatticeTruth& truth : truths)
+      refresh_truth(truth, object_now, seen_on_object, clouds, params);
+    const OccupancyFrameInputs inputs{t, moving, points, clouds, hull, odometer};
     model::parallel_for(mappers.size(), params.threads, [&](std::size_t m) {
-      const LatticeTruth& truth = truths[truth_of[m]];
-      OccupancyFrame frame;
-      frame.time = t;
-      frame.robot_moving = moving;
-      frame.points = points;
-      const auto start = std::chrono::steady_clock::now();
-      mappers[m]->update(t, clouds, moving);
-      frame.update_seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const std::vector<costmap::VoxelKey> predicted = mappers[m]->occupied();
-      frame.object = compare_voxel_sets(params.region == ScoringRegion::hull
-                                            ? in_hull(predicted, truth, hull)
-                                            : near_object(predicted, truth, params.object_margin),
-                                        truth.object);
-      frame.misses = split_misses(predicted, truth.object, truth.seen);
-      const std::vector<std::uint8_t> shown = column_mask(predicted, truth.window);
-      const TrailFrame trail = tracking[m].trail.record(t, truth.columns, shown);
-      frame.ghost_area = trail.ghost_area;
-      frame.trail_area = trail.trail_area;
-      frame.trail_length =
-          std::isnan(trail.trail_p90_time) ? 0.0 : odometer.length_since(trail.trail_p90_time);
-      frame.trail_length_oldest = std::isnan(trail.oldest_trail_time)
-                                      ? 0.0
-                                      : odometer.length_since(trail.oldest_trail_time);
-      ChangeDelays& delays = tracking[m].delays;
-      const std::size_t marks_before = delays.mark_delays().size();
-      const std::size_t clears_before = delays.clear_delays().size();
-      delays.record(t, truth.columns, shown);
-      OccupancyPhase& phase = moving ? runs[m].moving : runs[m].stationary;
-      phase.mark_delays.insert(
-          phase.mark_delays.end(),
-          delays.mark_delays().begin() + static_cast<std::ptrdiff_t>(marks_before),
-          delays.mark_delays().end());
-      phase.clear_delays.insert(
-          phase.clear_delays.end(),
-          delays.clear_delays().begin() + static_cast<std::ptrdiff_t>(clears_before),
-          delays.clear_delays().end());
-      const std::vector<std::uint8_t> blocked = mappers[m]->blocked_cells(truth.window);
-      frame.has_master = !blocked.empty();
-      if (frame.has_master) {
-        frame.master = compare_masks(blocked, truth.dilated);
-        frame.master_ghost_area = ghost_area(blocked, truth.dilated, truth.window.resolution);
-      }
-      runs[m].frames.push_back(frame);
+      score_mapper_frame(*mappers[m], truths[truth_of[m]], tracking[m], runs[m], inputs, params);
     });
     if (params.progress) params.progress(k + 1, frames);
   }
-  for (std::size_t m = 0; m < mappers.size(); ++m) {
-    OccupancyRun& run = runs[m];
-    std::vector<const OccupancyFrame*> moving, stationary, all;
-    for (const OccupancyFrame& frame : run.frames) {
-      (frame.robot_moving ? moving : stationary).push_back(&frame);
-      all.push_back(&frame);
-    }
-    finish_phase(run.moving, moving);
-    finish_phase(run.stationary, stationary);
-    finish_phase(run.all, all);
-    run.all.mark_delays = run.moving.mark_delays;
-    run.all.mark_delays.insert(run.all.mark_delays.end(), run.stationary.mark_delays.begin(),
-                               run.stationary.mark_delays.end());
-    run.all.clear_delays = run.moving.clear_delays;
-    run.all.clear_delays.insert(run.all.clear_delays.end(), run.stationary.clear_delays.begin(),
-                                run.stationary.clear_delays.end());
-    run.pending_changes = tracking[m].delays.pending();
-    run.missed_marks = tracking[m].delays.missed_marks();
-    run.missed_clears = tracking[m].delays.missed_clears();
-    run.memory_bytes = mappers[m]->memory_bytes();
-  }
+  for (std::size_t m = 0; m < mappers.size(); ++m) finish_run(runs[m], tracking[m], *mappers[m]);
   return runs;
 }
 

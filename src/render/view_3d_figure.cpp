@@ -1,8 +1,8 @@
 #include "rigdesign/render/view_3d_figure.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 #include "cairo_canvas.hpp"

@@ -296,6 +296,404 @@ std::string unreachable_reason(std::size_t stop, const std::string& name, const 
   return which + " unreachable: no way there " + recoveries;
 }
 
+// One scenario run: what it reads, and the state one control step hands to the next (the
+// robot's pose and command, the leg and stop it is on, the frames and costmap it holds, the
+// result so far). The state is named once here rather than passed between the steps, which
+// run_scenario calls in the order the robot lives them: judge where the last command took it,
+// then, at every costmap update, sense, update and plan, then act.
+struct ScenarioLoop {
+  ScenarioLoop(const ScenarioDefinition& run_definition, const model::Rig& run_rig,
+               const ScenarioParams& run_params, const detail::Setup& run_setup,
+               const std::function<void(const ScenarioStep&)>& run_on_update);
+
+  // One control step `k`; false when the run ends with it.
+  bool step(long k);
+  // The result, once the loop has ended.
+  ScenarioResult finish();
+
+  bool judge(double t);
+  bool collided(double t);
+  bool drove_off(double t);
+  void pass_stops(double t);
+  std::vector<costmap::CloudObservation> sense(double t);
+  void sense_mount(std::size_t i, double t, std::vector<costmap::CloudObservation>& observations);
+  model::PointCloud cast_frame(std::size_t i, long index);
+  void update(double t, std::span<const costmap::CloudObservation> observations,
+              bool velocity_command);
+  void plan();
+  void publish(double t, bool velocity_command);
+  bool act(double t);
+  bool choose_command(double t);
+  bool refuse_stop(double t);
+  void drive(long k, double t);
+  void start_leg(double t);
+
+  const ScenarioDefinition& scenario;
+  const model::Rig& rig;
+  const ScenarioParams& params;
+  const detail::Setup& setup;
+  const std::function<void(const ScenarioStep&)>& on_update;
+
+  costmap::Costmap costmap;
+  const costmap::HeightBand band;
+  const bool static_scene;
+  // The still objects' tree and outlines are built once; the moving ones at each instant.
+  const sim::RayCaster still_caster;
+  const costmap::FootprintCollisionChecker still_checker;
+  std::vector<std::mt19937_64> streams;  // one per mount
+  sim::SimulationSettings settings;
+  const int steps_per_update;
+  const double dt;
+  const double lookahead;
+  const double resolution;
+  costmap::DwaParams dwa;
+
+  ScenarioResult result;
+  CellSet drop_marks;
+  // The leg being driven: where and when it started, how far the robot has come on it.
+  model::Vec2 leg_start;
+  double leg_start_time = 0.0;
+  double leg_distance = 0.0;
+  bool touched_by_walker = false;
+  ObjectClocks clocks;
+  // Frames simulated so far and still held by the costmap, by capture index, per mount.
+  std::vector<std::map<long, model::PointCloud>> frames;
+  std::vector<long> last_passed;  // newest frame given to the costmap, per mount
+  PoseHistory history;
+  costmap::Pose2 pose;
+  std::size_t stop = 0;
+  bool waiting = false;
+  double wait_until = 0.0;
+  costmap::VelocityCommand command;
+  costmap::PlannedPath path;
+  model::Vec2 goal;  // the local goal of the latest plan
+  Recovery recovery;
+  std::vector<model::PointCloud> clouds;  // the newest frame given to the costmap, per mount
+};
+
+ScenarioLoop::ScenarioLoop(const ScenarioDefinition& run_definition, const model::Rig& run_rig,
+                           const ScenarioParams& run_params, const detail::Setup& run_setup,
+                           const std::function<void(const ScenarioStep&)>& run_on_update)
+    : scenario(run_definition),
+      rig(run_rig),
+      params(run_params),
+      setup(run_setup),
+      on_update(run_on_update),
+      costmap(setup.costmap),
+      band{params.ground_clearance, rig.body.height},
+      static_scene(scenario.scene.moving.empty()),
+      still_caster(still_mesh(scenario.scene)),
+      still_checker(still_meshes(scenario.scene), band),
+      steps_per_update(
+          std::max(1, static_cast<int>(std::lround(params.control_rate / params.update_rate)))),
+      dt(1.0 / params.control_rate),
+      lookahead(std::min(params.goal_lookahead,
+                         0.5 * std::min(setup.costmap.size_x, setup.costmap.size_y) -
+                             2 * setup.costmap.resolution)),
+      resolution(setup.costmap.resolution),
+      dwa(params.dwa),
+      leg_start(scenario.start.position),
+      clocks(scenario.scene),
+      frames(setup.mounts.size()),
+      last_passed(setup.mounts.size(), -1),
+      pose(scenario.start),
+      goal(scenario.start.position),
+      clouds(setup.mounts.size()) {
+  for (std::size_t i = 0; i < setup.mounts.size(); ++i)
+    streams.push_back(sim::noise_stream(params.seed, i));
+  settings.add_noise = params.add_noise;
+  for (const detail::SimulatedMount& mount : setup.mounts) result.timings.push_back(mount.timing);
+  result.route_size = scenario.route.size();
+  recovery.closest = scenario.route.empty()
+                         ? 0.0
+                         : (scenario.route.front().position - scenario.start.position).norm();
+  dwa.max_speed = params.follower.speed;
+  dwa.max_angular_speed = params.follower.max_angular_speed;
+}
+
+bool ScenarioLoop::step(long k) {
+  const double t = static_cast<double>(k) / params.control_rate;
+  result.end_time = t;
+  if (!judge(t)) return false;
+  if (k % steps_per_update == 0) {
+    // The command the costmap's motion condition sees is the one the robot is driving with.
+    const bool velocity_command = !command.is_zero();
+    update(t, sense(t), velocity_command);
+    plan();
+    publish(t, velocity_command);
+  }
+  if (!act(t)) return false;
+  drive(k, t);
+  return true;
+}
+
+ScenarioResult ScenarioLoop::finish() {
+  result.trajectory.push_back({result.end_time, pose});
+  double reached_distance = 0.0;
+  double reached_seconds = 0.0;
+  for (const StopOutcome& outcome : result.stops) {
+    if (!outcome.reached) continue;
+    reached_distance += outcome.leg_distance;
+    reached_seconds += outcome.leg_seconds;
+  }
+  if (reached_seconds > 0.0) result.average_speed = reached_distance / reached_seconds;
+  return std::move(result);
+}
+
+// Ground truth first: the pose reached by the last command, before the robot senses there.
+// False when the run ends: a collision, a drop, the route done or the time up.
+bool ScenarioLoop::judge(double t) {
+  if (collided(t) || drove_off(t)) return false;
+  pass_stops(t);
+  if (stop >= scenario.route.size()) {
+    result.reached_goal = true;
+    return false;
+  }
+  return !(t > scenario.max_duration);
+}
+
+// Walkers count only while the robot drives: one who walks into a standing robot is not the
+// robot's collision.
+bool ScenarioLoop::collided(double t) {
+  costmap::Clearance clearance = still_checker.clearance(pose.position, rig.body.radius);
+  if (!static_scene) {
+    std::vector<model::TriangleMesh> storage;
+    const costmap::Clearance walker =
+        costmap::FootprintCollisionChecker(moving_meshes_at(scenario.scene, clocks.now(), storage),
+                                           band)
+            .clearance(pose.position, rig.body.radius);
+    if (command.linear != 0.0) {
+      if (walker.distance < clearance.distance) clearance = walker;
+    } else if (walker.distance < 0.0 && !touched_by_walker) {
+      ++result.struck_while_standing;
+    }
+    touched_by_walker = walker.distance < 0.0;
+  }
+  if (clearance.distance < result.min_clearance) {
+    result.min_clearance = clearance.distance;
+    result.min_clearance_time = t;
+    result.min_clearance_object = clearance.object;
+  }
+  if (clearance.distance < 0.0) {
+    result.collided = true;
+    result.collision_time = t;
+    result.collision_object = clearance.object;
+    result.collision_position = pose.position;
+    return true;
+  }
+  return false;
+}
+
+bool ScenarioLoop::drove_off(double t) {
+  const auto drop = std::find_if(scenario.drops.begin(), scenario.drops.end(),
+                                 [&](const FloorDrop& d) { return d.contains(pose.position); });
+  if (drop == scenario.drops.end()) return false;
+  result.drove_off = true;
+  result.drop_name = drop->name;
+  result.drove_off_time = t;
+  result.drove_off_speed = command.linear;
+  return true;
+}
+
+// Stops: arrive, wait, leave.
+void ScenarioLoop::pass_stops(double t) {
+  if (waiting && t >= wait_until - 1e-9) {
+    waiting = false;
+    ++stop;
+    start_leg(t);
+  } else if (!waiting &&
+             (pose.position - scenario.route[stop].position).norm() < params.goal_tolerance) {
+    StopOutcome reached;
+    reached.name = scenario.route[stop].name;
+    reached.reached = true;
+    reached.reached_time = t;
+    reached.leg_distance = leg_distance;
+    reached.leg_seconds = t - leg_start_time;
+    result.stops.push_back(reached);
+    ++result.goals_reached;
+    if (scenario.route[stop].wait > 0.0) {
+      waiting = true;
+      wait_until = t + scenario.route[stop].wait;
+    } else {
+      ++stop;
+      start_leg(t);
+    }
+  }
+}
+
+// Each mount's frames, captured at their own times, from where the robot was then, in the
+// scene as it was then, arrived a latency later. Mount by mount in order: each draws its noise
+// from its own stream.
+std::vector<costmap::CloudObservation> ScenarioLoop::sense(double t) {
+  std::vector<costmap::CloudObservation> observations;
+  for (std::size_t i = 0; i < setup.mounts.size(); ++i) sense_mount(i, t, observations);
+  return observations;
+}
+
+// Without persistence nav2's buffer holds the newest frame until the next one arrives, so it
+// marks at every update; with persistence each frame goes to the costmap once, which keeps it
+// for its persistence.
+void ScenarioLoop::sense_mount(std::size_t i, double t,
+                               std::vector<costmap::CloudObservation>& observations) {
+  const detail::SimulatedMount& mount = setup.mounts[i];
+  const bool keeps = mount.source.observation_persistence > 0.0;
+  std::vector<long> held = frames_held(mount.timing, t, mount.source.observation_persistence);
+  if (keeps) std::erase_if(held, [&](long index) { return index <= last_passed[i]; });
+  std::map<long, model::PointCloud>& cache = frames[i];
+  std::erase_if(cache, [&](const auto& frame) {
+    return !std::binary_search(held.begin(), held.end(), frame.first);
+  });
+  for (const long index : held) {
+    if (cache.count(index)) continue;
+    cache[index] = cast_frame(i, index);
+    ++result.frames_cast;
+  }
+  for (const auto& [index, cloud] : cache)
+    observations.push_back({&cloud, model::Pose3::Identity(), mount.source});
+  if (!cache.empty()) {
+    clouds[i] = cache.rbegin()->second;
+    last_passed[i] = cache.rbegin()->first;
+  }
+}
+
+// Frame `index` of mount `i`, world frame, with the drops it shows marked when asked.
+model::PointCloud ScenarioLoop::cast_frame(std::size_t i, long index) {
+  const detail::SimulatedMount& mount = setup.mounts[i];
+  const double captured = mount.timing.capture(index);
+  std::optional<sim::RayCaster> moving_caster;
+  if (!static_scene)
+    moving_caster.emplace(moving_mesh_at(scenario.scene, clocks.at(captured)), still_caster);
+  const sim::RayCaster& caster = static_scene ? still_caster : *moving_caster;
+  const model::Pose3 T_world_sensor =
+      detail::to_pose3(history.empty() ? pose : history.at(captured)) * mount.mount.T_robot_sensor;
+  model::PointCloud frame =
+      sim::simulate_frame(caster, mount.mode, mount.rays, T_world_sensor, settings, streams[i]);
+  if (params.negative_obstacles) frame = with_negative_obstacles(frame, resolution, drop_marks);
+  return frame;
+}
+
+void ScenarioLoop::update(double t, std::span<const costmap::CloudObservation> observations,
+                          bool velocity_command) {
+  const model::Pose3 T_world_robot = detail::to_pose3(pose);
+  const Clock::time_point update_start = Clock::now();
+  costmap.update(t, T_world_robot, observations, velocity_command);
+  result.update_seconds.push_back(seconds_since(update_start));
+}
+
+// A local goal on the current leg and a global plan to it; none while waiting at a stop.
+void ScenarioLoop::plan() {
+  goal = pose.position;
+  path = costmap::PlannedPath{};
+  if (waiting) return;
+  const std::optional<model::Vec2> chosen =
+      local_goal(leg_start, scenario.route[stop].position, pose.position, lookahead,
+                 params.goal_search_radius, costmap.master(), params.planner);
+  if (chosen) {
+    goal = *chosen;
+    const Clock::time_point plan_start = Clock::now();
+    path = costmap::plan_dijkstra(costmap.master(), pose.position, goal, params.planner);
+    result.planner_seconds.push_back(seconds_since(plan_start));
+  }
+  if (!path.found) ++result.planner_failures;  // no goal or no path: hold still
+}
+
+void ScenarioLoop::publish(double t, bool velocity_command) {
+  result.trajectory.push_back({t, pose});
+  if (on_update) {
+    ScenarioStep update_step;
+    update_step.index = result.updates;
+    update_step.time = t;
+    update_step.pose = pose;
+    update_step.velocity_command = velocity_command;
+    update_step.waiting = waiting;
+    update_step.costmap = &costmap;
+    update_step.path = &path;
+    update_step.goal = goal;
+    update_step.clouds = clouds;
+    update_step.object_clocks = clocks.now();
+    on_update(update_step);
+  }
+  ++result.updates;
+}
+
+// The command, then paper 2's deadlock handling on it. False when the robot gave up.
+bool ScenarioLoop::act(double t) {
+  const bool blocked = choose_command(t);
+  if (params.deadlock_recovery &&
+      recover_if_stuck(recovery, blocked, waiting, t, stop, scenario.route[stop].position, pose,
+                       costmap, params, result)) {
+    return refuse_stop(t);
+  }
+  return true;
+}
+
+// Returns whether the robot is blocked: no plan, or no admissible velocity.
+bool ScenarioLoop::choose_command(double t) {
+  if (t < recovery.turning_until) {
+    // Paper 2's recovery turn: on the spot, a full turn, sensing all the while.
+    command = costmap::VelocityCommand{0.0, params.follower.max_angular_speed};
+    result.recovery_seconds += dt;
+    return false;
+  }
+  if (waiting) {
+    command = costmap::VelocityCommand{};
+    return false;
+  }
+  if (!path.found) {
+    command = costmap::VelocityCommand{};
+    return true;
+  }
+  if (params.local_planner == LocalPlanner::dwa) {
+    const costmap::DwaResult chosen =
+        costmap::plan_dwa(costmap.master(), pose, command, path.waypoints_world, goal, dt, dwa);
+    if (!chosen.found) ++result.dwa_blocked_steps;
+    command = chosen.command;
+    return !chosen.found;
+  }
+  command = costmap::pursue(path.waypoints_world, pose, params.follower);
+  return false;
+}
+
+// The current stop is unreachable: recorded as refused, then on to the next one, as a robot
+// given a list of goals does, or the run ends. False when it ends.
+bool ScenarioLoop::refuse_stop(double t) {
+  StopOutcome refused;
+  refused.name = scenario.route[stop].name;
+  refused.refused = true;
+  refused.reason = unreachable_reason(
+      stop, refused.name, pose.position, scenario.route[stop].position, drop_marks, resolution,
+      setup.costmap.inflation.inscribed_radius + resolution, params);
+  refused.leg_distance = leg_distance;
+  refused.leg_seconds = t - leg_start_time;
+  result.stops.push_back(refused);
+  if (!scenario.skip_unreachable || stop + 1 >= scenario.route.size()) {
+    result.gave_up = true;
+    result.gave_up_reason = refused.reason;
+    return false;
+  }
+  ++stop;
+  start_leg(t);
+  command = costmap::VelocityCommand{};
+  return true;
+}
+
+// The command of step `k` (at `t`) recorded, the objects' clocks moved on, the robot moved.
+void ScenarioLoop::drive(long k, double t) {
+  history.record(t, pose, command);
+  clocks.record(t);
+  clocks.advance(static_cast<double>(k + 1) / params.control_rate, dt, pose.position);
+  const costmap::Pose2 next = costmap::integrate_unicycle(pose, command, dt);
+  leg_distance += (next.position - pose.position).norm();
+  result.distance += (next.position - pose.position).norm();
+  pose = next;
+}
+
+void ScenarioLoop::start_leg(double t) {
+  leg_start = pose.position;
+  leg_start_time = t;
+  leg_distance = 0.0;
+}
+
 }  // namespace
 
 void apply_scenario_settings(const ScenarioDefinition& scenario, ScenarioParams& params) {
@@ -316,264 +714,10 @@ ScenarioResult run_scenario(const ScenarioDefinition& scenario, const model::Rig
                             const std::function<void(const ScenarioStep&)>& on_update) {
   check_scenario_inputs(rig, library, params);
   const detail::Setup setup = detail::make_setup(rig, library, params);
-  costmap::Costmap costmap(setup.costmap);
-  const costmap::HeightBand band{params.ground_clearance, rig.body.height};
-  const bool static_scene = scenario.scene.moving.empty();
-  // The still objects' tree and outlines are built once; the moving ones at each instant.
-  const sim::RayCaster still_caster(still_mesh(scenario.scene));
-  const costmap::FootprintCollisionChecker still_checker(still_meshes(scenario.scene), band);
-  std::vector<std::mt19937_64> streams;
-  for (std::size_t i = 0; i < setup.mounts.size(); ++i)
-    streams.push_back(sim::noise_stream(params.seed, i));
-  sim::SimulationSettings settings;
-  settings.add_noise = params.add_noise;
-
-  const int steps_per_update =
-      std::max(1, static_cast<int>(std::lround(params.control_rate / params.update_rate)));
-  const double dt = 1.0 / params.control_rate;
-  const double lookahead =
-      std::min(params.goal_lookahead, 0.5 * std::min(setup.costmap.size_x, setup.costmap.size_y) -
-                                          2 * setup.costmap.resolution);
-
-  ScenarioResult result;
-  for (const detail::SimulatedMount& mount : setup.mounts) result.timings.push_back(mount.timing);
-  result.route_size = scenario.route.size();
-  CellSet drop_marks;
-  const double resolution = setup.costmap.resolution;
-  // The leg being driven: where and when it started, how far the robot has come on it.
-  model::Vec2 leg_start = scenario.start.position;
-  double leg_start_time = 0.0;
-  double leg_distance = 0.0;
-  bool touched_by_walker = false;
-  ObjectClocks clocks(scenario.scene);
-  // Frames simulated so far and still held by the costmap, by capture index, per mount.
-  std::vector<std::map<long, model::PointCloud>> frames(setup.mounts.size());
-  std::vector<long> last_passed(setup.mounts.size(), -1);  // newest frame given to the costmap
-  PoseHistory history;
-  costmap::Pose2 pose = scenario.start;
-  std::size_t stop = 0;
-  bool waiting = false;
-  double wait_until = 0.0;
-  costmap::VelocityCommand command;
-  costmap::PlannedPath path;
-  model::Vec2 goal = scenario.start.position;  // the local goal of the latest plan
-  Recovery recovery;
-  recovery.closest = scenario.route.empty()
-                         ? 0.0
-                         : (scenario.route.front().position - scenario.start.position).norm();
-  costmap::DwaParams dwa = params.dwa;
-  dwa.max_speed = params.follower.speed;
-  dwa.max_angular_speed = params.follower.max_angular_speed;
-  std::vector<model::PointCloud> clouds(setup.mounts.size());
-  const auto start_leg = [&](double t) {
-    leg_start = pose.position;
-    leg_start_time = t;
-    leg_distance = 0.0;
-  };
-  for (long k = 0;; ++k) {
-    const double t = static_cast<double>(k) / params.control_rate;
-    result.end_time = t;
-    // Ground truth first: the pose reached by the last command. Walkers count only while the
-    // robot drives: one who walks into a standing robot is not the robot's collision.
-    costmap::Clearance clearance = still_checker.clearance(pose.position, rig.body.radius);
-    if (!static_scene) {
-      std::vector<model::TriangleMesh> storage;
-      const costmap::Clearance walker =
-          costmap::FootprintCollisionChecker(
-              moving_meshes_at(scenario.scene, clocks.now(), storage), band)
-              .clearance(pose.position, rig.body.radius);
-      if (command.linear != 0.0) {
-        if (walker.distance < clearance.distance) clearance = walker;
-      } else if (walker.distance < 0.0 && !touched_by_walker) {
-        ++result.struck_while_standing;
-      }
-      touched_by_walker = walker.distance < 0.0;
-    }
-    if (clearance.distance < result.min_clearance) {
-      result.min_clearance = clearance.distance;
-      result.min_clearance_time = t;
-      result.min_clearance_object = clearance.object;
-    }
-    if (clearance.distance < 0.0) {
-      result.collided = true;
-      result.collision_time = t;
-      result.collision_object = clearance.object;
-      result.collision_position = pose.position;
-      break;
-    }
-    const auto drop = std::find_if(scenario.drops.begin(), scenario.drops.end(),
-                                   [&](const FloorDrop& d) { return d.contains(pose.position); });
-    if (drop != scenario.drops.end()) {
-      result.drove_off = true;
-      result.drop_name = drop->name;
-      result.drove_off_time = t;
-      result.drove_off_speed = command.linear;
-      break;
-    }
-    // Stops: arrive, wait, leave.
-    if (waiting && t >= wait_until - 1e-9) {
-      waiting = false;
-      ++stop;
-      start_leg(t);
-    } else if (!waiting &&
-               (pose.position - scenario.route[stop].position).norm() < params.goal_tolerance) {
-      StopOutcome reached;
-      reached.name = scenario.route[stop].name;
-      reached.reached = true;
-      reached.reached_time = t;
-      reached.leg_distance = leg_distance;
-      reached.leg_seconds = t - leg_start_time;
-      result.stops.push_back(reached);
-      ++result.goals_reached;
-      if (scenario.route[stop].wait > 0.0) {
-        waiting = true;
-        wait_until = t + scenario.route[stop].wait;
-      } else {
-        ++stop;
-        start_leg(t);
-      }
-    }
-    if (stop >= scenario.route.size()) {
-      result.reached_goal = true;
-      break;
-    }
-    if (t > scenario.max_duration) break;
-
-    if (k % steps_per_update == 0) {
-      const model::Pose3 T_world_robot = detail::to_pose3(pose);
-      // Each mount's frames, captured at their own times, from where the robot was then, in
-      // the scene as it was then, arrived a latency later. Without persistence nav2's buffer
-      // holds the newest frame until the next one arrives, so it marks at every update; with
-      // persistence each frame goes to the costmap once, which keeps it for its persistence.
-      std::vector<costmap::CloudObservation> observations;
-      for (std::size_t i = 0; i < setup.mounts.size(); ++i) {
-        const detail::SimulatedMount& mount = setup.mounts[i];
-        const bool keeps = mount.source.observation_persistence > 0.0;
-        std::vector<long> held = frames_held(mount.timing, t, mount.source.observation_persistence);
-        if (keeps) std::erase_if(held, [&](long index) { return index <= last_passed[i]; });
-        std::map<long, model::PointCloud>& cache = frames[i];
-        std::erase_if(cache, [&](const auto& frame) {
-          return !std::binary_search(held.begin(), held.end(), frame.first);
-        });
-        for (const long index : held) {
-          if (cache.count(index)) continue;
-          const double captured = mount.timing.capture(index);
-          std::optional<sim::RayCaster> moving_caster;
-          if (!static_scene)
-            moving_caster.emplace(moving_mesh_at(scenario.scene, clocks.at(captured)),
-                                  still_caster);
-          const sim::RayCaster& caster = static_scene ? still_caster : *moving_caster;
-          const model::Pose3 T_world_sensor =
-              detail::to_pose3(history.empty() ? pose : history.at(captured)) *
-              mount.mount.T_robot_sensor;
-          model::PointCloud frame = sim::simulate_frame(caster, mount.mode, mount.rays,
-                                                        T_world_sensor, settings, streams[i]);
-          if (params.negative_obstacles)
-            frame = with_negative_obstacles(frame, resolution, drop_marks);
-          cache[index] = std::move(frame);
-          ++result.frames_cast;
-        }
-        for (const auto& [index, cloud] : cache)
-          observations.push_back({&cloud, model::Pose3::Identity(), mount.source});
-        if (!cache.empty()) {
-          clouds[i] = cache.rbegin()->second;
-          last_passed[i] = cache.rbegin()->first;
-        }
-      }
-      const bool velocity_command = !command.is_zero();
-      const Clock::time_point update_start = Clock::now();
-      costmap.update(t, T_world_robot, observations, velocity_command);
-      result.update_seconds.push_back(seconds_since(update_start));
-
-      goal = pose.position;
-      path = costmap::PlannedPath{};
-      if (!waiting) {
-        const std::optional<model::Vec2> chosen =
-            local_goal(leg_start, scenario.route[stop].position, pose.position, lookahead,
-                       params.goal_search_radius, costmap.master(), params.planner);
-        if (chosen) {
-          goal = *chosen;
-          const Clock::time_point plan_start = Clock::now();
-          path = costmap::plan_dijkstra(costmap.master(), pose.position, goal, params.planner);
-          result.planner_seconds.push_back(seconds_since(plan_start));
-        }
-        if (!path.found) ++result.planner_failures;  // no goal or no path: hold still
-      }
-      result.trajectory.push_back({t, pose});
-      if (on_update) {
-        ScenarioStep step;
-        step.index = result.updates;
-        step.time = t;
-        step.pose = pose;
-        step.velocity_command = velocity_command;
-        step.waiting = waiting;
-        step.costmap = &costmap;
-        step.path = &path;
-        step.goal = goal;
-        step.clouds = clouds;
-        step.object_clocks = clocks.now();
-        on_update(step);
-      }
-      ++result.updates;
-    }
-    bool blocked = false;
-    if (t < recovery.turning_until) {
-      // Paper 2's recovery turn: on the spot, a full turn, sensing all the while.
-      command = costmap::VelocityCommand{0.0, params.follower.max_angular_speed};
-      result.recovery_seconds += dt;
-    } else if (waiting) {
-      command = costmap::VelocityCommand{};
-    } else if (!path.found) {
-      command = costmap::VelocityCommand{};
-      blocked = true;
-    } else if (params.local_planner == LocalPlanner::dwa) {
-      const costmap::DwaResult chosen =
-          costmap::plan_dwa(costmap.master(), pose, command, path.waypoints_world, goal, dt, dwa);
-      if (!chosen.found) ++result.dwa_blocked_steps;
-      command = chosen.command;
-      blocked = !chosen.found;
-    } else {
-      command = costmap::pursue(path.waypoints_world, pose, params.follower);
-    }
-    if (params.deadlock_recovery &&
-        recover_if_stuck(recovery, blocked, waiting, t, stop, scenario.route[stop].position, pose,
-                         costmap, params, result)) {
-      StopOutcome refused;
-      refused.name = scenario.route[stop].name;
-      refused.refused = true;
-      refused.reason = unreachable_reason(
-          stop, refused.name, pose.position, scenario.route[stop].position, drop_marks, resolution,
-          setup.costmap.inflation.inscribed_radius + resolution, params);
-      refused.leg_distance = leg_distance;
-      refused.leg_seconds = t - leg_start_time;
-      result.stops.push_back(refused);
-      if (!scenario.skip_unreachable || stop + 1 >= scenario.route.size()) {
-        result.gave_up = true;
-        result.gave_up_reason = refused.reason;
-        break;
-      }
-      ++stop;  // on to the next goal, as a robot given a list of goals does
-      start_leg(t);
-      command = costmap::VelocityCommand{};
-    }
-    history.record(t, pose, command);
-    clocks.record(t);
-    clocks.advance(static_cast<double>(k + 1) / params.control_rate, dt, pose.position);
-    const costmap::Pose2 next = costmap::integrate_unicycle(pose, command, dt);
-    leg_distance += (next.position - pose.position).norm();
-    result.distance += (next.position - pose.position).norm();
-    pose = next;
-  }
-  result.trajectory.push_back({result.end_time, pose});
-  double reached_distance = 0.0;
-  double reached_seconds = 0.0;
-  for (const StopOutcome& outcome : result.stops) {
-    if (!outcome.reached) continue;
-    reached_distance += outcome.leg_distance;
-    reached_seconds += outcome.leg_seconds;
-  }
-  if (reached_seconds > 0.0) result.average_speed = reached_distance / reached_seconds;
-  return result;
+  ScenarioLoop loop(scenario, rig, params, setup, on_update);
+  long k = 0;
+  while (loop.step(k)) ++k;
+  return loop.finish();
 }
 
 }  // namespace rigdesign::scenarios

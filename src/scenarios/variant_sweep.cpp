@@ -1,10 +1,10 @@
 // Paper 2's Table 1 for any rig: subsets of mounts, seeds, the critical-distance sweep.
 #include "rigdesign/scenarios/variant_sweep.hpp"
 
-#include <exception>
-#include <thread>
+#include <algorithm>
 
 #include "rigdesign/model/input_error.hpp"
+#include "rigdesign/model/parallel_for.hpp"
 
 namespace rigdesign::scenarios {
 namespace {
@@ -26,27 +26,14 @@ std::vector<RunSummary> run_seeds(const ScenarioFactory& make_scenario, const mo
   for (int start = 0; start < settings.seeds; start += threads) {
     const int batch = std::min(threads, settings.seeds - start);
     std::vector<RunSummary> results(static_cast<std::size_t>(batch));
-    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(batch));
-    const auto run_one = [&](int j) {
-      const auto slot = static_cast<std::size_t>(j);
-      try {
-        const std::uint64_t seed = settings.first_seed + static_cast<std::uint64_t>(start + j);
-        ScenarioParams run_params = params;
-        run_params.seed = seed;
-        run_params.clearance_margin = margin;
-        const ScenarioDefinition scenario = make_scenario(seed, rig.body.radius);
-        results[slot] =
-            summarize_run(seed, margin, run_scenario(scenario, rig, library, run_params));
-      } catch (...) {
-        errors[slot] = std::current_exception();
-      }
-    };
-    std::vector<std::thread> workers;
-    for (int j = 1; j < batch; ++j) workers.emplace_back(run_one, j);
-    run_one(0);
-    for (std::thread& worker : workers) worker.join();
-    for (const std::exception_ptr& error : errors)
-      if (error) std::rethrow_exception(error);
+    model::parallel_for(results.size(), batch, [&](std::size_t j) {
+      const std::uint64_t seed = settings.first_seed + static_cast<std::uint64_t>(start) + j;
+      ScenarioParams run_params = params;
+      run_params.seed = seed;
+      run_params.clearance_margin = margin;
+      const ScenarioDefinition scenario = make_scenario(seed, rig.body.radius);
+      results[j] = summarize_run(seed, margin, run_scenario(scenario, rig, library, run_params));
+    });
     bool collided = false;
     for (const RunSummary& run : results) {
       runs.push_back(run);

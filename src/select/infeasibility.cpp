@@ -35,16 +35,16 @@ std::optional<std::string> unmet_metric(const std::vector<std::vector<CatalogOpt
   if (!any) return "the catalog offers no slot option";
   if (fastest < targets.min_frequency)
     return "F: no sensor mode of the catalog runs at " +
-           model::format_number(targets.min_frequency, 4) + " Hz or faster (the fastest: " +
-           model::format_number(fastest, 4) + " Hz)";
+           model::format_number(targets.min_frequency, 4) +
+           " Hz or faster (the fastest: " + model::format_number(fastest, 4) + " Hz)";
   if (targets.max_spacing && finest > *targets.max_spacing)
     return "R: no sensor mode of the catalog resolves " +
-           model::format_number(*targets.max_spacing * 1000, 4) + " mm at its distance (the finest: " +
-           model::format_number(finest * 1000, 4) + " mm)";
+           model::format_number(*targets.max_spacing * 1000, 4) +
+           " mm at its distance (the finest: " + model::format_number(finest * 1000, 4) + " mm)";
   if (targets.max_noise && least_noise > *targets.max_noise)
     return "N: no sensor mode of the catalog is within " +
-           model::format_number(*targets.max_noise * 1000, 4) + " mm noise (the least: " +
-           model::format_number(least_noise * 1000, 4) + " mm)";
+           model::format_number(*targets.max_noise * 1000, 4) +
+           " mm noise (the least: " + model::format_number(least_noise * 1000, 4) + " mm)";
   for (std::size_t i = 0; i < targets.lighting.size(); ++i) {
     if (!immune[i])
       return "L: no sensor mode of the catalog works in " + to_string(targets.lighting[i]);
@@ -134,8 +134,8 @@ std::string infeasibility_cause(const SearchProblem& problem,
   unlimited.transfer = {{"unlimited", kUnbounded, 0.0, {}, {}}};
   unlimited.cpus = {{"unlimited", kUnbounded, 0.0, {}, {}}};
   const bool robust = problem.robustness.any();
-  const std::string which = robust ? "meeting the requirements and surviving the failures"
-                                   : "meeting the requirements";
+  const std::string which =
+      robust ? "meeting the requirements and surviving the failures" : "meeting the requirements";
   const SearchResult cheapest = branch_and_bound(unlimited);
   if (!cheapest.found) {
     if (!robust) return "no combination of the catalog's options meets every sector together";
@@ -156,8 +156,10 @@ std::string infeasibility_cause(const SearchProblem& problem,
   cpu_only.cpus = {{cpu_id, cores, 0.0, {}, {}}};
   if (!branch_and_bound(cpu_only).found) {
     causes.push_back("CPU: no rig " + which + " loads less than the " +
-                     model::format_number(cores, 4) + " core-equivalents of the catalog's largest "
-                     "CPU, " + cpu_id + " (the cheapest rig with an unlimited, free CPU loads " +
+                     model::format_number(cores, 4) +
+                     " core-equivalents of the catalog's largest "
+                     "CPU, " +
+                     cpu_id + " (the cheapest rig with an unlimited, free CPU loads " +
                      model::format_number(needed.cpu, 4) + ")");
   }
   std::string link_id;
@@ -166,12 +168,17 @@ std::string infeasibility_cause(const SearchProblem& problem,
   transfer_only.transfer = {{link_id, bits, 0.0, {}, {}}};
   if (!branch_and_bound(transfer_only).found) {
     causes.push_back("transfer: no rig " + which + " sends less than the " +
-                     model::format_number(bits / 1e9, 4) + " Gbit/s of the catalog's largest "
-                     "transfer item, " + link_id + " (the cheapest rig with unlimited, free transfer "
-                     "sends " + model::format_number(needed.bandwidth * 8 / 1e9, 4) + " Gbit/s)");
+                     model::format_number(bits / 1e9, 4) +
+                     " Gbit/s of the catalog's largest "
+                     "transfer item, " +
+                     link_id +
+                     " (the cheapest rig with unlimited, free transfer "
+                     "sends " +
+                     model::format_number(needed.bandwidth * 8 / 1e9, 4) + " Gbit/s)");
   }
   if (causes.empty()) {
-    return "CPU and transfer together: rigs " + which + " fit the largest CPU and rigs fit the "
+    return "CPU and transfer together: rigs " + which +
+           " fit the largest CPU and rigs fit the "
            "largest transfer item, but none fits both";
   }
   return model::join(causes, "; ");

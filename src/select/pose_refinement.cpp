@@ -43,7 +43,8 @@ struct RasterMargins::State {
 
   State(const SelectionSpace& s, const model::Rig& rig) : space(s), body(rig.body) {}
 
-  std::vector<geometry::SectionRaster> rasterise(std::size_t mount, const model::Pose3& pose) const {
+  std::vector<geometry::SectionRaster> rasterise(std::size_t mount,
+                                                 const model::Pose3& pose) const {
     const geometry::MountedFov fov(*modes[mount], pose, body);
     std::vector<geometry::SectionRaster> out;
     for (std::size_t i = 0; i < frames.size(); ++i)
@@ -78,14 +79,16 @@ struct RasterMargins::State {
   std::vector<double> margins(const std::vector<geometry::SectionRaster>* replaced,
                               std::size_t at) const {
     std::vector<double> out;
-    margins_of(sectors, [](std::size_t) { return true; }, replaced, at, out);
+    margins_of(
+        sectors, [](std::size_t) { return true; }, replaced, at, out);
     if (single_failure) {
       for (std::size_t j = 0; j < rasters.size(); ++j)
-        margins_of(robust_sectors, [&](std::size_t m) { return m != j; }, replaced, at, out);
+        margins_of(
+            robust_sectors, [&](std::size_t m) { return m != j; }, replaced, at, out);
     }
     if (!fails_in_condition.empty()) {
-      margins_of(robust_sectors, [&](std::size_t m) { return !fails_in_condition[m]; }, replaced,
-                 at, out);
+      margins_of(
+          robust_sectors, [&](std::size_t m) { return !fails_in_condition[m]; }, replaced, at, out);
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -106,8 +109,8 @@ RasterMargins::RasterMargins(const SelectionSpace& space, const SatisficingTarge
         if (!metrics::in_sector(sector, space.angle(a))) continue;
         if (local_of[a] == space.grids().size()) {
           local_of[a] = s.frames.size();
-          s.frames.push_back(
-              geometry::section_frame(s.body, space.angle(a), space.catalog().distance_of_interest));
+          s.frames.push_back(geometry::section_frame(s.body, space.angle(a),
+                                                     space.catalog().distance_of_interest));
           s.grids.push_back(space.grids()[a]);
         }
         local.angles.push_back(local_of[a]);
@@ -124,7 +127,8 @@ RasterMargins::RasterMargins(const SelectionSpace& space, const SatisficingTarge
   for (const model::Mount& mount : rig.mounts) {
     s.modes.push_back(&space.library().resolved_mode(mount.sensor_id, mount.mode_id));
     if (targets.robustness && targets.robustness->condition)
-      s.fails_in_condition.push_back(!s.modes.back()->light.immune_to(*targets.robustness->condition));
+      s.fails_in_condition.push_back(
+          !s.modes.back()->light.immune_to(*targets.robustness->condition));
   }
   for (std::size_t m = 0; m < rig.mounts.size(); ++m)
     s.rasters.push_back(s.rasterise(m, rig.mounts[m].T_robot_sensor));
@@ -137,12 +141,16 @@ std::vector<double> RasterMargins::margins_with(std::size_t mount, const model::
   return state_->margins(&moved, mount);
 }
 
-std::vector<double> RasterMargins::margins() { return state_->margins(nullptr, 0); }
+std::vector<double> RasterMargins::margins() {
+  return state_->margins(nullptr, 0);
+}
 
-std::vector<double> RasterMargins::sector_margins_with(std::size_t mount, const model::Pose3& pose) {
+std::vector<double> RasterMargins::sector_margins_with(std::size_t mount,
+                                                       const model::Pose3& pose) {
   const std::vector<geometry::SectionRaster> moved = state_->rasterise(mount, pose);
   std::vector<double> out;
-  state_->margins_of(state_->sectors, [](std::size_t) { return true; }, &moved, mount, out);
+  state_->margins_of(
+      state_->sectors, [](std::size_t) { return true; }, &moved, mount, out);
   return out;
 }
 
@@ -183,8 +191,8 @@ std::vector<MarginSample> margin_sweep(const SelectionSpace& space,
   std::vector<MarginSample> curve;
   for (int i = 0; i < samples; ++i) {
     std::array<double, 6> at = values;
-    at[range.axis] = samples < 2 ? range.low
-                                 : range.low + (range.high - range.low) * i / (samples - 1);
+    at[range.axis] =
+        samples < 2 ? range.low : range.low + (range.high - range.low) * i / (samples - 1);
     const model::Pose3 pose = pose_from_values(at);
     if (margins.inside_body(pose)) continue;
     curve.push_back({at[range.axis], smallest(margins.margins_with(mount, pose)),
@@ -223,7 +231,8 @@ PoseRefinement refine_poses(const SelectionSpace& space, const Selection& select
   for (const Parameter& p : parameters) steps.push_back(p.step / 2);
   for (int halving = 0; halving < kHalvings && refinement.evaluations < kMaxEvaluations;) {
     bool moved = false;
-    for (std::size_t i = 0; i < parameters.size() && refinement.evaluations < kMaxEvaluations; ++i) {
+    for (std::size_t i = 0; i < parameters.size() && refinement.evaluations < kMaxEvaluations;
+         ++i) {
       const Parameter& p = parameters[i];
       for (const double direction : {1.0, -1.0}) {
         std::array<double, 6> trial = values[p.mount];
@@ -255,8 +264,8 @@ PoseRefinement refine_poses(const SelectionSpace& space, const Selection& select
   for (const Parameter& p : parameters) {
     const CatalogOption& option = *selection.chosen[p.mount];
     const double grid = space.catalog().slots[option.slot].poses[option.pose].values[p.axis];
-    refinement.axes.push_back({selection.rig.mounts[p.mount].id, p.axis, p.low, p.high, grid,
-                               values[p.mount][p.axis]});
+    refinement.axes.push_back(
+        {selection.rig.mounts[p.mount].id, p.axis, p.low, p.high, grid, values[p.mount][p.axis]});
   }
   // Unmoved, the grid poses are the best seen.
   if (std::all_of(refinement.axes.begin(), refinement.axes.end(),

@@ -53,8 +53,8 @@ std::vector<BindingRequirement> binding_requirements(const SelectionSpace& space
     // Each probe is a whole select: its phases count as a share of the probe.
     const auto probe = [&, name = name](const PhaseProgress& at) {
       if (progress)
-        progress({"binding requirements", done + (at.total > 0 ? at.done / at.total : 0.0),
-                  total, "probes", "without " + name + ": " + at.phase});
+        progress({"binding requirements", done + (at.total > 0 ? at.done / at.total : 0.0), total,
+                  "probes", "without " + name + ": " + at.phase});
     };
     const Selection selection = select_cheapest(space, relaxed, probe, /*probe=*/true);
     all.push_back({name, selection.found, selection.found ? selection.cost.total : 0.0});
@@ -111,8 +111,8 @@ RelaxationOutcome select_within_budget(
   }
   PhaseClock clock(outcome.phases, &progress);
   clock.start("binding requirements");
-  outcome.binding = binding_requirements(space, current, outcome.iterations.back().selection,
-                                         budget, progress);
+  outcome.binding =
+      binding_requirements(space, current, outcome.iterations.back().selection, budget, progress);
   clock.stop(std::to_string(without_each(current).size()) +
              " searches, each without one requirement");
   return outcome;

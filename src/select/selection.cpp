@@ -79,6 +79,172 @@ std::optional<std::string> sector_needing_one_slot(
   return std::nullopt;
 }
 
+// R1 and R3 against the catalog itself: a catalog for another body, or one whose options were
+// judged at a shorter distance, cannot give the application a rig.
+std::optional<std::string> catalog_mismatch(const model::Catalog& catalog,
+                                            const model::Requirements& requirements,
+                                            const SatisficingTargets& targets) {
+  if (requirements.body_radius &&
+      (std::abs(*requirements.body_radius - catalog.body.radius) > 1e-3 ||
+       std::abs(*requirements.body_height - catalog.body.height) > 1e-3)) {
+    return "R1: the catalog's body differs from the application's";
+  }
+  if (catalog.distance_of_interest + 1e-9 < targets.distance) {
+    return "R3: the catalog's distance of interest " +
+           model::format_number(catalog.distance_of_interest) + " m is below the required " +
+           model::format_number(targets.distance) + " m";
+  }
+  return std::nullopt;
+}
+
+// A search's progress reported as the phase `phase`.
+std::function<void(const SearchProgress&)> search_progress_for(const ProgressSink& progress,
+                                                               const std::string& phase) {
+  return [&progress, phase](const SearchProgress& at) {
+    if (progress) progress({phase, at.fraction, 1.0, "", std::to_string(at.nodes) + " nodes"});
+  };
+}
+
+// select_cheapest once the problem is set up: what its steps share. The steps: search for the
+// cheapest rig not yet rejected, verify it on the exact path, accept it (its poses refined), and
+// after the loop the price of robustness and the reason why no rig was found.
+struct CheapestSearch {
+  const SelectionSpace& space;
+  const SatisficingTargets& targets;
+  const ProgressSink& progress;
+  bool probe;
+  const SearchProblem& problem;
+  const std::vector<std::vector<const CatalogOption*>>& kept;
+  Selection& selection;
+  metrics::CoverageSettings exact;  // the space's settings on the exact path
+  PhaseClock clock{selection.phases, &progress};
+
+  void run();
+  bool search(const std::vector<std::vector<int>>& excluded);
+  bool verify();
+  void accept();
+  void robustness_cost();
+  void explain_infeasible();
+};
+
+// Raster winners the exact path rejects are excluded and the search repeated, up to
+// kMaxExactRejections times.
+void CheapestSearch::run() {
+  std::vector<std::vector<int>> excluded;
+  while (search(excluded)) {
+    if (verify()) {
+      accept();
+      return;
+    }
+    excluded.push_back(selection.search.choice);
+    if (++selection.rejected_by_exact_path >= kMaxExactRejections) return;
+  }
+}
+
+// The cheapest rig on the rasters except `excluded`; false when there is none.
+bool CheapestSearch::search(const std::vector<std::vector<int>>& excluded) {
+  const std::string phase = excluded.empty()
+                                ? std::string("search")
+                                : "search " + std::to_string(excluded.size() + 1) +
+                                      " (raster winners the exact path rejected excluded)";
+  clock.start(phase);
+  selection.search = branch_and_bound(problem, excluded, search_progress_for(progress, phase));
+  clock.stop(std::to_string(selection.search.nodes) + " nodes, " +
+             std::to_string(selection.search.evaluations) + " rigs evaluated");
+  if (!selection.search.found) return false;
+  selection.chosen.clear();
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    const int index = selection.search.choice[k];
+    if (index >= 0) selection.chosen.push_back(kept[k][index]);
+  }
+  selection.rig = space.rig_for(selection.chosen);
+  return true;
+}
+
+// The rig's coverage on the exact path, then over the tolerance box and under the failures
+// when the requirements ask for them; each only while the rig still passes.
+bool CheapestSearch::verify() {
+  clock.start("exact verification");
+  if (progress) progress({"exact verification", 0, 1, "rigs", ""});
+  selection.coverage =
+      metrics::compute_coverage(selection.rig, space.library(), targets.sectors, exact);
+  bool verified = std::all_of(selection.coverage.sectors.begin(), selection.coverage.sectors.end(),
+                              [](const metrics::SectorCoverage& sector) { return sector.pass; });
+  clock.stop(std::string("the rig's coverage on the exact path") + (verified ? "" : ": rejected"));
+  if (verified && space.tolerance() && space.tolerance()->any()) {
+    clock.start("exact verification over the tolerance box");
+    selection.tolerance =
+        metrics::tolerance_coverage(selection.rig, space.library(), targets.sectors, exact);
+    verified = std::all_of(selection.tolerance.begin(), selection.tolerance.end(),
+                           [](const metrics::SectorTolerance& sector) { return sector.pass; });
+    clock.stop(std::to_string(selection.tolerance.size()) +
+               " sectors at every mount's box corners and face centres" +
+               (verified ? "" : ": rejected"));
+  }
+  if (verified && targets.robustness && targets.robustness->any()) {
+    clock.start("exact verification of failures");
+    selection.failures =
+        failure_impacts(selection.rig, space, targets, exact, [&](double done, double total) {
+          if (progress)
+            progress({"exact verification of failures", done, total, "sector angles", ""});
+        });
+    verified = std::all_of(selection.failures.begin(), selection.failures.end(),
+                           [](const FailureImpact& f) { return f.broken_sectors.empty(); });
+    clock.stop(std::to_string(selection.failures.size()) +
+               " failures, each mount's sections computed once" + (verified ? "" : ": rejected"));
+  }
+  return verified;
+}
+
+void CheapestSearch::accept() {
+  selection.found = true;
+  selection.cost = selection.search.cost;
+  selection.grid_rig = selection.rig;
+  // The refinement moves poses on nominal rasters: with a tolerance the grid's poses stay.
+  if (!probe && !space.tolerance()) {
+    clock.start("pose refinement");
+    selection.refinement = refine_poses(space, selection, targets, progress);
+    const PoseRefinement& r = selection.refinement;
+    clock.stop(!r.tried ? std::string("no chosen slot has a pose range")
+                        : std::to_string(r.evaluations) + " rigs on the raster path" +
+                              (r.coverage.sectors.empty()
+                                   ? std::string(", no pose moved")
+                                   : std::string(", then the exact path: ") +
+                                         (r.accepted ? "confirmed" : "rejected")));
+  }
+  if (selection.refinement.accepted) {
+    selection.rig = selection.refinement.rig;
+    selection.coverage = selection.refinement.coverage;
+    if (!selection.refinement.failures.empty()) selection.failures = selection.refinement.failures;
+  }
+}
+
+// What robustness costs: the cheapest rig of a search without it.
+void CheapestSearch::robustness_cost() {
+  SearchProblem plain = problem;
+  plain.robustness = {};
+  clock.start("robustness cost");
+  const SearchResult without = branch_and_bound(
+      plain, {}, search_progress_for(progress, "robustness cost (search without it)"));
+  clock.stop("a search without robustness: " + std::to_string(without.nodes) + " nodes");
+  if (without.found) selection.cost_without_robustness = without.cost.total;
+}
+
+void CheapestSearch::explain_infeasible() {
+  if (selection.rejected_by_exact_path >= kMaxExactRejections) {
+    selection.infeasible_reason = "the exact path rejected the " +
+                                  std::to_string(kMaxExactRejections) +
+                                  " cheapest raster winners (thresholds within the raster's "
+                                  "error of what the options reach)";
+  } else if (!probe) {
+    clock.start("cause");
+    selection.infeasible_reason = infeasibility_cause(problem, space.options(), targets, space);
+    clock.stop("searches relaxing one constraint at a time");
+  } else {
+    selection.infeasible_reason = "no combination of the catalog's options meets every requirement";
+  }
+}
+
 }  // namespace
 
 std::size_t count_catalog_options(const model::Catalog& catalog) {
@@ -313,24 +479,14 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
                           const ProgressSink& progress, bool probe) {
   const auto start = std::chrono::steady_clock::now();
   Selection selection;
-  const model::Catalog& catalog = space.catalog();
   const SatisficingTargets targets = satisficing_targets(requirements);
   const auto finish = [&] {
     selection.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return std::move(selection);
   };
-  if (requirements.body_radius &&
-      (std::abs(*requirements.body_radius - catalog.body.radius) > 1e-3 ||
-       std::abs(*requirements.body_height - catalog.body.height) > 1e-3)) {
-    selection.infeasible_reason = "R1: the catalog's body differs from the application's";
-    return finish();
-  }
-  if (catalog.distance_of_interest + 1e-9 < targets.distance) {
-    selection.infeasible_reason = "R3: the catalog's distance of interest " +
-                                  model::format_number(catalog.distance_of_interest) +
-                                  " m is below the required " +
-                                  model::format_number(targets.distance) + " m";
+  if (auto reason = catalog_mismatch(space.catalog(), requirements, targets)) {
+    selection.infeasible_reason = std::move(*reason);
     return finish();
   }
   std::vector<std::vector<const CatalogOption*>> kept;
@@ -341,113 +497,12 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
       return finish();
     }
   }
-  PhaseClock clock(selection.phases, &progress);
-  const auto search_progress = [&](const std::string& phase) {
-    return [&progress, phase](const SearchProgress& at) {
-      if (progress) progress({phase, at.fraction, 1.0, "", std::to_string(at.nodes) + " nodes"});
-    };
-  };
-  std::vector<std::vector<int>> excluded;
   metrics::CoverageSettings exact = space.settings();
   exact.exact = true;
-  while (true) {
-    const std::string phase = excluded.empty()
-                                  ? std::string("search")
-                                  : "search " + std::to_string(excluded.size() + 1) +
-                                        " (raster winners the exact path rejected excluded)";
-    clock.start(phase);
-    selection.search = branch_and_bound(problem, excluded, search_progress(phase));
-    clock.stop(std::to_string(selection.search.nodes) + " nodes, " +
-               std::to_string(selection.search.evaluations) + " rigs evaluated");
-    if (!selection.search.found) break;
-    selection.chosen.clear();
-    for (std::size_t k = 0; k < kept.size(); ++k) {
-      const int index = selection.search.choice[k];
-      if (index >= 0) selection.chosen.push_back(kept[k][index]);
-    }
-    selection.rig = space.rig_for(selection.chosen);
-    clock.start("exact verification");
-    if (progress) progress({"exact verification", 0, 1, "rigs", ""});
-    selection.coverage =
-        metrics::compute_coverage(selection.rig, space.library(), targets.sectors, exact);
-    bool verified =
-        std::all_of(selection.coverage.sectors.begin(), selection.coverage.sectors.end(),
-                    [](const metrics::SectorCoverage& sector) { return sector.pass; });
-    clock.stop(std::string("the rig's coverage on the exact path") +
-               (verified ? "" : ": rejected"));
-    if (verified && space.tolerance() && space.tolerance()->any()) {
-      clock.start("exact verification over the tolerance box");
-      selection.tolerance =
-          metrics::tolerance_coverage(selection.rig, space.library(), targets.sectors, exact);
-      verified = std::all_of(selection.tolerance.begin(), selection.tolerance.end(),
-                             [](const metrics::SectorTolerance& sector) { return sector.pass; });
-      clock.stop(std::to_string(selection.tolerance.size()) +
-                 " sectors at every mount's box corners and face centres" +
-                 (verified ? "" : ": rejected"));
-    }
-    if (verified && targets.robustness && targets.robustness->any()) {
-      clock.start("exact verification of failures");
-      selection.failures =
-          failure_impacts(selection.rig, space, targets, exact, [&](double done, double total) {
-            if (progress)
-              progress({"exact verification of failures", done, total, "sector angles", ""});
-          });
-      verified = std::all_of(selection.failures.begin(), selection.failures.end(),
-                             [](const FailureImpact& f) { return f.broken_sectors.empty(); });
-      clock.stop(std::to_string(selection.failures.size()) +
-                 " failures, each mount's sections computed once" + (verified ? "" : ": rejected"));
-    }
-    if (verified) {
-      selection.found = true;
-      selection.cost = selection.search.cost;
-      selection.grid_rig = selection.rig;
-      // The refinement moves poses on nominal rasters: with a tolerance the grid's poses stay.
-      if (!probe && !space.tolerance()) {
-        clock.start("pose refinement");
-        selection.refinement = refine_poses(space, selection, targets, progress);
-        const PoseRefinement& r = selection.refinement;
-        clock.stop(!r.tried ? std::string("no chosen slot has a pose range")
-                            : std::to_string(r.evaluations) + " rigs on the raster path" +
-                                  (r.coverage.sectors.empty()
-                                       ? std::string(", no pose moved")
-                                       : std::string(", then the exact path: ") +
-                                             (r.accepted ? "confirmed" : "rejected")));
-      }
-      if (selection.refinement.accepted) {
-        selection.rig = selection.refinement.rig;
-        selection.coverage = selection.refinement.coverage;
-        if (!selection.refinement.failures.empty())
-          selection.failures = selection.refinement.failures;
-      }
-      break;
-    }
-    excluded.push_back(selection.search.choice);
-    if (++selection.rejected_by_exact_path >= kMaxExactRejections) break;
-  }
-  if (problem.robustness.any() && !probe) {
-    SearchProblem plain = problem;
-    plain.robustness = {};
-    clock.start("robustness cost");
-    const SearchResult without =
-        branch_and_bound(plain, {}, search_progress("robustness cost (search without it)"));
-    clock.stop("a search without robustness: " + std::to_string(without.nodes) + " nodes");
-    if (without.found) selection.cost_without_robustness = without.cost.total;
-  }
-  if (!selection.found && selection.infeasible_reason.empty()) {
-    if (selection.rejected_by_exact_path >= kMaxExactRejections) {
-      selection.infeasible_reason = "the exact path rejected the " +
-                                    std::to_string(kMaxExactRejections) +
-                                    " cheapest raster winners (thresholds within the raster's "
-                                    "error of what the options reach)";
-    } else if (!probe) {
-      clock.start("cause");
-      selection.infeasible_reason = infeasibility_cause(problem, space.options(), targets, space);
-      clock.stop("searches relaxing one constraint at a time");
-    } else {
-      selection.infeasible_reason =
-          "no combination of the catalog's options meets every requirement";
-    }
-  }
+  CheapestSearch search{space, targets, progress, probe, problem, kept, selection, exact};
+  search.run();
+  if (problem.robustness.any() && !probe) search.robustness_cost();
+  if (!selection.found && selection.infeasible_reason.empty()) search.explain_infeasible();
   return finish();
 }
 

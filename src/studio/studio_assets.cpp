@@ -44,13 +44,11 @@ constexpr const char* kScriptType = "application/javascript; charset=utf-8";
 std::optional<Asset> asset_at(std::string_view url_path) {
   if (url_path == "/" || url_path == "/index.html")
     return Asset{"text/html; charset=utf-8", std::string(kStudioPageHtml)};
-  if (url_path == "/studio.js")
-    return Asset{kScriptType, std::string(kStudioPageScript)};
+  if (url_path == "/studio.js") return Asset{kScriptType, std::string(kStudioPageScript)};
   if (url_path == "/studio.css")
     return Asset{"text/css; charset=utf-8", std::string(kStudioPageStyle)};
   for (const SystemFile& file : kThreeFiles) {
-    if (url_path == file.url)
-      return Asset{kScriptType, read_system_file(file.relative)};
+    if (url_path == file.url) return Asset{kScriptType, read_system_file(file.relative)};
   }
   return std::nullopt;
 }

@@ -83,12 +83,16 @@ double raster_sweep(const UrCleaner& rig, int first_step, int step_stride) {
   return total;
 }
 
-void BM_ExactSweep(benchmark::State& state) { exact_sweep(state, ur_cleaner()); }
+void BM_ExactSweep(benchmark::State& state) {
+  exact_sweep(state, ur_cleaner());
+}
 void BM_RasterSweep(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(raster_sweep(ur_cleaner(), 0, 1));
 }
 // The TurtleBot 4's body: its collision meshes (the shell alone has 43,970 triangles).
-void BM_TurtleBot4ExactSweep(benchmark::State& state) { exact_sweep(state, turtlebot4()); }
+void BM_TurtleBot4ExactSweep(benchmark::State& state) {
+  exact_sweep(state, turtlebot4());
+}
 void BM_TurtleBot4RasterSweep(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(raster_sweep(turtlebot4(), 0, 1));
 }
@@ -134,8 +138,14 @@ void BM_ComputeCoverageAll(benchmark::State& state) {
 
 BENCHMARK(BM_ExactSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
 BENCHMARK(BM_RasterSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
-BENCHMARK(BM_TurtleBot4ExactSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
-BENCHMARK(BM_TurtleBot4RasterSweep)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
+BENCHMARK(BM_TurtleBot4ExactSweep)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_TurtleBot4RasterSweep)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();
 BENCHMARK(BM_RasterSweepTwoThreads)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()

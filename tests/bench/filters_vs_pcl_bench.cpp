@@ -263,7 +263,6 @@ void compare(const std::string& name, const model::PointCloud& cloud) {
   print(name, cloud.size(), rows);
 }
 
-
 }  // namespace
 
 // Usage: filters_vs_pcl_bench [cloud]  (a PCD file name, or "simulated"; default every cloud)

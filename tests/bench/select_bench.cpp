@@ -30,7 +30,8 @@ std::string finer_catalog() {
   text << in.rdbuf();
   std::string yaml = text.str();
   const std::pair<const char*, const char*> finer[] = {
-      {"sensor_library: ../../sensors.yaml", "sensor_library: " RIGDESIGN_SOURCE_DIR "/sensors.yaml"},
+      {"sensor_library: ../../sensors.yaml",
+       "sensor_library: " RIGDESIGN_SOURCE_DIR "/sensors.yaml"},
       {"{min: 10, max: 40, step: 5}", "{min: 10, max: 40, step: 2}"},
       {"{min: 0.10, max: 0.30, step: 0.05}", "{min: 0.10, max: 0.30, step: 0.02}"},
       {"{min: 1.04, max: 1.24, step: 0.1}", "{min: 1.04, max: 1.24, step: 0.04}"},
@@ -41,12 +42,14 @@ std::string finer_catalog() {
       at += std::strlen(to);
     }
   }
-  const std::string path = (std::filesystem::temp_directory_path() / "rigdesign_bench_303.yaml").string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "rigdesign_bench_303.yaml").string();
   std::ofstream(path) << yaml;
   return path;
 }
 
-constexpr const char* kPlainRequirements = RIGDESIGN_SOURCE_DIR "/rigs/requirements/ur_cleaner.yaml";
+constexpr const char* kPlainRequirements =
+    RIGDESIGN_SOURCE_DIR "/rigs/requirements/ur_cleaner.yaml";
 // The same with any one sensor's failure to survive (issue 32).
 constexpr const char* kRobustRequirements =
     RIGDESIGN_SOURCE_DIR "/rigs/requirements/ur_cleaner_robust.yaml";

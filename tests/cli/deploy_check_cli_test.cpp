@@ -102,9 +102,10 @@ TEST_CASE("check --nav2: a range limit that opens a blind ring fails, a missing 
   // The finding is at the changed value: its line in the file's text, column 31 (10 spaces and
   // "obstacle_min_range: " before it).
   const std::string line = std::to_string(
-      1 + std::count(mower.begin(), mower.begin() + static_cast<std::ptrdiff_t>(mower.find(
-                                                         "obstacle_min_range: 1.2")),
-                     '\n'));
+      1 +
+      std::count(mower.begin(),
+                 mower.begin() + static_cast<std::ptrdiff_t>(mower.find("obstacle_min_range: 1.2")),
+                 '\n'));
   CHECK(ring.out.find("mower.yaml:" + line + ":31: sectors: fail: D3 deployed coverage: front") !=
         std::string::npos);
   CHECK(ring.out.find("front_camera obstacle_min_range 1.2 m") != std::string::npos);
@@ -207,24 +208,24 @@ TEST_CASE("check --nav2: a layer class outside nav2 and STVL warns; an undeclare
            plugin + "\"\n";
   };
   // nav2's own and STVL's classes pass without a word.
-  const CliResult stvl = run_cli(
-      {"check", cart, "--nav2",
-       folder.write("stvl.yaml", nav2("spatio_temporal_voxel_layer/SpatioTemporalVoxelLayer", ""))});
+  const CliResult stvl =
+      run_cli({"check", cart, "--nav2",
+               folder.write("stvl.yaml",
+                            nav2("spatio_temporal_voxel_layer/SpatioTemporalVoxelLayer", ""))});
   INFO(stvl.out << stvl.err);
   CHECK(stvl.exit_code == 0);
   CHECK(stvl.out.find("warning") == std::string::npos);
   // Any other class: nav2 cannot load it unless the user built it. "plugin:" of hit_layer is on
   // line 12, its value at column 17 (8 spaces and "plugin: " before it).
-  const CliResult hit = run_cli(
-      {"check", cart, "--nav2", folder.write("hit.yaml", nav2("rigdesign::HitLayer", ""))});
+  const CliResult hit =
+      run_cli({"check", cart, "--nav2", folder.write("hit.yaml", nav2("rigdesign::HitLayer", ""))});
   INFO(hit.out << hit.err);
   CHECK(hit.exit_code == 0);
-  CHECK(hit.out.find("hit.yaml:12:17: warning: hit_layer.plugin: names") !=
-        std::string::npos);
+  CHECK(hit.out.find("hit.yaml:12:17: warning: hit_layer.plugin: names") != std::string::npos);
   // ROS 1's obstacle_range is not a nav2 parameter: nav2 would ignore it without a word.
-  const CliResult ros1 = run_cli({"check", cart, "--nav2",
-                                  folder.write("ros1.yaml", nav2("nav2_costmap_2d::DenoiseLayer",
-                                                                 ", obstacle_range: 2.5"))});
+  const CliResult ros1 = run_cli(
+      {"check", cart, "--nav2",
+       folder.write("ros1.yaml", nav2("nav2_costmap_2d::DenoiseLayer", ", obstacle_range: 2.5"))});
   INFO(ros1.out << ros1.err);
   CHECK(ros1.exit_code == 2);
   // Line 9: 8 spaces, "front_lidar: {" and "data_type: LaserScan, " put the key at column 45.
@@ -237,15 +238,15 @@ TEST_CASE("check --filters: a filter removing more than the robot warns even whe
   TempFolder folder;
   const std::string cart = source_path("rigs/cart_two_scanners.yaml");
   // The cart's requirements with nothing asked of the back: hiding it passes D3 (0 >= 0).
-  const std::string relaxed = folder.write(
-      "relaxed.yaml",
-      "name: cart, back not required\n"
-      "sectors:\n"
-      "  - {name: front, from_deg: -30, to_deg: 30, min_complete_coverage: 0.04, "
-      "min_floor_coverage: 0}\n"
-      "  - {name: back, from_deg: 150, to_deg: 210, min_complete_coverage: 0, "
-      "min_floor_coverage: 0}\n"
-      "range: {distance: 3.0}\n");
+  const std::string relaxed =
+      folder.write("relaxed.yaml",
+                   "name: cart, back not required\n"
+                   "sectors:\n"
+                   "  - {name: front, from_deg: -30, to_deg: 30, min_complete_coverage: 0.04, "
+                   "min_floor_coverage: 0}\n"
+                   "  - {name: back, from_deg: 150, to_deg: 210, min_complete_coverage: 0, "
+                   "min_floor_coverage: 0}\n"
+                   "range: {distance: 3.0}\n");
   const CliResult hides = run_cli({"check", cart, "--requirements", relaxed, "--filters",
                                    folder.write("hides.yaml", kHidesRear)});
   INFO(hides.out << hides.err);
@@ -282,8 +283,8 @@ TEST_CASE("export / check --global-frame-height: bands in the global frame", "[d
   // The Jackal's area ends at 0.25 m (rigs/jackal.yaml area_height).
   CHECK(band_top(floor + "/nav2_costmap.yaml") == Approx(0.25));
   CHECK(band_top(odom + "/nav2_costmap.yaml") == Approx(0.25 - 0.0655));
-  const std::string requirements = folder.write(
-      "needs.yaml", "name: band only\nrange: {distance: 3.0}\n");
+  const std::string requirements =
+      folder.write("needs.yaml", "name: band only\nrange: {distance: 3.0}\n");
   const CliResult right = run_cli({"check", jackal, "--requirements", requirements, "--nav2",
                                    odom + "/nav2_costmap.yaml", "--global-frame-height", "0.0655"});
   INFO(right.out << right.err);
@@ -297,8 +298,8 @@ TEST_CASE("export / check --global-frame-height: bands in the global frame", "[d
 TEST_CASE("check --nav2 / --filters on a rig without requirements reads the files (10)",
           "[deploy]") {
   const std::string rig = source_path("rigs/turtlebot4.yaml");  // names no requirements
-  const CliResult missing = run_cli({"check", rig, "--nav2", "/nonexistent/nav2.yaml",
-                                     "--filters", "/nonexistent/filters.yaml"});
+  const CliResult missing = run_cli(
+      {"check", rig, "--nav2", "/nonexistent/nav2.yaml", "--filters", "/nonexistent/filters.yaml"});
   CHECK(missing.exit_code == 2);
   CHECK((missing.out + missing.err).find("/nonexistent/nav2.yaml") != std::string::npos);
   TempFolder folder;

@@ -38,9 +38,18 @@ TEST_CASE("export CLI: files, and the exported blind-gap memory avoids the Fig. 
   CHECK(params.find("hit_layer") == std::string::npos);
   CHECK(params.find("observation_persistence: 5.8") != std::string::npos);
   const auto run = [&](const std::string& params_file, const std::string& flag) {
-    std::vector<std::string> args = {"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"),
-                                     "--scenario", "wall_following", "--params", params_file,
-                                     "--layer", "obstacle", "--frame-every", "0", "--out",
+    std::vector<std::string> args = {"costmap",
+                                     "--rig",
+                                     source_path("rigs/ur_cleaner.yaml"),
+                                     "--scenario",
+                                     "wall_following",
+                                     "--params",
+                                     params_file,
+                                     "--layer",
+                                     "obstacle",
+                                     "--frame-every",
+                                     "0",
+                                     "--out",
                                      folder.path() + "/run"};
     if (!flag.empty()) args.push_back(flag);
     return run_cli(args);
@@ -82,8 +91,8 @@ TEST_CASE("export CLI: --hit-layer-plugin takes a pluginlib class name", "[deplo
 
 TEST_CASE("export CLI: bad options exit 2 naming the option", "[deploy]") {
   TempFolder folder;
-  const CliResult speed = run_cli({"export", source_path("rigs/ur_cleaner.yaml"), "--to",
-                                   folder.path(), "--min-speed", "0"});
+  const CliResult speed = run_cli(
+      {"export", source_path("rigs/ur_cleaner.yaml"), "--to", folder.path(), "--min-speed", "0"});
   CHECK(speed.exit_code == 2);
   CHECK(speed.err.find("--min-speed") != std::string::npos);
   const CliResult parent = run_cli({"export", source_path("rigs/turtlebot4.yaml"), "--to",

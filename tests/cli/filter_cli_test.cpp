@@ -48,9 +48,8 @@ TEST_CASE("the real clouds filter without error, in the optical frame and in the
   CHECK(report["clouds"][0]["points"] == 254456);  // SOURCES.md's finite-point count
   CHECK(report["clouds"][0]["stages"].size() == 3);
   // Two threads for SOR (issue 17) keep every stage's output: the same point counts.
-  const CliResult threaded =
-      run_cli({"filter", "--cloud", real_cloud("office1.pcd"), "--pipeline", "P3", "--repeat",
-               "1", "--threads", "2", "--json"});
+  const CliResult threaded = run_cli({"filter", "--cloud", real_cloud("office1.pcd"), "--pipeline",
+                                      "P3", "--repeat", "1", "--threads", "2", "--json"});
   REQUIRE(threaded.exit_code == 0);
   const auto threaded_report = nlohmann::json::parse(threaded.out);
   for (std::size_t s = 0; s < 3; ++s) {

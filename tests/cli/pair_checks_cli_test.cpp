@@ -15,8 +15,8 @@ std::string two_kinects(const std::string& left_extra, const std::string& right_
          "\nbody: {radius: 0.2, height: 0.5}\ndistance_of_interest: 3.0\nmounts:\n"
          "  - id: left\n    sensor: azure_kinect_dk\n    mode: nfov_unbinned_30\n" +
          left_extra + "    pose: {xyz: [0.21, 0.1, 0.4], rpy_deg: [0, 20, 0]}\n" +
-         "  - id: right\n    sensor: azure_kinect_dk\n    mode: nfov_unbinned_30\n" +
-         right_extra + "    pose: {xyz: [0.21, -0.1, 0.4], rpy_deg: [0, 20, 0]}\n";
+         "  - id: right\n    sensor: azure_kinect_dk\n    mode: nfov_unbinned_30\n" + right_extra +
+         "    pose: {xyz: [0.21, -0.1, 0.4], rpy_deg: [0, 20, 0]}\n";
 }
 
 }  // namespace
@@ -29,13 +29,15 @@ TEST_CASE("check: crosstalk fails at both mounts' lines, sync 160 us apart passe
   INFO(failed.out << failed.err);
   CHECK(failed.exit_code == 1);
   // The mounts' entries are on lines 6 and 10 of the file written above.
-  CHECK(failed.out.find("::error file=" + bare + ",line=6,col=5,title=rigdesign D5 crosstalk%3A "
+  CHECK(failed.out.find("::error file=" + bare +
+                        ",line=6,col=5,title=rigdesign D5 crosstalk%3A "
                         "left and right::") != std::string::npos);
-  CHECK(failed.out.find("::error file=" + bare + ",line=10,col=5,title=rigdesign D5 crosstalk%3A "
+  CHECK(failed.out.find("::error file=" + bare +
+                        ",line=10,col=5,title=rigdesign D5 crosstalk%3A "
                         "left and right::") != std::string::npos);
-  const std::string synced = folder.write(
-      "synced.yaml", two_kinects("    crosstalk: {sync: front, delay_us: 0}\n",
-                                 "    crosstalk: {sync: front, delay_us: 160}\n"));
+  const std::string synced =
+      folder.write("synced.yaml", two_kinects("    crosstalk: {sync: front, delay_us: 0}\n",
+                                              "    crosstalk: {sync: front, delay_us: 160}\n"));
   const CliResult passed = run_cli({"check", synced});
   INFO(passed.out << passed.err);
   CHECK(passed.exit_code == 0);

@@ -89,9 +89,9 @@ TEST_CASE(
   CHECK(check.exit_code == 0);
   CHECK(check.out.find("0 fail") != std::string::npos);
   // The chosen rig's ROS 2 configuration is written beside it, and check accepts it too.
-  const CliResult deployed = run_cli({"check", out + "/chosen_rig.yaml", "--nav2",
-                                      out + "/deploy/nav2_costmap.yaml", "--filters",
-                                      out + "/deploy/self_filters.yaml"});
+  const CliResult deployed =
+      run_cli({"check", out + "/chosen_rig.yaml", "--nav2", out + "/deploy/nav2_costmap.yaml",
+               "--filters", out + "/deploy/self_filters.yaml"});
   INFO(deployed.out);
   CHECK(deployed.exit_code == 0);
   CHECK(deployed.out.find("D1 observation source") != std::string::npos);
@@ -198,7 +198,7 @@ TEST_CASE("select --out writes the chosen rig's report page with the relaxation 
   // 1 m/s at 5 cm per frame needs 20 Hz: only the D435 (30 Hz) is fast enough; the pico
   // flexx runs at 15 Hz and the RPLIDAR at 10 Hz.
   CHECK(page.find("realsense_d435") != std::string::npos);
-  CHECK(page.find("onboard") != std::string::npos);       // the transfer item
+  CHECK(page.find("onboard") != std::string::npos);  // the transfer item
 }
 
 TEST_CASE("the chosen rig still checks after its folder moves (issue 32 item 4)") {
@@ -263,8 +263,9 @@ TEST_CASE("no rig at any cost does not blame the budget (issue 32)") {
         std::string::npos);
 }
 
-TEST_CASE("no rig: a transfer capacity no catalog entry reaches, or an F no sensor meets, is "
-          "named (issue 32)") {
+TEST_CASE(
+    "no rig: a transfer capacity no catalog entry reaches, or an F no sensor meets, is "
+    "named (issue 32)") {
   SECTION("transfer") {
     SmallSetup setup;
     // 1 kbit/s carries no sensor's frames (a D435's depth alone is about 200 Mbit/s).
@@ -290,10 +291,9 @@ sectors:
 range: {distance: 2.5}
 robot_speed: {max_speed: 1.0, max_travel_between_frames: 0.005}
 )");
-    const CliResult result =
-        run_cli({"select", "--catalog", setup.catalog, "--requirements", setup.requirements,
-                 "--budget", "1000000", "--step", "10", "--no-renders", "--out",
-                 setup.folder.path() + "/out"});
+    const CliResult result = run_cli({"select", "--catalog", setup.catalog, "--requirements",
+                                      setup.requirements, "--budget", "1000000", "--step", "10",
+                                      "--no-renders", "--out", setup.folder.path() + "/out"});
     INFO(result.out << result.err);
     CHECK(result.exit_code == 1);
     CHECK(result.out.find("no rig: F: no sensor mode of the catalog runs at 200 Hz or faster "
@@ -303,8 +303,9 @@ robot_speed: {max_speed: 1.0, max_travel_between_frames: 0.005}
   }
 }
 
-TEST_CASE("select --robust n-1 with a required sector seen from one slot only: exit 1 naming "
-          "both (issue 32)") {
+TEST_CASE(
+    "select --robust n-1 with a required sector seen from one slot only: exit 1 naming "
+    "both (issue 32)") {
   SmallSetup setup;
   // The front camera sees the front sector; the second slot looks backwards (yaw 180 deg, a
   // 87 deg camera): it cannot see -10..10 deg, so no rig survives the front camera's failure.

@@ -1,10 +1,10 @@
 // Issue 15 through the CLI: pose ranges in catalog slots, --robust, and their bad input.
+#include <stdlib.h>
 #include <yaml-cpp/yaml.h>
 
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
-#include <stdlib.h>
 
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
@@ -27,7 +27,8 @@ sensors:
   - {sensor: rplidar_a2m8, modes: [10hz]}
 slots:
   - id: front
-    pose: {xyz: [0.31, 0, 0.4], rpy_deg: [0, )" + front_pitch + R"(, 0]}
+    pose: {xyz: [0.31, 0, 0.4], rpy_deg: [0, )" +
+         front_pitch + R"(, 0]}
     allows: [realsense_d435, pmd_pico_flexx]
   - id: front_high
     pose: {xyz: [0.31, 0, 0.7], rpy_deg: [0, {min: 20, max: 40, step: 10}, 0]}
@@ -60,9 +61,9 @@ struct PoseSetup {
     out = folder.path() + "/out";
   }
   CliResult select(std::vector<std::string> extra = {}) const {
-    std::vector<std::string> args = {"select", "--catalog", catalog, "--requirements",
-                                     requirements, "--budget", "20000", "--step", "10",
-                                     "--no-renders", "--out", out};
+    std::vector<std::string> args = {"select",     "--catalog",    catalog, "--requirements",
+                                     requirements, "--budget",     "20000", "--step",
+                                     "10",         "--no-renders", "--out", out};
     args.insert(args.end(), extra.begin(), extra.end());
     return run_cli(args);
   }
@@ -170,8 +171,8 @@ TEST_CASE("select: pose range and --robust bad input is exit 2 naming the field"
 
 TEST_CASE("select --robust n-1 with a catalog of one slot is exit 2") {
   TempFolder folder;
-  const std::string catalog = folder.write("one.yaml", "name: One\nsensor_library: " +
-                                                           source_path("sensors.yaml") + R"(
+  const std::string catalog =
+      folder.write("one.yaml", "name: One\nsensor_library: " + source_path("sensors.yaml") + R"(
 body: {radius: 0.3, height: 0.8}
 distance_of_interest: 2.5
 reference_machine: test
@@ -195,7 +196,8 @@ cpus:
   CHECK_FALSE(std::filesystem::exists(folder.path() + "/out"));
 }
 
-TEST_CASE("select --robust n-1 reports every phase: its end on standard error, a line in the report") {
+TEST_CASE(
+    "select --robust n-1 reports every phase: its end on standard error, a line in the report") {
   // Issue 32: after the search "about 1 s left" was followed by a minute of silence. Every
   // phase now ends with its own line (RIGDESIGN_PROGRESS=1: the CI log form) and has a
   // summary line in the report, in the order they ran.
@@ -205,10 +207,8 @@ TEST_CASE("select --robust n-1 reports every phase: its end on standard error, a
   ::unsetenv("RIGDESIGN_PROGRESS");
   INFO(result.out << result.err);
   REQUIRE(result.exit_code == 0);
-  const std::vector<std::string> phases = {"search",
-                                           "exact verification",
-                                           "exact verification of failures",
-                                           "pose refinement",
+  const std::vector<std::string> phases = {"search", "exact verification",
+                                           "exact verification of failures", "pose refinement",
                                            "robustness cost"};
   std::size_t at_err = 0;
   std::size_t at_out = 0;

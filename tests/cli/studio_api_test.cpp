@@ -25,8 +25,9 @@ struct ApiFixture {
                  "requirements: " + test::source_path("rigs/requirements/cart_two_scanners.yaml"));
     path = folder.write("cart.yaml", text);
     session = std::make_unique<studio::StudioSession>(path, test::source_path("sensors.yaml"), "");
-    api = std::make_unique<cli::StudioApi>(
-        *session, [](const std::string&) { return std::pair<int, std::string>{0, "checked"}; });
+    api = std::make_unique<cli::StudioApi>(*session, [](const std::string&) {
+      return std::pair<int, std::string>{0, "checked"};
+    });
   }
 
   std::pair<int, nlohmann::json> call(const std::string& method, const std::string& name,
@@ -65,9 +66,11 @@ TEST_CASE("studio API: the sensor list answers `sensors`' filters", "[studio]") 
 TEST_CASE("studio API: malformed edits are 400, invalid ones 422 with check's words", "[studio]") {
   ApiFixture fixture;
   CHECK(fixture.call("POST", "pose", "", "{not json").first == 400);
-  CHECK(fixture.call("POST", "pose", "", R"({"mount": "front_lidar", "xyz": [0, 0]})").first == 400);
-  CHECK(fixture.call("POST", "pose", "",
-                     R"({"mount": "front_lidar", "xyz": [0, 0, 1e999], "rpy_deg": [0, 0, 0]})")
+  CHECK(fixture.call("POST", "pose", "", R"({"mount": "front_lidar", "xyz": [0, 0]})").first ==
+        400);
+  CHECK(fixture
+            .call("POST", "pose", "",
+                  R"({"mount": "front_lidar", "xyz": [0, 0, 1e999], "rpy_deg": [0, 0, 0]})")
             .first == 400);
   const auto [status, reply] = fixture.call(
       "POST", "pose", "", R"({"mount": "front_lidar", "xyz": [0, 0, 0.2], "rpy_deg": [0, 0, 0]})");
@@ -78,8 +81,9 @@ TEST_CASE("studio API: malformed edits are 400, invalid ones 422 with check's wo
   CHECK(reply["error"][0]["line"] == 14);
   CHECK(fixture.call("GET", "nothing").first == 404);
   // A valid move answers with the numbers on the raster path, then saves through check.
-  const auto [moved, numbers] = fixture.call(
-      "POST", "pose", "", R"({"mount": "front_lidar", "xyz": [0.5, 0, 0.3], "rpy_deg": [0, 0, 0]})");
+  const auto [moved, numbers] =
+      fixture.call("POST", "pose", "",
+                   R"({"mount": "front_lidar", "xyz": [0.5, 0, 0.3], "rpy_deg": [0, 0, 0]})");
   CHECK(moved == 200);
   CHECK(numbers["exact"] == false);
   CHECK(numbers["dirty"] == true);

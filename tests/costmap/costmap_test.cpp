@@ -133,9 +133,10 @@ TEST_CASE("the Hit Layer keeps an obstacle the 2D layer cleared while the robot 
 // nav2's ObservationBuffer (purgeStaleObservations, observation_buffer.cpp at f4108e5): a
 // cloud is dropped once now - stamp > observation_persistence, so it still marks when its
 // age equals the persistence. Times in quarters of a second are exact in binary.
-TEST_CASE("costmap: a source's observation_persistence keeps its cloud marking until it is "
-          "older than that",
-          "[costmap]") {
+TEST_CASE(
+    "costmap: a source's observation_persistence keeps its cloud marking until it is "
+    "older than that",
+    "[costmap]") {
   costmap::CostmapParams params;
   params.layer = costmap::ObstacleLayerKind::obstacle;
   params.size_x = params.size_y = 4.0;
@@ -153,8 +154,7 @@ TEST_CASE("costmap: a source's observation_persistence keeps its cloud marking u
     costmap::CloudObservation clearing;
     clearing.cloud = &lidar;
     for (double t = 0.25; t <= until; t += 0.25) {
-      costmap.update(t, model::Pose3::Identity(),
-                     std::vector<costmap::CloudObservation>{clearing});
+      costmap.update(t, model::Pose3::Identity(), std::vector<costmap::CloudObservation>{clearing});
     }
     const auto foam = costmap.window().cell_of(model::Vec2(0.55, 0.05));
     return costmap.master().at(foam->x, foam->y);

@@ -1,10 +1,10 @@
 // Issue 14 item 3: the Hit Layer sized from the rig's blind gaps, against a hand computation
 // on a coverage built by hand.
+#include "rigdesign/deploy/blind_memory.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
-
-#include "rigdesign/deploy/blind_memory.hpp"
 
 using namespace rigdesign;
 

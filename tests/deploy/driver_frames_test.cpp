@@ -113,9 +113,8 @@ TEST_CASE("export: a mount's ros map sets its topic, namespace and frame", "[dep
 TEST_CASE("export CLI: a topic template that is no ROS name exits 2 and writes nothing",
           "[deploy]") {
   TempFolder folder;
-  const CliResult result =
-      run_cli({"export", source_path("rigs/cart_two_scanners.yaml"), "--to", folder.path() + "/out",
-               "--scan-topic", "/{mount}/scan\nx: 1"});
+  const CliResult result = run_cli({"export", source_path("rigs/cart_two_scanners.yaml"), "--to",
+                                    folder.path() + "/out", "--scan-topic", "/{mount}/scan\nx: 1"});
   CHECK(result.exit_code == 2);
   CHECK(result.err.find("--scan-topic") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(folder.path() + "/out"));

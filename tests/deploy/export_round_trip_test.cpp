@@ -40,7 +40,8 @@ std::string wrapper_text(const model::Rig& rig, const std::string& parent) {
   } else {
     text += "  <link name=\"" + parent + "\"/>\n";
   }
-  return text + "  <xacro:include filename=\"sensors.urdf.xacro\"/>\n  <xacro:rig_sensors/>\n</robot>\n";
+  return text +
+         "  <xacro:include filename=\"sensors.urdf.xacro\"/>\n  <xacro:rig_sensors/>\n</robot>\n";
 }
 
 }  // namespace
@@ -92,9 +93,10 @@ TEST_CASE("export: every bundled rig's description plus its sensors.urdf.xacro i
   }
 }
 
-TEST_CASE("export: a mount on a description link adds nothing; one beside it may not reuse "
-          "its names",
-          "[deploy]") {
+TEST_CASE(
+    "export: a mount on a description link adds nothing; one beside it may not reuse "
+    "its names",
+    "[deploy]") {
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   const model::Rig jackal = io::load_rig(source_path("rigs/jackal.yaml"));
   const std::string text = io::sensors_xacro_text(deploy::sensor_frames(jackal, library), "t");

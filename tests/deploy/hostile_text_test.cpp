@@ -65,8 +65,10 @@ TEST_CASE("hostile names reach exported files, JUnit and HTML only escaped", "[d
       "robot.urdf",
       "<?xml version=\"1.0\"?>\n<robot name=\"r\">\n"
       "<link name=\"base_link\"><collision><geometry><box size=\"0.4 0.4 0.3\"/></geometry>"
-      "</collision></link>\n<link name=\"" + link_attribute + "\"/>\n"
-      "<joint name=\"j\" type=\"fixed\"><parent link=\"base_link\"/><child link=\"" +
+      "</collision></link>\n<link name=\"" +
+          link_attribute +
+          "\"/>\n"
+          "<joint name=\"j\" type=\"fixed\"><parent link=\"base_link\"/><child link=\"" +
           link_attribute + "\"/><origin xyz=\"0 0 0.4\"/></joint>\n</robot>\n");
   // The rig lives in a folder whose name is hostile too (paths reach the headers), with a
   // Latin-1 byte that is not UTF-8.
@@ -94,8 +96,10 @@ TEST_CASE("hostile names reach exported files, JUnit and HTML only escaped", "[d
   const CliResult checked = run_cli({"check", rig, "--format", "junit", "--output", junit});
   INFO(checked.out << checked.err);
   CHECK(checked.exit_code == 0);
-  CHECK(std::system(("python3 -c \"import sys, xml.etree.ElementTree as E; E.parse(sys.argv[1])\" '" +
-                     junit + "'").c_str()) == 0);
+  CHECK(
+      std::system(("python3 -c \"import sys, xml.etree.ElementTree as E; E.parse(sys.argv[1])\" '" +
+                   junit + "'")
+                      .c_str()) == 0);
 
   const std::string report = folder.path() + "/report";
   REQUIRE(run_cli({"report", rig, "--out", report}).exit_code == 0);
@@ -104,9 +108,10 @@ TEST_CASE("hostile names reach exported files, JUnit and HTML only escaped", "[d
   CHECK(page.find("&lt;&amp;&gt;") != std::string::npos);
 }
 
-TEST_CASE("mount ids that name each other's frames (cam beside cam_optical) export distinct "
-          "joints (06)",
-          "[deploy]") {
+TEST_CASE(
+    "mount ids that name each other's frames (cam beside cam_optical) export distinct "
+    "joints (06)",
+    "[deploy]") {
   if (!python_has_yaml()) {
     WARN("python3 with PyYAML is missing (scripts/setup.sh installs python3-yaml): not run");
     return;

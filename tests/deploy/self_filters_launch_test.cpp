@@ -71,9 +71,10 @@ bool python_compiles(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("export: the self-filter launch file starts laser_filters chains as the package "
-          "declares them",
-          "[deploy]") {
+TEST_CASE(
+    "export: the self-filter launch file starts laser_filters chains as the package "
+    "declares them",
+    "[deploy]") {
   const YAML::Node table =
       YAML::LoadFile(source_path("data/ros_parameters/laser_filters_pcl_ros.yaml"));
   const YAML::Node chain = table["laser_filters"]["scan_to_scan_filter_chain"]["launch"];
@@ -81,8 +82,7 @@ TEST_CASE("export: the self-filter launch file starts laser_filters chains as th
   const std::string out = declared_topic(chain["topics"], "publish");
   const Exported e = exported("rigs/cart_two_scanners.yaml");
   CHECK(python_compiles(e.launch));
-  CHECK(e.launch.find("package='" + chain["package"].as<std::string>() + "'") !=
-        std::string::npos);
+  CHECK(e.launch.find("package='" + chain["package"].as<std::string>() + "'") != std::string::npos);
   CHECK(e.launch.find("executable='" + chain["executable"].as<std::string>() + "'") !=
         std::string::npos);
   for (const char* mount : {"front_lidar", "rear_lidar"}) {
@@ -123,8 +123,8 @@ TEST_CASE("export: the self-filter launch file chains pcl_ros CropBox components
       REQUIRE(e.parameters[node]);
       const std::size_t named = e.launch.find("name='" + node + "'");
       REQUIRE(named != std::string::npos);
-      const std::size_t remap = e.launch.find("remappings=[('" + in + "', '" + input + "'), ('" +
-                                              out + "', '", named);
+      const std::size_t remap =
+          e.launch.find("remappings=[('" + in + "', '" + input + "'), ('" + out + "', '", named);
       REQUIRE(remap != std::string::npos);
       const std::size_t start = e.launch.find("('" + out + "', '", remap) + out.size() + 6;
       const std::string written = e.launch.substr(start, e.launch.find('\'', start) - start);

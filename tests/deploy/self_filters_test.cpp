@@ -1,9 +1,10 @@
 // Issue 14: where a sensor sees its own robot, against geometry worked by hand.
+#include "rigdesign/deploy/self_filters.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
-#include "rigdesign/deploy/self_filters.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "support/cli_runner.hpp"
@@ -41,8 +42,7 @@ TEST_CASE("self-filters: a scanner on a bracket sees the face behind it", "[depl
   }
 }
 
-TEST_CASE("self-filters: a spinning lidar above a wide top gets a crop box around it",
-          "[deploy]") {
+TEST_CASE("self-filters: a spinning lidar above a wide top gets a crop box around it", "[deploy]") {
   // The test library's spinner (beams every 2 deg from -15 to +15, 0.5-50 m, sigma 0.03 m)
   // 0.2 m above the top of a cylinder 2 m in radius and 1 m high. A beam at -e deg meets the
   // top 0.2 / tan e out: -15, -13, -11, -9 and -7 deg do within the radius (0.746..1.629 m,

@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <array>
-#include <map>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "rigdesign/filters/pipeline.hpp"
@@ -83,12 +83,14 @@ TEST_CASE("voxel grid equals a map of voxel sums on clouds of every size, call a
   std::mt19937 rng(23);
   std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f);
   std::vector<model::Point3f> large;
-  for (int i = 0; i < 60000; ++i) large.emplace_back(coordinate(rng), coordinate(rng), 0.1f * coordinate(rng));
+  for (int i = 0; i < 60000; ++i)
+    large.emplace_back(coordinate(rng), coordinate(rng), 0.1f * coordinate(rng));
   std::vector<model::Point3f> small(large.begin(), large.begin() + 500);
   std::vector<model::Point3f> scan;  // rows of a scan: consecutive points share voxels
   for (int row = 0; row < 200; ++row) {
     for (int column = 0; column < 300; ++column)
-      scan.emplace_back(0.004f * static_cast<float>(column), 0.004f * static_cast<float>(row), 1.0f);
+      scan.emplace_back(0.004f * static_cast<float>(column), 0.004f * static_cast<float>(row),
+                        1.0f);
   }
   std::vector<model::Point3f> shuffled = scan;
   std::shuffle(shuffled.begin(), shuffled.end(), rng);
@@ -163,7 +165,8 @@ TEST_CASE("statistical outlier removal: duplicates, far loners and fewer points 
   }
   std::vector<model::Point3f> with_far_loner = points;
   with_far_loner.emplace_back(1e8f, -1e8f, 1e8f);
-  const std::vector<std::uint32_t> kept = filters::statistical_outlier_inliers(cloud_of(with_far_loner));
+  const std::vector<std::uint32_t> kept =
+      filters::statistical_outlier_inliers(cloud_of(with_far_loner));
   CHECK(kept == brute_force_inliers(with_far_loner, 10));
   CHECK(kept.back() != with_far_loner.size() - 1);  // the loner goes
   const std::vector<model::Point3f> few = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}, {9, 9, 9}};

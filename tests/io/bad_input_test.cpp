@@ -97,8 +97,9 @@ TEST_CASE("bad input: exit 2 with file:line:col and the field") {
   for (const BadCase& bad : cases) {
     DYNAMIC_SECTION(bad.name) {
       TempFolder folder;
-      const std::string library =
-          bad.file == std::string("sensors.yaml") ? input_replaced(kLibrary, bad.from, bad.to) : kLibrary;
+      const std::string library = bad.file == std::string("sensors.yaml")
+                                      ? input_replaced(kLibrary, bad.from, bad.to)
+                                      : kLibrary;
       const std::string rig_text =
           bad.file == std::string("rig.yaml") ? input_replaced(kRig, bad.from, bad.to) : kRig;
       const std::string requirements = bad.file == std::string("req.yaml")
@@ -190,8 +191,8 @@ TEST_CASE("rpy_deg that looks like radians is a warning naming file:line:col") {
   CHECK(metrics.out.find("looks like radians") != std::string::npos);
   CHECK(metrics.out.find("20.05") != std::string::npos);  // 0.35 rad in degrees
   // Whole degrees, or any angle beyond pi, read as meant.
-  const std::string whole =
-      folder.write("whole.yaml", input_replaced(kRig, "rpy_deg: [0, 20, 0]", "rpy_deg: [0, 2.5, 90]"));
+  const std::string whole = folder.write(
+      "whole.yaml", input_replaced(kRig, "rpy_deg: [0, 20, 0]", "rpy_deg: [0, 2.5, 90]"));
   CHECK(run_cli({"metrics", whole}).out.find("looks like radians") == std::string::npos);
 }
 
@@ -263,28 +264,30 @@ TEST_CASE("a sector of +-0.52 looks like radians: a warning at the sector") {
   const std::string rig = folder.write("rig.yaml", kRig);
   const CliResult result = run_cli({"metrics", rig});
   INFO(result.out << result.err);
-  CHECK(result.out.find(folder.path() + "/req.yaml:" +
-                        std::to_string(line_of(requirements, "from_deg: -0.52")) + ":") !=
-        std::string::npos);
+  CHECK(result.out.find(folder.path() +
+                        "/req.yaml:" + std::to_string(line_of(requirements, "from_deg: -0.52")) +
+                        ":") != std::string::npos);
   CHECK(result.out.find("looks like radians") != std::string::npos);
   CHECK(result.out.find("-29.79") != std::string::npos);  // -0.52 rad in degrees
 }
 
-TEST_CASE("a URDF origin in degrees is refused at its line; near-miss links and sensors are "
-          "named") {
+TEST_CASE(
+    "a URDF origin in degrees is refused at its line; near-miss links and sensors are "
+    "named") {
   TempFolder folder;
   folder.write("sensors.yaml", kLibrary);
   folder.write("req.yaml", kRequirements);
   // A joint turned "90" about z: 90 rad is 14 turns and a quarter; 90 deg was meant.
-  const std::string urdf = "<robot name=\"r\">\n  <link name=\"base_footprint\"/>\n"
-                           "  <link name=\"cam_link\"/>\n"
-                           "  <joint name=\"cam_joint\" type=\"fixed\">\n"
-                           "    <parent link=\"base_footprint\"/><child link=\"cam_link\"/>\n"
-                           "    <origin xyz=\"0.41 0 0.5\" rpy=\"0 0 90\"/>\n  </joint>\n"
-                           "</robot>\n";
+  const std::string urdf =
+      "<robot name=\"r\">\n  <link name=\"base_footprint\"/>\n"
+      "  <link name=\"cam_link\"/>\n"
+      "  <joint name=\"cam_joint\" type=\"fixed\">\n"
+      "    <parent link=\"base_footprint\"/><child link=\"cam_link\"/>\n"
+      "    <origin xyz=\"0.41 0 0.5\" rpy=\"0 0 90\"/>\n  </joint>\n"
+      "</robot>\n";
   folder.write("r.urdf", urdf);
-  const std::string with_urdf =
-      input_replaced(kRig, "distance_of_interest: 3.0", "urdf: {file: r.urdf}\ndistance_of_interest: 3.0");
+  const std::string with_urdf = input_replaced(kRig, "distance_of_interest: 3.0",
+                                               "urdf: {file: r.urdf}\ndistance_of_interest: 3.0");
   const CliResult degrees = run_cli({"metrics", folder.write("deg.yaml", with_urdf)});
   INFO(degrees.out << degrees.err);
   CHECK(degrees.exit_code == 2);
@@ -293,15 +296,17 @@ TEST_CASE("a URDF origin in degrees is refused at its line; near-miss links and 
   // The same joint in radians; a mount naming the link without its suffix is pointed at it.
   folder.write("r.urdf", input_replaced(urdf, "rpy=\"0 0 90\"", "rpy=\"0 0 1.5707963267948966\""));
   const CliResult near_link = run_cli(
-      {"metrics", folder.write("near.yaml",
-                               input_replaced(with_urdf, "pose: {xyz: [0.41, 0.0, 0.5], rpy_deg: [0, 20, 0]}",
-                                        "pose: {urdf_link: cam}"))});
+      {"metrics",
+       folder.write("near.yaml",
+                    input_replaced(with_urdf, "pose: {xyz: [0.41, 0.0, 0.5], rpy_deg: [0, 20, 0]}",
+                                   "pose: {urdf_link: cam}"))});
   CHECK(near_link.exit_code == 2);
   CHECK(near_link.err.find("no link 'cam' in the URDF (did you mean 'cam_link'?)") !=
         std::string::npos);
   // A sensor id with a letter doubled.
   const CliResult near_sensor =
-      run_cli({"metrics", folder.write("sensor.yaml", input_replaced(kRig, "sensor: spin", "sensor: spinn"))});
+      run_cli({"metrics",
+               folder.write("sensor.yaml", input_replaced(kRig, "sensor: spin", "sensor: spinn"))});
   CHECK(near_sensor.exit_code == 2);
   CHECK(near_sensor.err.find("unknown sensor 'spinn'") != std::string::npos);
   CHECK(near_sensor.err.find("(did you mean 'spin'?)") != std::string::npos);
@@ -312,8 +317,7 @@ TEST_CASE("a URDF origin in degrees is refused at its line; near-miss links and 
 TEST_CASE("an env variable the description never reads is a warning naming it") {
   TempFolder folder;
   const std::string rig =
-      "name: Jackal\nsensor_library: " + source_path("sensors.yaml") +
-      "\nrobot:\n  description: " +
+      "name: Jackal\nsensor_library: " + source_path("sensors.yaml") + "\nrobot:\n  description: " +
       source_path("rigs/robots/jackal_description/urdf/jackal.urdf.xacro") +
       "\n  env: {JACKAL_LASER: 1, JACKAL_LASER_3D_ENABLE: 1}\n  package_paths: [" +
       source_path("rigs/robots") +
@@ -346,10 +350,11 @@ TEST_CASE("a package found in two package_paths folders is a warning naming both
       "    <origin xyz=\"0.41 0 0.5\" rpy=\"0 0 0\"/>\n  </joint>\n</robot>\n";
   folder.write("first/tiny/urdf/part.xacro", part);
   folder.write("second/tiny_copy/urdf/part.xacro", part);
-  folder.write("robot.urdf.xacro",
-               "<?xml version=\"1.0\"?>\n<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
-               "  <link name=\"base_footprint\"/>\n"
-               "  <xacro:include filename=\"$(find tiny)/urdf/part.xacro\"/>\n</robot>\n");
+  folder.write(
+      "robot.urdf.xacro",
+      "<?xml version=\"1.0\"?>\n<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
+      "  <link name=\"base_footprint\"/>\n"
+      "  <xacro:include filename=\"$(find tiny)/urdf/part.xacro\"/>\n</robot>\n");
   const std::string rig = input_replaced(
       kRig, "distance_of_interest: 3.0",
       "robot: {description: robot.urdf.xacro, package_paths: [first, second], expander: builtin}\n"

@@ -56,7 +56,8 @@ TEST_CASE("degenerate geometry in a description is refused at its line (20)") {
         std::string::npos);
   CHECK(load_error(folder, description("<sphere radius=\"0\"/>", "0 0 0.4")).find("sphere") !=
         std::string::npos);
-  const std::string far = load_error(folder, description("<box size=\"0.4 0.4 0.3\"/>", "1e300 0 0.4"));
+  const std::string far =
+      load_error(folder, description("<box size=\"0.4 0.4 0.3\"/>", "1e300 0 0.4"));
   CHECK(far.find(path + ":5:") == 0);
   CHECK(far.find("joint 'j' origin") != std::string::npos);
   CHECK(load_error(folder, description("<box size=\"0.4 0.4 0.3\"/>", "1.5e8 0 0.4"))

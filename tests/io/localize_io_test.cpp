@@ -141,12 +141,16 @@ TEST_CASE("wall maps: losses above 60 dB, far coordinates and over 10000 walls r
           "[localize]") {
   const std::string header = "x1,y1,x2,y2,attenuation_db\n";
   CHECK(io::parse_walls_csv(header + "-50,0,50,0,60\n", "w.csv").size() == 1);
-  CHECK(test::input_error_of([&] { io::parse_walls_csv(header + "-50,0,50,0,1e5\n", "w.csv"); })
-            .find("w.csv:2:12: attenuation_db: is 100000 dB") == 0);
-  CHECK(test::input_error_of([&] { io::parse_walls_csv(header + "-50,0,1e9,0,8\n", "w.csv"); })
-            .find("w.csv:2:7: x2") == 0);
+  CHECK(test::input_error_of([&] {
+          io::parse_walls_csv(header + "-50,0,50,0,1e5\n", "w.csv");
+        }).find("w.csv:2:12: attenuation_db: is 100000 dB") == 0);
+  CHECK(test::input_error_of([&] {
+          io::parse_walls_csv(header + "-50,0,1e9,0,8\n", "w.csv");
+        }).find("w.csv:2:7: x2") == 0);
   std::string many = header;
-  for (int k = 0; k <= 10000; ++k) many += "0," + std::to_string(k) + ",1," + std::to_string(k) + ",3\n";
-  CHECK(test::input_error_of([&] { io::parse_walls_csv(many, "w.csv"); }).find("w.csv:10002:1: walls") ==
-        0);
+  for (int k = 0; k <= 10000; ++k)
+    many += "0," + std::to_string(k) + ",1," + std::to_string(k) + ",3\n";
+  CHECK(test::input_error_of([&] {
+          io::parse_walls_csv(many, "w.csv");
+        }).find("w.csv:10002:1: walls") == 0);
 }

@@ -22,7 +22,8 @@ filtering_seconds_per_point: 0
 sensors:
   - {sensor: realsense_d435, modes: [z16_848x480_30]}
 slots:
-  - {id: front, pose: )" + slot_pose + R"(, allows: [realsense_d435]}
+  - {id: front, pose: )" +
+         slot_pose + R"(, allows: [realsense_d435]}
 transfer:
   - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}
 cpus:
@@ -34,9 +35,9 @@ cpus:
 
 TEST_CASE("pose ranges: every combination, the last axis fastest, labelled", "[io][select]") {
   TempFolder folder;
-  const model::Catalog catalog = io::load_catalog(folder.write(
-      "c.yaml", catalog_with("{xyz: [0.46, 0, {min: 0.2, max: 0.8, step: 0.2}], "
-                             "rpy_deg: [0, {min: 0, max: 40, step: 10}, 0]}")));
+  const model::Catalog catalog = io::load_catalog(
+      folder.write("c.yaml", catalog_with("{xyz: [0.46, 0, {min: 0.2, max: 0.8, step: 0.2}], "
+                                          "rpy_deg: [0, {min: 0, max: 40, step: 10}, 0]}")));
   const model::MountingSlot& slot = catalog.slots.front();
   // z in {0.2, 0.4, 0.6, 0.8} x pitch in {0, 10, 20, 30, 40}: 20 poses.
   REQUIRE(slot.poses.size() == 20);
@@ -87,6 +88,7 @@ TEST_CASE("pose ranges: bad ranges are errors at the range", "[io][select]") {
              Catch::Contains("xyz[2].step") && Catch::Contains("gives 1.56e+10 values") &&
                  Catch::Contains("at most 400 poses per slot"));
   // 21 x 21 positions: more than a slot may hold.
-  CHECK_THAT(error_of("{xyz: [{min: 0.5, max: 2.5, step: 0.1}, {min: -1, max: 1, step: 0.1}, 0.5]}"),
-             Catch::Contains("441 poses in one slot"));
+  CHECK_THAT(
+      error_of("{xyz: [{min: 0.5, max: 2.5, step: 0.1}, {min: -1, max: 1, step: 0.1}, 0.5]}"),
+      Catch::Contains("441 poses in one slot"));
 }

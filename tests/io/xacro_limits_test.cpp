@@ -104,13 +104,15 @@ TEST_CASE("xacro expansion is bounded: depth, size, calls and includes, at the l
            << k - 1 << "/></xacro:macro>\n";
     }
     text << kLinks << "<xacro:m30/>\n</robot>\n";
-    CHECK(load_error(folder.write("r.urdf.xacro", text.str())).find("more than 200000 macro calls") !=
-          std::string::npos);
+    CHECK(
+        load_error(folder.write("r.urdf.xacro", text.str())).find("more than 200000 macro calls") !=
+        std::string::npos);
   }
   SECTION("macros emitting links, doubling 20 levels: the element limit") {
     std::ostringstream text;
     text << kHead << "<xacro:property name=\"z\" value=\"0.4\"/>\n"
-         << "<xacro:macro name=\"m0\" params=\"\"><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>"
+         << "<xacro:macro name=\"m0\" params=\"\"><link name=\"a\"/><link name=\"b\"/><link "
+            "name=\"c\"/>"
          << "<link name=\"d\"/>"
          << "</xacro:macro>\n";
     for (int k = 1; k <= 20; ++k) {
@@ -141,8 +143,8 @@ TEST_CASE("the external xacro runs with a minimal environment and a private outp
   // A stand-in for ROS's xacro that records its environment beside the rig and prints the
   // description it is given.
   const std::string record = folder.path() + "/environment.txt";
-  const std::string script = folder.write(
-      "bin/xacro", "#!/bin/sh\nenv > '" + record + "'\ncat \"$1\"\n");
+  const std::string script =
+      folder.write("bin/xacro", "#!/bin/sh\nenv > '" + record + "'\ncat \"$1\"\n");
   std::filesystem::permissions(script, std::filesystem::perms::owner_all);
   const PathGuard path_guard(folder.path() + "/bin");
   const std::string description =
@@ -173,13 +175,17 @@ TEST_CASE("the external xacro runs with a minimal environment and a private outp
     const std::string tail =
         "area_height: 0.5\ndistance_of_interest: 2.0\nmounts:\n"
         "  - {id: lidar, sensor: rplidar_a1m8, mode: 5_5hz, pose: {urdf_link: laser}}\n";
-    const std::string python = folder.write("python.yaml", rig_head + "  env: {PYTHONPATH: /x}\n" + tail);
-    CHECK(input_error_of([&] { io::load_rig(python); }).find(python + ":6:9: robot.env.PYTHONPATH") == 0);
+    const std::string python =
+        folder.write("python.yaml", rig_head + "  env: {PYTHONPATH: /x}\n" + tail);
+    CHECK(input_error_of([&] {
+            io::load_rig(python);
+          }).find(python + ":6:9: robot.env.PYTHONPATH") == 0);
     const std::string preload =
         folder.write("preload.yaml", rig_head + "  env: {ld_preload: /x.so}\n" + tail);
     CHECK(input_error_of([&] { io::load_rig(preload); }).find("robot.env.ld_preload") !=
           std::string::npos);
-    const std::string option = folder.write("option.yaml", rig_head + "  args: {\"-o\": /tmp/x}\n" + tail);
+    const std::string option =
+        folder.write("option.yaml", rig_head + "  args: {\"-o\": /tmp/x}\n" + tail);
     CHECK(input_error_of([&] { io::load_rig(option); }).find("robot.args.-o") != std::string::npos);
   }
   SECTION("a symlink planted at the old predictable path is left alone (18)") {

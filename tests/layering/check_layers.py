@@ -8,7 +8,10 @@ cell, such as Eigen or a few words of prose, is ignored). A file of module M
 (include/rigdesign/M/... or src/M/...) may include public headers "rigdesign/N/..." only for
 N == M or N reachable from M through the "uses" column, and private headers "N/..." (relative
 to src/) only of its own module. The table must agree with the order: a module uses only
-modules before it. Usage: check_layers.py ROOT
+modules before it. Where ROOT/src/CMakeLists.txt declares the module libraries
+(`rigdesign_module(NAME USES ...)`, cmake/rigdesign_module.cmake), each declared module must
+reach exactly the modules the table lets it reach, so the linker enforces the documented
+design. Usage: check_layers.py ROOT
 """
 import pathlib
 import re
@@ -133,10 +136,43 @@ def include_violations(root, order, uses):
     return found
 
 
+MODULE_CALL = re.compile(r'^rigdesign_module\(([^)]*)\)', re.MULTILINE)
+
+
+def cmake_violations(root, uses):
+    """The module libraries of src/CMakeLists.txt must link what the table lets them use."""
+    cmake = root / 'src' / 'CMakeLists.txt'
+    if not cmake.exists():
+        return []
+    declared = {}
+    for match in MODULE_CALL.finditer(cmake.read_text(encoding='utf-8')):
+        words = match.group(1).split()
+        name, section, used = words[0], None, []
+        for word in words[1:]:
+            if word in ('USES', 'LIBS'):
+                section = word
+            elif section == 'USES':
+                used.append(word)
+        declared[name] = used
+    allowed, linked = reachable(uses), reachable(declared)
+    found = []
+    for module, used in sorted(declared.items()):
+        if module not in uses:
+            found.append(f'src/CMakeLists.txt: module library "{module}" has no row in the table')
+            continue
+        if linked[module] != allowed[module]:
+            extra = sorted(linked[module] - allowed[module])
+            missing = sorted(allowed[module] - linked[module])
+            found.append(f'src/CMakeLists.txt: {module} links {", ".join(extra) or "nothing more"}'
+                         f' beyond docs/DESIGN.md and lacks {", ".join(missing) or "nothing"}')
+    return found
+
+
 def main():
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else '.').resolve()
     order, uses = documented_design(root)
-    found = table_violations(order, uses) + include_violations(root, order, uses)
+    found = (table_violations(order, uses) + include_violations(root, order, uses) +
+             cmake_violations(root, uses))
     for message in found:
         print(message)
     print(f'layering: {len(found)} violations in the order {" < ".join(order)}')

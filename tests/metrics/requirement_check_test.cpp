@@ -122,10 +122,9 @@ TEST_CASE("R2 judges the tighter of SC complete and floor, unrounded, margin sig
     measured.pass = metrics::judged_share(complete) >= sector.min_complete_coverage &&
                     metrics::judged_share(floor) >= sector.min_floor_coverage;
     coverage.sectors = {measured};
-    return find(metrics::evaluate_requirements(fixture.rig,
-                                               metrics::compute_resultant(fixture.rig,
-                                                                          fixture.library),
-                                               requirements, &coverage),
+    return find(metrics::evaluate_requirements(
+                    fixture.rig, metrics::compute_resultant(fixture.rig, fixture.library),
+                    requirements, &coverage),
                 "R2");
   };
   // 0.53996 < 0.54: the issue's case fails now, with a negative margin.

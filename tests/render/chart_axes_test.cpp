@@ -8,10 +8,10 @@ using namespace rigdesign;
 
 TEST_CASE("chart axes: round tick steps", "[render]") {
   using render::StepRounding;
-  CHECK(render::tick_step(10, 5, StepRounding::up) == Approx(2.0));   // 2 is round already
-  CHECK(render::tick_step(7, 5, StepRounding::up) == Approx(2.0));    // 1.4 -> 2
-  CHECK(render::tick_step(7, 5, StepRounding::down) == Approx(1.0));  // 1.4 -> 1
-  CHECK(render::tick_step(0.037, 4, StepRounding::up) == Approx(0.01));  // 0.00925 -> 0.01
+  CHECK(render::tick_step(10, 5, StepRounding::up) == Approx(2.0));        // 2 is round already
+  CHECK(render::tick_step(7, 5, StepRounding::up) == Approx(2.0));         // 1.4 -> 2
+  CHECK(render::tick_step(7, 5, StepRounding::down) == Approx(1.0));       // 1.4 -> 1
+  CHECK(render::tick_step(0.037, 4, StepRounding::up) == Approx(0.01));    // 0.00925 -> 0.01
   CHECK(render::tick_step(3000, 4, StepRounding::down) == Approx(500.0));  // 750 -> 500
   const double quarters[] = {1.0, 2.5, 5.0};
   CHECK(render::tick_step(12, 5, StepRounding::up, quarters) == Approx(2.5));  // 2.4 -> 2.5

@@ -48,16 +48,15 @@ cpus:
 )";
 }
 
-model::SectorRequirement sector(const char* name, double from_deg, double to_deg,
-                                double complete, double floor) {
+model::SectorRequirement sector(const char* name, double from_deg, double to_deg, double complete,
+                                double floor) {
   constexpr double kRad = std::numbers::pi / 180.0;
   return {name, from_deg * kRad, to_deg * kRad, complete, floor, {}};
 }
 
 }  // namespace
 
-TEST_CASE("pose ranges: branch and bound equals brute force on a rasterised catalog",
-          "[select]") {
+TEST_CASE("pose ranges: branch and bound equals brute force on a rasterised catalog", "[select]") {
   TempFolder folder;
   const model::Catalog catalog = io::load_catalog(folder.write("c.yaml", pose_range_catalog()));
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));

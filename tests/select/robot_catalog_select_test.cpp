@@ -81,7 +81,7 @@ slots:
 }
 
 model::SectorRequirement robot_sector(const char* name, double from_deg, double to_deg,
-                                double complete, double floor) {
+                                      double complete, double floor) {
   constexpr double kRad = std::numbers::pi / 180.0;
   return {name, from_deg * kRad, to_deg * kRad, complete, floor, {}};
 }
@@ -191,9 +191,10 @@ TEST_CASE("select on the Jackal's description equals a brute force on its collis
        {robot_sector("front", -20, 20, 0.99, 0.99), robot_sector("back", 160, 200, 0.0, 0.0)}});
 }
 
-TEST_CASE("select on the TurtleBot 4's description equals a brute force on its collision "
-          "geometry",
-          "[select]") {
+TEST_CASE(
+    "select on the TurtleBot 4's description equals a brute force on its collision "
+    "geometry",
+    "[select]") {
   check_against_brute_force(
       turtlebot_catalog(),
       {{robot_sector("front", -20, 20, 0.1, 0.1), robot_sector("back", 160, 200, 0.05, 0.05)},

@@ -99,12 +99,12 @@ TEST_CASE("catalog transfer grouped by kind (eq. 4) is read kind by kind, in ord
   test::TempFolder folder;
   folder.write("sensors.yaml", library_with_wide());
   std::string text = kToleranceCatalog;
-  text.replace(text.find("transfer:\n  - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}\n"),
-               std::string("transfer:\n  - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}\n")
-                   .size(),
-               "transfer:\n  cable:\n    - {id: cat5e, capacity_bps: 1.0e9, price_usd: 10}\n"
-               "  switch:\n    - {id: gige, capacity_bps: 1.0e9, price_usd: 100}\n"
-               "    - {id: tengig, capacity_bps: 1.0e10, price_usd: 300}\n");
+  text.replace(
+      text.find("transfer:\n  - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}\n"),
+      std::string("transfer:\n  - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}\n").size(),
+      "transfer:\n  cable:\n    - {id: cat5e, capacity_bps: 1.0e9, price_usd: 10}\n"
+      "  switch:\n    - {id: gige, capacity_bps: 1.0e9, price_usd: 100}\n"
+      "    - {id: tengig, capacity_bps: 1.0e10, price_usd: 300}\n");
   const model::Catalog catalog = io::load_catalog(folder.write("kinds.yaml", text));
   REQUIRE(catalog.transfer.size() == 3);
   CHECK(catalog.transfer[0].kind == "cable");
@@ -113,9 +113,9 @@ TEST_CASE("catalog transfer grouped by kind (eq. 4) is read kind by kind, in ord
   CHECK(catalog.transfer[2].where.line == 19);  // the file's text above: line 19
   // A kind with no list is named at its line.
   std::string bad = text;
-  bad.replace(bad.find("  cable:\n    - {id: cat5e, capacity_bps: 1.0e9, price_usd: 10}\n"),
-              std::string("  cable:\n    - {id: cat5e, capacity_bps: 1.0e9, price_usd: 10}\n")
-                  .size(),
-              "  cable: 5\n");
+  bad.replace(
+      bad.find("  cable:\n    - {id: cat5e, capacity_bps: 1.0e9, price_usd: 10}\n"),
+      std::string("  cable:\n    - {id: cat5e, capacity_bps: 1.0e9, price_usd: 10}\n").size(),
+      "  cable: 5\n");
   CHECK_THROWS_AS(io::load_catalog(folder.write("bad.yaml", bad)), model::InputError);
 }

@@ -203,7 +203,6 @@ TEST_CASE("studio: another mode is judged and saved as that one word", "[studio]
   CHECK(session.numbers(false).resultant.frequency.value == Approx(10.0));
   session.save();
   std::string expected = cart_text();
-  for (int i = 0; i < 2; ++i)
-    expected = with_text_replaced(expected, "mode: 5_5hz", "mode: 10hz");
+  for (int i = 0; i < 2; ++i) expected = with_text_replaced(expected, "mode: 5_5hz", "mode: 10hz");
   CHECK(test::file_text(path) == expected);
 }

@@ -2,8 +2,8 @@
 /// Paper 1's Hit Layer sized from the rig's own blind sectors (issue 14 item 3). A blind gap
 /// is a run of azimuths where the rig sees none of the floor between the body and the
 /// distance of interest (SC floor = 0): a cable or a foot there is invisible (for a rig that
-/// sees no floor anywhere, level scan planes, where it sees nothing: SC complete = 0). The rule, for a
-/// robot driving straight past a static obstacle that grazes its side (lateral offset r, the
+/// sees no floor anywhere, level scan planes, where it sees nothing: SC complete = 0). The rule,
+/// for a robot driving straight past a static obstacle that grazes its side (lateral offset r, the
 /// body's radius at the gap's edge):
 /// - it is seen while its azimuth runs through the covered azimuths before the gap, from the
 ///   distance of interest d (x = sqrt(d^2 - r^2)) or the start of that covered run, down to
@@ -35,11 +35,11 @@
 namespace rigdesign::deploy {
 
 struct BlindGap {
-  double from = 0.0;  ///< [rad] first blind azimuth, counter-clockwise from forward
-  double to = 0.0;    ///< [rad] last blind azimuth (to >= from; may exceed pi)
+  double from = 0.0;           ///< [rad] first blind azimuth, counter-clockwise from forward
+  double to = 0.0;             ///< [rad] last blind azimuth (to >= from; may exceed pi)
   double keep_distance = 0.0;  ///< [m] driven while a grazing obstacle is in the gap
   double seen_distance = 0.0;  ///< [m] driven while it is seen before the gap
-  bool reaches_back = false;  ///< an obstacle passing it is not seen again
+  bool reaches_back = false;   ///< an obstacle passing it is not seen again
   /// Index into the coverage's angles where a grazing obstacle is seen last before it enters
   /// the gap (on the side of the longest pass); -1 when it is not seen before the gap.
   int last_seen = -1;
@@ -48,10 +48,10 @@ struct BlindGap {
 
 struct BlindMemory {
   std::vector<BlindGap> gaps;
-  int worst_gap = -1;  ///< index of the gap with the largest keep distance; -1: no gap
-  double max_speed = 0.0;    ///< [m/s]
-  double min_speed = 0.0;    ///< [m/s] the slowest the robot drives
-  double update_rate = 0.0;  ///< [Hz]
+  int worst_gap = -1;           ///< index of the gap with the largest keep distance; -1: no gap
+  double max_speed = 0.0;       ///< [m/s]
+  double min_speed = 0.0;       ///< [m/s] the slowest the robot drives
+  double update_rate = 0.0;     ///< [Hz]
   costmap::HitLayerParams hit;  ///< paper 1's values where there is no gap
   double persistence = 0.0;     ///< [s] the worst gap's; 0 where there is no gap
   std::string rule;             ///< one sentence with the numbers, for reports and comments

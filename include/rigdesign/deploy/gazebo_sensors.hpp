@@ -40,8 +40,8 @@ struct GazeboSensor {
   /// so the cloud keeps the ROS name in gz too.
   std::string topic;
   std::string gz_data_topic;  ///< what the bridge reads: the scan's topic or `<topic>/points`
-  bool laser_scan = false;   ///< the ROS side wants LaserScan (2D scanners), else PointCloud2
-  double update_rate = 0.0;  ///< [Hz] the mode's frequency
+  bool laser_scan = false;    ///< the ROS side wants LaserScan (2D scanners), else PointCloud2
+  double update_rate = 0.0;   ///< [Hz] the mode's frequency
   // gpu_lidar: scan angles in the sensor frame [rad] and ray counts.
   int horizontal_samples = 0, vertical_samples = 1;
   double horizontal_min = 0.0, horizontal_max = 0.0;

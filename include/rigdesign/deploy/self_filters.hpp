@@ -15,7 +15,7 @@
 namespace rigdesign::deploy {
 
 struct SelfBox {
-  std::string part;  ///< the link (or "body") the box surrounds
+  std::string part;                       ///< the link (or "body") the box surrounds
   model::Vec3 min = model::Vec3::Zero();  ///< [m] robot frame
   model::Vec3 max = model::Vec3::Zero();
   int hits = 0;  ///< rays that hit inside it
@@ -23,11 +23,11 @@ struct SelfBox {
 
 struct SelfFilter {
   std::string mount_id;
-  bool scanner = false;  ///< a 2D scanner (bands), else a 3D sensor (boxes)
+  bool scanner = false;                   ///< a 2D scanner (bands), else a 3D sensor (boxes)
   std::vector<model::AzimuthBand> bands;  ///< scan angles to drop [rad], sensor frame
   std::vector<SelfBox> boxes;
-  int rays = 0;       ///< rays cast
-  int body_hits = 0;  ///< rays that hit the body within the sensor's range
+  int rays = 0;          ///< rays cast
+  int body_hits = 0;     ///< rays that hit the body within the sensor's range
   double padding = 0.0;  ///< [m] added around each box: 3 sigma of the noise at the hits
 };
 

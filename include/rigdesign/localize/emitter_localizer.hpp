@@ -61,10 +61,10 @@ struct EmitterEstimate {
   bool ambiguous = false;
   /// What put the first hypothesis first when ambiguous: "--prefer-side left", or empty.
   std::string tie_break;
-  std::optional<ObjectMap> map;              ///< the probability grid (map)
-  std::optional<PositionPosterior> region;   ///< its grid with the 95 % region (nls, map)
-  std::optional<ScanSeries> scans;           ///< the scans the range fit used (nls)
-  RangeFitResult fit;                        ///< noise and exponent findings (nls)
+  std::optional<ObjectMap> map;             ///< the probability grid (map)
+  std::optional<PositionPosterior> region;  ///< its grid with the 95 % region (nls, map)
+  std::optional<ScanSeries> scans;          ///< the scans the range fit used (nls)
+  RangeFitResult fit;                       ///< noise and exponent findings (nls)
 };
 
 /// Whether `point` lies in the estimate's stated 95 % region (wls: the first hypothesis'

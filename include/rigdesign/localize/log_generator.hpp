@@ -29,7 +29,7 @@ struct ScenarioParams {
   double position_noise = 0.05;         ///< standard deviation of the logged x and y [m]
   double antenna_height = 0.4;          ///< robot antenna height [m]
   double emitter_height = 1.0;          ///< phone height [m]
-  double sensitivity_dbm = -90.0;  ///< the radio reports nothing weaker: the log's floor [dBm]
+  double sensitivity_dbm = -90.0;       ///< the radio reports nothing weaker: the log's floor [dBm]
 };
 
 struct Scenario {

@@ -58,7 +58,7 @@ struct RangeFitParams {
   /// differ by at most this: 3.84 / 2, a likelihood-ratio test at 95 %, one degree of freedom.
   /// Their probabilities (basin masses) may still differ, e.g. by how wide each peak is.
   double ambiguity_log_ratio = 1.92;
-  double min_mode_separation = 2.0;        ///< [m] closer modes are one hypothesis
+  double min_mode_separation = 2.0;  ///< [m] closer modes are one hypothesis
   /// The hypotheses are listed by their posterior probability within this distance [m]: the
   /// first is the point most likely to lie within the acceptable error of the emitter (the
   /// KPI's radius: paper 4's acceptable error, DARPA's 5 m). Listing by basin share instead

@@ -32,9 +32,9 @@ struct RssiReading {
 };
 
 struct RssiLog {
-  std::string source;                 ///< file name, for messages and plots
-  std::vector<std::string> emitters;  ///< BSSIDs in order of first appearance
-  std::vector<RssiReading> readings;  ///< in file order
+  std::string source;                   ///< file name, for messages and plots
+  std::vector<std::string> emitters;    ///< BSSIDs in order of first appearance
+  std::vector<RssiReading> readings;    ///< in file order
   std::optional<double> floor_dbm;      ///< `# floor_dbm:` of the file [dBm]
   std::optional<double> scan_period_s;  ///< `# scan_period_s:` of the file [s]
 

@@ -21,9 +21,9 @@
 namespace rigdesign::localize {
 
 struct Scan {
-  double t = 0.0;                                ///< [s]
-  model::Vec3 position = model::Vec3::Zero();    ///< robot antenna [m]
-  double rssi_dbm = 0.0;                         ///< [dBm]; meaningless when not heard
+  double t = 0.0;                              ///< [s]
+  model::Vec3 position = model::Vec3::Zero();  ///< robot antenna [m]
+  double rssi_dbm = 0.0;                       ///< [dBm]; meaningless when not heard
   bool heard = true;
 };
 
@@ -43,9 +43,9 @@ struct ScanSeries {
   FloorSource floor_source = FloorSource::weakest_reading;
   double scan_period_s = 0.0;  ///< given, or the median step of the log's timeline [s]
   int heard = 0;
-  int unheard_logged = 0;       ///< empty-rssi lines and other emitters' scans
-  int unheard_interpolated = 0; ///< placed in straight gaps of the timeline
-  int unheard_unplaced = 0;     ///< in gaps across bends: left out
+  int unheard_logged = 0;        ///< empty-rssi lines and other emitters' scans
+  int unheard_interpolated = 0;  ///< placed in straight gaps of the timeline
+  int unheard_unplaced = 0;      ///< in gaps across bends: left out
 };
 
 /// The scans of emitter `emitter` of `log`. The floor: the option, else the log's comment,

@@ -42,7 +42,7 @@ struct AngleCoverage {
   double complete_raster = 0.0;
   double floor_raster = 0.0;
   double redundancy = 0.0;  ///< share of the cross-section seen by two or more sensors (raster)
-  std::vector<bool> mount_sees;   ///< per mount: sees part of this cross-section
+  std::vector<bool> mount_sees;  ///< per mount: sees part of this cross-section
   /// Per mount, its own SC complete and floor here (raster): which mount a sector's verdict
   /// rests on (issue 39: CI annotations on the mount's line).
   std::vector<double> mount_complete;

@@ -4,10 +4,10 @@
 /// compass search moves each axis a chosen slot's range varies (inside the range's bounds,
 /// never into the body), keeps a move only when it widens the rig's margins to the sector
 /// thresholds (and to the robustness thresholds after each failure) compared smallest first
-/// (leximin: the smallest never shrinks), and halves its steps when no move helps. Margins come from rasters at the sectors' angles, as in the
-/// search; the refined rig replaces the grid one only when the exact path confirms every
-/// sector (and every failure), so refinement never breaks a requirement. Sensors, modes and
-/// cost never change.
+/// (leximin: the smallest never shrinks), and halves its steps when no move helps. Margins come
+/// from rasters at the sectors' angles, as in the search; the refined rig replaces the grid one
+/// only when the exact path confirms every sector (and every failure), so refinement never breaks a
+/// requirement. Sensors, modes and cost never change.
 #include <array>
 #include <memory>
 #include <string>

@@ -24,9 +24,9 @@
 namespace rigdesign::select {
 
 struct SearchOption {
-  double price = 0.0;                             ///< [USD]
-  double bandwidth = 0.0;                         ///< [bytes/s]
-  double cpu = 0.0;                               ///< [core-equivalents]
+  double price = 0.0;      ///< [USD]
+  double bandwidth = 0.0;  ///< [bytes/s]
+  double cpu = 0.0;        ///< [core-equivalents]
   /// One per angle of the problem; shared with the catalog option it came from (a catalog
   /// of 150 options holds 54,000 rasters: copied per relaxation step they would not fit).
   std::shared_ptr<const std::vector<geometry::SectionRaster>> sections;
@@ -87,11 +87,11 @@ struct SearchResult {
   /// feasible rigs evaluated at the optimum's cost (1: no tie to break); the branch and bound
   /// cuts equal-cost subtrees that cannot widen the margins, so it may count fewer than exist
   long ties = 0;
-  long nodes = 0;        ///< nodes of the search tree visited
-  long evaluations = 0;  ///< rigs whose coverage was evaluated
-  long dominated = 0;    ///< options never tried: another of their slot dominates them
-  long raster_cells = 0;    ///< cells and floor columns of one rig's rasters, all angles
-  long coverage_classes = 0;  ///< the classes they compress to (ClassCoverage)
+  long nodes = 0;                     ///< nodes of the search tree visited
+  long evaluations = 0;               ///< rigs whose coverage was evaluated
+  long dominated = 0;                 ///< options never tried: another of their slot dominates them
+  long raster_cells = 0;              ///< cells and floor columns of one rig's rasters, all angles
+  long coverage_classes = 0;          ///< the classes they compress to (ClassCoverage)
   std::vector<ExploredRig> explored;  ///< the feasible rigs found
 };
 

@@ -17,10 +17,10 @@ struct Reply {
 };
 
 struct IncomingRequest {
-  std::string method;  ///< "GET", "POST", ...
-  std::string path;    ///< without the query
-  std::string query;   ///< after '?', undecoded
-  std::string host;    ///< the Host header
+  std::string method;                       ///< "GET", "POST", ...
+  std::string path;                         ///< without the query
+  std::string query;                        ///< after '?', undecoded
+  std::string host;                         ///< the Host header
   std::optional<std::string> origin;        ///< the Origin header, when sent
   std::optional<std::string> token_header;  ///< X-Studio-Token, when sent
   std::string body;

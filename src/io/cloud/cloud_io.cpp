@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "io/cloud/cloud_formats.hpp"
-#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io {

@@ -141,8 +141,9 @@ model::Catalog load_catalog(const std::string& path) {
     catalog.joint_where = urdf->joint_where;
     catalog.parent_link = urdf->parent_link;
   }
-  if (auto body = top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,
-                          "a map with height and radius or footprint")) {
+  if (auto body =
+          top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,
+                  "a map with height and radius or footprint")) {
     catalog.body = io::read_body(*body);
   } else if (has_geometry) {
     catalog.body =
@@ -151,12 +152,12 @@ model::Catalog load_catalog(const std::string& path) {
                 "links with <collision> elements, or a `body` (radius or footprint, height)");
   }
   if (top.has("area_height")) {
-    catalog.body.area_height = io::positive_length(top, "area_height", Need::required,
-                                            "the top of the area to perceive in metres, > 0");
+    catalog.body.area_height = io::positive_length(
+        top, "area_height", Need::required, "the top of the area to perceive in metres, > 0");
   }
   catalog.distance_of_interest =
       io::positive_length(top, "distance_of_interest", Need::required,
-                   "the distance of interest d in metres, > body radius");
+                          "the distance of interest d in metres, > body radius");
   if (catalog.distance_of_interest > 0 && catalog.body.radius > 0) {
     top.require(catalog.distance_of_interest > catalog.body.radius, "distance_of_interest",
                 "is not beyond the body radius", "d > r");

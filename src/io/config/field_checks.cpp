@@ -1,7 +1,5 @@
 #include "io/config/field_checks.hpp"
 
-#include "rigdesign/model/ros_names.hpp"
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -9,6 +7,7 @@
 
 #include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/ros_names.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 
@@ -165,8 +164,9 @@ model::PoseTolerance pose_tolerance(MapReader& tolerance) {
     const auto values = tolerance.numbers(key, Need::optional, 3, 3,
                                           "three half-widths in " + unit + ", >= 0, finite");
     if (values) {
-      tolerance.require(std::all_of(values->begin(), values->end(), [](double v) { return v >= 0; }),
-                        key, "has a negative half-width", "half-widths >= 0 (the box is +-)");
+      tolerance.require(
+          std::all_of(values->begin(), values->end(), [](double v) { return v >= 0; }), key,
+          "has a negative half-width", "half-widths >= 0 (the box is +-)");
     }
     return values;
   };

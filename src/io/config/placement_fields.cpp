@@ -64,7 +64,8 @@ std::vector<model::Vec2> read_footprint(MapReader& body) {
 
 model::RobotBody read_body(MapReader& body) {
   model::RobotBody result;
-  result.height = io::positive_length(body, "height", Need::required, "the body height h in metres, > 0");
+  result.height =
+      io::positive_length(body, "height", Need::required, "the body height h in metres, > 0");
   const bool has_radius = body.has("radius");
   const bool has_footprint = body.has("footprint");
   body.require(has_radius != has_footprint, "radius",
@@ -345,8 +346,8 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
     robot->reject_unknown_keys();
     if (!description) return failed_links();
     request.path = resolve_beside(file, *description);
-    std::optional<RobotLinks> links = links_of(load_robot_description(request), base,
-                                               base_height, "robot", *robot, "base_link");
+    std::optional<RobotLinks> links =
+        links_of(load_robot_description(request), base, base_height, "robot", *robot, "base_link");
     if (links && !links->failed) {
       static const char* const kExpanders[] = {"auto", "builtin", "xacro"};
       links->source = model::RobotSource{request.path,

@@ -18,9 +18,9 @@ model::RobotBody read_body(MapReader& body);
 /// What a rig's robot description gives: every link's pose in the robot frame and, for
 /// `robot:`, the description itself (with its collision geometry).
 struct RobotLinks {
-  std::string base_link;  ///< the robot frame's link
+  std::string base_link;     ///< the robot frame's link
   double base_height = 0.0;  ///< [m] the base link's height above the floor (robot frame's z = 0)
-  std::string field;      ///< "robot" or "urdf", for messages
+  std::string field;         ///< "robot" or "urdf", for messages
   std::map<std::string, model::Pose3> T_base_link;
   std::optional<model::RobotDescription> description;
   /// The description's links and joints where written, and each link's parent (kept when a

@@ -11,7 +11,8 @@
 namespace rigdesign::io {
 namespace {
 
-constexpr const char* kRange = "a number, or a range {min: a, max: b, step: s} with s > 0 dividing b - a";
+constexpr const char* kRange =
+    "a number, or a range {min: a, max: b, step: s} with s > 0 dividing b - a";
 
 struct Axis {
   std::vector<double> values;  // in the file's unit (m or deg)
@@ -53,8 +54,8 @@ Axis read_axis(MapReader& pose, const YAML::Node& element, const std::string& fi
   const double whole = std::round(steps);
   if (std::abs(steps - whole) > 1e-9 * std::max(1.0, steps)) {
     range.require(false, "step",
-                  model::format_number(*step) + " does not divide max - min = " +
-                      model::format_number(*high - *low),
+                  model::format_number(*step) +
+                      " does not divide max - min = " + model::format_number(*high - *low),
                   "a step that divides the range, so that max is one of the values");
     return axis;
   }
@@ -93,7 +94,8 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
   }
   std::vector<Axis> axes(6);
   bool valid = true;
-  for (const auto& [key, node, first] : {std::tuple{"xyz", xyz, 0}, std::tuple{"rpy_deg", rpy, 3}}) {
+  for (const auto& [key, node, first] :
+       {std::tuple{"xyz", xyz, 0}, std::tuple{"rpy_deg", rpy, 3}}) {
     if (!node.IsDefined() || node.IsNull()) {
       for (int i = 0; i < 3; ++i) axes[first + i].values = {0.0};  // rpy_deg defaults to 0
       if (first == 0) {
@@ -127,12 +129,14 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
   }
   const auto count = static_cast<std::size_t>(poses_named);
   // Angles in radians from here on (SI in code).
-  const auto si = [](int axis, double value) { return axis < 3 ? value : model::deg_to_rad(value); };
+  const auto si = [](int axis, double value) {
+    return axis < 3 ? value : model::deg_to_rad(value);
+  };
   for (int i = 0; i < 6; ++i) {
     if (!axes[i].varies) continue;
     const std::vector<double>& values = axes[i].values;
-    ranges.push_back({i, si(i, values.front()), si(i, values.back()),
-                      si(i, values[1]) - si(i, values[0])});
+    ranges.push_back(
+        {i, si(i, values.front()), si(i, values.back()), si(i, values[1]) - si(i, values[0])});
   }
   std::vector<model::SlotPose> poses;
   std::vector<std::size_t> index(6, 0);

@@ -32,8 +32,7 @@ void read_receiver_comments(const std::string& text, const std::string& file,
     log->floor_dbm = value;
   }
   if (const auto period = csv::comment_directive(text, "scan_period_s", &line)) {
-    const double value =
-        csv::parse_number(*period, {file, line, period->column}, "scan_period_s");
+    const double value = csv::parse_number(*period, {file, line, period->column}, "scan_period_s");
     if (!(value > 0.0 && value <= 3600.0)) {
       throw model::InputError(model::Diagnostic{{file, line, period->column},
                                                 "scan_period_s",

@@ -40,10 +40,11 @@ std::vector<localize::WallSegment> parse_walls_csv(const std::string& text,
     }
     for (std::size_t i = 0; i < 4; ++i) {
       if (std::abs(value[i]) > model::kMaxCoordinate) {
-        throw model::InputError(model::Diagnostic{
-            {file, row.number, row.fields[i].column}, names[i],
-            "is " + model::format_number(value[i]) + " m, beyond +-1e8 m",
-            "coordinates within +-1e8 m, in the log's frame"});
+        throw model::InputError(
+            model::Diagnostic{{file, row.number, row.fields[i].column},
+                              names[i],
+                              "is " + model::format_number(value[i]) + " m, beyond +-1e8 m",
+                              "coordinates within +-1e8 m, in the log's frame"});
       }
     }
     if (walls.size() == kMaxWalls) {

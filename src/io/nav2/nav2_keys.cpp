@@ -18,13 +18,17 @@ const std::vector<std::string> kIgnoredLayerKeys = {"plugin",
                                                     "min_obstacle_height"};
 
 const std::vector<std::string> kIgnoredSourceKeys = {"topic", "data_type", "sensor_frame",
-                                                    "expected_update_rate", "inf_is_valid"};
+                                                     "expected_update_rate", "inf_is_valid"};
 
 const std::vector<std::string> kKnownLayerClasses = {
-    "nav2_costmap_2d::InflationLayer",      "nav2_costmap_2d::ObstacleLayer",
-    "nav2_costmap_2d::StaticLayer",         "nav2_costmap_2d::VoxelLayer",
-    "nav2_costmap_2d::RangeSensorLayer",    "nav2_costmap_2d::DenoiseLayer",
-    "nav2_costmap_2d::PluginContainerLayer", "spatio_temporal_voxel_layer/SpatioTemporalVoxelLayer"};
+    "nav2_costmap_2d::InflationLayer",
+    "nav2_costmap_2d::ObstacleLayer",
+    "nav2_costmap_2d::StaticLayer",
+    "nav2_costmap_2d::VoxelLayer",
+    "nav2_costmap_2d::RangeSensorLayer",
+    "nav2_costmap_2d::DenoiseLayer",
+    "nav2_costmap_2d::PluginContainerLayer",
+    "spatio_temporal_voxel_layer/SpatioTemporalVoxelLayer"};
 
 const std::vector<std::pair<std::string, std::string>> kKeyOfField = {
     {"resolution", "resolution"},

@@ -17,16 +17,15 @@ std::string written(const model::Vec3& v) {
 void require_positive_size(const model::Vec3& size, const model::SourceLocation& where,
                            const std::string& field, const std::string& expected) {
   if (size.allFinite() && (size.array() > 0.0).all()) return;
-  throw model::InputError(
-      model::Diagnostic{where, field, "is '" + written(size) + "'", expected});
+  throw model::InputError(model::Diagnostic{where, field, "is '" + written(size) + "'", expected});
 }
 
 void require_position_in_bounds(const model::Vec3& position, const model::SourceLocation& where,
                                 const std::string& field) {
   if (position.allFinite() && position.cwiseAbs().maxCoeff() <= model::kMaxCoordinate) return;
-  throw model::InputError(model::Diagnostic{
-      where, field, "places it at '" + written(position) + "' m, beyond +-1e8 m",
-      "positions within +-1e8 m of the robot (a value in the wrong unit?)"});
+  throw model::InputError(
+      model::Diagnostic{where, field, "places it at '" + written(position) + "' m, beyond +-1e8 m",
+                        "positions within +-1e8 m of the robot (a value in the wrong unit?)"});
 }
 
 }  // namespace rigdesign::io

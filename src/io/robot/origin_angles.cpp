@@ -24,8 +24,8 @@ void check_element(const xml::Node& node, model::Diagnostics& findings) {
       std::string as_degrees;
       for (const double value : values) {
         beyond = beyond || std::abs(value) > kFullTurn;
-        as_degrees += (as_degrees.empty() ? "" : " ") +
-                      model::format_number(model::deg_to_rad(value), 4);
+        as_degrees +=
+            (as_degrees.empty() ? "" : " ") + model::format_number(model::deg_to_rad(value), 4);
       }
       if (beyond) {
         findings.error(node.where, "origin.rpy",

@@ -42,7 +42,7 @@ class PackageLocator {
   void remember(const std::string& package, const std::string& folder) const;
   std::vector<std::string> roots_;
   std::vector<std::string> ament_prefixes_;
-  mutable std::map<std::string, std::string> found_;  // package -> folder
+  mutable std::map<std::string, std::string> found_;                // package -> folder
   mutable std::map<std::string, std::vector<std::string>> hidden_;  // package -> other folders
   mutable std::set<std::string> asked_;
   mutable bool indexed_ = false;  // the listed folders are scanned at the first find()

@@ -206,17 +206,17 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
   std::error_code error;
   if (fs::exists(request.path, error) && !fs::is_regular_file(request.path, error)) {
     // A FIFO or a device would block the reader forever.
-    throw model::InputError(model::Diagnostic{
-        request.named_at, request.field,
-        "'" + request.path + "' is not a regular file (a folder, FIFO or device)",
-        "a .urdf or .urdf.xacro file"});
+    throw model::InputError(
+        model::Diagnostic{request.named_at, request.field,
+                          "'" + request.path + "' is not a regular file (a folder, FIFO or device)",
+                          "a .urdf or .urdf.xacro file"});
   }
   const PackageLocator packages(request.package_paths);
   // Only the built-in expander says which variables it read; ROS's xacro is not asked.
   std::set<std::string> environment_read;
-  const bool builtin = is_xacro_file(request.path) &&
-                       (request.expander == RobotDescriptionRequest::Expander::builtin ||
-                        !find_xacro_executable());
+  const bool builtin =
+      is_xacro_file(request.path) &&
+      (request.expander == RobotDescriptionRequest::Expander::builtin || !find_xacro_executable());
   const xml::Node tree = read_tree(request, packages, &environment_read);
   if (tree.name != "robot") {
     throw model::InputError(model::Diagnostic{
@@ -260,16 +260,17 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
     const model::Pose3 T_root_link = pose_in_root(link);
     if (link->parent_joint) {
       const auto joint = description.joint_where.find(link->parent_joint->name);
-      require_position_in_bounds(
-          T_root_link.translation(),
-          joint != description.joint_where.end() ? joint->second
-                                                 : model::SourceLocation{request.path, 0, 0},
-          "joint '" + link->parent_joint->name + "' origin");
+      require_position_in_bounds(T_root_link.translation(),
+                                 joint != description.joint_where.end()
+                                     ? joint->second
+                                     : model::SourceLocation{request.path, 0, 0},
+                                 "joint '" + link->parent_joint->name + "' origin");
     }
     description.T_root_link[link->name] = T_root_link;
     const auto place = places.find(link->name);
     if (place != places.end()) description.link_where[link->name] = place->second.link;
-    if (link->parent_joint) description.parent_link[link->name] = link->parent_joint->parent_link_name;
+    if (link->parent_joint)
+      description.parent_link[link->name] = link->parent_joint->parent_link_name;
     for (std::size_t i = 0; i < link->collision_array.size(); ++i) {
       const urdf::CollisionSharedPtr& collision = link->collision_array[i];
       if (!collision || !collision->geometry) continue;
@@ -283,23 +284,24 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
                                  "collision origin");
       triangles += description.collisions.back().mesh.triangles.size();
       if (triangles > kMaxDescriptionTriangles) {
-        throw model::InputError(model::Diagnostic{
-            where, "collision.geometry.mesh",
-            "the description's meshes hold more than " +
-                std::to_string(kMaxDescriptionTriangles) + " triangles",
-            "at most 2e6 triangles in all (decimate the collision meshes)"});
+        throw model::InputError(
+            model::Diagnostic{where, "collision.geometry.mesh",
+                              "the description's meshes hold more than " +
+                                  std::to_string(kMaxDescriptionTriangles) + " triangles",
+                              "at most 2e6 triangles in all (decimate the collision meshes)"});
       }
     }
   }
   // After the meshes, so that their package:// lookups count too.
   for (const PackageLocator::Shadowed& shadowed : packages.shadowed()) {
     std::string hidden;
-    for (const std::string& folder : shadowed.hidden) hidden += (hidden.empty() ? "" : ", ") + folder;
-    description.warnings.push_back(
-        {request.named_at, "robot.package_paths",
-         "package '" + shadowed.package + "' is in " + shadowed.used + " and in " + hidden +
-             ": the first is used",
-         "one folder per package (remove or reorder the others)", model::Severity::warning});
+    for (const std::string& folder : shadowed.hidden)
+      hidden += (hidden.empty() ? "" : ", ") + folder;
+    description.warnings.push_back({request.named_at, "robot.package_paths",
+                                    "package '" + shadowed.package + "' is in " + shadowed.used +
+                                        " and in " + hidden + ": the first is used",
+                                    "one folder per package (remove or reorder the others)",
+                                    model::Severity::warning});
   }
   return description;
 }

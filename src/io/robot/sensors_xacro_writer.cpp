@@ -25,11 +25,11 @@ std::string triple(const model::Vec3& v) {
 
 std::string sensors_xacro_text(const deploy::SensorFrames& frames, const std::string& header) {
   // The parent is a default in the macro's whitespace-separated params.
-  if (frames.parent.empty() ||
-      frames.parent.find_first_of(" \t\r\n") != std::string::npos ||
+  if (frames.parent.empty() || frames.parent.find_first_of(" \t\r\n") != std::string::npos ||
       frames.parent.find(":=") != std::string::npos) {
     throw model::InputError(model::Diagnostic{
-        {"(command line)", 0, 0}, "--parent",
+        {"(command line)", 0, 0},
+        "--parent",
         "'" + frames.parent + "' cannot be the macro's default parent (a space or ':=' in it)",
         "a link name without spaces, e.g. base_link"});
   }
@@ -51,13 +51,13 @@ std::string sensors_xacro_text(const deploy::SensorFrames& frames, const std::st
       << " prefix:=${''}\">\n";
   for (const deploy::SensorFrame& frame : frames.frames) {
     out << "    <!-- "
-        << xml_comment_line(frame.mount_id + ": " + frame.sensor_id + ", mode " + frame.mode_id +
-                            (frame.joint.empty() ? "; on the description's link " + frame.link
-                                                 : std::string()))
+        << xml_comment_line(
+               frame.mount_id + ": " + frame.sensor_id + ", mode " + frame.mode_id +
+               (frame.joint.empty() ? "; on the description's link " + frame.link : std::string()))
         << " -->\n";
     // A link the description has is neither written again nor prefixed.
-    const std::string link = frame.joint.empty() ? xacro_literal(frame.link)
-                                                 : "${prefix}" + xacro_literal(frame.link);
+    const std::string link =
+        frame.joint.empty() ? xacro_literal(frame.link) : "${prefix}" + xacro_literal(frame.link);
     if (!frame.joint.empty()) {
       const model::Vec3 rpy = model::rpy_from_rotation(frame.T_parent_link.linear());
       out << "    <link name=\"" << link << "\"/>\n";

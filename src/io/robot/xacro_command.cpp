@@ -29,9 +29,9 @@ constexpr auto kXacroTimeLimit = std::chrono::seconds(120);
 constexpr off_t kMaxOutputBytes = off_t{64} << 20;
 
 [[noreturn]] void xacro_failed(const model::SourceLocation& named_at, const std::string& problem) {
-  throw model::InputError(model::Diagnostic{
-      named_at, "robot.description", problem,
-      "a description that `xacro` expands, or robot.expander: builtin"});
+  throw model::InputError(
+      model::Diagnostic{named_at, "robot.description", problem,
+                        "a description that `xacro` expands, or robot.expander: builtin"});
 }
 
 // A private folder (mkdtemp: a fresh name, mode 0700) removed when the run ends, so no
@@ -40,7 +40,8 @@ class PrivateFolder {
  public:
   explicit PrivateFolder(const model::SourceLocation& named_at) {
     std::string pattern = (fs::temp_directory_path() / "rigdesign-xacro-XXXXXX").string();
-    if (!::mkdtemp(pattern.data())) xacro_failed(named_at, "no temporary folder could be made for xacro");
+    if (!::mkdtemp(pattern.data()))
+      xacro_failed(named_at, "no temporary folder could be made for xacro");
     path_ = pattern;
   }
   ~PrivateFolder() {
@@ -62,7 +63,8 @@ class PrivateFile {
   PrivateFile(const fs::path& path, const model::SourceLocation& named_at)
       : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
                    S_IRUSR | S_IWUSR)) {
-    if (fd_ < 0) xacro_failed(named_at, "the temporary file '" + path.string() + "' could not be created");
+    if (fd_ < 0)
+      xacro_failed(named_at, "the temporary file '" + path.string() + "' could not be created");
   }
   ~PrivateFile() { ::close(fd_); }
   PrivateFile(const PrivateFile&) = delete;
@@ -77,13 +79,14 @@ std::string read_all(int fd, const std::string& what, const model::SourceLocatio
   struct stat status {};
   if (::fstat(fd, &status) != 0) xacro_failed(named_at, "xacro's " + what + " could not be read");
   if (status.st_size > kMaxOutputBytes) {
-    xacro_failed(named_at, "xacro's " + what + " is larger than 64 MiB (a description that multiplies?)");
+    xacro_failed(named_at,
+                 "xacro's " + what + " is larger than 64 MiB (a description that multiplies?)");
   }
   std::string text(static_cast<std::size_t>(status.st_size), '\0');
   std::size_t done = 0;
   while (done < text.size()) {
-    const ssize_t got = ::pread(fd, text.data() + done, text.size() - done,
-                                static_cast<off_t>(done));
+    const ssize_t got =
+        ::pread(fd, text.data() + done, text.size() - done, static_cast<off_t>(done));
     if (got <= 0) break;
     done += static_cast<std::size_t>(got);
   }
@@ -129,7 +132,8 @@ std::string run_xacro(const std::string& executable, const std::string& path,
                       const std::map<std::string, std::string>& environment,
                       const model::SourceLocation& named_at) {
   for (const auto& [name, value] : args) {
-    if (const auto why = refused_argument_name(name)) xacro_failed(named_at, "argument '" + name + "' " + *why);
+    if (const auto why = refused_argument_name(name))
+      xacro_failed(named_at, "argument '" + name + "' " + *why);
   }
   const PrivateFolder folder(named_at);
   const PrivateFile out(folder.path() / "out.urdf", named_at);
@@ -159,14 +163,15 @@ std::string run_xacro(const std::string& executable, const std::string& path,
   std::string messages = read_all(err.fd(), "messages", named_at);
   if (status == -2) {
     xacro_failed(named_at, "xacro (" + executable + ") ran longer than " +
-                       std::to_string(kXacroTimeLimit.count()) + " s on '" + path +
-                       "' and was stopped (a description that multiplies?)");
+                               std::to_string(kXacroTimeLimit.count()) + " s on '" + path +
+                               "' and was stopped (a description that multiplies?)");
   }
   if (status != 0) {
     while (!messages.empty() && (messages.back() == '\n' || messages.back() == ' '))
       messages.pop_back();
-    xacro_failed(named_at, "xacro (" + executable + ") failed on '" + path + "': " +
-                       (messages.empty() ? "exit status " + std::to_string(status) : messages));
+    xacro_failed(named_at,
+                 "xacro (" + executable + ") failed on '" + path + "': " +
+                     (messages.empty() ? "exit status " + std::to_string(status) : messages));
   }
   return output;
 }

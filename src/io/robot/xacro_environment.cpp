@@ -19,11 +19,12 @@ bool is_identifier(const std::string& name) {
 // library when a process starts, and those ROS uses to find code. Prefixes, compared
 // upper-cased: `ld_preload` is as dangerous as LD_PRELOAD to a case-insensitive reader.
 constexpr std::array kProgramPrefixes = {
-    "LD_",   "DYLD_",  "PYTHON", "PERL",    "RUBY",    "NODE_",  "BASH_", "GCONV",
-    "GLIBC", "MALLOC", "ROS_",   "AMENT_",  "COLCON_", "CMAKE_", "LC_",   "LOCPATH",
-    "NLSPATH", "TMPDIR", "SHELL", "IFS",    "ENV",     "PS4",    "HOME",  "XDG_",
-    "GIT_",  "SSL_",   "OPENSSL", "CURL_",  "HTTP",    "NO_PROXY", "ASAN_", "UBSAN_",
-    "LSAN_", "TERMINFO", "HOSTALIASES", "RES_OPTIONS", "LOCALDOMAIN", "TZ"};
+    "LD_",         "DYLD_",       "PYTHON",  "PERL",   "RUBY",   "NODE_",    "BASH_",
+    "GCONV",       "GLIBC",       "MALLOC",  "ROS_",   "AMENT_", "COLCON_",  "CMAKE_",
+    "LC_",         "LOCPATH",     "NLSPATH", "TMPDIR", "SHELL",  "IFS",      "ENV",
+    "PS4",         "HOME",        "XDG_",    "GIT_",   "SSL_",   "OPENSSL",  "CURL_",
+    "HTTP",        "NO_PROXY",    "ASAN_",   "UBSAN_", "LSAN_",  "TERMINFO", "HOSTALIASES",
+    "RES_OPTIONS", "LOCALDOMAIN", "TZ"};
 
 std::string upper(std::string text) {
   for (char& c : text) {
@@ -61,12 +62,13 @@ std::optional<std::string> refused_argument_name(const std::string& name) {
 std::vector<std::string> xacro_process_environment(
     const std::map<std::string, std::string>& rig_environment) {
   static constexpr std::array kInherited = {
-      "PATH",      "HOME",        "PYTHONPATH",         "AMENT_PREFIX_PATH", "ROS_PACKAGE_PATH",
+      "PATH",       "HOME",        "PYTHONPATH",         "AMENT_PREFIX_PATH", "ROS_PACKAGE_PATH",
       "ROS_DISTRO", "ROS_VERSION", "ROS_PYTHON_VERSION", "LD_LIBRARY_PATH",   "LANG",
       "LC_ALL"};
   std::vector<std::string> environment;
   for (const char* name : kInherited) {
-    if (const char* value = std::getenv(name)) environment.push_back(std::string(name) + "=" + value);
+    if (const char* value = std::getenv(name))
+      environment.push_back(std::string(name) + "=" + value);
   }
   for (const auto& [name, value] : rig_environment) {
     if (!refused_environment_name(name)) environment.push_back(name + "=" + value);

@@ -157,9 +157,10 @@ class Expander {
     Nesting(Expander& expander, const model::SourceLocation& where, const std::string& what)
         : expander_(expander) {
       if (++expander_.depth_ > kMaxNesting) {
-        fail(where, what + " is reached through more than " + std::to_string(kMaxNesting) +
-                        " nested macro calls, blocks, includes or property references (a "
-                        "definition that uses itself?)",
+        fail(where,
+             what + " is reached through more than " + std::to_string(kMaxNesting) +
+                 " nested macro calls, blocks, includes or property references (a "
+                 "definition that uses itself?)",
              "macros, blocks, includes and properties that do not refer back to themselves");
       }
     }
@@ -244,8 +245,9 @@ class Expander {
   // Checked as texts grow, so that doubling properties stop at the first oversized value.
   void bounded(const std::string& text, const model::SourceLocation& where) const {
     if (text.size() > kMaxTextBytes) {
-      fail(where, "a value expands to more than " + std::to_string(kMaxTextBytes >> 20) +
-                      " MiB of text (properties that double themselves?)",
+      fail(where,
+           "a value expands to more than " + std::to_string(kMaxTextBytes >> 20) +
+               " MiB of text (properties that double themselves?)",
            "values of at most 1 MiB");
     }
   }
@@ -258,8 +260,9 @@ class Expander {
     std::string result = xacro::to_text(evaluate_text(text, scope, where));
     text_bytes_ += result.size();
     if (text_bytes_ > kMaxTotalTextBytes) {
-      fail(where, "the expansion produces more than " +
-                      std::to_string(kMaxTotalTextBytes >> 20) + " MiB of text",
+      fail(where,
+           "the expansion produces more than " + std::to_string(kMaxTotalTextBytes >> 20) +
+               " MiB of text",
            "a description that expands to less (macros or properties that multiply?)");
     }
     return result;
@@ -270,8 +273,9 @@ class Expander {
     nodes_ += 1;
     for (const xml::Node& child : node.children) produced(child);
     if (nodes_ > kMaxNodes) {
-      fail(node.where, "the expansion produces more than " + std::to_string(kMaxNodes) +
-                           " elements (macros or blocks that multiply?)",
+      fail(node.where,
+           "the expansion produces more than " + std::to_string(kMaxNodes) +
+               " elements (macros or blocks that multiply?)",
            "a description that expands to fewer elements");
     }
   }
@@ -280,8 +284,9 @@ class Expander {
     std::size_t& count = what == "includes" ? includes_ : expansions_;
     const std::size_t limit = what == "includes" ? kMaxIncludes : kMaxExpansions;
     if (++count > limit) {
-      fail(where, "more than " + std::to_string(limit) + " " + what +
-                      " in all (macros or includes that multiply?)",
+      fail(where,
+           "more than " + std::to_string(limit) + " " + what +
+               " in all (macros or includes that multiply?)",
            "a description that calls and includes less");
     }
   }
@@ -609,8 +614,9 @@ class Expander {
 
   void produced_count_check(const model::SourceLocation& where) const {
     if (nodes_ > kMaxNodes) {
-      fail(where, "the expansion produces more than " + std::to_string(kMaxNodes) +
-                      " elements (macros or blocks that multiply?)",
+      fail(where,
+           "the expansion produces more than " + std::to_string(kMaxNodes) +
+               " elements (macros or blocks that multiply?)",
            "a description that expands to fewer elements");
     }
   }

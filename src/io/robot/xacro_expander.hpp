@@ -29,7 +29,7 @@ struct XacroInput {
   /// When given, every variable $(optenv) or $(env) asked for is added: a rig's `env` the
   /// description never reads is a typo worth a warning (HUSKY_LASER_3D_ENABLE).
   std::set<std::string>* environment_read = nullptr;
-  model::SourceLocation named_at;                  ///< where the rig names the description
+  model::SourceLocation named_at;  ///< where the rig names the description
   /// Expand `<gazebo>`, `<ros2_control>` and `<transmission>` too (the simulation's URDF, as
   /// the tests hand it to libsdformat); by default they are left out unexpanded, so that a
   /// plugin's $(find PKG) this machine lacks does not stop a description from loading.

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "rigdesign/io/file_bytes.hpp"
 #include "io/text_encoding.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io::xml {

@@ -42,7 +42,8 @@ void write_crop_boxes(std::ostringstream& out, const deploy::SelfFilter& filter,
         << python_string(filter.mount_id + "_self_filter_" + std::to_string(k)) << ",\n"
         << "                    parameters=[PARAMETERS],\n"
         << "                    remappings="
-        << remappings({{"input", input}, {"output", deploy::crop_box_topic(source.raw_topic, k, n)}})
+        << remappings(
+               {{"input", input}, {"output", deploy::crop_box_topic(source.raw_topic, k, n)}})
         << ",\n"
         << "                ),\n";
   }

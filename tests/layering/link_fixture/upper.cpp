@@ -1,0 +1,3 @@
+int upper_answer() {
+  return 41;
+}
