@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the outputs a restructuring must keep byte for byte with one rigdesign binary, into a
-# folder: the main job's files, `metrics --json` and `coverage` of every bundled rig, `export`
+# folder: the main job's files, `metrics` (text and JSON) and `coverage` of every bundled rig, `export`
 # of every bundled rig and `check --format junit` of them all. Run it with the binary before
 # and after a change and diff the two folders (`diff -r`); timing fields are blanked first.
 #   scripts/same-outputs.sh BINARY OUTPUT_FOLDER
@@ -22,8 +22,14 @@ blank_times() {
 for rig in rigs/*.yaml; do
   name="$(basename "$rig" .yaml)"
   "$binary" metrics "$rig" --json 2>/dev/null | blank_times >"$out/metrics_$name.json" || true
+  "$binary" metrics "$rig" 2>/dev/null | blank_times >"$out/metrics_$name.txt" || true
   "$binary" coverage "$rig" --out "$out/coverage_$name" >/dev/null 2>&1 || true
   "$binary" export "$rig" --to "$out/export_$name" >/dev/null 2>&1 || true
+done
+for requirements in rigs/requirements/*.yaml; do
+  name="$(basename "$requirements" .yaml)"
+  "$binary" metrics rigs/ur_cleaner.yaml --requirements "$requirements" 2>/dev/null |
+    blank_times >"$out/metrics_ur_cleaner_against_$name.txt" || true
 done
 "$binary" check rigs/*.yaml --format junit 2>/dev/null | blank_times >"$out/check.junit.xml" || true
 # Files whose text carries timings get the same blanking.

@@ -1,7 +1,7 @@
 // Fuzz target: a nav2 collision_monitor parameter file (check --collision-monitor), read for a
 // rig with one mount (front_lidar on /front_lidar/scan, as the seeds from the cart name it).
 #include "fuzz_input.hpp"
-#include "rigdesign/io/nav2/collision_monitor_reader.hpp"
+#include "rigdesign/deploy/ros/nav2/collision_monitor_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = rigdesign::fuzz::input_file(data, size, "collision_monitor.yaml");
@@ -13,6 +13,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return r;
   }();
   return rigdesign::fuzz::expect_input_errors([&] {
-    rigdesign::io::load_collision_monitor(path, rig, {{"/front_lidar/scan", "front_lidar"}});
+    rigdesign::deploy::load_collision_monitor(path, rig, {{"/front_lidar/scan", "front_lidar"}});
   });
 }

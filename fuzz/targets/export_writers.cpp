@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "fuzz_input.hpp"
-#include "rigdesign/io/nav2/costmap_params_writer.hpp"
-#include "rigdesign/io/robot/sensors_xacro_writer.hpp"
-#include "rigdesign/io/self_filters/self_filters_launch_writer.hpp"
-#include "rigdesign/io/self_filters/self_filters_writer.hpp"
+#include "rigdesign/deploy/ros/description/sensors_xacro_writer.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_writer.hpp"
+#include "rigdesign/deploy/ros/self_filters/self_filters_launch_writer.hpp"
+#include "rigdesign/deploy/ros/self_filters/self_filters_writer.hpp"
 
 namespace {
 
@@ -182,14 +182,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     filters.push_back(filter);
   }
   try {
-    check_xacro(io::sensors_xacro_text(frames, header), frames);
+    check_xacro(deploy::sensors_xacro_text(frames, header), frames);
   } catch (const model::InputError& error) {  // a parent with a space: refused, with a message
     fuzz::require_clear_message(error);
   }
-  check_nav2(io::nav2_costmap_text(config, header), config);
+  check_nav2(deploy::nav2_costmap_text(config, header), config);
   check_filters(
-      io::self_filters_text(filters, config.robot_base_frame, model::Pose3::Identity(), header),
+      deploy::self_filters_text(filters, config.robot_base_frame, model::Pose3::Identity(), header),
       config.robot_base_frame);
-  (void)io::self_filters_launch_text(filters, config.sources, "self_filters.yaml", header);
+  (void)deploy::self_filters_launch_text(filters, config.sources, "self_filters.yaml", header);
   return 0;
 }

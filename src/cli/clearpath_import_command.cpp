@@ -10,9 +10,9 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "inputs.hpp"
+#include "rigdesign/deploy/clearpath/clearpath_sensors.hpp"
 #include "rigdesign/deploy/sensor_frames.hpp"
 #include "rigdesign/io/atomic_write.hpp"
-#include "rigdesign/io/clearpath/clearpath_sensors.hpp"
 #include "rigdesign/io/config/yaml_writers.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -30,7 +30,7 @@ struct ClearpathImportOptions {
 // Where clearpath_config puts the data (sensors/types/*.py; docs/clearpath.md): topics under
 // <namespace>/sensors/<name>/, a lidar's frame <name>_laser (set on every index change), a
 // RealSense's depth frame <name>_depth_optical_frame.
-void wire_like_clearpath(const io::ClearpathSensor& sensor, const std::string& ros_namespace,
+void wire_like_clearpath(const deploy::ClearpathSensor& sensor, const std::string& ros_namespace,
                          model::Mount& mount) {
   const std::string base =
       (ros_namespace.empty() ? "" : "/" + ros_namespace) + "/sensors/" + sensor.name() + "/";
@@ -43,10 +43,10 @@ void wire_like_clearpath(const io::ClearpathSensor& sensor, const std::string& r
 
 int run_clearpath_import(const ClearpathImportOptions& options, std::ostream& out) {
   RigInputs inputs = load_rig_inputs(options.rig, "", "");
-  const io::ClearpathRobot robot = io::read_clearpath_robot(options.robot_yaml);
+  const deploy::ClearpathRobot robot = deploy::read_clearpath_robot(options.robot_yaml);
   std::vector<model::Mount> mounts;
   model::Diagnostics diagnostics;
-  for (const io::ClearpathSensor& sensor : robot.sensors) {
+  for (const deploy::ClearpathSensor& sensor : robot.sensors) {
     const std::optional<model::Pose3> T_robot_parent =
         deploy::robot_frame_pose(inputs.rig, sensor.parent);
     if (!T_robot_parent) {

@@ -22,11 +22,11 @@
 #include "progress_line.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_reader.hpp"
 #include "rigdesign/geometry/footprint_hull.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/io/maps/map_files.hpp"
-#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/scene/scenario_file_loader.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -374,8 +374,8 @@ void print_comparison(std::ostream& out, const std::vector<VariantRun>& runs) {
 // Returns where the file sets the window, for the simulation's size check.
 model::SourceLocation apply_params_file(const std::string& path, double global_frame_height,
                                         const model::Rig& rig, scenarios::ScenarioParams& params) {
-  const io::CostmapParamsFile file =
-      io::load_costmap_params(path, params.costmap, params.source, global_frame_height);
+  const deploy::CostmapParamsFile file =
+      deploy::load_costmap_params(path, params.costmap, params.source, global_frame_height);
   params.costmap = file.costmap;
   params.mount_sources = file.sources;
   for (const costmap::NamedObservationSource& named : file.sources) {

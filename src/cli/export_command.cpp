@@ -17,8 +17,8 @@
 #include "number_checks.hpp"
 #include "report/deployment_report.hpp"
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/deploy/export/deployment_files.hpp"
 #include "rigdesign/io/atomic_write.hpp"
-#include "rigdesign/io/deploy/deployment_files.hpp"
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/ros_names.hpp"
 #include "rigdesign/render/gltf_scene.hpp"
@@ -88,7 +88,7 @@ int run_export(const ExportOptions& given, std::ostream& out) {
   require_option(!options.to.empty(), "--out", "is missing", "--out FOLDER for the files");
   io::StagedFolder staged(options.to, "--out");
   staged.refuse_inputs_inside(files_read(inputs));
-  std::vector<std::string> written = io::write_deployment(
+  std::vector<std::string> written = deploy::write_deployment(
       staged.path(), inputs.rig, deployment, deployment_header(inputs.rig, requirements));
   if (options.gltf) {
     written.push_back(staged.path() + "/rig_fov.gltf");

@@ -18,8 +18,8 @@
 #include "number_checks.hpp"
 #include "occupancy_paper3_report.hpp"
 #include "progress_line.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/atomic_write.hpp"
-#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/statistics.hpp"
@@ -75,7 +75,7 @@ void apply_params_file(const std::string& path, occupancy::VoxelMapperParams& ba
   defaults.hit = base.hit;
   defaults.voxel.z_max = base.z_max;
   defaults.robot_radius = base.robot_radius;
-  const io::CostmapParamsFile file = io::load_costmap_params(path, defaults, base.source);
+  const deploy::CostmapParamsFile file = deploy::load_costmap_params(path, defaults, base.source);
   base.hit = file.costmap.hit;
   base.z_max = file.costmap.voxel.z_max;
   base.robot_radius = file.costmap.robot_radius;

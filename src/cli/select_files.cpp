@@ -11,9 +11,9 @@
 #include "report/html_report.hpp"
 #include "report/select_html.hpp"
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/deploy/export/deployment_files.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/yaml_writers.hpp"
-#include "rigdesign/io/deploy/deployment_files.hpp"
 #include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/staged_folder.hpp"
@@ -179,8 +179,8 @@ std::vector<std::string> write_ros_deployment(const model::SensorLibrary& librar
                                               const model::Rig& rig, const std::string& folder) {
   const deploy::Deployment deployment =
       deploy::plan_deployment(rig, library, &pick.requirements, {});
-  return io::write_deployment(folder + "/deploy", rig, deployment,
-                              deployment_header(rig, &pick.requirements));
+  return deploy::write_deployment(folder + "/deploy", rig, deployment,
+                                  deployment_header(rig, &pick.requirements));
 }
 
 void append(std::vector<std::string>& to, const std::vector<std::string>& more) {

@@ -13,9 +13,9 @@
 #include "common_options.hpp"
 #include "inputs.hpp"
 #include "progress_line.hpp"
+#include "rigdesign/deploy/gazebo/scene_world_writer.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
-#include "rigdesign/io/gazebo/scene_world_writer.hpp"
 #include "rigdesign/io/output_folder.hpp"
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -99,9 +99,9 @@ int run_simulate(const SimulateOptions& options, std::ostream& out, std::ostream
                                ", seed " + std::to_string(options.seed);
     io::prepare_output_folder(staged.path() + "/gazebo", "--out");
     io::write_file_atomically(staged.path() + "/gazebo/scene.obj",
-                              io::scene_obj_text(scene, header));
+                              deploy::scene_obj_text(scene, header));
     io::write_file_atomically(staged.path() + "/gazebo/world.sdf",
-                              io::gazebo_world_text(scene, "scene.obj", header));
+                              deploy::gazebo_world_text(scene, "scene.obj", header));
     out << "  gz sim: " << folder << "/gazebo/world.sdf (the scene at t = 0, " << folder
         << "/gazebo/scene.obj)\n";
   }

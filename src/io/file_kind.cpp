@@ -1,6 +1,6 @@
 #include "rigdesign/io/file_kind.hpp"
 
-#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 
 namespace rigdesign::io {
 

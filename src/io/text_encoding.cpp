@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "rigdesign/io/emit/xml_text.hpp"
 #include "rigdesign/model/input_error.hpp"
-#include "rigdesign/model/xml_text.hpp"
 
 namespace rigdesign::io {
 
@@ -12,7 +12,7 @@ void require_utf8(std::string_view text, const std::string& file) {
   int line = 1;
   int column = 1;
   for (std::size_t i = 0; i < text.size();) {
-    const std::size_t length = model::utf8_sequence_length(text, i);
+    const std::size_t length = io::utf8_sequence_length(text, i);
     if (length == 0) {
       char value[8];
       std::snprintf(value, sizeof value, "0x%02X",

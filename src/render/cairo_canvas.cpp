@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "rigdesign/io/atomic_write.hpp"
-#include "rigdesign/model/xml_text.hpp"
+#include "rigdesign/io/emit/xml_text.hpp"
 
 namespace rigdesign::render {
 namespace {
@@ -63,7 +63,7 @@ std::string svg_text_element(cairo_t* cairo, const std::string& text, double x, 
                 m.xx, m.yx, m.xy, m.yy, m.x0, m.y0, x, y, size, bold ? " font-weight=\"bold\"" : "",
                 text_anchor, static_cast<int>(red * 255 + 0.5), static_cast<int>(green * 255 + 0.5),
                 static_cast<int>(blue * 255 + 0.5), alpha);
-  return head + model::xml_escaped(text) + "</text>";
+  return head + io::xml_escaped(text) + "</text>";
 }
 
 }  // namespace

@@ -449,16 +449,8 @@ SearchProblem SelectionSpace::problem_for(
 model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chosen) const {
   model::Rig rig;
   rig.name = catalog_->name + " (selected)";
-  rig.body = catalog_->body;
-  rig.distance_of_interest = catalog_->distance_of_interest;
+  static_cast<model::DescribedRobot&>(rig) = *catalog_;
   rig.file = catalog_->file;
-  rig.robot = catalog_->robot;
-  rig.base_link = catalog_->base_link;
-  rig.base_link_height = catalog_->base_link_height;
-  rig.link_poses = catalog_->link_poses;
-  rig.link_where = catalog_->link_where;
-  rig.joint_where = catalog_->joint_where;
-  rig.parent_link = catalog_->parent_link;
   rig.tolerance = tolerance_;
   for (const CatalogOption* option : chosen) {
     const model::MountingSlot& slot = catalog_->slots[option->slot];

@@ -8,9 +8,9 @@
 #include <string>
 
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/deploy/ros/description/sensors_xacro_writer.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
-#include "rigdesign/io/robot/sensors_xacro_writer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 
@@ -62,7 +62,7 @@ TEST_CASE("export: a lone lidar and camera take their drivers' frames and topics
   CHECK(source_of(d, "front").raw_topic == realsense["data"]["topic"].as<std::string>());
   CHECK(source_of(d, "front").sensor_frame == realsense["data"]["frame_id"].as<std::string>());
   CHECK(d.frames.frames[1].link == realsense["driver_tf_frames"][0].as<std::string>());
-  const std::string xacro = io::sensors_xacro_text(d.frames, "t");
+  const std::string xacro = deploy::sensors_xacro_text(d.frames, "t");
   CHECK(xacro.find("<link name=\"${prefix}camera_link\"/>") != std::string::npos);
   CHECK(xacro.find("camera_depth_optical_frame") == std::string::npos);
 }

@@ -8,11 +8,11 @@
 #include <string>
 
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/deploy/ros/description/sensors_xacro_writer.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
-#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/robot/robot_description_loader.hpp"
-#include "rigdesign/io/robot/sensors_xacro_writer.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/optical_frame.hpp"
 #include "support/cli_runner.hpp"
@@ -57,7 +57,7 @@ TEST_CASE("export: every bundled rig's description plus its sensors.urdf.xacro i
     const model::Rig rig = io::load_rig(source_path("rigs/" + name + ".yaml"));
     const deploy::SensorFrames frames = deploy::sensor_frames(rig, library);
     TempFolder folder;
-    folder.write("sensors.urdf.xacro", io::sensors_xacro_text(frames, "round trip of " + name));
+    folder.write("sensors.urdf.xacro", deploy::sensors_xacro_text(frames, "round trip of " + name));
     io::RobotDescriptionRequest request;
     request.path = folder.write("wrapper.urdf.xacro", wrapper_text(rig, frames.parent));
     request.expander = io::RobotDescriptionRequest::Expander::builtin;
@@ -99,7 +99,7 @@ TEST_CASE(
     "[deploy]") {
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   const model::Rig jackal = io::load_rig(source_path("rigs/jackal.yaml"));
-  const std::string text = io::sensors_xacro_text(deploy::sensor_frames(jackal, library), "t");
+  const std::string text = deploy::sensors_xacro_text(deploy::sensor_frames(jackal, library), "t");
   // Both mounts sit on the accessories' own links (front_laser, velodyne): no link, no joint.
   CHECK(text.find("<link") == std::string::npos);
   CHECK(text.find("<joint") == std::string::npos);
@@ -124,7 +124,7 @@ TEST_CASE("export: a camera's optical frame is z forward, x right, y down", "[de
   CHECK((R.col(1) + model::Vec3::UnitZ()).norm() < 1e-12);
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   const model::Rig rig = io::load_rig(source_path("rigs/ur_cleaner.yaml"));
-  const std::string text = io::sensors_xacro_text(deploy::sensor_frames(rig, library), "t");
+  const std::string text = deploy::sensors_xacro_text(deploy::sensor_frames(rig, library), "t");
   // rpy of that rotation: roll -pi/2, pitch 0, yaw -pi/2 (the usual camera optical joint).
   CHECK(text.find("rpy=\"-1.5707963267948966 0 -1.5707963267948966\"") != std::string::npos);
   // The pico flexx has no ROS 2 driver (sensors.yaml ros2): its optical frame is the export's.

@@ -26,9 +26,9 @@
 #include "io/robot/xacro_expander.hpp"
 #include "io/robot/xml_tree.hpp"
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/deploy/export/deployment_files.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
-#include "rigdesign/io/deploy/deployment_files.hpp"
 #include "rigdesign/io/mesh/assimp_mesh_loader.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/sim/scene_library.hpp"
@@ -124,7 +124,7 @@ TEST_CASE("export: libsdformat reads every bundled rig's Gazebo sensors as the d
     options.max_speed = 1.0;
     const deploy::Deployment deployment = deploy::plan_deployment(rig, library, nullptr, options);
     test::TempFolder folder;
-    io::write_deployment(folder.path(), rig, deployment, "test");
+    deploy::write_deployment(folder.path(), rig, deployment, "test");
     const std::string wrapper = folder.write("robot.urdf.xacro", wrapper_xacro(rig, deployment));
     io::XacroInput input;
     input.path = wrapper;

@@ -12,10 +12,10 @@
 #include <utility>
 
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_reader.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_writer.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
-#include "rigdesign/io/nav2/costmap_params_reader.hpp"
-#include "rigdesign/io/nav2/costmap_params_writer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/fixture_files.hpp"
 #include "support/temp_folder.hpp"
@@ -66,8 +66,8 @@ TEST_CASE("export: nav2 parameters read back give the sources, footprint and lay
   const model::SensorLibrary library = io::load_sensor_library(folder.path() + "/sensors.yaml");
   const deploy::Deployment deployment = deploy::plan_deployment(rig, library, nullptr, {});
   const std::string path =
-      folder.write("nav2.yaml", io::nav2_costmap_text(deployment.costmap, "test"));
-  const io::CostmapParamsFile file = io::load_costmap_params(path, {}, {});
+      folder.write("nav2.yaml", deploy::nav2_costmap_text(deployment.costmap, "test"));
+  const deploy::CostmapParamsFile file = deploy::load_costmap_params(path, {}, {});
   REQUIRE(file.sources.size() == 2);
   CHECK(file.sources[0].name == "scanner");
   CHECK(file.sources[1].name == "cam");
@@ -110,7 +110,7 @@ TEST_CASE("export: nav2 names in the exported file", "[deploy]") {
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   const model::Rig rig = io::load_rig(source_path("rigs/turtlebot4.yaml"));
   const std::string text =
-      io::nav2_costmap_text(deploy::plan_deployment(rig, library, nullptr, {}).costmap, "test");
+      deploy::nav2_costmap_text(deploy::plan_deployment(rig, library, nullptr, {}).costmap, "test");
   for (const std::string key :
        {"local_costmap:\n  local_costmap:\n    ros__parameters:\n",
         "global_costmap:\n  global_costmap:\n    ros__parameters:\n",

@@ -14,14 +14,14 @@
 #include <sstream>
 #include <string>
 
-#include "io/nav2/collision_monitor_keys.hpp"
+#include "deploy/ros/nav2/collision_monitor_keys.hpp"
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/deploy/export/deployment_files.hpp"
+#include "rigdesign/deploy/ros/nav2/collision_monitor_writer.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_writer.hpp"
+#include "rigdesign/deploy/ros/self_filters/self_filters_writer.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
-#include "rigdesign/io/deploy/deployment_files.hpp"
-#include "rigdesign/io/nav2/collision_monitor_writer.hpp"
-#include "rigdesign/io/nav2/costmap_params_writer.hpp"
-#include "rigdesign/io/self_filters/self_filters_writer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/shared_export.hpp"
 #include "support/temp_folder.hpp"
@@ -184,9 +184,9 @@ TEST_CASE("export: every nav2 key is declared by nav2 with the type written", "[
     options.max_speed = 1.0;
     // Paper 1's Hit Layer only when asked for, under the class the user gave.
     options.hit_layer_plugin = "my_layers::HitLayer";
-    CHECK(checked_classes(
-              tables,
-              io::nav2_costmap_text(deploy::plan_deployment(rig, library, nullptr, options).costmap,
+    CHECK(
+        checked_classes(tables, deploy::nav2_costmap_text(
+                                    deploy::plan_deployment(rig, library, nullptr, options).costmap,
                                     "test")) == std::set<std::string>{"my_layers::HitLayer"});
   }
 }
@@ -216,8 +216,8 @@ TEST_CASE("export: every self-filter key is declared by laser_filters or pcl_ros
     INFO(rig_file);
     const model::Rig rig = io::load_rig(source_path(rig_file));
     const deploy::Deployment deployment = deploy::plan_deployment(rig, library, nullptr, {});
-    const YAML::Node file = YAML::Load(io::self_filters_text(deployment.self_filters, rig.base_link,
-                                                             model::Pose3::Identity(), "test"));
+    const YAML::Node file = YAML::Load(deploy::self_filters_text(
+        deployment.self_filters, rig.base_link, model::Pose3::Identity(), "test"));
     for (const auto& node : file) {
       const YAML::Node parameters = node.second["ros__parameters"];
       REQUIRE(parameters.IsMap());
@@ -338,9 +338,9 @@ TEST_CASE("check --collision-monitor reads only keys nav2 declares", "[deploy]")
   const Declared& velocity = velocity_keys;
   const Declared source = either_release("source");
   for (const auto& [level, declared_keys, keys] :
-       {std::tuple{"node", &node, &io::nav2::kMonitorNodeKeys},
-        std::tuple{"polygon", &velocity, &io::nav2::kMonitorPolygonKeys},
-        std::tuple{"source", &source, &io::nav2::kMonitorSourceKeys}}) {
+       {std::tuple{"node", &node, &deploy::nav2::kMonitorNodeKeys},
+        std::tuple{"polygon", &velocity, &deploy::nav2::kMonitorPolygonKeys},
+        std::tuple{"source", &source, &deploy::nav2::kMonitorSourceKeys}}) {
     for (const std::vector<std::string>* list : {&keys->modelled, &keys->ignored}) {
       for (const std::string& key : *list) {
         INFO(level << "." << key);

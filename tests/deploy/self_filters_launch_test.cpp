@@ -9,11 +9,11 @@
 #include <string>
 
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_writer.hpp"
+#include "rigdesign/deploy/ros/self_filters/self_filters_launch_writer.hpp"
+#include "rigdesign/deploy/ros/self_filters/self_filters_writer.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
-#include "rigdesign/io/nav2/costmap_params_writer.hpp"
-#include "rigdesign/io/self_filters/self_filters_launch_writer.hpp"
-#include "rigdesign/io/self_filters/self_filters_writer.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 
@@ -43,11 +43,11 @@ Exported exported(const std::string& rig_file) {
   const model::SensorLibrary library = io::load_sensor_library(source_path("sensors.yaml"));
   const model::Rig rig = io::load_rig(source_path(rig_file));
   Exported e{deploy::plan_deployment(rig, library, nullptr, {}), {}, {}, {}};
-  e.launch = io::self_filters_launch_text(e.deployment.self_filters, e.deployment.costmap.sources,
-                                          "self_filters.yaml", "test");
-  e.parameters = YAML::Load(io::self_filters_text(e.deployment.self_filters, rig.base_link,
-                                                  model::Pose3::Identity(), "test"));
-  e.nav2 = YAML::Load(io::nav2_costmap_text(e.deployment.costmap, "test"));
+  e.launch = deploy::self_filters_launch_text(
+      e.deployment.self_filters, e.deployment.costmap.sources, "self_filters.yaml", "test");
+  e.parameters = YAML::Load(deploy::self_filters_text(e.deployment.self_filters, rig.base_link,
+                                                      model::Pose3::Identity(), "test"));
+  e.nav2 = YAML::Load(deploy::nav2_costmap_text(e.deployment.costmap, "test"));
   return e;
 }
 
@@ -144,7 +144,7 @@ TEST_CASE("export: Python strings in the launch file hold any topic exactly", "[
   source.raw_topic = "/a'b\\c\nimport os";
   source.topic = "/out";
   const std::string launch =
-      io::self_filters_launch_text({filter}, {source}, "self_filters.yaml", "header\nline two");
+      deploy::self_filters_launch_text({filter}, {source}, "self_filters.yaml", "header\nline two");
   CHECK(launch.find("'/a\\'b\\\\c\\x0aimport os'") != std::string::npos);
   CHECK(launch.find("\nimport os'") == std::string::npos);
   CHECK(python_compiles(launch));

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "rigdesign/io/clearpath/clearpath_sensors.hpp"
+#include "rigdesign/deploy/clearpath/clearpath_sensors.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 
@@ -31,7 +31,7 @@ YAML::Node entry_of(const YAML::Node& document, const std::string& type, const s
 
 TEST_CASE("clearpath: robot.yaml's range sensors map to library sensors by model and device",
           "[io]") {
-  const io::ClearpathRobot robot = io::read_clearpath_robot(source_path(kSample));
+  const deploy::ClearpathRobot robot = deploy::read_clearpath_robot(source_path(kSample));
   CHECK(robot.serial_number == "j100-0000");
   CHECK(robot.ros_namespace == "j100_0000");
   REQUIRE(robot.sensors.size() == 3);
@@ -55,7 +55,7 @@ TEST_CASE("clearpath: ros_parameters without the device's node leave the default
       folder.write("robot.yaml",
                    "version: 0\nsensors:\n  lidar3d:\n    - model: velodyne_lidar\n"
                    "      ros_parameters: {ve`odyne_driver_node: {model: 32C}}\n");
-  const io::ClearpathRobot robot = io::read_clearpath_robot(path);
+  const deploy::ClearpathRobot robot = deploy::read_clearpath_robot(path);
   REQUIRE(robot.sensors.size() == 1);
   CHECK(robot.sensors[0].sensor_id == "velodyne_vlp16");  // VLP16, the default device
 }
@@ -66,7 +66,7 @@ TEST_CASE("clearpath: sensor kinds a newer clearpath_config adds are not refused
       folder.write("robot.yaml",
                    "serial_number: a300-0000\nversion: 0\nsensors:\n  ins:\n"
                    "    - {model: some_ins}\n  lidar2d:\n    - {model: sick_lms1xx}\n");
-  const io::ClearpathRobot robot = io::read_clearpath_robot(path);
+  const deploy::ClearpathRobot robot = deploy::read_clearpath_robot(path);
   REQUIRE(robot.sensors.size() == 1);
   CHECK(robot.sensors[0].sensor_id == "sick_lms100");
   CHECK(robot.sensors[0].parent == "default_mount");  // clearpath_config's default

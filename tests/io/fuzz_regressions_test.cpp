@@ -5,11 +5,11 @@
 #include <functional>
 #include <map>
 
+#include "rigdesign/deploy/ros/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/cloud/cloud_io.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
-#include "rigdesign/io/nav2/costmap_params_reader.hpp"
 #include "rigdesign/io/robot/robot_description_loader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
@@ -27,7 +27,7 @@ const std::map<std::string, std::function<void(const std::string&)>>& readers() 
       {"catalog_yaml", [](const std::string& path) { io::load_catalog(path); }},
       {"costmap_params_yaml",
        [](const std::string& path) {
-         io::load_costmap_params(path, costmap::CostmapParams{}, costmap::ObservationSource{});
+         deploy::load_costmap_params(path, costmap::CostmapParams{}, costmap::ObservationSource{});
        }},
       {"robot_urdf",
        [](const std::string& path) {

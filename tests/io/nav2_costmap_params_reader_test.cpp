@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "rigdesign/io/nav2/costmap_params_reader.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_reader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
@@ -24,7 +24,7 @@ model::Diagnostic failure_of(const std::string& text) {
   TempFolder folder;
   const std::string path = folder.write("costmap.yaml", text);
   try {
-    io::load_costmap_params(path, {}, {});
+    deploy::load_costmap_params(path, {}, {});
   } catch (const model::InputError& error) {
     REQUIRE_FALSE(error.diagnostics().empty());
     return error.diagnostics().front();
@@ -36,7 +36,7 @@ model::Diagnostic failure_of(const std::string& text) {
 }  // namespace
 
 TEST_CASE("the bundled nav2 file gives the values its text states", "[io][costmap]") {
-  const io::CostmapParamsFile file = io::load_costmap_params(kBundled, {}, {});
+  const deploy::CostmapParamsFile file = deploy::load_costmap_params(kBundled, {}, {});
   const costmap::CostmapParams& p = file.costmap;
   CHECK(p.resolution == 0.05);
   CHECK(p.size_x == 6.0);
@@ -82,7 +82,8 @@ TEST_CASE("keys the file does not give keep the caller's defaults", "[io][costma
   defaults.hit.hit_max = 99;
   costmap::ObservationSource source_defaults;
   source_defaults.obstacle_max_range = 4.0;
-  const io::CostmapParamsFile file = io::load_costmap_params(path, defaults, source_defaults);
+  const deploy::CostmapParamsFile file =
+      deploy::load_costmap_params(path, defaults, source_defaults);
   CHECK(file.costmap.resolution == 0.1);
   CHECK(file.costmap.size_x == 7.0);
   CHECK(file.costmap.hit.hit_max == 99);

@@ -72,23 +72,12 @@ struct PricedCapacity {
   std::string kind;
 };
 
-struct Catalog {
+/// The robot (as a rig describes it, so that the chosen rig stands on the same robot) and
+/// what may be mounted on it.
+struct Catalog : DescribedRobot {
   std::string name;
   std::string sensor_library;  ///< as written, relative to the catalog file
   SourceLocation sensor_library_where;
-  /// The body: the robot description's collision geometry (`robot:`), or `body:`; its
-  /// area_height from the catalog or the requirements.
-  RobotBody body;
-  /// The robot description, as a rig names it; nothing without one. Its links, joints and
-  /// base link as a rig keeps them, so that the chosen rig stands on the same robot.
-  std::optional<RobotSource> robot;
-  std::string base_link = "base_footprint";
-  double base_link_height = 0.0;
-  std::map<std::string, Pose3> link_poses;
-  std::map<std::string, SourceLocation> link_where;
-  std::map<std::string, SourceLocation> joint_where;
-  std::map<std::string, std::string> parent_link;
-  double distance_of_interest = 0.0;  ///< d [m]
   std::vector<CandidateSensor> sensors;
   std::vector<MountingSlot> slots;
   std::vector<PricedCapacity> transfer;

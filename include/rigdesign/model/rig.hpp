@@ -124,20 +124,14 @@ struct RobotSource {
   bool poses_only = false;                 ///< a legacy `urdf:` entry (no collision geometry)
 };
 
-struct Rig {
-  std::string name;
+/// The robot a rig or a candidate catalog stands on, as the keys both files share describe it
+/// (`robot` or `urdf`, `body`, `area_height`, `distance_of_interest`), read by one loader
+/// function and copied whole into the rig `select` chooses.
+struct DescribedRobot {
+  /// The body: the robot description's collision geometry (`robot:`), or `body:`; its
+  /// area_height from the file or the requirements.
   RobotBody body;
   double distance_of_interest = 0.0;  ///< d [m]
-  std::vector<Mount> mounts;
-  std::string sensor_library;  ///< path as written in the file (relative to it), may be empty
-  std::string requirements;    ///< path as written in the file (relative to it), may be empty
-  SourceLocation sensor_library_where;
-  SourceLocation requirements_where;
-  std::string file;
-  SourceLocation where;
-  /// What the loader noticed that is not an error (e.g. a link used in the other frame
-  /// convention than its axes suggest).
-  std::vector<Diagnostic> load_warnings;
   /// With a robot description: the link the robot frame stands on (REP-105's base_footprint,
   /// or the description's base link), its height above the floor, and every link's pose in
   /// the robot frame, so that exported sensor frames can hang from any link. Without one the
@@ -152,6 +146,20 @@ struct Rig {
   std::map<std::string, std::string> parent_link;
   /// The description the links come from; nothing without one.
   std::optional<RobotSource> robot;
+};
+
+struct Rig : DescribedRobot {
+  std::string name;
+  std::vector<Mount> mounts;
+  std::string sensor_library;  ///< path as written in the file (relative to it), may be empty
+  std::string requirements;    ///< path as written in the file (relative to it), may be empty
+  SourceLocation sensor_library_where;
+  SourceLocation requirements_where;
+  std::string file;
+  SourceLocation where;
+  /// What the loader noticed that is not an error (e.g. a link used in the other frame
+  /// convention than its axes suggest).
+  std::vector<Diagnostic> load_warnings;
   /// Every mount's mounting tolerance unless the mount gives its own; nothing: none.
   std::optional<PoseTolerance> tolerance;
 

@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "report/requirement_text.hpp"
+#include "rigdesign/io/emit/xml_text.hpp"
 #include "rigdesign/model/format_number.hpp"
-#include "rigdesign/model/xml_text.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -37,7 +37,7 @@ std::string seconds_text(double seconds) {
 // them (the Ant schema has no such attributes; the xunit/pytest dialect does). Every case has
 // both (issue 39): a finding about a whole file points at its first line.
 std::string location_attributes(const model::SourceLocation& where) {
-  return " file=\"" + model::xml_escaped(where.file) + "\" line=\"" +
+  return " file=\"" + io::xml_escaped(where.file) + "\" line=\"" +
          std::to_string(std::max(1, where.line)) + "\"";
 }
 
@@ -47,17 +47,17 @@ void validity_case(const FileReport& report, const std::string& name, std::ostre
                                           ? report.diagnostics.front().where
                                           : model::SourceLocation{report.file, 1, 1};
   xml << "    <testcase classname=\"" << name << "\" name=\"valid "
-      << model::xml_escaped(report.kind ? to_string(*report.kind) : "file") << "\""
+      << io::xml_escaped(report.kind ? to_string(*report.kind) : "file") << "\""
       << location_attributes(where) << " time=\"" << seconds_text(report.load_seconds) << "\">\n";
   if (report.invalid()) {
     std::string body;
     for (const model::Diagnostic& d : report.diagnostics) body += d.message() + "\n";
     const std::string first =
         report.diagnostics.empty() ? "" : report.diagnostics.front().message();
-    xml << "      <error type=\"invalid input\" message=\"" << model::xml_escaped(first) << "\">"
-        << model::xml_escaped(body) << "</error>\n";
+    xml << "      <error type=\"invalid input\" message=\"" << io::xml_escaped(first) << "\">"
+        << io::xml_escaped(body) << "</error>\n";
   } else if (!report.summary.empty()) {
-    xml << "      <system-out>" << model::xml_escaped(report.summary) << "</system-out>\n";
+    xml << "      <system-out>" << io::xml_escaped(report.summary) << "</system-out>\n";
   }
   xml << "    </testcase>\n";
 }
@@ -65,25 +65,25 @@ void validity_case(const FileReport& report, const std::string& name, std::ostre
 void requirement_case(const metrics::RequirementResult& result, double seconds,
                       const std::string& name, std::ostream& xml) {
   xml << "    <testcase classname=\"" << name << "\" name=\""
-      << model::xml_escaped(result.id + " " + result.title) << "\""
+      << io::xml_escaped(result.id + " " + result.title) << "\""
       << location_attributes(result.annotated_where()) << " time=\"" << seconds_text(seconds)
       << "\">\n";
   if (result.verdict == metrics::Verdict::fail) {
-    xml << "      <failure type=\"requirement\" message=\""
-        << model::xml_escaped(result_line(result)) << "\"/>\n";
+    xml << "      <failure type=\"requirement\" message=\"" << io::xml_escaped(result_line(result))
+        << "\"/>\n";
   } else if (result.verdict == metrics::Verdict::not_evaluated) {
-    xml << "      <skipped message=\"" << model::xml_escaped(result.explanation) << "\"/>\n";
+    xml << "      <skipped message=\"" << io::xml_escaped(result.explanation) << "\"/>\n";
   }
   std::string out = measured_text(result);
   out += (out.empty() ? "" : "\n") + result.explanation;
   if (!result.limiting_mounts.empty()) out += "\nset by: " + model::join(result.limiting_mounts);
   out += "\nrequirement: " + to_string(result.where);
-  xml << "      <system-out>" << model::xml_escaped(out) << "</system-out>\n";
+  xml << "      <system-out>" << io::xml_escaped(out) << "</system-out>\n";
   xml << "    </testcase>\n";
 }
 
 void testsuite(const FileReport& report, const SuiteCounts& counts, std::ostream& xml) {
-  const std::string name = model::xml_escaped(report.file);
+  const std::string name = io::xml_escaped(report.file);
   xml << "  <testsuite name=\"" << name << "\" tests=\"" << counts.tests << "\" failures=\""
       << counts.failures << "\" errors=\"" << counts.errors << "\" skipped=\"" << counts.skipped
       << "\" time=\"" << seconds_text(counts.seconds) << "\">\n";
@@ -97,7 +97,7 @@ void testsuite(const FileReport& report, const SuiteCounts& counts, std::ostream
     if (d.severity == model::Severity::warning) warnings += d.message() + "\n";
   }
   if (!warnings.empty())
-    xml << "    <system-out>" << model::xml_escaped(warnings) << "</system-out>\n";
+    xml << "    <system-out>" << io::xml_escaped(warnings) << "</system-out>\n";
   xml << "  </testsuite>\n";
 }
 

@@ -2,7 +2,7 @@
 
 #include <ostream>
 
-#include "rigdesign/io/deploy/export_readme.hpp"
+#include "rigdesign/deploy/export/export_readme.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 
@@ -65,7 +65,7 @@ void print_deployment(std::ostream& out, const model::Rig& rig,
   } else {
     out << "  no collision monitor: no robot speed (requirements R5 or --max-speed)\n";
   }
-  out << '\n' << io::visibility_table(deployment) << '\n';
+  out << '\n' << deploy::visibility_table(deployment) << '\n';
   for (const std::string& path : written) out << "  wrote " << path << '\n';
 }
 

@@ -9,14 +9,14 @@
 #include "rigdesign/deploy/collision_monitor_check.hpp"
 #include "rigdesign/deploy/deployed_check.hpp"
 #include "rigdesign/deploy/deployment.hpp"
+#include "rigdesign/deploy/ros/nav2/collision_monitor_reader.hpp"
+#include "rigdesign/deploy/ros/nav2/costmap_params_reader.hpp"
+#include "rigdesign/deploy/ros/self_filters/self_filters_reader.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
-#include "rigdesign/io/nav2/collision_monitor_reader.hpp"
-#include "rigdesign/io/nav2/costmap_params_reader.hpp"
-#include "rigdesign/io/self_filters/self_filters_reader.hpp"
 #include "rigdesign/metrics/coverage_findings.hpp"
 #include "rigdesign/metrics/pair_findings.hpp"
 #include "rigdesign/metrics/resultant.hpp"
@@ -72,7 +72,7 @@ std::string rig_summary(const RigInputs& inputs) {
 deploy::DeployedConfig load_deployment(const DeploymentFiles& files, const model::Rig& rig) {
   deploy::DeployedConfig config;
   if (!files.nav2.empty())
-    config = io::load_deployed_sources(files.nav2, rig, files.global_frame_height);
+    config = deploy::load_deployed_sources(files.nav2, rig, files.global_frame_height);
   for (const std::string& spec : files.filters) {
     const std::size_t equals = spec.find('=');
     const std::string mount = equals == std::string::npos ? "" : spec.substr(0, equals);
@@ -82,7 +82,7 @@ deploy::DeployedConfig load_deployment(const DeploymentFiles& files, const model
                                      [&](const model::Mount& m) { return m.id == mount; });
     require_option(known, "--filters", "'" + mount + "' is no mount of " + rig.file,
                    "FILE, or MOUNT=FILE for a mount of the rig");
-    for (deploy::DeployedFilter& filter : io::load_self_filters(file, mount, rig))
+    for (deploy::DeployedFilter& filter : deploy::load_self_filters(file, mount, rig))
       config.filters.push_back(std::move(filter));
   }
   return config;
@@ -93,12 +93,12 @@ deploy::DeployedConfig load_deployment(const DeploymentFiles& files, const model
 deploy::DeployedCollisionMonitor load_monitor(const std::string& path, const RigInputs& inputs) {
   const deploy::Deployment deployment =
       deploy::plan_deployment(inputs.rig, inputs.library, nullptr, deploy::DeployOptions{});
-  std::vector<io::MountTopic> topics;
+  std::vector<deploy::MountTopic> topics;
   for (const deploy::SourceConfig& source : deployment.costmap.sources) {
     topics.emplace_back(source.topic, source.mount_id);
     if (source.raw_topic != source.topic) topics.emplace_back(source.raw_topic, source.mount_id);
   }
-  return io::load_collision_monitor(path, inputs.rig, topics);
+  return deploy::load_collision_monitor(path, inputs.rig, topics);
 }
 
 // Appends D4 for each zone of `monitor`, timed from `started`.

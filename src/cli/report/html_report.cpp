@@ -3,8 +3,8 @@
 #include <sstream>
 
 #include "report/requirement_text.hpp"
+#include "rigdesign/io/emit/xml_text.hpp"
 #include "rigdesign/model/format_number.hpp"
-#include "rigdesign/model/xml_text.hpp"
 #include "text_table.hpp"
 
 namespace rigdesign::cli {
@@ -52,13 +52,13 @@ void verdict_table(std::ostringstream& html,
     const std::string css = result.verdict == metrics::Verdict::pass   ? "pass"
                             : result.verdict == metrics::Verdict::fail ? "fail"
                                                                        : "skip";
-    html << "<tr><td class=\"text\">" << model::xml_escaped(result.id + " " + result.title)
-         << "</td><td class=\"text " << css << "\">" << model::xml_escaped(verdict)
-         << "</td><td class=\"text\">" << model::xml_escaped(measured_text(result))
-         << "</td><td class=\"text\">" << model::xml_escaped(model::join(result.limiting_mounts))
+    html << "<tr><td class=\"text\">" << io::xml_escaped(result.id + " " + result.title)
+         << "</td><td class=\"text " << css << "\">" << io::xml_escaped(verdict)
+         << "</td><td class=\"text\">" << io::xml_escaped(measured_text(result))
+         << "</td><td class=\"text\">" << io::xml_escaped(model::join(result.limiting_mounts))
          << "</td><td class=\"text\">"
-         << model::xml_escaped(model::to_string(result.annotated_where()))
-         << "</td><td class=\"text\">" << model::xml_escaped(result.explanation) << "</td></tr>\n";
+         << io::xml_escaped(model::to_string(result.annotated_where()))
+         << "</td><td class=\"text\">" << io::xml_escaped(result.explanation) << "</td></tr>\n";
   }
   html << "</table></section>\n";
 }
@@ -70,11 +70,10 @@ void metrics_table(std::ostringstream& html, const metrics::ResultantMetrics& me
           "<th>indoor</th><th>sun</th><th>B [MB/s]</th><th>U<sub>p</sub> [cores]</th>"
           "<th>price [USD]</th></tr>\n";
   for (const metrics::MountMetrics& mount : metrics.mounts) {
-    html << "<tr><td class=\"text\">" << model::xml_escaped(mount.mount_id)
-         << "</td><td class=\"text\">"
-         << model::xml_escaped(mount.sensor_id + " / " + mount.mode_id) << "</td><td>"
-         << fixed(mount.distance, 2) << "</td><td>" << fixed(mount.frequency, 1) << "</td><td>"
-         << mm(mount.point_spacing) << "</td><td>" << mm(mount.noise) << "</td><td>"
+    html << "<tr><td class=\"text\">" << io::xml_escaped(mount.mount_id)
+         << "</td><td class=\"text\">" << io::xml_escaped(mount.sensor_id + " / " + mount.mode_id)
+         << "</td><td>" << fixed(mount.distance, 2) << "</td><td>" << fixed(mount.frequency, 1)
+         << "</td><td>" << mm(mount.point_spacing) << "</td><td>" << mm(mount.noise) << "</td><td>"
          << html_yes_no(mount.light.dark) << "</td><td>" << html_yes_no(mount.light.indoor)
          << "</td><td>" << html_yes_no(mount.light.sunlight) << "</td><td>"
          << fixed(mount.bandwidth / 1e6, 2) << "</td><td>" << fixed(mount.driver_cpu, 2)
@@ -86,8 +85,8 @@ void metrics_table(std::ostringstream& html, const metrics::ResultantMetrics& me
           "<th class=\"text\">limiting sensors</th></tr>\n";
   const auto row = [&](const std::string& name, const std::string& value,
                        const std::vector<std::string>& mounts) {
-    html << "<tr><td class=\"text\">" << name << "</td><td>" << model::xml_escaped(value)
-         << "</td><td class=\"text\">" << model::xml_escaped(model::join(mounts)) << "</td></tr>\n";
+    html << "<tr><td class=\"text\">" << name << "</td><td>" << io::xml_escaped(value)
+         << "</td><td class=\"text\">" << io::xml_escaped(model::join(mounts)) << "</td></tr>\n";
   };
   row("F, slowest", fixed(metrics.frequency.value, 1) + " Hz", metrics.frequency.mounts);
   row("R, coarsest", mm(metrics.point_spacing.value) + " mm", metrics.point_spacing.mounts);
@@ -103,7 +102,7 @@ void cost_table(std::ostringstream& html, const metrics::ResultantMetrics& metri
   html << "<section id=\"cost\"><h2>Cost model inputs (paper 1, eqs. 1-7)</h2>\n<table>"
           "<tr><th class=\"text\">item</th><th>value</th></tr>\n";
   for (const metrics::MountMetrics& mount : metrics.mounts) {
-    html << "<tr><td class=\"text\">" << model::xml_escaped(mount.mount_id + ": " + mount.sensor_id)
+    html << "<tr><td class=\"text\">" << io::xml_escaped(mount.mount_id + ": " + mount.sensor_id)
          << "</td><td>" << fixed(mount.price, 0) << " USD"
          << (mount.price_basis == model::Basis::estimate ? " (estimate)" : "") << "</td></tr>\n";
   }
@@ -128,7 +127,7 @@ void n_minus_one_table(std::ostringstream& html, const metrics::RigCoverage& cov
        << fixed(coverage.floor_raster.min * 100, 1) << "</td><td>"
        << fixed(coverage.floor_raster.mean * 100, 1) << "</td></tr>\n";
   for (const metrics::MountLoss& loss : coverage.without_each) {
-    html << "<tr><td class=\"text\">" << model::xml_escaped(loss.mount_id) << "</td><td>"
+    html << "<tr><td class=\"text\">" << io::xml_escaped(loss.mount_id) << "</td><td>"
          << fixed(loss.complete.min * 100, 1) << "</td><td>" << fixed(loss.complete.mean * 100, 1)
          << "</td><td>" << fixed(loss.floor.min * 100, 1) << "</td><td>"
          << fixed(loss.floor.mean * 100, 1) << "</td></tr>\n";
@@ -151,13 +150,12 @@ std::string html_report(const ReportContent& content) {
   const RigInputs& inputs = *content.inputs;
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
-       << model::xml_escaped("rigdesign report: " + inputs.rig.name) << "</title>\n<style>"
-       << kStyle << "</style>\n</head>\n<body>\n<h1>" << model::xml_escaped(inputs.rig.name)
+       << io::xml_escaped("rigdesign report: " + inputs.rig.name) << "</title>\n<style>" << kStyle
+       << "</style>\n</head>\n<body>\n<h1>" << io::xml_escaped(inputs.rig.name)
        << "</h1>\n<p class=\"meta\">"
-       << "rig " << model::xml_escaped(inputs.rig.file) << "; sensors from "
-       << model::xml_escaped(inputs.library.file);
-  if (inputs.requirements)
-    html << "; requirements " << model::xml_escaped(inputs.requirements->file);
+       << "rig " << io::xml_escaped(inputs.rig.file) << "; sensors from "
+       << io::xml_escaped(inputs.library.file);
+  if (inputs.requirements) html << "; requirements " << io::xml_escaped(inputs.requirements->file);
   html << "; body r = " << model::format_number(inputs.rig.body.radius)
        << " m, h = " << model::format_number(inputs.rig.body.height)
        << " m; distance of interest d = " << model::format_number(inputs.rig.distance_of_interest)
@@ -175,7 +173,7 @@ std::string html_report(const ReportContent& content) {
        << fixed(content.coverage->complete.mean * 100, 1) << " %.</p>\n";
   verdict_table(html, content.results);
   for (const ReportSection& section : content.sections) {
-    html << "<section id=\"" << section.id << "\"><h2>" << model::xml_escaped(section.title)
+    html << "<section id=\"" << section.id << "\"><h2>" << io::xml_escaped(section.title)
          << "</h2>\n"
          << section.html << "</section>\n";
   }
@@ -185,7 +183,7 @@ std::string html_report(const ReportContent& content) {
     const ReportFigure& figure = content.figures[i];
     html << "<figure id=\"" << figure.id << "\">\n"
          << inline_svg(figure.svg, "f" + std::to_string(i) + "-") << "\n<figcaption>"
-         << model::xml_escaped(figure.caption) << "</figcaption></figure>\n";
+         << io::xml_escaped(figure.caption) << "</figcaption></figure>\n";
   }
   html << "</section>\n";
   n_minus_one_table(html, *content.coverage);

@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "report/html_report.hpp"
-#include "rigdesign/model/xml_text.hpp"
+#include "rigdesign/io/emit/xml_text.hpp"
 #include "text_table.hpp"
 
 namespace rigdesign::cli {
@@ -12,9 +12,9 @@ namespace {
 // What each relaxation step asked and what the cheapest rig then cost.
 void trace_table(const SelectReport& report, std::ostringstream& html) {
   const model::RelaxationPolicy& policy = *report.policy;
-  html << "<p>Catalog " << model::xml_escaped(report.catalog->file) << ", budget "
+  html << "<p>Catalog " << io::xml_escaped(report.catalog->file) << ", budget "
        << usd(report.budget) << ", policy "
-       << model::xml_escaped(policy.file.empty() ? std::string("none") : policy.file)
+       << io::xml_escaped(policy.file.empty() ? std::string("none") : policy.file)
        << ".</p>\n<table><tr><th>#</th><th class=\"text\">relaxed</th><th class=\"text\">"
           "needs</th><th>cost [USD]</th><th class=\"text\">within budget</th><th>nodes</th>"
           "<th>seconds</th></tr>\n";
@@ -22,8 +22,8 @@ void trace_table(const SelectReport& report, std::ostringstream& html) {
   for (std::size_t i = 0; i < iterations.size(); ++i) {
     const select::RelaxationIteration& it = iterations[i];
     html << "<tr><td>" << i << "</td><td class=\"text\">"
-         << model::xml_escaped(it.relaxed.empty() ? "-" : it.relaxed) << "</td><td class=\"text\">"
-         << model::xml_escaped(describe(it.targets)) << "</td><td>"
+         << io::xml_escaped(it.relaxed.empty() ? "-" : it.relaxed) << "</td><td class=\"text\">"
+         << io::xml_escaped(describe(it.targets)) << "</td><td>"
          << (it.selection.found ? fixed(it.selection.cost.total, 0) : "none") << "</td><td class=\""
          << (it.within_budget ? "text pass\">yes" : "text fail\">no") << "</td><td>"
          << it.selection.search.nodes << "</td><td>" << fixed(it.selection.seconds, 2)
@@ -35,10 +35,10 @@ void trace_table(const SelectReport& report, std::ostringstream& html) {
 void chosen_cost_table(const select::CostBreakdown& cost, std::ostringstream& html) {
   html << "<table><tr><th class=\"text\">chosen rig's cost</th><th>USD</th></tr>\n"
        << "<tr><td class=\"text\">sensors</td><td>" << fixed(cost.sensors, 0) << "</td></tr>\n"
-       << "<tr><td class=\"text\">transfer: " << model::xml_escaped(cost.transfer_id) << "</td><td>"
+       << "<tr><td class=\"text\">transfer: " << io::xml_escaped(cost.transfer_id) << "</td><td>"
        << fixed(cost.transfer, 0)
-       << "</td></tr>\n<tr><td class=\"text\">CPU: " << model::xml_escaped(cost.cpu_id)
-       << "</td><td>" << fixed(cost.cpu, 0) << "</td></tr>\n<tr><th class=\"text\">total</th><th>"
+       << "</td></tr>\n<tr><td class=\"text\">CPU: " << io::xml_escaped(cost.cpu_id) << "</td><td>"
+       << fixed(cost.cpu, 0) << "</td></tr>\n<tr><th class=\"text\">total</th><th>"
        << fixed(cost.total, 0) << "</th></tr>\n</table>\n";
 }
 
@@ -50,7 +50,7 @@ std::string selection_trace_html(const SelectReport& report,
   std::ostringstream html;
   trace_table(report, html);
   chosen_cost_table(pick.selection.cost, html);
-  html << "<p>" << model::xml_escaped(describe(pick.selection, *report.catalog)) << "</p>\n";
+  html << "<p>" << io::xml_escaped(describe(pick.selection, *report.catalog)) << "</p>\n";
   html << "<figure id=\"pareto\">" << inline_svg(pareto_svg, "pareto-")
        << "<figcaption>Cost against mean coverage of the rigs meeting the requirements of the "
           "chosen step.</figcaption></figure>\n";

@@ -4,12 +4,11 @@
 #include <filesystem>
 #include <set>
 
-#include "io/config/field_checks.hpp"
 #include "io/config/placement_fields.hpp"
-#include "io/config/yaml_reader.hpp"
-#include "rigdesign/geometry/body_from_description.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -130,38 +129,7 @@ model::Catalog load_catalog(const std::string& path) {
   catalog.sensor_library_where = top.location("sensor_library");
   // As a rig: with a robot description the body is its collision geometry unless `body` is
   // given, and the search sees the same shadows check and export see.
-  const std::optional<RobotLinks> urdf = io::read_robot_links(top, path);
-  const bool has_geometry = urdf && !urdf->failed && urdf->description;
-  if (urdf && !urdf->failed) {
-    catalog.robot = urdf->source;
-    catalog.base_link = urdf->base_link;
-    catalog.base_link_height = urdf->base_height;
-    catalog.link_poses = urdf->T_base_link;
-    catalog.link_where = urdf->link_where;
-    catalog.joint_where = urdf->joint_where;
-    catalog.parent_link = urdf->parent_link;
-  }
-  if (auto body =
-          top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,
-                  "a map with height and radius or footprint")) {
-    catalog.body = io::read_body(*body);
-  } else if (has_geometry) {
-    catalog.body =
-        geometry::body_from_description(*urdf->description, urdf->base_link, urdf->base_height);
-    top.require(catalog.body.has_parts(), "robot", "has no collision geometry",
-                "links with <collision> elements, or a `body` (radius or footprint, height)");
-  }
-  if (top.has("area_height")) {
-    catalog.body.area_height = io::positive_length(
-        top, "area_height", Need::required, "the top of the area to perceive in metres, > 0");
-  }
-  catalog.distance_of_interest =
-      io::positive_length(top, "distance_of_interest", Need::required,
-                          "the distance of interest d in metres, > body radius");
-  if (catalog.distance_of_interest > 0 && catalog.body.radius > 0) {
-    top.require(catalog.distance_of_interest > catalog.body.radius, "distance_of_interest",
-                "is not beyond the body radius", "d > r");
-  }
+  const std::optional<RobotLinks> urdf = read_described_robot(top, path, catalog).links;
   catalog.reference_machine =
       top.text("reference_machine", Need::required, "what a CPU core-equivalent means")
           .value_or("");

@@ -1,4 +1,4 @@
-#include "io/config/field_checks.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -2,8 +2,8 @@
 
 #include <set>
 
-#include "io/config/field_checks.hpp"
-#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 
 namespace rigdesign::io {
 

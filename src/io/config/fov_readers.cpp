@@ -4,7 +4,7 @@
 #include <numbers>
 #include <string_view>
 
-#include "io/config/field_checks.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::io {

@@ -1,7 +1,7 @@
 #pragma once
 // A sensor mode's `fov` map: its `shape` names one reader, which reads that shape's angles.
 // A new model::FovShape gets its reader here, in kFovReaders.
-#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/fov_shape.hpp"
 
 namespace rigdesign::io {

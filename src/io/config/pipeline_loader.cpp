@@ -6,8 +6,8 @@
 #include <type_traits>
 #include <variant>
 
-#include "io/config/field_checks.hpp"
-#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 

@@ -5,7 +5,7 @@
 #include <functional>
 #include <optional>
 
-#include "io/config/field_checks.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
 #include "rigdesign/io/robot/robot_description_loader.hpp"
 #include "rigdesign/io/robot/xacro_environment.hpp"

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/catalog.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/robot_description.hpp"
@@ -40,6 +40,17 @@ struct MountLink {
 
 /// The `robot` (or `urdf`) map of a rig or catalog at `file`; problems are recorded on `top`.
 std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& file);
+
+/// The keys a rig and a catalog share, read into `robot` in the files' order: `robot` (or
+/// `urdf`), `body` (optional with a description: its collision geometry is the body then),
+/// `area_height`, `distance_of_interest`. Returns the description's links, for the poses that
+/// name them; `body_from_description` tells whether the body came from the description.
+struct DescribedRobotFields {
+  std::optional<RobotLinks> links;
+  bool body_from_description = false;
+};
+DescribedRobotFields read_described_robot(MapReader& top, const std::string& file,
+                                          model::DescribedRobot& robot);
 
 /// A pose is xyz (+ rpy_deg) in the robot frame, or the pose of a description's link (then
 /// named in `used` when given).

@@ -1,7 +1,7 @@
 #include "rigdesign/io/config/policy_loader.hpp"
 
-#include "io/config/field_checks.hpp"
-#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 
 namespace rigdesign::io {
 

@@ -3,10 +3,9 @@
 #include <cmath>
 #include <set>
 
-#include "io/config/field_checks.hpp"
 #include "io/config/placement_fields.hpp"
-#include "io/config/yaml_reader.hpp"
-#include "rigdesign/geometry/body_from_description.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -97,40 +96,12 @@ model::Rig load_rig(const std::string& path) {
   rig.sensor_library_where = top.location("sensor_library");
   rig.requirements = top.text("requirements", Need::optional).value_or("");
   rig.requirements_where = top.location("requirements");
-  const std::optional<RobotLinks> robot = read_robot_links(top, path);
-  const bool has_geometry = robot && !robot->failed && robot->description;
-  if (robot && !robot->failed) {
-    rig.base_link = robot->base_link;
-    rig.base_link_height = robot->base_height;
-    rig.link_poses = robot->T_base_link;
-    rig.link_where = robot->link_where;
-    rig.joint_where = robot->joint_where;
-    rig.parent_link = robot->parent_link;
-    rig.robot = robot->source;
-  }
-  // With a robot description the body is its collision geometry unless `body` is given.
-  if (auto body =
-          top.map("body", has_geometry || top.has("robot") ? Need::optional : Need::required,
-                  "a map with height and radius or footprint")) {
-    rig.body = read_body(*body);
+  const DescribedRobotFields described = read_described_robot(top, path, rig);
+  const std::optional<RobotLinks>& robot = described.links;
+  if (top.has("body")) {
     rig.body.where = top.location("body");
-  } else if (has_geometry) {
-    rig.body =
-        geometry::body_from_description(*robot->description, robot->base_link, robot->base_height);
+  } else if (described.body_from_description) {
     rig.body.where = top.location("robot");
-    top.require(rig.body.has_parts(), "robot", "has no collision geometry",
-                "links with <collision> elements, or a `body` (radius or footprint, height)");
-  }
-  if (top.has("area_height")) {
-    rig.body.area_height = io::positive_length(top, "area_height", Need::required,
-                                               "the top of the area to perceive in metres, > 0");
-  }
-  rig.distance_of_interest =
-      io::positive_length(top, "distance_of_interest", Need::required,
-                          "the distance of interest d in metres, > body radius");
-  if (rig.distance_of_interest > 0 && rig.body.radius > 0) {
-    top.require(rig.distance_of_interest > rig.body.radius, "distance_of_interest",
-                "is not beyond the body radius", "d > r");
   }
   if (auto tolerance =
           top.map("tolerance", Need::optional, "a map with xyz [m] and rpy_deg [deg] half-widths"))

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
-#include "yaml_reader.hpp"
 #include "yaml_text_spans.hpp"
 
 namespace rigdesign::io {

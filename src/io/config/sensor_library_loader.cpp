@@ -4,9 +4,9 @@
 #include <cmath>
 #include <set>
 
-#include "io/config/field_checks.hpp"
 #include "io/config/fov_readers.hpp"
-#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::io {

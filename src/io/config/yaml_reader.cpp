@@ -1,4 +1,4 @@
-#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 
 #include <algorithm>
 #include <cerrno>

@@ -5,8 +5,8 @@
 #include <map>
 #include <sstream>
 
-#include "io/emit/yaml_emit.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
+#include "rigdesign/io/emit/yaml_emit.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"

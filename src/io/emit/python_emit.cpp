@@ -1,4 +1,4 @@
-#include "io/emit/python_emit.hpp"
+#include "rigdesign/io/emit/python_emit.hpp"
 
 #include <cstdio>
 #include <sstream>

@@ -1,14 +1,14 @@
-#include "io/emit/xml_emit.hpp"
+#include "rigdesign/io/emit/xml_emit.hpp"
 
 #include <algorithm>
 #include <sstream>
 
-#include "rigdesign/model/xml_text.hpp"
+#include "rigdesign/io/emit/xml_text.hpp"
 
 namespace rigdesign::io {
 
 std::string xml_attribute(const std::string& text) {
-  return model::xml_escaped(text);
+  return io::xml_escaped(text);
 }
 
 std::string xacro_literal(const std::string& text) {
@@ -37,7 +37,7 @@ std::string xml_comment_lines(const std::string& text, const std::string& indent
 std::string xml_comment_line(const std::string& text) {
   // XML 1.0 allows no control character but tab and line breaks, even in comments.
   std::string line;
-  for (const char c : model::utf8_repaired(text)) {
+  for (const char c : io::utf8_repaired(text)) {
     const auto byte = static_cast<unsigned char>(c);
     line += c == '\n' || c == '\r' ? ' ' : (byte < 0x20 && c != '\t') || byte == 0x7f ? '?' : c;
   }

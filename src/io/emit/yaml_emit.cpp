@@ -1,4 +1,4 @@
-#include "io/emit/yaml_emit.hpp"
+#include "rigdesign/io/emit/yaml_emit.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "rigdesign/io/emit/xml_text.hpp"
 #include "rigdesign/model/format_number.hpp"
-#include "rigdesign/model/xml_text.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -39,7 +39,7 @@ std::string yaml_comment(const std::string& text, const std::string& indent) {
   // YAML breaks lines at CR as at LF, and allows no other control character anywhere: a
   // CR in a rig's name would end the comment and start a key.
   std::string printable;
-  for (const char c : model::utf8_repaired(text)) {
+  for (const char c : io::utf8_repaired(text)) {
     const auto byte = static_cast<unsigned char>(c);
     if (c == '\r') {
       printable += '\n';
@@ -61,7 +61,7 @@ std::string yaml_scalar(const std::string& text) {
 
 std::string yaml_quoted(const std::string& text) {
   std::string escaped = "\"";
-  for (const char c : model::utf8_repaired(text)) {
+  for (const char c : io::utf8_repaired(text)) {
     const auto byte = static_cast<unsigned char>(c);
     if (c == '"' || c == '\\') {
       escaped += '\\';

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "io/config/yaml_reader.hpp"
 #include "io/logs/csv_fields.hpp"
 #include "io/text_encoding.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/coordinate_limit.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"

@@ -8,9 +8,9 @@
 #include <iterator>
 #include <sstream>
 
-#include "io/config/yaml_reader.hpp"
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io {

@@ -5,9 +5,9 @@
 #include <set>
 #include <system_error>
 
-#include "io/config/field_checks.hpp"
-#include "io/config/yaml_reader.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/io/scene/scene_file_loader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/units.hpp"

@@ -7,10 +7,10 @@
 #include <set>
 #include <system_error>
 
-#include "io/config/field_checks.hpp"
-#include "io/config/yaml_reader.hpp"
 #include "io/scene/trajectory.hpp"
+#include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
+#include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/io/mesh/mesh_loader.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
