@@ -11,12 +11,12 @@
 #include "command.hpp"
 #include "common_options.hpp"
 #include "number_checks.hpp"
-#include "report/check_github.hpp"
-#include "report/check_json.hpp"
-#include "report/check_junit.hpp"
-#include "report/check_text.hpp"
-#include "report/file_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/report/check_github.hpp"
+#include "rigdesign/report/check_json.hpp"
+#include "rigdesign/report/check_junit.hpp"
+#include "rigdesign/report/check_text.hpp"
+#include "rigdesign/report/file_report.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -27,24 +27,25 @@ struct CheckOptions {
   std::string sensors;
   std::string format = "text";
   std::string output;
-  DeploymentFiles deployment;
+  report::DeploymentFiles deployment;
 };
 
 int run_check(const CheckOptions& options, std::ostream& out) {
-  std::vector<FileReport> reports;
+  std::vector<report::FileReport> reports;
   for (const std::string& file : options.files) {
-    reports.push_back(check_file(file, options.sensors, options.requirements, options.deployment));
+    reports.push_back(
+        report::check_file(file, options.sensors, options.requirements, options.deployment));
   }
   const int exit_code = check_exit_code(reports);
   std::string text;
   if (options.format == "json") {
-    text = format_json(reports, exit_code);
+    text = report::format_json(reports, exit_code);
   } else if (options.format == "junit") {
-    text = format_junit(reports);
+    text = report::format_junit(reports);
   } else if (options.format == "github") {
-    text = format_github(reports);
+    text = report::format_github(reports);
   } else {
-    text = format_text(reports);
+    text = report::format_text(reports);
   }
   if (options.output.empty()) {
     out << text;
@@ -55,6 +56,15 @@ int run_check(const CheckOptions& options, std::ostream& out) {
 }
 
 }  // namespace
+
+int check_exit_code(const std::vector<report::FileReport>& reports) {
+  int exit_code = kOk;
+  for (const report::FileReport& report : reports) {
+    if (report.invalid()) exit_code = kBadInput;
+    if (report.failing() && exit_code == kOk) exit_code = kRequirementFails;
+  }
+  return exit_code;
+}
 
 Command setup_check(CLI::App& parent) {
   auto options = std::make_shared<CheckOptions>();

@@ -7,6 +7,9 @@
 namespace CLI {
 class App;
 }
+namespace rigdesign::report {
+struct FileReport;
+}
 
 namespace rigdesign::cli {
 
@@ -23,6 +26,10 @@ void require_option(bool ok, const std::string& option, const std::string& probl
 /// Registers every subcommand on `app` (grouped by purpose for --help) and sets the program's
 /// name, version flag and "one subcommand" rule; what `run` parses with, and tests enumerate.
 std::vector<Command> add_commands(CLI::App& app);
+
+/// `check`'s exit code for these reports (`check` and `serve`'s save): 2 when any file is
+/// invalid, else 1 when any requirement fails, else 0.
+int check_exit_code(const std::vector<report::FileReport>& reports);
 
 Command setup_metrics(CLI::App& parent);
 Command setup_check(CLI::App& parent);

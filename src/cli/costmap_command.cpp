@@ -32,9 +32,10 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/idle_cores.hpp"
 #include "rigdesign/render/costmap_frame.hpp"
+#include "rigdesign/report/costmap_run_report.hpp"
+#include "rigdesign/report/text_table.hpp"
 #include "rigdesign/scenarios/floor_ahead.hpp"
 #include "rigdesign/scenarios/scenario_runner.hpp"
-#include "text_table.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -76,9 +77,11 @@ struct Variant {
   costmap::ObstacleLayerKind layer = costmap::ObstacleLayerKind::obstacle;
   bool hit_layer = true;
   bool persistence = false;  // the sources keep their clouds as the parameters say
+  std::string layer_name() const {
+    return std::string(model::name_in(costmap::kObstacleLayerNames, layer));
+  }
   std::string name() const {
-    return std::string(model::name_in(costmap::kObstacleLayerNames, layer)) +
-           (persistence ? "_persistence" : "") + (hit_layer ? "_hit" : "_no_hit");
+    return layer_name() + (persistence ? "_persistence" : "") + (hit_layer ? "_hit" : "_no_hit");
   }
   std::string label() const {
     const std::string layer_name(model::name_in(costmap::kObstacleLayerNames, layer));
@@ -101,12 +104,12 @@ void forget_persistence(scenarios::ScenarioParams& params) {
     named.source.observation_persistence = 0.0;
 }
 
-struct VariantRun {
-  Variant variant;
-  scenarios::ScenarioResult result;
-  std::string folder;
-  int frames = 0;
-};
+// What the report says about every run of this command.
+report::CostmapContext context_of(const CostmapOptions& options, const model::Rig& rig) {
+  report::CostmapContext context{rig.name, {}, options.scenario, options.seed};
+  for (const model::Mount& mount : rig.mounts) context.mount_ids.push_back(mount.id);
+  return context;
+}
 
 std::string joined(const std::vector<std::string>& names) {
   std::string text;
@@ -114,125 +117,22 @@ std::string joined(const std::vector<std::string>& names) {
   return text;
 }
 
-double milliseconds(double seconds) {
-  return seconds * 1e3;
-}
-
-std::string outcome_text(const scenarios::ScenarioResult& result) {
-  if (result.collided) {
-    return "collision with " + result.collision_object +
-           " at t = " + fixed(result.collision_time, 2) + " s (robot at x " +
-           fixed(result.collision_position.x(), 2) + ", y " +
-           fixed(result.collision_position.y(), 2) + " m)";
-  }
-  if (result.drove_off) {
-    return "none; drove off the " + result.drop_name +
-           " at t = " + fixed(result.drove_off_time, 2) + " s at " +
-           fixed(result.drove_off_speed, 2) + " m/s";
-  }
-  if (result.gave_up) return "none; gave up at t = " + fixed(result.end_time, 2) + " s";
-  return result.reached_goal ? "none; goal reached at t = " + fixed(result.end_time, 2) + " s"
-                             : "none; goal not reached by t = " + fixed(result.end_time, 2) + " s";
-}
-
-// Each simulated mount's rate and latency, as the run used them.
-nlohmann::json sensors_json(const model::Rig& rig, const scenarios::ScenarioResult& result) {
-  nlohmann::json sensors = nlohmann::json::array();
-  for (std::size_t i = 0; i < result.timings.size() && i < rig.mounts.size(); ++i) {
-    const scenarios::MountTiming& t = result.timings[i];
-    sensors.push_back({{"mount", rig.mounts[i].id},
-                       {"rate_hz", 1.0 / t.period},
-                       {"phase_s", t.phase},
-                       {"driver_s", t.driver},
-                       {"filtering_s", t.filtering},
-                       {"latency_s", t.latency()}});
-  }
-  return sensors;
-}
-
-nlohmann::json stops_json(const scenarios::ScenarioResult& result) {
-  nlohmann::json stops = nlohmann::json::array();
-  for (const scenarios::StopOutcome& stop : result.stops) {
-    stops.push_back(
-        {{"name", stop.name},
-         {"reached", stop.reached},
-         {"reached_time_s", stop.reached ? nlohmann::json(stop.reached_time) : nlohmann::json()},
-         {"refused", stop.refused},
-         {"reason", stop.reason},
-         {"leg_distance_m", stop.leg_distance},
-         {"leg_s", stop.leg_seconds}});
-  }
-  return stops;
-}
-
-nlohmann::json summary_json(const CostmapOptions& options, const model::Rig& rig,
-                            const VariantRun& run, const scenarios::ScenarioParams& params) {
-  const scenarios::ScenarioResult& result = run.result;
-  const scenarios::TimeSummary update = scenarios::summarize_times(result.update_seconds);
-  const scenarios::TimeSummary plan = scenarios::summarize_times(result.planner_seconds);
-  nlohmann::json trajectory = nlohmann::json::array();
-  for (const scenarios::TrajectorySample& sample : result.trajectory) {
-    trajectory.push_back(
-        {sample.time, sample.pose.position.x(), sample.pose.position.y(), sample.pose.yaw});
-  }
-  nlohmann::json summary = {
-      {"rig", rig.name},
-      {"scenario", options.scenario},
-      {"seed", options.seed},
-      {"layer", std::string(model::name_in(costmap::kObstacleLayerNames, run.variant.layer))},
-      {"hit_layer", run.variant.hit_layer},
-      {"observation_persistence", run.variant.persistence},
-      {"hit", params.costmap.hit.hit},
-      {"hit_max", params.costmap.hit.hit_max},
-      {"resolution_m", params.costmap.resolution},
-      {"window_m", params.costmap.size_x},
-      {"update_rate_hz", params.update_rate},
-      {"speed_m_per_s", params.follower.speed},
-      {"collided", result.collided},
-      {"collision_time_s",
-       result.collided ? nlohmann::json(result.collision_time) : nlohmann::json()},
-      {"collision_object", result.collision_object},
-      {"min_clearance_m", std::isfinite(result.min_clearance) ? nlohmann::json(result.min_clearance)
-                                                              : nlohmann::json()},
-      {"min_clearance_time_s", result.min_clearance_time},
-      {"min_clearance_object", result.min_clearance_object},
-      {"reached_goal", result.reached_goal},
-      {"end_time_s", result.end_time},
-      {"updates", result.updates},
-      {"planner_failures", result.planner_failures},
-      {"update_ms", {{"median", milliseconds(update.median)}, {"p99", milliseconds(update.p99)}}},
-      {"planner_ms", {{"median", milliseconds(plan.median)}, {"p99", milliseconds(plan.p99)}}},
-      {"frames", run.frames},
-      {"local_planner",
-       params.local_planner == scenarios::LocalPlanner::dwa ? "dwa" : "pure_pursuit"},
-      {"dwa_blocked_steps", result.dwa_blocked_steps},
-      {"recoveries", result.recoveries},
-      {"recovery_s", result.recovery_seconds},
-      {"gave_up", result.gave_up},
-      {"gave_up_reason", result.gave_up_reason},
-      {"frames_cast", result.frames_cast},
-      {"sensors", sensors_json(rig, result)},
-      {"clearance_margin_m", params.clearance_margin},
-      {"goals_reached", result.goals_reached},
-      {"goals", result.route_size},
-      {"average_speed_m_per_s", result.average_speed},
-      {"distance_m", result.distance},
-      {"drove_off", result.drove_off},
-      {"drop", result.drop_name},
-      {"struck_while_standing", result.struck_while_standing},
-      {"stops", stops_json(result)},
-      {"trajectory", trajectory},
-  };
-  return summary;
-}
-
-VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const RigInputs& inputs,
-                       const scenarios::ScenarioDefinition& scenario, const Variant& variant,
-                       const std::string& folder, scenarios::ScenarioParams params) {
+report::CostmapRun run_variant(std::ostream& err, const CostmapOptions& options,
+                               const RigInputs& inputs,
+                               const scenarios::ScenarioDefinition& scenario,
+                               const Variant& variant, const std::string& folder,
+                               scenarios::ScenarioParams params) {
   params.costmap.layer = variant.layer;
   params.costmap.use_hit_layer = variant.hit_layer;
   if (!variant.persistence) forget_persistence(params);
-  VariantRun run{variant, {}, folder, 0};
+  report::CostmapRun run{variant.label(),
+                         variant.layer_name(),
+                         variant.hit_layer,
+                         variant.persistence,
+                         params,
+                         {},
+                         folder,
+                         0};
   io::prepare_output_folder(folder + "/frames", "--out");
   const costmap::HeightBand band{params.ground_clearance, inputs.rig.body.height};
   std::vector<model::TriangleMesh> moved;
@@ -269,7 +169,7 @@ VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const R
         trail.push_back(step.pose.position);
         last_master = step.costmap->master();
         last_obstacles = step.costmap->obstacle_grid();
-        frame.title = title + ", t = " + fixed(step.time, 1) + " s";
+        frame.title = title + ", t = " + report::fixed(step.time, 1) + " s";
         frame.remembered = costmap::remembered_cells(*step.costmap);
         frame.obstacles =
             scenario.scene.moving.empty() ? still_outlines : outlines_at(step.object_clocks);
@@ -299,75 +199,10 @@ VariantRun run_variant(std::ostream& err, const CostmapOptions& options, const R
   render::draw_costmap_frame(frame, folder + "/final.svg");
   io::write_map_files(io::to_occupancy_map(last_master), folder + "/master.yaml");
   io::write_map_files(io::to_occupancy_map(last_obstacles), folder + "/obstacles.yaml");
-  io::write_file_atomically(folder + "/summary.json",
-                            summary_json(options, inputs.rig, run, params).dump(2) + "\n");
+  io::write_file_atomically(
+      folder + "/summary.json",
+      report::costmap_run_json(context_of(options, inputs.rig), run).dump(2) + "\n");
   return run;
-}
-
-void print_run(std::ostream& out, const VariantRun& run) {
-  const scenarios::ScenarioResult& result = run.result;
-  const scenarios::TimeSummary update = scenarios::summarize_times(result.update_seconds);
-  const scenarios::TimeSummary plan = scenarios::summarize_times(result.planner_seconds);
-  out << run.variant.label() << "\n";
-  out << "  collision: " << outcome_text(result) << "\n";
-  out << "  minimum clearance: "
-      << (std::isfinite(result.min_clearance)
-              ? fixed(result.min_clearance, 3) + " m (" + result.min_clearance_object +
-                    ", t = " + fixed(result.min_clearance_time, 2) + " s)"
-              : std::string("no obstacle in the body's height band"))
-      << "\n";
-  out << "  costmap update: median " << fixed(milliseconds(update.median), 2) << " ms, p99 "
-      << fixed(milliseconds(update.p99), 2) << " ms over " << result.updates
-      << " updates; planner median " << fixed(milliseconds(plan.median), 2) << " ms, p99 "
-      << fixed(milliseconds(plan.p99), 2) << " ms\n";
-  if (result.route_size > 1) {
-    out << "  goals: " << result.goals_reached << " of " << result.route_size
-        << " reached, average speed " << fixed(result.average_speed * 100.0, 1)
-        << " cm/s on the way to them, " << fixed(result.distance, 2) << " m driven";
-    if (result.struck_while_standing > 0)
-      out << "; a walker touched the standing robot " << result.struck_while_standing << " time(s)";
-    out << "\n";
-    for (std::size_t i = 0; i < result.stops.size(); ++i) {
-      const scenarios::StopOutcome& stop = result.stops[i];
-      out << "    " << (i + 1) << ". " << stop.name << ": "
-          << (stop.reached
-                  ? "reached at t = " + fixed(stop.reached_time, 1) + " s (" +
-                        fixed(stop.leg_distance, 2) + " m in " + fixed(stop.leg_seconds, 1) + " s)"
-                  : stop.reason)
-          << "\n";
-    }
-  }
-  if (result.recoveries > 0 || result.dwa_blocked_steps > 0) {
-    out << "  deadlock: " << result.recoveries << " recovery(ies), "
-        << fixed(result.recovery_seconds, 2) << " s turning; DWA found no admissible velocity at "
-        << result.dwa_blocked_steps << " control step(s)"
-        << (result.gave_up ? "; " + result.gave_up_reason : "") << "\n";
-  }
-  out << "  wrote " << run.folder
-      << "/summary.json, final.png, master.yaml (+ .pgm), obstacles.yaml (+ .pgm), " << run.frames
-      << " frame(s) in frames/\n";
-}
-
-void print_comparison(std::ostream& out, const std::vector<VariantRun>& runs) {
-  TextTable table;
-  table.add_column("variant", TextTable::Align::left);
-  table.add_column("collision t [s]", TextTable::Align::right);
-  table.add_column("object", TextTable::Align::left);
-  table.add_column("min clearance [m]", TextTable::Align::right);
-  table.add_column("goal", TextTable::Align::left);
-  table.add_column("update median [ms]", TextTable::Align::right);
-  table.add_column("update p99 [ms]", TextTable::Align::right);
-  for (const VariantRun& run : runs) {
-    const scenarios::ScenarioResult& result = run.result;
-    const scenarios::TimeSummary update = scenarios::summarize_times(result.update_seconds);
-    table.add_row(
-        {run.variant.label(), result.collided ? fixed(result.collision_time, 2) : "none",
-         result.collided ? result.collision_object : "-",
-         std::isfinite(result.min_clearance) ? fixed(result.min_clearance, 3) : "-",
-         result.reached_goal ? "reached at " + fixed(result.end_time, 1) + " s" : "not reached",
-         fixed(milliseconds(update.median), 2), fixed(milliseconds(update.p99), 2)});
-  }
-  table.print(out, "  ");
 }
 
 // A nav2 parameter file: its costmap, and its observation sources for the mounts they name.
@@ -424,9 +259,10 @@ void print_floor_ahead(std::ostream& out, const RigInputs& inputs,
            "marked: the robot would drive off one at any speed\n";
     return;
   }
-  out << "  drops: " << floor.mount << " sees the floor to " << fixed(floor.distance, 2)
+  out << "  drops: " << floor.mount << " sees the floor to " << report::fixed(floor.distance, 2)
       << " m ahead; seen there, a drop stops the robot from up to "
-      << fixed(floor.stoppable_speed, 2) << " m/s (reaction " << fixed(floor.reaction, 3)
+      << report::fixed(floor.stoppable_speed, 2) << " m/s (reaction "
+      << report::fixed(floor.reaction, 3)
       << " s: frame period + latency + costmap update + control step; "
       << model::format_number(deceleration) << " m/s^2 braking)"
       << (floor.stoppable_speed < params.follower.speed ? "; slower than the run's speed" : "")
@@ -461,9 +297,9 @@ std::string window_text(const costmap::CostmapParams& costmap) {
   return model::format_number(costmap.size_x) + " x " + model::format_number(costmap.size_y);
 }
 
-int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& err) {
+// The options no rig is needed to judge.
+void check_costmap_options(const CostmapOptions& options, bool from_file) {
   const std::vector<std::string>& names = scenarios::costmap_scenario_names();
-  const bool from_file = io::is_scenario_file(options.scenario);
   require_option(
       from_file || std::find(names.begin(), names.end(), options.scenario) != names.end(),
       "--scenario", "unknown scenario '" + options.scenario + "'",
@@ -478,7 +314,12 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
   require_option(options.speed > 0.0, "--speed", "must be positive", "a speed > 0 [m/s]");
   require_option(options.frame_every >= 0, "--frame-every", "must not be negative",
                  "0 (no frames) or a number of updates");
-  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, "");
+}
+
+// The run's parameters: the nav2 file's, then the options over them (the window checked
+// against the robot's footprint). The filtering loads and the scenario's settings come after.
+scenarios::ScenarioParams params_from_options(const CostmapOptions& options,
+                                              const RigInputs& inputs) {
   scenarios::ScenarioParams params;
   if (!options.params.empty()) {
     params.window_where =
@@ -496,36 +337,22 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
   params.follower.speed = options.speed;
   params.update_rate = options.update_rate;
   params.seed = options.seed;
-  model::FilteringLoads loads;
-  if (!options.filtering_loads.empty()) {
-    loads = io::load_filtering_loads(options.filtering_loads);
-    params.filtering_loads = &loads;
-  }
+  return params;
+}
+
+// The planner, the rays and the margin, as the options ask.
+void apply_driving_options(const CostmapOptions& options, scenarios::ScenarioParams& params) {
   if (options.full_rays) params.camera_decimation = params.lidar_decimation = 1;
   require_option(options.local_planner == "pure-pursuit" || options.local_planner == "dwa",
                  "--local-planner", "is '" + options.local_planner + "'", "pure-pursuit or dwa");
   if (options.local_planner == "dwa") params.local_planner = scenarios::LocalPlanner::dwa;
   params.clearance_margin = options.clearance_margin;
-  // A scenario file is read once; a bundled one is laid out for each seed and the body.
-  std::optional<scenarios::ScenarioDefinition> from_disk;
-  if (from_file) from_disk = io::load_scenario_file(options.scenario);
-  const scenarios::ScenarioFactory make_scenario = [&](std::uint64_t seed, double radius) {
-    return from_disk ? *from_disk
-                     : scenarios::make_costmap_scenario(options.scenario, seed, radius);
-  };
-  const scenarios::ScenarioDefinition scenario =
-      make_scenario(options.seed, inputs.rig.body.radius);
-  scenarios::apply_scenario_settings(scenario, params);
-  if (options.full_rays) params.camera_decimation = params.lidar_decimation = 1;
-  scenarios::check_scenario_inputs(inputs.rig, inputs.library, params);
+}
 
-  // A file's stem names its default folder ("lab_goals.scenario"), never a path inside it.
-  const std::string folder =
-      !options.out.empty()
-          ? options.out
-          : "costmap/" + (from_file ? std::filesystem::path(options.scenario).stem().string()
-                                    : options.scenario);
-  io::prepare_output_folder(folder, "--out");
+// What the run is: the scenario, the grid, the rates, the sensing, the floor ahead, the planner.
+void print_setup(std::ostream& out, const CostmapOptions& options, const RigInputs& inputs,
+                 const scenarios::ScenarioDefinition& scenario,
+                 const scenarios::ScenarioParams& params) {
   out << inputs.rig.name << " in scenario " << scenario.name << " (seed " << options.seed
       << "): " << scenario.description << "\n";
   out << "  " << model::format_number(params.costmap.resolution) << " m cells, "
@@ -542,23 +369,31 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
                     std::to_string(params.dwa.angular_samples) + " velocities)"
               : std::string("pure pursuit"))
       << ", Dijkstra global plans at each update\n";
-  if (options.variants) {
-    require_option(std::is_sorted(options.margins.begin(), options.margins.end()) &&
-                       options.margins.front() >= 0.0,
-                   "--margins", "must be ascending and not negative", "e.g. 0,0.05,0.1");
-    scenarios::SweepSettings settings;
-    settings.seeds = options.seeds;
-    settings.first_seed = options.seed;
-    settings.margins = options.margins;
-    settings.threads = 1 + model::idle_cores();
-    params.costmap.use_hit_layer =
-        params.costmap.use_hit_layer && !options.no_hit_layer && !options.no_memory;
-    if (options.no_memory) forget_persistence(params);
-    if (!options.layer.empty())
-      params.costmap.layer = *model::value_in(costmap::kObstacleLayerNames, options.layer);
-    run_costmap_variants(out, err, inputs, make_scenario, params, settings, folder);
-    return kOk;
-  }
+}
+
+// `--variants`: paper 2's Table 1 over the rig's mount subsets.
+void run_table1(std::ostream& out, std::ostream& err, const CostmapOptions& options,
+                const RigInputs& inputs, const scenarios::ScenarioFactory& make_scenario,
+                scenarios::ScenarioParams params, const std::string& folder) {
+  require_option(std::is_sorted(options.margins.begin(), options.margins.end()) &&
+                     options.margins.front() >= 0.0,
+                 "--margins", "must be ascending and not negative", "e.g. 0,0.05,0.1");
+  scenarios::SweepSettings settings;
+  settings.seeds = options.seeds;
+  settings.first_seed = options.seed;
+  settings.margins = options.margins;
+  settings.threads = 1 + model::idle_cores();
+  params.costmap.use_hit_layer =
+      params.costmap.use_hit_layer && !options.no_hit_layer && !options.no_memory;
+  if (options.no_memory) forget_persistence(params);
+  if (!options.layer.empty())
+    params.costmap.layer = *model::value_in(costmap::kObstacleLayerNames, options.layer);
+  run_costmap_variants(out, err, inputs, make_scenario, params, settings, folder);
+}
+
+// The variants to run: the one the options name, or `--compare`'s six (or four).
+std::vector<Variant> variants_of(const CostmapOptions& options, const RigInputs& inputs,
+                                 const scenarios::ScenarioParams& params) {
   const bool persistence = any_persistence(inputs.rig, params) && !options.no_memory;
   std::vector<Variant> variants;
   if (options.compare) {
@@ -576,21 +411,100 @@ int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& 
                         params.costmap.use_hit_layer && !options.no_hit_layer && !options.no_memory,
                         persistence});
   }
-  std::vector<VariantRun> runs;
+  return variants;
+}
+
+// Each variant run, reported, and with `--compare` the table and comparison.json.
+void run_and_report(std::ostream& out, std::ostream& err, const CostmapOptions& options,
+                    const RigInputs& inputs, const scenarios::ScenarioDefinition& scenario,
+                    const scenarios::ScenarioParams& params, const std::string& folder) {
+  std::vector<report::CostmapRun> runs;
   nlohmann::json all = nlohmann::json::array();
-  for (const Variant& variant : variants) {
+  for (const Variant& variant : variants_of(options, inputs, params)) {
     const std::string variant_folder = options.compare ? folder + "/" + variant.name() : folder;
     runs.push_back(run_variant(err, options, inputs, scenario, variant, variant_folder, params));
-    print_run(out, runs.back());
-    all.push_back(summary_json(options, inputs.rig, runs.back(), params));
+    report::print_costmap_run(runs.back(), out);
+    all.push_back(report::costmap_run_json(context_of(options, inputs.rig), runs.back()));
   }
   if (options.compare) {
     out << "comparison:\n";
-    print_comparison(out, runs);
+    report::print_costmap_comparison(runs, out);
     io::write_file_atomically(folder + "/comparison.json", all.dump(2) + "\n");
     out << "  wrote " << folder << "/comparison.json\n";
   }
+}
+
+int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& err) {
+  const bool from_file = io::is_scenario_file(options.scenario);
+  check_costmap_options(options, from_file);
+  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, "");
+  scenarios::ScenarioParams params = params_from_options(options, inputs);
+  model::FilteringLoads loads;
+  if (!options.filtering_loads.empty()) {
+    loads = io::load_filtering_loads(options.filtering_loads);
+    params.filtering_loads = &loads;
+  }
+  apply_driving_options(options, params);
+  // A scenario file is read once; a bundled one is laid out for each seed and the body.
+  std::optional<scenarios::ScenarioDefinition> from_disk;
+  if (from_file) from_disk = io::load_scenario_file(options.scenario);
+  const scenarios::ScenarioFactory make_scenario = [&](std::uint64_t seed, double radius) {
+    return from_disk ? *from_disk
+                     : scenarios::make_costmap_scenario(options.scenario, seed, radius);
+  };
+  const scenarios::ScenarioDefinition scenario =
+      make_scenario(options.seed, inputs.rig.body.radius);
+  scenarios::apply_scenario_settings(scenario, params);
+  if (options.full_rays) params.camera_decimation = params.lidar_decimation = 1;
+  scenarios::check_scenario_inputs(inputs.rig, inputs.library, params);
+  // A file's stem names its default folder ("lab_goals.scenario"), never a path inside it.
+  const std::string folder =
+      !options.out.empty()
+          ? options.out
+          : "costmap/" + (from_file ? std::filesystem::path(options.scenario).stem().string()
+                                    : options.scenario);
+  io::prepare_output_folder(folder, "--out");
+  print_setup(out, options, inputs, scenario, params);
+  if (options.variants) {
+    run_table1(out, err, options, inputs, make_scenario, params, folder);
+  } else {
+    run_and_report(out, err, options, inputs, scenario, params, folder);
+  }
   return kOk;
+}
+
+// The costmap's grid, the driving speed and the update and frame rates.
+void add_grid_and_driving_options(CLI::App* app, CostmapOptions& options) {
+  app->add_option("--resolution", options.resolution, "Cell side [m] (default 0.05)")
+      ->check(positive_up_to(1.0, "a cell side in (0, 1] m"));
+  app->add_option("--window", options.window, "Rolling window side [m] (default 6)")
+      ->check(positive_up_to(100.0, "a window side in (0, 100] m"));
+  app->add_option("--speed", options.speed, "Driving speed [m/s] (default 0.4)")
+      ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
+  app->add_option("--update-rate", options.update_rate,
+                  "Sensing, costmap and planning rate [Hz] (default 5)")
+      ->check(positive_up_to(control_rate(), "a rate in (0, " +
+                                                 model::format_number(control_rate()) +
+                                                 "] Hz (the follower's control rate)"));
+  app->add_option("--frame-every", options.frame_every,
+                  "Write a PNG frame every N updates (default 5, 0: none)")
+      ->check(finite_in(0, 100000, "0 (none) or an update count"));
+}
+
+// `--variants`: paper 2's Table 1 over the rig's mount subsets.
+void add_table1_options(CLI::App* app, CostmapOptions& options) {
+  app->add_flag("--variants", options.variants,
+                "Paper 2's Table 1: run the whole rig, every subset without one mount and each "
+                "mount alone, --seeds seeds each, at the smallest --margins margin without a "
+                "collision (the critical distance), and print them beside paper 2's numbers");
+  app->add_option("--seeds", options.seeds,
+                  "Seeds per variant and margin, from --seed (default 20)")
+      ->check(finite_in(1, 1000, "a count from 1 to 1000"));
+  app->add_option("--margins", options.margins,
+                  "Clearance margins [m] the critical-distance sweep tries, ascending "
+                  "(default 0,0.05,...,0.3)")
+      ->delimiter(',')
+      ->check(finite_in(0.0, 2.0, "margins in [0, 2] m"));
 }
 
 }  // namespace
@@ -621,20 +535,7 @@ Command setup_costmap(CLI::App& parent) {
   app->add_flag("--compare", options->compare,
                 "Run both layers without memory, with the parameters' observation persistence "
                 "(if any) and with the Hit Layer, and print a table");
-  app->add_option("--resolution", options->resolution, "Cell side [m] (default 0.05)")
-      ->check(positive_up_to(1.0, "a cell side in (0, 1] m"));
-  app->add_option("--window", options->window, "Rolling window side [m] (default 6)")
-      ->check(positive_up_to(100.0, "a window side in (0, 100] m"));
-  app->add_option("--speed", options->speed, "Driving speed [m/s] (default 0.4)")
-      ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
-  app->add_option("--update-rate", options->update_rate,
-                  "Sensing, costmap and planning rate [Hz] (default 5)")
-      ->check(positive_up_to(control_rate(), "a rate in (0, " +
-                                                 model::format_number(control_rate()) +
-                                                 "] Hz (the follower's control rate)"));
-  app->add_option("--frame-every", options->frame_every,
-                  "Write a PNG frame every N updates (default 5, 0: none)")
-      ->check(finite_in(0, 100000, "0 (none) or an update count"));
+  add_grid_and_driving_options(app, *options);
   add_seed_option(*app, options->seed,
                   "the scene, the sensor noise and the sensors' frame phases (default 1)");
   app->add_option("--filtering-loads", options->filtering_loads,
@@ -651,18 +552,7 @@ Command setup_costmap(CLI::App& parent) {
                   "Footprint padding [m] where the costmap inflates: how close the planners let "
                   "the robot come to what its sensors see (default 0)")
       ->check(finite_in(0.0, 2.0, "a margin in [0, 2] m"));
-  app->add_flag("--variants", options->variants,
-                "Paper 2's Table 1: run the whole rig, every subset without one mount and each "
-                "mount alone, --seeds seeds each, at the smallest --margins margin without a "
-                "collision (the critical distance), and print them beside paper 2's numbers");
-  app->add_option("--seeds", options->seeds,
-                  "Seeds per variant and margin, from --seed (default 20)")
-      ->check(finite_in(1, 1000, "a count from 1 to 1000"));
-  app->add_option("--margins", options->margins,
-                  "Clearance margins [m] the critical-distance sweep tries, ascending "
-                  "(default 0,0.05,...,0.3)")
-      ->delimiter(',')
-      ->check(finite_in(0.0, 2.0, "margins in [0, 2] m"));
+  add_table1_options(app, *options);
   add_out_option(*app, options->out, "frames, grids and the summary (default costmap/<scenario>)");
   return {app, [options](std::ostream& out, std::ostream& err) {
             return run_costmap(*options, out, err);

@@ -8,7 +8,7 @@
 #include "progress_line.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/model/format_number.hpp"
-#include "text_table.hpp"
+#include "rigdesign/report/text_table.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -32,7 +32,7 @@ bool is_lidar(const model::SensorLibrary& library, const model::Mount& mount) {
 }
 
 std::string centimetres(double metres) {
-  return fixed(metres * 100.0, 1);
+  return report::fixed(metres * 100.0, 1);
 }
 
 std::string critical_text(const scenarios::VariantOutcome& outcome,
@@ -47,7 +47,7 @@ std::string below_text(const scenarios::VariantOutcome& outcome) {
   if (outcome.failures.empty()) return "-";
   const scenarios::RunSummary& last = outcome.failures.back();
   return "at " + centimetres(last.margin) + " cm seed " + std::to_string(last.seed) + " hit " +
-         last.collision_object + " (t " + fixed(last.collision_time, 1) + " s)";
+         last.collision_object + " (t " + report::fixed(last.collision_time, 1) + " s)";
 }
 
 nlohmann::json run_json(const scenarios::RunSummary& run) {
@@ -159,15 +159,15 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  TextTable table;
-  table.add_column("variant", TextTable::Align::left);
-  table.add_column("critical distance [cm]", TextTable::Align::right);
-  table.add_column("avg speed [cm/s]", TextTable::Align::right);
-  table.add_column("goals reached", TextTable::Align::right);
-  table.add_column("refused", TextTable::Align::right);
-  table.add_column("recovery [s]", TextTable::Align::right);
-  table.add_column("drove off", TextTable::Align::right);
-  table.add_column("collision just below", TextTable::Align::left);
+  report::TextTable table;
+  table.add_column("variant", report::TextTable::Align::left);
+  table.add_column("critical distance [cm]", report::TextTable::Align::right);
+  table.add_column("avg speed [cm/s]", report::TextTable::Align::right);
+  table.add_column("goals reached", report::TextTable::Align::right);
+  table.add_column("refused", report::TextTable::Align::right);
+  table.add_column("recovery [s]", report::TextTable::Align::right);
+  table.add_column("drove off", report::TextTable::Align::right);
+  table.add_column("collision just below", report::TextTable::Align::left);
   nlohmann::json outcomes_json = nlohmann::json::array();
   for (const scenarios::VariantOutcome& outcome : outcomes) {
     const scenarios::VariantMeans means = scenarios::means_of(outcome.runs);
@@ -177,8 +177,9 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
     table.add_row(
         {outcome.variant.label, critical_text(outcome, settings),
          ran ? centimetres(means.average_speed) : "-",
-         ran ? fixed(means.goals_reached, 2) + of : "-", ran ? fixed(means.goals_refused, 2) : "-",
-         ran ? fixed(means.recovery_seconds, 1) : "-",
+         ran ? report::fixed(means.goals_reached, 2) + of : "-",
+         ran ? report::fixed(means.goals_refused, 2) : "-",
+         ran ? report::fixed(means.recovery_seconds, 1) : "-",
          ran ? std::to_string(means.drove_off) + "/" + std::to_string(outcome.runs.size()) : "-",
          below_text(outcome)});
     outcomes_json.push_back(outcome_json(outcome));
@@ -186,10 +187,10 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
   table.print(out, "  ");
   out << "paper 2, Table 1 (Elektron, SICK LMS100 270 deg + Kinect 57 deg, office and workshop, "
          "20 repeats):\n";
-  TextTable paper;
-  paper.add_column("variant", TextTable::Align::left);
-  paper.add_column("critical distance [cm]", TextTable::Align::right);
-  paper.add_column("avg speed [cm/s]", TextTable::Align::right);
+  report::TextTable paper;
+  paper.add_column("variant", report::TextTable::Align::left);
+  paper.add_column("critical distance [cm]", report::TextTable::Align::right);
+  paper.add_column("avg speed [cm/s]", report::TextTable::Align::right);
   for (const PaperRow& row : kPaper2Table1) {
     paper.add_row({row.variant, centimetres(row.critical_distance), centimetres(row.speed)});
   }
@@ -197,7 +198,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
   print_paper2_checks(out, inputs, outcomes, settings);
   int made = 0;
   for (const scenarios::VariantOutcome& outcome : outcomes) made += outcome.runs_made;
-  out << "  " << made << " runs in " << fixed(seconds, 1) << " s on " << settings.threads
+  out << "  " << made << " runs in " << report::fixed(seconds, 1) << " s on " << settings.threads
       << " thread(s)\n";
   io::write_file_atomically(folder + "/variants.json", outcomes_json.dump(2) + "\n");
   out << "  wrote " << folder << "/variants.json\n";

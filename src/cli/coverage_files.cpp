@@ -3,7 +3,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "report/json_report.hpp"
 #include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/io/atomic_write.hpp"
@@ -14,6 +13,7 @@
 #include "rigdesign/render/fov_mesh.hpp"
 #include "rigdesign/render/palette.hpp"
 #include "rigdesign/render/view_3d_figure.hpp"
+#include "rigdesign/report/json_report.hpp"
 
 namespace rigdesign::cli {
 
@@ -77,7 +77,7 @@ std::vector<std::string> write_coverage_files(const model::Rig& rig,
     }
   }
   io::write_file_atomically(path("coverage.csv"), coverage_csv(coverage));
-  io::write_file_atomically(path("coverage.json"), to_json(coverage, true).dump(2) + "\n");
+  io::write_file_atomically(path("coverage.json"), report::to_json(coverage, true).dump(2) + "\n");
   return written;
 }
 
@@ -111,9 +111,9 @@ void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,
   render::render_view_3d(meshes, settings, overlay, path);
 }
 
-std::vector<ReportFigure> coverage_figures(const std::string& folder,
-                                           const std::vector<double>& angles_deg) {
-  std::vector<ReportFigure> figures;
+std::vector<report::ReportFigure> coverage_figures(const std::string& folder,
+                                                   const std::vector<double>& angles_deg) {
+  std::vector<report::ReportFigure> figures;
   const auto add = [&](const std::string& id, const std::string& file, const std::string& caption) {
     figures.push_back({id, caption, io::read_file_bytes(folder + "/" + file, "an SVG picture")});
   };

@@ -5,9 +5,9 @@
 #include <utility>
 #include <vector>
 
-#include "report/html_report.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/render/view_3d.hpp"
+#include "rigdesign/report/html_report.hpp"
 
 namespace rigdesign::cli {
 
@@ -29,8 +29,8 @@ std::vector<std::string> write_coverage_files(const model::Rig& rig,
 
 /// The coverage pictures write_coverage_files put in `folder` (sections at `angles_deg`), read
 /// back for the page, with their captions.
-std::vector<ReportFigure> coverage_figures(const std::string& folder,
-                                           const std::vector<double>& angles_deg);
+std::vector<report::ReportFigure> coverage_figures(const std::string& folder,
+                                                   const std::vector<double>& angles_deg);
 
 /// The body and every mount's FOV volume truncated at the rig's d, one colour per mount.
 void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,

@@ -15,13 +15,13 @@
 #include "common_options.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
-#include "report/deployment_report.hpp"
 #include "rigdesign/deploy/deployment.hpp"
 #include "rigdesign/deploy/export/deployment_files.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/ros_names.hpp"
 #include "rigdesign/render/gltf_scene.hpp"
+#include "rigdesign/report/deployment_report.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -89,7 +89,7 @@ int run_export(const ExportOptions& given, std::ostream& out) {
   io::StagedFolder staged(options.to, "--out");
   staged.refuse_inputs_inside(files_read(inputs));
   std::vector<std::string> written = deploy::write_deployment(
-      staged.path(), inputs.rig, deployment, deployment_header(inputs.rig, requirements));
+      staged.path(), inputs.rig, deployment, report::deployment_header(inputs.rig, requirements));
   if (options.gltf) {
     written.push_back(staged.path() + "/rig_fov.gltf");
     io::write_file_atomically(
@@ -98,7 +98,7 @@ int run_export(const ExportOptions& given, std::ostream& out) {
                            render::rig_gltf_parts(inputs.rig, inputs.library)));
   }
   staged.commit();
-  print_deployment(out, inputs.rig, deployment, staged.final_names(written));
+  report::print_deployment(out, inputs.rig, deployment, staged.final_names(written));
   return kOk;
 }
 

@@ -15,9 +15,6 @@
 #include "inputs.hpp"
 #include "machine_info.hpp"
 #include "progress_line.hpp"
-#include "report/filter_json.hpp"
-#include "report/filter_report.hpp"
-#include "report/filter_text.hpp"
 #include "rigdesign/filters/pipeline.hpp"
 #include "rigdesign/filters/pipeline_timing.hpp"
 #include "rigdesign/io/atomic_write.hpp"
@@ -28,6 +25,9 @@
 #include "rigdesign/metrics/mount_metrics.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/optical_frame.hpp"
+#include "rigdesign/report/filter_json.hpp"
+#include "rigdesign/report/filter_report.hpp"
+#include "rigdesign/report/filter_text.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
 
 namespace rigdesign::cli {
@@ -85,7 +85,7 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
   require_option(options.frames >= 1 && options.frames <= 10000, "--frames", "is out of range",
                  "1 to 10000");
   const model::Scene scene = load_scene_option(options.scene, options.seed);
-  FilterSceneReport report{
+  report::FilterSceneReport report{
       inputs.rig.name, options.scene, pipeline.name, options.frames, {}, 0.0, options.write_loads};
   ProgressLine progress(
       err, "filter: simulate and time " + std::to_string(options.frames) + " frame(s) each",
@@ -113,18 +113,18 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
   progress.clear();  // the report follows on standard output
   if (!options.write_loads.empty()) write_loads(options.write_loads, measured, inputs.rig.file);
   if (options.json) {
-    out << filter_scene_json(report).dump(2) << '\n';
+    out << report::filter_scene_json(report).dump(2) << '\n';
   } else {
-    print_filter_scene(report, out);
+    report::print_filter_scene(report, out);
   }
   return kOk;
 }
 
 // One cloud file through the pipeline: moved into the robot frame when a mount recorded it,
 // timed over the runs, its load at the mount's rate, the result written with --out.
-FilterCloudReport filter_cloud(const std::string& path, const FilterOptions& options,
-                               const model::Pipeline& pipeline, const model::Mount* mount,
-                               const model::SensorMode* mode) {
+report::FilterCloudReport filter_cloud(const std::string& path, const FilterOptions& options,
+                                       const model::Pipeline& pipeline, const model::Mount* mount,
+                                       const model::SensorMode* mode) {
   io::CloudReadReport read;
   model::PointCloud cloud = io::read_cloud(path, &read);
   if (cloud.empty()) {
@@ -148,21 +148,21 @@ FilterCloudReport filter_cloud(const std::string& path, const FilterOptions& opt
       throw error.in_file(path);
     }
   }();
-  FilterCloudReport report{path,
-                           read.format,
-                           cloud.size(),
-                           read.dropped_non_finite,
-                           read.ignored_fields,
-                           timing.stages,
-                           timing.result.size(),
-                           timing.total,
-                           std::nullopt,
-                           ""};
+  report::FilterCloudReport report{path,
+                                   read.format,
+                                   cloud.size(),
+                                   read.dropped_non_finite,
+                                   read.ignored_fields,
+                                   timing.stages,
+                                   timing.result.size(),
+                                   timing.total,
+                                   std::nullopt,
+                                   ""};
   if (mode != nullptr) {
-    report.load =
-        CloudLoad{mount->id, mode->frequency,
-                  filters::pipeline_load(timing, pipeline, static_cast<double>(cloud.size()),
-                                         mode->frequency)};
+    report.load = report::CloudLoad{
+        mount->id, mode->frequency,
+        filters::pipeline_load(timing, pipeline, static_cast<double>(cloud.size()),
+                               mode->frequency)};
   }
   if (!options.out.empty()) {
     io::prepare_output_folder(options.out, "--out");
@@ -209,15 +209,15 @@ int run_filter(const FilterOptions& options, std::ostream& out, std::ostream& er
                    "a mount id of the rig");
     mode = rig->library.find(mount->sensor_id)->find_mode(mount->mode_id);
   }
-  FilterCloudsReport report{pipeline.name, options.repeat, {}, 0.0};
+  report::FilterCloudsReport report{pipeline.name, options.repeat, {}, 0.0};
   for (const std::string& path : options.clouds) {
     report.clouds.push_back(filter_cloud(path, options, pipeline, mount, mode));
   }
   report.peak_memory_mib = peak_memory_mib();
   if (options.json) {
-    out << filter_clouds_json(report).dump(2) << '\n';
+    out << report::filter_clouds_json(report).dump(2) << '\n';
   } else {
-    print_filter_clouds(report, out);
+    report::print_filter_clouds(report, out);
   }
   return kOk;
 }

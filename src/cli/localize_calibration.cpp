@@ -68,7 +68,7 @@ nlohmann::json rows_json(const std::vector<CalibrationRow>& rows) {
 
 }  // namespace
 
-int run_calibration(const LocalizeOptions& options, std::ostream& out) {
+int run_calibration(const report::LocalizeOptions& options, std::ostream& out) {
   require_option(!options.truth.empty() && !options.logs.empty(), "--calibrate",
                  "needs the emitters' positions", "--calibrate --log FILE... --truth CSV");
   const std::vector<localize::EmitterTruth> truth = io::read_emitter_truth(options.truth);

@@ -4,10 +4,10 @@
 // least squares), printed with the flags that use it.
 #include <ostream>
 
-#include "localize_options.hpp"
+#include "rigdesign/report/localize_options.hpp"
 
 namespace rigdesign::cli {
 
-int run_calibration(const LocalizeOptions& options, std::ostream& out);
+int run_calibration(const report::LocalizeOptions& options, std::ostream& out);
 
 }  // namespace rigdesign::cli

@@ -14,12 +14,8 @@
 #include "command.hpp"
 #include "common_options.hpp"
 #include "localize_calibration.hpp"
-#include "localize_options.hpp"
 #include "number_checks.hpp"
 #include "progress_line.hpp"
-#include "report/localize_json.hpp"
-#include "report/localize_report.hpp"
-#include "report/localize_text.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/logs/co2_log_reader.hpp"
 #include "rigdesign/io/logs/ground_truth_files.hpp"
@@ -33,12 +29,16 @@
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/render/localize_plot.hpp"
 #include "rigdesign/render/localize_plot_content.hpp"
+#include "rigdesign/report/localize_json.hpp"
+#include "rigdesign/report/localize_options.hpp"
+#include "rigdesign/report/localize_report.hpp"
+#include "rigdesign/report/localize_text.hpp"
 
 namespace rigdesign::cli {
 namespace {
 
 // The methods asked for: nls for one run, every method for --table, or --method.
-std::vector<localize::LocalizeMethod> methods_of(const LocalizeOptions& options) {
+std::vector<localize::LocalizeMethod> methods_of(const report::LocalizeOptions& options) {
   if (options.method.empty() && !options.table) return {localize::LocalizeMethod::nls};
   const auto method = localize::parse_localize_method(options.method);
   require_option(method.has_value() || options.method == "all" || options.method.empty(),
@@ -72,48 +72,49 @@ void write_scenario_files(const localize::Scenario& scenario, const std::string&
 }
 
 // One emitter: estimate, uncertainty, degeneracy, and KPIs when the truth is known.
-int run_scenario(const LocalizeOptions& options, std::ostream& out) {
+int run_scenario(const report::LocalizeOptions& options, std::ostream& out) {
   localize::ScenarioParams params = options.scenario_params;
   params.seed = options.seed;
   const localize::Scenario scenario = localize::make_scenario(options.scenario, params);
-  ScenarioReport report{&scenario, options.seed, {}, {}};
+  report::ScenarioReport report{&scenario, options.seed, {}, {}};
   render::LocalizePlot plot =
       render::rssi_plot(scenario.log, "localize: scenario " + scenario.name + ", seed " +
                                           std::to_string(options.seed));
   render::add_walls(scenario.walls, plot);
   for (const localize::LocalizeMethod method : methods_of(options)) {
-    report.emitters.push_back(locate_emitter(
+    report.emitters.push_back(report::locate_emitter(
         scenario.log, 0, method, scenario.truth.front().position, options.params, options.kpi));
     render::add_estimate_markers(report.emitters.back().estimate, report.emitters.back().truth,
                                  plot);
   }
-  if (!options.json) print_scenario(report, options, out);
+  if (!options.json) report::print_scenario(report, options, out);
   if (!options.out.empty()) {
     const std::string stem = scenario.name + "_seed" + std::to_string(options.seed);
     write_scenario_files(scenario, options.out, stem);
     if (!options.json)
       out << "  wrote " << options.out + "/" + stem + "_rssi.csv, _truth.csv and _walls.csv\n";
     report.plots = write_plots(options.out, stem, plot);
-    if (!options.json) print_written(report.plots, out);
+    if (!options.json) report::print_written(report.plots, out);
   }
-  if (options.json) out << to_json(report).dump(2) << '\n';
+  if (options.json) out << report::to_json(report).dump(2) << '\n';
   return kOk;
 }
 
 // An RSSI log: every emitter by every method asked for, with the truth of those --truth names.
-LogReport locate_in_log(const localize::RssiLog& log, const std::string& path,
-                        const std::vector<localize::EmitterTruth>& truth,
-                        const std::vector<localize::LocalizeMethod>& methods,
-                        const LocalizeOptions& options, render::LocalizePlot& plot) {
-  LogReport report{path, log.readings.size(), log.emitters.size(), {}, std::nullopt};
+report::LogReport locate_in_log(const localize::RssiLog& log, const std::string& path,
+                                const std::vector<localize::EmitterTruth>& truth,
+                                const std::vector<localize::LocalizeMethod>& methods,
+                                const report::LocalizeOptions& options,
+                                render::LocalizePlot& plot) {
+  report::LogReport report{path, log.readings.size(), log.emitters.size(), {}, std::nullopt};
   for (std::size_t e = 0; e < log.emitters.size(); ++e) {
     std::optional<model::Vec3> known;
     for (const localize::EmitterTruth& t : truth) {
       if (t.bssid == log.emitters[e]) known = t.position;
     }
     for (const localize::LocalizeMethod method : methods) {
-      report.emitters.push_back(
-          locate_emitter(log, static_cast<int>(e), method, known, options.params, options.kpi));
+      report.emitters.push_back(report::locate_emitter(log, static_cast<int>(e), method, known,
+                                                       options.params, options.kpi));
       render::add_estimate_markers(report.emitters.back().estimate, known, plot);
     }
   }
@@ -121,13 +122,16 @@ LogReport locate_in_log(const localize::RssiLog& log, const std::string& path,
 }
 
 // A CO2 log: detections of both thresholds, scored against --gas-truth when given.
-LogReport detect_in_log(const localize::Co2Log& log, const LocalizeOptions& options,
-                        render::LocalizePlot& plot) {
+report::LogReport detect_in_log(const localize::Co2Log& log, const report::LocalizeOptions& options,
+                                render::LocalizePlot& plot) {
   std::vector<localize::Artifact> artifacts;
   if (!options.gas_truth.empty()) artifacts = io::read_artifacts(options.gas_truth);
-  LogReport report{
-      log.source, log.readings.size(), 0, {}, detect_gas_sources(log, artifacts, options.gas)};
-  for (const GasModeReport& mode : report.gas->modes) {
+  report::LogReport report{log.source,
+                           log.readings.size(),
+                           0,
+                           {},
+                           report::detect_gas_sources(log, artifacts, options.gas)};
+  for (const report::GasModeReport& mode : report.gas->modes) {
     if (mode.mode == localize::GasThreshold::relative)
       render::add_detection_markers(mode.detections, plot);
   }
@@ -135,11 +139,11 @@ LogReport detect_in_log(const localize::Co2Log& log, const LocalizeOptions& opti
   return report;
 }
 
-int run_logs(const LocalizeOptions& options, std::ostream& out) {
+int run_logs(const report::LocalizeOptions& options, std::ostream& out) {
   std::vector<localize::EmitterTruth> truth;
   if (!options.truth.empty()) truth = io::read_emitter_truth(options.truth);
   const std::vector<localize::LocalizeMethod> methods = methods_of(options);
-  LogsReport report;
+  report::LogsReport report;
   for (const std::string& path : options.logs) {
     const std::string text = io::read_log_text(path);
     const std::string title = "localize: " + std::filesystem::path(path).filename().string();
@@ -153,20 +157,20 @@ int run_logs(const LocalizeOptions& options, std::ostream& out) {
       plot = render::rssi_plot(log, title);
       report.logs.push_back(locate_in_log(log, path, truth, methods, options, plot));
     }
-    if (!options.json) print_log(report.logs.back(), options, out);
+    if (!options.json) report::print_log(report.logs.back(), options, out);
     if (!options.out.empty()) {
       const std::vector<std::string> plots =
           write_plots(options.out, std::filesystem::path(path).stem().string(), plot);
       report.plots.insert(report.plots.end(), plots.begin(), plots.end());
-      if (!options.json) print_written(plots, out);
+      if (!options.json) report::print_written(plots, out);
     }
   }
-  if (options.json) out << to_json(report).dump(2) << '\n';
+  if (options.json) out << report::to_json(report).dump(2) << '\n';
   return kOk;
 }
 
 // The accuracy table over seeds (--table), every scenario for --scenario all.
-int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& err) {
+int run_table(const report::LocalizeOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.seeds >= 1 && options.seeds <= 10000, "--seeds", "is out of range",
                  "1 to 10000");
   std::vector<std::string> scenarios = {options.scenario};
@@ -188,23 +192,23 @@ int run_table(const LocalizeOptions& options, std::ostream& out, std::ostream& e
   }
   progress.clear();  // the table follows on standard output
   if (options.json) {
-    out << accuracy_json(rows, options).dump(2) << '\n';
+    out << report::accuracy_json(rows, options).dump(2) << '\n';
   } else {
-    print_accuracy(rows, options, out);
+    report::print_accuracy(rows, options, out);
   }
   return kOk;
 }
 
-int run_resolved(const LocalizeOptions& options, std::ostream& out, std::ostream& err);
+int run_resolved(const report::LocalizeOptions& options, std::ostream& out, std::ostream& err);
 
-int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream& err) {
+int run_localize(const report::LocalizeOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.logs.empty() != options.scenario.empty(), "--log",
                  "give either --log FILE... or --scenario NAME",
                  "--log FILE... or --scenario NAME [--seed S]");
   require_option(options.params.path_loss.exponent > 0, "--exponent", "must be positive",
                  "a path-loss exponent, e.g. 2.5");
   if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
-  LocalizeOptions resolved = options;
+  report::LocalizeOptions resolved = options;
   require_option(options.prefer_side.empty() || options.prefer_side == "left" ||
                      options.prefer_side == "right",
                  "--prefer-side", "is '" + options.prefer_side + "'", "left or right");
@@ -250,7 +254,7 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   return run_resolved(resolved, out, err);
 }
 
-int run_resolved(const LocalizeOptions& options, std::ostream& out, std::ostream& err) {
+int run_resolved(const report::LocalizeOptions& options, std::ostream& out, std::ostream& err) {
   if (!options.scenario.empty()) {
     if (options.scenario != "all")
       localize::make_scenario(options.scenario, {});  // unknown names fail here, exit 2
@@ -265,7 +269,7 @@ int run_resolved(const LocalizeOptions& options, std::ostream& out, std::ostream
 }
 
 // The path-loss model and the range fit's priors, floor, scan period and walls.
-void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
+void add_range_fit_options(CLI::App* app, report::LocalizeOptions& options) {
   const auto given = [&options](const std::string&) { options.path_loss_given = true; };
   app->add_option("--rssi-at-1m", options.params.path_loss.rssi_at_1m_dbm,
                   "Assumed RSSI at 1 m [dBm] (default -45)")
@@ -336,7 +340,7 @@ void add_range_fit_options(CLI::App* app, LocalizeOptions& options) {
 }
 
 // The KPIs, the synthetic scenarios' radio and the CO2 detection.
-void add_kpi_scenario_and_gas_options(CLI::App* app, LocalizeOptions& options) {
+void add_kpi_scenario_and_gas_options(CLI::App* app, report::LocalizeOptions& options) {
   app->add_option("--checkpoints", options.kpi.checkpoints,
                   "Running-estimate checkpoints per log for the KPIs (0: final estimate only)")
       ->capture_default_str()
@@ -371,7 +375,7 @@ void add_kpi_scenario_and_gas_options(CLI::App* app, LocalizeOptions& options) {
 }  // namespace
 
 Command setup_localize(CLI::App& parent) {
-  auto options = std::make_shared<LocalizeOptions>();
+  auto options = std::make_shared<report::LocalizeOptions>();
   CLI::App* app = parent.add_subcommand(
       "localize", "Locate Wi-Fi emitters from RSSI logs and gas sources from CO2 logs (paper 4)");
   app->add_option("--log", options->logs,

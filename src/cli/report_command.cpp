@@ -12,7 +12,6 @@
 #include "coverage_files.hpp"
 #include "inputs.hpp"
 #include "number_checks.hpp"
-#include "report/html_report.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/metrics/pair_findings.hpp"
@@ -20,6 +19,7 @@
 #include "rigdesign/metrics/tolerance_coverage.hpp"
 #include "rigdesign/metrics/tolerance_verdicts.hpp"
 #include "rigdesign/model/units.hpp"
+#include "rigdesign/report/html_report.hpp"
 #include "tolerance_figures.hpp"
 
 namespace rigdesign::cli {
@@ -49,7 +49,7 @@ int run_report(const ReportOptions& options, std::ostream& out) {
       metrics::compute_coverage(inputs.rig, inputs.library, sectors, settings);
   const metrics::ResultantMetrics resultant =
       metrics::compute_resultant(inputs.rig, inputs.library);
-  ReportContent content;
+  report::ReportContent content;
   content.inputs = &inputs;
   content.metrics = &resultant;
   content.coverage = &coverage;
@@ -73,12 +73,12 @@ int run_report(const ReportOptions& options, std::ostream& out) {
   write_coverage_files(inputs.rig, inputs.library, coverage, angles, figures, true);
   content.figures = coverage_figures(figures, angles);
   // Issue 38: SC margin against each mount's pitch and yaw error, where the rig gives them.
-  for (ReportFigure& figure :
+  for (report::ReportFigure& figure :
        write_tolerance_figures(inputs.rig, inputs.library, sectors, settings, figures))
     content.figures.push_back(std::move(figure));
 
   const std::string page = staged.path() + "/report.html";
-  io::write_file_atomically(page, html_report(content));
+  io::write_file_atomically(page, report::html_report(content));
   staged.commit();
   out << inputs.rig.name << ": report " << staged.final_name(page) << " (self-contained; pictures "
       << "also in " << staged.final_name(figures) << ")\n";

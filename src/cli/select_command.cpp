@@ -19,9 +19,6 @@
 #include "inputs.hpp"
 #include "number_checks.hpp"
 #include "progress_line.hpp"
-#include "report/select_json.hpp"
-#include "report/select_report.hpp"
-#include "report/select_text.hpp"
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/io/config/policy_loader.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
@@ -29,6 +26,9 @@
 #include "rigdesign/metrics/tolerance_coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
+#include "rigdesign/report/select_json.hpp"
+#include "rigdesign/report/select_report.hpp"
+#include "rigdesign/report/select_text.hpp"
 #include "rigdesign/select/relaxation.hpp"
 #include "select_files.hpp"
 
@@ -203,10 +203,10 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
       progress.update(at.done, at.total, at.detail);
     }
   };
-  SelectReport report{
+  report::SelectReport report{
       &catalog, space.option_count(), &requirements, &policy, options.budget, nullptr, {}, {}};
   if (!options.json) {
-    print_select_header(report, out);
+    report::print_select_header(report, out);
     if (tolerance && tolerance->any()) {
       out << "Mounting tolerance: +-" << model::format_number(tolerance->xyz.x() * 1000) << ", "
           << model::format_number(tolerance->xyz.y() * 1000) << ", "
@@ -223,7 +223,7 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
       [&](const select::RelaxationIteration& iteration) {
         progress.clear();
         // Each step is shown as its search ends, so a long loop shows its progress.
-        if (!options.json) print_select_iteration(report, step, iteration, out);
+        if (!options.json) report::print_select_iteration(report, step, iteration, out);
         ++step;
         steps_done = iteration.within_budget || step == policy.steps.size() + 1;
       },
@@ -234,9 +234,9 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
   progress.clear();
   staged.commit();
   if (options.json) {
-    out << to_json(report).dump(2) << '\n';
+    out << report::to_json(report).dump(2) << '\n';
   } else {
-    print_select_summary(report, out);
+    report::print_select_summary(report, out);
   }
   return outcome.within_budget ? kOk : kRequirementFails;
 }

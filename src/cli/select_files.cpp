@@ -7,9 +7,6 @@
 
 #include "coverage_files.hpp"
 #include "inputs.hpp"
-#include "report/deployment_report.hpp"
-#include "report/html_report.hpp"
-#include "report/select_html.hpp"
 #include "rigdesign/deploy/deployment.hpp"
 #include "rigdesign/deploy/export/deployment_files.hpp"
 #include "rigdesign/io/atomic_write.hpp"
@@ -22,8 +19,11 @@
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/margin_plot.hpp"
 #include "rigdesign/render/pareto_plot.hpp"
+#include "rigdesign/report/deployment_report.hpp"
+#include "rigdesign/report/html_report.hpp"
+#include "rigdesign/report/select_html.hpp"
+#include "rigdesign/report/text_table.hpp"
 #include "rigdesign/select/pose_refinement.hpp"
-#include "text_table.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -33,24 +33,25 @@ constexpr int kMarginSamples = 41;
 
 // The rig file names its sensor library (absolute unless it lies in the folder) and the
 // requirements beside it.
-std::string write_chosen_rig(const SelectReport& report, const model::SensorLibrary& library,
+std::string write_chosen_rig(const report::SelectReport& report,
+                             const model::SensorLibrary& library,
                              const select::Selection& selection, const std::string& folder) {
   // The staging folder becomes the output folder: a library outside it is named absolute.
   const std::string library_from_folder = io::path_seen_from(library.file, folder);
   const select::CostBreakdown& cost = selection.cost;
   const std::string rig_file = folder + "/chosen_rig.yaml";
   io::write_file_atomically(
-      rig_file,
-      io::rig_to_yaml(selection.rig, library_from_folder, "requirements_final.yaml",
-                      "Chosen by `rigdesign select` from " + report.catalog->file + "\nCost " +
-                          fixed(cost.total, 0) + " USD (sensors " + fixed(cost.sensors, 0) +
-                          ", transfer " + cost.transfer_id + " " + fixed(cost.transfer, 0) +
-                          ", CPU " + cost.cpu_id + " " + fixed(cost.cpu, 0) + ")",
-                      folder));
+      rig_file, io::rig_to_yaml(selection.rig, library_from_folder, "requirements_final.yaml",
+                                "Chosen by `rigdesign select` from " + report.catalog->file +
+                                    "\nCost " + report::fixed(cost.total, 0) + " USD (sensors " +
+                                    report::fixed(cost.sensors, 0) + ", transfer " +
+                                    cost.transfer_id + " " + report::fixed(cost.transfer, 0) +
+                                    ", CPU " + cost.cpu_id + " " + report::fixed(cost.cpu, 0) + ")",
+                                folder));
   return rig_file;
 }
 
-std::string write_final_requirements(const SelectReport& report,
+std::string write_final_requirements(const report::SelectReport& report,
                                      const select::RelaxationIteration& pick,
                                      const std::string& folder) {
   const std::vector<select::RelaxationIteration>& iterations = report.outcome->iterations;
@@ -64,7 +65,7 @@ std::string write_final_requirements(const SelectReport& report,
   return file;
 }
 
-std::vector<std::string> write_pareto_plots(const SelectReport& report,
+std::vector<std::string> write_pareto_plots(const report::SelectReport& report,
                                             const select::RelaxationIteration& pick,
                                             const std::string& folder) {
   std::vector<std::string> written;
@@ -134,7 +135,7 @@ std::vector<std::string> write_margin_plots(const select::SelectionSpace& space,
 
 // The chosen rig's report page (html_report) with the selection trace as a section of its
 // own; the coverage pictures and the Pareto SVG are read back from where they were written.
-std::string selection_page(const SelectReport& report, const model::SensorLibrary& library,
+std::string selection_page(const report::SelectReport& report, const model::SensorLibrary& library,
                            const select::RelaxationIteration& pick, const model::Rig& rig,
                            const std::string& coverage_folder, const std::vector<double>& angles,
                            const std::string& pareto_svg) {
@@ -143,7 +144,7 @@ std::string selection_page(const SelectReport& report, const model::SensorLibrar
   inputs.library = library;
   inputs.requirements = pick.requirements;
   const metrics::ResultantMetrics resultant = metrics::compute_resultant(rig, inputs.library);
-  ReportContent content;
+  report::ReportContent content;
   content.inputs = &inputs;
   content.metrics = &resultant;
   content.coverage = &pick.selection.coverage;
@@ -152,12 +153,13 @@ std::string selection_page(const SelectReport& report, const model::SensorLibrar
   content.figures = coverage_figures(coverage_folder, angles);
   content.sections.push_back(
       {"selection", "Selection trace",
-       selection_trace_html(report, pick, io::read_file_bytes(pareto_svg, "an SVG picture"))});
-  return html_report(content);
+       report::selection_trace_html(report, pick,
+                                    io::read_file_bytes(pareto_svg, "an SVG picture"))});
+  return report::html_report(content);
 }
 
 // The coverage pictures of the rig as written (`rig.file` its final name) and the page.
-std::vector<std::string> write_renders(const SelectReport& report,
+std::vector<std::string> write_renders(const report::SelectReport& report,
                                        const model::SensorLibrary& library,
                                        const select::RelaxationIteration& pick,
                                        const model::Rig& rig, const std::string& folder) {
@@ -180,7 +182,7 @@ std::vector<std::string> write_ros_deployment(const model::SensorLibrary& librar
   const deploy::Deployment deployment =
       deploy::plan_deployment(rig, library, &pick.requirements, {});
   return deploy::write_deployment(folder + "/deploy", rig, deployment,
-                                  deployment_header(rig, &pick.requirements));
+                                  report::deployment_header(rig, &pick.requirements));
 }
 
 void append(std::vector<std::string>& to, const std::vector<std::string>& more) {
@@ -189,12 +191,12 @@ void append(std::vector<std::string>& to, const std::vector<std::string>& more) 
 
 }  // namespace
 
-std::vector<std::string> write_selection_files(const SelectReport& report,
+std::vector<std::string> write_selection_files(const report::SelectReport& report,
                                                const select::SelectionSpace& space,
                                                const io::StagedFolder& staged, bool renders,
                                                const select::ProgressSink& progress,
                                                std::vector<select::PhaseTime>& phases) {
-  const select::RelaxationIteration* pick = chosen_iteration(*report.outcome);
+  const select::RelaxationIteration* pick = report::chosen_iteration(*report.outcome);
   if (pick == nullptr) return {};
   const std::string& folder = staged.path();
   select::PhaseClock clock(phases, &progress);

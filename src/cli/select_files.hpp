@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "report/select_report.hpp"
+#include "rigdesign/report/select_report.hpp"
 
 namespace rigdesign::io {
 class StagedFolder;
@@ -18,7 +18,7 @@ namespace rigdesign::cli {
 /// (staged.final_names gives where they end up). Writes nothing when no step found a rig.
 /// Needs `report.outcome`; `space` is the one searched (the margin plots sweep in it).
 /// `progress` hears each part as it starts; `phases` gets the time it all took.
-std::vector<std::string> write_selection_files(const SelectReport& report,
+std::vector<std::string> write_selection_files(const report::SelectReport& report,
                                                const select::SelectionSpace& space,
                                                const io::StagedFolder& staged, bool renders,
                                                const select::ProgressSink& progress,

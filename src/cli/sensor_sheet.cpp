@@ -5,7 +5,7 @@
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
-#include "text_table.hpp"
+#include "rigdesign/report/text_table.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -93,30 +93,30 @@ void print_sensor_sheet(const model::Sensor& sensor, const model::SensorLibrary&
       << "  source      " << sensor.source << "\n";
   print_ros_driver(sensor, out);
   out << "  defined at  " << where_text(sensor.where) << " (library " << library.file << ")\n\n";
-  TextTable table;
-  table.add_column("mode", TextTable::Align::left);
-  table.add_column("FOV [deg]", TextTable::Align::right);
-  table.add_column("range [m]", TextTable::Align::right);
-  table.add_column("rate [Hz]", TextTable::Align::right);
-  table.add_column("step [deg]", TextTable::Align::right);
-  table.add_column("points/frame", TextTable::Align::right);
-  table.add_column("Mpoints/s", TextTable::Align::right);
-  table.add_column("MB/s", TextTable::Align::right);
-  table.add_column("sigma 1 m / max [mm]", TextTable::Align::right);
-  table.add_column("works in", TextTable::Align::left);
-  table.add_column("driver [cores]", TextTable::Align::right);
+  report::TextTable table;
+  table.add_column("mode", report::TextTable::Align::left);
+  table.add_column("FOV [deg]", report::TextTable::Align::right);
+  table.add_column("range [m]", report::TextTable::Align::right);
+  table.add_column("rate [Hz]", report::TextTable::Align::right);
+  table.add_column("step [deg]", report::TextTable::Align::right);
+  table.add_column("points/frame", report::TextTable::Align::right);
+  table.add_column("Mpoints/s", report::TextTable::Align::right);
+  table.add_column("MB/s", report::TextTable::Align::right);
+  table.add_column("sigma 1 m / max [mm]", report::TextTable::Align::right);
+  table.add_column("works in", report::TextTable::Align::left);
+  table.add_column("driver [cores]", report::TextTable::Align::right);
   for (const model::SensorMode& mode : sensor.modes) {
     const double points_per_second = mode.points_per_frame * mode.frequency;
     table.add_row(
         {mode.id, mode.fov.shape().summary_deg(),
          model::format_number(mode.min_range, 3) + "-" + model::format_number(mode.max_range, 4),
          model::format_number(mode.frequency, 4), resolution_text(mode),
-         fixed(mode.points_per_frame, 0), fixed(points_per_second / 1e6, 3),
-         fixed(mode.bytes_per_frame * mode.frequency / 1e6, 2),
-         fixed(1e3 * mode.noise.sigma(1.0), 1) + " / " +
-             fixed(1e3 * mode.noise.sigma(mode.max_range), 1),
+         report::fixed(mode.points_per_frame, 0), report::fixed(points_per_second / 1e6, 3),
+         report::fixed(mode.bytes_per_frame * mode.frequency / 1e6, 2),
+         report::fixed(1e3 * mode.noise.sigma(1.0), 1) + " / " +
+             report::fixed(1e3 * mode.noise.sigma(mode.max_range), 1),
          light_text(mode.light),
-         fixed(mode.driver_cpu.load(points_per_second), 3) +
+         report::fixed(mode.driver_cpu.load(points_per_second), 3) +
              (mode.driver_cpu.basis == model::Basis::estimate ? "*" : " ")});
   }
   table.print(out, "  ");

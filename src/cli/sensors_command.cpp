@@ -17,16 +17,16 @@
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/units.hpp"
-#include "sensor_query.hpp"
+#include "rigdesign/report/sensor_query.hpp"
+#include "rigdesign/report/text_table.hpp"
 #include "sensor_sheet.hpp"
-#include "text_table.hpp"
 
 namespace rigdesign::cli {
 namespace {
 
 struct SensorsOptions {
   std::string sensor;
-  SensorQuery query;
+  report::SensorQuery query;
   std::string sort = "id";
   std::string format = "text";
   std::string sensors;
@@ -44,7 +44,7 @@ std::vector<const model::Sensor*> select_sensors(const model::SensorLibrary& lib
                                                  const SensorsOptions& options) {
   std::vector<const model::Sensor*> found;
   for (const model::Sensor& sensor : library.sensors) {
-    if (sensor_matches(sensor, options.query)) found.push_back(&sensor);
+    if (report::sensor_matches(sensor, options.query)) found.push_back(&sensor);
   }
   std::stable_sort(found.begin(), found.end(), [&](const model::Sensor* a, const model::Sensor* b) {
     if (options.sort == "id") return a->id < b->id;
@@ -54,24 +54,26 @@ std::vector<const model::Sensor*> select_sensors(const model::SensorLibrary& lib
 }
 
 std::string span(double low, double high, int decimals) {
-  return low == high ? fixed(low, decimals) : fixed(low, decimals) + "-" + fixed(high, decimals);
+  return low == high ? report::fixed(low, decimals)
+                     : report::fixed(low, decimals) + "-" + report::fixed(high, decimals);
 }
 
 void print_list(const std::vector<const model::Sensor*>& sensors, const SensorsOptions& options,
                 const model::SensorLibrary& library, std::ostream& out) {
   out << "Sensor library " << library.file << ": " << sensors.size() << " of "
       << library.sensors.size() << " sensors match\n\n";
-  TextTable table;
-  table.add_column("id", TextTable::Align::left);
-  table.add_column("technology", TextTable::Align::left);
-  table.add_column("FOV h x v [deg]", TextTable::Align::right);
-  table.add_column("max range [m]", TextTable::Align::right);
-  table.add_column("rate [Hz]", TextTable::Align::right);
-  table.add_column("modes", TextTable::Align::right);
-  table.add_column("price [USD]", TextTable::Align::right);
-  table.add_column("name", TextTable::Align::left);
+  report::TextTable table;
+  table.add_column("id", report::TextTable::Align::left);
+  table.add_column("technology", report::TextTable::Align::left);
+  table.add_column("FOV h x v [deg]", report::TextTable::Align::right);
+  table.add_column("max range [m]", report::TextTable::Align::right);
+  table.add_column("rate [Hz]", report::TextTable::Align::right);
+  table.add_column("modes", report::TextTable::Align::right);
+  table.add_column("price [USD]", report::TextTable::Align::right);
+  table.add_column("name", report::TextTable::Align::left);
   for (const model::Sensor* sensor : sensors) {
-    const std::vector<const model::SensorMode*> modes = matching_modes(*sensor, options.query);
+    const std::vector<const model::SensorMode*> modes =
+        report::matching_modes(*sensor, options.query);
     double range_low = 1e300, range_high = 0, rate_low = 1e300, rate_high = 0;
     for (const model::SensorMode* mode : modes) {
       range_low = std::min(range_low, mode->max_range);
@@ -79,12 +81,13 @@ void print_list(const std::vector<const model::Sensor*>& sensors, const SensorsO
       rate_low = std::min(rate_low, mode->frequency);
       rate_high = std::max(rate_high, mode->frequency);
     }
-    table.add_row(
-        {sensor->id, model::to_string(sensor->technology), modes.front()->fov.shape().summary_deg(),
-         span(range_low, range_high, 1), span(rate_low, rate_high, 1),
-         std::to_string(modes.size()) + "/" + std::to_string(sensor->modes.size()),
-         fixed(sensor->price.usd, 0) + (sensor->price.basis == model::Basis::estimate ? "*" : " "),
-         sensor->name});
+    table.add_row({sensor->id, model::to_string(sensor->technology),
+                   modes.front()->fov.shape().summary_deg(), span(range_low, range_high, 1),
+                   span(rate_low, rate_high, 1),
+                   std::to_string(modes.size()) + "/" + std::to_string(sensor->modes.size()),
+                   report::fixed(sensor->price.usd, 0) +
+                       (sensor->price.basis == model::Basis::estimate ? "*" : " "),
+                   sensor->name});
   }
   table.print(out, "  ");
   out << "\n  modes: those meeting --min-range/--min-rate/--min-fov-deg, of all; "

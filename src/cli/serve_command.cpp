@@ -17,12 +17,12 @@
 #include "app.hpp"
 #include "command.hpp"
 #include "common_options.hpp"
-#include "report/check_text.hpp"
-#include "report/file_report.hpp"
+#include "rigdesign/report/check_text.hpp"
+#include "rigdesign/report/file_report.hpp"
 #include "rigdesign/studio/request_guard.hpp"
+#include "rigdesign/studio/studio_api.hpp"
 #include "rigdesign/studio/studio_server.hpp"
 #include "rigdesign/studio/studio_session.hpp"
-#include "studio_api.hpp"
 
 extern char** environ;
 
@@ -60,8 +60,9 @@ bool open_browser(const std::string& url) {
 }
 
 std::pair<int, std::string> check_saved_rig(const std::string& path, const ServeOptions& options) {
-  const std::vector<FileReport> reports = {check_file(path, options.sensors, options.requirements)};
-  return {check_exit_code(reports), format_text(reports)};
+  const std::vector<report::FileReport> reports = {
+      report::check_file(path, options.sensors, options.requirements)};
+  return {check_exit_code(reports), report::format_text(reports)};
 }
 
 int run_serve(const ServeOptions& options, std::ostream& out, std::ostream& err) {
@@ -70,8 +71,8 @@ int run_serve(const ServeOptions& options, std::ostream& out, std::ostream& err)
     // The page shows these too; the server stays up so the file can be mended and reloaded.
     for (const model::Diagnostic& d : session.diagnostics()) err << d.message() << '\n';
   }
-  StudioApi api(session,
-                [&options](const std::string& path) { return check_saved_rig(path, options); });
+  studio::StudioApi api(
+      session, [&options](const std::string& path) { return check_saved_rig(path, options); });
 
   // SIGINT and SIGTERM go to one waiting thread that stops the server (blocked in every other
   // thread, the server's included, which inherit the mask).

@@ -8,11 +8,11 @@
 
 namespace rigdesign::cli {
 
-std::vector<ReportFigure> write_tolerance_figures(
+std::vector<report::ReportFigure> write_tolerance_figures(
     const model::Rig& rig, const model::SensorLibrary& library,
     const std::vector<model::SectorRequirement>& sectors, const metrics::CoverageSettings& settings,
     const std::string& folder, std::vector<std::string>* written) {
-  std::vector<ReportFigure> figures;
+  std::vector<report::ReportFigure> figures;
   for (const metrics::ErrorSweep& sweep :
        metrics::tolerance_sweeps(rig, library, sectors, settings)) {
     const std::string axis = sweep.axis == 1 ? "pitch" : "yaw";

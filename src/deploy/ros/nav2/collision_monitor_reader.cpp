@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "deploy/ros/nav2/collision_monitor_keys.hpp"
+#include "deploy/ros/nav2/parameter_file.hpp"
 #include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -181,18 +182,11 @@ YAML::Node monitor_block(const YAML::Node& root, std::string& path) {
 
 deploy::DeployedCollisionMonitor load_collision_monitor(
     const std::string& path, const model::Rig& rig, const std::vector<MountTopic>& mount_topics) {
-  const YAML::Node root = io::load_yaml_file(path);
   model::Diagnostics diagnostics;
-  std::string block_path;
-  const YAML::Node block = monitor_block(root, block_path);
-  io::MapReader m(block, block_path, path, diagnostics, io::location_of(block, path));
-  if (!m.valid()) {
-    throw model::InputError(model::Diagnostic{
-        {path, 1, 1},
-        "(document)",
-        "is not a map",
-        "nav2 collision monitor parameters: collision_monitor: ros__parameters: {...}"});
-  }
+  nav2::ParameterMap parameters = nav2::read_parameter_map(
+      path, diagnostics, monitor_block,
+      "nav2 collision monitor parameters: collision_monitor: ros__parameters: {...}");
+  io::MapReader& m = parameters.reader;
   deploy::DeployedCollisionMonitor monitor;
   monitor.file = path;
   if (m.has("base_frame_id")) {

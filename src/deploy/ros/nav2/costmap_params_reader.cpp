@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "deploy/ros/nav2/nav2_keys.hpp"
+#include "deploy/ros/nav2/parameter_file.hpp"
 #include "deploy/ros/nav2/stvl_layer_reader.hpp"
 #include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
@@ -233,18 +234,13 @@ CostmapParamsFile load_costmap_params(const std::string& path,
                                       const costmap::CostmapParams& defaults,
                                       const costmap::ObservationSource& source_defaults,
                                       double global_frame_height) {
-  const YAML::Node root = io::load_yaml_file(path);
   model::Diagnostics diagnostics;
-  std::string block_path;
-  const YAML::Node block = parameter_block(root, block_path);
-  io::MapReader m(block, block_path, path, diagnostics, io::location_of(block, path));
-  if (!m.valid()) {
-    throw model::InputError(model::Diagnostic{
-        {path, 1, 1},
-        "(document)",
-        "is not a map",
-        "nav2 costmap parameters: local_costmap: local_costmap: ros__parameters: {...}"});
-  }
+  nav2::ParameterMap parameters = nav2::read_parameter_map(
+      path, diagnostics, parameter_block,
+      "nav2 costmap parameters: local_costmap: local_costmap: ros__parameters: {...}");
+  io::MapReader& m = parameters.reader;
+  const YAML::Node& block = parameters.block;
+  const std::string& block_path = parameters.block_path;
   CostmapParamsFile file{defaults, {}, {}, false, {}, {}, {}};
   file.window_where = m.location(m.has("width") ? "width" : m.has("height") ? "height" : "");
   costmap::CostmapParams& p = file.costmap;

@@ -1,0 +1,44 @@
+#pragma once
+// What `select` reports, as data: the catalog, requirements, policy and budget it searched
+// with, the relaxation loop's outcome and the files written. select_text, select_json and
+// select_html render it; the phrases below name a requirement set, a rig and a pose
+// refinement the same way in every format.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "rigdesign/select/relaxation.hpp"
+
+namespace rigdesign::report {
+
+struct SelectReport {
+  const model::Catalog* catalog = nullptr;
+  std::size_t option_count = 0;                        ///< slot options the search chose from
+  const model::Requirements* requirements = nullptr;   ///< as given, before any relaxation
+  const model::RelaxationPolicy* policy = nullptr;     ///< no steps: none given
+  double budget = 0.0;                                 ///< [USD]
+  const select::RelaxationOutcome* outcome = nullptr;  ///< null while the loop runs
+  std::vector<std::string> files;                      ///< written, where they end up
+  std::vector<select::PhaseTime> file_phases;          ///< writing them
+};
+
+/// The iteration whose rig is written: the first within budget, else the last that found a
+/// rig (the cheapest found); null when none did.
+const select::RelaxationIteration* chosen_iteration(const select::RelaxationOutcome& outcome);
+
+/// "2749 USD": whole dollars.
+std::string usd(double value);
+
+/// A share as a percentage of three significant digits: 0.368 gives "36.8".
+std::string percent_digits(double share);
+
+/// "F >= 10 Hz, R <= 150 mm, N <= 50 mm, L: dark, indoor, SC front >= 75 / 80 % ...".
+std::string describe(const select::SatisficingTargets& targets);
+
+/// The chosen rig: per slot its sensor/mode and, for a pose range, the pose chosen.
+std::string describe(const select::Selection& selection, const model::Catalog& catalog);
+
+/// The axes the refinement moved, the smallest margin before and after, and its verdict.
+std::string describe(const select::PoseRefinement& refinement);
+
+}  // namespace rigdesign::report

@@ -1,0 +1,96 @@
+// Issue 37: the studio's JSON API on the bundled cart, called as the page calls it. Expected
+// values are read off sensors.yaml's text or written by hand.
+#include "rigdesign/studio/studio_api.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.hpp"
+#include "support/temp_folder.hpp"
+
+using namespace rigdesign;
+
+namespace {
+
+struct ApiFixture {
+  test::TempFolder folder;
+  std::string path;
+  std::unique_ptr<studio::StudioSession> session;
+  std::unique_ptr<studio::StudioApi> api;
+
+  ApiFixture() {
+    std::string text = test::file_text(test::source_path("rigs/cart_two_scanners.yaml"));
+    const std::string from = "requirements: requirements/cart_two_scanners.yaml";
+    text.replace(text.find(from), from.size(),
+                 "requirements: " + test::source_path("rigs/requirements/cart_two_scanners.yaml"));
+    path = folder.write("cart.yaml", text);
+    session = std::make_unique<studio::StudioSession>(path, test::source_path("sensors.yaml"), "");
+    api = std::make_unique<studio::StudioApi>(*session, [](const std::string&) {
+      return std::pair<int, std::string>{0, "checked"};
+    });
+  }
+
+  std::pair<int, nlohmann::json> call(const std::string& method, const std::string& name,
+                                      const std::string& query = "", const std::string& body = "") {
+    const studio::Reply reply = (*api)(method, name, query, body);
+    return {reply.status, reply.content_type.rfind("application/json", 0) == 0
+                              ? nlohmann::json::parse(reply.body)
+                              : nlohmann::json(reply.body)};
+  }
+};
+
+}  // namespace
+
+TEST_CASE("studio API: the sensor list answers `sensors`' filters", "[studio]") {
+  ApiFixture fixture;
+  // sensors.yaml: the RPLIDAR A1 (A1M8) is lidar_2d with modes 5_5hz (5.5 Hz) and 10hz (10 Hz);
+  // at 7 Hz or more only its 10hz mode answers.
+  auto [status, reply] = fixture.call("GET", "sensors", "technology=lidar_2d&min_rate=7");
+  REQUIRE(status == 200);
+  bool found = false;
+  for (const nlohmann::json& sensor : reply["sensors"]) {
+    if (sensor["id"] != "rplidar_a1m8") continue;
+    found = true;
+    CHECK(sensor["modes"] == nlohmann::json::array({"10hz"}));
+  }
+  CHECK(found);
+  // The search text arrives percent-encoded; "RPLIDAR A1" is in the name of the A1M8 only
+  // ("RPLIDAR A2", "S2", "S3" are the others).
+  std::tie(status, reply) = fixture.call("GET", "sensors", "search=RPLIDAR%20A1");
+  REQUIRE(reply["sensors"].size() == 1);
+  CHECK(reply["sensors"][0]["id"] == "rplidar_a1m8");
+  CHECK(fixture.call("GET", "sensors", "min_rate=fast").first == 400);
+  CHECK(fixture.call("GET", "sensors", "max_price=-1").first == 400);
+}
+
+TEST_CASE("studio API: malformed edits are 400, invalid ones 422 with check's words", "[studio]") {
+  ApiFixture fixture;
+  CHECK(fixture.call("POST", "pose", "", "{not json").first == 400);
+  CHECK(fixture.call("POST", "pose", "", R"({"mount": "front_lidar", "xyz": [0, 0]})").first ==
+        400);
+  CHECK(fixture
+            .call("POST", "pose", "",
+                  R"({"mount": "front_lidar", "xyz": [0, 0, 1e999], "rpy_deg": [0, 0, 0]})")
+            .first == 400);
+  const auto [status, reply] = fixture.call(
+      "POST", "pose", "", R"({"mount": "front_lidar", "xyz": [0, 0, 0.2], "rpy_deg": [0, 0, 0]})");
+  CHECK(status == 422);
+  REQUIRE(reply["error"].is_array());
+  // The cart's prism spans x in [-0.3, 0.3]: the origin is inside, reported at the mount's pose.
+  CHECK(reply["error"][0]["field"].get<std::string>().find("mounts[0].pose") == 0);
+  CHECK(reply["error"][0]["line"] == 14);
+  CHECK(fixture.call("GET", "nothing").first == 404);
+  // A valid move answers with the numbers on the raster path, then saves through check.
+  const auto [moved, numbers] =
+      fixture.call("POST", "pose", "",
+                   R"({"mount": "front_lidar", "xyz": [0.5, 0, 0.3], "rpy_deg": [0, 0, 0]})");
+  CHECK(moved == 200);
+  CHECK(numbers["exact"] == false);
+  CHECK(numbers["dirty"] == true);
+  CHECK(numbers["coverage"]["curve_complete"].size() == 360);
+  const auto [saved, state] = fixture.call("POST", "save");
+  CHECK(saved == 200);
+  CHECK(state["check"]["report"] == "checked");
+  CHECK(test::file_text(fixture.path).find("pose: {xyz: [0.5, 0, 0.3], rpy_deg: [0, 0, 0]}") !=
+        std::string::npos);
+}
