@@ -1,8 +1,9 @@
 #pragma once
 /// The folder `rigdesign export` writes (issue 14): the sensors' URDF macro
-/// (io/robot/sensors_xacro_writer.hpp), nav2's costmap parameters
-/// (io/nav2/costmap_params_writer.hpp) and the self-filters in the formats laser_filters and
-/// pcl_ros read (io/self_filters/self_filters_writer.hpp), each written by its format's home.
+/// (deploy/ros/description/sensors_xacro_writer.hpp), nav2's costmap parameters
+/// (deploy/ros/nav2/costmap_params_writer.hpp) and the self-filters in the formats
+/// laser_filters and pcl_ros read (deploy/ros/self_filters/self_filters_writer.hpp), each
+/// written beside the computation that fills it.
 #include <string>
 #include <vector>
 

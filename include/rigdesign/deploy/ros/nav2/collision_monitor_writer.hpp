@@ -5,7 +5,7 @@
 /// release (data/ros_parameters/nav2_collision_monitor.yaml): Jazzy writes polygon points as a
 /// string "[[x, y], ...]", min_points and each polygon's sources_names; Humble a flat list of
 /// numbers, max_points, and every source feeds every polygon. Read back by
-/// io/nav2/collision_monitor_reader.hpp for `check --collision-monitor`.
+/// deploy/ros/nav2/collision_monitor_reader.hpp for `check --collision-monitor`.
 #include <string>
 
 #include "rigdesign/deploy/collision_monitor.hpp"

@@ -2,7 +2,7 @@
 /// `nav2_costmap.yaml`, as `rigdesign export` writes it: local_costmap and global_costmap
 /// parameter blocks as nav2 reads them
 /// (https://docs.nav2.org/configuration/packages/configuring-costmaps.html), the Hit Layer's
-/// keys under `hit_layer`. Read back by io/nav2/costmap_params_reader.hpp.
+/// keys under `hit_layer`. Read back by deploy/ros/nav2/costmap_params_reader.hpp.
 #include <string>
 
 #include "rigdesign/deploy/costmap_config.hpp"

@@ -4,7 +4,7 @@
 /// LaserScanAngularBoundsFilterInPlace per band; per 3D sensor hitting its robot one pcl_ros
 /// CropBox node `<mount>_self_filter_<k>` per box (negative: true drops the inside), in the
 /// frame `box_frame` whose pose in the robot frame is T_robot_box_frame. Read back by
-/// io/self_filters/self_filters_reader.hpp.
+/// deploy/ros/self_filters/self_filters_reader.hpp.
 #include <string>
 #include <vector>
 
