@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rigdesign/geometry/winding_number.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::geometry {
@@ -13,37 +14,6 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 // Azimuth bins for culling: a triangle is tried in a section only if its shadow's azimuth
 // span (about the robot's vertical axis) overlaps the section's bin.
 constexpr int kAzimuthBins = 720;
-
-// Moller-Trumbore: whether the ray o + s d (s > 0) crosses triangle abc.
-bool ray_crosses(const model::Vec3& o, const model::Vec3& d, const model::Vec3& a,
-                 const model::Vec3& b, const model::Vec3& c) {
-  const model::Vec3 e1 = b - a;
-  const model::Vec3 e2 = c - a;
-  const model::Vec3 p = d.cross(e2);
-  const double det = e1.dot(p);
-  if (std::abs(det) < 1e-18) return false;
-  const model::Vec3 s = o - a;
-  const double u = s.dot(p) / det;
-  if (u < 0 || u > 1) return false;
-  const model::Vec3 q = s.cross(e1);
-  const double v = d.dot(q) / det;
-  if (v < 0 || u + v > 1) return false;
-  return e2.dot(q) / det > 0;
-}
-
-// Whether `point` is inside a closed triangle mesh: an odd number of crossings along a ray
-// whose direction no axis-aligned face or edge is parallel to.
-bool inside_mesh(const model::TriangleMesh& mesh, const model::Vec3& point) {
-  const model::Vec3 direction = model::Vec3(0.5773, 0.5774, 0.5775).normalized();
-  int crossings = 0;
-  for (const auto& t : mesh.triangles) {
-    if (ray_crosses(point, direction, mesh.vertices[t[0]], mesh.vertices[t[1]],
-                    mesh.vertices[t[2]])) {
-      ++crossings;
-    }
-  }
-  return crossings % 2 == 1;
-}
 
 }  // namespace
 

@@ -22,7 +22,8 @@ namespace rigdesign::geometry {
 using TriangleTest =
     std::function<bool(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c)>;
 
-/// True when `point` is strictly inside the part (a sensor there sits in its own housing).
+/// True when `point` is strictly inside the part (a sensor there sits in its own housing): in
+/// a vertical cylinder, or inside a mesh by its generalized winding number (winding_number.hpp).
 bool inside_part(const model::BodyPart& part, const model::Vec3& point);
 
 class SolidShadow {
