@@ -73,7 +73,7 @@ TEST_CASE("costmap CLI: outcome, frames, map files and summary", "[scenario]") {
         static_cast<int>((summary["updates"].get<int>() - 1) / 20 + 1));
 }
 
-TEST_CASE("costmap CLI: without the Hit Layer the run reports the collision; --compare tabulates",
+TEST_CASE("costmap CLI: without the Hit Layer the run reports the collision, --compare tabulates",
           "[scenario]") {
   TempFolder folder;
   const CliResult single = run_cli({"costmap", "--rig", source_path("rigs/ur_cleaner.yaml"),

@@ -66,7 +66,7 @@ TEST_CASE("the real clouds filter without error, in the optical frame and in the
   CHECK(item["filtering_load_cores"].get<double>() > 0.0);
 }
 
-TEST_CASE("a pipeline file is pure data; an unknown stage is a located error") {
+TEST_CASE("a pipeline file is pure data, an unknown stage is a located error") {
   TempFolder folder;
   const std::string good =
       folder.write("good.yaml",

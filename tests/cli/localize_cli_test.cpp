@@ -208,7 +208,7 @@ TEST_CASE("localize --calibrate fits the level and exponent of a log whose phone
   CHECK(result.err.find("--calibrate: needs the emitters' positions") != std::string::npos);
 }
 
-TEST_CASE("localize --environment sets Rappaport's exponent; bad names and weightings exit 2",
+TEST_CASE("localize --environment sets Rappaport's exponent, bad names and weightings exit 2",
           "[localize]") {
   TempFolder folder;
   REQUIRE(run_cli({"localize", "--scenario", "corner", "--seed", "1", "--out", folder.path()})

@@ -43,7 +43,7 @@ TEST_CASE("metrics: --format json is what --json printed, and --help hides --jso
   CHECK(help.out.find("--json") == std::string::npos);
 }
 
-TEST_CASE("export writes to --out; --to still does; both at once exit 2", "[cli]") {
+TEST_CASE("export writes to --out, --to still does, both at once exit 2", "[cli]") {
   const std::string rig = source_path("rigs/cart_two_scanners.yaml");
   TempFolder folder;
   const std::string out = folder.path() + "/out", to = folder.path() + "/to";

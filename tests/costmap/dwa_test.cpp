@@ -74,7 +74,7 @@ TEST_CASE("DWA: on a free floor it takes the fastest, straightest velocity of th
              WithinAbs(32 * to_path_point + 24 * (end - model::Vec2(3, 0)).norm(), 1e-9));
 }
 
-TEST_CASE("DWA: a wall ahead rules out the arcs that reach it; it slows down instead",
+TEST_CASE("DWA: a wall ahead rules out the arcs that reach it, it slows down instead",
           "[costmap]") {
   // Cells from x = 0.5 m on are inscribed (the robot's centre there touches the wall). The
   // fastest arcs of the window reach x = (v / w) sin(w T) >= 0.325 / 0.16 sin(0.272) = 0.546 m

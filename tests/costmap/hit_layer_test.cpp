@@ -77,7 +77,7 @@ TEST_CASE("the motion condition judges the last d_duration seconds", "[costmap]"
   CHECK(monitor.moving(false));
 }
 
-TEST_CASE("a stationary robot keeps Hit Layer cells; a moving one lets them decay", "[costmap]") {
+TEST_CASE("a stationary robot keeps Hit Layer cells, a moving one lets them decay", "[costmap]") {
   costmap::HitLayerParams params;
   costmap::HitLayer layer(small_window(), params);
   costmap::CostGrid obstacles(small_window(), costmap::cost::kFree);

@@ -198,7 +198,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("collision monitor: robot_speed.deceleration sizes the zones; a negative one is refused",
+TEST_CASE("collision monitor: robot_speed.deceleration sizes the zones, a negative one is refused",
           "[deploy]") {
   TempFolder folder;
   const std::string gentle = cart_with(

@@ -136,7 +136,7 @@ TEST_CASE("throttle keeps the frame due at each multiple of its period", "[filte
   CHECK(runs[0].points_out == frame.size());
 }
 
-TEST_CASE("a dropped frame stops the pipeline; the throttled load counts kept frames",
+TEST_CASE("a dropped frame stops the pipeline, the throttled load counts kept frames",
           "[filters]") {
   const model::Pipeline pipeline = *filters::preset_pipeline("P2_paper2");
   REQUIRE(pipeline.stages.size() == 3);

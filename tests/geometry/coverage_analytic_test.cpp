@@ -116,7 +116,7 @@ TEST_CASE("a 360-degree band above the body gives a constant curve, shaded by th
   CHECK_THAT(coverage.complete.min, WithinAbs(coverage.complete.mean, 1e-9));
 }
 
-TEST_CASE("two identical sensors cover what one covers; redundancy is the overlap") {
+TEST_CASE("two identical sensors cover what one covers, redundancy is the overlap") {
   TestRig one(pyramid(60, 40, 0.2, 4.0), 0.4, 1.0, 3.0);
   one.mount({0.41, 0, 0.5}, {0, 15, 0});
   TestRig two = one;

@@ -105,7 +105,7 @@ TEST_CASE("metrics --filtering-loads: U_f = s/point x the datasheet's points per
         Approx(1e-8 * 640 * 576 * 30 + 3 * 2e-8 * 224 * 171 * 15));
 }
 
-TEST_CASE("filter --write-loads records every sensor of the rig; without --scene it is refused",
+TEST_CASE("filter --write-loads records every sensor of the rig, without --scene it is refused",
           "[filtering_loads]") {
   const TempFolder folder;
   const std::string path = folder.path() + "/loads.yaml";

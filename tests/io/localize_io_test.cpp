@@ -124,7 +124,7 @@ TEST_CASE("CO2 logs: the CSV form and the untimed SubT form", "[localize]") {
         }).find("co2.csv:1:1: z: column is missing") == 0);
 }
 
-TEST_CASE("a log's kind is told by its first line; ground truth files parse", "[localize]") {
+TEST_CASE("a log's kind is told by its first line, ground truth files parse", "[localize]") {
   CHECK(io::log_kind_of("t,x,y,z,bssid,rssi\n", "a") == io::LogKind::rssi);
   CHECK(io::log_kind_of("# c\nt,x,y,z,co2_ppm\n", "a") == io::LogKind::co2);
   CHECK(io::log_kind_of("1 2 400\n", "a") == io::LogKind::co2);

@@ -35,7 +35,7 @@ std::vector<model::Vec3> l_path() {
 
 }  // namespace
 
-TEST_CASE("path loss: range and RSSI are inverse; the paper's model at hand-computed points",
+TEST_CASE("path loss: range and RSSI are inverse, the paper's model at hand-computed points",
           "[localize]") {
   localize::PathLossParams model;  // a = -45 dBm, n = 2.5
   CHECK(localize::rssi_at_range(1.0, model) == Approx(-45.0));
@@ -44,7 +44,7 @@ TEST_CASE("path loss: range and RSSI are inverse; the paper's model at hand-comp
   CHECK(localize::range_from_rssi(-57.5, model) == Approx(std::sqrt(10.0)));  // 10^(12.5 / 25)
 }
 
-TEST_CASE("chunks average the readings' distances; weights are sqrt(c) / r", "[localize]") {
+TEST_CASE("chunks average the readings' distances, weights are sqrt(c) / r", "[localize]") {
   localize::PathLossParams
       model;  // -45 dBm -> 1 m, -70 dBm -> 10 m, -95 dBm -> 100 m (below the cut-off)
   localize::RssiLog log;
@@ -235,7 +235,7 @@ TEST_CASE("collinear positions are reported as degenerate, with both mirror imag
   CHECK((walled.hypotheses[0].position.head<2>() - emitter.head<2>()).norm() < 2e-2);
 }
 
-TEST_CASE("geometry: height spread decides 2D or 3D; the mirror reflects across the path",
+TEST_CASE("geometry: height spread decides 2D or 3D, the mirror reflects across the path",
           "[localize]") {
   std::vector<localize::Chunk> chunks(2);
   chunks[0].position_sum = {0, 0, 0.4};

@@ -139,7 +139,7 @@ TEST_CASE("every named scene builds with triangles") {
   CHECK_THROWS_AS(sim::make_scene("kitchen", 1), std::invalid_argument);
 }
 
-TEST_CASE("scenes are deterministic for a seed; the office's furniture follows the seed") {
+TEST_CASE("scenes are deterministic for a seed, the office's furniture follows the seed") {
   for (const std::string& name : sim::scene_names()) {
     CHECK(sim::make_scene(name, 7).at(3.0).vertices == sim::make_scene(name, 7).at(3.0).vertices);
   }
