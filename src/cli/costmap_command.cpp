@@ -437,7 +437,7 @@ void run_and_report(std::ostream& out, std::ostream& err, const CostmapOptions& 
 int run_costmap(const CostmapOptions& options, std::ostream& out, std::ostream& err) {
   const bool from_file = io::is_scenario_file(options.scenario);
   check_costmap_options(options, from_file);
-  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, "");
+  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, "", &err);
   scenarios::ScenarioParams params = params_from_options(options, inputs);
   model::FilteringLoads loads;
   if (!options.filtering_loads.empty()) {

@@ -48,7 +48,8 @@ struct CoverageOptions {
 int run_coverage(const CoverageOptions& options, std::ostream& out, std::ostream& err) {
   // --sweep's form is checked by its validator; an empty value means no sweep.
   const std::optional<SweepChoice> sweep_choice = parse_sweep(options.sweep_options.sweep);
-  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
+  const RigInputs inputs =
+      load_rig_inputs(options.rig, options.sensors, options.requirements, &err);
   const std::string folder = options.out.empty()
                                  ? "coverage/" + std::filesystem::path(options.rig).stem().string()
                                  : options.out;

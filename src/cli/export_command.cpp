@@ -79,7 +79,8 @@ int run_export(const ExportOptions& given, std::ostream& out) {
   require_option(plugin.empty() || plugin_class_name(plugin), "--hit-layer-plugin",
                  "'" + plugin + "' is not a pluginlib class name",
                  "package::Class or package/Class (letters, digits, '_')");
-  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
+  const RigInputs inputs =
+      load_rig_inputs(options.rig, options.sensors, options.requirements, &out);
   const model::Requirements* requirements = inputs.requirements ? &*inputs.requirements : nullptr;
   const deploy::Deployment deployment =
       deploy::plan_deployment(inputs.rig, inputs.library, requirements, options.deploy);

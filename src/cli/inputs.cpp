@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "rigdesign/io/scene/scene_file_loader.hpp"
+#include "rigdesign/metrics/mount_placement_verdicts.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/sim/scene_library.hpp"
 
@@ -17,6 +18,16 @@ bool names_a_file(const std::string& scene) {
 }
 
 }  // namespace
+
+RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensors_path,
+                          const std::string& requirements_path, std::ostream* say) {
+  RigInputs inputs = io::load_rig_inputs(rig_path, sensors_path, requirements_path);
+  for (model::Diagnostic& warning : metrics::placement_warnings(inputs.rig)) {
+    if (say != nullptr) *say << warning.message() << '\n';
+    inputs.warnings.push_back(std::move(warning));
+  }
+  return inputs;
+}
 
 model::Scene load_scene_option(const std::string& scene, std::uint64_t seed) {
   if (names_a_file(scene)) {

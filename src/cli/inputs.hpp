@@ -1,7 +1,8 @@
 #pragma once
-// What subcommands load from their options: a rig with its library and requirements (io's
-// load_rig_inputs, named here for the commands), and a scene given by name or file.
+// What subcommands load from their options: a rig with its library and requirements, and a
+// scene given by name or file.
 #include <cstdint>
+#include <ostream>
 #include <string>
 
 #include "rigdesign/io/config/rig_inputs.hpp"
@@ -11,8 +12,13 @@ namespace rigdesign::cli {
 
 using io::files_read;
 using io::load_catalog_library;
-using io::load_rig_inputs;
 using io::RigInputs;
+
+/// io::load_rig_inputs, and a warning for each mount buried in the body (metrics' B1, which
+/// `check` judges), added to the inputs' warnings and, with `say`, written there: the commands
+/// that compute with a rig say so, then show what it sees.
+RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensors_path,
+                          const std::string& requirements_path, std::ostream* say = nullptr);
 
 /// `--scene`: a bundled generator's name (office, corridor, ...; `seed` places its furniture)
 /// or a scene file (rigs/README.md, a YAML placing mesh files). Throws InputError naming

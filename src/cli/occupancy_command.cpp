@@ -221,7 +221,7 @@ void write_and_print(const OccupancyOptions& options, report::OccupancyReport& r
 int run_occupancy(const OccupancyOptions& options, std::ostream& out, std::ostream& err) {
   check_options(options);
   if (!options.out.empty()) io::prepare_output_folder(options.out, "--out");
-  const RigInputs inputs = load_rig_inputs(options.rig, "", "");
+  const RigInputs inputs = load_rig_inputs(options.rig, "", "", &err);
   const model::Scene scene = sim::make_scene(options.scene, options.seed);
   require_option(!scene.moving.empty(), "--scene",
                  "'" + options.scene + "' has no moving object to score",

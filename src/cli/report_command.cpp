@@ -34,7 +34,8 @@ struct ReportOptions {
 };
 
 int run_report(const ReportOptions& options, std::ostream& out) {
-  const RigInputs inputs = load_rig_inputs(options.rig, options.sensors, options.requirements);
+  const RigInputs inputs =
+      load_rig_inputs(options.rig, options.sensors, options.requirements, &out);
   const std::string folder = options.out.empty()
                                  ? "report/" + std::filesystem::path(options.rig).stem().string()
                                  : options.out;

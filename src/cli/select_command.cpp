@@ -204,7 +204,8 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
     }
   };
   report::SelectReport report{
-      &catalog, space.option_count(), &requirements, &policy, options.budget, nullptr, {}, {}};
+      &catalog, space.option_count(), &requirements, &policy, options.budget, nullptr, {},
+      {},       space.left_out()};
   if (!options.json) {
     report::print_select_header(report, out);
     if (tolerance && tolerance->any()) {

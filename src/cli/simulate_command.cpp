@@ -44,7 +44,7 @@ int run_simulate(const SimulateOptions& options, std::ostream& out, std::ostream
                  "1 to 100000");
   require_option(options.dropout >= 0 && options.dropout < 1, "--dropout", "is out of range",
                  "a share in [0, 1)");
-  const RigInputs inputs = load_rig_inputs(options.rig, "", "");
+  const RigInputs inputs = load_rig_inputs(options.rig, "", "", &err);
   const model::Scene scene = load_scene_option(options.scene, options.seed);
   sim::SimulationSettings settings;
   settings.dropout = options.dropout;

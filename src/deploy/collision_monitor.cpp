@@ -129,7 +129,7 @@ std::optional<CollisionMonitor> collision_monitor(const model::Rig& rig,
   for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
     const model::Mount& mount = rig.mounts[m];
     const model::SensorMode& mode = library.resolved_mode(mount.sensor_id, mount.mode_id);
-    fovs.emplace_back(mode, mount.T_robot_sensor, occluder);
+    fovs.emplace_back(mode, mount.T_robot_sensor, occluder, mount.housing_link);
     modes.push_back(&mode);
     origins.push_back(mount.T_robot_sensor.translation());
     monitor.sources.push_back(collision_source(m, config.sources[m], mount, mode, options));

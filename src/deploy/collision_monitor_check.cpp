@@ -71,7 +71,7 @@ std::vector<metrics::RequirementResult> check_collision_monitor(
       model::MountLimits limits;
       if (source->min_range > 0.0) limits.min_range = source->min_range;
       fovs.emplace_back(library.resolved_mode(mount.sensor_id, mount.mode_id), mount.T_robot_sensor,
-                        occluder, limits);
+                        occluder, mount.housing_link, limits);
       names.push_back(source->name);
     }
     for (std::size_t s = 0; s < sources.size(); ++s) {

@@ -10,7 +10,8 @@
 
 namespace rigdesign::geometry {
 MountedFov::MountedFov(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
-                       const BodyOccluder& body, const model::MountLimits& limits)
+                       const BodyOccluder& body, const std::string& housing_link,
+                       const model::MountLimits& limits)
     : mode_(&mode),
       T_robot_sensor_(T_robot_sensor),
       R_sensor_robot_(T_robot_sensor.linear().transpose()),
@@ -32,7 +33,7 @@ MountedFov::MountedFov(const model::SensorMode& mode, const model::Pose3& T_robo
   if (body.parts()) {
     may_be_occluded_ = false;  // the body's own test is for cylinders and prisms
     shadow_ = std::make_shared<const SolidShadow>(
-        *body.parts(), origin_,
+        *body.parts(), origin_, housing_link,
         [this](const model::Vec3& a, const model::Vec3& b, const model::Vec3& c) {
           return triangle_may_matter(a, b, c);
         });

@@ -17,25 +17,14 @@ constexpr int kAzimuthBins = 720;
 
 }  // namespace
 
-bool inside_part(const model::BodyPart& part, const model::Vec3& point) {
-  if (part.cylinder) {
-    const model::VerticalCylinder& c = *part.cylinder;
-    return (point.head<2>() - c.centre).norm() < c.radius && point.z() > c.z_min &&
-           point.z() < c.z_max;
-  }
-  return inside_mesh(part.triangles, point);
-}
-
 SolidShadow::SolidShadow(const std::vector<model::BodyPart>& parts, const model::Vec3& origin,
-                         const TriangleTest& may_matter)
+                         const std::string& housing, const TriangleTest& may_matter)
     : origin_(origin), bins_(kAzimuthBins) {
   for (const model::BodyPart& part : parts) {
+    if (!housing.empty() && part.link == housing) continue;
     if (inside_part(part, origin)) {
-      if (std::find(housing_links_.begin(), housing_links_.end(), part.link) ==
-          housing_links_.end()) {
-        housing_links_.push_back(part.link);
-      }
-      continue;
+      buried_in_ = part.link;
+      return;  // every line is blocked whole (blocked_along, blocks)
     }
     if (part.cylinder) {
       const model::VerticalCylinder& c = *part.cylinder;
@@ -134,6 +123,11 @@ const std::vector<int>& SolidShadow::candidates(std::optional<double> section_az
 IntervalSet SolidShadow::blocked_along(const model::Vec3& start, const model::Vec3& direction,
                                        double t_min, double t_max,
                                        std::optional<double> section_azimuth) const {
+  if (!buried_in_.empty()) {
+    IntervalSet whole;
+    whole.append(t_min, t_max);
+    return whole;
+  }
   thread_local std::vector<IntervalSet::Interval> pieces;
   pieces.clear();
   const model::Vec3 c = start - origin_;
@@ -173,6 +167,7 @@ IntervalSet SolidShadow::blocked_along(const model::Vec3& start, const model::Ve
 }
 
 bool SolidShadow::blocks(const model::Vec3& point) const {
+  if (!buried_in_.empty()) return true;
   const model::Vec3 q = point - origin_;
   for (const TriangleShadow& shadow : triangles_) {
     bool inside = true;

@@ -30,4 +30,13 @@ bool inside_mesh(const model::TriangleMesh& mesh, const model::Vec3& point) {
   return std::abs(winding_number(mesh, point)) >= 0.5;
 }
 
+bool inside_part(const model::BodyPart& part, const model::Vec3& point) {
+  if (part.cylinder) {
+    const model::VerticalCylinder& c = *part.cylinder;
+    return (point.head<2>() - c.centre).norm() < c.radius && point.z() > c.z_min &&
+           point.z() < c.z_max;
+  }
+  return inside_mesh(part.triangles, point);
+}
+
 }  // namespace rigdesign::geometry

@@ -22,7 +22,7 @@ PlacedMount place_mount(const model::Rig& rig, const model::Mount& mount,
   const model::SensorMode& mode = library.resolved_mode(mount.sensor_id, mount.mode_id);
   const double distance = rig.distance_for(mount);
   return {mount.id, mount.sensor_id,
-          geometry::MountedFov(mode, mount.T_robot_sensor, body, mount.limits),
+          geometry::MountedFov(mode, mount.T_robot_sensor, body, mount.housing_link, mount.limits),
           ray_spacing(distance, mode.worst_angular_resolution()), mode.noise.sigma(distance)};
 }
 

@@ -19,7 +19,7 @@ std::vector<std::vector<std::size_t>> sectors_broken_by(
   std::vector<geometry::MountedFov> fovs;
   for (const model::Mount& mount : rig.mounts) {
     fovs.emplace_back(library.resolved_mode(mount.sensor_id, mount.mode_id), mount.T_robot_sensor,
-                      body, mount.limits);
+                      body, mount.housing_link, mount.limits);
   }
   std::vector<double> thetas;
   for (const double theta : detail::sampled_azimuths(settings)) {

@@ -15,7 +15,8 @@ constexpr double kBlameEpsilon = 1e-6;
 double mount_share(const model::Mount& mount, const model::SensorMode& mode,
                    const geometry::BodyOccluder& occluder, const geometry::SectionFrame& frame,
                    bool floor) {
-  const geometry::MountedFov fov(mode, mount.T_robot_sensor, occluder, mount.limits);
+  const geometry::MountedFov fov(mode, mount.T_robot_sensor, occluder, mount.housing_link,
+                                 mount.limits);
   if (floor) return geometry::floor_coverage(fov, frame).length() / frame.width();
   return geometry::union_area({geometry::section_polygons(fov, frame, {})}) / frame.area();
 }

@@ -81,7 +81,8 @@ std::vector<MountSection> moved_sections(const model::Mount& mount, const PoseEr
   const model::SensorMode& mode = library.resolved_mode(mount.sensor_id, mount.mode_id);
   const model::SensorMode narrowed = mode.narrowest();  // MountedFov keeps a pointer to it
   const geometry::MountedFov fov(error.narrowest_fov ? narrowed : mode,
-                                 with_error(mount.T_robot_sensor, error), body, mount.limits);
+                                 with_error(mount.T_robot_sensor, error), body, mount.housing_link,
+                                 mount.limits);
   std::vector<MountSection> sections;
   for (const SectorAngle& angle : angles)
     sections.push_back({geometry::section_polygons(fov, angle.frame, tessellation),

@@ -16,6 +16,7 @@
 #include "rigdesign/io/config/sensor_library_loader.hpp"
 #include "rigdesign/io/config/sensor_library_locator.hpp"
 #include "rigdesign/metrics/coverage_findings.hpp"
+#include "rigdesign/metrics/mount_placement_verdicts.hpp"
 #include "rigdesign/metrics/pair_findings.hpp"
 #include "rigdesign/metrics/resultant.hpp"
 #include "rigdesign/metrics/tolerance_coverage.hpp"
@@ -209,6 +210,14 @@ void check_rig(const std::string& path, const std::string& sensors_path,
   for (metrics::RequirementResult& result : pairs.verdicts) {
     report.results.push_back(std::move(result));
     report.result_seconds.push_back(pairs_seconds);
+  }
+  // Issue 52: B1, every sensor where it can be bolted on (needs no requirements).
+  const auto placement_started = Clock::now();
+  std::vector<metrics::RequirementResult> placement = metrics::placement_verdicts(inputs.rig);
+  const double placement_seconds = seconds_since(placement_started);
+  for (metrics::RequirementResult& result : placement) {
+    report.results.push_back(std::move(result));
+    report.result_seconds.push_back(placement_seconds);
   }
 }
 

@@ -93,8 +93,16 @@ json to_json(const SelectReport& report) {
   for (const select::BindingRequirement& item : outcome.binding) {
     binding.push_back({{"requirement", item.requirement}, {"cost_without", item.cost_without}});
   }
+  json left_out = json::array();
+  for (const select::LeftOutPoses& slot : report.left_out) {
+    json reasons = json::array();
+    for (const auto& [reason, count] : slot.reasons)
+      reasons.push_back({{"reason", reason}, {"poses", count}});
+    left_out.push_back({{"slot", slot.slot}, {"poses", slot.of}, {"reasons", reasons}});
+  }
   return {{"budget", report.budget},
           {"within_budget", outcome.within_budget},
+          {"poses_left_out", left_out},
           {"iterations", iterations},
           {"binding", binding},
           {"phases", phases_json(outcome.phases)},

@@ -131,6 +131,12 @@ void print_select_header(const SelectReport& report, std::ostream& out) {
   out << "Catalog: " << catalog.name << " (" << catalog.file << "): " << catalog.slots.size()
       << " slots, " << catalog.sensors.size() << " candidate sensors, " << report.option_count
       << " slot options\n";
+  if (!report.left_out.empty()) {
+    out << "Left out before the search, the sensor's data origin inside the body (a rig with "
+           "them could not be built):\n";
+    for (const select::LeftOutPoses& slot : report.left_out)
+      out << "    " << select::describe(slot) << '\n';
+  }
   out << "Requirements: " << report.requirements->name << " (" << report.requirements->file
       << ")\n";
   out << "Budget: " << usd(report.budget) << "; relaxation policy: "

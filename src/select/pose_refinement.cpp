@@ -39,13 +39,14 @@ struct RasterMargins::State {
   bool single_failure = false;
   std::vector<bool> fails_in_condition;  // per mount, when a condition is to be survived
   std::vector<const model::SensorMode*> modes;
+  std::vector<std::string> housings;  // per mount: its housing link (model::Mount's)
   std::vector<std::vector<geometry::SectionRaster>> rasters;  // per mount, per local angle
 
   State(const SelectionSpace& s, const model::Rig& rig) : space(s), body(rig.body) {}
 
   std::vector<geometry::SectionRaster> rasterise(std::size_t mount,
                                                  const model::Pose3& pose) const {
-    const geometry::MountedFov fov(*modes[mount], pose, body);
+    const geometry::MountedFov fov(*modes[mount], pose, body, housings[mount]);
     std::vector<geometry::SectionRaster> out;
     for (std::size_t i = 0; i < frames.size(); ++i)
       out.push_back(geometry::rasterize(fov, frames[i], grids[i]));
@@ -126,6 +127,7 @@ RasterMargins::RasterMargins(const SelectionSpace& space, const SatisficingTarge
   }
   for (const model::Mount& mount : rig.mounts) {
     s.modes.push_back(&space.library().resolved_mode(mount.sensor_id, mount.mode_id));
+    s.housings.push_back(mount.housing_link);
     if (targets.robustness && targets.robustness->condition)
       s.fails_in_condition.push_back(
           !s.modes.back()->light.immune_to(*targets.robustness->condition));

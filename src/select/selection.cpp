@@ -333,11 +333,14 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
          std::max(1, static_cast<int>(std::ceil(frames.back().h / settings.raster_cell)))});
   }
   options_.resize(catalog.slots.size());
+  BuriedPoses buried = find_buried_poses(catalog, body);
+  left_out_ = std::move(buried.left_out);
   std::vector<CatalogOption*> all;
   for (std::size_t k = 0; k < catalog.slots.size(); ++k) {
     const model::MountingSlot& slot = catalog.slots[k];
     const double distance = slot.distance_of_interest.value_or(catalog.distance_of_interest);
     for (std::size_t p = 0; p < slot.poses.size(); ++p) {
+      if (buried.buried[k][p]) continue;
       model::Mount mount;
       mount.id = slot.id;
       mount.T_robot_sensor = slot.poses[p].T_robot_sensor;
@@ -371,14 +374,16 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
   const int threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
   model::parallel_for(all.size(), threads, [&](std::size_t i) {
     CatalogOption& option = *all[i];
-    const model::Pose3& nominal = catalog.slots[option.slot].poses[option.pose].T_robot_sensor;
+    const model::SlotPose& slot_pose = catalog.slots[option.slot].poses[option.pose];
+    const model::Pose3& nominal = slot_pose.T_robot_sensor;
     // With a tolerance a mode with an FOV spread is judged at its narrowest (a subset of the
     // nominal FOV's directions, so the nominal pose's cells are kept only where it sees too).
     const model::SensorMode narrowed = option.mode->narrowest();
     const model::SensorMode& judged = tolerance_ ? narrowed : *option.mode;
     std::vector<geometry::SectionRaster> sections;
     for (const metrics::PoseError& error : errors) {
-      const geometry::MountedFov fov(judged, metrics::with_error(nominal, error), body);
+      const geometry::MountedFov fov(judged, metrics::with_error(nominal, error), body,
+                                     slot_pose.housing_link);
       for (int a = 0; a < angles; ++a) {
         geometry::SectionRaster seen = geometry::rasterize(fov, frames[a], grids_[a]);
         if (sections.size() < static_cast<std::size_t>(angles)) {
@@ -461,6 +466,7 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
     mount.T_robot_sensor = slot.poses[option->pose].T_robot_sensor;
     mount.urdf_link = slot.poses[option->pose].urdf_link;
     mount.urdf_link_optical = slot.poses[option->pose].urdf_link_optical;
+    mount.housing_link = slot.poses[option->pose].housing_link;
     mount.distance_of_interest = slot.distance_of_interest;
     rig.mounts.push_back(mount);
   }

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <thread>
 
-#include "rigdesign/geometry/mount_placement.hpp"
 #include "rigdesign/io/config/rig_references.hpp"
 #include "rigdesign/io/file_bytes.hpp"
+#include "rigdesign/metrics/mount_placement_verdicts.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 
@@ -61,6 +61,8 @@ void StudioSession::reload() {
                     static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));
     loaded_mounts_ = inputs.rig.mounts;
     diagnostics_ = inputs.warnings;
+    for (model::Diagnostic& warning : metrics::placement_warnings(inputs.rig))
+      diagnostics_.push_back(std::move(warning));
     inputs_ = std::move(inputs);
     body_ = std::make_unique<geometry::BodyOccluder>(inputs_->rig.body);
   } catch (const model::InputError& error) {
@@ -103,8 +105,14 @@ std::size_t StudioSession::index_of(const std::string& mount_id) const {
 // Against the occluder kept for the session: building one bins every triangle of the body.
 void StudioSession::validate(const model::Rig& rig) const {
   model::Diagnostics found = io::check_rig_references(rig, inputs_->library);
-  const model::Diagnostics placement = geometry::check_mount_placement(rig, *body_);
-  for (const model::Diagnostic& d : placement.items()) found.add(d);
+  // A mount buried in the body: check's B1 verdict, in its words, refuses the edit.
+  const std::vector<metrics::RequirementResult> placement =
+      metrics::placement_verdicts(rig, *body_);  // one per mount, in order
+  for (std::size_t i = 0; i < placement.size(); ++i) {
+    if (placement[i].verdict == metrics::Verdict::fail)
+      found.error(placement[i].where, "mounts[" + std::to_string(i) + "].pose",
+                  placement[i].explanation + " (check: B1)", "a sensor origin outside the body");
+  }
   found.throw_if_errors();
 }
 
@@ -130,6 +138,7 @@ void StudioSession::set_pose(const std::string& mount_id, const MountPose& pose)
     // Saved as numbers from now on: the description's link no longer places this sensor.
     mount.urdf_link.clear();
     mount.urdf_link_optical = false;
+    // The sensor stays in its housing: the saved pose states it (`housing:`), as it loads.
   });
   given_poses_[mount_id] = pose;
 }
@@ -209,6 +218,7 @@ std::vector<io::MountEdit> StudioSession::pending_edits() const {
       const MountPose pose = this->pose(mount);
       edit.xyz = pose.xyz;
       edit.rpy_deg = pose.rpy_deg;
+      edit.housing = mount.housing_link;  // written only where the file's pose was urdf_link
     }
     if (edit.kind == io::MountEdit::Kind::add || edit.sensor || edit.mode || edit.xyz)
       edits.push_back(std::move(edit));

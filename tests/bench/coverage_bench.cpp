@@ -30,7 +30,7 @@ struct UrCleaner {
       : rig(io::load_rig(RIGDESIGN_SOURCE_DIR "/rigs/" + file)), body(rig.body) {
     for (const model::Mount& mount : rig.mounts) {
       fovs.emplace_back(*library.find(mount.sensor_id)->find_mode(mount.mode_id),
-                        mount.T_robot_sensor, body);
+                        mount.T_robot_sensor, body, mount.housing_link);
     }
   }
   geometry::SectionFrame frame(int step) const {

@@ -106,9 +106,10 @@ TEST_CASE("zone visibility: a 90 x 90 deg pyramid on a cylinder's face sees |y| 
   mode.frequency = 10.0;
   const geometry::BodyOccluder occluder(body);
   const geometry::MountedFov ahead(mode, model::pose_from_xyz_rpy({0.2, 0, 0.15}, {0, 0, 0}),
-                                   occluder);
+                                   occluder, "");
   const geometry::MountedFov behind(
-      mode, model::pose_from_xyz_rpy({-0.2, 0, 0.15}, {0, 0, model::deg_to_rad(180)}), occluder);
+      mode, model::pose_from_xyz_rpy({-0.2, 0, 0.15}, {0, 0, model::deg_to_rad(180)}), occluder,
+      "");
   const std::vector<model::Vec2> zone = {{0.2, -0.3}, {1.0, -0.3}, {1.0, 0.3}, {0.2, 0.3}};
   deploy::BodyOutline outline;
   outline.radius = 0.2;

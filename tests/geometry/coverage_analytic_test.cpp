@@ -147,7 +147,7 @@ TEST_CASE("line coverage of a pyramid matches its edge planes and range sphere")
   tiny.height = 0.01;
   const geometry::BodyOccluder body(tiny);
   const geometry::MountedFov fov(
-      mode, model::pose_from_xyz_rpy(model::Vec3(0, 0, 1), model::Vec3::Zero()), body);
+      mode, model::pose_from_xyz_rpy(model::Vec3(0, 0, 1), model::Vec3::Zero()), body, "");
   const geometry::IntervalSet covered =
       fov.covered_along(model::Vec3(2, 0, 1), model::Vec3::UnitZ(), -10, 10);
   REQUIRE(covered.intervals().size() == 1);
@@ -198,7 +198,7 @@ TEST_CASE("azimuth culling never drops a section a sensor sees") {
     const geometry::BodyOccluder body(rig.body);
     for (const model::Mount& mount : rig.mounts) {
       const geometry::MountedFov fov(*library.find(mount.sensor_id)->find_mode(mount.mode_id),
-                                     mount.T_robot_sensor, body);
+                                     mount.T_robot_sensor, body, mount.housing_link);
       for (int degrees = 0; degrees < 360; degrees += 2) {
         const geometry::SectionFrame frame =
             geometry::section_frame(body, model::deg_to_rad(degrees), rig.distance_of_interest);

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "rigdesign/geometry/body_from_description.hpp"
+#include "rigdesign/io/robot/collision_body.hpp"
 #include "rigdesign/io/robot/robot_description_loader.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/model/rotation.hpp"
@@ -98,7 +98,7 @@ model::Rig standoff_rig(const std::string& urdf_path) {
   request.path = urdf_path;
   const model::RobotDescription description = io::load_robot_description(request);
   model::Rig rig;
-  rig.body = geometry::body_from_description(description, "base_footprint");
+  rig.body = io::body_from_description(description, "base_footprint");
   rig.distance_of_interest = 2.0;
   model::Mount mount;
   mount.id = "lidar";

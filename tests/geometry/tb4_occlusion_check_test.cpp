@@ -69,7 +69,7 @@ TEST_CASE("TurtleBot 4: exact, raster and a ray-cast sampler agree on the self-o
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
     const model::Mount& mount = rig.mounts[i];
     fovs.emplace_back(*library.find(mount.sensor_id)->find_mode(mount.mode_id),
-                      mount.T_robot_sensor, no_body);
+                      mount.T_robot_sensor, no_body, "");
     casters.emplace_back(body_without(rig.body, own_links[i]));
   }
   constexpr int kColumns = 120;

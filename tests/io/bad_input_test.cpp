@@ -89,8 +89,6 @@ TEST_CASE("bad input: exit 2 with file:line:col and the field") {
        "max_speed: -1"},
       {"body height of zero", "rig.yaml", "  height: 1.0\n", "  height: 0\n", "body.height",
        "height: 0"},
-      {"mount inside the body", "rig.yaml", "xyz: [0.41, 0.0, 0.5]", "xyz: [0.1, 0.0, 0.5]",
-       "mounts[0].pose", "xyz: [0.1, 0.0, 0.5]"},
       {"noise coefficient that is a list", "sensors.yaml", "noise: {a: 0.03}", "noise: {a: [1]}",
        "sensors[1].modes[0].noise.a", "noise: {a: [1]}"},
   };

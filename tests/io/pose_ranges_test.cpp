@@ -5,6 +5,7 @@
 #include "rigdesign/io/config/catalog_loader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/rotation.hpp"
+#include "rigdesign/select/buried_poses.hpp"
 #include "support/cli_runner.hpp"
 #include "support/temp_folder.hpp"
 
@@ -41,7 +42,6 @@ TEST_CASE("pose ranges: every combination, the last axis fastest, labelled", "[i
   const model::MountingSlot& slot = catalog.slots.front();
   // z in {0.2, 0.4, 0.6, 0.8} x pitch in {0, 10, 20, 30, 40}: 20 poses.
   REQUIRE(slot.poses.size() == 20);
-  CHECK(slot.poses_inside_body == 0);
   // Pose 7 = z index 1 (0.4 m), pitch index 2 (20 deg).
   const model::Pose3 expected = model::pose_from_xyz_rpy(
       model::Vec3(0.46, 0.0, 0.4), model::Vec3(0.0, 20 * std::acos(-1.0) / 180, 0.0));
@@ -50,14 +50,22 @@ TEST_CASE("pose ranges: every combination, the last axis fastest, labelled", "[i
   CHECK(slot.poses[0].label == "z 0.2 m, pitch 0 deg");
 }
 
-TEST_CASE("pose ranges: positions inside the body are left out and counted", "[io][select]") {
+TEST_CASE("pose ranges: positions inside the body are left out by select and counted",
+          "[io][select]") {
   TempFolder folder;
-  // x in {0, 0.2, 0.4, 0.6} on a 0.45 m cylinder: three inside, one outside.
+  // x in {0, 0.2, 0.4, 0.6} at z 0.5 on a cylinder of radius 0.45 m and height 1 m: the first
+  // three inside, the last outside.
   const model::Catalog catalog = io::load_catalog(
       folder.write("c.yaml", catalog_with("{xyz: [{min: 0, max: 0.6, step: 0.2}, 0, 0.5]}")));
-  REQUIRE(catalog.slots.front().poses.size() == 1);
-  CHECK(catalog.slots.front().poses_inside_body == 3);
-  CHECK(catalog.slots.front().poses[0].T_robot_sensor.translation().x() == Approx(0.6));
+  REQUIRE(catalog.slots.front().poses.size() == 4);  // the loader keeps every pose
+  const select::BuriedPoses buried =
+      select::find_buried_poses(catalog, geometry::BodyOccluder(catalog.body));
+  CHECK(buried.buried.front() == std::vector<bool>{true, true, true, false});
+  REQUIRE(buried.left_out.size() == 1);
+  CHECK(buried.left_out.front().count() == 3);
+  CHECK(select::describe(buried.left_out.front())
+            .find("front: 3 of 4 poses, 3 inside the robot "
+                  "body") == 0);
 }
 
 TEST_CASE("pose ranges: bad ranges are errors at the range", "[io][select]") {
@@ -78,8 +86,6 @@ TEST_CASE("pose ranges: bad ranges are errors at the range", "[io][select]") {
              Catch::Contains("xyz[2].min") && Catch::Contains("is above max"));
   CHECK_THAT(error_of("{xyz: [0.46, 0, {min: 0.2, max: 0.8, step: 0}]}"),
              Catch::Contains("xyz[2].step") && Catch::Contains("is not positive"));
-  CHECK_THAT(error_of("{xyz: [{min: 0, max: 0.4, step: 0.2}, 0, 0.5]}"),
-             Catch::Contains("inside the body for every value"));
   CHECK_THAT(error_of("{xyz: [0.46, 0, {min: 0.2, max: 0.8}]}"),
              Catch::Contains("xyz[2].step") && Catch::Contains("missing"));
   // Found by fuzzing: 0.1 to 7.8e8 m in steps of 0.05 names 1.6e10 values (an int overflow);

@@ -259,6 +259,7 @@ TEST_CASE("select: a relaxation trace gives the same costs in text, JSON and HTM
                                     2000,
                                     &outcome,
                                     {"out/chosen_rig.yaml", "out/pareto.png"},
+                                    {},
                                     {}};
 
   CHECK(report::chosen_iteration(outcome) == &relaxed);

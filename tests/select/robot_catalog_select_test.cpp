@@ -4,6 +4,8 @@
 // or one sensor mode at one pose) is built into a rig by hand, judged on the exact path, and
 // priced from the sensor library; the cheapest passing cost must be the search's.
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -54,6 +56,23 @@ slots:
 )";
 }
 
+// Issue 52's reproducer, reduced: a scanner slot on the top plate whose height range starts
+// inside the chassis. Only the positions above the chassis can be built.
+std::string jackal_catalog_with_top_scanner() {
+  return jackal_catalog() + R"(  - id: top_scanner
+    pose: {xyz: [0.0, 0.0, {min: 0.11, max: 0.35, step: 0.04}], rpy_deg: [0, 0, 0]}
+    allows: [rplidar_a2m8]
+)";
+}
+
+// Outside the Jackal's chassis box, by hand from jackal.urdf.xacro (lines 13-15: 0.420 x 0.310
+// x 0.184 m; line 112: centred chassis_height / 2 above chassis_link, which is base_link,
+// 0.0655 m above the floor): x in [-0.21, 0.21], y in [-0.155, 0.155], z in [0.0655, 0.2495].
+// The top scanner's column (x = y = 0) meets no other collision part.
+bool outside_jackal_chassis(const model::Vec3& p) {
+  return !(std::abs(p.x()) < 0.21 && std::abs(p.y()) < 0.155 && p.z() > 0.0655 && p.z() < 0.2495);
+}
+
 std::string turtlebot_catalog() {
   return "name: TurtleBot 4 candidates\nsensor_library: " + source_path("sensors.yaml") +
          "\nrobot:\n  description: " +
@@ -93,16 +112,21 @@ struct Choice {
   std::size_t pose = 0;
 };
 
+// Whether a pose can be built, by a test that shares no code with the program's; none: all.
+using Buildable = std::function<bool(const model::Vec3& origin)>;
+
 std::vector<Choice> choices_of(const model::Catalog& catalog, const model::SensorLibrary& library,
-                               const model::MountingSlot& slot) {
+                               const model::MountingSlot& slot, const Buildable& buildable) {
   std::vector<Choice> choices = {Choice{}};
   for (const model::CandidateSensor& candidate : catalog.sensors) {
     const auto& allowed = slot.allowed_sensors;
     if (std::find(allowed.begin(), allowed.end(), candidate.sensor_id) == allowed.end()) continue;
     const model::Sensor* sensor = library.find(candidate.sensor_id);
     for (const std::string& mode : candidate.mode_ids) {
-      for (std::size_t p = 0; p < slot.poses.size(); ++p)
+      for (std::size_t p = 0; p < slot.poses.size(); ++p) {
+        if (buildable && !buildable(slot.poses[p].T_robot_sensor.translation())) continue;
         choices.push_back({sensor, sensor->find_mode(mode), p});
+      }
     }
   }
   return choices;
@@ -111,10 +135,10 @@ std::vector<Choice> choices_of(const model::Catalog& catalog, const model::Senso
 // The cheapest passing price over every combination, on the exact path.
 double brute_force_cost(const model::Catalog& catalog, const model::SensorLibrary& library,
                         const std::vector<model::SectorRequirement>& sectors,
-                        const metrics::CoverageSettings& settings) {
+                        const metrics::CoverageSettings& settings, const Buildable& buildable) {
   std::vector<std::vector<Choice>> slots;
   for (const model::MountingSlot& slot : catalog.slots)
-    slots.push_back(choices_of(catalog, library, slot));
+    slots.push_back(choices_of(catalog, library, slot, buildable));
   std::vector<std::size_t> index(slots.size(), 0);
   double best = std::numeric_limits<double>::infinity();
   while (true) {
@@ -130,6 +154,7 @@ double brute_force_cost(const model::Catalog& catalog, const model::SensorLibrar
       mount.sensor_id = choice.sensor->id;
       mount.mode_id = choice.mode->id;
       mount.T_robot_sensor = catalog.slots[k].poses[choice.pose].T_robot_sensor;
+      mount.housing_link = catalog.slots[k].poses[choice.pose].housing_link;
       rig.mounts.push_back(mount);
       price += choice.sensor->price.usd;
     }
@@ -149,7 +174,8 @@ double brute_force_cost(const model::Catalog& catalog, const model::SensorLibrar
 }
 
 void check_against_brute_force(const std::string& catalog_text,
-                               const std::vector<std::vector<model::SectorRequirement>>& cases) {
+                               const std::vector<std::vector<model::SectorRequirement>>& cases,
+                               const Buildable& buildable = {}) {
   TempFolder folder;
   const model::Catalog catalog = io::load_catalog(folder.write("catalog.yaml", catalog_text));
   // The body is the description's collision geometry, not a cylinder.
@@ -166,7 +192,7 @@ void check_against_brute_force(const std::string& catalog_text,
     requirements.distance = catalog.distance_of_interest;
     const select::Selection selection =
         select::select_cheapest(space, requirements, {}, /*probe=*/true);
-    const double expected = brute_force_cost(catalog, library, sectors, settings);
+    const double expected = brute_force_cost(catalog, library, sectors, settings, buildable);
     INFO("front " << sectors[0].min_complete_coverage << "/" << sectors[0].min_floor_coverage);
     REQUIRE(selection.found == std::isfinite(expected));
     if (!selection.found) continue;
@@ -175,6 +201,11 @@ void check_against_brute_force(const std::string& catalog_text,
     // The chosen rig stands on the same robot: its description and its links.
     CHECK(selection.rig.robot->description == catalog.robot->description);
     CHECK(selection.rig.body.parts.size() == catalog.body.parts.size());
+    if (!buildable) continue;
+    for (const model::Mount& mount : selection.rig.mounts) {
+      INFO(mount.id);
+      CHECK(buildable(mount.T_robot_sensor.translation()));
+    }
   }
   CHECK(feasible >= 2);
 }
@@ -189,6 +220,17 @@ TEST_CASE("select on the Jackal's description equals a brute force on its collis
        {robot_sector("front", -20, 20, 0.5, 0.6), robot_sector("back", 160, 200, 0.0, 0.0)},
        {robot_sector("front", -20, 20, 0.02, 0.0), robot_sector("back", 160, 200, 0.01, 0.0)},
        {robot_sector("front", -20, 20, 0.99, 0.99), robot_sector("back", 160, 200, 0.0, 0.0)}});
+}
+
+TEST_CASE(
+    "select never buries a sensor in the Jackal's chassis: a brute force over the poses a "
+    "hand-computed box leaves agrees",
+    "[select]") {
+  check_against_brute_force(
+      jackal_catalog_with_top_scanner(),
+      {{robot_sector("front", -20, 20, 0.1, 0.1), robot_sector("back", 160, 200, 0.05, 0.05)},
+       {robot_sector("front", -20, 20, 0.02, 0.0), robot_sector("back", 160, 200, 0.01, 0.0)}},
+      outside_jackal_chassis);
 }
 
 TEST_CASE(

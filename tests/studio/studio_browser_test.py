@@ -30,9 +30,11 @@ def number_text(value):
 
 
 def pose_line(fields):
+    """The OAK-D's pose line as the studio saves a pose that was a description link: as
+    numbers, keeping the sensor's housing (the oakd_link box it still sits in, issue 52)."""
     xyz = ", ".join(number_text(v) for v in fields[:3])
     rpy = ", ".join(number_text(v) for v in fields[3:])
-    return f"     pose: {{xyz: [{xyz}], rpy_deg: [{rpy}]}}}}"
+    return f"     pose: {{xyz: [{xyz}], rpy_deg: [{rpy}], housing: oakd_link}}}}"
 
 
 def metrics_of(binary, folder, text, sensors):

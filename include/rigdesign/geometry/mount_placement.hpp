@@ -1,15 +1,29 @@
 #pragma once
+/// Whether a sensor's data origin lies inside the robot body (issue 52 item 1): inside a
+/// cylinder or prism body, or inside a description's collision part other than the sensor's
+/// own housing (model/sensor_housing.hpp). A sensor there sees nothing through that part: on a
+/// real robot it cannot be bolted there. On the surface is allowed.
+#include <optional>
+#include <string>
+
 #include "rigdesign/geometry/body_occluder.hpp"
-#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/rig.hpp"
+#include "rigdesign/model/source_location.hpp"
 
 namespace rigdesign::geometry {
 
-/// A sensor whose origin is inside the robot body would see nothing: each such mount is an
-/// error at its pose. (On the body's surface is allowed.)
-model::Diagnostics check_mount_placement(const model::Rig& rig);
-/// The same against an occluder already built from `rig.body` (building one bins every
-/// triangle of a description's body: the studio checks each drag step against one).
-model::Diagnostics check_mount_placement(const model::Rig& rig, const BodyOccluder& body);
+/// What holds a buried origin: the collision part's link and its <collision> element in the
+/// description, or the cylinder or prism body (link empty) and the rig's `body`.
+struct Burial {
+  std::string link;
+  model::SourceLocation where;
+  /// "inside the collision geometry of link 'chassis_link' (jackal.urdf.xacro:111)".
+  std::string describe() const;
+};
+
+/// Null when a sensor at `origin` whose housing is `housing` (empty: none) is outside the body.
+/// `body` is an occluder built from `robot.body`.
+std::optional<Burial> burial(const model::DescribedRobot& robot, const BodyOccluder& body,
+                             const std::string& housing, const model::Vec3& origin);
 
 }  // namespace rigdesign::geometry

@@ -18,10 +18,13 @@ namespace rigdesign::geometry {
 
 class MountedFov {
  public:
-  /// `limits` (a deployed stack's range limits and filters) narrow the mode's range and drop
-  /// their regions; empty for the design itself.
+  /// `housing_link`: the description link that is the sensor's own housing (model::Mount's),
+  /// the only collision geometry it sees through; empty: none. `limits` (a deployed stack's
+  /// range limits and filters) narrow the mode's range and drop their regions; empty for the
+  /// design itself.
   MountedFov(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
-             const BodyOccluder& body, const model::MountLimits& limits = {});
+             const BodyOccluder& body, const std::string& housing_link,
+             const model::MountLimits& limits = {});
 
   /// True when the sensor measures `p_robot`: inside its FOV and range and not behind the body.
   bool sees(const model::Vec3& p_robot) const;

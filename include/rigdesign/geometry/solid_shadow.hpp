@@ -13,6 +13,7 @@
 
 #include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/geometry/interval_set.hpp"
+#include "rigdesign/geometry/winding_number.hpp"
 #include "rigdesign/model/rig.hpp"
 
 namespace rigdesign::geometry {
@@ -22,16 +23,13 @@ namespace rigdesign::geometry {
 using TriangleTest =
     std::function<bool(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c)>;
 
-/// True when `point` is strictly inside the part (a sensor there sits in its own housing): in
-/// a vertical cylinder, or inside a mesh by its generalized winding number (winding_number.hpp).
-bool inside_part(const model::BodyPart& part, const model::Vec3& point);
-
 class SolidShadow {
  public:
-  /// `parts` in the robot frame. A part that holds `origin` (the sensor's own housing) casts
-  /// no shadow for this sensor and is listed in housing_links().
+  /// `parts` in the robot frame. The parts of link `housing` (the sensor's own housing,
+  /// model/sensor_housing.hpp; empty: none) cast no shadow for this sensor; every other part
+  /// is solid. A sensor whose origin is inside one of them is buried: it sees nothing.
   SolidShadow(const std::vector<model::BodyPart>& parts, const model::Vec3& origin,
-              const TriangleTest& may_matter);
+              const std::string& housing, const TriangleTest& may_matter);
 
   /// The parameters t in [t_min, t_max] at which start + t * direction is hidden. When the
   /// line lies in the vertical half-plane at azimuth `section_azimuth` (about the robot's
@@ -42,9 +40,10 @@ class SolidShadow {
   /// True when `point` is hidden.
   bool blocks(const model::Vec3& point) const;
 
-  const std::vector<std::string>& housing_links() const { return housing_links_; }
+  /// The link of the part the origin is inside of, or empty: the sensor is not buried.
+  const std::string& buried_in() const { return buried_in_; }
   std::size_t triangle_count() const { return triangles_.size(); }
-  bool empty() const { return triangles_.empty() && cylinders_.empty(); }
+  bool empty() const { return triangles_.empty() && cylinders_.empty() && buried_in_.empty(); }
 
  private:
   // n . (p - o) >= offset for each of four planes: three through o and an edge, one the
@@ -67,7 +66,7 @@ class SolidShadow {
   std::vector<CylinderShadow> cylinders_;
   std::vector<std::vector<int>> bins_;  // per azimuth bin: triangles whose shadow reaches it
   std::vector<int> all_;
-  std::vector<std::string> housing_links_;
+  std::string buried_in_;
 };
 
 }  // namespace rigdesign::geometry

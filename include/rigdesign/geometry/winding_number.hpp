@@ -7,6 +7,7 @@
 /// SIGGRAPH 2013) is the sum of the solid angles the triangles subtend at the point over 4 pi:
 /// exactly 1 inside and 0 outside a closed, consistently oriented mesh, and a smooth value in
 /// between near holes, which degrades gracefully where the parity test flips.
+#include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/triangle_mesh.hpp"
 
 namespace rigdesign::geometry {
@@ -18,5 +19,9 @@ double winding_number(const model::TriangleMesh& mesh, const model::Vec3& point)
 
 /// Whether `point` is inside `mesh`: |winding number| >= 1/2, so either orientation works.
 bool inside_mesh(const model::TriangleMesh& mesh, const model::Vec3& point);
+
+/// True when `point` is strictly inside a body part: a vertical cylinder, or a mesh by its
+/// winding number.
+bool inside_part(const model::BodyPart& part, const model::Vec3& point);
 
 }  // namespace rigdesign::geometry

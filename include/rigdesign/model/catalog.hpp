@@ -32,6 +32,7 @@ struct SlotPose {
   /// taken as a camera's optical frame. The chosen rig keeps it.
   std::string urdf_link;
   bool urdf_link_optical = false;
+  std::string housing_link;  ///< as model::Mount::housing_link
 };
 
 /// The names of a pose's six axes, indexed as PoseAxisRange::axis and SlotPose::values, as
@@ -52,7 +53,6 @@ struct MountingSlot {
   /// The poses to choose from: one for a fixed pose, a pose range's grid otherwise (values
   /// that would put the sensor inside the body left out).
   std::vector<SlotPose> poses;
-  int poses_inside_body = 0;  ///< range values left out: the sensor would be inside the body
   std::vector<PoseAxisRange> ranges;  ///< the axes its pose range varies; none for a fixed pose
   std::vector<std::string> allowed_sensors;
   std::optional<double> distance_of_interest;  ///< [m] as a mount's

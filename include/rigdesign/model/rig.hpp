@@ -97,6 +97,9 @@ struct Mount {
   std::string urdf_link;
   /// The link is a camera's optical frame (z forward): the frame the driver stamps with.
   bool urdf_link_optical = false;
+  /// The description link whose collision geometry is this sensor's own housing, the only
+  /// one it sees through (model/sensor_housing.hpp); empty: none, every part is solid to it.
+  std::string housing_link;
   /// `ros: {namespace, topic, frame}`: how this mount's driver is run, where it differs from
   /// the driver's defaults (sensors.yaml `ros2`); empty: the default.
   std::string ros_namespace;  ///< the namespace the driver is launched in

@@ -20,6 +20,8 @@ struct SelectReport {
   const select::RelaxationOutcome* outcome = nullptr;  ///< null while the loop runs
   std::vector<std::string> files;                      ///< written, where they end up
   std::vector<select::PhaseTime> file_phases;          ///< writing them
+  /// Slot poses left out before the search: the sensor would be inside the body.
+  std::vector<select::LeftOutPoses> left_out;
 };
 
 /// The iteration whose rig is written: the first within budget, else the last that found a

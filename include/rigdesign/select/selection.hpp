@@ -13,6 +13,7 @@
 #include "rigdesign/metrics/tolerance_coverage.hpp"
 #include "rigdesign/model/catalog.hpp"
 #include "rigdesign/model/requirements.hpp"
+#include "rigdesign/select/buried_poses.hpp"
 #include "rigdesign/select/phase_progress.hpp"
 #include "rigdesign/select/search.hpp"
 
@@ -67,6 +68,8 @@ class SelectionSpace {
   const std::optional<model::PoseTolerance>& tolerance() const { return tolerance_; }
   const std::vector<geometry::RasterGrid>& grids() const { return grids_; }
   std::size_t option_count() const;
+  /// The slot poses left out before rasterising: the sensor would be inside the body.
+  const std::vector<LeftOutPoses>& left_out() const { return left_out_; }
   /// Every option, per slot (before any requirement filters them).
   const std::vector<std::vector<CatalogOption>>& options() const { return options_; }
   double angle(std::size_t index) const;
@@ -87,6 +90,7 @@ class SelectionSpace {
   std::optional<model::PoseTolerance> tolerance_;
   std::vector<geometry::RasterGrid> grids_;
   std::vector<std::vector<CatalogOption>> options_;  // per slot
+  std::vector<LeftOutPoses> left_out_;
 };
 
 /// One failure the chosen rig was checked against (exact path) and the sectors it breaks.

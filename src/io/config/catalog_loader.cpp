@@ -5,10 +5,10 @@
 #include <set>
 
 #include "io/config/placement_fields.hpp"
-#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
+#include "rigdesign/model/sensor_housing.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -91,29 +91,6 @@ std::optional<model::FilteringLoads> read_measured_loads(MapReader& top,
   return load_filtering_loads(resolved.string());
 }
 
-// A pose range's values that put the sensor inside a cylinder or prism body are left out
-// (counted in the slot); a range with nothing left is an error at the pose.
-std::vector<model::SlotPose> keep_outside_body(std::vector<model::SlotPose> poses,
-                                               const model::RobotBody& body,
-                                               model::MountingSlot& slot, MapReader& pose) {
-  if (poses.size() < 2 || !(body.height > 0.0) || !(body.radius > 0.0)) return poses;
-  const geometry::BodyOccluder occluder(body);
-  std::vector<model::SlotPose> outside;
-  for (model::SlotPose& candidate : poses) {
-    if (occluder.contains(candidate.T_robot_sensor.translation())) {
-      ++slot.poses_inside_body;
-    } else {
-      outside.push_back(std::move(candidate));
-    }
-  }
-  if (outside.empty()) {
-    pose.require(false, "xyz", "puts the sensor inside the body for every value of its range",
-                 "a range with positions on or outside the body's surface");
-    return {model::SlotPose{}};
-  }
-  return outside;
-}
-
 }  // namespace
 
 model::Catalog load_catalog(const std::string& path) {
@@ -169,8 +146,17 @@ model::Catalog load_catalog(const std::string& path) {
     slot.id = io::ros_name(reader, "id", "a slot id (the chosen rig's mount id)");
     if (auto pose = reader.map("pose", Need::required,
                                "a map with xyz and rpy_deg (numbers or ranges), or urdf_link")) {
-      slot.poses =
-          keep_outside_body(io::read_pose_set(*pose, urdf, slot.ranges), catalog.body, slot, *pose);
+      slot.poses = io::read_pose_set(*pose, urdf, slot.ranges);
+      for (model::SlotPose& candidate : slot.poses) {
+        if (candidate.housing_link.empty()) {
+          candidate.housing_link = model::housing_link(catalog, candidate.urdf_link);
+        } else if (urdf && !urdf->failed) {
+          const std::string refusal = model::housing_refusal(catalog, candidate.housing_link);
+          pose->require(refusal.empty(), "housing", "'" + candidate.housing_link + "' " + refusal,
+                        "a description link with collision geometry that is one sensor's own "
+                        "housing");
+        }
+      }
     }
     slot.allowed_sensors = read_names(reader, "allows", "a non-empty list of candidate sensor ids");
     if (reader.has("distance_of_interest")) {

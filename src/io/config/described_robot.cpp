@@ -1,8 +1,8 @@
 // The keys a rig file and a candidate catalog share (issue 51 item 2: one loader for both,
 // where each loader once had its own copy).
 #include "io/config/placement_fields.hpp"
-#include "rigdesign/geometry/body_from_description.hpp"
 #include "rigdesign/io/config/field_checks.hpp"
+#include "rigdesign/io/robot/collision_body.hpp"
 
 namespace rigdesign::io {
 
@@ -28,7 +28,7 @@ DescribedRobotFields read_described_robot(MapReader& top, const std::string& fil
     robot.body = read_body(*body);
   } else if (has_geometry) {
     robot.body =
-        geometry::body_from_description(*links->description, links->base_link, links->base_height);
+        io::body_from_description(*links->description, links->base_link, links->base_height);
     fields.body_from_description = true;
     top.require(robot.body.has_parts(), "robot", "has no collision geometry",
                 "links with <collision> elements, or a `body` (radius or footprint, height)");

@@ -167,7 +167,7 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot, 
       const bool as_optical =
           frame == PoseFrame::optical || (frame == PoseFrame::automatic && named_optical);
       check_link_convention(pose, link, it->second, as_optical, named_optical);
-      if (used) *used = {link, as_optical};
+      if (used) *used = {link, as_optical, ""};
       return as_optical ? it->second * T_optical_sensor : it->second;
     }
     std::vector<std::string> names;
@@ -181,6 +181,12 @@ model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot, 
   }
   const PoseFrame frame = read_frame(pose);
   const model::Pose3 T = xyz_rpy_deg_pose(pose, Need::required);
+  if (pose.has("housing") && used) {
+    used->housing =
+        pose.text("housing", Need::required, "a link of the robot description").value_or("");
+    pose.require(robot.has_value(), "housing", "needs the rig's `robot` description",
+                 "a rig with `robot: {description: robot.urdf.xacro}`");
+  }
   pose.reject_unknown_keys();
   return frame == PoseFrame::optical ? T * T_optical_sensor : T;
 }

@@ -36,6 +36,9 @@ struct RobotLinks {
 struct MountLink {
   std::string name;
   bool optical = false;
+  /// A pose given as numbers may state the sensor's housing link (`housing`); checked by
+  /// the loader against the description (model/sensor_housing.hpp).
+  std::string housing;
 };
 
 /// The `robot` (or `urdf`) map of a rig or catalog at `file`; problems are recorded on `top`.

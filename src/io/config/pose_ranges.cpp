@@ -89,7 +89,8 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
   const YAML::Node rpy = pose.node("rpy_deg");
   if (!holds_range(xyz) && !holds_range(rpy)) {
     MountLink link;
-    model::SlotPose single{read_pose(pose, robot, &link), "", {}, link.name, link.optical};
+    model::SlotPose single{
+        read_pose(pose, robot, &link), "", {}, link.name, link.optical, link.housing};
     return {single};
   }
   std::vector<Axis> axes(6);
@@ -154,7 +155,7 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
     for (int i = 0; i < 6; ++i) values[i] = si(i, v[i]);
     poses.push_back({model::pose_from_xyz_rpy(model::Vec3(values[0], values[1], values[2]),
                                               model::Vec3(values[3], values[4], values[5])),
-                     label, values, "", false});
+                     label, values, "", false, ""});
     for (int i = 5; i >= 0; --i) {  // the last axis varies fastest
       if (++index[i] < axes[i].values.size()) break;
       index[i] = 0;

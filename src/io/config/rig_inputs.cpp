@@ -5,7 +5,6 @@
 #include <cmath>
 #include <filesystem>
 
-#include "rigdesign/geometry/mount_placement.hpp"
 #include "rigdesign/io/config/requirements_loader.hpp"
 #include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/rig_references.hpp"
@@ -90,8 +89,6 @@ RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensor
     const model::Diagnostics references = check_rig_references(inputs.rig, inputs.library);
     for (const model::Diagnostic& diagnostic : references.items()) diagnostics.add(diagnostic);
   }
-  const model::Diagnostics placement = geometry::check_mount_placement(inputs.rig);
-  for (const model::Diagnostic& diagnostic : placement.items()) diagnostics.add(diagnostic);
   diagnostics.throw_if_errors();
   inputs.warnings = diagnostics.items();
   return inputs;

@@ -6,6 +6,7 @@
 #include "io/config/placement_fields.hpp"
 #include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
+#include "rigdesign/model/sensor_housing.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -17,7 +18,20 @@ using io::read_pose;
 using io::read_robot_links;
 using io::RobotLinks;
 
-model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robot) {
+// The sensor's housing: stated with a pose given as numbers (and checked), else derived from
+// the link the pose names (model/sensor_housing.hpp).
+std::string read_housing(MapReader& pose, const io::MountLink& link,
+                         const model::DescribedRobot& described, bool robot_loaded) {
+  if (link.housing.empty()) return model::housing_link(described, link.name);
+  if (!robot_loaded) return "";
+  const std::string refusal = model::housing_refusal(described, link.housing);
+  pose.require(refusal.empty(), "housing", "'" + link.housing + "' " + refusal,
+               "a description link with collision geometry that is one sensor's own housing");
+  return link.housing;
+}
+
+model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robot,
+                        const model::DescribedRobot& described) {
   model::Mount mount;
   mount.where = reader.location();
   mount.id = io::ros_name(reader, "id", "a mount id, unique in the rig");
@@ -32,6 +46,7 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
     mount.T_robot_sensor = read_pose(*pose, robot, &link);
     mount.urdf_link = link.name;
     mount.urdf_link_optical = link.optical;
+    mount.housing_link = read_housing(*pose, link, described, robot && !robot->failed);
   }
   if (reader.has("distance_of_interest")) {
     mount.distance_of_interest =
@@ -108,7 +123,7 @@ model::Rig load_rig(const std::string& path) {
     rig.tolerance = io::pose_tolerance(*tolerance);
   std::set<std::string> ids;
   for (MapReader& reader : top.maps("mounts", Need::required, "a list of mounts")) {
-    model::Mount mount = read_mount(reader, robot);
+    model::Mount mount = read_mount(reader, robot, rig);
     if (!mount.id.empty() && !ids.insert(mount.id).second) {
       reader.require(false, "id", "duplicate mount id '" + mount.id + "'", "unique mount ids");
     }

@@ -134,11 +134,12 @@ Replacement pose_as_numbers(const std::string& text, const std::string& path,
   const std::size_t begin = offset_of_node(text, pose);
   const std::string xyz = "xyz: " + triple_text(*edit.xyz);
   const std::string rpy = "rpy_deg: " + triple_text(*edit.rpy_deg);
+  const std::string housing = edit.housing.empty() ? "" : "housing: " + name_text(edit.housing, 0);
   if (begin < text.size() && text[begin] == '{') {
     const std::size_t end = yaml_text::flow_end(text, begin);
     if (end == std::string::npos)
       refuse(pose, path, field, "could not be located in the file's text", "a map");
-    return {begin, end, "{" + xyz + ", " + rpy + "}"};
+    return {begin, end, "{" + xyz + ", " + rpy + (housing.empty() ? "" : ", " + housing) + "}"};
   }
   const auto column = static_cast<std::size_t>(pose.Mark().column);
   if (begin - yaml_text::line_begin(text, begin) != column ||
@@ -146,9 +147,9 @@ Replacement pose_as_numbers(const std::string& text, const std::string& path,
     refuse(pose, path, field, "could not be located in the file's text",
            "a block map, its keys on lines of their own");
   const std::size_t end = yaml_text::block_content_end(text, begin, column);
-  return {
-      begin, end,
-      xyz + std::string(yaml_text::line_break_at(text, begin)) + std::string(column, ' ') + rpy};
+  const std::string next_line =
+      std::string(yaml_text::line_break_at(text, begin)) + std::string(column, ' ');
+  return {begin, end, xyz + next_line + rpy + (housing.empty() ? "" : next_line + housing)};
 }
 
 // The lines of the block sequence item `item` (from its dash to its last content line and

@@ -113,8 +113,9 @@ std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library
       const model::Vec3 rpy = model::rpy_from_rotation(mount.T_robot_sensor.linear());
       out << "    pose: {xyz: [" << number(xyz.x()) << ", " << number(xyz.y()) << ", "
           << number(xyz.z()) << "], rpy_deg: [" << number(model::rad_to_deg(rpy.x())) << ", "
-          << number(model::rad_to_deg(rpy.y())) << ", " << number(model::rad_to_deg(rpy.z()))
-          << "]}\n";
+          << number(model::rad_to_deg(rpy.y())) << ", " << number(model::rad_to_deg(rpy.z())) << "]"
+          << (mount.housing_link.empty() ? "" : ", housing: " + yaml_quoted(mount.housing_link))
+          << "}\n";
     }
     if (mount.distance_of_interest) {
       out << "    distance_of_interest: " << number(*mount.distance_of_interest) << '\n';

@@ -1,7 +1,8 @@
 #pragma once
 /// What a rig subcommand (and the studio) works on: the rig, the sensor library it refers to
 /// and its requirements, loaded together so that every problem of all three is reported at
-/// once, with the same checks `check` makes (references, mount placement).
+/// once, with the references between them checked. Where the mounts sit in the body is
+/// judged later, with geometry (metrics' B1), not while loading.
 #include <optional>
 #include <string>
 #include <vector>

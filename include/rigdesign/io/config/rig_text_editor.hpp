@@ -21,6 +21,9 @@ struct MountEdit {
   std::optional<std::string> mode;
   std::optional<std::array<double, 3>> xyz;      ///< [m]
   std::optional<std::array<double, 3>> rpy_deg;  ///< [deg]
+  /// The housing a pose taken from urdf_link keeps when it is written as numbers (the
+  /// description link's collision the sensor still sits in); empty: none.
+  std::string housing;
 };
 
 /// `text` (the rig file read from `path`, which names it in errors) with `edits` applied.

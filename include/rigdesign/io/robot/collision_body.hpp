@@ -4,13 +4,14 @@
 /// floor under the robot's centre: REP-105's base_footprint). Boxes and meshes become
 /// triangles exactly; cylinders whose axis is vertical stay round (exact shadows); tilted
 /// cylinders and spheres are tessellated, and each part records its largest distance from
-/// the true surface.
+/// the true surface. This is reading: the collision elements put in the robot frame as the
+/// model's body; loaders make no geometric test with it (containment, occlusion).
 #include <string>
 
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/robot_description.hpp"
 
-namespace rigdesign::geometry {
+namespace rigdesign::io {
 
 /// Sides of a tessellated cylinder (and of a sphere's bands). The polygon is circumscribed,
 /// so the mesh holds the true solid and lies at most r (1 / cos(pi / 48) - 1) = 0.21 % of
@@ -23,4 +24,4 @@ inline constexpr int kRoundSides = 48;
 model::RobotBody body_from_description(const model::RobotDescription& description,
                                        const std::string& base_link, double base_height = 0.0);
 
-}  // namespace rigdesign::geometry
+}  // namespace rigdesign::io

@@ -1,10 +1,10 @@
-#include "rigdesign/geometry/body_from_description.hpp"
+#include "rigdesign/io/robot/collision_body.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-namespace rigdesign::geometry {
+namespace rigdesign::io {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -129,4 +129,4 @@ model::RobotBody body_from_description(const model::RobotDescription& descriptio
   return body;
 }
 
-}  // namespace rigdesign::geometry
+}  // namespace rigdesign::io
