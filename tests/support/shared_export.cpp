@@ -53,10 +53,14 @@ class FileLock {
 
 std::string shared_export(const std::string& rig, const std::vector<std::string>& given) {
   namespace fs = std::filesystem;
-  // `--layer voxel` is export's default: the same files as without it, one folder.
+  // `--layer voxel` and `--ros-distro jazzy` are export's defaults: the same files as without
+  // them, one folder.
   std::vector<std::string> args;
   for (std::size_t i = 0; i < given.size(); ++i) {
-    if (given[i] == "--layer" && i + 1 < given.size() && given[i + 1] == "voxel") {
+    const bool default_value =
+        i + 1 < given.size() && ((given[i] == "--layer" && given[i + 1] == "voxel") ||
+                                 (given[i] == "--ros-distro" && given[i + 1] == "jazzy"));
+    if (default_value) {
       ++i;
       continue;
     }
