@@ -15,6 +15,7 @@
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/yaml_writers.hpp"
 #include "rigdesign/io/output_folder.hpp"
+#include "rigdesign/metrics/mount_placement_verdicts.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/rotation.hpp"
 
@@ -67,6 +68,7 @@ int run_clearpath_import(const ClearpathImportOptions& options, std::ostream& ou
     }
     model::Mount mount;
     mount.id = sensor.name();
+    mount.pose_where = sensor.where;  // findings about its place point at the robot.yaml entry
     mount.sensor_id = sensor.sensor_id;
     mount.mode_id = library_sensor->modes.front().id;  // the sensor's first (default) mode
     model::Pose3 T_parent_sensor = model::Pose3::Identity();
@@ -106,6 +108,9 @@ int run_clearpath_import(const ClearpathImportOptions& options, std::ostream& ou
     out << "  " << mount.id << ": " << mount.sensor_id << " / " << mount.mode_id << ", topic "
         << mount.ros_topic << (mount.ros_frame.empty() ? "" : ", frame " + mount.ros_frame) << '\n';
   for (const std::string& skipped : robot.skipped) out << "  skipped " << skipped << '\n';
+  // A sensor the robot.yaml puts inside the body could not be bolted there (check's B1).
+  for (const model::Diagnostic& warning : metrics::placement_warnings(inputs.rig))
+    out << warning.message() << '\n';
   return kOk;
 }
 

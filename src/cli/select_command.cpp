@@ -203,9 +203,16 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
       progress.update(at.done, at.total, at.detail);
     }
   };
-  report::SelectReport report{
-      &catalog, space.option_count(), &requirements, &policy, options.budget, nullptr, {},
-      {},       space.left_out()};
+  report::SelectReport report{&catalog,
+                              space.option_count(),
+                              &requirements,
+                              &policy,
+                              options.budget,
+                              nullptr,
+                              {},
+                              {},
+                              space.left_out(),
+                              {}};
   if (!options.json) {
     report::print_select_header(report, out);
     if (tolerance && tolerance->any()) {
@@ -230,8 +237,9 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
       },
       on_progress);
   report.outcome = &outcome;
-  report.files = staged.final_names(write_selection_files(
-      report, space, staged, !options.no_renders, on_progress, report.file_phases));
+  report.files = staged.final_names(
+      write_selection_files(report, space, staged, !options.no_renders, on_progress,
+                            report.file_phases, report.deployment_warnings));
   progress.clear();
   staged.commit();
   if (options.json) {

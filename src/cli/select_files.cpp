@@ -176,11 +176,19 @@ std::vector<std::string> write_renders(const report::SelectReport& report,
 }
 
 // What the chosen rig means for its ROS 2 stack, as `rigdesign export` writes it.
+// The collision monitor's warnings (a zone whose edge no source sees) go to `warnings`.
 std::vector<std::string> write_ros_deployment(const model::SensorLibrary& library,
                                               const select::RelaxationIteration& pick,
-                                              const model::Rig& rig, const std::string& folder) {
+                                              const model::Rig& rig, const std::string& folder,
+                                              std::vector<std::string>& warnings) {
   const deploy::Deployment deployment =
       deploy::plan_deployment(rig, library, &pick.requirements, {});
+  if (deployment.collision_monitor) {
+    for (const std::string& note : deployment.collision_monitor->notes) {
+      if (note.rfind("warning: ", 0) == 0)
+        warnings.push_back("deploy/collision_monitor.yaml: " + note);
+    }
+  }
   return deploy::write_deployment(folder + "/deploy", rig, deployment,
                                   report::deployment_header(rig, &pick.requirements));
 }
@@ -195,7 +203,8 @@ std::vector<std::string> write_selection_files(const report::SelectReport& repor
                                                const select::SelectionSpace& space,
                                                const io::StagedFolder& staged, bool renders,
                                                const select::ProgressSink& progress,
-                                               std::vector<select::PhaseTime>& phases) {
+                                               std::vector<select::PhaseTime>& phases,
+                                               std::vector<std::string>& deployment_warnings) {
   const select::RelaxationIteration* pick = report::chosen_iteration(*report.outcome);
   if (pick == nullptr) return {};
   const std::string& folder = staged.path();
@@ -220,7 +229,7 @@ std::vector<std::string> write_selection_files(const report::SelectReport& repor
     append(written, write_renders(report, space.library(), *pick, rig, folder));
   }
   next("ROS 2 deployment");
-  append(written, write_ros_deployment(space.library(), *pick, rig, folder));
+  append(written, write_ros_deployment(space.library(), *pick, rig, folder, deployment_warnings));
   clock.stop(std::to_string(written.size()) + " files: the rig, its requirements, plots" +
              (renders ? ", coverage renders" : "") + " and the ROS 2 deployment");
   return written;

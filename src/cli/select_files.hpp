@@ -17,11 +17,13 @@ namespace rigdesign::cli {
 /// and deploy/ into the staging folder; returns their paths there in that order
 /// (staged.final_names gives where they end up). Writes nothing when no step found a rig.
 /// Needs `report.outcome`; `space` is the one searched (the margin plots sweep in it).
-/// `progress` hears each part as it starts; `phases` gets the time it all took.
+/// `progress` hears each part as it starts; `phases` gets the time it all took;
+/// `deployment_warnings` what the deployment written warns about (a stop zone partly unseen).
 std::vector<std::string> write_selection_files(const report::SelectReport& report,
                                                const select::SelectionSpace& space,
                                                const io::StagedFolder& staged, bool renders,
                                                const select::ProgressSink& progress,
-                                               std::vector<select::PhaseTime>& phases);
+                                               std::vector<select::PhaseTime>& phases,
+                                               std::vector<std::string>& deployment_warnings);
 
 }  // namespace rigdesign::cli

@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "rigdesign/metrics/tolerance_coverage.hpp"
+#include "rigdesign/metrics/tolerance_verdicts.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/report/metrics_report.hpp"

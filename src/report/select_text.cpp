@@ -173,9 +173,14 @@ void print_select_summary(const SelectReport& report, std::ostream& out) {
   print_phases(outcome.phases, "", out);
   print_phases(report.file_phases, "", out);
   if (!report.files.empty()) {
+    // Only what was verified is claimed: the requirements on the exact path (above) and B1
+    // (buried poses never reach the search); the deployment's own warnings follow.
     out << "\nwrote " << report.files.size() << " files in "
         << std::filesystem::path(report.files.front()).parent_path().string()
-        << " (chosen_rig.yaml passes `rigdesign check`)\n";
+        << " (chosen_rig.yaml: every mount outside the body, B1; its deployment: `rigdesign "
+           "check chosen_rig.yaml --nav2 deploy/nav2_costmap.yaml --collision-monitor "
+           "deploy/collision_monitor.yaml`)\n";
+    for (const std::string& warning : report.deployment_warnings) out << warning << '\n';
   }
 }
 

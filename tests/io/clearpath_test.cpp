@@ -142,3 +142,22 @@ TEST_CASE("clearpath: an unknown model, a short xyz, an unknown parent exit 2 at
   CHECK(result.err.find(bad_parent + ":5:15: parent") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(folder.path() + "/r.yaml"));  // nothing half-written
 }
+
+TEST_CASE("clearpath: a sensor the robot.yaml puts inside the chassis is a warning at its entry",
+          "[io]") {
+  test::TempFolder folder;
+  // 0.1 m above base_link, inside the chassis box (0 to 0.184 m above base_link, x within
+  // +-0.21 m: jackal.urdf.xacro lines 13-15 and 112). The entry starts on line 5.
+  const std::string robot_yaml = folder.write(
+      "robot.yaml",
+      "serial_number: j100-0000\nversion: 0\nsensors:\n  lidar2d:\n    - model: hokuyo_ust\n"
+      "      parent: base_link\n      xyz: [0.19, 0.0, 0.1]\n      rpy: [0.0, 0.0, 0.0]\n");
+  const CliResult result =
+      run_cli({"clearpath-import", robot_yaml, "--rig", source_path("rigs/jackal.yaml"), "--to",
+               folder.path() + "/rig.yaml"});
+  INFO(result.out << result.err);
+  CHECK(result.exit_code == 0);
+  CHECK(result.out.find("robot.yaml:5:") != std::string::npos);
+  CHECK(result.out.find("inside the collision geometry of link 'chassis_link'") !=
+        std::string::npos);
+}

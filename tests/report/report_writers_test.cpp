@@ -260,7 +260,9 @@ TEST_CASE("select: a relaxation trace gives the same costs in text, JSON and HTM
                                     &outcome,
                                     {"out/chosen_rig.yaml", "out/pareto.png"},
                                     {},
-                                    {}};
+                                    {},
+                                    {"deploy/collision_monitor.yaml: warning: stop: 0.1 m of its "
+                                     "2 m boundary is seen by no source"}};
 
   CHECK(report::chosen_iteration(outcome) == &relaxed);
   CHECK(report::describe(relaxed.targets) == "F >= 10 Hz, R <= 150 mm");
@@ -275,7 +277,9 @@ TEST_CASE("select: a relaxation trace gives the same costs in text, JSON and HTM
                  "(pc)  WITHIN BUDGET\n      front: cam/m30\n    search: 5 nodes"));
   CHECK(contains(text, "\nChosen rig (1234 USD <= budget 2000 USD): front: cam/m30\n"));
   CHECK(contains(text, "  SC complete mean 36.8 %, floor mean 47 % (exact path)\n"));
-  CHECK(contains(text, "\nwrote 2 files in out (chosen_rig.yaml passes `rigdesign check`)\n"));
+  CHECK(contains(text, "\nwrote 2 files in out (chosen_rig.yaml: every mount outside the body"));
+  // The deployment's own warning, said in the main job's output (issue 52 item 6).
+  CHECK(contains(text, "deploy/collision_monitor.yaml: warning: stop: 0.1 m of its 2 m"));
 
   const json document = report::to_json(report);
   CHECK(document["within_budget"] == true);

@@ -22,6 +22,9 @@ struct SelectReport {
   std::vector<select::PhaseTime> file_phases;          ///< writing them
   /// Slot poses left out before the search: the sensor would be inside the body.
   std::vector<select::LeftOutPoses> left_out;
+  /// What the deployment written for the chosen rig warns about (a collision monitor zone
+  /// whose edge no source sees), each with the file it is about.
+  std::vector<std::string> deployment_warnings;
 };
 
 /// The iteration whose rig is written: the first within budget, else the last that found a
