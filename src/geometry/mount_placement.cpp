@@ -1,5 +1,6 @@
 #include "rigdesign/geometry/mount_placement.hpp"
 
+#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/geometry/winding_number.hpp"
 
 namespace rigdesign::geometry {
@@ -9,10 +10,11 @@ std::string Burial::describe() const {
   return "inside the collision geometry of link '" + link + "' (" + model::to_string(where) + ")";
 }
 
-std::optional<Burial> burial(const model::DescribedRobot& robot, const BodyOccluder& body,
-                             const std::string& housing, const model::Vec3& origin) {
+std::optional<Burial> burial(const model::DescribedRobot& robot, const std::string& housing,
+                             const model::Vec3& origin) {
   if (!robot.body.has_parts()) {
-    if (!body.contains(origin)) return std::nullopt;
+    // A cylinder or prism: its occluder bins nothing, so one per question costs little.
+    if (!BodyOccluder(robot.body).contains(origin)) return std::nullopt;
     return Burial{"", robot.body.where};
   }
   for (const model::BodyPart& part : robot.body.parts) {

@@ -5,11 +5,6 @@
 namespace rigdesign::metrics {
 
 std::vector<RequirementResult> placement_verdicts(const model::Rig& rig) {
-  return placement_verdicts(rig, geometry::BodyOccluder(rig.body));
-}
-
-std::vector<RequirementResult> placement_verdicts(const model::Rig& rig,
-                                                  const geometry::BodyOccluder& body) {
   std::vector<RequirementResult> results;
   for (const model::Mount& mount : rig.mounts) {
     RequirementResult result;
@@ -20,7 +15,7 @@ std::vector<RequirementResult> placement_verdicts(const model::Rig& rig,
     result.where = mount.pose_where;
     result.rig_where = mount.pose_where;
     const std::optional<geometry::Burial> buried =
-        geometry::burial(rig, body, mount.housing_link, mount.T_robot_sensor.translation());
+        geometry::burial(rig, mount.housing_link, mount.T_robot_sensor.translation());
     if (buried) {
       result.verdict = Verdict::fail;
       result.limiting_mounts = {mount.id};

@@ -10,7 +10,7 @@ std::size_t LeftOutPoses::count() const {
   return total;
 }
 
-BuriedPoses find_buried_poses(const model::Catalog& catalog, const geometry::BodyOccluder& body) {
+BuriedPoses find_buried_poses(const model::Catalog& catalog) {
   BuriedPoses found;
   for (const model::MountingSlot& slot : catalog.slots) {
     std::vector<bool>& buried = found.buried.emplace_back(slot.poses.size(), false);
@@ -18,7 +18,7 @@ BuriedPoses find_buried_poses(const model::Catalog& catalog, const geometry::Bod
     for (std::size_t p = 0; p < slot.poses.size(); ++p) {
       const model::SlotPose& pose = slot.poses[p];
       const std::optional<geometry::Burial> burial =
-          geometry::burial(catalog, body, pose.housing_link, pose.T_robot_sensor.translation());
+          geometry::burial(catalog, pose.housing_link, pose.T_robot_sensor.translation());
       if (!burial) continue;
       buried[p] = true;
       ++left_out.reasons[burial->describe()];

@@ -333,7 +333,7 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
          std::max(1, static_cast<int>(std::ceil(frames.back().h / settings.raster_cell)))});
   }
   options_.resize(catalog.slots.size());
-  BuriedPoses buried = find_buried_poses(catalog, body);
+  BuriedPoses buried = find_buried_poses(catalog);
   left_out_ = std::move(buried.left_out);
   std::vector<CatalogOption*> all;
   for (std::size_t k = 0; k < catalog.slots.size(); ++k) {

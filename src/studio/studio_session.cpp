@@ -44,7 +44,6 @@ StudioSession::StudioSession(std::string rig_path, std::string sensors_path,
 
 void StudioSession::reload() {
   raster_.reset();
-  body_.reset();
   inputs_.reset();
   loaded_mounts_.clear();
   given_poses_.clear();
@@ -64,7 +63,6 @@ void StudioSession::reload() {
     for (model::Diagnostic& warning : metrics::placement_warnings(inputs.rig))
       diagnostics_.push_back(std::move(warning));
     inputs_ = std::move(inputs);
-    body_ = std::make_unique<geometry::BodyOccluder>(inputs_->rig.body);
   } catch (const model::InputError& error) {
     diagnostics_ = error.diagnostics();
   }
@@ -101,13 +99,13 @@ std::size_t StudioSession::index_of(const std::string& mount_id) const {
                                             "the id of one of the rig's mounts"));
 }
 
-// The checks load_rig_inputs makes of a rig's mounts, so an edit is refused with check's words.
-// Against the occluder kept for the session: building one bins every triangle of the body.
+// The references load_rig_inputs checks and check's B1, so an edit is refused with check's
+// words.
 void StudioSession::validate(const model::Rig& rig) const {
   model::Diagnostics found = io::check_rig_references(rig, inputs_->library);
   // A mount buried in the body: check's B1 verdict, in its words, refuses the edit.
   const std::vector<metrics::RequirementResult> placement =
-      metrics::placement_verdicts(rig, *body_);  // one per mount, in order
+      metrics::placement_verdicts(rig);  // one per mount, in order
   for (std::size_t i = 0; i < placement.size(); ++i) {
     if (placement[i].verdict == metrics::Verdict::fail)
       found.error(placement[i].where, "mounts[" + std::to_string(i) + "].pose",

@@ -58,8 +58,7 @@ TEST_CASE("pose ranges: positions inside the body are left out by select and cou
   const model::Catalog catalog = io::load_catalog(
       folder.write("c.yaml", catalog_with("{xyz: [{min: 0, max: 0.6, step: 0.2}, 0, 0.5]}")));
   REQUIRE(catalog.slots.front().poses.size() == 4);  // the loader keeps every pose
-  const select::BuriedPoses buried =
-      select::find_buried_poses(catalog, geometry::BodyOccluder(catalog.body));
+  const select::BuriedPoses buried = select::find_buried_poses(catalog);
   CHECK(buried.buried.front() == std::vector<bool>{true, true, true, false});
   REQUIRE(buried.left_out.size() == 1);
   CHECK(buried.left_out.front().count() == 3);

@@ -6,7 +6,6 @@
 #include <optional>
 #include <string>
 
-#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/source_location.hpp"
 
@@ -22,8 +21,7 @@ struct Burial {
 };
 
 /// Null when a sensor at `origin` whose housing is `housing` (empty: none) is outside the body.
-/// `body` is an occluder built from `robot.body`.
-std::optional<Burial> burial(const model::DescribedRobot& robot, const BodyOccluder& body,
-                             const std::string& housing, const model::Vec3& origin);
+std::optional<Burial> burial(const model::DescribedRobot& robot, const std::string& housing,
+                             const model::Vec3& origin);
 
 }  // namespace rigdesign::geometry

@@ -5,7 +5,6 @@
 /// that holds it, whatever was asked of it.
 #include <vector>
 
-#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/rig.hpp"
@@ -15,10 +14,6 @@ namespace rigdesign::metrics {
 /// One B1 verdict per mount, at the mount's pose: fails naming the link and its <collision>
 /// element in the description (or the rig's `body`).
 std::vector<RequirementResult> placement_verdicts(const model::Rig& rig);
-/// The same against an occluder already built from `rig.body` (the studio judges each drag
-/// step against one: building it bins every triangle of a description's body).
-std::vector<RequirementResult> placement_verdicts(const model::Rig& rig,
-                                                  const geometry::BodyOccluder& body);
 
 /// The same findings as warnings at each buried mount's pose, for the commands that compute
 /// with the rig rather than judge it (coverage, metrics, report, export, the simulations).

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/model/catalog.hpp"
 
 namespace rigdesign::select {
@@ -29,8 +28,7 @@ struct BuriedPoses {
   std::vector<LeftOutPoses> left_out;
 };
 
-/// `body` is an occluder built from `catalog.body`.
-BuriedPoses find_buried_poses(const model::Catalog& catalog, const geometry::BodyOccluder& body);
+BuriedPoses find_buried_poses(const model::Catalog& catalog);
 
 /// "top_scanner: 3 of 7 poses, 3 inside the collision geometry of link 'chassis_link' (...)".
 std::string describe(const LeftOutPoses& left_out);

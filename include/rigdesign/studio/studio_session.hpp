@@ -7,12 +7,10 @@
 /// can show them while the server stays up.
 #include <array>
 #include <map>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/io/config/rig_inputs.hpp"
 #include "rigdesign/io/config/rig_text_editor.hpp"
 #include "rigdesign/metrics/coverage.hpp"
@@ -84,8 +82,6 @@ class StudioSession {
   std::optional<io::RigInputs> inputs_;
   std::vector<model::Mount> loaded_mounts_;  // as in the file at loaded_text_
   std::optional<metrics::RasterCoverage> raster_;
-  // The body as `check` tests placements against, built once (it points into inputs_).
-  std::unique_ptr<geometry::BodyOccluder> body_;
   // Poses as typed or dragged (the numbers a save writes, not read back from a rotation).
   std::map<std::string, MountPose> given_poses_;
   std::vector<model::Diagnostic> diagnostics_;

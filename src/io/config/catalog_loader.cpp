@@ -8,7 +8,6 @@
 #include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/filtering_loads_io.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
-#include "rigdesign/model/sensor_housing.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -148,14 +147,9 @@ model::Catalog load_catalog(const std::string& path) {
                                "a map with xyz and rpy_deg (numbers or ranges), or urdf_link")) {
       slot.poses = io::read_pose_set(*pose, urdf, slot.ranges);
       for (model::SlotPose& candidate : slot.poses) {
-        if (candidate.housing_link.empty()) {
-          candidate.housing_link = model::housing_link(catalog, candidate.urdf_link);
-        } else if (urdf && !urdf->failed) {
-          const std::string refusal = model::housing_refusal(catalog, candidate.housing_link);
-          pose->require(refusal.empty(), "housing", "'" + candidate.housing_link + "' " + refusal,
-                        "a description link with collision geometry that is one sensor's own "
-                        "housing");
-        }
+        const io::MountLink link{candidate.urdf_link, candidate.urdf_link_optical,
+                                 candidate.housing_link};
+        candidate.housing_link = io::read_housing(*pose, link, catalog, urdf && !urdf->failed);
       }
     }
     slot.allowed_sensors = read_names(reader, "allows", "a non-empty list of candidate sensor ids");

@@ -16,6 +16,7 @@
 #include "rigdesign/model/optical_frame.hpp"
 #include "rigdesign/model/polygon_area.hpp"
 #include "rigdesign/model/rotation.hpp"
+#include "rigdesign/model/sensor_housing.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::io {
@@ -143,6 +144,16 @@ void check_link_convention(MapReader& pose, const std::string& link, const model
 }
 
 }  // namespace
+
+std::string read_housing(MapReader& pose, const MountLink& link, const model::DescribedRobot& robot,
+                         bool robot_loaded) {
+  if (link.housing.empty()) return model::housing_link(robot, link.name);
+  if (!robot_loaded) return "";
+  const std::string refusal = model::housing_refusal(robot, link.housing);
+  pose.require(refusal.empty(), "housing", "'" + link.housing + "' " + refusal,
+               "a description link with collision geometry that is one sensor's own housing");
+  return link.housing;
+}
 
 model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot, MountLink* used) {
   // The sensor frame rigdesign mounts by is x-forward; an optical-frame pose is turned into it.

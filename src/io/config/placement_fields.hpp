@@ -60,6 +60,13 @@ DescribedRobotFields read_described_robot(MapReader& top, const std::string& fil
 model::Pose3 read_pose(MapReader& pose, const std::optional<RobotLinks>& robot,
                        MountLink* used = nullptr);
 
+/// The sensor's housing link for a pose read as `link` (model/sensor_housing.hpp): the stated
+/// `housing`, checked against `robot` (an error at `pose` when it is no sensor's own), else
+/// derived from the link the pose names. `robot_loaded`: the description loaded (a stated
+/// housing is not judged against a failed one).
+std::string read_housing(MapReader& pose, const MountLink& link, const model::DescribedRobot& robot,
+                         bool robot_loaded);
+
 /// A catalog slot's pose: as read_pose, or with ranges in place of any of xyz's and rpy_deg's
 /// six numbers, `{min: 0, max: 40, step: 5}`: every combination of their values, in order
 /// (x, y, z, roll, pitch, yaw; the last varying fastest). Errors at the range for min > max,

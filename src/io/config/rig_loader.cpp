@@ -6,7 +6,6 @@
 #include "io/config/placement_fields.hpp"
 #include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
-#include "rigdesign/model/sensor_housing.hpp"
 
 namespace rigdesign::io {
 namespace {
@@ -17,18 +16,6 @@ using io::read_body;
 using io::read_pose;
 using io::read_robot_links;
 using io::RobotLinks;
-
-// The sensor's housing: stated with a pose given as numbers (and checked), else derived from
-// the link the pose names (model/sensor_housing.hpp).
-std::string read_housing(MapReader& pose, const io::MountLink& link,
-                         const model::DescribedRobot& described, bool robot_loaded) {
-  if (link.housing.empty()) return model::housing_link(described, link.name);
-  if (!robot_loaded) return "";
-  const std::string refusal = model::housing_refusal(described, link.housing);
-  pose.require(refusal.empty(), "housing", "'" + link.housing + "' " + refusal,
-               "a description link with collision geometry that is one sensor's own housing");
-  return link.housing;
-}
 
 model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robot,
                         const model::DescribedRobot& described) {
@@ -46,7 +33,7 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
     mount.T_robot_sensor = read_pose(*pose, robot, &link);
     mount.urdf_link = link.name;
     mount.urdf_link_optical = link.optical;
-    mount.housing_link = read_housing(*pose, link, described, robot && !robot->failed);
+    mount.housing_link = io::read_housing(*pose, link, described, robot && !robot->failed);
   }
   if (reader.has("distance_of_interest")) {
     mount.distance_of_interest =
