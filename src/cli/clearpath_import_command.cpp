@@ -109,7 +109,7 @@ int run_clearpath_import(const ClearpathImportOptions& options, std::ostream& ou
         << mount.ros_topic << (mount.ros_frame.empty() ? "" : ", frame " + mount.ros_frame) << '\n';
   for (const std::string& skipped : robot.skipped) out << "  skipped " << skipped << '\n';
   // A sensor the robot.yaml puts inside the body could not be bolted there (check's B1).
-  for (const model::Diagnostic& warning : metrics::placement_warnings(inputs.rig))
+  for (const model::Diagnostic& warning : metrics::placement_warnings(inputs.rig, inputs.library))
     out << warning.message() << '\n';
   return kOk;
 }

@@ -5,6 +5,7 @@
 
 #include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -85,6 +86,8 @@ void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,
                    render::Viewpoint viewpoint, const std::string& path) {
   std::vector<render::ColouredMesh> meshes;
   meshes.push_back({geometry::body_mesh(rig.body), render::kBodyColour, 1.0});
+  for (model::BodyPart& support : geometry::support_parts(rig))
+    meshes.push_back({std::move(support.triangles), render::kBodyColour, 1.0});
   render::View3dOverlay overlay;
   overlay.title = rig.name + ": what each sensor sees, to d = " +
                   model::format_number(rig.distance_of_interest) + " m (" +
@@ -100,6 +103,8 @@ void render_rig_3d(const model::Rig& rig, const model::SensorLibrary& library,
     meshes.push_back(
         {render::visible_fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest, body),
          render::sensor_colour(i), 0.35});
+    if (auto housing = geometry::mount_housing(mount, library))
+      meshes.push_back({std::move(housing->triangles), render::sensor_colour(i), 1.0});
     overlay.legend.push_back(
         {render::sensor_colour(i), mount.id + ": " + mount.sensor_id + " / " + mount.mode_id});
     overlay.labels.push_back(

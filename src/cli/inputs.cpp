@@ -22,7 +22,7 @@ bool names_a_file(const std::string& scene) {
 RigInputs load_rig_inputs(const std::string& rig_path, const std::string& sensors_path,
                           const std::string& requirements_path, std::ostream* say) {
   RigInputs inputs = io::load_rig_inputs(rig_path, sensors_path, requirements_path);
-  for (model::Diagnostic& warning : metrics::placement_warnings(inputs.rig)) {
+  for (model::Diagnostic& warning : metrics::placement_warnings(inputs.rig, inputs.library)) {
     if (say != nullptr) *say << warning.message() << '\n';
     inputs.warnings.push_back(std::move(warning));
   }

@@ -26,6 +26,7 @@
 #include "rigdesign/metrics/tolerance_coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
+#include "rigdesign/report/file_report.hpp"
 #include "rigdesign/report/select_json.hpp"
 #include "rigdesign/report/select_report.hpp"
 #include "rigdesign/report/select_text.hpp"
@@ -137,6 +138,32 @@ std::optional<model::PoseTolerance> tolerance_option(const std::vector<double>& 
   return tolerance;
 }
 
+// Issue 52 item 6: what the chosen rig passes is `check`'s own verdict on the files as written
+// (the rig, its final requirements, the nav2 costmap and collision monitor of its deployment),
+// not a claim: check runs here exactly as a user would run it on them.
+void check_written(report::SelectReport& report, const std::string& sensors_path) {
+  if (report.files.size() < 2) return;
+  const std::filesystem::path folder = std::filesystem::path(report.files.front()).parent_path();
+  report::DeploymentFiles deployment;
+  deployment.nav2 = (folder / "deploy/nav2_costmap.yaml").string();
+  deployment.collision_monitor = (folder / "deploy/collision_monitor.yaml").string();
+  const report::FileReport checked =
+      report::check_file(report.files[0], sensors_path, report.files[1], deployment);
+  report.check_command = "rigdesign check " + report.files[0] + " --requirements " +
+                         report.files[1] + " --nav2 " + deployment.nav2 + " --collision-monitor " +
+                         deployment.collision_monitor;
+  report.check_pass = report::count_verdicts(checked.results, metrics::Verdict::pass);
+  report.check_fail = report::count_verdicts(checked.results, metrics::Verdict::fail);
+  for (const model::Diagnostic& problem : checked.diagnostics) {
+    if (problem.severity == model::Severity::error)
+      report.check_failures.push_back(problem.message());
+  }
+  for (const metrics::RequirementResult& result : checked.results) {
+    if (result.verdict == metrics::Verdict::fail)
+      report.check_failures.push_back(result.id + " " + result.title + ": " + result.explanation);
+  }
+}
+
 int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
   const std::optional<model::PoseTolerance> tolerance = tolerance_option(options.tolerance);
   model::Catalog catalog = io::load_catalog(options.catalog);
@@ -212,6 +239,10 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
                               {},
                               {},
                               space.left_out(),
+                              {},
+                              {},
+                              0,
+                              0,
                               {}};
   if (!options.json) {
     report::print_select_header(report, out);
@@ -242,6 +273,7 @@ int run_select(const SelectOptions& options, std::ostream& out, std::ostream& er
                             report.file_phases, report.deployment_warnings));
   progress.clear();
   staged.commit();
+  check_written(report, space.library().file);
   if (options.json) {
     out << report::to_json(report).dump(2) << '\n';
   } else {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/geometry/mounted_fov.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
@@ -49,7 +50,8 @@ void keep_blind_gap_clouds(const model::Rig& rig, const model::SensorLibrary& li
   for (std::size_t m = 0; m < config.sources.size(); ++m) {
     const model::Mount& mount = rig.mounts[m];
     const geometry::MountedFov fov(library.resolved_mode(mount.sensor_id, mount.mode_id),
-                                   mount.T_robot_sensor, body, mount.housing_link);
+                                   mount.T_robot_sensor, body, mount.housing_link, {},
+                                   geometry::housings_around(rig, library, mount.id));
     double& persistence = config.sources[m].source.observation_persistence;
     for (std::size_t g = 0; g < config.memory.gaps.size(); ++g) {
       const BlindGap& gap = config.memory.gaps[g];

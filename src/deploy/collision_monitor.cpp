@@ -8,6 +8,7 @@
 #include "rigdesign/deploy/sensor_frames.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/geometry/footprint_hull.hpp"
+#include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/geometry/mounted_fov.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
@@ -129,7 +130,8 @@ std::optional<CollisionMonitor> collision_monitor(const model::Rig& rig,
   for (std::size_t m = 0; m < rig.mounts.size(); ++m) {
     const model::Mount& mount = rig.mounts[m];
     const model::SensorMode& mode = library.resolved_mode(mount.sensor_id, mount.mode_id);
-    fovs.emplace_back(mode, mount.T_robot_sensor, occluder, mount.housing_link);
+    fovs.emplace_back(mode, mount.T_robot_sensor, occluder, mount.housing_link,
+                      model::MountLimits{}, geometry::housings_around(rig, library, mount.id));
     modes.push_back(&mode);
     origins.push_back(mount.T_robot_sensor.translation());
     monitor.sources.push_back(collision_source(m, config.sources[m], mount, mode, options));

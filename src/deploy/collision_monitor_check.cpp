@@ -8,6 +8,7 @@
 #include "rigdesign/deploy/costmap_config.hpp"
 #include "rigdesign/deploy/sensor_frames.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/geometry/mounted_fov.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
@@ -71,7 +72,8 @@ std::vector<metrics::RequirementResult> check_collision_monitor(
       model::MountLimits limits;
       if (source->min_range > 0.0) limits.min_range = source->min_range;
       fovs.emplace_back(library.resolved_mode(mount.sensor_id, mount.mode_id), mount.T_robot_sensor,
-                        occluder, mount.housing_link, limits);
+                        occluder, mount.housing_link, limits,
+                        geometry::housings_around(rig, library, mount.id));
       names.push_back(source->name);
     }
     for (std::size_t s = 0; s < sources.size(); ++s) {

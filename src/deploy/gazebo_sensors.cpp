@@ -68,6 +68,8 @@ std::vector<GazeboSensor> gazebo_sensors(const model::Rig& rig, const SensorFram
     // forward) the sensor is turned back to body axes.
     if (frame.optical_frame && *frame.optical_frame == frame.link)
       sensor.T_link_sensor.linear() = model::T_sensor_optical().linear().transpose();
+    // A driver's root stands off the sensor (issue 52 item 4): the sensor keeps its pose.
+    if (frame.data_frame_from_driver) sensor.T_link_sensor = frame.T_link_sensor;
     sensor.frame_id = source.sensor_frame;
     // Added by the export: the mount's optical frame, its new link, or (simulation only) the
     // frame its driver would broadcast.
@@ -75,7 +77,10 @@ std::vector<GazeboSensor> gazebo_sensors(const model::Rig& rig, const SensorFram
                          (frame.optical_frame && frame.data_frame == *frame.optical_frame
                               ? !frame.optical_joint.empty()
                               : sensor.link_added);
-    if (frame.data_frame_from_driver) sensor.simulated_frame = frame.data_frame;
+    if (frame.data_frame_from_driver) {
+      sensor.simulated_frame = frame.data_frame;
+      sensor.T_link_simulated = frame.T_link_data;
+    }
     sensor.ros_topic = source.raw_topic;
     sensor.laser_scan = source.laser_scan;
     sensor.topic = source.raw_topic;

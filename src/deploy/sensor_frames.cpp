@@ -122,6 +122,18 @@ std::optional<DriverNames> driver_names(const model::Mount& mount, const model::
   return DriverNames{driver.frame_id, std::nullopt, driver.frame_id};
 }
 
+// Where the link the export adds sits in the sensor frame: the sensor origin, except for a
+// driver's root frame whose own transforms move the data frame (issue 52 item 4): that root is
+// placed so that root * driver transforms = the designed data frame (the sensor frame, turned
+// to REP-103's optical axes when the data frame is optical).
+model::Pose3 T_sensor_link(const DriverNames& names, const model::Sensor& sensor) {
+  if (!names.from_driver || !sensor.ros2 || !sensor.ros2->T_root_data)
+    return model::Pose3::Identity();
+  const model::Pose3 T_sensor_data =
+      sensor.ros2->data_frame_optical ? model::T_sensor_optical() : model::Pose3::Identity();
+  return T_sensor_data * sensor.ros2->T_root_data->inverse();
+}
+
 // What to set on the driver so that it stamps `frame`, or "" when it does by default.
 std::string driver_note(const model::Sensor& sensor, const std::string& frame) {
   if (!sensor.ros2 || !sensor.ros2->exists || sensor.ros2->frame_id == frame) return "";
@@ -195,7 +207,18 @@ SensorFrames sensor_frames(const model::Rig& rig, const model::SensorLibrary& li
       frame.note = driver_note(sensor, frame.data_frame);
     }
     // A link taken as the optical frame stands at the optical pose; its joint is not written.
-    frame.T_parent_link = T_parent_robot * mount.T_robot_sensor;
+    const model::Pose3 T_sensor_added =
+        named[m] ? T_sensor_link(*named[m], sensor) : model::Pose3::Identity();
+    frame.T_parent_link = T_parent_robot * mount.T_robot_sensor * T_sensor_added;
+    frame.T_link_sensor = T_sensor_added.inverse();
+    if (frame.data_frame_from_driver)
+      frame.T_link_data = sensor.ros2->T_root_data.value_or(model::T_sensor_optical());
+    // The datasheet housing on the link the export adds (a description's link has its own).
+    if (!on_link && sensor.housing) {
+      frame.housing = sensor.housing;
+      frame.T_link_housing =
+          T_sensor_added.inverse() * Eigen::Translation3d(sensor.housing->center);
+    }
     if (!on_link) added.add(mount, frame.link, true);
     added.add(mount, frame.joint, false);
     if (!frame.optical_joint.empty()) added.add(mount, *frame.optical_frame, true);

@@ -11,7 +11,8 @@
 namespace rigdesign::geometry {
 MountedFov::MountedFov(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
                        const BodyOccluder& body, const std::string& housing_link,
-                       const model::MountLimits& limits)
+                       const model::MountLimits& limits,
+                       const std::vector<model::BodyPart>& other_housings)
     : mode_(&mode),
       T_robot_sensor_(T_robot_sensor),
       R_sensor_robot_(T_robot_sensor.linear().transpose()),
@@ -30,15 +31,17 @@ MountedFov::MountedFov(const model::SensorMode& mode, const model::Pose3& T_robo
   }
   shape_ = &mode_->fov.shape();
   bound_azimuths();
-  if (body.parts()) {
-    may_be_occluded_ = false;  // the body's own test is for cylinders and prisms
+  // A description's parts and the other mounts' housings are exact shadows; a cylinder or
+  // prism body keeps its own test.
+  may_be_occluded_ = !body.parts() && rays_can_reach(body);
+  if (body.parts() || !other_housings.empty()) {
+    static const std::vector<model::BodyPart> kNoParts;
     shadow_ = std::make_shared<const SolidShadow>(
-        *body.parts(), origin_, housing_link,
+        body.parts() ? *body.parts() : kNoParts, other_housings, origin_, housing_link,
         [this](const model::Vec3& a, const model::Vec3& b, const model::Vec3& c) {
           return triangle_may_matter(a, b, c);
         });
-  } else {
-    may_be_occluded_ = rays_can_reach(body);
+    if (shadow_->empty()) shadow_.reset();  // nothing solid can hide what it sees
   }
 }
 
@@ -55,6 +58,12 @@ bool MountedFov::triangle_may_matter(const model::Vec3& a, const model::Vec3& b,
       std::max({(q[0] - centre).norm(), (q[1] - centre).norm(), (q[2] - centre).norm()});
   if (centre.norm() - spread > mode_->max_range) return false;
   return !shape_->excludes_triangle(q);
+}
+
+bool MountedFov::may_be_hidden_by(const model::TriangleMesh& mesh) const {
+  return std::any_of(mesh.triangles.begin(), mesh.triangles.end(), [&](const auto& t) {
+    return triangle_may_matter(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+  });
 }
 
 // A camera's volume lies inside the convex hull of its origin and its bounding pyramid's four

@@ -17,32 +17,41 @@ constexpr int kAzimuthBins = 720;
 
 }  // namespace
 
-SolidShadow::SolidShadow(const std::vector<model::BodyPart>& parts, const model::Vec3& origin,
-                         const std::string& housing, const TriangleTest& may_matter)
+SolidShadow::SolidShadow(const std::vector<model::BodyPart>& parts,
+                         const std::vector<model::BodyPart>& other_housings,
+                         const model::Vec3& origin, const std::string& housing,
+                         const TriangleTest& may_matter)
     : origin_(origin), bins_(kAzimuthBins) {
-  for (const model::BodyPart& part : parts) {
-    if (!housing.empty() && part.link == housing) continue;
-    if (inside_part(part, origin)) {
-      buried_in_ = part.link;
-      return;  // every line is blocked whole (blocked_along, blocks)
-    }
-    if (part.cylinder) {
-      const model::VerticalCylinder& c = *part.cylinder;
-      model::RobotBody solid;
-      solid.radius = c.radius;
-      solid.height = c.z_max - c.z_min;
-      cylinders_.push_back({BodyOccluder(solid), model::Vec3(c.centre.x(), c.centre.y(), c.z_min)});
-      continue;
-    }
-    const model::TriangleMesh& mesh = part.triangles;
-    for (const auto& t : mesh.triangles) {
-      const model::Vec3& a = mesh.vertices[t[0]];
-      const model::Vec3& b = mesh.vertices[t[1]];
-      const model::Vec3& c = mesh.vertices[t[2]];
-      if (may_matter && !may_matter(a, b, c)) continue;
-      add_triangle(a, b, c);
+  for (const auto* group : {&parts, &other_housings}) {
+    for (const model::BodyPart& part : *group) {
+      if (!housing.empty() && part.link == housing) continue;
+      if (!add_part(part, may_matter)) return;  // every line is blocked whole
     }
   }
+}
+
+bool SolidShadow::add_part(const model::BodyPart& part, const TriangleTest& may_matter) {
+  if (inside_part(part, origin_)) {
+    buried_in_ = part.link;
+    return false;
+  }
+  if (part.cylinder) {
+    const model::VerticalCylinder& c = *part.cylinder;
+    model::RobotBody solid;
+    solid.radius = c.radius;
+    solid.height = c.z_max - c.z_min;
+    cylinders_.push_back({BodyOccluder(solid), model::Vec3(c.centre.x(), c.centre.y(), c.z_min)});
+    return true;
+  }
+  const model::TriangleMesh& mesh = part.triangles;
+  for (const auto& t : mesh.triangles) {
+    const model::Vec3& a = mesh.vertices[t[0]];
+    const model::Vec3& b = mesh.vertices[t[1]];
+    const model::Vec3& c = mesh.vertices[t[2]];
+    if (may_matter && !may_matter(a, b, c)) continue;
+    add_triangle(a, b, c);
+  }
+  return true;
 }
 
 void SolidShadow::add_triangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/metrics/mount_metrics.hpp"
 #include "rigdesign/model/parallel_for.hpp"
 
@@ -22,7 +23,8 @@ PlacedMount place_mount(const model::Rig& rig, const model::Mount& mount,
   const model::SensorMode& mode = library.resolved_mode(mount.sensor_id, mount.mode_id);
   const double distance = rig.distance_for(mount);
   return {mount.id, mount.sensor_id,
-          geometry::MountedFov(mode, mount.T_robot_sensor, body, mount.housing_link, mount.limits),
+          geometry::MountedFov(mode, mount.T_robot_sensor, body, mount.housing_link, mount.limits,
+                               geometry::housings_around(rig, library, mount.id)),
           ray_spacing(distance, mode.worst_angular_resolution()), mode.noise.sigma(distance)};
 }
 

@@ -7,6 +7,7 @@
 
 #include "coverage_parts.hpp"
 #include "rigdesign/geometry/cross_section.hpp"
+#include "rigdesign/geometry/housing_geometry.hpp"
 
 namespace rigdesign::metrics {
 std::vector<std::vector<std::size_t>> sectors_broken_by(
@@ -19,7 +20,8 @@ std::vector<std::vector<std::size_t>> sectors_broken_by(
   std::vector<geometry::MountedFov> fovs;
   for (const model::Mount& mount : rig.mounts) {
     fovs.emplace_back(library.resolved_mode(mount.sensor_id, mount.mode_id), mount.T_robot_sensor,
-                      body, mount.housing_link, mount.limits);
+                      body, mount.housing_link, mount.limits,
+                      geometry::housings_around(rig, library, mount.id));
   }
   std::vector<double> thetas;
   for (const double theta : detail::sampled_azimuths(settings)) {

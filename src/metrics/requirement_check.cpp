@@ -130,9 +130,11 @@ void check_sectors(const model::Rig& rig, const model::Requirements& requirement
       result.limiting_mounts = {rig.mounts[*blame.mount].id};
       result.rig_where = blame.where;
       if (blame.body) {
+        const std::string hider =
+            blame.by_housing ? "the " + blame.part
+                             : "the body" + (blame.part.empty() ? "" : " (" + blame.part + ")");
         hidden_by_body = "; at " + model::format_number(model::rad_to_deg(binding_theta), 4) +
-                         " deg the body" + (blame.part.empty() ? "" : " (" + blame.part + ")") +
-                         " hides " + percent(blame.hidden) + " of what " +
+                         " deg " + hider + " hides " + percent(blame.hidden) + " of what " +
                          rig.mounts[*blame.mount].id + " would see";
       }
     } else if (const auto limiting = sector_limiting_mount(*coverage, binding_theta, binding.floor);

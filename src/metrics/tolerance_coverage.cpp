@@ -6,6 +6,7 @@
 
 #include "coverage_parts.hpp"
 #include "rigdesign/geometry/cross_section.hpp"
+#include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/geometry/section_polygons.hpp"
 #include "rigdesign/model/parallel_for.hpp"
 #include "rigdesign/model/rotation.hpp"
@@ -71,18 +72,20 @@ struct ToleratedMount {
   std::vector<std::vector<std::pair<double, double>>> minima;  // per sample, per sector
 };
 
-// `mount` of the rig moved by `error` (its FOV at the narrowest when the error says so), cut
-// at every angle.
-std::vector<MountSection> moved_sections(const model::Mount& mount, const PoseError& error,
+// Mount `m` of the rig moved by `error` (its FOV at the narrowest when the error says so), cut
+// at every angle; the other housings stay where the rig puts them.
+std::vector<MountSection> moved_sections(const model::Rig& rig, std::size_t m,
+                                         const PoseError& error,
                                          const model::SensorLibrary& library,
                                          const geometry::BodyOccluder& body,
                                          const std::vector<SectorAngle>& angles,
                                          const geometry::TessellationSettings& tessellation) {
+  const model::Mount& mount = rig.mounts[m];
   const model::SensorMode& mode = library.resolved_mode(mount.sensor_id, mount.mode_id);
   const model::SensorMode narrowed = mode.narrowest();  // MountedFov keeps a pointer to it
   const geometry::MountedFov fov(error.narrowest_fov ? narrowed : mode,
                                  with_error(mount.T_robot_sensor, error), body, mount.housing_link,
-                                 mount.limits);
+                                 mount.limits, geometry::housings_around(rig, library, mount.id));
   std::vector<MountSection> sections;
   for (const SectorAngle& angle : angles)
     sections.push_back({geometry::section_polygons(fov, angle.frame, tessellation),
@@ -137,7 +140,7 @@ std::vector<std::pair<double, double>> minima_with_error(
     const std::vector<std::pair<double, double>>& nominal_shares,
     const geometry::TessellationSettings& tessellation) {
   const std::vector<MountSection> sections =
-      moved_sections(rig.mounts[m], error, library, body, angles, tessellation);
+      moved_sections(rig, m, error, library, body, angles, tessellation);
   std::vector<std::pair<double, double>> shares;
   std::vector<const MountSection*> replaced(rig.mounts.size(), nullptr);
   for (std::size_t a = 0; a < angles.size(); ++a) {
@@ -279,8 +282,8 @@ std::vector<SectorTolerance> tolerance_coverage(
           if (share >= (floor ? nominal[s].second : nominal[s].first)) continue;  // no worse
           errors.push_back({rig.mounts[mount.index].id, mount.errors[worst]});
           chosen.emplace_back(mount.index,
-                              moved_sections(rig.mounts[mount.index], mount.errors[worst], library,
-                                             body, angles, settings.tessellation));
+                              moved_sections(rig, mount.index, mount.errors[worst], library, body,
+                                             angles, settings.tessellation));
         }
         if (chosen.size() < 2) continue;  // one mount's worst is already recorded
         std::vector<std::pair<double, double>> shares;

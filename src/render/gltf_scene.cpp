@@ -10,6 +10,7 @@
 
 #include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
 
 namespace rigdesign::render {
@@ -135,6 +136,8 @@ std::string gltf_scene(const std::string& scene_name, const std::string& frame, 
 std::vector<GltfPart> rig_gltf_parts(const model::Rig& rig, const model::SensorLibrary& library) {
   std::vector<GltfPart> parts;
   parts.push_back({"body", geometry::body_mesh(rig.body), kBodyColour, 1.0});
+  for (model::BodyPart& support : geometry::support_parts(rig))
+    parts.push_back({support.link, std::move(support.triangles), kBodyColour, 1.0});
   // The coverage engine's occluder, so the volumes agree with the numbers.
   const geometry::BodyOccluder body(rig.body);
   for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
@@ -143,6 +146,10 @@ std::vector<GltfPart> rig_gltf_parts(const model::Rig& rig, const model::SensorL
     parts.push_back({mount.id,
                      visible_fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest, body),
                      sensor_colour(i), 0.35});
+    // Its datasheet housing, opaque in the sensor's colour (issue 52 item 2).
+    if (auto housing = geometry::mount_housing(mount, library))
+      parts.push_back(
+          {mount.id + " housing", std::move(housing->triangles), sensor_colour(i), 1.0});
   }
   return parts;
 }

@@ -171,6 +171,9 @@ void check_rig(const std::string& path, const std::string& sensors_path,
   const io::RigInputs inputs = io::load_rig_inputs(path, sensors_path, requirements_path);
   report.summary = rig_summary(inputs);
   report.diagnostics = inputs.warnings;
+  // Issue 52 item 3: a sensor nothing holds is a warning (B1 and B2 are verdicts, below).
+  for (model::Diagnostic& floating : metrics::floating_warnings(inputs.rig, inputs.library))
+    report.diagnostics.push_back(std::move(floating));
   // Deployment files are read before the coverage is computed: a typo in them is reported
   // at once, not after the slowest step. They are read with or without requirements: D1
   // (every mount feeds the costmap) needs none.
@@ -211,9 +214,10 @@ void check_rig(const std::string& path, const std::string& sensors_path,
     report.results.push_back(std::move(result));
     report.result_seconds.push_back(pairs_seconds);
   }
-  // Issue 52: B1, every sensor where it can be bolted on (needs no requirements).
+  // Issue 52: B1 and B2, every sensor where it can be bolted on (needs no requirements).
   const auto placement_started = Clock::now();
-  std::vector<metrics::RequirementResult> placement = metrics::placement_verdicts(inputs.rig);
+  std::vector<metrics::RequirementResult> placement =
+      metrics::placement_verdicts(inputs.rig, inputs.library);
   const double placement_seconds = seconds_since(placement_started);
   for (metrics::RequirementResult& result : placement) {
     report.results.push_back(std::move(result));

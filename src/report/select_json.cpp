@@ -98,11 +98,22 @@ json to_json(const SelectReport& report) {
     json reasons = json::array();
     for (const auto& [reason, count] : slot.reasons)
       reasons.push_back({{"reason", reason}, {"poses", count}});
-    left_out.push_back({{"slot", slot.slot}, {"poses", slot.of}, {"reasons", reasons}});
+    json sensors = json::array();
+    for (const auto& [reason, count] : slot.sensor_reasons)
+      sensors.push_back({{"reason", reason}, {"poses", count}});
+    left_out.push_back({{"slot", slot.slot},
+                        {"poses", slot.of},
+                        {"reasons", reasons},
+                        {"sensors_left_out", sensors}});
   }
   return {{"budget", report.budget},
           {"within_budget", outcome.within_budget},
           {"poses_left_out", left_out},
+          {"check",
+           {{"command", report.check_command},
+            {"pass", report.check_pass},
+            {"fail", report.check_fail},
+            {"failures", report.check_failures}}},
           {"iterations", iterations},
           {"binding", binding},
           {"phases", phases_json(outcome.phases)},

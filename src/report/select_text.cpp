@@ -132,8 +132,8 @@ void print_select_header(const SelectReport& report, std::ostream& out) {
       << " slots, " << catalog.sensors.size() << " candidate sensors, " << report.option_count
       << " slot options\n";
   if (!report.left_out.empty()) {
-    out << "Left out before the search, the sensor's data origin inside the body (a rig with "
-           "them could not be built):\n";
+    out << "Left out before the search, a sensor's data origin inside the body or its housing "
+           "cutting into it (a rig with them could not be built):\n";
     for (const select::LeftOutPoses& slot : report.left_out)
       out << "    " << select::describe(slot) << '\n';
   }
@@ -173,13 +173,15 @@ void print_select_summary(const SelectReport& report, std::ostream& out) {
   print_phases(outcome.phases, "", out);
   print_phases(report.file_phases, "", out);
   if (!report.files.empty()) {
-    // Only what was verified is claimed: the requirements on the exact path (above) and B1
-    // (buried poses never reach the search); the deployment's own warnings follow.
+    // Only what was verified is claimed: check's own verdicts on the files written, then the
+    // deployment's own warnings.
     out << "\nwrote " << report.files.size() << " files in "
-        << std::filesystem::path(report.files.front()).parent_path().string()
-        << " (chosen_rig.yaml: every mount outside the body, B1; its deployment: `rigdesign "
-           "check chosen_rig.yaml --nav2 deploy/nav2_costmap.yaml --collision-monitor "
-           "deploy/collision_monitor.yaml`)\n";
+        << std::filesystem::path(report.files.front()).parent_path().string() << '\n';
+    if (!report.check_command.empty()) {
+      out << "checked them: `" << report.check_command << "`: " << report.check_pass << " pass, "
+          << report.check_fail << " fail\n";
+      for (const std::string& failure : report.check_failures) out << "  " << failure << '\n';
+    }
     for (const std::string& warning : report.deployment_warnings) out << warning << '\n';
   }
 }

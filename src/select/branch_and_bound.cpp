@@ -34,6 +34,7 @@ class BranchAndBound {
       result_.raster_cells += static_cast<long>(grid.columns) * (grid.rows + 1);
     result_.coverage_classes = static_cast<long>(classes_.classes());
 
+    find_clashes();
     // Options to try per slot, cheapest first (good incumbents early make the cost bound
     // bite), without the dominated ones; and the angles each one changes the search state at.
     order_.resize(slots);
@@ -91,6 +92,55 @@ class BranchAndBound {
   }
 
  private:
+  // Which options of different slots have housings that overlap (issue 52 item 2): a rig
+  // never holds both. Options far apart (bounding spheres apart) are not tested.
+  void find_clashes() {
+    const auto& slots = problem_.slots;
+    clashes_.resize(slots.size());
+    clashing_.resize(slots.size());
+    std::vector<std::vector<std::pair<model::Vec3, double>>> spheres(slots.size());
+    for (std::size_t k = 0; k < slots.size(); ++k) {
+      clashes_[k].resize(slots[k].size());
+      clashing_[k].assign(slots[k].size(), false);
+      for (const SearchOption& option : slots[k]) {
+        model::Vec3 centre = model::Vec3::Zero();
+        double radius = -1.0;  // no housing
+        if (option.housing) {
+          for (const model::Vec3& p : option.housing->corners) centre += p;
+          centre /= static_cast<double>(option.housing->corners.size());
+          radius = 0.0;
+          for (const model::Vec3& p : option.housing->corners)
+            radius = std::max(radius, (p - centre).norm());
+        }
+        spheres[k].emplace_back(centre, radius);
+      }
+    }
+    for (std::size_t k = 0; k < slots.size(); ++k) {
+      for (std::size_t j = 0; j < k; ++j) {
+        for (std::size_t o = 0; o < slots[k].size(); ++o) {
+          for (std::size_t p = 0; p < slots[j].size(); ++p) {
+            const auto& [a, ra] = spheres[k][o];
+            const auto& [b, rb] = spheres[j][p];
+            if (ra < 0 || rb < 0 || (a - b).norm() > ra + rb) continue;
+            if (!housings_clash(slots[k][o], slots[j][p])) continue;
+            clashes_[k][o].emplace_back(static_cast<int>(j), static_cast<int>(p));
+            clashing_[k][o] = true;
+            clashing_[j][p] = true;
+            ++result_.housing_clashes;
+          }
+        }
+      }
+    }
+  }
+
+  // Whether option o of slot k overlaps a housing already chosen.
+  bool clashes_with_choice(std::size_t k, int o) const {
+    const auto& against = clashes_[k][static_cast<std::size_t>(o)];
+    return std::any_of(against.begin(), against.end(), [&](const std::pair<int, int>& other) {
+      return choice_[static_cast<std::size_t>(other.first)] == other.second;
+    });
+  }
+
   // Whether another option of slot k makes option o pointless: no dearer in price,
   // bandwidth and CPU, surviving the condition if o does, covering every class o covers;
   // identical options keep the first.
@@ -100,6 +150,8 @@ class BranchAndBound {
     for (std::size_t p = 0; p < problem_.slots[k].size(); ++p) {
       if (p == o) continue;
       const SearchOption& other = problem_.slots[k][p];
+      // An option whose housing rules others out cannot stand in for one that does not.
+      if (clashing_[k][p]) continue;
       if (other.price > mine.price || other.bandwidth > mine.bandwidth || other.cpu > mine.cpu ||
           (mine.survives_condition && !other.survives_condition)) {
         continue;
@@ -346,6 +398,7 @@ class BranchAndBound {
       const int o = order_[depth][i];
       const SearchOption& option = problem_.slots[depth][o];
       position_[depth] = static_cast<int>(i);
+      if (clashes_with_choice(depth, o)) continue;
       choice_[depth] = o;
       add(depth, o);
       RigLoad next = load;
@@ -383,6 +436,10 @@ class BranchAndBound {
   std::vector<int> choice_;
   std::vector<int> position_;
   std::vector<std::size_t> tightest_;  // the incumbent's tightest need per sector
+  // Per slot, per option: the (slot, option) pairs of earlier slots whose housings overlap
+  // it, and whether it overlaps any option at all.
+  std::vector<std::vector<std::vector<std::pair<int, int>>>> clashes_;
+  std::vector<std::vector<bool>> clashing_;
   SearchResult result_;
 };
 

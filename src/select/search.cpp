@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 
+#include "rigdesign/geometry/housing_clearance.hpp"
 #include "select/search_rules.hpp"
 
 namespace rigdesign::select {
@@ -74,7 +75,24 @@ bool survives(const SearchProblem& problem, const std::vector<int>& choice) {
   return true;
 }
 
+// Whether two chosen options' housings overlap.
+bool any_clash(const SearchProblem& problem, const std::vector<int>& choice) {
+  for (std::size_t j = 0; j < choice.size(); ++j) {
+    for (std::size_t k = j + 1; k < choice.size(); ++k) {
+      if (choice[j] >= 0 && choice[k] >= 0 &&
+          housings_clash(problem.slots[j][choice[j]], problem.slots[k][choice[k]]))
+        return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
+
+bool housings_clash(const SearchOption& a, const SearchOption& b) {
+  return a.housing && b.housing &&
+         geometry::penetration(*a.housing, *b.housing) > geometry::kHousingTouch;
+}
 
 SearchResult brute_force(const SearchProblem& problem) {
   SearchResult result;
@@ -105,7 +123,7 @@ SearchResult brute_force(const SearchProblem& problem) {
                      meets(sections[a].floor_share(), sector.min_floor);
         }
       }
-      feasible = feasible && survives(problem, choice);
+      feasible = feasible && survives(problem, choice) && !any_clash(problem, choice);
       const std::vector<double> margins = sector_margins(problem, sections);
       if (feasible && improves(result, cost.total, margins)) {
         result.found = true;

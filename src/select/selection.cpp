@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <thread>
 
 #include "rigdesign/geometry/cross_section.hpp"
+#include "rigdesign/geometry/housing_clearance.hpp"
 #include "rigdesign/metrics/failure_coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/parallel_for.hpp"
@@ -245,6 +247,61 @@ void CheapestSearch::explain_infeasible() {
   }
 }
 
+// Where a slot's pose puts a sensor's data origin: there, or where its housing's bottom or
+// back face sits there (model::HousingSeat).
+model::Pose3 seated_pose(const model::Sensor& sensor, const model::Pose3& T_robot_seat,
+                         model::HousingSeat seat) {
+  if (!sensor.housing) return T_robot_seat;
+  return T_robot_seat * Eigen::Translation3d(-sensor.housing->seat(seat));
+}
+
+// The sensor's housing at its data origin `T_robot_sensor` of a slot pose; null when it has
+// none. `buildable` is false, and the reason counted in `reasons`, when the sensor cannot be
+// bolted there: its seated origin inside the body, or its housing cutting into it.
+std::shared_ptr<const geometry::ConvexSolid> housing_at(const model::Sensor& sensor,
+                                                        const model::Pose3& T_robot_sensor,
+                                                        const model::SlotPose& pose, bool recessed,
+                                                        const model::Catalog& catalog,
+                                                        std::map<std::string, std::size_t>& reasons,
+                                                        bool& buildable) {
+  buildable = true;
+  if (!sensor.housing) return nullptr;
+  if (const auto buried =
+          geometry::burial(catalog, pose.housing_link, T_robot_sensor.translation())) {
+    buildable = false;
+    ++reasons[sensor.id + ", its data origin " + buried->describe()];
+    return nullptr;
+  }
+  const std::vector<geometry::HousingClash> clashes =
+      recessed
+          ? std::vector<geometry::HousingClash>{}
+          : geometry::body_clashes(catalog, pose.housing_link, *sensor.housing, T_robot_sensor);
+  if (!clashes.empty()) {
+    buildable = false;
+    ++reasons[sensor.id + ", its housing cutting into " + clashes.front().what()];
+    return nullptr;
+  }
+  return std::make_shared<const geometry::ConvexSolid>(
+      geometry::housing_solid(*sensor.housing, T_robot_sensor));
+}
+
+// Adds each slot's sensors left out for their housing to the poses left out, slot order.
+std::vector<LeftOutPoses> with_sensor_reasons(
+    const model::Catalog& catalog, std::vector<LeftOutPoses> buried,
+    const std::vector<std::map<std::string, std::size_t>>& sensor_reasons) {
+  std::vector<LeftOutPoses> merged;
+  for (std::size_t k = 0; k < catalog.slots.size(); ++k) {
+    const model::MountingSlot& slot = catalog.slots[k];
+    const auto it = std::find_if(buried.begin(), buried.end(),
+                                 [&](const LeftOutPoses& entry) { return entry.slot == slot.id; });
+    LeftOutPoses entry =
+        it != buried.end() ? *it : LeftOutPoses{slot.id, slot.where, slot.poses.size(), {}, {}};
+    entry.sensor_reasons = sensor_reasons[k];
+    if (!entry.reasons.empty() || !entry.sensor_reasons.empty()) merged.push_back(entry);
+  }
+  return merged;
+}
+
 }  // namespace
 
 std::size_t count_catalog_options(const model::Catalog& catalog) {
@@ -334,24 +391,30 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
   }
   options_.resize(catalog.slots.size());
   BuriedPoses buried = find_buried_poses(catalog);
-  left_out_ = std::move(buried.left_out);
+  std::vector<std::map<std::string, std::size_t>> sensor_reasons(catalog.slots.size());
   std::vector<CatalogOption*> all;
   for (std::size_t k = 0; k < catalog.slots.size(); ++k) {
     const model::MountingSlot& slot = catalog.slots[k];
     const double distance = slot.distance_of_interest.value_or(catalog.distance_of_interest);
     for (std::size_t p = 0; p < slot.poses.size(); ++p) {
       if (buried.buried[k][p]) continue;
-      model::Mount mount;
-      mount.id = slot.id;
-      mount.T_robot_sensor = slot.poses[p].T_robot_sensor;
       for (const model::CandidateSensor& candidate : catalog.sensors) {
         if (!slot_allows(slot, candidate.sensor_id)) continue;
         const model::Sensor* sensor = library.find(candidate.sensor_id);
+        model::Mount mount;
+        mount.id = slot.id;
+        mount.T_robot_sensor = seated_pose(*sensor, slot.poses[p].T_robot_sensor, slot.seat);
+        bool buildable = true;
+        const auto housing = housing_at(*sensor, mount.T_robot_sensor, slot.poses[p], slot.recessed,
+                                        catalog, sensor_reasons[k], buildable);
+        if (!buildable) continue;
         for (const std::string& mode_id : candidate.mode_ids) {
           CatalogOption option;
           option.slot = k;
           option.pose = p;
+          option.T_robot_sensor = mount.T_robot_sensor;
           option.sensor = sensor;
+          option.housing = housing;
           option.mode = sensor->find_mode(mode_id);
           option.metrics = metrics::compute_mount_metrics(mount, *sensor, *option.mode, distance);
           // U_f: filtering time per point times points per second (paper 1, eq. 5).
@@ -363,6 +426,7 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
       }
     }
   }
+  left_out_ = with_sensor_reasons(catalog, std::move(buried.left_out), sensor_reasons);
   for (auto& slot : options_)
     for (CatalogOption& option : slot) all.push_back(&option);
   // The poses each option is rasterised at: the nominal one, and the tolerance box's samples.
@@ -375,7 +439,7 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
   model::parallel_for(all.size(), threads, [&](std::size_t i) {
     CatalogOption& option = *all[i];
     const model::SlotPose& slot_pose = catalog.slots[option.slot].poses[option.pose];
-    const model::Pose3& nominal = slot_pose.T_robot_sensor;
+    const model::Pose3& nominal = option.T_robot_sensor;
     // With a tolerance a mode with an FOV spread is judged at its narrowest (a subset of the
     // nominal FOV's directions, so the nominal pose's cells are kept only where it sees too).
     const model::SensorMode narrowed = option.mode->narrowest();
@@ -423,7 +487,7 @@ SearchProblem SelectionSpace::problem_for(
                             option.metrics.light.immune_to(*targets.robustness->condition);
       problem.slots.back().push_back({option.metrics.price, option.metrics.bandwidth,
                                       option.metrics.driver_cpu + option.filtering, option.sections,
-                                      survives});
+                                      survives, option.housing});
       kept[k].push_back(&option);
     }
   }
@@ -463,7 +527,8 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
     mount.id = slot.id;
     mount.sensor_id = option->sensor->id;
     mount.mode_id = option->mode->id;
-    mount.T_robot_sensor = slot.poses[option->pose].T_robot_sensor;
+    mount.T_robot_sensor = option->T_robot_sensor;
+    mount.recessed = slot.recessed;
     mount.urdf_link = slot.poses[option->pose].urdf_link;
     mount.urdf_link_optical = slot.poses[option->pose].urdf_link_optical;
     mount.housing_link = slot.poses[option->pose].housing_link;

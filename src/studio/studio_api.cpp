@@ -7,6 +7,8 @@
 #include <optional>
 
 #include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/housing_clearance.hpp"
+#include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/render/fov_mesh.hpp"
@@ -150,21 +152,44 @@ json state_json(const studio::StudioSession& session, std::chrono::steady_clock:
   return state;
 }
 
+// A mesh as the page's three.js buffers want it: flat positions and indices.
+json mesh_json(const model::TriangleMesh& mesh) {
+  json positions = json::array();
+  for (const model::Vec3& v : mesh.vertices)
+    positions.insert(positions.end(), {v.x(), v.y(), v.z()});
+  json indices = json::array();
+  for (const auto& t : mesh.triangles) indices.insert(indices.end(), {t[0], t[1], t[2]});
+  return {{"positions", positions}, {"indices", indices}};
+}
+
+// The mount's datasheet housing (robot frame) and what it cuts into, in check's B2 words
+// (issue 52 item 7: the page paints a clashing housing red with the reason).
+void add_housing(const model::Rig& rig, const model::SensorLibrary& library, std::size_t index,
+                 json& fov) {
+  const std::optional<model::BodyPart> housing =
+      geometry::mount_housing(rig.mounts[index], library);
+  if (!housing) return;
+  fov["housing"] = mesh_json(housing->triangles);
+  std::string clash;
+  for (const geometry::HousingClash& found : geometry::housing_clashes(rig, library, index))
+    clash += (clash.empty() ? "" : "; ") + found.describe();
+  fov["clash"] = clash.empty() ? "" : rig.mounts[index].id + "'s housing " + clash + " (check: B2)";
+}
+
 json fov_json(const studio::StudioSession& session, const std::string& mount_id) {
   const model::Rig& rig = session.inputs().rig;
-  for (const model::Mount& mount : rig.mounts) {
+  for (std::size_t index = 0; index < rig.mounts.size(); ++index) {
+    const model::Mount& mount = rig.mounts[index];
     if (mount.id != mount_id) continue;
     const geometry::BodyOccluder body(rig.body);
     const model::SensorMode& mode =
         session.inputs().library.resolved_mode(mount.sensor_id, mount.mode_id);
     const model::TriangleMesh mesh =
         render::visible_fov_mesh(mode, mount.T_robot_sensor, rig.distance_of_interest, body);
-    json positions = json::array();
-    for (const model::Vec3& v : mesh.vertices)
-      positions.insert(positions.end(), {v.x(), v.y(), v.z()});
-    json indices = json::array();
-    for (const auto& t : mesh.triangles) indices.insert(indices.end(), {t[0], t[1], t[2]});
-    return {{"mount", mount_id}, {"positions", positions}, {"indices", indices}};
+    json fov = mesh_json(mesh);
+    fov["mount"] = mount_id;
+    add_housing(rig, session.inputs().library, index, fov);
+    return fov;
   }
   throw BadRequest{"no mount '" + mount_id + "'"};
 }

@@ -60,7 +60,7 @@ void StudioSession::reload() {
                     static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));
     loaded_mounts_ = inputs.rig.mounts;
     diagnostics_ = inputs.warnings;
-    for (model::Diagnostic& warning : metrics::placement_warnings(inputs.rig))
+    for (model::Diagnostic& warning : metrics::placement_warnings(inputs.rig, inputs.library))
       diagnostics_.push_back(std::move(warning));
     inputs_ = std::move(inputs);
   } catch (const model::InputError& error) {
@@ -104,9 +104,10 @@ std::size_t StudioSession::index_of(const std::string& mount_id) const {
 void StudioSession::validate(const model::Rig& rig) const {
   model::Diagnostics found = io::check_rig_references(rig, inputs_->library);
   // A mount buried in the body: check's B1 verdict, in its words, refuses the edit.
+  // (B2, a housing cutting into another, is shown, not refused: a drag passes through.)
   const std::vector<metrics::RequirementResult> placement =
-      metrics::placement_verdicts(rig);  // one per mount, in order
-  for (std::size_t i = 0; i < placement.size(); ++i) {
+      metrics::placement_verdicts(rig, inputs_->library);  // B1 one per mount, in order
+  for (std::size_t i = 0; i < rig.mounts.size(); ++i) {
     if (placement[i].verdict == metrics::Verdict::fail)
       found.error(placement[i].where, "mounts[" + std::to_string(i) + "].pose",
                   placement[i].explanation + " (check: B1)", "a sensor origin outside the body");

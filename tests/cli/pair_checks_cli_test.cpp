@@ -15,8 +15,9 @@ std::string two_kinects(const std::string& left_extra, const std::string& right_
          "\nbody: {radius: 0.2, height: 0.5}\ndistance_of_interest: 3.0\nmounts:\n"
          "  - id: left\n    sensor: azure_kinect_dk\n    mode: nfov_unbinned_30\n" +
          left_extra + "    pose: {xyz: [0.21, 0.1, 0.4], rpy_deg: [0, 20, 0]}\n" +
+         "    recessed: true\n" +  // the 126 mm deep housings sit in pockets of the shell
          "  - id: right\n    sensor: azure_kinect_dk\n    mode: nfov_unbinned_30\n" + right_extra +
-         "    pose: {xyz: [0.21, -0.1, 0.4], rpy_deg: [0, 20, 0]}\n";
+         "    pose: {xyz: [0.21, -0.1, 0.4], rpy_deg: [0, 20, 0]}\n    recessed: true\n";
 }
 
 }  // namespace
@@ -28,12 +29,12 @@ TEST_CASE("check: crosstalk fails at both mounts' lines, sync 160 us apart passe
   const CliResult failed = run_cli({"check", bare, "--format", "github"});
   INFO(failed.out << failed.err);
   CHECK(failed.exit_code == 1);
-  // The mounts' entries are on lines 6 and 10 of the file written above.
+  // The mounts' entries are on lines 6 and 11 of the file written above.
   CHECK(failed.out.find("::error file=" + bare +
                         ",line=6,col=5,title=rigdesign D5 crosstalk%3A "
                         "left and right::") != std::string::npos);
   CHECK(failed.out.find("::error file=" + bare +
-                        ",line=10,col=5,title=rigdesign D5 crosstalk%3A "
+                        ",line=11,col=5,title=rigdesign D5 crosstalk%3A "
                         "left and right::") != std::string::npos);
   const std::string synced =
       folder.write("synced.yaml", two_kinects("    crosstalk: {sync: front, delay_us: 0}\n",

@@ -11,7 +11,8 @@ using namespace rigdesign::test;
 namespace {
 
 // Two slots on a small robot, three candidate modes, coarse angles: fast enough to run the
-// whole loop, including the binding-requirement analysis, in a test.
+// whole loop, including the binding-requirement analysis, in a test. The sensors sit in
+// pockets of the shell (`recessed`), lenses 1 cm proud, so every housing fits.
 std::string small_catalog() {
   return "name: Small\nsensor_library: " + source_path("sensors.yaml") + R"(
 body: {radius: 0.3, height: 0.8}
@@ -23,8 +24,8 @@ sensors:
   - {sensor: pmd_pico_flexx, modes: [mode_9_15fps]}
   - {sensor: rplidar_a2m8, modes: [10hz]}
 slots:
-  - {id: front, pose: {xyz: [0.31, 0, 0.4], rpy_deg: [0, 20, 0]}, allows: [realsense_d435, pmd_pico_flexx]}
-  - {id: bumper, pose: {xyz: [0.31, 0, 0.15]}, allows: [rplidar_a2m8]}
+  - {id: front, pose: {xyz: [0.31, 0, 0.4], rpy_deg: [0, 20, 0]}, recessed: true, allows: [realsense_d435, pmd_pico_flexx]}
+  - {id: bumper, pose: {xyz: [0.31, 0, 0.15]}, recessed: true, allows: [rplidar_a2m8]}
 transfer:
   - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}
 cpus:
@@ -311,12 +312,12 @@ TEST_CASE(
   // 87 deg camera): it cannot see -10..10 deg, so no rig survives the front camera's failure.
   std::string catalog = small_catalog();
   const std::string bumper =
-      "  - {id: bumper, pose: {xyz: [0.31, 0, 0.15]}, allows: [rplidar_a2m8]}\n";
+      "  - {id: bumper, pose: {xyz: [0.31, 0, 0.15]}, recessed: true, allows: [rplidar_a2m8]}\n";
   const std::size_t at = catalog.find(bumper);
   REQUIRE(at != std::string::npos);
   catalog.replace(at, bumper.size(),
                   "  - {id: rear, pose: {xyz: [-0.31, 0, 0.4], rpy_deg: [0, 20, 180]}, "
-                  "allows: [realsense_d435]}\n");
+                  "recessed: true, allows: [realsense_d435]}\n");
   setup.folder.write("catalog.yaml", catalog);
   const CliResult result =
       run_cli({"select", "--catalog", setup.catalog, "--requirements", setup.requirements,

@@ -29,11 +29,13 @@ slots:
   - id: front
     pose: {xyz: [0.31, 0, 0.4], rpy_deg: [0, )" +
          front_pitch + R"(, 0]}
+    recessed: true
     allows: [realsense_d435, pmd_pico_flexx]
   - id: front_high
     pose: {xyz: [0.31, 0, 0.7], rpy_deg: [0, {min: 20, max: 40, step: 10}, 0]}
+    recessed: true
     allows: [realsense_d435]
-  - {id: bumper, pose: {xyz: [0.31, 0, 0.15]}, allows: [rplidar_a2m8]}
+  - {id: bumper, pose: {xyz: [0.31, 0, 0.15]}, recessed: true, allows: [rplidar_a2m8]}
 transfer:
   - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}
 cpus:
@@ -180,7 +182,7 @@ filtering_seconds_per_point: 0
 sensors:
   - {sensor: realsense_d435, modes: [z16_848x480_30]}
 slots:
-  - {id: front, pose: {xyz: [0.31, 0, 0.4], rpy_deg: [0, 20, 0]}, allows: [realsense_d435]}
+  - {id: front, pose: {xyz: [0.31, 0, 0.4], rpy_deg: [0, 20, 0]}, recessed: true, allows: [realsense_d435]}
 transfer:
   - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}
 cpus:

@@ -57,13 +57,14 @@ TEST_CASE("export: a lone lidar and camera take their drivers' frames and topics
   CHECK(source_of(d, "top").sensor_frame == velodyne["data"]["frame_id"].as<std::string>());
   CHECK(d.frames.frames[0].link == velodyne["data"]["frame_id"].as<std::string>());
   // realsense2_camera broadcasts camera_link -> ... -> camera_depth_optical_frame itself: the
-  // URDF gives camera_link at the sensor, the costmap reads the depth optical frame.
+  // URDF gives camera_link (with the D435's datasheet housing) at the sensor, the costmap
+  // reads the depth optical frame.
   const YAML::Node realsense = researched("drivers_a.yaml", "realsense_d435");
   CHECK(source_of(d, "front").raw_topic == realsense["data"]["topic"].as<std::string>());
   CHECK(source_of(d, "front").sensor_frame == realsense["data"]["frame_id"].as<std::string>());
   CHECK(d.frames.frames[1].link == realsense["driver_tf_frames"][0].as<std::string>());
   const std::string xacro = deploy::sensors_xacro_text(d.frames, "t");
-  CHECK(xacro.find("<link name=\"${prefix}camera_link\"/>") != std::string::npos);
+  CHECK(xacro.find("<link name=\"${prefix}camera_link\">") != std::string::npos);
   CHECK(xacro.find("camera_depth_optical_frame") == std::string::npos);
 }
 

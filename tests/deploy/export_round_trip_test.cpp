@@ -2,6 +2,8 @@
 // the built-in xacro expander and parsed by urdfdom, is one URDF with every mount's frame to
 // 1e-9 m / 1e-9 rad; and
 // the exported nav2 file, read back by rigdesign's own nav2 reader, gives the same sources.
+#include <yaml-cpp/yaml.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -22,6 +24,31 @@ using namespace rigdesign;
 using namespace rigdesign::test;
 
 namespace {
+
+// The driver's recorded static transforms from its root to its data frame, and whether that
+// frame is optical (data/ros_drivers/driver_transforms.yaml, read with yaml-cpp).
+YAML::Node driver_hops(const std::string& sensor_id, bool& optical) {
+  for (const YAML::Node& entry :
+       YAML::LoadFile(source_path("data/ros_drivers/driver_transforms.yaml"))) {
+    if (entry["sensor"].as<std::string>() != sensor_id) continue;
+    optical = entry["data_axes"].as<std::string>() == "optical";
+    return entry["hops"];
+  }
+  FAIL("no driver transforms recorded for " << sensor_id);
+  return {};
+}
+
+// One hop: URDF's xyz and fixed-axis roll, pitch, yaw (R = Rz Ry Rx).
+model::Pose3 hop_pose(const YAML::Node& hop) {
+  model::Pose3 pose = model::Pose3::Identity();
+  pose.linear() = (Eigen::AngleAxisd(hop["rpy"][2].as<double>(), model::Vec3::UnitZ()) *
+                   Eigen::AngleAxisd(hop["rpy"][1].as<double>(), model::Vec3::UnitY()) *
+                   Eigen::AngleAxisd(hop["rpy"][0].as<double>(), model::Vec3::UnitX()))
+                      .toRotationMatrix();
+  pose.translation() = model::Vec3(hop["xyz"][0].as<double>(), hop["xyz"][1].as<double>(),
+                                   hop["xyz"][2].as<double>());
+  return pose;
+}
 
 double rotation_error(const model::Pose3& a, const model::Pose3& b) {
   const Eigen::AngleAxisd difference(a.linear().transpose() * b.linear());
@@ -77,16 +104,21 @@ TEST_CASE("export: every bundled rig's description plus its sensors.urdf.xacro i
       INFO(mount.id << " in " << frame.data_frame);
       if (!mount.urdf_link.empty()) CHECK(frame.link == mount.urdf_link);
       // A frame the driver broadcasts itself (realsense's camera_depth_optical_frame) is not
-      // the URDF's: the URDF gives its root, the link, at the sensor origin.
+      // the URDF's: the URDF gives its root, the link, and the driver's own transforms
+      // (recorded hop by hop in data/ros_drivers/driver_transforms.yaml) take it there.
       const std::string& named = frame.data_frame_from_driver ? frame.link : frame.data_frame;
       if (frame.data_frame_from_driver) CHECK(combined.T_root_link.count(frame.data_frame) == 0);
       const std::optional<model::Pose3> found = combined.T_base(frames.parent, named);
       REQUIRE(found);
       model::Pose3 T_robot_frame = *found;
       T_robot_frame.translation().z() += rig.base_link_height;
-      const model::Pose3 expected = frame.optical_frame && !frame.data_frame_from_driver
-                                        ? mount.T_robot_sensor * model::T_sensor_optical()
-                                        : mount.T_robot_sensor;
+      bool optical = frame.optical_frame.has_value();
+      if (frame.data_frame_from_driver) {
+        const YAML::Node hops = driver_hops(mount.sensor_id, optical);
+        for (const YAML::Node& hop : hops) T_robot_frame = T_robot_frame * hop_pose(hop);
+      }
+      const model::Pose3 expected =
+          optical ? mount.T_robot_sensor * model::T_sensor_optical() : mount.T_robot_sensor;
       CHECK((T_robot_frame.translation() - expected.translation()).norm() < 1e-9);
       CHECK(rotation_error(T_robot_frame, expected) < 1e-9);
     }

@@ -55,9 +55,10 @@ TEST_CASE("a camera buried in the Jackal's chassis box fails B1, naming the link
   INFO(metrics.out << metrics.err);
   CHECK(metrics.exit_code == 0);
   CHECK(has(metrics.out, "chassis_link"));
-  // (-0.15, 0.10, 0.26): above the box's top (0.2495) and behind the VLP-16 tower.
+  // (-0.15, 0.10, 0.2625): above the box's top (0.2495) and behind the VLP-16 tower, the
+  // D435's 25 mm tall housing standing on it (its origin mid-height: B2 passes).
   const CliResult above =
-      run_cli({"check", folder.write("above.yaml", with_d435_at("[-0.15, 0.10, 0.26]"))});
+      run_cli({"check", folder.write("above.yaml", with_d435_at("[-0.15, 0.10, 0.2625]"))});
   INFO(above.out << above.err);
   CHECK(above.exit_code == 0);
 }

@@ -235,8 +235,8 @@ TEST_CASE("a misspelt field is named with the field it was probably meant to be"
   CHECK(result.exit_code == 2);
   CHECK(result.err.find("mounts[0].distance_of_interst: unknown field (did you mean "
                         "'distance_of_interest'?) (expected one of: crosstalk, "
-                        "distance_of_interest, id, mode, note, pose, ros, sensor, throttle_hz, "
-                        "tolerance)") != std::string::npos);
+                        "distance_of_interest, id, mode, note, pose, recessed, ros, sensor, "
+                        "throttle_hz, tolerance)") != std::string::npos);
 }
 
 TEST_CASE("pose.rpy (URDF's radians habit) is pointed at rpy_deg") {

@@ -4,7 +4,9 @@
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
 #include <catch2/catch.hpp>
 #include <set>
@@ -47,8 +49,9 @@ TEST_CASE("glTF scene: a triangle stands upright on its frame, read by assimp", 
   CHECK(has(0, 2.5f, -2));
 }
 
-TEST_CASE("export --gltf: the body and one FOV volume per mount, as assimp reads them",
-          "[render][gltf]") {
+TEST_CASE(
+    "export --gltf: the body, its supports, each mount's volume and housing, as assimp reads them",
+    "[render][gltf]") {
   test::TempFolder folder;
   const std::string out = folder.path() + "/export";
   const test::CliResult result = test::run_cli(
@@ -60,11 +63,36 @@ TEST_CASE("export --gltf: the body and one FOV volume per mount, as assimp reads
   const aiScene* scene = importer.ReadFile(out + "/rig_fov.gltf", aiProcess_PreTransformVertices);
   INFO(importer.GetErrorString());
   REQUIRE(scene != nullptr);
-  // rigs/cart_two_scanners.yaml: a body and two mounts, front_lidar and rear_lidar.
-  REQUIRE(scene->mNumMeshes == 3);
+  // rigs/cart_two_scanners.yaml: a body, its two brackets, and two mounts, front_lidar and
+  // rear_lidar, each with its volume and its datasheet housing (issue 52 item 2).
+  REQUIRE(scene->mNumMeshes == 7);
   std::set<std::string> names;
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) names.insert(scene->mMeshes[i]->mName.C_Str());
-  CHECK(names == std::set<std::string>{"body", "front_lidar", "rear_lidar"});
+  CHECK(names == std::set<std::string>{"body", "support 'front_bracket'", "support 'rear_bracket'",
+                                       "front_lidar", "front_lidar housing", "rear_lidar",
+                                       "rear_lidar housing"});
+  // The front housing: sensors.yaml's RPLIDAR A1 box (read here with yaml-cpp) about the scanner
+  // at (0.5, 0, 0.2) m, unturned: glTF x = robot x, y = robot z.
+  YAML::Node housing;
+  for (const YAML::Node& sensor : YAML::LoadFile(test::source_path("sensors.yaml"))["sensors"])
+    if (sensor["id"].as<std::string>() == "rplidar_a1m8") housing = sensor["housing"];
+  REQUIRE(housing["shape"].as<std::string>() == "box");
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+    const aiMesh& mesh = *scene->mMeshes[i];
+    if (std::string(mesh.mName.C_Str()) != "front_lidar housing") continue;
+    float low[2] = {1e9f, 1e9f}, high[2] = {-1e9f, -1e9f};
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const float p[2] = {mesh.mVertices[v].x, mesh.mVertices[v].y};
+      for (int k = 0; k < 2; ++k)
+        low[k] = std::min(low[k], p[k]), high[k] = std::max(high[k], p[k]);
+    }
+    const double cx = 0.5 + housing["center"][0].as<double>();
+    const double cz = 0.2 + housing["center"][2].as<double>();
+    CHECK(low[0] == Approx(cx - housing["size"][0].as<double>() / 2).margin(1e-5));
+    CHECK(high[0] == Approx(cx + housing["size"][0].as<double>() / 2).margin(1e-5));
+    CHECK(low[1] == Approx(cz - housing["size"][2].as<double>() / 2).margin(1e-5));
+    CHECK(high[1] == Approx(cz + housing["size"][2].as<double>() / 2).margin(1e-5));
+  }
   // The body: footprint 0.6 x 0.4 m, 0.4 m high, robot frame on the floor (no description, so
   // the frame is base_footprint at height 0): glTF y (up) spans 0..0.4, x -0.3..0.3, and glTF
   // z = -robot y spans -0.2..0.2.

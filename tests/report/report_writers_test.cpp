@@ -262,7 +262,11 @@ TEST_CASE("select: a relaxation trace gives the same costs in text, JSON and HTM
                                     {},
                                     {},
                                     {"deploy/collision_monitor.yaml: warning: stop: 0.1 m of its "
-                                     "2 m boundary is seen by no source"}};
+                                     "2 m boundary is seen by no source"},
+                                    "rigdesign check out/chosen_rig.yaml --requirements x",
+                                    30,
+                                    1,
+                                    {"B2 housing clear of body and sensors: front: cuts 3 mm"}};
 
   CHECK(report::chosen_iteration(outcome) == &relaxed);
   CHECK(report::describe(relaxed.targets) == "F >= 10 Hz, R <= 150 mm");
@@ -277,7 +281,11 @@ TEST_CASE("select: a relaxation trace gives the same costs in text, JSON and HTM
                  "(pc)  WITHIN BUDGET\n      front: cam/m30\n    search: 5 nodes"));
   CHECK(contains(text, "\nChosen rig (1234 USD <= budget 2000 USD): front: cam/m30\n"));
   CHECK(contains(text, "  SC complete mean 36.8 %, floor mean 47 % (exact path)\n"));
-  CHECK(contains(text, "\nwrote 2 files in out (chosen_rig.yaml: every mount outside the body"));
+  // What passes is check's own verdict on the files written (issue 52 item 6), failures listed.
+  CHECK(contains(text,
+                 "\nwrote 2 files in out\nchecked them: `rigdesign check "
+                 "out/chosen_rig.yaml --requirements x`: 30 pass, 1 fail\n"
+                 "  B2 housing clear of body and sensors: front: cuts 3 mm\n"));
   // The deployment's own warning, said in the main job's output (issue 52 item 6).
   CHECK(contains(text, "deploy/collision_monitor.yaml: warning: stop: 0.1 m of its 2 m"));
 

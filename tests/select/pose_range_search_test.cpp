@@ -30,15 +30,19 @@ sensors:
 slots:
   - id: front
     pose: {xyz: [0.46, 0, 0.6], rpy_deg: [0, {min: 0, max: 45, step: 15}, 0]}
+    recessed: true
     allows: [realsense_d435, pmd_pico_flexx]
   - id: left
     pose: {xyz: [0, 0.46, 0.3], rpy_deg: [0, {min: 0, max: 40, step: 20}, {min: 45, max: 90, step: 45}]}
+    recessed: true
     allows: [realsense_d435, pmd_pico_flexx]
   - id: right
     pose: {xyz: [0, -0.46, 0.3], rpy_deg: [0, {min: 0, max: 40, step: 20}, {min: -90, max: -45, step: 45}]}
+    recessed: true
     allows: [realsense_d435, pmd_pico_flexx]
   - id: front_high
     pose: {xyz: [0.46, 0, 0.9], rpy_deg: [0, {min: 20, max: 40, step: 20}, 0]}
+    recessed: true
     allows: [realsense_d435]
 transfer:
   - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}

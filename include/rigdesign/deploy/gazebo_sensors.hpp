@@ -26,6 +26,8 @@ struct GazeboSensor {
   bool link_added =
       false;  ///< sensors.urdf.xacro adds `link` (prefixed), else the description has it
   model::Pose3 T_link_sensor = model::Pose3::Identity();
+  /// simulated_frame's pose in the link: where the driver would broadcast it.
+  model::Pose3 T_link_simulated = model::Pose3::Identity();
   /// gz-sensors' `gz_frame_id`: the frame the nav2 source's data is stamped with.
   std::string frame_id;
   bool frame_added = false;  ///< the export adds frame_id (prefixed), else the description has it

@@ -9,9 +9,11 @@
 /// `<id>_optical_frame`. A name the export would add that the description already has (or
 /// that two mounts would both add) is an error naming both places. Names follow the sensor's
 /// ROS 2 driver (sensors.yaml `ros2`) where the rig keeps them unique: a lidar's link is the
-/// frame its driver stamps (velodyne, laser), a camera whose driver broadcasts its own frames
-/// gets only their root (camera_link) at the sensor origin; a mount's `ros: {frame}` names the
-/// frame outright; otherwise `<id>_link` and a note saying which driver parameter to set.
+/// frame its driver stamps (velodyne, laser), a sensor whose driver broadcasts its own frames
+/// gets only their root (camera_link, os_sensor), placed so that the driver's own static
+/// transforms (sensors.yaml `ros2.data_frame_pose`) put the data frame at the designed pose; a
+/// mount's `ros: {frame}` names the frame outright; otherwise `<id>_link` and a note saying which
+/// driver parameter to set.
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,11 +37,23 @@ struct SensorFrame {
   std::optional<std::string> optical_frame;
   std::string optical_joint;
   std::string data_frame;  ///< what the driver stamps with: the optical frame, else the link
-  /// The driver broadcasts data_frame itself (below `link`, which the export adds at the sensor
-  /// origin): e.g. realsense2_camera's camera_link -> camera_depth_optical_frame.
+  /// The driver broadcasts data_frame itself (below `link`, which the export places so that
+  /// the data frame lands on the designed pose): e.g. realsense2_camera's camera_link ->
+  /// camera_depth_optical_frame, ouster_ros's os_sensor -> os_lidar (36 mm up, turned 180 deg).
   bool data_frame_from_driver = false;
   std::string note;  ///< what to set on the driver so it stamps data_frame, if anything
   model::Pose3 T_parent_link = model::Pose3::Identity();  ///< the fixed joint's origin
+  /// The sensor (its designed pose, body axes) in `link`: identity but for a driver's root
+  /// placed so that its own transforms reach the designed data frame (issue 52 item 4).
+  model::Pose3 T_link_sensor = model::Pose3::Identity();
+  /// With data_frame_from_driver: the driver's data frame in `link` (sensors.yaml
+  /// `ros2.data_frame_pose`), which a simulation without the driver must add itself.
+  model::Pose3 T_link_data = model::Pose3::Identity();
+  /// The sensor's datasheet housing (issue 52 item 2), drawn and collided on the added link
+  /// so RViz and self-filters see it; its centre's pose in that link. Nothing for a mount on
+  /// the description's own link, or a sensor without one.
+  std::optional<model::HousingSolid> housing;
+  model::Pose3 T_link_housing = model::Pose3::Identity();
 };
 
 struct SensorFrames {

@@ -21,10 +21,12 @@ class MountedFov {
   /// `housing_link`: the description link that is the sensor's own housing (model::Mount's),
   /// the only collision geometry it sees through; empty: none. `limits` (a deployed stack's
   /// range limits and filters) narrow the mode's range and drop their regions; empty for the
-  /// design itself.
+  /// design itself. `other_housings`: the other mounts' housings in the robot frame
+  /// (geometry/housing_geometry.hpp), solid for this sensor; read here, not kept.
   MountedFov(const model::SensorMode& mode, const model::Pose3& T_robot_sensor,
              const BodyOccluder& body, const std::string& housing_link,
-             const model::MountLimits& limits = {});
+             const model::MountLimits& limits = {},
+             const std::vector<model::BodyPart>& other_housings = {});
 
   /// True when the sensor measures `p_robot`: inside its FOV and range and not behind the body.
   bool sees(const model::Vec3& p_robot) const;
@@ -43,14 +45,18 @@ class MountedFov {
   /// conservative test: true does not promise coverage).
   bool may_reach_azimuth(double theta) const;
 
+  /// False when no triangle of `mesh` (robot frame) can hide anything this sensor sees (a
+  /// conservative test: true promises nothing).
+  bool may_be_hidden_by(const model::TriangleMesh& mesh) const;
+
   /// False when no direction in the FOV can reach the body, so occlusion can be skipped.
   bool may_be_occluded() const { return may_be_occluded_; }
   const model::Pose3& pose() const { return T_robot_sensor_; }
   const model::SensorMode& mode() const { return *mode_; }
   /// What the deployed filters drop, or nullptr.
   const MountExclusions* exclusions() const { return exclusions_.get(); }
-  /// The shadow of the body's collision parts from this sensor; nullptr for a cylinder or
-  /// prism body.
+  /// The shadow of the body's collision parts and the other housings from this sensor;
+  /// nullptr when only a cylinder or prism body is solid.
   const SolidShadow* shadow() const { return shadow_.get(); }
 
  private:

@@ -25,10 +25,13 @@ using TriangleTest =
 
 class SolidShadow {
  public:
-  /// `parts` in the robot frame. The parts of link `housing` (the sensor's own housing,
-  /// model/sensor_housing.hpp; empty: none) cast no shadow for this sensor; every other part
-  /// is solid. A sensor whose origin is inside one of them is buried: it sees nothing.
-  SolidShadow(const std::vector<model::BodyPart>& parts, const model::Vec3& origin,
+  /// `parts` (a description's collision geometry) and `other_housings` (the other mounts'
+  /// housings, geometry/housing_geometry.hpp) in the robot frame. The parts of link `housing`
+  /// (the sensor's own housing in the description, model/sensor_housing.hpp; empty: none) cast
+  /// no shadow for this sensor; every other part is solid. A sensor whose origin is inside one
+  /// of them is buried: it sees nothing.
+  SolidShadow(const std::vector<model::BodyPart>& parts,
+              const std::vector<model::BodyPart>& other_housings, const model::Vec3& origin,
               const std::string& housing, const TriangleTest& may_matter);
 
   /// The parameters t in [t_min, t_max] at which start + t * direction is hidden. When the
@@ -57,6 +60,8 @@ class SolidShadow {
     model::Vec3 to_local;  // subtract to move robot-frame points into its frame
   };
 
+  // False when the origin is inside the part (then the sensor is buried).
+  bool add_part(const model::BodyPart& part, const TriangleTest& may_matter);
   void add_triangle(const model::Vec3& a, const model::Vec3& b, const model::Vec3& c);
   void bin_by_azimuth(std::size_t index, const model::Vec3 corners[3]);
   const std::vector<int>& candidates(std::optional<double> section_azimuth) const;

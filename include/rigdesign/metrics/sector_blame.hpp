@@ -14,10 +14,13 @@ namespace rigdesign::metrics {
 
 struct SectorBlame {
   std::optional<std::size_t> mount;  ///< index in the rig; nothing: no mount would see there
-  bool body = false;                 ///< the body hides part of that mount's view there
-  std::string part;                  ///< the description's link whose part hides most
-  model::SourceLocation where;       ///< the line to annotate
-  double hidden = 0.0;               ///< share of the section (or floor) the body hides from it
+  bool body = false;  ///< the body or another sensor's housing hides part of that view
+  /// The description's link whose part hides most, or the housing's name
+  /// (geometry::housing_part_name) when `by_housing`.
+  std::string part;
+  bool by_housing = false;
+  model::SourceLocation where;  ///< the line to annotate
+  double hidden = 0.0;          ///< share of the section (or floor) the body hides from it
 };
 
 /// At azimuth `theta` [rad], for the share the verdict rests on (`floor`: SC floor, else SC

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/housing_solid.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/source_location.hpp"
 
@@ -56,6 +57,11 @@ struct MountingSlot {
   std::vector<PoseAxisRange> ranges;  ///< the axes its pose range varies; none for a fixed pose
   std::vector<std::string> allowed_sensors;
   std::optional<double> distance_of_interest;  ///< [m] as a mount's
+  /// What the poses place: each sensor's data origin, or its housing's bottom or back face
+  /// (then each sensor's origin follows from its housing: model::HousingSolid::seat).
+  HousingSeat seat = HousingSeat::origin;
+  /// The shell has a pocket here (model::Mount::recessed): housings may sit inside the body.
+  bool recessed = false;
   SourceLocation where;
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/housing_solid.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/mount_limits.hpp"
 #include "rigdesign/model/source_location.hpp"
@@ -100,6 +101,11 @@ struct Mount {
   /// The description link whose collision geometry is this sensor's own housing, the only
   /// one it sees through (model/sensor_housing.hpp); empty: none, every part is solid to it.
   std::string housing_link;
+  /// `recessed: true` (issue 52): the body's shell has a pocket for this sensor (a window cut
+  /// in its cover), so its datasheet housing may sit inside the cylinder or prism or the
+  /// description's parts; check's B2 still holds it to every other housing, and B1 its data
+  /// origin to the outside of the body.
+  bool recessed = false;
   /// `ros: {namespace, topic, frame}`: how this mount's driver is run, where it differs from
   /// the driver's defaults (sensors.yaml `ros2`); empty: the default.
   std::string ros_namespace;  ///< the namespace the driver is launched in
@@ -151,9 +157,20 @@ struct DescribedRobot {
   std::optional<RobotSource> robot;
 };
 
+/// A mast, bracket or plate the rig declares (issue 52 item 3): a simple solid in the robot
+/// frame that holds sensors. It is solid for every sensor, as the body is, and no housing may
+/// cut into it.
+struct RigSupport {
+  std::string id;
+  HousingSolid solid;  ///< its shape and size, centred on its pose
+  Pose3 T_robot_support = Pose3::Identity();
+  SourceLocation where;
+};
+
 struct Rig : DescribedRobot {
   std::string name;
   std::vector<Mount> mounts;
+  std::vector<RigSupport> supports;
   std::string sensor_library;  ///< path as written in the file (relative to it), may be empty
   std::string requirements;    ///< path as written in the file (relative to it), may be empty
   SourceLocation sensor_library_where;

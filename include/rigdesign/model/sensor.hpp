@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/fov_shape.hpp"
+#include "rigdesign/model/housing_solid.hpp"
 #include "rigdesign/model/name_table.hpp"
 #include "rigdesign/model/source_location.hpp"
 
@@ -159,6 +161,12 @@ struct RosDriver {
   /// Frames the driver (or its launch file) broadcasts itself, the root first: a robot's URDF
   /// gives the root and must not give the others. Empty: the URDF gives frame_id.
   std::vector<std::string> driver_frames;
+  /// Issue 52 item 4: the pose of frame_id in the root of driver_frames that the driver's own
+  /// static transforms give (data/ros_drivers/driver_transforms.yaml), and whether frame_id is
+  /// an optical frame (z forward); the export places the root so that the data frame lands on
+  /// the designed pose. Nothing: not recorded (the root is placed at the sensor origin).
+  std::optional<Pose3> T_root_data;
+  bool data_frame_optical = false;
   std::string frame_parameter;  ///< how to make it stamp another frame
   std::string note;             ///< what a deployment must know (arguments to add, clashes)
   std::string source;           ///< where the facts are recorded
@@ -173,6 +181,9 @@ struct Sensor {
   Price price;
   std::vector<SensorMode> modes;
   std::optional<RosDriver> ros2;  ///< nothing: not researched
+  /// The datasheet housing; nothing: a point (a user's library may leave it out, every
+  /// bundled sensor has one).
+  std::optional<HousingSolid> housing;
   SourceLocation where;
 
   const SensorMode* find_mode(const std::string& mode_id) const;

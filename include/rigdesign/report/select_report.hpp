@@ -25,6 +25,13 @@ struct SelectReport {
   /// What the deployment written for the chosen rig warns about (a collision monitor zone
   /// whose edge no source sees), each with the file it is about.
   std::vector<std::string> deployment_warnings;
+  /// Issue 52 item 6: `rigdesign check` run on the files written (the chosen rig with its
+  /// requirements, nav2 costmap and collision monitor): the command, its verdict counts and
+  /// each failure as check prints it. Empty command: nothing was written.
+  std::string check_command;
+  std::size_t check_pass = 0;
+  std::size_t check_fail = 0;
+  std::vector<std::string> check_failures;
 };
 
 /// The iteration whose rig is written: the first within budget, else the last that found a

@@ -2,7 +2,8 @@
 /// The slot poses `select` leaves out before the search (issue 52 item 1): those that put the
 /// sensor's data origin inside the robot body (geometry/mount_placement.hpp). A rig with one of
 /// them could not be bolted on, and its sensor would see nothing; the report says how many
-/// were left out and why.
+/// were left out and why. (Sensors whose housing would cut into the body at a pose are left out
+/// by the selection space, and recorded here too.)
 #include <map>
 #include <string>
 #include <vector>
@@ -18,6 +19,9 @@ struct LeftOutPoses {
   /// Poses left out per reason ("inside the collision geometry of link 'chassis_link'
   /// (jackal.urdf.xacro:111)").
   std::map<std::string, std::size_t> reasons;
+  /// Sensors left out at a pose that remains, per reason: the sensor's housing cuts into the
+  /// body there ("realsense_d435 (its housing cuts 12 mm into ...)"); a count of poses.
+  std::map<std::string, std::size_t> sensor_reasons;
   std::size_t count() const;
 };
 

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/geometry/section_raster.hpp"
 #include "rigdesign/select/cost_model.hpp"
 
@@ -33,7 +34,13 @@ struct SearchOption {
   const geometry::SectionRaster& section(std::size_t angle) const { return (*sections)[angle]; }
   /// For robustness to a degraded condition: whether the option keeps working in it.
   bool survives_condition = true;
+  /// The sensor's housing at the option's pose (issue 52 item 2); null: none. Two options
+  /// whose housings overlap (geometry::kHousingTouch) are never chosen together.
+  std::shared_ptr<const geometry::ConvexSolid> housing;
 };
+
+/// Whether two options' housings cut into each other.
+bool housings_clash(const SearchOption& a, const SearchOption& b);
 
 /// SC thresholds over some of the problem's angles (R2).
 struct SearchSector {
@@ -87,11 +94,12 @@ struct SearchResult {
   /// feasible rigs evaluated at the optimum's cost (1: no tie to break); the branch and bound
   /// cuts equal-cost subtrees that cannot widen the margins, so it may count fewer than exist
   long ties = 0;
-  long nodes = 0;                     ///< nodes of the search tree visited
-  long evaluations = 0;               ///< rigs whose coverage was evaluated
-  long dominated = 0;                 ///< options never tried: another of their slot dominates them
-  long raster_cells = 0;              ///< cells and floor columns of one rig's rasters, all angles
-  long coverage_classes = 0;          ///< the classes they compress to (ClassCoverage)
+  long nodes = 0;             ///< nodes of the search tree visited
+  long evaluations = 0;       ///< rigs whose coverage was evaluated
+  long dominated = 0;         ///< options never tried: another of their slot dominates them
+  long raster_cells = 0;      ///< cells and floor columns of one rig's rasters, all angles
+  long coverage_classes = 0;  ///< the classes they compress to (ClassCoverage)
+  long housing_clashes = 0;   ///< pairs of options whose housings overlap (never chosen together)
   std::vector<ExploredRig> explored;  ///< the feasible rigs found
 };
 

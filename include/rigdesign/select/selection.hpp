@@ -37,11 +37,15 @@ SatisficingTargets satisficing_targets(const model::Requirements& requirements);
 struct CatalogOption {
   std::size_t slot = 0;
   std::size_t pose = 0;  ///< index into the slot's poses
+  /// The sensor's data origin: the slot pose's, moved by the slot's seat (a housing's bottom
+  /// or back face placed at the pose).
+  model::Pose3 T_robot_sensor = model::Pose3::Identity();
   const model::Sensor* sensor = nullptr;
   const model::SensorMode* mode = nullptr;
   metrics::MountMetrics metrics;  ///< at the slot's distance of interest
   double filtering = 0.0;         ///< U_f [core-equivalents]
   std::shared_ptr<const std::vector<geometry::SectionRaster>> sections;  ///< per angle of the space
+  std::shared_ptr<const geometry::ConvexSolid> housing;  ///< at the pose; null: none
 };
 
 /// How many options a catalog gives: per slot, its poses times the modes of the sensors it

@@ -80,13 +80,15 @@ void write_gazebo_camera(const deploy::GazeboSensor& s, std::ostream& out) {
 // The frame a driver broadcasts on the robot, which the simulation has to supply: an optical
 // frame at the sensor link's origin.
 void write_simulated_frame(const deploy::GazeboSensor& s, std::ostream& out) {
-  const model::Vec3 rpy = model::rpy_from_rotation(model::T_sensor_optical().linear());
+  const model::Vec3 rpy = model::rpy_from_rotation(s.T_link_simulated.linear());
+  const model::Vec3 xyz = s.T_link_simulated.translation();
   const std::string frame = "${prefix}" + io::xacro_literal(s.simulated_frame);
   out << "    <link name=\"" << frame << "\"/>\n"
       << "    <joint name=\"" << frame << "_sim_joint\" type=\"fixed\">\n"
       << "      <parent link=\"" << name_in_macro(s.link, s.link_added) << "\"/>\n"
       << "      <child link=\"" << frame << "\"/>\n"
-      << "      <origin xyz=\"0 0 0\" rpy=\"" << sdf_number(rpy.x()) << " " << sdf_number(rpy.y())
+      << "      <origin xyz=\"" << sdf_number(xyz.x()) << " " << sdf_number(xyz.y()) << " "
+      << sdf_number(xyz.z()) << "\" rpy=\"" << sdf_number(rpy.x()) << " " << sdf_number(rpy.y())
       << " " << sdf_number(rpy.z()) << "\"/>\n"
       << "    </joint>\n";
 }

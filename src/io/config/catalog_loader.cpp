@@ -157,6 +157,10 @@ model::Catalog load_catalog(const std::string& path) {
       slot.distance_of_interest =
           io::positive(reader, "distance_of_interest", Need::required, "metres, > 0");
     }
+    if (const auto seat = named_value(reader, "seat", Need::optional, model::kHousingSeatNames))
+      slot.seat = *seat;
+    if (reader.has("recessed"))
+      slot.recessed = reader.boolean("recessed", Need::required).value_or(false);
     reader.text("note", Need::optional);
     reader.reject_unknown_keys();
     if (!slot.id.empty() && !slot_ids.insert(slot.id).second) {

@@ -192,4 +192,33 @@ model::PoseTolerance pose_tolerance(MapReader& tolerance) {
   return result;
 }
 
+model::HousingSolid solid_shape(MapReader& reader, double largest) {
+  model::HousingSolid solid;
+  solid.where = reader.location();
+  if (const auto shape = named_value(reader, "shape", Need::required, model::kHousingShapeNames))
+    solid.shape = *shape;
+  if (solid.shape == model::HousingShape::box) {
+    const auto size =
+        reader.numbers("size", Need::required, 3, 3, "[x, y, z] full lengths in metres, each > 0");
+    const bool positive = size && std::all_of(size->begin(), size->end(), [](double v) {
+                            return v > 0.0 && v <= model::kMaxCoordinate;
+                          });
+    reader.require(!size || positive, "size", "has a length that is not positive",
+                   "[x, y, z] full lengths in metres, each > 0");
+    if (size && positive) solid.size = model::Vec3((*size)[0], (*size)[1], (*size)[2]);
+  } else {
+    const double radius = positive_length(reader, "radius", Need::required, "metres, > 0");
+    const double height = positive_length(reader, "height", Need::required, "metres, > 0");
+    solid.size = model::Vec3(2 * radius, 2 * radius, height);
+  }
+  if (solid.size.maxCoeff() > largest) {
+    const std::string key = solid.shape == model::HousingShape::box ? "size" : "radius";
+    reader.diagnostics().warning(reader.location(key), reader.field(key),
+                                 "makes the solid over " + model::format_number(largest) +
+                                     " m: millimetres typed as metres?",
+                                 "metres (a D435 is [0.025, 0.09, 0.025])");
+  }
+  return solid;
+}
+
 }  // namespace rigdesign::io

@@ -39,6 +39,8 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
     mount.distance_of_interest =
         io::positive_length(reader, "distance_of_interest", Need::required, "metres, > 0");
   }
+  if (reader.has("recessed"))
+    mount.recessed = reader.boolean("recessed", Need::required).value_or(false);
   if (reader.has("throttle_hz")) {
     mount.throttle_where = reader.location("throttle_hz");
     mount.throttle_hz = io::positive(reader, "throttle_hz", Need::required,
@@ -84,6 +86,25 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
   return mount;
 }
 
+// [m] the largest support that is plausibly metres: a mast as tall as a room.
+constexpr double kLargestSupport = 5.0;
+
+// `{id, shape: box, size, pose}` or `{id, shape: cylinder, radius, height, pose}`: a mast,
+// bracket or plate holding sensors (issue 52 item 3), centred on its pose.
+model::RigSupport read_support(MapReader& reader) {
+  model::RigSupport support;
+  support.where = reader.location();
+  support.id = io::ros_name(reader, "id", "a support id");
+  support.solid = io::solid_shape(reader, kLargestSupport);
+  if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg")) {
+    support.T_robot_support = io::xyz_rpy_deg_pose(*pose, Need::required);
+    pose->reject_unknown_keys();
+  }
+  reader.text("note", Need::optional);
+  reader.reject_unknown_keys();
+  return support;
+}
+
 }  // namespace
 
 model::Rig load_rig(const std::string& path) {
@@ -108,6 +129,10 @@ model::Rig load_rig(const std::string& path) {
   if (auto tolerance =
           top.map("tolerance", Need::optional, "a map with xyz [m] and rpy_deg [deg] half-widths"))
     rig.tolerance = io::pose_tolerance(*tolerance);
+  for (MapReader& reader : top.maps("supports", Need::optional,
+                                    "a list of {id, shape, size | radius and height, pose}")) {
+    rig.supports.push_back(read_support(reader));
+  }
   std::set<std::string> ids;
   for (MapReader& reader : top.maps("mounts", Need::required, "a list of mounts")) {
     model::Mount mount = read_mount(reader, robot, rig);

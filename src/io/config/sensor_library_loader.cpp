@@ -7,6 +7,9 @@
 #include "io/config/fov_readers.hpp"
 #include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
+#include "rigdesign/model/coordinate_limit.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::io {
@@ -263,6 +266,31 @@ model::Price read_price(MapReader& reader) {
   return price;
 }
 
+// The largest housing dimension that is plausibly metres: above it, millimetres typed as metres.
+constexpr double kLargestHousing = 1.0;  // [m] the largest bundled sensor is about 0.15 m
+// [m] how far outside its housing a data origin may lie (a lens standing proud of the front).
+constexpr double kOriginOutside = 0.01;
+
+// `housing: {shape: box, size: [x, y, z], center: [x, y, z], source}` or
+// `{shape: cylinder, radius, height, center, source}`, all in metres in the sensor frame.
+model::HousingSolid read_housing(MapReader& reader) {
+  model::HousingSolid housing = io::solid_shape(reader, kLargestHousing);
+  const auto center = reader.numbers("center", Need::required, 3, 3,
+                                     "[x, y, z]: the solid's centre in the sensor frame [m]");
+  if (center) housing.center = model::Vec3((*center)[0], (*center)[1], (*center)[2]);
+  // The data origin lies in or on its housing: a centre farther off is a sign or axis slip.
+  const model::Vec3 slack = (housing.center.cwiseAbs() - 0.5 * housing.size).cwiseMax(0.0);
+  reader.require(slack.norm() <= kOriginOutside, "center",
+                 "puts the data origin " +
+                     model::format_number(std::round(10000 * slack.norm()) / 10) +
+                     " mm outside the housing",
+                 "a centre within half the size of the data origin (x forward, y left, z up)");
+  housing.source =
+      reader.text("source", Need::required, "where the dimensions come from").value_or("");
+  reader.reject_unknown_keys();
+  return housing;
+}
+
 std::vector<std::string> read_frame_names(MapReader& reader, const std::string& key) {
   std::vector<std::string> names;
   const YAML::Node list = reader.node(key);
@@ -275,6 +303,30 @@ std::vector<std::string> read_frame_names(MapReader& reader, const std::string& 
     if (item.IsScalar()) names.push_back(item.Scalar());
   }
   return names;
+}
+
+// `data_frame_pose: {xyz, rpy_deg, axes: optical | body, source}`: where the driver's own
+// static transforms put the data frame in their root (issue 52 item 4).
+// (Not xyz_rpy_deg_pose: a driver's small calibrated tilt, the ZED 2's 2.8648 deg, is no sign
+// of radians typed as degrees.)
+void read_data_frame_pose(MapReader& reader, model::RosDriver& driver) {
+  const auto xyz = reader.numbers("xyz", Need::required, 3, 3, "[x, y, z] in metres, finite");
+  const auto rpy =
+      reader.numbers("rpy_deg", Need::required, 3, 3, "[roll, pitch, yaw] in degrees, finite");
+  const bool near = xyz && std::all_of(xyz->begin(), xyz->end(),
+                                       [](double v) { return std::abs(v) <= kLargestHousing; });
+  reader.require(!xyz || near, "xyz", "is over 1 m from the driver's root frame",
+                 "metres within a sensor's housing, e.g. [0, 0, 0.03618]");
+  if (xyz && rpy && near) {
+    driver.T_root_data = model::pose_from_xyz_rpy(
+        model::Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]),
+        model::Vec3(model::deg_to_rad((*rpy)[0]), model::deg_to_rad((*rpy)[1]),
+                    model::deg_to_rad((*rpy)[2])));
+  }
+  driver.data_frame_optical =
+      reader.choice("axes", Need::required, {"body", "optical"}).value_or(0) == 1;
+  reader.text("source", Need::required, "where the transforms are recorded");
+  reader.reject_unknown_keys();
 }
 
 // The `ros2` map: a driver's facts, or `driver: none`.
@@ -308,6 +360,13 @@ model::RosDriver read_ros_driver(MapReader& reader) {
   driver.frame_id =
       io::frame_id(reader, "frame_id", Need::required, "the data's frame, e.g. velodyne");
   driver.driver_frames = read_frame_names(reader, "driver_frames");
+  if (auto pose = reader.map("data_frame_pose", Need::optional,
+                             "{xyz, rpy_deg, axes, source}: frame_id's pose in the root frame")) {
+    read_data_frame_pose(*pose, driver);
+    reader.require(!driver.driver_frames.empty(), "data_frame_pose",
+                   "is given without driver_frames",
+                   "driver_frames, the root first, whose root the pose is in");
+  }
   driver.frame_parameter =
       reader.text("frame_parameter", Need::required, "how to rename the frame").value_or("");
   reader.reject_unknown_keys();
@@ -328,6 +387,8 @@ model::Sensor read_sensor(MapReader& reader) {
   if (auto price = reader.map("price", Need::required)) sensor.price = read_price(*price);
   if (auto ros2 = reader.map("ros2", Need::optional, "the ROS 2 driver's facts"))
     sensor.ros2 = read_ros_driver(*ros2);
+  if (auto housing = reader.map("housing", Need::optional, "the datasheet housing"))
+    sensor.housing = read_housing(*housing);
   reader.text("note", Need::optional);
   std::optional<MapReader> defaults = reader.map("mode_defaults", Need::optional);
   if (defaults) defaults->reject_keys_other_than(kModeKeys);

@@ -121,6 +121,7 @@ std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library
       out << "    distance_of_interest: " << number(*mount.distance_of_interest) << '\n';
     }
     if (mount.throttle_hz) out << "    throttle_hz: " << number(*mount.throttle_hz) << '\n';
+    if (mount.recessed) out << "    recessed: true\n";
     // How the mount's driver runs, where the rig says it (namespace, topic, frame).
     std::string ros;
     for (const auto& [key, value] :

@@ -227,9 +227,34 @@ async function refreshVolume(mountId) {
     volume.quaternion.set(0, 0, 0, 1);
     volume.scale.set(1, 1, 1);
   }
+  showHousing(pivot, fov);
   pivot.updateMatrix();
   pivot.userData.holder.matrix.getInverse(pivot.matrix);
   requestRender();
+}
+
+// The mount's datasheet housing beside its volume (robot frame, like the volume): grey, or
+// red while it cuts into the body or another housing, with check's reason under the panel.
+function showHousing(pivot, fov) {
+  const holder = pivot.userData.holder;
+  let housing = holder.children.find((child) => child.name === 'housing');
+  if (housing) { holder.remove(housing); housing.geometry.dispose(); }
+  studio.clashes = studio.clashes || new Map();
+  studio.clashes.delete(fov.mount);
+  if (fov.housing) {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.Float32BufferAttribute(fov.housing.positions, 3));
+    geometry.setIndex(fov.housing.indices);
+    geometry.computeVertexNormals();
+    housing = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial(
+      {color: fov.clash ? 0xd62828 : 0x707070}));
+    housing.name = 'housing';
+    holder.add(housing);
+    if (fov.clash) studio.clashes.set(fov.mount, fov.clash);
+  }
+  const box = $('clash');
+  box.textContent = [...studio.clashes.values()].join('\n');
+  box.hidden = studio.clashes.size === 0;
 }
 
 // Where a mount's move arrow along x can be gripped on screen (viewport pixels) and the

@@ -8,6 +8,7 @@
 
 #include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/eigen_types.hpp"
+#include "rigdesign/model/housing_solid.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
 
@@ -58,6 +59,10 @@ void warn_if_radians(MapReader& reader, const std::string& key, const std::vecto
 /// either may be left out). Warns where a value is probably in another unit: a translation over
 /// 0.1 m (millimetres typed as metres?) or a rotation over 10 deg (not a mounting error).
 model::PoseTolerance pose_tolerance(MapReader& tolerance);
+/// A simple solid's shape and size: `shape: box` with `size: [x, y, z]`, or `shape: cylinder`
+/// with `radius` and `height` (axis z), metres; the centre is left at 0 for the caller. Warns
+/// when it is over `largest` [m] (millimetres typed as metres?).
+model::HousingSolid solid_shape(MapReader& reader, double largest);
 /// `basis: datasheet | measured | estimate`.
 model::Basis basis(MapReader& reader, Need need);
 

@@ -1,6 +1,7 @@
 #include "rigdesign/deploy/ros/description/sensors_xacro_writer.hpp"
 
 #include <cmath>
+#include <ostream>
 #include <sstream>
 
 #include "rigdesign/io/emit/xml_emit.hpp"
@@ -19,6 +20,21 @@ std::string xacro_number(double value) {
 
 std::string triple(const model::Vec3& v) {
   return xacro_number(v.x()) + " " + xacro_number(v.y()) + " " + xacro_number(v.z());
+}
+
+// `<visual>` and `<collision>` of a housing: a box, or a cylinder along the link's z axis.
+void write_housing(const model::HousingSolid& housing, const model::Pose3& T_link_housing,
+                   std::ostream& out) {
+  const std::string origin = "<origin xyz=\"" + triple(T_link_housing.translation()) + "\" rpy=\"" +
+                             triple(model::rpy_from_rotation(T_link_housing.linear())) + "\"/>";
+  const std::string geometry = housing.shape == model::HousingShape::box
+                                   ? "<box size=\"" + triple(housing.size) + "\"/>"
+                                   : "<cylinder radius=\"" + xacro_number(housing.radius()) +
+                                         "\" length=\"" + xacro_number(housing.size.z()) + "\"/>";
+  for (const char* element : {"visual", "collision"}) {
+    out << "      <" << element << ">" << origin << "<geometry>" << geometry << "</geometry></"
+        << element << ">\n";
+  }
 }
 
 }  // namespace
@@ -60,7 +76,13 @@ std::string sensors_xacro_text(const deploy::SensorFrames& frames, const std::st
                                                  : "${prefix}" + io::xacro_literal(frame.link);
     if (!frame.joint.empty()) {
       const model::Vec3 rpy = model::rpy_from_rotation(frame.T_parent_link.linear());
-      out << "    <link name=\"" << link << "\"/>\n";
+      if (frame.housing) {
+        out << "    <link name=\"" << link << "\">\n";
+        write_housing(*frame.housing, frame.T_link_housing, out);
+        out << "    </link>\n";
+      } else {
+        out << "    <link name=\"" << link << "\"/>\n";
+      }
       out << "    <joint name=\"${prefix}" << io::xacro_literal(frame.joint)
           << "\" type=\"fixed\">\n";
       out << "      <parent link=\"${parent}\"/>\n";

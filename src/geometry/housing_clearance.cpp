@@ -1,0 +1,216 @@
+#include "rigdesign/geometry/housing_clearance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <memory>
+
+#include "rigdesign/geometry/body_mesh.hpp"
+#include "rigdesign/geometry/body_occluder.hpp"
+#include "rigdesign/geometry/housing_geometry.hpp"
+#include "rigdesign/geometry/winding_number.hpp"
+#include "rigdesign/model/format_number.hpp"
+
+namespace rigdesign::geometry {
+namespace {
+
+struct Box3 {
+  model::Vec3 low;
+  model::Vec3 high;
+};
+
+Box3 bounds(const std::vector<model::Vec3>& points) {
+  Box3 box{points.front(), points.front()};
+  for (const model::Vec3& p : points) {
+    box.low = box.low.cwiseMin(p);
+    box.high = box.high.cwiseMax(p);
+  }
+  return box;
+}
+
+bool apart(const Box3& a, const Box3& b) {
+  return (a.high.array() < b.low.array()).any() || (b.high.array() < a.low.array()).any();
+}
+
+// Whether `solid` overlaps any triangle of `mesh` (touching is not overlapping).
+bool crosses(const ConvexSolid& solid, const model::TriangleMesh& mesh) {
+  const Box3 reach = bounds(solid.corners);
+  for (const auto& t : mesh.triangles) {
+    const model::Vec3& a = mesh.vertices[t[0]];
+    const model::Vec3& b = mesh.vertices[t[1]];
+    const model::Vec3& c = mesh.vertices[t[2]];
+    if (apart(reach, {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)})) continue;
+    if (penetration(solid, triangle_solid(a, b, c)) > 0.0) return true;
+  }
+  return false;
+}
+
+// A description's vertical cylinder as a convex solid.
+ConvexSolid cylinder_solid(const model::VerticalCylinder& c) {
+  model::HousingSolid solid;
+  solid.shape = model::HousingShape::cylinder;
+  solid.size = model::Vec3(2 * c.radius, 2 * c.radius, c.z_max - c.z_min);
+  solid.center = model::Vec3(c.centre.x(), c.centre.y(), 0.5 * (c.z_min + c.z_max));
+  return housing_solid(solid, model::Pose3::Identity());
+}
+
+// Whether a (shrunk) housing meets one solid of the body.
+using Meets = std::function<bool(const ConvexSolid& housing)>;
+
+// Bisections of the cut depth: 2^-16 of half the housing's thinnest side, below a micrometre.
+constexpr int kDepthSteps = 16;
+
+// How deep the housing cuts into a solid [m]: the largest inset at which the housing, shrunk by
+// it on every side, still meets the solid (one standing 12 mm into a wall meets it until shrunk
+// by 12 mm). 0 when it does not meet it shrunk by kHousingTouch: touching is allowed.
+double cut_depth(const model::HousingSolid& housing, const model::Pose3& T_robot_sensor,
+                 const Meets& meets) {
+  if (!meets(housing_solid(housing, T_robot_sensor, kHousingTouch))) return 0.0;
+  double low = kHousingTouch;
+  double high = 0.5 * housing.size.minCoeff();
+  for (int step = 0; step < kDepthSteps; ++step) {
+    const double middle = 0.5 * (low + high);
+    (meets(housing_solid(housing, T_robot_sensor, middle)) ? low : high) = middle;
+  }
+  return low;
+}
+
+// One solid of the body a housing may meet: its link (empty: a cylinder or prism body), its
+// line, and the test.
+struct BodySolid {
+  std::string link;
+  model::SourceLocation where;
+  Meets meets;
+};
+
+// The body's solids but the sensor's own housing link, for a housing centred at `centre`. A
+// housing inside a solid, touching none of its faces, meets it too: its centre is inside.
+std::vector<BodySolid> body_solids(const model::DescribedRobot& robot,
+                                   const std::string& housing_link, const model::Vec3& centre) {
+  std::vector<BodySolid> solids;
+  if (!robot.body.has_parts()) {
+    auto mesh = std::make_shared<const model::TriangleMesh>(body_mesh(robot.body));
+    const bool inside = BodyOccluder(robot.body).contains(centre);
+    solids.push_back({"", robot.body.where, [mesh, inside](const ConvexSolid& solid) {
+                        return inside || crosses(solid, *mesh);
+                      }});
+    return solids;
+  }
+  for (const model::BodyPart& part : robot.body.parts) {
+    if (!housing_link.empty() && part.link == housing_link) continue;
+    if (part.cylinder) {
+      const ConvexSolid cylinder = cylinder_solid(*part.cylinder);
+      solids.push_back({part.link, part.where, [cylinder](const ConvexSolid& solid) {
+                          return penetration(solid, cylinder) > 0.0;
+                        }});
+      continue;
+    }
+    const bool inside = inside_part(part, centre);
+    const model::TriangleMesh* mesh = &part.triangles;
+    solids.push_back({part.link, part.where, [mesh, inside](const ConvexSolid& solid) {
+                        return inside || crosses(solid, *mesh);
+                      }});
+  }
+  return solids;
+}
+
+// [m] the farthest a housing is searched for something holding it.
+constexpr double kLargestGap = 0.5;
+
+}  // namespace
+
+std::vector<HousingClash> body_clashes(const model::DescribedRobot& robot,
+                                       const std::string& housing_link,
+                                       const model::HousingSolid& housing,
+                                       const model::Pose3& T_robot_sensor) {
+  std::vector<HousingClash> clashes;
+  for (const BodySolid& solid : body_solids(robot, housing_link, T_robot_sensor * housing.center)) {
+    const double depth = cut_depth(housing, T_robot_sensor, solid.meets);
+    if (depth > 0.0) clashes.push_back({solid.link, "", "", solid.where, depth});
+  }
+  return clashes;
+}
+
+std::optional<double> housing_gap(const model::Rig& rig, const model::SensorLibrary& library,
+                                  std::size_t index) {
+  const model::Mount& mount = rig.mounts.at(index);
+  const model::Sensor* sensor = library.find(mount.sensor_id);
+  // A sensor on a description link of its own is held by the description, one in a pocket of
+  // the shell by the pocket.
+  if (sensor == nullptr || !sensor->housing || !mount.housing_link.empty() || mount.recessed)
+    return std::nullopt;
+  const model::HousingSolid& housing = *sensor->housing;
+  std::vector<BodySolid> holders =
+      body_solids(rig, mount.housing_link, mount.T_robot_sensor * housing.center);
+  for (std::size_t other = 0; other < rig.mounts.size(); ++other) {
+    const model::Sensor* its = library.find(rig.mounts[other].sensor_id);
+    if (other == index || its == nullptr || !its->housing) continue;
+    const ConvexSolid neighbour = housing_solid(*its->housing, rig.mounts[other].T_robot_sensor);
+    holders.push_back({"", {}, [neighbour](const ConvexSolid& solid) {
+                         return penetration(solid, neighbour) > 0.0;
+                       }});
+  }
+  for (const model::RigSupport& support : rig.supports) {
+    const ConvexSolid held_by = housing_solid(support.solid, support.T_robot_support);
+    holders.push_back({"", support.where, [held_by](const ConvexSolid& solid) {
+                         return penetration(solid, held_by) > 0.0;
+                       }});
+  }
+  // Grown by `gap` on every side (a negative inset), does the housing meet a holder?
+  const auto held = [&](double gap) {
+    const ConvexSolid grown = housing_solid(housing, mount.T_robot_sensor, -gap);
+    return std::any_of(holders.begin(), holders.end(),
+                       [&](const BodySolid& holder) { return holder.meets(grown); });
+  };
+  if (held(kHousingShim)) return std::nullopt;
+  if (!held(kLargestGap)) return kLargestGap;
+  double low = kHousingShim;
+  double high = kLargestGap;
+  for (int step = 0; step < kDepthSteps; ++step) {
+    const double middle = 0.5 * (low + high);
+    (held(middle) ? high : low) = middle;
+  }
+  return high;
+}
+
+std::string HousingClash::what() const {
+  const std::string at = where.file.empty() ? "" : " (" + model::to_string(where) + ")";
+  if (!mount_id.empty()) return "the housing of mount '" + mount_id + "'" + at;
+  if (!support_id.empty()) return "support '" + support_id + "'" + at;
+  if (link.empty()) return "the robot body" + at;
+  return "the collision geometry of link '" + link + "'" + at;
+}
+
+std::string HousingClash::describe() const {
+  // Millimetres to a tenth: what a technician measures.
+  return "cuts " + model::format_number(std::round(10000 * depth) / 10) + " mm into " + what();
+}
+
+std::vector<HousingClash> housing_clashes(const model::Rig& rig,
+                                          const model::SensorLibrary& library, std::size_t index) {
+  std::vector<HousingClash> clashes;
+  const model::Mount& mount = rig.mounts.at(index);
+  const model::Sensor* sensor = library.find(mount.sensor_id);
+  if (sensor == nullptr || !sensor->housing) return clashes;
+  // A sensor in a pocket of the shell may sit inside the body; never inside another housing.
+  if (!mount.recessed)
+    clashes = body_clashes(rig, mount.housing_link, *sensor->housing, mount.T_robot_sensor);
+  const ConvexSolid housing = housing_solid(*sensor->housing, mount.T_robot_sensor);
+  for (std::size_t other = 0; other < rig.mounts.size(); ++other) {
+    const model::Mount& neighbour = rig.mounts[other];
+    const model::Sensor* its = library.find(neighbour.sensor_id);
+    if (other == index || its == nullptr || !its->housing) continue;
+    const double depth =
+        penetration(housing, housing_solid(*its->housing, neighbour.T_robot_sensor));
+    if (depth > kHousingTouch)
+      clashes.push_back({"", neighbour.id, "", neighbour.pose_where, depth});
+  }
+  for (const model::RigSupport& support : rig.supports) {
+    const double depth =
+        penetration(housing, housing_solid(support.solid, support.T_robot_support));
+    if (depth > kHousingTouch) clashes.push_back({"", "", support.id, support.where, depth});
+  }
+  return clashes;
+}
+
+}  // namespace rigdesign::geometry
