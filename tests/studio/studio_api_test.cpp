@@ -2,6 +2,7 @@
 // values are read off sensors.yaml's text or written by hand.
 #include "rigdesign/studio/studio_api.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -78,7 +79,13 @@ TEST_CASE("studio API: malformed edits are 400, invalid ones 422 with check's wo
   REQUIRE(reply["error"].is_array());
   // The cart's prism spans x in [-0.3, 0.3]: the origin is inside, reported at the mount's pose.
   CHECK(reply["error"][0]["field"].get<std::string>().find("mounts[0].pose") == 0);
-  CHECK(reply["error"][0]["line"] == 14);
+  // Its line: the rig file's line holding front_lidar's entry, counted here.
+  const std::string rig_text = test::file_text(test::source_path("rigs/cart_two_scanners.yaml"));
+  const std::size_t entry = rig_text.find("{id: front_lidar");
+  REQUIRE(entry != std::string::npos);
+  const auto line =
+      1 + std::count(rig_text.begin(), rig_text.begin() + static_cast<long>(entry), '\n');
+  CHECK(reply["error"][0]["line"] == line);
   CHECK(fixture.call("GET", "nothing").first == 404);
   // A valid move answers with the numbers on the raster path, then saves through check.
   const auto [moved, numbers] =
