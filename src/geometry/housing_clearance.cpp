@@ -117,6 +117,31 @@ std::vector<BodySolid> body_solids(const model::DescribedRobot& robot,
 // [m] the farthest a housing is searched for something holding it.
 constexpr double kLargestGap = 0.5;
 
+// A convex solid beside mount `index`'s housing: another mount's housing or a support.
+struct Neighbour {
+  std::string mount_id;    // the other mount's id, or empty for a support
+  std::string support_id;  // the support's id, or empty for a housing
+  model::SourceLocation where;
+  ConvexSolid solid;
+};
+
+// The other mounts' housings, then the rig's supports.
+std::vector<Neighbour> neighbours(const model::Rig& rig, const model::SensorLibrary& library,
+                                  std::size_t index) {
+  std::vector<Neighbour> found;
+  for (std::size_t other = 0; other < rig.mounts.size(); ++other) {
+    const model::Mount& mount = rig.mounts[other];
+    const model::Sensor* sensor = library.find(mount.sensor_id);
+    if (other == index || sensor == nullptr || !sensor->housing) continue;
+    found.push_back(
+        {mount.id, "", mount.pose_where, housing_solid(*sensor->housing, mount.T_robot_sensor)});
+  }
+  for (const model::RigSupport& support : rig.supports)
+    found.push_back(
+        {"", support.id, support.where, housing_solid(support.solid, support.T_robot_support)});
+  return found;
+}
+
 }  // namespace
 
 std::vector<HousingClash> body_clashes(const model::DescribedRobot& robot,
@@ -142,19 +167,11 @@ std::optional<double> housing_gap(const model::Rig& rig, const model::SensorLibr
   const model::HousingSolid& housing = *sensor->housing;
   std::vector<BodySolid> holders =
       body_solids(rig, mount.housing_link, mount.T_robot_sensor * housing.center);
-  for (std::size_t other = 0; other < rig.mounts.size(); ++other) {
-    const model::Sensor* its = library.find(rig.mounts[other].sensor_id);
-    if (other == index || its == nullptr || !its->housing) continue;
-    const ConvexSolid neighbour = housing_solid(*its->housing, rig.mounts[other].T_robot_sensor);
-    holders.push_back({"", {}, [neighbour](const ConvexSolid& solid) {
-                         return penetration(solid, neighbour) > 0.0;
-                       }});
-  }
-  for (const model::RigSupport& support : rig.supports) {
-    const ConvexSolid held_by = housing_solid(support.solid, support.T_robot_support);
-    holders.push_back({"", support.where, [held_by](const ConvexSolid& solid) {
-                         return penetration(solid, held_by) > 0.0;
-                       }});
+  for (Neighbour& neighbour : neighbours(rig, library, index)) {
+    holders.push_back(
+        {"", neighbour.where, [held_by = std::move(neighbour.solid)](const ConvexSolid& solid) {
+           return penetration(solid, held_by) > 0.0;
+         }});
   }
   // Grown by `gap` on every side (a negative inset), does the housing meet a holder?
   const auto held = [&](double gap) {
@@ -171,6 +188,10 @@ std::optional<double> housing_gap(const model::Rig& rig, const model::SensorLibr
     (held(middle) ? high : low) = middle;
   }
   return high;
+}
+
+bool solids_clash(const ConvexSolid& a, const ConvexSolid& b) {
+  return penetration(a, b) > kHousingTouch;
 }
 
 std::string HousingClash::what() const {
@@ -196,19 +217,11 @@ std::vector<HousingClash> housing_clashes(const model::Rig& rig,
   if (!mount.recessed)
     clashes = body_clashes(rig, mount.housing_link, *sensor->housing, mount.T_robot_sensor);
   const ConvexSolid housing = housing_solid(*sensor->housing, mount.T_robot_sensor);
-  for (std::size_t other = 0; other < rig.mounts.size(); ++other) {
-    const model::Mount& neighbour = rig.mounts[other];
-    const model::Sensor* its = library.find(neighbour.sensor_id);
-    if (other == index || its == nullptr || !its->housing) continue;
-    const double depth =
-        penetration(housing, housing_solid(*its->housing, neighbour.T_robot_sensor));
-    if (depth > kHousingTouch)
-      clashes.push_back({"", neighbour.id, "", neighbour.pose_where, depth});
-  }
-  for (const model::RigSupport& support : rig.supports) {
-    const double depth =
-        penetration(housing, housing_solid(support.solid, support.T_robot_support));
-    if (depth > kHousingTouch) clashes.push_back({"", "", support.id, support.where, depth});
+  for (const Neighbour& neighbour : neighbours(rig, library, index)) {
+    if (solids_clash(housing, neighbour.solid)) {
+      clashes.push_back({"", neighbour.mount_id, neighbour.support_id, neighbour.where,
+                         penetration(housing, neighbour.solid)});
+    }
   }
   return clashes;
 }

@@ -174,15 +174,6 @@ std::optional<model::BodyPart> mount_housing(const model::Mount& mount,
   return part;
 }
 
-std::vector<model::BodyPart> housing_parts(const model::Rig& rig,
-                                           const model::SensorLibrary& library) {
-  std::vector<model::BodyPart> parts;
-  for (const model::Mount& mount : rig.mounts) {
-    if (auto part = mount_housing(mount, library)) parts.push_back(std::move(*part));
-  }
-  return parts;
-}
-
 std::string support_part_name(const std::string& support_id) {
   return "support '" + support_id + "'";
 }

@@ -90,8 +90,7 @@ bool any_clash(const SearchProblem& problem, const std::vector<int>& choice) {
 }  // namespace
 
 bool housings_clash(const SearchOption& a, const SearchOption& b) {
-  return a.housing && b.housing &&
-         geometry::penetration(*a.housing, *b.housing) > geometry::kHousingTouch;
+  return a.housing && b.housing && geometry::solids_clash(*a.housing, *b.housing);
 }
 
 SearchResult brute_force(const SearchProblem& problem) {

@@ -257,23 +257,25 @@ model::Pose3 seated_pose(const model::Sensor& sensor, const model::Pose3& T_robo
 
 // The sensor's housing at its data origin `T_robot_sensor` of a slot pose; null when it has
 // none. `buildable` is false, and the reason counted in `reasons`, when the sensor cannot be
-// bolted there: its seated origin inside the body, or its housing cutting into it.
-std::shared_ptr<const geometry::ConvexSolid> housing_at(const model::Sensor& sensor,
-                                                        const model::Pose3& T_robot_sensor,
-                                                        const model::SlotPose& pose, bool recessed,
-                                                        const model::Catalog& catalog,
-                                                        std::map<std::string, std::size_t>& reasons,
-                                                        bool& buildable) {
+// bolted there: its origin, moved off the pose by a seat, inside the body (a pose's own point
+// is judged once, by find_buried_poses), or its housing cutting into it.
+std::shared_ptr<const geometry::ConvexSolid> housing_at(
+    const model::Sensor& sensor, const model::Pose3& T_robot_sensor,
+    const model::MountingSlot& slot, const model::SlotPose& pose, const model::Catalog& catalog,
+    std::map<std::string, std::size_t>& reasons, bool& buildable) {
   buildable = true;
   if (!sensor.housing) return nullptr;
-  if (const auto buried =
-          geometry::burial(catalog, pose.housing_link, T_robot_sensor.translation())) {
+  const auto buried =
+      slot.seat == model::HousingSeat::origin
+          ? std::nullopt
+          : geometry::burial(catalog, pose.housing_link, T_robot_sensor.translation());
+  if (buried) {
     buildable = false;
     ++reasons[sensor.id + ", its data origin " + buried->describe()];
     return nullptr;
   }
   const std::vector<geometry::HousingClash> clashes =
-      recessed
+      slot.recessed
           ? std::vector<geometry::HousingClash>{}
           : geometry::body_clashes(catalog, pose.housing_link, *sensor.housing, T_robot_sensor);
   if (!clashes.empty()) {
@@ -405,8 +407,8 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
         mount.id = slot.id;
         mount.T_robot_sensor = seated_pose(*sensor, slot.poses[p].T_robot_sensor, slot.seat);
         bool buildable = true;
-        const auto housing = housing_at(*sensor, mount.T_robot_sensor, slot.poses[p], slot.recessed,
-                                        catalog, sensor_reasons[k], buildable);
+        const auto housing = housing_at(*sensor, mount.T_robot_sensor, slot, slot.poses[p], catalog,
+                                        sensor_reasons[k], buildable);
         if (!buildable) continue;
         for (const std::string& mode_id : candidate.mode_ids) {
           CatalogOption option;

@@ -20,6 +20,10 @@ inline constexpr double kHousingTouch = 0.001;
 /// [m] a gap a washer or shim takes up: a housing this close to what holds it is held.
 inline constexpr double kHousingShim = 0.005;
 
+/// Whether two convex solids (housings, supports) cut into each other deeper than
+/// kHousingTouch: the one overlap rule of B2 and of select's search.
+bool solids_clash(const ConvexSolid& a, const ConvexSolid& b);
+
 /// What a housing cuts into.
 struct HousingClash {
   std::string link;        ///< the body part's link (empty: a cylinder or prism body)

@@ -44,9 +44,6 @@ double penetration(const ConvexSolid& a, const ConvexSolid& b);
 /// housing_part_name(mount id), `where` the mount's line.
 std::optional<model::BodyPart> mount_housing(const model::Mount& mount,
                                              const model::SensorLibrary& library);
-/// The housings of every mount of `rig`, mount order (mounts without one are left out).
-std::vector<model::BodyPart> housing_parts(const model::Rig& rig,
-                                           const model::SensorLibrary& library);
 /// The rig's supports (masts, brackets, plates) as parts: `link` is support_part_name(id).
 std::vector<model::BodyPart> support_parts(const model::Rig& rig);
 /// "support 'front_bracket'": the name a support part carries in place of a link's.
