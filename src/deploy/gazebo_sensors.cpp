@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string_view>
 
+#include "rigdesign/deploy/gazebo_description_sensors.hpp"
 #include "rigdesign/model/optical_frame.hpp"
 
 namespace rigdesign::deploy {
@@ -99,6 +100,16 @@ std::vector<GazeboSensor> gazebo_sensors(const model::Rig& rig, const SensorFram
       plan_camera(mode, sensor);
     } else {
       plan_lidar(mode, sensor);
+    }
+    sensor.description_sensor = description_sensor_of(rig, rig.mounts[m], library);
+    if (sensor.description_sensor) {
+      sensor.differences = description_sensor_differences(*sensor.description_sensor, sensor);
+      // gz-sensors publishes a lidar's scan on <topic>, its cloud on <topic>/points, and a
+      // camera's cloud on <topic>/points (docs/gazebo.md).
+      const std::string& topic = sensor.description_sensor->topic;
+      sensor.gz_data_topic = topic.empty()       ? std::string()
+                             : sensor.laser_scan ? topic
+                                                 : topic + std::string(kCloudSuffix);
     }
     sensors.push_back(sensor);
   }

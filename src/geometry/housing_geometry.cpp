@@ -139,6 +139,21 @@ ConvexSolid triangle_solid(const model::Vec3& a, const model::Vec3& b, const mod
   return solid;
 }
 
+bool contains(const ConvexSolid& solid, const model::Vec3& point) {
+  if (solid.corners.empty()) return false;
+  // A convex polytope is the intersection of its face slabs: inside every slab, inside it.
+  for (const model::Vec3& normal : solid.face_normals) {
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const model::Vec3& corner : solid.corners) {
+      low = std::min(low, normal.dot(corner));
+      high = std::max(high, normal.dot(corner));
+    }
+    const double at = normal.dot(point);
+    if (at < low - 1e-9 || at > high + 1e-9) return false;
+  }
+  return true;
+}
+
 double penetration(const ConvexSolid& a, const ConvexSolid& b) {
   double least = std::numeric_limits<double>::infinity();
   const auto try_axis = [&](const model::Vec3& axis) {

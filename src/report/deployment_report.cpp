@@ -49,6 +49,14 @@ void print_deployment(std::ostream& out, const model::Rig& rig,
     if (!filter.boxes.empty()) out << " (" << filter.boxes.size() << " crop box(es))";
     out << '\n';
   }
+  for (const deploy::GazeboSensor& g : deployment.gazebo) {
+    if (!g.description_sensor) continue;
+    out << "  Gazebo " << g.mount_id << ": the description's sensor '" << g.description_sensor->name
+        << "' simulates it (none added)";
+    for (std::size_t d = 0; d < g.differences.size(); ++d)
+      out << (d ? "; " : "; warning: it differs: ") << g.differences[d];
+    out << '\n';
+  }
   if (costmap.costmap.use_hit_layer) {
     out << "  Hit Layer (" << costmap.hit_layer_class << "): hit " << costmap.costmap.hit.hit
         << ", hit_max " << costmap.costmap.hit.hit_max << "; " << costmap.memory.rule << '\n';

@@ -145,8 +145,8 @@ TEST_CASE(
     const std::string stvl_folder = shared_export(rig, {"--max-speed", "1", "--layer", "stvl"});
     const YAML::Node voxel = YAML::LoadFile(voxel_folder + "/nav2_costmap.yaml");
     const YAML::Node stvl = YAML::LoadFile(stvl_folder + "/nav2_costmap.yaml");
-    const std::map<std::string, std::string> gazebo =
-        gazebo_frames(file_text(voxel_folder + "/sensors.gazebo.xacro"));
+    const std::string gazebo_text = file_text(voxel_folder + "/sensors.gazebo.xacro");
+    const std::map<std::string, std::string> gazebo = gazebo_frames(gazebo_text);
     const YAML::Node voxel_local = voxel["local_costmap"]["local_costmap"]["ros__parameters"];
     const YAML::Node stvl_local = stvl["local_costmap"]["local_costmap"]["ros__parameters"];
     const YAML::Node voxel_layer =
@@ -171,12 +171,19 @@ TEST_CASE(
       REQUIRE(in_stvl.IsMap());
       CHECK(in_stvl["sensor_frame"].as<std::string>() == source["sensor_frame"].as<std::string>());
       CHECK(in_stvl["topic"].as<std::string>() == source["topic"].as<std::string>());
-      REQUIRE(gazebo.count(mount) == 1);
-      // The Gazebo macro prefixes a name the export adds: with the default empty prefix it is
-      // the name itself.
-      std::string frame = gazebo.at(mount);
-      if (frame.rfind("${prefix}", 0) == 0) frame = frame.substr(9);
-      CHECK(frame == source["sensor_frame"].as<std::string>());
+      // A mount the description's own Gazebo sensor simulates gets none from the export (issue
+      // 52 item 5; the comment says so, and its differences, frame included, are reported).
+      if (gazebo_text.find("<!-- " + mount + ": the description's own sensor") ==
+          std::string::npos) {
+        REQUIRE(gazebo.count(mount) == 1);
+        // The Gazebo macro prefixes a name the export adds: with the default empty prefix it
+        // is the name itself.
+        std::string frame = gazebo.at(mount);
+        if (frame.rfind("${prefix}", 0) == 0) frame = frame.substr(9);
+        CHECK(frame == source["sensor_frame"].as<std::string>());
+      } else {
+        CHECK(gazebo.count(mount) == 0);
+      }
       CHECK(urdf_frames.count(source["sensor_frame"].as<std::string>()) == 1);
       // A collision-monitor source, where the mount feeds one, reads the costmap's topic.
       if (monitor_parameters[mount].IsDefined()) {

@@ -10,6 +10,7 @@
 
 #include "rigdesign/deploy/costmap_config.hpp"
 #include "rigdesign/deploy/sensor_frames.hpp"
+#include "rigdesign/model/description_sensor.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/sensor.hpp"
 
@@ -58,9 +59,15 @@ struct GazeboSensor {
   double noise_stddev = 0.0;
   double noise_distance = 0.0;          ///< [m] the d above
   double datasheet_vertical_fov = 0.0;  ///< [rad] the mode's, for the file's comment
+  /// The description's own sensor of this mount (gazebo_description_sensors.hpp): the export
+  /// writes no second one and bridges this one's topic; the fields above stay the design's, and
+  /// `differences` says what the description's sensor simulates otherwise.
+  std::optional<model::DescriptionSensor> description_sensor;
+  std::vector<std::string> differences;
 };
 
-/// One GazeboSensor per mount, in the rig's order (`frames` and `costmap` hold one entry per
+/// One GazeboSensor per mount, in the rig's order; a mount the description already simulates
+/// carries that sensor (`frames` and `costmap` hold one entry per
 /// mount each, as plan_deployment makes them).
 std::vector<GazeboSensor> gazebo_sensors(const model::Rig& rig, const SensorFrames& frames,
                                          const CostmapConfig& costmap,

@@ -40,6 +40,9 @@ ConvexSolid triangle_solid(const model::Vec3& a, const model::Vec3& b, const mod
 /// convex polytopes is the shortest translation that parts them. <= 0: apart or touching.
 double penetration(const ConvexSolid& a, const ConvexSolid& b);
 
+/// Whether `point` lies in the solid (its boundary included, to 1e-9 m).
+bool contains(const ConvexSolid& solid, const model::Vec3& point);
+
 /// A mount's housing in the robot frame, if its sensor has one: `link` is
 /// housing_part_name(mount id), `where` the mount's line.
 std::optional<model::BodyPart> mount_housing(const model::Mount& mount,

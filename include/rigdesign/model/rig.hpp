@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/model/description_sensor.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/housing_solid.hpp"
 #include "rigdesign/model/input_error.hpp"
@@ -153,6 +154,8 @@ struct DescribedRobot {
   std::map<std::string, SourceLocation> link_where;
   std::map<std::string, SourceLocation> joint_where;
   std::map<std::string, std::string> parent_link;
+  /// The sensors the description declares for Gazebo (their links are in link_poses).
+  std::vector<DescriptionSensor> description_sensors;
   /// The description the links come from; nothing without one.
   std::optional<RobotSource> robot;
 };

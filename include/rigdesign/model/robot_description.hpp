@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "rigdesign/model/description_sensor.hpp"
 #include "rigdesign/model/eigen_types.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/source_location.hpp"
@@ -39,6 +40,8 @@ struct RobotDescription {
   std::map<std::string, SourceLocation> joint_where;
   std::map<std::string, std::string> parent_link;
   std::vector<CollisionShape> collisions;
+  /// The sensors its `<gazebo>` elements declare for the simulator.
+  std::vector<DescriptionSensor> sensors;
   /// What the loader noticed that is not an error (an `env` variable nothing reads).
   std::vector<Diagnostic> warnings;
 

@@ -84,12 +84,37 @@ std::string visibility_table(const deploy::Deployment& deployment) {
         << " | " << clears(deployment, m) << " | " << feeds(deployment, m) << " | ";
     if (m < deployment.gazebo.size()) {
       const deploy::GazeboSensor& g = deployment.gazebo[m];
-      out << deploy::to_string(g.type) << " on " << g.gz_data_topic;
+      if (g.description_sensor) {
+        out << "the description's " << g.description_sensor->type << " '"
+            << g.description_sensor->name << "'"
+            << (g.gz_data_topic.empty() ? std::string() : " on " + g.gz_data_topic)
+            << (g.differences.empty() ? "" : " (differs: see below)");
+      } else {
+        out << deploy::to_string(g.type) << " on " << g.gz_data_topic;
+      }
     }
     out << " |\n";
   }
   return out.str();
 }
+
+namespace {
+
+// The mounts the description's own sensors simulate, and how those differ from the design.
+std::string description_sensor_notes(const deploy::Deployment& deployment) {
+  std::ostringstream out;
+  for (const deploy::GazeboSensor& g : deployment.gazebo) {
+    if (g.differences.empty()) continue;
+    out << "\n"
+        << g.mount_id << " in Gazebo: the description's sensor '" << g.description_sensor->name
+        << "' (" << model::to_string(g.description_sensor->where) << ") differs from the design:";
+    for (const std::string& difference : g.differences) out << "\n- " << difference;
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace
 
 std::string export_readme_text(const model::Rig& rig, const deploy::Deployment& deployment,
                                const std::vector<std::string>& file_names,
@@ -101,7 +126,8 @@ std::string export_readme_text(const model::Rig& rig, const deploy::Deployment& 
     out << "- `" << name << "`" << (purpose == file_purposes().end() ? "" : ": " + purpose->second)
         << '\n';
   }
-  out << "\n## What each layer does with each sensor\n\n" << visibility_table(deployment);
+  out << "\n## What each layer does with each sensor\n\n"
+      << visibility_table(deployment) << description_sensor_notes(deployment);
   if (deployment.collision_monitor) {
     const deploy::CollisionMonitor& monitor = *deployment.collision_monitor;
     out << "\n## Collision monitor\n\n";

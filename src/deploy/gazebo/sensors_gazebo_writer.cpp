@@ -93,7 +93,19 @@ void write_simulated_frame(const deploy::GazeboSensor& s, std::ostream& out) {
       << "    </joint>\n";
 }
 
+// A mount the description already simulates: no second sensor, a comment saying whose it is.
+void write_description_sensor(const deploy::GazeboSensor& s, std::ostream& out) {
+  const model::DescriptionSensor& own = *s.description_sensor;
+  std::string what = s.mount_id + ": the description's own sensor '" + own.name + "' (" + own.type +
+                     ", " + model::to_string(own.where) + ") simulates it; none is added beside it";
+  what += s.differences.empty() ? "; it simulates the design" : "; it differs:";
+  out << "    <!-- " << io::xml_comment_line(what) << " -->\n";
+  for (const std::string& difference : s.differences)
+    out << "    <!--   " << io::xml_comment_line(difference) << " -->\n";
+}
+
 void write_gazebo_sensor(const deploy::GazeboSensor& s, std::ostream& out) {
+  if (s.description_sensor) return write_description_sensor(s, out);
   const bool lidar = s.type == deploy::GazeboSensorType::gpu_lidar;
   std::ostringstream what;
   what << s.mount_id << ": " << s.sensor_id << ", mode " << s.mode_id << "; noise sigma("
@@ -168,6 +180,14 @@ std::string gz_bridge_yaml_text(const std::vector<deploy::GazeboSensor>& sensors
       "the topic nav2's source reads (scans as gz publishes them, clouds from <topic>/points), "
       "then the simulation clock, which nodes with use_sim_time:=true wait for.");
   for (const deploy::GazeboSensor& s : sensors) {
+    if (s.gz_data_topic.empty()) {
+      out << io::yaml_comment(s.mount_id + ": the description's sensor '" +
+                              s.description_sensor->name +
+                              "' sets no <topic>; gz sim names it after the world and the model "
+                              "(/world/<world>/model/<model>/link/<link>/sensor/" +
+                              s.description_sensor->name + "/...): add its entry for your world");
+      continue;
+    }
     const bool scan = s.type == deploy::GazeboSensorType::gpu_lidar && s.laser_scan;
     out << "- ros_topic_name: " << io::yaml_quoted(s.ros_topic) << "\n"
         << "  gz_topic_name: " << io::yaml_quoted(s.gz_data_topic) << "\n"

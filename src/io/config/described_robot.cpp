@@ -19,6 +19,7 @@ DescribedRobotFields read_described_robot(MapReader& top, const std::string& fil
     robot.link_where = links->link_where;
     robot.joint_where = links->joint_where;
     robot.parent_link = links->parent_link;
+    if (links->description) robot.description_sensors = links->description->sensors;
     robot.robot = links->source;
   }
   // With a robot description the body is its collision geometry unless `body` is given.

@@ -5,9 +5,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 
 #include "description_bounds.hpp"
+#include "description_sensors.hpp"
 #include "joint_tree.hpp"
 #include "origin_angles.hpp"
 #include "package_locator.hpp"
@@ -62,7 +64,8 @@ model::Pose3 pose_in_root(const urdf::LinkConstSharedPtr& link) {
 }
 
 xml::Node read_tree(const RobotDescriptionRequest& request, const PackageLocator& packages,
-                    std::set<std::string>* environment_read) {
+                    std::set<std::string>* environment_read,
+                    std::optional<model::Diagnostic>& simulation_skipped) {
   if (!is_xacro_file(request.path))
     return xml::parse_file(request.path, request.named_at, request.field);
   using Expander = RobotDescriptionRequest::Expander;
@@ -85,7 +88,25 @@ xml::Node read_tree(const RobotDescriptionRequest& request, const PackageLocator
   input.packages = &packages;
   input.named_at = request.named_at;
   input.environment_read = environment_read;
-  return expand_xacro(input);
+  // With its <gazebo> elements, for the sensors the description declares (issue 52 item 5);
+  // where a plugin names a package this machine lacks, without them, and a warning says so.
+  input.keep_gazebo = true;
+  try {
+    return expand_xacro(input);
+  } catch (const model::InputError& error) {
+    input.keep_gazebo = false;
+    xml::Node tree = expand_xacro(input);
+    const std::string why = error.diagnostics().empty()
+                                ? std::string(error.what())
+                                : model::to_string(error.diagnostics().front().where) + ": " +
+                                      error.diagnostics().front().problem;
+    simulation_skipped = model::Diagnostic{
+        request.named_at, request.field,
+        "its <gazebo> elements do not expand (" + why +
+            "): the sensors it declares for Gazebo are unknown, and export may add a second one",
+        "the packages those elements name on the package paths", model::Severity::warning};
+    return tree;
+  }
 }
 
 // Where each link's element and its <collision> elements are in the (expanded) text.
@@ -217,7 +238,8 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
   const bool builtin =
       is_xacro_file(request.path) &&
       (request.expander == RobotDescriptionRequest::Expander::builtin || !find_xacro_executable());
-  const xml::Node tree = read_tree(request, packages, &environment_read);
+  std::optional<model::Diagnostic> simulation_skipped;
+  const xml::Node tree = read_tree(request, packages, &environment_read, simulation_skipped);
   if (tree.name != "robot") {
     throw model::InputError(model::Diagnostic{
         tree.where, "robot", "the root element is <" + tree.name + ">", "a URDF <robot> element"});
@@ -247,6 +269,11 @@ model::RobotDescription load_robot_description(const RobotDescriptionRequest& re
            "is never read: the description has no $(optenv " + name + ") or $(env " + name + ")",
            "a variable the description reads (a typo?)", model::Severity::warning});
     }
+  }
+  if (simulation_skipped) description.warnings.push_back(*simulation_skipped);
+  for (model::DescriptionSensor& sensor : description_sensors(tree, description.warnings)) {
+    // A reference to a joint (preserveFixedJoint) or an unknown link holds no sensor of a link.
+    if (urdf_model->getLink(sensor.link)) description.sensors.push_back(std::move(sensor));
   }
   description.name = urdf_model->getName();
   description.file = request.path;

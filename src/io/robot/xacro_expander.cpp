@@ -396,7 +396,9 @@ class Expander {
       // Simulator and controller configuration: URDF parsers skip it and so does rigdesign,
       // unexpanded, so that a plugin's $(find PKG) for a package this machine lacks (Gazebo
       // plugins, ros2_control configs) does not stop a description from loading.
-      if (!input_.keep_simulation && kIgnoredElements.count(node.name)) return;
+      const bool kept = input_.keep_simulation || (input_.keep_gazebo && node.name == "gazebo" &&
+                                                   node.attribute("reference"));
+      if (!kept && kIgnoredElements.count(node.name)) return;
       xml::Node element;
       element.name = node.name;
       element.where = node.where;

@@ -34,6 +34,10 @@ struct XacroInput {
   /// the tests hand it to libsdformat); by default they are left out unexpanded, so that a
   /// plugin's $(find PKG) this machine lacks does not stop a description from loading.
   bool keep_simulation = false;
+  /// Expand `<gazebo reference="LINK">` only: where a description declares its sensors for the
+  /// simulator; model-wide `<gazebo>` plugins and `<ros2_control>` name packages of the robot's
+  /// bringup (irobot_create_control) that a design machine need not have.
+  bool keep_gazebo = false;
 };
 
 /// The expanded description: a plain URDF tree whose elements keep the file and line of the
