@@ -96,6 +96,8 @@ int run_filter_on_scene(const FilterOptions& options, const model::Pipeline& pip
     progress.update(static_cast<double>(i), static_cast<double>(inputs.rig.mounts.size()));
     const model::Mount& mount = inputs.rig.mounts[i];
     const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
+    // Raw clouds, as the filters receive them: a ray the robot stops returns a point on the
+    // robot there (the self-filter's work), so no ray is dropped for the robot here.
     const std::vector<model::PointCloud> clouds =
         sim::simulate_mount(scene, mount, mode, i, options.frames, options.seed);
     const filters::FramesLoad load =

@@ -20,9 +20,16 @@
 #include "rigdesign/io/staged_folder.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/sim/rig_simulation.hpp"
+#include "rigdesign/sim/robot_occlusion.hpp"
 
 namespace rigdesign::cli {
 namespace {
+
+// Rays whose robot stops them within the mode's range.
+std::size_t hidden_rays(const std::vector<double>& free_ranges, double max_range) {
+  return static_cast<std::size_t>(std::count_if(free_ranges.begin(), free_ranges.end(),
+                                                [&](double free) { return free < max_range; }));
+}
 
 // Clouds one `simulate` run may write: a typo in --frames must not fill the disk.
 constexpr double kMaxSimulationBytes = 2e9;
@@ -79,8 +86,11 @@ int run_simulate(const SimulateOptions& options, std::ostream& out, std::ostream
     progress.update(static_cast<double>(i), static_cast<double>(inputs.rig.mounts.size()));
     const model::Mount& mount = inputs.rig.mounts[i];
     const model::SensorMode& mode = *inputs.library.find(mount.sensor_id)->find_mode(mount.mode_id);
-    const std::vector<model::PointCloud> clouds =
-        sim::simulate_mount(scene, mount, mode, i, options.frames, options.seed, settings);
+    // What the robot itself (body, parts, the other housings, supports) hides from each ray.
+    const std::vector<double> free_ranges =
+        sim::robot_free_ranges(inputs.rig, inputs.library, mount, mode, sim::ray_pattern(mode));
+    const std::vector<model::PointCloud> clouds = sim::simulate_mount(
+        scene, mount, mode, i, options.frames, options.seed, settings, free_ranges);
     io::prepare_output_folder(staged.path() + "/" + mount.id, "--out");
     std::size_t points = 0;
     for (std::size_t k = 0; k < clouds.size(); ++k) {
@@ -91,7 +101,8 @@ int run_simulate(const SimulateOptions& options, std::ostream& out, std::ostream
     progress.clear();
     out << "  " << mount.id << " (" << mount.sensor_id << "/" << mount.mode_id
         << "): " << points / clouds.size() << " points per frame -> " << folder << "/" << mount.id
-        << "/\n";
+        << "/ (its robot stops " << hidden_rays(free_ranges, mode.max_range) << " of "
+        << free_ranges.size() << " rays)\n";
   }
   if (options.gazebo) {
     // The same scene for gz sim, so a Gazebo user simulates what rigdesign simulated.

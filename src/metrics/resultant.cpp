@@ -65,6 +65,8 @@ ResultantMetrics compute_resultant(const model::Rig& rig, const model::SensorLib
     result.any_estimate = result.any_estimate || mount.price_basis == model::Basis::estimate ||
                           mount.driver_cpu_basis == model::Basis::estimate;
   }
+  // The masts and brackets that hold them are bought with the sensors (issue 52 item 3).
+  for (const model::RigSupport& support : rig.supports) result.sensor_cost += support.price;
   return result;
 }
 

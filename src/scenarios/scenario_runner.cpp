@@ -566,8 +566,8 @@ model::PointCloud ScenarioLoop::cast_frame(std::size_t i, long index) {
   const sim::RayCaster& caster = static_scene ? still_caster : *moving_caster;
   const model::Pose3 T_world_sensor =
       detail::to_pose3(history.empty() ? pose : history.at(captured)) * mount.mount.T_robot_sensor;
-  model::PointCloud frame =
-      sim::simulate_frame(caster, mount.mode, mount.rays, T_world_sensor, settings, streams[i]);
+  model::PointCloud frame = sim::simulate_frame(caster, mount.mode, mount.rays, T_world_sensor,
+                                                settings, streams[i], mount.free_ranges);
   if (params.negative_obstacles) frame = with_negative_obstacles(frame, resolution, drop_marks);
   return frame;
 }

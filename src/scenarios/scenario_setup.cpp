@@ -8,6 +8,7 @@
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/sim/decimation.hpp"
 #include "rigdesign/sim/noise_stream.hpp"
+#include "rigdesign/sim/robot_occlusion.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
 namespace rigdesign::scenarios::detail {
@@ -51,9 +52,12 @@ Setup make_setup(const model::Rig& rig, const model::SensorLibrary& library,
         sim::decimated_mode(*mode, params.camera_decimation, params.lidar_decimation),
         {},
         sources[i],
-        mount_timing(mount, *mode, per_point, frame_phase(params, i, *mode, mount))};
+        mount_timing(mount, *mode, per_point, frame_phase(params, i, *mode, mount)),
+        {}};
     if (!params.model_latency) simulated.timing.driver = simulated.timing.filtering = 0.0;
     simulated.rays = sim::ray_pattern(simulated.mode);
+    simulated.free_ranges =
+        sim::robot_free_ranges(rig, library, mount, simulated.mode, simulated.rays);
     setup.mounts.push_back(std::move(simulated));
   }
   return setup;

@@ -13,6 +13,9 @@ struct SimulatedMount {
   std::vector<model::Vec3> rays;      ///< ray_pattern(mode), sensor frame
   costmap::ObservationSource source;  ///< what its clouds mark and clear (mount_sources_of)
   MountTiming timing;                 ///< when its frames are captured and arrive
+  /// Per ray, where the robot itself hides it (sim::robot_free_ranges): the body, the other
+  /// mounts' housings and the supports stop rays in the loop as they do in the coverage report.
+  std::vector<double> free_ranges;
 };
 
 struct Setup {

@@ -483,11 +483,15 @@ SearchProblem SelectionSpace::problem_for(
   kept.assign(options_.size(), {});
   for (std::size_t k = 0; k < options_.size(); ++k) {
     problem.slots.emplace_back();
+    // The slot's support is bought with whichever sensor is chosen there.
+    const std::optional<model::RigSupport>& support = catalog_->slots[k].support;
+    const double support_price = support ? support->price : 0.0;
     for (const CatalogOption& option : options_[k]) {
       if (!meets_alone(option, targets)) continue;
       const bool survives = !targets.robustness || !targets.robustness->condition ||
                             option.metrics.light.immune_to(*targets.robustness->condition);
-      problem.slots.back().push_back({option.metrics.price, option.metrics.bandwidth,
+      problem.slots.back().push_back({option.metrics.price + support_price,
+                                      option.metrics.bandwidth,
                                       option.metrics.driver_cpu + option.filtering, option.sections,
                                       survives, option.housing});
       kept[k].push_back(&option);
@@ -536,6 +540,7 @@ model::Rig SelectionSpace::rig_for(const std::vector<const CatalogOption*>& chos
     mount.housing_link = slot.poses[option->pose].housing_link;
     mount.distance_of_interest = slot.distance_of_interest;
     rig.mounts.push_back(mount);
+    if (slot.support) rig.supports.push_back(*slot.support);
   }
   return rig;
 }

@@ -10,7 +10,8 @@ std::vector<model::PointCloud> simulate_mount(const model::Scene& scene, const m
                                               const model::SensorMode& mode,
                                               std::size_t mount_index, int frames,
                                               std::uint64_t seed,
-                                              const SimulationSettings& settings) {
+                                              const SimulationSettings& settings,
+                                              std::span<const double> free_ranges) {
   std::mt19937_64 rng = noise_stream(seed, mount_index);
   const std::vector<model::Vec3> rays = ray_pattern(mode);
   const model::Pose3 T_world_sensor = scene.T_world_robot * mount.T_robot_sensor;
@@ -23,8 +24,8 @@ std::vector<model::PointCloud> simulate_mount(const model::Scene& scene, const m
     const double t = k / mode.frequency;
     std::optional<RayCaster> moving;
     if (!static_scene) moving.emplace(scene.at(t));
-    model::PointCloud cloud =
-        simulate_frame(static_scene ? *still : *moving, mode, rays, T_world_sensor, settings, rng);
+    model::PointCloud cloud = simulate_frame(static_scene ? *still : *moving, mode, rays,
+                                             T_world_sensor, settings, rng, free_ranges);
     if (!settings.sensor_frame) {  // world frame -> robot frame
       const Eigen::Isometry3f transform = T_robot_world.cast<float>();
       for (model::Point3f& p : cloud.points) p = transform * p;

@@ -16,7 +16,8 @@ std::vector<model::Vec3> ray_pattern(const model::SensorMode& mode) {
 model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode& mode,
                                  const std::vector<model::Vec3>& rays,
                                  const model::Pose3& T_world_sensor,
-                                 const SimulationSettings& settings, std::mt19937_64& rng) {
+                                 const SimulationSettings& settings, std::mt19937_64& rng,
+                                 std::span<const double> free_ranges) {
   model::PointCloud cloud;
   cloud.points.reserve(rays.size());
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -27,7 +28,9 @@ model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode
   };
   const model::Vec3 origin = T_world_sensor.translation();
   const model::Mat3 R_world_sensor = T_world_sensor.linear();
-  for (const model::Vec3& ray : rays) {
+  const bool robot = !free_ranges.empty() && free_ranges.size() == rays.size();
+  for (std::size_t r = 0; r < rays.size(); ++r) {
+    const model::Vec3& ray = rays[r];
     // Draw both numbers for every ray so a hit or miss elsewhere never shifts the sequence.
     const double lost = unit(rng);
     const double normal = gaussian(rng);
@@ -37,7 +40,9 @@ model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode
     }
     const model::Vec3 direction = R_world_sensor * ray;
     const std::optional<double> hit = scene.first_hit(origin, direction);
-    if (!hit || *hit < mode.min_range || *hit > mode.max_range) {
+    // The robot (its body, parts, other housings, supports) stops the ray first.
+    const bool on_robot = robot && hit && *hit > free_ranges[r];
+    if (on_robot || !hit || *hit < mode.min_range || *hit > mode.max_range) {
       no_return();
       continue;
     }

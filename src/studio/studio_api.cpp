@@ -162,6 +162,15 @@ json mesh_json(const model::TriangleMesh& mesh) {
   return {{"positions", positions}, {"indices", indices}};
 }
 
+// What the mount's housing cuts into, in check's B2 words; empty: nothing.
+std::string clash_text(const model::Rig& rig, const model::SensorLibrary& library,
+                       std::size_t index) {
+  std::string clash;
+  for (const geometry::HousingClash& found : geometry::housing_clashes(rig, library, index))
+    clash += (clash.empty() ? "" : "; ") + found.describe();
+  return clash.empty() ? "" : rig.mounts[index].id + "'s housing " + clash + " (check: B2)";
+}
+
 // The mount's datasheet housing (robot frame) and what it cuts into, in check's B2 words
 // (issue 52 item 7: the page paints a clashing housing red with the reason).
 void add_housing(const model::Rig& rig, const model::SensorLibrary& library, std::size_t index,
@@ -170,10 +179,18 @@ void add_housing(const model::Rig& rig, const model::SensorLibrary& library, std
       geometry::mount_housing(rig.mounts[index], library);
   if (!housing) return;
   fov["housing"] = mesh_json(housing->triangles);
-  std::string clash;
-  for (const geometry::HousingClash& found : geometry::housing_clashes(rig, library, index))
-    clash += (clash.empty() ? "" : "; ") + found.describe();
-  fov["clash"] = clash.empty() ? "" : rig.mounts[index].id + "'s housing " + clash + " (check: B2)";
+  fov["clash"] = clash_text(rig, library, index);
+}
+
+// The moved mount's B2 verdict with every pose reply, so that a drag into the body or another
+// housing turns it red while it happens (issue 52 item 7).
+json moved_clash_json(const studio::StudioSession& session, const std::string& mount_id) {
+  const model::Rig& rig = session.inputs().rig;
+  for (std::size_t index = 0; index < rig.mounts.size(); ++index) {
+    if (rig.mounts[index].id == mount_id)
+      return {{"mount", mount_id}, {"text", clash_text(rig, session.inputs().library, index)}};
+  }
+  return nullptr;
 }
 
 json fov_json(const studio::StudioSession& session, const std::string& mount_id) {
@@ -296,8 +313,11 @@ studio::Reply StudioApi::operator()(const std::string& method, const std::string
     const json body = json::parse(body_text.empty() ? "{}" : body_text);
     if (!body.is_object()) throw BadRequest{"the body must be a JSON object"};
     if (name == "pose") {
-      session_.set_pose(text_field(body, "mount"), pose_in(body));
-      return json_reply(numbers_json(session_, body.value("exact", false), since));
+      const std::string mount = text_field(body, "mount");
+      session_.set_pose(mount, pose_in(body));
+      json reply = numbers_json(session_, body.value("exact", false), since);
+      reply["clash"] = moved_clash_json(session_, mount);
+      return json_reply(reply);
     }
     if (name == "sensor") {
       session_.set_sensor(text_field(body, "mount"), text_field(body, "sensor"),

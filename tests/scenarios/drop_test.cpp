@@ -19,9 +19,10 @@ using Catch::Matchers::WithinAbs;
 
 namespace {
 
-// Camera: 60 x 40 deg, 48 pixel rows, 0.3-5 m, on a mast 0.6 m up and 0.1 m ahead of the
-// centre, pitched 30 deg down: its top edge points 10 deg below the horizon.
-constexpr double kCameraX = 0.1;
+// Camera: 60 x 40 deg, 48 pixel rows, 0.3-5 m, 0.6 m up on the front of the 0.25 m body (a
+// sensor inside the body sees nothing: issue 52), pitched 30 deg down: its top edge points
+// 10 deg below the horizon.
+constexpr double kCameraX = 0.26;
 constexpr double kCameraZ = 0.6;
 constexpr double kPitch = 30.0;         // [deg]
 constexpr double kHalfVertical = 20.0;  // [deg]
@@ -74,7 +75,7 @@ model::Rig rig(bool with_camera) {
   rig.body.height = 0.7;
   rig.distance_of_interest = 3.0;
   if (with_camera) rig.mounts.push_back(mount("camera", "depth", {kCameraX, 0, kCameraZ}, kPitch));
-  rig.mounts.push_back(mount("lidar", "scan", {0.2, 0, 0.2}, 0.0));
+  rig.mounts.push_back(mount("lidar", "scan", {0.26, 0, 0.2}, 0.0));
   return rig;
 }
 

@@ -101,3 +101,24 @@ TEST_CASE("studio API: malformed edits are 400, invalid ones 422 with check's wo
   CHECK(test::file_text(fixture.path).find("pose: {xyz: [0.5, 0, 0.3], rpy_deg: [0, 0, 0]}") !=
         std::string::npos);
 }
+
+TEST_CASE("studio API: a pose reply carries the moved mount's B2 verdict, live on a drag",
+          "[studio]") {
+  ApiFixture fixture;
+  // rear_lidar onto front_lidar's pose (turned about z): the same RPLIDAR housing in one place.
+  const auto [status, onto] = fixture.call(
+      "POST", "pose", "", R"({"mount": "rear_lidar", "xyz": [0.5, 0, 0.2], "rpy_deg": [0, 0, 0]})");
+  REQUIRE(status == 200);
+  CHECK(onto["exact"] == false);  // the raster path, as while dragging
+  CHECK(onto["clash"]["mount"] == "rear_lidar");
+  const std::string text = onto["clash"]["text"].get<std::string>();
+  CHECK(text.find("rear_lidar's housing") == 0);
+  CHECK(text.find("front_lidar") != std::string::npos);
+  CHECK(text.find("(check: B2)") != std::string::npos);
+  // Back where the rig file has it: nothing.
+  const auto [back_status, back] =
+      fixture.call("POST", "pose", "",
+                   R"({"mount": "rear_lidar", "xyz": [-0.5, 0, 0.2], "rpy_deg": [0, 0, 180]})");
+  REQUIRE(back_status == 200);
+  CHECK(back["clash"]["text"] == "");
+}

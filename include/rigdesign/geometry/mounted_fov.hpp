@@ -50,6 +50,11 @@ class MountedFov {
   bool may_be_hidden_by(const model::TriangleMesh& mesh) const;
 
   /// False when no direction in the FOV can reach the body, so occlusion can be skipped.
+  /// How far [m] a ray from the sensor origin along the unit `direction` (robot frame) goes
+  /// before the robot hides the rest of it: the body, the solid parts, the other housings and
+  /// the supports (not the deployed limits). +infinity when nothing of the robot is in its way
+  /// within the mode's max range; 0 for a buried sensor.
+  double robot_free_range(const model::Vec3& direction) const;
   bool may_be_occluded() const { return may_be_occluded_; }
   const model::Pose3& pose() const { return T_robot_sensor_; }
   const model::SensorMode& mode() const { return *mode_; }

@@ -62,6 +62,10 @@ struct MountingSlot {
   HousingSeat seat = HousingSeat::origin;
   /// The shell has a pocket here (model::Mount::recessed): housings may sit inside the body.
   bool recessed = false;
+  /// The mast, bracket or plate the slot needs (issue 52 item 3), bought with whichever sensor
+  /// is chosen here: its price counts in every option of the slot, and the chosen rig declares
+  /// it (id `<slot id>_support` unless given).
+  std::optional<RigSupport> support;
   SourceLocation where;
 };
 

@@ -167,6 +167,7 @@ struct RigSupport {
   std::string id;
   HousingSolid solid;  ///< its shape and size, centred on its pose
   Pose3 T_robot_support = Pose3::Identity();
+  double price = 0.0;  ///< [USD] `price_usd`, counted with the sensors' cost C_s; 0: not given
   SourceLocation where;
 };
 

@@ -4,6 +4,7 @@
 /// (DESIGN.md section 6). Seeded: the same seed gives the same cloud.
 #include <cstdint>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "rigdesign/model/point_cloud.hpp"
@@ -32,10 +33,14 @@ struct SimulationSettings {
 };
 
 /// One frame. `T_world_sensor` places the sensor; the cloud's origin and orientation record
-/// the sensor pose in the cloud's frame.
+/// the sensor pose in the cloud's frame. `free_ranges` (robot_occlusion.hpp), one per ray, is
+/// where the sensor's own robot hides each ray: a ray whose scene hit lies beyond it ends on the
+/// robot and returns nothing, as the export's self-filter drops such returns. Empty: the robot
+/// hides nothing (a sensor on its own, as paper 3's cell has them).
 model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode& mode,
                                  const std::vector<model::Vec3>& rays,
                                  const model::Pose3& T_world_sensor,
-                                 const SimulationSettings& settings, std::mt19937_64& rng);
+                                 const SimulationSettings& settings, std::mt19937_64& rng,
+                                 std::span<const double> free_ranges = {});
 
 }  // namespace rigdesign::sim

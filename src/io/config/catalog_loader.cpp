@@ -161,6 +161,14 @@ model::Catalog load_catalog(const std::string& path) {
       slot.seat = *seat;
     if (reader.has("recessed"))
       slot.recessed = reader.boolean("recessed", Need::required).value_or(false);
+    if (auto support = reader.map("support", Need::optional,
+                                  "a map with shape, size | radius and height, pose, price_usd")) {
+      const std::string id =
+          support->has("id") ? io::ros_name(*support, "id", "a support id") : slot.id + "_support";
+      slot.support = io::support_solid(*support);
+      slot.support->id = id;
+      support->reject_unknown_keys();
+    }
     reader.text("note", Need::optional);
     reader.reject_unknown_keys();
     if (!slot.id.empty() && !slot_ids.insert(slot.id).second) {

@@ -192,6 +192,22 @@ model::PoseTolerance pose_tolerance(MapReader& tolerance) {
   return result;
 }
 
+model::RigSupport support_solid(MapReader& reader) {
+  // [m] the largest support that is plausibly metres: a mast as tall as a room.
+  constexpr double kLargestSupport = 5.0;
+  model::RigSupport support;
+  support.where = reader.location();
+  support.solid = solid_shape(reader, kLargestSupport);
+  if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg")) {
+    support.T_robot_support = xyz_rpy_deg_pose(*pose, Need::required);
+    pose->reject_unknown_keys();
+  }
+  if (reader.has("price_usd"))
+    support.price = non_negative(reader, "price_usd", Need::required, "US dollars, >= 0");
+  reader.text("note", Need::optional);
+  return support;
+}
+
 model::HousingSolid solid_shape(MapReader& reader, double largest) {
   model::HousingSolid solid;
   solid.where = reader.location();

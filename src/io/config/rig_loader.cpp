@@ -86,21 +86,13 @@ model::Mount read_mount(MapReader& reader, const std::optional<RobotLinks>& robo
   return mount;
 }
 
-// [m] the largest support that is plausibly metres: a mast as tall as a room.
-constexpr double kLargestSupport = 5.0;
-
-// `{id, shape: box, size, pose}` or `{id, shape: cylinder, radius, height, pose}`: a mast,
-// bracket or plate holding sensors (issue 52 item 3), centred on its pose.
+// `{id, shape: box, size, pose}` or `{id, shape: cylinder, radius, height, pose}`, with an
+// optional `price_usd`: a mast, bracket or plate holding sensors (issue 52 item 3), centred on
+// its pose.
 model::RigSupport read_support(MapReader& reader) {
-  model::RigSupport support;
-  support.where = reader.location();
-  support.id = io::ros_name(reader, "id", "a support id");
-  support.solid = io::solid_shape(reader, kLargestSupport);
-  if (auto pose = reader.map("pose", Need::required, "a map with xyz and rpy_deg")) {
-    support.T_robot_support = io::xyz_rpy_deg_pose(*pose, Need::required);
-    pose->reject_unknown_keys();
-  }
-  reader.text("note", Need::optional);
+  const std::string id = io::ros_name(reader, "id", "a support id");
+  model::RigSupport support = io::support_solid(reader);
+  support.id = id;
   reader.reject_unknown_keys();
   return support;
 }

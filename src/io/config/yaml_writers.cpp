@@ -35,6 +35,31 @@ void write_body(std::ostringstream& out, const model::RobotBody& body) {
   }
 }
 
+// The masts, brackets and plates that hold the sensors (issue 52 item 3), as rig files write
+// them.
+void write_supports(std::ostringstream& out, const std::vector<model::RigSupport>& supports) {
+  if (supports.empty()) return;
+  out << "supports:\n";
+  for (const model::RigSupport& support : supports) {
+    const model::HousingSolid& solid = support.solid;
+    out << "  - {id: " << yaml_quoted(support.id)
+        << ", shape: " << model::name_in(model::kHousingShapeNames, solid.shape);
+    if (solid.shape == model::HousingShape::cylinder) {
+      out << ", radius: " << number(solid.radius()) << ", height: " << number(solid.size.z());
+    } else {
+      out << ", size: [" << number(solid.size.x()) << ", " << number(solid.size.y()) << ", "
+          << number(solid.size.z()) << "]";
+    }
+    const model::Vec3 xyz = support.T_robot_support.translation();
+    const model::Vec3 rpy = model::rpy_from_rotation(support.T_robot_support.linear());
+    out << ", pose: {xyz: [" << number(xyz.x()) << ", " << number(xyz.y()) << ", "
+        << number(xyz.z()) << "], rpy_deg: [" << number(model::rad_to_deg(rpy.x())) << ", "
+        << number(model::rad_to_deg(rpy.y())) << ", " << number(model::rad_to_deg(rpy.z())) << "]}";
+    if (support.price > 0) out << ", price_usd: " << number(support.price);
+    out << "}\n";
+  }
+}
+
 // `path` as seen from `folder`.
 
 void write_text_map(std::ostringstream& out, const char* key,
@@ -101,6 +126,7 @@ std::string rig_to_yaml(const model::Rig& rig, const std::string& sensor_library
         << number(model::rad_to_deg(t.rpy.y())) << ", " << number(model::rad_to_deg(t.rpy.z()))
         << "]}\n";
   }
+  write_supports(out, rig.supports);
   out << "mounts:\n";
   for (const model::Mount& mount : rig.mounts) {
     out << "  - id: " << yaml_quoted(mount.id) << "\n    sensor: " << yaml_quoted(mount.sensor_id)

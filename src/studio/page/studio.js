@@ -257,6 +257,19 @@ function showHousing(pivot, fov) {
   box.hidden = studio.clashes.size === 0;
 }
 
+// A pose reply's B2 verdict for the moved mount, live while it is dragged: its housing turns
+// red (or back to grey) and the reason shows under the panel.
+function showClash(mountId, text) {
+  studio.clashes = studio.clashes || new Map();
+  if (text) studio.clashes.set(mountId, text); else studio.clashes.delete(mountId);
+  const pivot = studio.pivots.get(mountId);
+  const housing = pivot && pivot.userData.holder.children.find((child) => child.name === 'housing');
+  if (housing) { housing.material.color.setHex(text ? 0xd62828 : 0x707070); requestRender(); }
+  const box = $('clash');
+  box.textContent = [...studio.clashes.values()].join('\n');
+  box.hidden = studio.clashes.size === 0;
+}
+
 // Where a mount's move arrow along x can be gripped on screen (viewport pixels) and the
 // screen direction of +x there: for automation (the browser test drags it). The picker of
 // TransformControls r111 spans 0.1 to 1.1 of the gizmo's size along the axis, in world axes
@@ -306,6 +319,7 @@ async function runPose(request) {
       {mount: request.mount, xyz: request.pose.xyz, rpy_deg: request.pose.rpy_deg, exact: request.exact});
     showErrors(null);
     showNumbers(numbers);
+    if (numbers.clash) showClash(numbers.clash.mount, numbers.clash.text);
     studio.lastServerMs = numbers.seconds * 1000;
     studio.lastLatencyMs = performance.now() - request.started;
     if (!request.exact) studio.rasterLatenciesMs.push(studio.lastLatencyMs);

@@ -63,6 +63,9 @@ model::PoseTolerance pose_tolerance(MapReader& tolerance);
 /// with `radius` and `height` (axis z), metres; the centre is left at 0 for the caller. Warns
 /// when it is over `largest` [m] (millimetres typed as metres?).
 model::HousingSolid solid_shape(MapReader& reader, double largest);
+/// A support (issue 52 item 3) after its id: `shape` with its size (solid_shape), `pose`
+/// (xyz, rpy_deg: the solid's centre) and an optional `price_usd`; warns above 5 m.
+model::RigSupport support_solid(MapReader& reader);
 /// `basis: datasheet | measured | estimate`.
 model::Basis basis(MapReader& reader, Need need);
 
