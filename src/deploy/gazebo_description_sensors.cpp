@@ -64,6 +64,10 @@ void compare_camera(const model::DescriptionSensor& own, const GazeboSensor& des
 
 }  // namespace
 
+std::string gz_scoped_topic(const std::string& sensor_name) {
+  return "/world/<world>/model/<model>/link/<link>/sensor/" + sensor_name + "/...";
+}
+
 std::optional<model::DescriptionSensor> description_sensor_of(const model::Rig& rig,
                                                               const model::Mount& mount,
                                                               const model::SensorLibrary& library) {
@@ -111,10 +115,8 @@ std::vector<std::string> description_sensor_differences(const model::Description
                     number(designed.range_min) + ".." + number(designed.range_max) + ")");
   }
   if (own.topic.empty()) {
-    notes.push_back(
-        "it sets no <topic>: gz sim publishes it under /world/<world>/model/<model>/"
-        "link/<link>/sensor/" +
-        own.name + "/..., which bridge.yaml cannot name");
+    notes.push_back("it sets no <topic>: gz sim publishes it under " + gz_scoped_topic(own.name) +
+                    ", which bridge.yaml cannot name");
   }
   if (own.frame_id != designed.frame_id) {
     notes.push_back(

@@ -14,6 +14,12 @@ namespace {
 // gz-sensors publishes a gpu_lidar's or depth camera's cloud on `<topic>` + this.
 constexpr std::string_view kCloudSuffix = "/points";
 
+// What the bridge reads from a sensor publishing on gz `topic`: gz-sensors publishes a lidar's
+// scan on it, and a lidar's or camera's cloud on `topic`/points (docs/gazebo.md).
+std::string gz_data_topic(const std::string& topic, bool laser_scan) {
+  return laser_scan ? topic : topic + std::string(kCloudSuffix);
+}
+
 int ray_count(double fov, double spacing, bool wraps) {
   const int gaps = static_cast<int>(std::lround(fov / spacing));
   return wraps ? gaps : gaps + 1;
@@ -88,8 +94,7 @@ std::vector<GazeboSensor> gazebo_sensors(const model::Rig& rig, const SensorFram
     if (!sensor.laser_scan && sensor.topic.ends_with(kCloudSuffix) &&
         sensor.topic.size() > kCloudSuffix.size())
       sensor.topic.resize(sensor.topic.size() - kCloudSuffix.size());
-    sensor.gz_data_topic =
-        sensor.laser_scan ? sensor.topic : sensor.topic + std::string(kCloudSuffix);
+    sensor.gz_data_topic = gz_data_topic(sensor.topic, sensor.laser_scan);
     sensor.update_rate = mode.frequency;
     sensor.range_min = mode.min_range;
     sensor.range_max = mode.max_range;
@@ -104,12 +109,10 @@ std::vector<GazeboSensor> gazebo_sensors(const model::Rig& rig, const SensorFram
     sensor.description_sensor = description_sensor_of(rig, rig.mounts[m], library);
     if (sensor.description_sensor) {
       sensor.differences = description_sensor_differences(*sensor.description_sensor, sensor);
-      // gz-sensors publishes a lidar's scan on <topic>, its cloud on <topic>/points, and a
-      // camera's cloud on <topic>/points (docs/gazebo.md).
+      // Without a <topic> gz names one after the world: the bridge cannot (empty).
       const std::string& topic = sensor.description_sensor->topic;
-      sensor.gz_data_topic = topic.empty()       ? std::string()
-                             : sensor.laser_scan ? topic
-                                                 : topic + std::string(kCloudSuffix);
+      sensor.gz_data_topic =
+          topic.empty() ? std::string() : gz_data_topic(topic, sensor.laser_scan);
     }
     sensors.push_back(sensor);
   }

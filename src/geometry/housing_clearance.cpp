@@ -5,6 +5,7 @@
 #include <functional>
 #include <memory>
 
+#include "rigdesign/geometry/bisection.hpp"
 #include "rigdesign/geometry/body_mesh.hpp"
 #include "rigdesign/geometry/body_occluder.hpp"
 #include "rigdesign/geometry/housing_geometry.hpp"
@@ -66,13 +67,10 @@ constexpr int kDepthSteps = 16;
 double cut_depth(const model::HousingSolid& housing, const model::Pose3& T_robot_sensor,
                  const Meets& meets) {
   if (!meets(housing_solid(housing, T_robot_sensor, kHousingTouch))) return 0.0;
-  double low = kHousingTouch;
-  double high = 0.5 * housing.size.minCoeff();
-  for (int step = 0; step < kDepthSteps; ++step) {
-    const double middle = 0.5 * (low + high);
-    (meets(housing_solid(housing, T_robot_sensor, middle)) ? low : high) = middle;
-  }
-  return low;
+  // Shrunk by more than the depth, it no longer meets the solid.
+  return bisect(kHousingTouch, 0.5 * housing.size.minCoeff(), kDepthSteps,
+                [&](double inset) { return !meets(housing_solid(housing, T_robot_sensor, inset)); })
+      .first;
 }
 
 // One solid of the body a housing may meet: its link (empty: a cylinder or prism body), its
@@ -181,13 +179,7 @@ std::optional<double> housing_gap(const model::Rig& rig, const model::SensorLibr
   };
   if (held(kHousingShim)) return std::nullopt;
   if (!held(kLargestGap)) return kLargestGap;
-  double low = kHousingShim;
-  double high = kLargestGap;
-  for (int step = 0; step < kDepthSteps; ++step) {
-    const double middle = 0.5 * (low + high);
-    (held(middle) ? high : low) = middle;
-  }
-  return high;
+  return bisect(kHousingShim, kLargestGap, kDepthSteps, held).second;
 }
 
 bool solids_clash(const ConvexSolid& a, const ConvexSolid& b) {

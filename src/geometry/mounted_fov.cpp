@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "rigdesign/geometry/bisection.hpp"
 #include "rigdesign/model/line_crossings.hpp"
 #include "rigdesign/model/units.hpp"
 
@@ -130,13 +131,11 @@ double MountedFov::robot_free_range(const model::Vec3& direction) const {
   if (may_be_occluded_ && body_->blocks(origin_, origin_ + reach * direction)) {
     // Along a ray from the origin, once the segment passes through the body it stays blocked:
     // the entry point by bisection (the silhouette's critical parameters degenerate when the
-    // line of sight is the ray itself). 60 halvings take 100 m below 1e-16 m.
-    double clear = 0.0, blocked = reach;
-    for (int step = 0; step < 60 && blocked - clear > 1e-12; ++step) {
-      const double mid = 0.5 * (clear + blocked);
-      (body_->blocks(origin_, origin_ + mid * direction) ? blocked : clear) = mid;
-    }
-    free = blocked;
+    // line of sight is the ray itself), halved until under 1e-12 m (at most 60 times).
+    const int steps = std::clamp(static_cast<int>(std::ceil(std::log2(reach / 1e-12))), 0, 60);
+    free = bisect(0.0, reach, steps, [&](double t) {
+             return body_->blocks(origin_, origin_ + t * direction);
+           }).second;
   }
   if (shadow_) {
     const IntervalSet hidden =

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "rigdesign/model/optical_frame.hpp"
 
@@ -28,7 +30,11 @@ model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode
   };
   const model::Vec3 origin = T_world_sensor.translation();
   const model::Mat3 R_world_sensor = T_world_sensor.linear();
-  const bool robot = !free_ranges.empty() && free_ranges.size() == rays.size();
+  // One free range per ray, or none: a pattern made for another mode must not pass unnoticed.
+  if (!free_ranges.empty() && free_ranges.size() != rays.size())
+    throw std::logic_error("simulate_frame: " + std::to_string(free_ranges.size()) +
+                           " free ranges for " + std::to_string(rays.size()) + " rays");
+  const bool robot = !free_ranges.empty();
   for (std::size_t r = 0; r < rays.size(); ++r) {
     const model::Vec3& ray = rays[r];
     // Draw both numbers for every ray so a hit or miss elsewhere never shifts the sequence.

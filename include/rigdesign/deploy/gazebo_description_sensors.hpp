@@ -24,6 +24,11 @@ std::optional<model::DescriptionSensor> description_sensor_of(const model::Rig& 
                                                               const model::Mount& mount,
                                                               const model::SensorLibrary& library);
 
+/// Where gz sim publishes a sensor that sets no `<topic>`, as a pattern: its scoped name under
+/// the world and the model (gz-sim src/rendering/RenderUtil.cc:1723 at 93bbf3e), which the
+/// export cannot know.
+std::string gz_scoped_topic(const std::string& sensor_name);
+
 /// One phrase per way the description's sensor simulates `designed` differently: its type
 /// where gz sim does not render it, rate, rays, angles, image, ranges, topic and frame.
 std::vector<std::string> description_sensor_differences(const model::DescriptionSensor& own,

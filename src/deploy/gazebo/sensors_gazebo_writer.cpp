@@ -4,6 +4,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "rigdesign/deploy/gazebo_description_sensors.hpp"
 #include "rigdesign/io/emit/xml_emit.hpp"
 #include "rigdesign/io/emit/yaml_emit.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -181,11 +182,10 @@ std::string gz_bridge_yaml_text(const std::vector<deploy::GazeboSensor>& sensors
       "then the simulation clock, which nodes with use_sim_time:=true wait for.");
   for (const deploy::GazeboSensor& s : sensors) {
     if (s.gz_data_topic.empty()) {
-      out << io::yaml_comment(s.mount_id + ": the description's sensor '" +
-                              s.description_sensor->name +
-                              "' sets no <topic>; gz sim names it after the world and the model "
-                              "(/world/<world>/model/<model>/link/<link>/sensor/" +
-                              s.description_sensor->name + "/...): add its entry for your world");
+      out << io::yaml_comment(
+          s.mount_id + ": the description's sensor '" + s.description_sensor->name +
+          "' sets no <topic>; gz sim names it after the world and the model (" +
+          deploy::gz_scoped_topic(s.description_sensor->name) + "): add its entry for your world");
       continue;
     }
     const bool scan = s.type == deploy::GazeboSensorType::gpu_lidar && s.laser_scan;

@@ -35,9 +35,7 @@ std::string text_in(const xml::Node& element) {
   for (const xml::Node& child : element.children) {
     if (child.kind == xml::Node::Kind::text) text += child.text;
   }
-  const std::size_t first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+  return xml::trimmed(text);
 }
 
 class SensorReader {

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "xml_tree.hpp"
+
 namespace rigdesign::io {
 namespace {
 
@@ -24,12 +26,6 @@ std::vector<std::string> split_paths(const char* value) {
   return parts;
 }
 
-std::string trim(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
-}
-
 }  // namespace
 
 std::optional<std::string> package_name_of(const std::string& package_xml) {
@@ -42,7 +38,7 @@ std::optional<std::string> package_name_of(const std::string& package_xml) {
   const auto open = content.find("<name>");
   const auto close = content.find("</name>", open);
   if (open == std::string::npos || close == std::string::npos) return std::nullopt;
-  const std::string name = trim(content.substr(open + 6, close - open - 6));
+  const std::string name = xml::trimmed(content.substr(open + 6, close - open - 6));
   if (name.empty()) return std::nullopt;
   return name;
 }

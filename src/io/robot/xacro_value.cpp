@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "rigdesign/io/robot/xacro_expression.hpp"
+#include "xml_tree.hpp"
 
 namespace rigdesign::io::xacro {
 namespace {
@@ -12,12 +13,6 @@ namespace {
 std::string lower(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return text;
-}
-
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
 }
 
 }  // namespace
@@ -103,7 +98,7 @@ bool truthy(const Value& value) {
 }
 
 Value parse_literal(const std::string& text) {
-  const std::string t = trimmed(text);
+  const std::string t = xml::trimmed(text);
   if (!t.empty()) {
     long long integer = 0;
     const char* begin = t.data();

@@ -32,6 +32,9 @@ Node parse_file(const std::string& path, const model::SourceLocation& named_at,
 /// Parses XML held in memory; `file` names it in errors (e.g. the xacro file it came from).
 Node parse_text(const std::string& text, const std::string& file);
 
+/// `text` without the XML whitespace (space, tab, CR, LF) around it.
+std::string trimmed(const std::string& text);
+
 /// Serialises `root` (an element) as an XML document, escaping text and attribute values.
 std::string to_xml(const Node& root);
 
