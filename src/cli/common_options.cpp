@@ -2,17 +2,32 @@
 
 #include <CLI/CLI.hpp>
 
+#include "rigdesign/io/file_bytes.hpp"
+
 namespace rigdesign::cli {
 namespace {
 
 // An option CLI11 accepts but --help does not list.
 constexpr const char* kHidden = "";
 
+CLI::Validator not_a_pipe_or_device() {
+  // Refused before any command starts: `serve` would otherwise keep waiting to show the load
+  // error, and a FIFO's open would wait for a writer. A folder is left to the reader's message.
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        const std::optional<std::string> kind = io::not_a_regular_file(path);
+        if (!kind || kind->starts_with("is a folder")) return {};
+        return "'" + path + "' " + *kind;
+      },
+      "FILE");
+}
+
 }  // namespace
 
 CLI::Option* add_rig_option(CLI::App& app, std::string& rig) {
   return app.add_option("rig,--rig", rig, "Rig file (rigs/*.yaml; positional or --rig)")
-      ->required();
+      ->required()
+      ->check(not_a_pipe_or_device());
 }
 
 CLI::Option* add_sensors_option(CLI::App& app, std::string& sensors) {

@@ -11,6 +11,7 @@
 #include "rigdesign/geometry/housing_geometry.hpp"
 #include "rigdesign/geometry/mounted_fov.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/units.hpp"
 
 namespace rigdesign::deploy {
@@ -87,6 +88,36 @@ int fewest_returns(const ProtectiveZone& zone, const std::vector<const model::Se
   return fewest;
 }
 
+// A protective zone no robot brakes within (a mount throttled to 1e-9 Hz, a deceleration of
+// 1e-300 m/s^2) is refused before it is measured: it names the value that made it so.
+void refuse_unbounded_zone(const model::Rig& rig, const model::Requirements* requirements,
+                           const CollisionMonitor& monitor, double slowdown_reach,
+                           const std::string& numbers) {
+  if (slowdown_reach <= kMaxZoneReach) return;
+  const double v = monitor.speed;
+  const bool braking = v * v / (2 * monitor.deceleration) >= v * monitor.latency;
+  model::SourceLocation where;
+  std::string field = "robot_speed.deceleration";
+  if (!braking) {
+    field = "the slowest source's frame period";
+    for (const CollisionSource& source : monitor.sources) {
+      const model::Mount& mount = rig.mounts[source.source];
+      if (source.latency == monitor.latency && mount.throttle_hz) {
+        where = mount.throttle_where;
+        field = "mounts." + mount.id + ".throttle_hz";
+      }
+    }
+  } else if (requirements && requirements->deceleration) {
+    where = requirements->deceleration_where;
+  }
+  throw model::InputError(model::Diagnostic{
+      where, field,
+      "makes the slowdown zone reach " + model::format_number(slowdown_reach, 3) + " m ahead (" +
+          numbers + "): no collision monitor brakes over such a distance",
+      "zones within " + model::format_number(kMaxZoneReach, 3) +
+          " m: a throttle of a few Hz and a deceleration in m/s^2 (e.g. 0.5 to 3)"});
+}
+
 }  // namespace
 
 BodyOutline body_outline(const CostmapConfig& config) {
@@ -151,6 +182,7 @@ std::optional<CollisionMonitor> collision_monitor(const model::Rig& rig,
   const double slow = model::round_up(stop + v * t + (v * v - rho * rho * v * v) / (2 * a), 0.01);
   const std::string numbers = "v " + model::format_number(v, 3) + " m/s, t " + seconds(t) +
                               " (slowest source), a " + model::format_number(a, 3) + " m/s^2";
+  refuse_unbounded_zone(rig, requirements, monitor, slow, numbers);
   monitor.zones.push_back(
       {"stop_zone",
        "stop",

@@ -56,6 +56,90 @@ std::vector<BoundaryArc> unseen_arcs(const std::vector<Piece>& pieces) {
   return arcs;
 }
 
+// [m] how far from the robot's axis any viewer can see: beyond it every column is unseen,
+// so only the part of a zone within it is sampled (a zone typed in millimetres, 860 m wide,
+// costs what its part within the sensors' reach costs).
+double viewers_reach(const std::vector<ZoneViewer>& viewers) {
+  double reach = 0.0;
+  for (const ZoneViewer& viewer : viewers)
+    reach = std::max(reach, viewer.fov->origin().head<2>().norm() + viewer.fov->mode().max_range);
+  return reach;
+}
+
+// The parameters [t0, t1] within [0, 1] at which a + t (b - a) lies within `reach` of the
+// axis, or nothing.
+std::optional<std::pair<double, double>> within_reach(const model::Vec2& a, const model::Vec2& b,
+                                                      double reach) {
+  const model::Vec2 d = b - a;
+  const double dd = d.squaredNorm();
+  if (dd == 0.0) return a.norm() <= reach ? std::optional(std::pair(0.0, 1.0)) : std::nullopt;
+  // |a + t d|^2 = reach^2: dd t^2 + 2 (a.d) t + |a|^2 - reach^2 = 0.
+  const double half_b = a.dot(d);
+  const double disc = half_b * half_b - dd * (a.squaredNorm() - reach * reach);
+  if (disc < 0.0) return std::nullopt;
+  const double root = std::sqrt(disc);
+  const double t0 = std::max(0.0, (-half_b - root) / dd);
+  const double t1 = std::min(1.0, (-half_b + root) / dd);
+  if (!(t0 < t1)) return std::nullopt;
+  return std::pair(t0, t1);
+}
+
+// The edge a -> b cut into pieces: kBoundaryStep apart within reach, one unseen piece for each
+// stretch beyond it.
+void edge_pieces(const model::Vec2& a, const model::Vec2& b, double reach,
+                 std::vector<Piece>& pieces) {
+  const auto at = [&](double t) -> model::Vec2 { return a + (b - a) * t; };
+  const auto span = within_reach(a, b, reach);
+  if (!span) {
+    pieces.push_back({a, b});
+    return;
+  }
+  if (span->first > 0.0) pieces.push_back({a, at(span->first)});
+  // Judged as a double first: a source of absurd range puts a whole 1e8 m edge within reach.
+  const double length = (b - a).norm() * (span->second - span->first);
+  const int count =
+      static_cast<int>(std::clamp(std::ceil(length / kBoundaryStep), 1.0, kMaxEdgeSamples));
+  for (int k = 0; k < count; ++k) {
+    const double step = (span->second - span->first) / count;
+    pieces.push_back({at(span->first + step * k), at(span->first + step * (k + 1))});
+  }
+  if (span->second < 1.0) pieces.push_back({at(span->second), b});
+}
+
+// A source may see only the zone's inside (a camera looking down into it): it still feeds it.
+// The inside is sampled within the viewers' reach only, every kInteriorStep, or coarser so
+// that no viewer tries more than kMaxInteriorSamples columns.
+void interior_sightings(const std::vector<model::Vec2>& zone, const BodyOutline& body,
+                        const std::vector<ZoneViewer>& viewers, double area_top, double reach,
+                        ZoneVisibility& visibility) {
+  model::Vec2 low = zone.front();
+  model::Vec2 high = zone.front();
+  for (const model::Vec2& p : zone) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  low = low.cwiseMax(model::Vec2(-reach, -reach));
+  high = high.cwiseMin(model::Vec2(reach, reach));
+  if (!(low.x() < high.x() && low.y() < high.y())) return;
+  const double area = (high.x() - low.x()) * (high.y() - low.y());
+  const double step = std::max(kInteriorStep, std::sqrt(area / kMaxInteriorSamples));
+  // At most 1e6 columns in all: the counts fit an int.
+  const int columns = static_cast<int>(std::ceil((high.x() - low.x()) / step));
+  const int rows = static_cast<int>(std::ceil((high.y() - low.y()) / step));
+  for (std::size_t v = 0; v < viewers.size(); ++v) {
+    for (int i = 0; i < columns && !visibility.sees[v]; ++i) {
+      for (int j = 0; j < rows; ++j) {
+        const model::Vec2 p(low.x() + (i + 0.5) * step, low.y() + (j + 0.5) * step);
+        if (!model::inside_polygon(zone, p) || body.holds(p, 0.0)) continue;
+        if (sees_column(viewers[v], p, area_top)) {
+          visibility.sees[v] = true;
+          break;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 bool BodyOutline::holds(const model::Vec2& p, double tolerance) const {
@@ -81,50 +165,25 @@ ZoneVisibility zone_visibility(const std::vector<model::Vec2>& given, const Body
   visibility.sees.assign(viewers.size(), false);
   visibility.seen_boundary.assign(viewers.size(), 0.0);
   if (zone.size() < 3) return visibility;
+  const double reach = viewers_reach(viewers);
   std::vector<Piece> pieces;
-  for (std::size_t i = 0; i < zone.size(); ++i) {
-    const model::Vec2& a = zone[i];
-    const model::Vec2& b = zone[(i + 1) % zone.size()];
-    const double length = (b - a).norm();
-    const int count = std::max(1, static_cast<int>(std::ceil(length / kBoundaryStep)));
-    for (int k = 0; k < count; ++k) {
-      Piece piece{a + (b - a) * (static_cast<double>(k) / count),
-                  a + (b - a) * (static_cast<double>(k + 1) / count)};
-      const model::Vec2 middle = (piece.from + piece.to) / 2.0;
-      piece.on_body = body.holds(middle, kOnBodyTolerance);
-      if (!piece.on_body) {
-        visibility.checked_boundary += length / count;
-        for (std::size_t v = 0; v < viewers.size(); ++v) {
-          if (!sees_column(viewers[v], middle, area_top)) continue;
-          piece.seen = true;
-          visibility.sees[v] = true;
-          visibility.seen_boundary[v] += length / count;
-        }
-      }
-      pieces.push_back(piece);
+  for (std::size_t i = 0; i < zone.size(); ++i)
+    edge_pieces(zone[i], zone[(i + 1) % zone.size()], reach, pieces);
+  for (Piece& piece : pieces) {
+    const model::Vec2 middle = (piece.from + piece.to) / 2.0;
+    const double length = (piece.to - piece.from).norm();
+    piece.on_body = body.holds(middle, kOnBodyTolerance);
+    if (piece.on_body) continue;
+    visibility.checked_boundary += length;
+    for (std::size_t v = 0; v < viewers.size() && middle.norm() <= reach; ++v) {
+      if (!sees_column(viewers[v], middle, area_top)) continue;
+      piece.seen = true;
+      visibility.sees[v] = true;
+      visibility.seen_boundary[v] += length;
     }
   }
   visibility.unseen = unseen_arcs(pieces);
-  // A source may see only the zone's inside (a camera looking down into it): it still feeds it.
-  model::Vec2 low = zone.front();
-  model::Vec2 high = zone.front();
-  for (const model::Vec2& p : zone) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  for (std::size_t v = 0; v < viewers.size(); ++v) {
-    for (double x = low.x() + kInteriorStep / 2; x < high.x() && !visibility.sees[v];
-         x += kInteriorStep) {
-      for (double y = low.y() + kInteriorStep / 2; y < high.y(); y += kInteriorStep) {
-        const model::Vec2 p(x, y);
-        if (!model::inside_polygon(zone, p) || body.holds(p, 0.0)) continue;
-        if (sees_column(viewers[v], p, area_top)) {
-          visibility.sees[v] = true;
-          break;
-        }
-      }
-    }
-  }
+  interior_sightings(zone, body, viewers, area_top, reach, visibility);
   return visibility;
 }
 

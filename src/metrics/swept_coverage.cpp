@@ -69,17 +69,26 @@ void sweep_check_input(const SweepMotion& motion, const SweepSettings& settings)
 
 // The largest time step at which no cell within `reach` of the robot's axis moves half a cell
 // relative to the robot (its speed there is at most v + |omega| reach) and the robot turns
-// less than half the azimuth step, shortened to divide the horizon into whole steps.
-std::pair<double, long> sweep_time_step(const SweepMotion& motion, double reach,
-                                        double azimuth_step, const SweepSettings& settings) {
+// less than half the azimuth step, shortened to divide the horizon into whole steps. The
+// count stays a double: it is judged against the sample cap before it becomes an integer
+// (a spin at 1e20 rad/s needs 1e23 steps, which no integer type holds).
+std::pair<double, double> sweep_time_step(const SweepMotion& motion, double reach,
+                                          double azimuth_step, const SweepSettings& settings) {
   const double omega = std::abs(motion.angular_rate());
   double step = settings.cell / (2.0 * (motion.linear_speed() + omega * reach));
   step = std::min(step, azimuth_step / (2.0 * omega));
-  const long count = std::max(1L, static_cast<long>(std::ceil(settings.horizon / step)));
-  return {settings.horizon / static_cast<double>(count), count};
+  const double count = std::max(1.0, std::ceil(settings.horizon / step));
+  return {settings.horizon / count, count};
+}
+
+// Cells on the grid's square around the axis, judged before the grid is built.
+double sweep_grid_bound(double distance, double cell) {
+  const double side = 2.0 * std::ceil(distance / cell) + 1.0;
+  return side * side;
 }
 
 // Cells centred on multiples of `cell` within `distance` of the axis and outside the body.
+// Precondition: sweep_grid_bound(distance, cell) was judged against the sample cap.
 std::vector<SweepCell> sweep_grid(const VisibilityMap& map, double distance, double cell) {
   const long half = static_cast<long>(std::ceil(distance / cell));
   std::vector<SweepCell> cells;
@@ -247,23 +256,28 @@ SweptCoverage swept_coverage(const model::Rig& rig, const model::SensorLibrary& 
     motions[0].turn_rate = std::abs(motion.turn_rate);
     motions[1].turn_rate = -std::abs(motion.turn_rate);
   }
+  const auto refuse_over_cap = [&](double cells, double times) {
+    const double samples = cells * times * static_cast<double>(motions.size());
+    if (samples <= kMaxSweepSamples) return;
+    throw model::InputError(
+        model::Diagnostic{{},
+                          "sweep",
+                          "needs " + model::format_number(samples, 3) + " cell samples (" +
+                              model::format_number(cells, 3) + " cells, " +
+                              model::format_number(times, 3) + " times)",
+                          "at most " + model::format_number(kMaxSweepSamples, 3) +
+                              ": a shorter time, a slower turn or larger cells"});
+  };
+  // The grid's square alone, before it is allocated; then the cells and times the run samples.
+  refuse_over_cap(sweep_grid_bound(result.distance, settings.cell), 1.0);
   const std::vector<SweepCell> grid = sweep_grid(map, result.distance, settings.cell);
-  const double samples = static_cast<double>(grid.size()) * static_cast<double>(steps + 1) *
-                         static_cast<double>(motions.size());
-  if (samples > kMaxSweepSamples) {
-    throw model::InputError(model::Diagnostic{
-        {},
-        "sweep",
-        "needs " + model::format_number(samples, 3) + " cell samples (" +
-            std::to_string(grid.size()) + " cells, " + std::to_string(steps + 1) + " times)",
-        "at most " + model::format_number(kMaxSweepSamples, 3) +
-            ": a shorter time, a slower turn or larger cells"});
-  }
+  refuse_over_cap(static_cast<double>(grid.size()), steps + 1.0);
   for (const SweepMotion& run_motion : motions) {
     SweepRun run;
     run.motion = run_motion;
     run.cells = grid;
-    sweep_sample(map, run_motion, time_step, steps, settings.cell / 2.0, run.cells);
+    sweep_sample(map, run_motion, time_step, static_cast<long>(steps), settings.cell / 2.0,
+                 run.cells);
     sweep_summarize(run, result.stopping_time);
     result.runs.push_back(std::move(run));
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <mutex>
 #include <thread>
 
 #include "coverage_parts.hpp"
@@ -214,7 +215,8 @@ model::Pose3 with_error(const model::Pose3& nominal, const PoseError& error) {
 
 std::vector<SectorTolerance> tolerance_coverage(
     const model::Rig& rig, const model::SensorLibrary& library,
-    const std::vector<model::SectorRequirement>& sectors, const CoverageSettings& settings) {
+    const std::vector<model::SectorRequirement>& sectors, const CoverageSettings& settings,
+    const WorkBudget* budget) {
   const bool any = std::any_of(rig.mounts.begin(), rig.mounts.end(), [&](const model::Mount& m) {
     const model::PoseTolerance* tolerance = rig.tolerance_for(m);
     return tolerance != nullptr &&
@@ -253,11 +255,23 @@ std::vector<SectorTolerance> tolerance_coverage(
     for (std::size_t i = 0; i < tolerated.back().errors.size(); ++i)
       jobs.emplace_back(tolerated.size() - 1, i);
   }
+  std::mutex progress_mutex;
+  std::size_t done = 0;
+  const double total = static_cast<double>(jobs.size());
   model::parallel_for(jobs.size(), worker_threads(), [&](std::size_t job) {
+    if (budget) {
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      budget->check_time(static_cast<double>(done), total, "tolerance poses");
+    }
     ToleratedMount& mount = tolerated[jobs[job].first];
     mount.minima[jobs[job].second] =
         minima_with_error(rig, mount.index, mount.errors[jobs[job].second], library, body, sectors,
                           angles, nominal_shares, settings.tessellation);
+    if (budget) {
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      ++done;
+      if (budget->progress) budget->progress(static_cast<double>(done), total);
+    }
   });
   // In a fixed order, so that equal shares name the same error on every run.
   for (const ToleratedMount& mount : tolerated) {

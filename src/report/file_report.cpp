@@ -120,7 +120,7 @@ void judge_monitor(const io::RigInputs& inputs, const deploy::DeployedCollisionM
 
 // The verdicts on the rig and its deployment, each with the time of what it rests on.
 void judge_rig(const io::RigInputs& inputs, const std::optional<deploy::DeployedConfig>& config,
-               FileReport& report) {
+               const metrics::WorkBudget* budget, FileReport& report) {
   auto step = Clock::now();
   const metrics::ResultantMetrics metrics = metrics::compute_resultant(inputs.rig, inputs.library);
   const double resultant_seconds = seconds_since(step);
@@ -145,8 +145,8 @@ void judge_rig(const io::RigInputs& inputs, const std::optional<deploy::Deployed
   }
   // Issue 38: each sector again over the mounts' tolerance boxes, when the rig gives any.
   step = Clock::now();
-  const std::vector<metrics::SectorTolerance> tolerance =
-      metrics::tolerance_coverage(inputs.rig, inputs.library, inputs.requirements->sectors);
+  const std::vector<metrics::SectorTolerance> tolerance = metrics::tolerance_coverage(
+      inputs.rig, inputs.library, inputs.requirements->sectors, {}, budget);
   const double tolerance_seconds = seconds_since(step);
   for (metrics::RequirementResult& result : metrics::tolerance_verdicts(inputs.rig, tolerance)) {
     report.results.push_back(std::move(result));
@@ -167,7 +167,7 @@ void judge_rig(const io::RigInputs& inputs, const std::optional<deploy::Deployed
 
 void check_rig(const std::string& path, const std::string& sensors_path,
                const std::string& requirements_path, const DeploymentFiles& deployment,
-               Clock::time_point started, FileReport& report) {
+               Clock::time_point started, const metrics::WorkBudget* budget, FileReport& report) {
   const io::RigInputs inputs = io::load_rig_inputs(path, sensors_path, requirements_path);
   report.summary = rig_summary(inputs);
   report.diagnostics = inputs.warnings;
@@ -197,7 +197,7 @@ void check_rig(const std::string& path, const std::string& sensors_path,
   const double pairs_seconds = seconds_since(pairs_started);
   report.diagnostics.insert(report.diagnostics.end(), pairs.warnings.begin(), pairs.warnings.end());
   if (inputs.requirements) {
-    judge_rig(inputs, config, report);
+    judge_rig(inputs, config, budget, report);
   } else if (config) {
     const model::Requirements none;  // only what every deployment must keep is judged
     deploy::DeploymentCheck deployed =
@@ -245,7 +245,8 @@ std::size_t count_verdicts(const std::vector<metrics::RequirementResult>& result
 }
 
 FileReport check_file(const std::string& path, const std::string& sensors_path,
-                      const std::string& requirements_path, const DeploymentFiles& deployment) {
+                      const std::string& requirements_path, const DeploymentFiles& deployment,
+                      const metrics::WorkBudget* budget) {
   FileReport report;
   report.file = path;
   const auto started = Clock::now();
@@ -257,7 +258,7 @@ FileReport check_file(const std::string& path, const std::string& sensors_path,
       case io::FileKind::catalog: report.summary = catalog_summary(path, sensors_path); break;
       case io::FileKind::policy: report.summary = policy_summary(path); break;
       case io::FileKind::rig:
-        check_rig(path, sensors_path, requirements_path, deployment, started, report);
+        check_rig(path, sensors_path, requirements_path, deployment, started, budget, report);
         break;
     }
     if (report.load_seconds == 0.0) report.load_seconds = seconds_since(started);

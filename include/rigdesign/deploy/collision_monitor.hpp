@@ -29,6 +29,10 @@ inline constexpr double kSlowdownRatio = 0.5;
 inline constexpr int kMinPoints = 4;
 
 /// One costmap source feeding the collision monitor.
+/// [m] the farthest a generated zone may reach ahead: beyond it the inputs (a throttle far
+/// below 1 Hz, a deceleration near zero) are refused rather than measured.
+inline constexpr double kMaxZoneReach = 1000.0;
+
 struct CollisionSource {
   std::size_t source = 0;    ///< index into CostmapConfig::sources
   double latency = 0.0;      ///< [s] from an obstacle crossing a zone's edge to the stop

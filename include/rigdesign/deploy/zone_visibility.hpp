@@ -4,7 +4,9 @@
 /// seen by some source, on the column from the floor to the top of the area to perceive within
 /// the heights that source passes. Exact along each column (MountedFov::covered_along, with
 /// the body's occlusion); sampled along the boundary every `kBoundaryStep`, so an unseen gap
-/// narrower than that step can be missed.
+/// narrower than that step can be missed. Only the part of a zone within the viewers' reach
+/// (their distance from the axis plus their max range) is sampled: beyond it nothing is seen,
+/// so the work is bounded by the sensors, not by the zone a file types.
 #include <vector>
 
 #include "rigdesign/geometry/mounted_fov.hpp"
@@ -16,6 +18,12 @@ namespace rigdesign::deploy {
 /// all) are kInteriorStep apart.
 inline constexpr double kBoundaryStep = 0.005;
 inline constexpr double kInteriorStep = 0.02;
+/// Most interior columns tried per viewer: a zone wider than about 20 m within the sensors'
+/// reach is sampled more coarsely than kInteriorStep.
+inline constexpr double kMaxInteriorSamples = 1e6;
+/// Most samples along one edge within reach (5 km at kBoundaryStep); longer stretches are
+/// sampled more coarsely.
+inline constexpr double kMaxEdgeSamples = 1e6;
 
 /// One source as the collision monitor filters it.
 struct ZoneViewer {

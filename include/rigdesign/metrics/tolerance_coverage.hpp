@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rigdesign/metrics/coverage.hpp"
+#include "rigdesign/metrics/work_budget.hpp"
 #include "rigdesign/model/requirements.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/sensor.hpp"
@@ -74,10 +75,13 @@ struct SectorTolerance {
 
 /// Every sector of `sectors` over the tolerance boxes of the rig's mounts (rig.tolerance_for).
 /// Empty when no mount has a tolerance. Precondition as compute_coverage; `settings.step` and
-/// `settings.tessellation` are used, the exact path always.
+/// `settings.tessellation` are used, the exact path always. `budget`, when given, hears of
+/// every moved pose judged and stops the work (InputError naming its option) once its time
+/// is up.
 std::vector<SectorTolerance> tolerance_coverage(
     const model::Rig& rig, const model::SensorLibrary& library,
-    const std::vector<model::SectorRequirement>& sectors, const CoverageSettings& settings = {});
+    const std::vector<model::SectorRequirement>& sectors, const CoverageSettings& settings = {},
+    const WorkBudget* budget = nullptr);
 
 /// SC margin against one rotation error of one mount (issue 38: "a plot of SC margin against
 /// pitch/yaw error per mount"): the mount alone turned by each error, the others nominal,

@@ -9,6 +9,7 @@
 
 #include "rigdesign/io/file_kind.hpp"
 #include "rigdesign/metrics/requirement_check.hpp"
+#include "rigdesign/metrics/work_budget.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::report {
@@ -40,8 +41,10 @@ struct DeploymentFiles {
   bool empty() const { return nav2.empty() && filters.empty(); }
 };
 
+/// `budget`, when given, limits and reports the longest part (the tolerance poses).
 FileReport check_file(const std::string& path, const std::string& sensors_path,
-                      const std::string& requirements_path, const DeploymentFiles& deployment = {});
+                      const std::string& requirements_path, const DeploymentFiles& deployment = {},
+                      const metrics::WorkBudget* budget = nullptr);
 
 /// How many of `results` have `verdict`.
 std::size_t count_verdicts(const std::vector<metrics::RequirementResult>& results,

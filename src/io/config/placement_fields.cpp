@@ -15,6 +15,7 @@
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/optical_frame.hpp"
 #include "rigdesign/model/polygon_area.hpp"
+#include "rigdesign/model/polygon_checks.hpp"
 #include "rigdesign/model/rotation.hpp"
 #include "rigdesign/model/sensor_housing.hpp"
 #include "rigdesign/model/units.hpp"
@@ -54,10 +55,11 @@ std::vector<model::Vec2> read_footprint(MapReader& body) {
       return {};
     }
   }
-  const double area = model::signed_area(footprint);
-  body.require(std::abs(area) > 1e-9, "footprint", "encloses no area",
+  const std::optional<std::string> problem = model::polygon_problem(footprint);
+  body.require(!problem, "footprint", problem.value_or(""),
                "vertices of a simple polygon around the robot's vertical axis");
-  if (area < 0) std::reverse(footprint.begin(), footprint.end());
+  if (problem) return {};
+  if (model::signed_area(footprint) < 0) std::reverse(footprint.begin(), footprint.end());
   return footprint;
 }
 

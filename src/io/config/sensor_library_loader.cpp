@@ -212,13 +212,18 @@ model::SensorMode read_mode(MapReader& reader, std::optional<MapReader>& default
   }
   if (auto range = source_of("range", reader, defaults).map("range", Need::required)) {
     mode.min_range = io::non_negative(*range, "min", Need::required, "metres, >= 0");
-    mode.max_range = io::positive(*range, "max", Need::required, "metres, > min");
+    mode.max_range = io::positive_length(*range, "max", Need::required, "metres, > min");
     range->require(mode.min_range < mode.max_range, "min", "is not below max",
                    "0 <= min < max, in metres");
     range->reject_unknown_keys();
   }
-  mode.frequency = io::positive(source_of("frequency", reader, defaults), "frequency",
-                                Need::required, "frames per second [Hz], > 0");
+  MapReader& frequency_from = source_of("frequency", reader, defaults);
+  mode.frequency =
+      io::positive(frequency_from, "frequency", Need::required, "frames per second [Hz], > 0");
+  // Periods become counts (frames held, timing steps): a rate no sensor has is refused here.
+  constexpr double kMaxFrequency = 1e4;
+  frequency_from.require(!(mode.frequency > kMaxFrequency), "frequency", "is above 10 kHz",
+                         "frames per second [Hz], > 0 and at most 10000");
   read_sampling(mode, reader, defaults);
   read_bytes(mode, reader, defaults);
   if (auto noise = source_of("noise", reader, defaults).map("noise", Need::required)) {

@@ -11,6 +11,7 @@
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::io {
@@ -74,9 +75,7 @@ struct Image {
 };
 
 Image read_pgm(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) bad_image(file, "cannot be opened", "a readable binary PGM (P5) file");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = read_file_bytes(file, "a readable binary PGM (P5) file");
   if (bytes.size() < 2 || bytes.compare(0, 2, "P5") != 0)
     bad_image(file, "is not a binary PGM", "a file starting with P5");
   std::size_t at = 2;

@@ -2,9 +2,9 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "rigdesign/io/file_bytes.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "xml_tree.hpp"
 
 namespace rigdesign::io {
@@ -29,11 +29,13 @@ std::vector<std::string> split_paths(const char* value) {
 }  // namespace
 
 std::optional<std::string> package_name_of(const std::string& package_xml) {
-  std::ifstream stream(package_xml);
-  if (!stream) return std::nullopt;
-  std::stringstream text;
-  text << stream.rdbuf();
-  const std::string content = text.str();
+  // A package.xml that is a FIFO or cannot be read names no package (and is never waited on).
+  std::string content;
+  try {
+    content = read_file_bytes(package_xml, "a package.xml");
+  } catch (const model::InputError&) {
+    return std::nullopt;
+  }
   // package.xml formats 1-3 all hold one <name> element directly under <package>.
   const auto open = content.find("<name>");
   const auto close = content.find("</name>", open);

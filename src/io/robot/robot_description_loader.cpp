@@ -13,6 +13,7 @@
 #include "joint_tree.hpp"
 #include "origin_angles.hpp"
 #include "package_locator.hpp"
+#include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/io/mesh/assimp_mesh_loader.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "xacro_command.hpp"
@@ -216,6 +217,7 @@ model::CollisionShape shape_of(const urdf::Collision& collision, const std::stri
 
 bool is_xacro_file(const std::string& path) {
   if (path.size() >= 6 && path.compare(path.size() - 6, 6, ".xacro") == 0) return true;
+  if (not_a_regular_file(path)) return false;  // refused by the loader, never opened to wait
   std::ifstream stream(path);
   std::string head(4096, '\0');
   stream.read(head.data(), static_cast<std::streamsize>(head.size()));
@@ -224,12 +226,11 @@ bool is_xacro_file(const std::string& path) {
 }
 
 model::RobotDescription load_robot_description(const RobotDescriptionRequest& request) {
-  std::error_code error;
-  if (fs::exists(request.path, error) && !fs::is_regular_file(request.path, error)) {
+  if (const std::optional<std::string> kind = not_a_regular_file(request.path)) {
     // A FIFO or a device would block the reader forever.
     throw model::InputError(
         model::Diagnostic{request.named_at, request.field,
-                          "'" + request.path + "' is not a regular file (a folder, FIFO or device)",
+                          "'" + request.path + "' is not a regular file: it " + *kind,
                           "a .urdf or .urdf.xacro file"});
   }
   const PackageLocator packages(request.package_paths);

@@ -1,9 +1,7 @@
 #include "xml_tree.hpp"
 
 #include <tinyxml2.h>
-
-#include <filesystem>
-#include <fstream>
+#include <unistd.h>
 
 #include "io/text_encoding.hpp"
 #include "rigdesign/io/file_bytes.hpp"
@@ -76,12 +74,12 @@ const std::string* Node::attribute(const std::string& key) const {
 
 Node parse_file(const std::string& path, const model::SourceLocation& named_at,
                 const std::string& field) {
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) {
-    throw model::InputError(model::Diagnostic{named_at, field, "names '" + path + "', a folder",
-                                              "an existing URDF or xacro file"});
+  // Judged without opening: opening a FIFO would wait for a writer.
+  if (const std::optional<std::string> kind = not_a_regular_file(path)) {
+    throw model::InputError(model::Diagnostic{
+        named_at, field, "names '" + path + "', which " + *kind, "an existing URDF or xacro file"});
   }
-  if (!std::ifstream(path, std::ios::binary)) {
+  if (::access(path.c_str(), R_OK) != 0) {
     throw model::InputError(model::Diagnostic{named_at, field,
                                               "names '" + path + "', which cannot be read",
                                               "an existing URDF or xacro file"});

@@ -9,6 +9,7 @@
 #include "rigdesign/io/config/field_checks.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/polygon_checks.hpp"
 
 namespace rigdesign::deploy {
 namespace {
@@ -76,6 +77,19 @@ std::optional<std::vector<model::Vec2>> polygon_points(const YAML::Node& node) {
   return points;
 }
 
+// A protective zone reaching farther than any mobile robot brakes: typed in millimetres?
+void warn_if_far(io::MapReader& m, const deploy::DeployedZone& zone) {
+  constexpr double kFarZone = 50.0;  // [m] 1 m/s braking at 0.01 m/s^2 stops within 50 m
+  double farthest = 0.0;
+  for (const model::Vec2& p : zone.points) farthest = std::max(farthest, p.norm());
+  if (farthest <= kFarZone) return;
+  m.diagnostics().warning(zone.points_where, m.field(zone.type == "circle" ? "radius" : "points"),
+                          "reaches " + model::format_number(farthest, 4) +
+                              " m from the robot: a stop zone that large is probably typed in "
+                              "millimetres",
+                          "metres (nav2 reads every zone in metres)");
+}
+
 deploy::DeployedZone read_zone(io::MapReader& m, const std::string& name,
                                const std::vector<std::string>& sources) {
   deploy::DeployedZone zone;
@@ -93,7 +107,12 @@ deploy::DeployedZone read_zone(io::MapReader& m, const std::string& name,
     const auto points = polygon_points(m.node("points"));
     m.require(points && points->size() >= 4, "points", "is not a polygon nav2 accepts",
               kPointsForm);
-    if (points) zone.points = *points;
+    if (points && points->size() >= 4) {
+      const std::optional<std::string> problem = model::polygon_problem(*points);
+      m.require(!problem, "points", problem.value_or(""),
+                "a simple polygon around the robot, in metres");
+      if (!problem) zone.points = *points;
+    }
   } else if (zone.type == "circle" && m.has("radius")) {
     zone.points_where = m.location("radius");
     const double radius =
@@ -102,7 +121,9 @@ deploy::DeployedZone read_zone(io::MapReader& m, const std::string& name,
       const double angle = 2.0 * std::numbers::pi * k / kCircleCorners;
       zone.points.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
     }
-  } else if (zone.type == "velocity_polygon") {
+  }
+  warn_if_far(m, zone);
+  if (zone.type == "velocity_polygon") {
     // Its sub-polygons are maps named in velocity_polygons: read past, not checked.
     for (const std::string& sub :
          name_list(m, "velocity_polygons", io::Need::optional, "[\"fwd\"]"))
@@ -221,6 +242,9 @@ deploy::DeployedCollisionMonitor load_collision_monitor(
   m.accept_keys(nav2::kMonitorNodeKeys.ignored);
   m.reject_unknown_keys();
   diagnostics.throw_if_errors();
+  // The reader's own warnings (a zone probably in millimetres) go with the file's others.
+  monitor.warnings.insert(monitor.warnings.begin(), diagnostics.items().begin(),
+                          diagnostics.items().end());
   return monitor;
 }
 
