@@ -4,17 +4,23 @@
 
 namespace rigdesign::io {
 
-/// A command's output folder written as a whole: files go into a hidden sibling
-/// (`.NAME.partial-PID`), which replaces the folder in one atomic exchange when the command
-/// completes. A reader, or a rerun after `kill -9` or a full disk, finds the previous
-/// outputs or the complete new set, never a mix; the previous run's pictures do not linger
-/// beside the new ones. A folder rigdesign did not write (no `.rigdesign-output` marker, not
-/// empty) is never removed: the new files are moved into it one by one instead.
 /// The name a user knows for `path`: its name after commit() when it lies in the staging
 /// folder of a StagedFolder that exists, else `path` itself. Error messages use it, so a full
 /// disk names `out/report.html`, not `.out.partial-4242/report.html`.
 std::string shown_path(const std::string& path);
 
+/// A command's output folder: files go into a hidden sibling (`.NAME.partial-PID`), and
+/// commit() puts them in place. The folder's `.rigdesign-output` is a manifest: a header
+/// line, then the files the last run wrote (paths relative to the folder, one per line).
+/// - A new folder, or one holding only the manifest's files (an empty one, an old marker
+///   without a list: the whole folder), is exchanged in one atomic step: a reader, or a
+///   rerun after `kill -9` or a full disk, finds the previous outputs or the new set.
+/// - Otherwise (the working folder, a link to a folder, or files of the user's beside the
+///   outputs) the files are moved in one by one: the new set replaces the listed one, listed
+///   files the new set lacks are removed, unlisted files are never touched, and a new file
+///   whose name an unlisted file holds is refused (InputError, nothing moved). The manifest
+///   lists the old and new sets while files move, so after a kill the next run ends with
+///   exactly its own set. Links in the folder are never followed to remove a file.
 class StagedFolder {
  public:
   /// Creates the staging folder beside `folder` (and `folder`'s parents), removing staging
@@ -38,8 +44,9 @@ class StagedFolder {
   /// `file` (under path()) as it will be named after commit().
   std::string final_name(const std::string& file) const;
   std::vector<std::string> final_names(const std::vector<std::string>& files) const;
-  /// Puts the staged files in place. Throws InputError if the exchange fails (the previous
-  /// outputs are then untouched).
+  /// Writes the manifest and puts the staged files in place (see above). Throws InputError
+  /// naming the option when a new file would overwrite one no run of rigdesign wrote, or
+  /// when the exchange fails; the previous outputs are then untouched.
   void commit();
 
  private:
