@@ -127,6 +127,31 @@ def other_seeds():
         "        - -0.2    # behind\n        - 0.0\n        - 0.45\n"
         "      rpy_deg: [0, 0, 180]\n  - id: linked\n    sensor: s\n    mode: m\n"
         "    pose: {urdf_link: camera_link}\n").encode()
+    # Issue 53: values shared through anchors, aliases and merge keys (each edit that would
+    # change a sharer must be refused), in flow and block style, with tags and block scalars.
+    yield "rig_text_edit", "aliases_flow.yaml", (
+        "name: a\nmounts:\n"
+        "  - {id: front, sensor: s, mode: &md m5, pose: &fp {xyz: [0.5, 0, 0.4], rpy_deg: [0, 0, 0]}}\n"
+        "  - {id: rear, sensor: s, mode: m5, pose: {xyz: [-0.5, 0, 0.2], rpy_deg: [0, 0, 180]}}\n"
+        "  - {id: third, sensor: s, mode: *md, pose: *fp}\n").encode()
+    yield "rig_text_edit", "aliases_block.yaml", (
+        "name: a\nmounts:\n  - id: front\n    sensor: s\n    mode: m\n    pose:\n"
+        "      xyz: &v\n        - 0.5\n        - 0\n        - 0.4\n      rpy_deg: *v\n"
+        "  - &whole\n    id: rear\n    sensor: s\n    mode: m\n"
+        "    pose: {xyz: [0, 0, 1], rpy_deg: [0, 0, 0]}\n  - *whole\n").encode()
+    yield "rig_text_edit", "merge_keys.yaml", (
+        "defaults: &d {sensor: s, mode: m, pose: {xyz: [0, 0, 0.3], rpy_deg: [0, 0, 0]}}\n"
+        "name: m\nmounts:\n  - id: front\n    <<: *d\n"
+        "  - {id: rear, <<: [*d], pose: {xyz: [-0.2, 0, 0.3], rpy_deg: [0, 0, 180]}}\n"
+        "  - id: side\n    sensor: s\n    mode: m\n    pose:\n      <<: {frame: body}\n"
+        "      xyz: [0, 0.2, 0.3]\n      rpy_deg: [0, 0, 90]\n").encode()
+    yield "rig_text_edit", "tags_and_blocks.yaml", (
+        "name: t\nmounts:\n  - id: front\n    sensor: !!str s\n    mode: |\n      m5\n"
+        "    pose: !!map {xyz: [!!float 0.5, &z 0, 0.4], rpy_deg: [0, *z, 0]}\n"
+        "  - id: rear\n    sensor: >-\n      folded\n      name\n    mode: \"m\\u0035\"\n"
+        "    pose: {xyz: [-0.5,\n        0, 0.2], rpy_deg: [0, 0, 180]}\n"
+        "  - {id: flow, sensor: 's', mode: \"m\", pose: {xyz: [1, 2, 3], rpy_deg: [0, 0, 0]}}\n"
+        ).encode()
     yield "map_pgm", "map.pgm", b"P5\n# seed\n4 3\n255\n" + bytes([254, 0, 205, 254] * 3)
     yield "rssi_csv", "rssi.csv", (
         "t,x,y,z,bssid,rssi\n" + "".join(

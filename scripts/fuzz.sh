@@ -19,7 +19,7 @@ own_targets=(rig_yaml rig_text_edit sensors_yaml requirements_yaml catalog_yaml 
   cloud_pcd cloud_ply
   mesh_obj mesh_off mesh_ply robot_urdf robot_xacro export_writers rssi_csv co2_csv
   emitter_truth_csv walls_csv
-  map_pgm)
+  map_pgm studio_router)
 # Formats parsed by assimp: rigdesign only checks what comes out. assimp 5.2's own parsers
 # allocate without bound on some corrupt COLLADA files (docs/fuzzing.md), so these run in
 # campaigns (scripts/fuzz.sh mesh_dae 600), not in CI, where they would fail at random.
@@ -69,6 +69,7 @@ dictionary_of() {
     mesh_dae | robot_urdf | robot_xacro | export_writers) echo xml ;;
     *_csv) echo csv ;;
     map_pgm) echo pgm ;;
+    studio_router) echo http ;;
   esac
 }
 
@@ -98,7 +99,7 @@ run_target() {
   # binary clouds keep room for a few hundred points. Seeds are cut to the limit.
   case "$(dictionary_of "$target")" in
     yaml) max_len=2048 ;;
-    csv | pgm) max_len=4096 ;;
+    csv | pgm | http) max_len=4096 ;;
     xml) max_len=8192 ;;
     *) max_len=65536 ;;
   esac

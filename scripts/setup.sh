@@ -27,7 +27,8 @@ packages=(
   fonts-dejavu-core                      # the font Cairo draws labels with
   chromium                               # headless browser: the test that renders `report`'s page
   chromium-driver                        # WebDriver for chromium: the studio's browser test (serve)
-  libcpp-httplib-dev                     # `serve`: the studio's loopback HTTP server
+  libmicrohttpd-dev                      # `serve`: the studio's loopback HTTP server (GNU; bounds
+                                         # heads, epoll: idle strangers hold no thread)
   libjs-three                            # `serve`: three.js for the studio page, served locally
   python3-ament-index                    # tests: ROS 2's package index finds the installed prefix
   colcon python3-colcon-ros python3-colcon-cmake python3-colcon-metadata  # rigdesign in a ROS 2

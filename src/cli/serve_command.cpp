@@ -3,15 +3,15 @@
 // swapped, added and removed by hand, with the coverage and the verdicts recomputed on every
 // change, and saved back into the rig file's own text. Stops on Ctrl-C (SIGINT) or SIGTERM.
 #include <pthread.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <ostream>
+#include <stdexcept>
 #include <thread>
 
 #include "app.hpp"
@@ -19,12 +19,11 @@
 #include "common_options.hpp"
 #include "rigdesign/report/check_text.hpp"
 #include "rigdesign/report/file_report.hpp"
+#include "rigdesign/studio/launch_page.hpp"
 #include "rigdesign/studio/request_guard.hpp"
 #include "rigdesign/studio/studio_api.hpp"
 #include "rigdesign/studio/studio_server.hpp"
 #include "rigdesign/studio/studio_session.hpp"
-
-extern char** environ;
 
 namespace rigdesign::cli {
 namespace {
@@ -45,18 +44,19 @@ bool has_display() {
   return false;
 }
 
-// xdg-open in the background (no shell: the URL is one argument); reaped by a detached thread.
-bool open_browser(const std::string& url) {
-  pid_t child = 0;
-  std::string program = "xdg-open";
-  std::string argument = url;
-  char* argv[] = {program.data(), argument.data(), nullptr};
-  if (posix_spawnp(&child, "xdg-open", nullptr, nullptr, argv, environ) != 0) return false;
-  std::thread([child] {
-    int status = 0;
-    waitpid(child, &status, 0);
-  }).detach();
-  return true;
+// The browser gets the path of a page only this user can read, which sends it on to the
+// tokened address: never the address itself, which every local user could read in its argv.
+// The page is removed when `serve` stops.
+void open_browser(const std::string& url, std::optional<studio::LaunchPage>& page,
+                  std::ostream& err) {
+  try {
+    page.emplace(url);
+  } catch (const std::runtime_error& error) {
+    err << "serve: " << error.what() << "; open the address above in a browser\n";
+    return;
+  }
+  if (!studio::start_program("xdg-open", page->path()))
+    err << "serve: could not start xdg-open; open the address above in a browser\n";
 }
 
 std::pair<int, std::string> check_saved_rig(const std::string& path, const ServeOptions& options) {
@@ -91,8 +91,8 @@ int run_serve(const ServeOptions& options, std::ostream& out, std::ostream& err)
     out << "rigdesign studio for " << options.rig << " at\n  " << server.url() << '\n'
         << "  (loopback only" << (server.ipv6() ? ", also [::1]" : "")
         << "; saves write only that rig file; Ctrl-C stops)" << std::endl;
-    if (!options.no_open && has_display() && !open_browser(server.url()))
-      err << "serve: could not start xdg-open; open the address above in a browser\n";
+    std::optional<studio::LaunchPage> launch_page;
+    if (!options.no_open && has_display()) open_browser(server.url(), launch_page, err);
     std::atomic<bool> signalled{false};
     std::thread watcher([&server, &stop_signals, &signalled] {
       int signal = 0;
@@ -101,7 +101,7 @@ int run_serve(const ServeOptions& options, std::ostream& out, std::ostream& err)
       server.stop();
     });
     server.run();
-    // run() returned without a signal (the sockets failed): wake the watcher with one aimed
+    // run() returned without a signal (stop() came from elsewhere): wake the watcher with one aimed
     // at it alone, so none is left pending for the process when the mask is restored.
     if (!signalled) pthread_kill(watcher.native_handle(), SIGTERM);
     watcher.join();

@@ -37,8 +37,8 @@ std::string read_system_file(std::string_view relative) {
 
 }  // namespace
 
-// Scripts as application/javascript with a charset: cpp-httplib Brotli-compresses text/* for
-// browsers that accept it, 850 ms for three.min.js, on a loopback that needs no compression.
+// Scripts as application/javascript with a charset, sent uncompressed (the earlier server,
+// cpp-httplib, Brotli-compressed text/*: 850 ms for three.min.js on a loopback).
 constexpr const char* kScriptType = "application/javascript; charset=utf-8";
 
 std::optional<Asset> asset_at(std::string_view url_path) {

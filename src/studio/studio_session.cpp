@@ -1,10 +1,12 @@
 #include "rigdesign/studio/studio_session.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <thread>
 
+#include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/rig_references.hpp"
 #include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/metrics/mount_placement_verdicts.hpp"
@@ -23,6 +25,21 @@ model::Pose3 pose_from(const MountPose& pose) {
 
 bool same_pose(const model::Pose3& a, const model::Pose3& b) {
   return a.matrix() == b.matrix();
+}
+
+bool same_request(const io::RobotDescriptionRequest& a, const io::RobotDescriptionRequest& b) {
+  return a.path == b.path && a.args == b.args && a.environment == b.environment &&
+         a.package_paths == b.package_paths && a.expander == b.expander &&
+         a.load_meshes == b.load_meshes;
+}
+
+// A mount id for `sensor` the loader takes (io::ros_name: letters, digits and underscores, not
+// starting with a digit): a sensor id such as `rplidar-a1m8` becomes `rplidar_a1m8`.
+std::string mount_id_for(const std::string& sensor) {
+  std::string id;
+  for (const char c : sensor) id += std::isalnum(static_cast<unsigned char>(c)) != 0 ? c : '_';
+  if (id.empty() || std::isdigit(static_cast<unsigned char>(id.front())) != 0) id = "mount_" + id;
+  return id;
 }
 
 }  // namespace
@@ -48,6 +65,7 @@ void StudioSession::reload() {
   loaded_mounts_.clear();
   given_poses_.clear();
   diagnostics_.clear();
+  descriptions_.clear();
   try {
     // Saves go to this file, and only while the path still leads to it (a rig swapped for a
     // symbolic link elsewhere after loading is not followed).
@@ -115,14 +133,34 @@ void StudioSession::validate(const model::Rig& rig) const {
   found.throw_if_errors();
 }
 
-// Applies `change` to mount `index` in place (no copy of the rig and its body), validates the
-// rig, and puts the mount back as it was when the rig would be invalid.
+// The rig file as a save would write it now, read by the rig loader itself: an edit the text
+// editor cannot place (a value shared through an anchor, a merge key, a tag) or one that gives a
+// rig the loader refuses (a pose beyond +-1e8 m, an id that is no ROS name) is refused with
+// their message, so a saved rig always loads. The text is small; a robot description it names
+// is read once (descriptions_) and its body rebuilt each time, about a tenth of a pose edit's
+// time on the TurtleBot 4, whose moved mount's rasters take half.
+void StudioSession::check_saved_text() const {
+  const std::vector<io::MountEdit> edits = pending_edits();
+  if (edits.empty()) return;
+  const io::DescriptionReader read_once = [this](const io::RobotDescriptionRequest& request) {
+    for (const auto& [known, description] : descriptions_)
+      if (same_request(known, request)) return description;
+    descriptions_.emplace_back(request, io::load_robot_description(request));
+    return descriptions_.back().second;
+  };
+  io::load_rig_text(io::edit_rig_text(loaded_text_, target_, edits), target_, read_once);
+}
+
+// Applies `change` to mount `index` in place (no copy of the rig and its body), checks the text
+// a save would write and validates the rig, and puts the mount back as it was when either
+// refuses.
 template <typename Change>
 void StudioSession::change_mount(std::size_t index, Change change) {
   model::Mount& mount = inputs_->rig.mounts[index];
   const model::Mount before = mount;
   change(mount);
   try {
+    check_saved_text();
     validate(inputs_->rig);
   } catch (...) {
     mount = before;
@@ -132,14 +170,26 @@ void StudioSession::change_mount(std::size_t index, Change change) {
 }
 
 void StudioSession::set_pose(const std::string& mount_id, const MountPose& pose) {
-  change_mount(index_of(mount_id), [&](model::Mount& mount) {
-    mount.T_robot_sensor = pose_from(pose);
-    // Saved as numbers from now on: the description's link no longer places this sensor.
-    mount.urdf_link.clear();
-    mount.urdf_link_optical = false;
-    // The sensor stays in its housing: the saved pose states it (`housing:`), as it loads.
-  });
+  // The numbers typed are the ones a save writes, so the text check sees them.
+  const auto given = given_poses_.find(mount_id);
+  const std::optional<MountPose> given_before =
+      given != given_poses_.end() ? std::optional<MountPose>(given->second) : std::nullopt;
   given_poses_[mount_id] = pose;
+  try {
+    change_mount(index_of(mount_id), [&](model::Mount& mount) {
+      mount.T_robot_sensor = pose_from(pose);
+      // Saved as numbers from now on: the description's link no longer places this sensor.
+      mount.urdf_link.clear();
+      mount.urdf_link_optical = false;
+      // The sensor stays in its housing: the saved pose states it (`housing:`), as it loads.
+    });
+  } catch (...) {
+    if (given_before)
+      given_poses_[mount_id] = *given_before;
+    else
+      given_poses_.erase(mount_id);
+    throw;
+  }
 }
 
 void StudioSession::set_sensor(const std::string& mount_id, const std::string& sensor,
@@ -159,8 +209,9 @@ std::string StudioSession::add_mount(const std::string& sensor, const std::strin
       if (m.id == id) return true;  // a removed mount's id would make its save ambiguous
     return false;
   };
-  std::string id = sensor;
-  for (int n = 2; taken(id); ++n) id = sensor + "_" + std::to_string(n);
+  const std::string base = mount_id_for(sensor);
+  std::string id = base;
+  for (int n = 2; taken(id); ++n) id = base + "_" + std::to_string(n);
   model::Mount mount;
   mount.id = id;
   mount.sensor_id = sensor;
@@ -169,14 +220,16 @@ std::string StudioSession::add_mount(const std::string& sensor, const std::strin
   mount.where = {rig_path_, 0, 0};
   std::vector<model::Mount>& mounts = inputs_->rig.mounts;
   mounts.push_back(mount);
+  given_poses_[id] = pose;
   try {
+    check_saved_text();
     validate(inputs_->rig);
   } catch (...) {
     mounts.pop_back();
+    given_poses_.erase(id);
     throw;
   }
   raster_->add_mount(mount);
-  given_poses_[id] = pose;
   return id;
 }
 
@@ -186,8 +239,17 @@ void StudioSession::remove_mount(const std::string& mount_id) {
     throw model::InputError(model::Diagnostic(inputs_->rig.mounts.front().where, "mounts",
                                               "would be empty without '" + mount_id + "'",
                                               "at least one mount"));
+  std::vector<model::Mount>& mounts = inputs_->rig.mounts;
+  const auto at = mounts.begin() + static_cast<std::ptrdiff_t>(index);
+  const model::Mount removed = *at;
+  mounts.erase(at);
+  try {
+    check_saved_text();  // e.g. its lines hold an anchor another mount's alias uses
+  } catch (...) {
+    mounts.insert(mounts.begin() + static_cast<std::ptrdiff_t>(index), removed);
+    throw;
+  }
   raster_->remove_mount(index);
-  inputs_->rig.mounts.erase(inputs_->rig.mounts.begin() + static_cast<std::ptrdiff_t>(index));
   given_poses_.erase(mount_id);
 }
 

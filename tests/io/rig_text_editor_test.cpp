@@ -230,3 +230,141 @@ TEST_CASE("rig text editor: mounts removed lose their lines, added ones follow t
   const std::vector<io::MountEdit> taken = {added};
   CHECK_THROWS_AS(io::edit_rig_text(kEditorRig, "rig.yaml", taken), model::InputError);
 }
+
+namespace {
+
+// Three mounts, the third's pose an alias of the first's (issue 53, reproducer 21), and the
+// place of each anchor and alias counted by hand: line 4 is `  - {id: front, ...`.
+const std::string kAliasRig =
+    "name: aliases\n"
+    "distance_of_interest: 3.0\n"
+    "mounts:\n"
+    "  - {id: front, sensor: s, mode: &md m5, pose: &fp {xyz: [0.5, 0, 0.4], rpy_deg: [0, 0, 0]}}\n"
+    "  - {id: rear, sensor: s, mode: m5, pose: {xyz: [-0.5, 0, 0.2], rpy_deg: [0, 0, 180]}}\n"
+    "  - {id: third, sensor: s, mode: *md, pose: *fp}\n";
+
+// "rig.yaml:LINE:COLUMN:" of the first `marker` in `text`, both 1-based, counted here.
+std::string place_of(const std::string& text, const std::string& marker) {
+  const std::size_t at = text.find(marker);
+  REQUIRE(at != std::string::npos);
+  const std::size_t line_start = text.rfind('\n', at) + 1;
+  return "rig.yaml:" + std::to_string(test::line_of(text, marker)) + ":" +
+         std::to_string(at - line_start + 1) + ":";
+}
+
+std::string refusal(const std::string& text, const std::vector<io::MountEdit>& edits) {
+  try {
+    io::edit_rig_text(text, "rig.yaml", edits);
+  } catch (const model::InputError& error) {
+    return error.diagnostics().front().message();
+  }
+  return "(not refused)";
+}
+
+io::MountEdit moved(const std::string& id) {
+  io::MountEdit edit;
+  edit.mount_id = id;
+  edit.xyz = {0.5, 0, 0.45};
+  return edit;
+}
+
+}  // namespace
+
+TEST_CASE("rig text editor: a value shared through an anchor or alias is refused at its place",
+          "[io][editor]") {
+  // The alias moved: refused at `*fp` (third's own line), not silently at front's anchor.
+  const std::string third = refusal(kAliasRig, {moved("third")});
+  CHECK(third.find(place_of(kAliasRig, "*fp")) == 0);
+  CHECK(third.find("alias *fp") != std::string::npos);
+  // The anchored value moved: refused at `&fp`, since third would move with it.
+  const std::string front = refusal(kAliasRig, {moved("front")});
+  CHECK(front.find(place_of(kAliasRig, "&fp")) == 0);
+  CHECK(front.find("anchor &fp") != std::string::npos);
+  // A scalar alias too: third's mode is front's.
+  io::MountEdit mode;
+  mode.mount_id = "third";
+  mode.mode = "m10";
+  CHECK(refusal(kAliasRig, {mode}).find(place_of(kAliasRig, "*md")) == 0);
+  // Removing front would take the anchors third uses with it.
+  io::MountEdit removed;
+  removed.kind = io::MountEdit::Kind::remove;
+  removed.mount_id = "front";
+  CHECK(refusal(kAliasRig, {removed}).find(place_of(kAliasRig, "&md")) == 0);
+  // A mount that shares nothing is edited as before, every other byte kept; removing the one
+  // holding the aliases leaves the anchors' mount as written.
+  const std::vector<io::MountEdit> rear = {moved("rear")};
+  CHECK(io::edit_rig_text(kAliasRig, "rig.yaml", rear) ==
+        with_replaced(kAliasRig, "xyz: [-0.5, 0, 0.2]", "xyz: [0.5, 0, 0.45]"));
+  removed.mount_id = "third";
+  const std::vector<io::MountEdit> third_removed = {removed};
+  CHECK(io::edit_rig_text(kAliasRig, "rig.yaml", third_removed) ==
+        with_replaced(kAliasRig, "  - {id: third, sensor: s, mode: *md, pose: *fp}\n", ""));
+}
+
+TEST_CASE("rig text editor: a merge key, a tag or a block scalar on the way is refused",
+          "[io][editor]") {
+  // A merge key in the mount: its keys may come from the merged map.
+  const std::string merged =
+      "base: &b {sensor: s, mode: m5}\nname: r\nmounts:\n"
+      "  - id: front\n    <<: *b\n    pose: {xyz: [0.5, 0, 0.4], rpy_deg: [0, 0, 0]}\n";
+  const std::string merge_refusal = refusal(merged, {moved("front")});
+  CHECK(merge_refusal.find(place_of(merged, "<<")) == 0);
+  CHECK(merge_refusal.find("merge") != std::string::npos);
+  // A tagged number: its text is `!!float 0.4`, not 0.4.
+  const std::string tagged = with_replaced(kEditorRig, "0.45", "!!float 0.45");
+  io::MountEdit rear = moved("rear");
+  const std::string tag_refusal = refusal(tagged, {rear});
+  CHECK(tag_refusal.find(place_of(tagged, "!!float")) == 0);
+  CHECK(tag_refusal.find("tag") != std::string::npos);
+  // A mode written as a block scalar spans lines.
+  const std::string block = with_replaced(kEditorRig, "mode: vlp16_10hz", "mode: |\n      vlp16");
+  io::MountEdit mode;
+  mode.mount_id = "rear";
+  mode.mode = "vlp16_20hz";
+  CHECK(refusal(block, {mode}).find(place_of(block, "|")) == 0);
+  // A plain scalar folded over two lines reads "vlp16 10hz": not one token.
+  const std::string folded =
+      with_replaced(kEditorRig, "mode: vlp16_10hz", "mode: vlp16\n      10hz");
+  CHECK(refusal(folded, {mode}).find(place_of(folded, "vlp16\n      10hz")) == 0);
+}
+
+TEST_CASE("rig text editor: a mount is not added after a last item that is an alias (fuzz)",
+          "[io][editor]") {
+  // Found by fuzz/targets/rig_text_edit.cpp: the alias `*whole` has its anchor's mark, so the
+  // new mount landed between the anchored item and the alias.
+  const std::string text =
+      "name: a\nmounts:\n  - &whole\n    id: rear\n    sensor: s\n    mode: m\n"
+      "    pose: {xyz: [0, 0, 1], rpy_deg: [0, 0, 0]}\n  - *whole\n";
+  io::MountEdit added;
+  added.kind = io::MountEdit::Kind::add;
+  added.mount_id = "side";
+  added.sensor = "s";
+  added.mode = "m";
+  added.xyz = {0, 0.2, 0.3};
+  added.rpy_deg = {0, 0, 90};
+  CHECK(refusal(text, {added}).find(place_of(text, "*whole")) == 0);
+}
+
+TEST_CASE("rig text editor: a flow item over lines ends at its bracket (fuzz)", "[io][editor]") {
+  // Found by fuzz/targets/rig_text_edit.cpp: the second line of b's flow map is less indented
+  // than its dash, so the item was taken to end on its first line and the new mount split it.
+  const std::string kept =
+      "  - {id: b, sensor: s, mode: m\n,   pose: {xyz: [1, 0, 1], rpy_deg: [0, 0, 0]}}\n";
+  const std::string text =
+      "mounts:\n  - {id: a, sensor: s, mode: m, pose: {xyz: [0, 0, 1], rpy_deg: [0, 0, 0]}}\n" +
+      kept;
+  io::MountEdit removed;
+  removed.kind = io::MountEdit::Kind::remove;
+  removed.mount_id = "a";
+  io::MountEdit added;
+  added.kind = io::MountEdit::Kind::add;
+  added.mount_id = "c";
+  added.sensor = "s";
+  added.mode = "m";
+  added.xyz = {0, 0.2, 0.3};
+  added.rpy_deg = {0, 0, 90};
+  const std::vector<io::MountEdit> edits = {removed, added};
+  CHECK(io::edit_rig_text(text, "rig.yaml", edits) ==
+        "mounts:\n" + kept +
+            "  - {id: c, sensor: s, mode: m, pose: {xyz: [0, 0.2, 0.3], rpy_deg: [0, 0, 90]}}\n");
+}

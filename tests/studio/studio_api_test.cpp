@@ -19,11 +19,13 @@ struct ApiFixture {
   std::unique_ptr<studio::StudioSession> session;
   std::unique_ptr<studio::StudioApi> api;
 
-  ApiFixture() {
+  // `edit`: changes the cart's text before it is served.
+  explicit ApiFixture(std::string (*edit)(std::string) = nullptr) {
     std::string text = test::file_text(test::source_path("rigs/cart_two_scanners.yaml"));
     const std::string from = "requirements: requirements/cart_two_scanners.yaml";
     text.replace(text.find(from), from.size(),
                  "requirements: " + test::source_path("rigs/requirements/cart_two_scanners.yaml"));
+    if (edit != nullptr) text = edit(text);
     path = folder.write("cart.yaml", text);
     session = std::make_unique<studio::StudioSession>(path, test::source_path("sensors.yaml"), "");
     api = std::make_unique<studio::StudioApi>(*session, [](const std::string&) {
@@ -121,4 +123,42 @@ TEST_CASE("studio API: a pose reply carries the moved mount's B2 verdict, live o
                    R"({"mount": "rear_lidar", "xyz": [-0.5, 0, 0.2], "rpy_deg": [0, 0, 180]})");
   REQUIRE(back_status == 200);
   CHECK(back["clash"]["text"] == "");
+}
+
+TEST_CASE("studio API: an edit through a YAML alias is 422 at the alias; the state is kept",
+          "[studio]") {
+  // Reproducer 21: third's pose is front_lidar's, by alias.
+  ApiFixture fixture([](std::string text) {
+    const std::string front = "pose: {xyz: [0.5, 0, 0.2]";
+    text.replace(text.find(front), front.size(), "pose: &fp {xyz: [0.5, 0, 0.2]");
+    return text + "  - {id: third, sensor: rplidar_a1m8, mode: 5_5hz, pose: *fp}\n";
+  });
+  const std::string before = test::file_text(fixture.path);
+  const auto [status, reply] = fixture.call(
+      "POST", "pose", "", R"({"mount": "third", "xyz": [0.5, 0, 0.45], "rpy_deg": [0, 0, 0]})");
+  CHECK(status == 422);
+  REQUIRE(reply["error"].is_array());
+  // The file's last line holds the alias, counted here.
+  CHECK(reply["error"][0]["line"] == std::count(before.begin(), before.end(), '\n'));
+  CHECK(reply["error"][0]["problem"].get<std::string>().find("alias *fp") != std::string::npos);
+  // Nothing changed: the state has third where it was, a save writes nothing new.
+  const auto [state_status, state] = fixture.call("GET", "state");
+  REQUIRE(state_status == 200);
+  CHECK(state["numbers"]["dirty"] == false);
+  CHECK(state["numbers"]["mounts"][2]["xyz"][2] == 0.2);
+  CHECK(fixture.call("POST", "save").first == 200);
+  CHECK(test::file_text(fixture.path) == before);
+}
+
+TEST_CASE("studio API: a pose the rig loader refuses is 422 with its message", "[studio]") {
+  ApiFixture fixture;
+  const std::string before = test::file_text(fixture.path);
+  const auto [status, reply] =
+      fixture.call("POST", "pose", "",
+                   R"({"mount": "front_lidar", "xyz": [1e300, 0, 0.2], "rpy_deg": [0, 0, 0]})");
+  CHECK(status == 422);
+  CHECK(reply["error"][0]["problem"].get<std::string>().find("beyond +-1e8 m") !=
+        std::string::npos);
+  CHECK(fixture.call("POST", "save").first == 200);
+  CHECK(test::file_text(fixture.path) == before);
 }

@@ -1,9 +1,7 @@
 // Issue 37 item 6: what the studio's server lets through. The rules are tested on the router
-// (no socket), then on a real server over loopback with cpp-httplib's client, and where it
-// listens is read from the kernel's own socket table (/proc/net/tcp and tcp6).
+// (no socket), then on a real server over loopback with a raw client (loopback_http.hpp), and
+// where it listens is read from the kernel's own socket table (/proc/net/tcp and tcp6).
 #include "rigdesign/studio/studio_server.hpp"
-
-#include <httplib.h>
 
 #include <catch2/catch.hpp>
 #include <fstream>
@@ -12,6 +10,7 @@
 #include <thread>
 
 #include "rigdesign/studio/request_guard.hpp"
+#include "studio/loopback_http.hpp"
 
 using namespace rigdesign;
 
@@ -132,25 +131,26 @@ TEST_CASE("studio server: loopback only, and the rules hold over a real socket",
   studio::StudioServer server(kToken, 0, api.handler());
   const int port = server.port();
   std::thread serving([&server] { server.run(); });
-  httplib::Client client("127.0.0.1", port);
-  client.set_connection_timeout(5);
-  // Wait until it accepts (run() starts on the other thread).
-  httplib::Result page = client.Get(("/?token=" + kToken).c_str());
-  for (int attempt = 0; attempt < 100 && !page; ++attempt) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    page = client.Get(("/?token=" + kToken).c_str());
-  }
-  REQUIRE(page);
-  CHECK(page->status == 200);
-  CHECK(page->get_header_value("Content-Security-Policy").find("default-src 'self'") == 0);
-  CHECK(client.Get("/api/state")->status == 401);
-  const httplib::Headers token = {{studio::kTokenHeader, kToken}};
-  CHECK(client.Get("/api/state", token)->status == 200);
-  const httplib::Headers rebound = {{studio::kTokenHeader, kToken}, {"Host", "evil.example"}};
-  CHECK(client.Get("/api/state", rebound)->status == 403);
+  using test::ask;
+  using test::request_text;
+  const test::HttpAnswer page = ask(port, request_text("GET", "/?token=" + kToken, port));
+  REQUIRE(page.status == 200);
+  CHECK(test::header_value(page.head, "Content-Security-Policy")
+            .value_or("")
+            .find("default-src 'self'") == 0);
+  CHECK(test::header_value(page.head, "Referrer-Policy") ==
+        std::optional<std::string>("no-referrer"));
+  CHECK(page.body.find("<title>rigdesign studio</title>") != std::string::npos);
+  CHECK(ask(port, request_text("GET", "/api/state", port)).status == 401);
+  const std::vector<std::pair<std::string, std::string>> token = {{studio::kTokenHeader, kToken}};
+  CHECK(ask(port, request_text("GET", "/api/state", port, token)).status == 200);
+  const std::vector<std::pair<std::string, std::string>> rebound = {{studio::kTokenHeader, kToken},
+                                                                    {"Host", "evil.example"}};
+  CHECK(ask(port, request_text("GET", "/api/state", port, rebound)).status == 403);
+  // A body over the limit: 413 (or the connection closed), the API not called.
   const std::string big(studio::kMaxRequestBytes + 10, 'x');
-  const httplib::Result posted = client.Post("/api/pose", token, big, "application/json");
-  CHECK((!posted || posted->status == 413));
+  const test::HttpAnswer posted = ask(port, request_text("POST", "/api/pose", port, token, big));
+  CHECK((posted.status == 0 || posted.status == 413));
   CHECK(api.calls == 1);
 
   // Listening on 127.0.0.1 (and ::1) only, never on every interface.
@@ -160,11 +160,12 @@ TEST_CASE("studio server: loopback only, and the rules hold over a real socket",
   CHECK(addresses.count("00000000000000000000000000000000") == 0);  // ::
   if (server.ipv6()) {
     CHECK(addresses.count("00000000000000000000000001000000") == 1);  // ::1
-    httplib::Client v6("::1", port);
-    const httplib::Result six = v6.Get(
-        "/api/state", {{studio::kTokenHeader, kToken}, {"Host", "[::1]:" + std::to_string(port)}});
-    REQUIRE(six);
-    CHECK(six->status == 200);
+    const test::HttpAnswer six = ask(
+        port,
+        request_text("GET", "/api/state", port,
+                     {{studio::kTokenHeader, kToken}, {"Host", "[::1]:" + std::to_string(port)}}),
+        true);
+    CHECK(six.status == 200);
   }
   server.stop();
   serving.join();

@@ -209,3 +209,100 @@ TEST_CASE("studio: another mode is judged and saved as that one word", "[studio]
   for (int i = 0; i < 2; ++i) expected = with_text_replaced(expected, "mode: 5_5hz", "mode: 10hz");
   CHECK(test::file_text(path) == expected);
 }
+
+TEST_CASE("studio: an edit through a YAML alias is refused and the anchor's mount kept",
+          "[studio]") {
+  // Reproducer 21: a third mount whose pose is front_lidar's, by alias.
+  std::string text =
+      with_text_replaced(cart_text(), "pose: " + kFrontPose, "pose: &fp " + kFrontPose);
+  text += "  - {id: third, sensor: rplidar_a1m8, mode: 5_5hz, pose: *fp}\n";
+  test::TempFolder folder;
+  const std::string path = folder.write("alias.yaml", text);
+  studio::StudioSession session(path, library_path(), "");
+  REQUIRE(session.loaded());
+  const studio::MountPose third_before = session.pose(session.inputs().rig.mounts[2]);
+  try {
+    session.set_pose("third", {{0.5, 0, 0.25}, {0, 0, 0}});
+    FAIL("not refused");
+  } catch (const model::InputError& error) {
+    const model::Diagnostic& found = error.diagnostics().front();
+    // At the alias, on the file's last line, counted here.
+    CHECK(found.where.line == test::line_of(text, "*fp"));
+    const std::size_t line_start = text.rfind('\n', text.find("*fp")) + 1;
+    CHECK(found.where.column == static_cast<int>(text.find("*fp") - line_start + 1));
+  }
+  // The session keeps its last valid state: nothing to save, the third where it was.
+  CHECK_FALSE(session.dirty());
+  CHECK(session.pose(session.inputs().rig.mounts[2]).xyz == third_before.xyz);
+  CHECK_THROWS_AS(session.set_pose("front_lidar", {{0.5, 0, 0.25}, {0, 0, 0}}), model::InputError);
+  CHECK_FALSE(session.dirty());
+  // Another mount still moves, and the save leaves front_lidar's line byte for byte.
+  session.set_pose("rear_lidar", {{-0.55, 0, 0.2}, {0, 0, 180}});
+  session.save();
+  CHECK(test::file_text(path) ==
+        with_text_replaced(text, "xyz: [-0.5, 0, 0.2]", "xyz: [-0.55, 0, 0.2]"));
+}
+
+TEST_CASE("studio: an edit the rig loader would refuse is refused with its message", "[studio]") {
+  // Reproducer 28: a pose 1e300 m away (the loader's limit is +-1e8 m).
+  test::TempFolder folder;
+  const std::string path = folder.write("far.yaml", cart_text());
+  studio::StudioSession session(path, library_path(), "");
+  REQUIRE(session.loaded());
+  try {
+    session.set_pose("front_lidar", {{1e300, 0, 0.2}, {0, 0, 0}});
+    FAIL("not refused");
+  } catch (const model::InputError& error) {
+    CHECK(error.diagnostics().front().problem.find("beyond +-1e8 m") != std::string::npos);
+    CHECK(error.diagnostics().front().field == "mounts[0].pose.xyz");
+  }
+  CHECK_FALSE(session.dirty());
+  CHECK(session.pose(session.inputs().rig.mounts[0]).xyz == std::array<double, 3>{0.5, 0, 0.2});
+}
+
+TEST_CASE("studio: a mount added for a sensor whose id is no ROS name gets one, and loads",
+          "[studio]") {
+  // Reproducer 28: the library names the scanner `rplidar-a1m8`; a mount id may not have '-'.
+  test::TempFolder folder;
+  const std::string library = folder.write(
+      "sensors.yaml", with_text_replaced(test::file_text(library_path()), "  - id: rplidar_a1m8\n",
+                                         "  - id: rplidar-a1m8\n"));
+  std::string text = cart_text();
+  for (int i = 0; i < 2; ++i)
+    text = with_text_replaced(text, "sensor: rplidar_a1m8", "sensor: rplidar-a1m8");
+  const std::string path = folder.write("dash.yaml", text);
+  studio::StudioSession session(path, library, "");
+  REQUIRE(session.loaded());
+  const std::string id = session.add_mount("rplidar-a1m8", "5_5hz", {{0, 0.4, 0.2}, {0, 0, 90}});
+  CHECK(id == "rplidar_a1m8");
+  session.save();
+  CHECK(test::file_text(path) ==
+        text +
+            "  - {id: rplidar_a1m8, sensor: rplidar-a1m8, mode: 5_5hz, pose: {xyz: [0, 0.4, "
+            "0.2], rpy_deg: [0, 0, 90]}}\n");
+  // Read back as `check` reads it.
+  CHECK_NOTHROW(io::load_rig_inputs(path, library, ""));
+  REQUIRE(session.loaded());
+  CHECK(session.inputs().rig.mounts.size() == 3);
+}
+
+TEST_CASE("studio: a save keeps the rig file's mode and its hard links", "[studio]") {
+  // Reproducer 22.
+  test::TempFolder folder;
+  const std::string path = folder.write("private.yaml", cart_text());
+  const std::string other = folder.path() + "/other_name.yaml";
+  std::filesystem::create_hard_link(path, other);
+  std::filesystem::permissions(
+      path, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+  studio::StudioSession session(path, library_path(), "");
+  REQUIRE(session.loaded());
+  session.set_pose("rear_lidar", {{-0.55, 0, 0.2}, {0, 0, 180}});
+  session.save();
+  const std::string expected =
+      with_text_replaced(cart_text(), "xyz: [-0.5, 0, 0.2]", "xyz: [-0.55, 0, 0.2]");
+  CHECK(test::file_text(path) == expected);
+  CHECK(test::file_text(other) == expected);
+  CHECK(std::filesystem::hard_link_count(path) == 2);
+  CHECK(std::filesystem::status(path).permissions() ==
+        (std::filesystem::perms::owner_read | std::filesystem::perms::owner_write));
+}

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rigdesign/io/config/rig_inputs.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/rig_text_editor.hpp"
 #include "rigdesign/metrics/coverage.hpp"
 #include "rigdesign/metrics/raster_coverage.hpp"
@@ -58,19 +59,24 @@ class StudioSession {
   StudioNumbers numbers(bool exact) const;
 
   /// Edits. Each throws model::InputError when the rig would become invalid (the message
-  /// `check` gives for it) and then changes nothing.
+  /// `check` gives for it), when the rig file's text cannot take it (a value shared through a
+  /// YAML anchor or merge key, or one whose text is not its value alone: the editor's message
+  /// with its line and column), or when the file a save would write is one the rig loader
+  /// refuses (its message), and then changes nothing.
   void set_pose(const std::string& mount_id, const MountPose& pose);
   void set_sensor(const std::string& mount_id, const std::string& sensor, const std::string& mode);
-  /// A new mount with a fresh id (the sensor's id, numbered when taken); returns the id.
+  /// A new mount with a fresh id (the sensor's id with every character but letters, digits and
+  /// underscores made `_`, so that it is a ROS name; numbered when taken); returns the id.
   std::string add_mount(const std::string& sensor, const std::string& mode, const MountPose& pose);
   void remove_mount(const std::string& mount_id);
 
   /// Unsaved edits, as the text editor applies them.
   std::vector<io::MountEdit> pending_edits() const;
   bool dirty() const;
-  /// Writes the edits into the rig file (atomically; only the edited values change) and takes
-  /// the written text as the new baseline. Throws InputError when the file changed on disk
-  /// since it was loaded (nothing written) or an edit cannot be placed in its text.
+  /// Writes the edits into the rig file (only the edited values change; its mode, owner, group
+  /// and hard links kept: io::replace_file_keeping_identity) and takes the written text as the
+  /// new baseline. Throws InputError when the file changed on disk since it was loaded, an edit
+  /// cannot be placed in its text, or the rig loader refuses the text (nothing written).
   void save();
 
  private:
@@ -85,9 +91,14 @@ class StudioSession {
   // Poses as typed or dragged (the numbers a save writes, not read back from a rotation).
   std::map<std::string, MountPose> given_poses_;
   std::vector<model::Diagnostic> diagnostics_;
+  // The robot description as read for each request: every edit's text is read by the rig
+  // loader, which would otherwise expand and load it again (seconds for the TurtleBot 4).
+  mutable std::vector<std::pair<io::RobotDescriptionRequest, model::RobotDescription>>
+      descriptions_;
 
   std::size_t index_of(const std::string& mount_id) const;
   void validate(const model::Rig& rig) const;
+  void check_saved_text() const;
   template <typename Change>
   void change_mount(std::size_t index, Change change);
 };

@@ -7,9 +7,10 @@
 namespace rigdesign::io {
 
 DescribedRobotFields read_described_robot(MapReader& top, const std::string& file,
-                                          model::DescribedRobot& robot) {
+                                          model::DescribedRobot& robot,
+                                          const DescriptionReader& read_description) {
   DescribedRobotFields fields;
-  fields.links = read_robot_links(top, file);
+  fields.links = read_robot_links(top, file, read_description);
   const std::optional<RobotLinks>& links = fields.links;
   const bool has_geometry = links && !links->failed && links->description;
   if (links && !links->failed) {

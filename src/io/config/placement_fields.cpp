@@ -301,7 +301,8 @@ std::optional<RobotLinks> links_of(model::RobotDescription description, std::str
   return links;
 }
 
-std::optional<RobotLinks> read_legacy_urdf(MapReader& urdf, const std::string& file) {
+std::optional<RobotLinks> read_legacy_urdf(MapReader& urdf, const std::string& file,
+                                           const DescriptionReader& read_description) {
   const auto urdf_file = urdf.text("file", Need::required, "a URDF path relative to this file");
   const std::string base = urdf.text("base_link", Need::optional).value_or("");
   urdf.reject_unknown_keys();
@@ -313,7 +314,8 @@ std::optional<RobotLinks> read_legacy_urdf(MapReader& urdf, const std::string& f
   request.named_at = urdf.location("file");
   request.field = "urdf.file";
   std::optional<RobotLinks> links =
-      links_of(load_robot_description(request), base, 0.0, "urdf", urdf, "base_link");
+      links_of(read_description ? read_description(request) : load_robot_description(request), base,
+               0.0, "urdf", urdf, "base_link");
   if (links) {
     links->description.reset();
     links->source = model::RobotSource{request.path, {}, {}, {}, base, 0.0, "builtin", true};
@@ -323,14 +325,15 @@ std::optional<RobotLinks> read_legacy_urdf(MapReader& urdf, const std::string& f
 
 }  // namespace
 
-std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& file) {
+std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& file,
+                                           const DescriptionReader& read_description) {
   const bool has_robot = top.has("robot");
   top.require(!(has_robot && top.has("urdf")), "urdf", "given together with robot",
               "either robot (a description with its collision geometry) or urdf (poses only)");
   try {
     if (!has_robot) {
       auto urdf = top.map("urdf", Need::optional, "a map with file and base_link");
-      return urdf ? read_legacy_urdf(*urdf, file) : std::nullopt;
+      return urdf ? read_legacy_urdf(*urdf, file, read_description) : std::nullopt;
     }
     auto robot = top.map("robot", Need::required,
                          "a map with description, and optionally args, env, package_paths, "
@@ -366,7 +369,8 @@ std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& fi
     if (!description) return failed_links();
     request.path = resolve_beside(file, *description);
     std::optional<RobotLinks> links =
-        links_of(load_robot_description(request), base, base_height, "robot", *robot, "base_link");
+        links_of(read_description ? read_description(request) : load_robot_description(request),
+                 base, base_height, "robot", *robot, "base_link");
     if (links && !links->failed) {
       static const char* const kExpanders[] = {"auto", "builtin", "xacro"};
       links->source = model::RobotSource{request.path,

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/model/catalog.hpp"
 #include "rigdesign/model/rig.hpp"
@@ -42,7 +43,9 @@ struct MountLink {
 };
 
 /// The `robot` (or `urdf`) map of a rig or catalog at `file`; problems are recorded on `top`.
-std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& file);
+/// The description is read with `read_description` when given (load_rig_text).
+std::optional<RobotLinks> read_robot_links(MapReader& top, const std::string& file,
+                                           const DescriptionReader& read_description = {});
 
 /// The keys a rig and a catalog share, read into `robot` in the files' order: `robot` (or
 /// `urdf`), `body` (optional with a description: its collision geometry is the body then),
@@ -53,7 +56,8 @@ struct DescribedRobotFields {
   bool body_from_description = false;
 };
 DescribedRobotFields read_described_robot(MapReader& top, const std::string& file,
-                                          model::DescribedRobot& robot);
+                                          model::DescribedRobot& robot,
+                                          const DescriptionReader& read_description = {});
 
 /// A pose is xyz (+ rpy_deg) in the robot frame, or the pose of a description's link (then
 /// named in `used` when given).

@@ -97,12 +97,10 @@ model::RigSupport read_support(MapReader& reader) {
   return support;
 }
 
-}  // namespace
+constexpr const char* kRigDocument = "a rig: a map with name, body, distance_of_interest, mounts";
 
-model::Rig load_rig(const std::string& path) {
-  model::Diagnostics diagnostics;
-  MapReader top = read_document_map(path, diagnostics,
-                                    "a rig: a map with name, body, distance_of_interest, mounts");
+model::Rig read_rig(MapReader& top, const std::string& path, model::Diagnostics& diagnostics,
+                    const DescriptionReader& read_description) {
   model::Rig rig;
   rig.file = path;
   rig.where = top.location();
@@ -111,7 +109,7 @@ model::Rig load_rig(const std::string& path) {
   rig.sensor_library_where = top.location("sensor_library");
   rig.requirements = top.text("requirements", Need::optional).value_or("");
   rig.requirements_where = top.location("requirements");
-  const DescribedRobotFields described = read_described_robot(top, path, rig);
+  const DescribedRobotFields described = read_described_robot(top, path, rig, read_description);
   const std::optional<RobotLinks>& robot = described.links;
   if (top.has("body")) {
     rig.body.where = top.location("body");
@@ -142,6 +140,21 @@ model::Rig load_rig(const std::string& path) {
     if (diagnostic.severity == model::Severity::warning) rig.load_warnings.push_back(diagnostic);
   }
   return rig;
+}
+
+}  // namespace
+
+model::Rig load_rig(const std::string& path) {
+  model::Diagnostics diagnostics;
+  MapReader top = read_document_map(path, diagnostics, kRigDocument);
+  return read_rig(top, path, diagnostics, {});
+}
+
+model::Rig load_rig_text(const std::string& text, const std::string& path,
+                         const DescriptionReader& read_description) {
+  model::Diagnostics diagnostics;
+  MapReader top = read_document_map(parse_yaml_text(text, path), path, diagnostics, kRigDocument);
+  return read_rig(top, path, diagnostics, read_description);
 }
 
 }  // namespace rigdesign::io

@@ -5,10 +5,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <map>
 #include <string_view>
 #include <vector>
 
 #include "rigdesign/io/atomic_write.hpp"
+#include "rigdesign/io/config/rig_loader.hpp"
 #include "rigdesign/io/config/yaml_reader.hpp"
 #include "rigdesign/io/file_bytes.hpp"
 #include "rigdesign/model/format_number.hpp"
@@ -29,16 +31,120 @@ struct Replacement {
   throw model::InputError(model::Diagnostic(location_of(node, path), field, problem, expected));
 }
 
+model::SourceLocation location_at(const std::string& path, yaml_text::TextMark mark) {
+  return {path, mark.first + 1, mark.second + 1};
+}
+
+std::string line_column(yaml_text::TextMark mark) {
+  return std::to_string(mark.first + 1) + ":" + std::to_string(mark.second + 1);
+}
+
+// The rig file being edited: its text, its name in messages, and the values aliases share.
+struct RigText {
+  const std::string& text;
+  const std::string& path;
+  std::map<yaml_text::TextMark, yaml_text::SharedValue> shared;
+};
+
+// Refuses an edit that passes through `node` when its text is shared: the node carries an
+// anchor some alias uses, or it is such an alias resolved (yaml-cpp gives both the anchor's
+// mark). Its characters are written once, so replacing them would change every place that uses
+// them: another mount would move without being edited. `within` is the edited mount's text:
+// an alias there is named, else the anchor.
+void refuse_shared(const RigText& rig, const YAML::Node& node, const std::string& field,
+                   std::pair<std::size_t, std::size_t> within) {
+  if (!node.IsDefined()) return;
+  const auto found = rig.shared.find({node.Mark().line, node.Mark().column});
+  if (found == rig.shared.end()) return;
+  const yaml_text::SharedValue& value = found->second;
+  const std::string expected = "the value written out in full where it is edited, without & or *";
+  for (const yaml_text::TextMark& alias : value.alias_marks) {
+    const std::size_t at = yaml_text::offset_of(rig.text, alias.first, alias.second);
+    if (at >= within.first && at < within.second)
+      throw model::InputError(
+          model::Diagnostic(location_at(rig.path, alias), field,
+                            "is the alias *" + value.anchor + " of the value anchored at " +
+                                line_column(value.anchor_mark) +
+                                ": editing it would change every place that uses that anchor",
+                            expected));
+  }
+  throw model::InputError(model::Diagnostic(
+      location_at(rig.path, value.anchor_mark), field,
+      "carries the anchor &" + value.anchor + " that " + std::to_string(value.alias_marks.size()) +
+          " alias(es) use (the first at " + line_column(value.alias_marks.front()) +
+          "): editing it would change them too",
+      expected));
+}
+
+// Refuses replacing text that holds an anchor an alias outside it uses: the alias would be left
+// naming nothing, or the value it shares would change with the edit.
+void refuse_anchors_within(const RigText& rig, std::size_t begin, std::size_t end,
+                           const std::string& field) {
+  for (const auto& [mark, value] : rig.shared) {
+    const std::size_t anchor = yaml_text::offset_of(rig.text, mark.first, mark.second);
+    if (anchor < begin || anchor >= end) continue;
+    for (const yaml_text::TextMark& alias : value.alias_marks) {
+      const std::size_t at = yaml_text::offset_of(rig.text, alias.first, alias.second);
+      if (at >= begin && at < end) continue;
+      throw model::InputError(model::Diagnostic(
+          location_at(rig.path, mark), field,
+          "holds the anchor &" + value.anchor + " that the alias at " + line_column(alias) +
+              " uses: the edit would change or remove what that alias shares",
+          "the value written out in full at the alias, without & or *"));
+    }
+  }
+}
+
+// Refuses an edit inside a map that merges another (`<<:`): a value may come from the merged
+// map, and YAML readers that apply merges and those that do not would read the edit apart.
+void refuse_merge(const std::string& path, const YAML::Node& map, const std::string& field) {
+  if (!map.IsDefined() || !map.IsMap()) return;
+  for (auto it = map.begin(); it != map.end(); ++it) {
+    if (it->first.IsScalar() && it->first.Scalar() == "<<")
+      refuse(it->first, path, field,
+             "merges another map (`<<:`): its values may be written elsewhere and shared",
+             "the keys written out in full, without a merge key");
+  }
+}
+
+// One mount being edited: every node on the way to an edited value is checked against the
+// file's anchors before its text is touched.
+struct MountScope {
+  const RigText& rig;
+  std::pair<std::size_t, std::size_t> span;  // the mount's text: [begin, end) byte offsets
+  std::string field;                         // "mounts[i]"
+
+  // `node` (at `field` + `key`) when an edit may pass through it.
+  YAML::Node checked(const YAML::Node& node, const std::string& key) const {
+    refuse_shared(rig, node, field + key, span);
+    refuse_merge(rig.path, node, field + key);
+    return node;
+  }
+};
+
 // The token of a scalar node: a quoted string up to its closing quote, or a plain scalar up to
-// the end of its line, a flow delimiter or a comment, trailing blanks left out.
-Replacement token_of(const std::string& text, const YAML::Node& node, const std::string& path,
-                     const std::string& field) {
+// the end of its line, a flow delimiter or a comment, trailing blanks left out. Anything whose
+// characters are not its value one to one is refused: a tag, a block scalar (| or >), a quoted
+// or plain scalar folded over lines.
+Replacement token_of(const MountScope& scope, const YAML::Node& node, const std::string& key) {
+  const std::string& text = scope.rig.text;
+  const std::string& path = scope.rig.path;
+  const std::string field = scope.field + key;
+  scope.checked(node, key);
   if (!node.IsDefined() || !node.IsScalar())
     refuse(node, path, field, "is missing or not a single value", "a number or a name");
+  // yaml-cpp's tag of an untagged scalar: "?" plain, "!" quoted.
+  if (node.Tag() != "?" && node.Tag() != "!")
+    refuse(node, path, field,
+           "has the tag " + node.Tag() + ": its text is not the value alone, so it is not edited",
+           "a plain or quoted scalar without a tag");
   const YAML::Mark mark = node.Mark();
   const std::size_t begin = yaml_text::offset_of(text, mark.line, mark.column);
   std::size_t end = begin;
   const char quote = begin < text.size() ? text[begin] : '\0';
+  if (quote == '|' || quote == '>')
+    refuse(node, path, field, "is a block scalar (| or >): its text spans lines",
+           "a plain scalar, or a quoted one on one line");
   if (quote == '"' || quote == '\'') {
     // Up to the closing quote: a backslash escapes in double quotes, '' is a quote in single.
     end = begin + 1;
@@ -61,17 +167,19 @@ Replacement token_of(const std::string& text, const YAML::Node& node, const std:
     const bool escapes = inner.find(quote == '"' ? "\\" : "''") != std::string_view::npos;
     if (inner.find_first_of("\n\r") != std::string_view::npos || end - begin < 2 ||
         text[end - 1] != quote || (!escapes && inner != node.Scalar()))
-      refuse(node, path, field, "could not be located in the file's text",
+      refuse(node, path, field, "is a quoted scalar over several lines: its text is not its value",
              "a plain scalar, or a quoted one on one line");
   } else {
     while (end < text.size() && std::string_view(",]}\n\r").find(text[end]) == std::string::npos &&
            !(text[end] == '#' && end > begin && (text[end - 1] == ' ' || text[end - 1] == '\t')))
       ++end;
     while (end > begin && (text[end - 1] == ' ' || text[end - 1] == '\t')) --end;
-    // The parser's value must be exactly these characters, or the mark was not where we think.
+    // The parser's value must be exactly these characters, or the mark was not where we think
+    // (a plain scalar continued on the next line, an anchor before it).
     if (text.compare(begin, end - begin, node.Scalar()) != 0)
-      refuse(node, path, field, "could not be located in the file's text",
-             "a plain or quoted scalar");
+      refuse(node, path, field,
+             "is not written as one token on its line (folded over lines, or with an anchor)",
+             "a plain scalar on one line, or a quoted one");
   }
   return {begin, end, {}};
 }
@@ -99,16 +207,15 @@ std::string name_text(const std::string& name, char quote) {
   return quoted + "\"";
 }
 
-void edit_triple(const std::string& text, const std::string& path, const YAML::Node& pose,
-                 const char* key, const std::array<double, 3>& values, const std::string& field,
-                 std::vector<Replacement>& out) {
-  const YAML::Node list = pose[key];
+void edit_triple(const MountScope& scope, const YAML::Node& pose, const char* key,
+                 const std::array<double, 3>& values, std::vector<Replacement>& out) {
+  const std::string field = std::string(".pose.") + key;
+  const YAML::Node list = scope.checked(pose[key], field);
   if (!list.IsDefined() || !list.IsSequence() || list.size() != 3)
-    refuse(pose, path, field + "." + key, "is missing or not a list of three numbers",
+    refuse(pose, scope.rig.path, scope.field + field, "is missing or not a list of three numbers",
            std::string(key) + ": [a, b, c] to edit");
   for (std::size_t i = 0; i < 3; ++i) {
-    Replacement r =
-        token_of(text, list[i], path, field + "." + key + "[" + std::to_string(i) + "]");
+    Replacement r = token_of(scope, list[i], field + "[" + std::to_string(i) + "]");
     r.text = model::exact_number(values[i]);
     out.push_back(std::move(r));
   }
@@ -125,9 +232,11 @@ std::size_t offset_of_node(const std::string& text, const YAML::Node& node) {
 
 // A pose given by a description's link, written as numbers: the whole pose value replaced
 // (a flow map up to its brace, a block map over its lines), any `frame` going with the link.
-Replacement pose_as_numbers(const std::string& text, const std::string& path,
-                            const YAML::Node& pose, const MountEdit& edit,
-                            const std::string& field) {
+Replacement pose_as_numbers(const MountScope& scope, const YAML::Node& pose,
+                            const MountEdit& edit) {
+  const std::string& text = scope.rig.text;
+  const std::string& path = scope.rig.path;
+  const std::string field = scope.field + ".pose";
   if (!edit.xyz || !edit.rpy_deg)
     refuse(pose, path, field, "comes from urdf_link: an edit must give both xyz and rpy_deg",
            "xyz and rpy_deg together");
@@ -162,10 +271,32 @@ Replacement item_lines(const std::string& text, const std::string& path, const Y
   if (dash >= mark || text[dash] != '-' || text.find_first_not_of(' ', dash + 1) != mark)
     refuse(item, path, field, "could not be located in the file's text",
            "a list item on lines of its own (`- ...`)");
-  const std::size_t end = yaml_text::block_content_end(text, mark, dash - line + 1);
+  std::size_t end = yaml_text::block_content_end(text, mark, dash - line + 1);
+  if (text[mark] == '{' || text[mark] == '[') {
+    // A flow item may go on over lines less indented than its dash: it ends at its bracket,
+    // with nothing but a comment after it on that line.
+    const std::size_t close = yaml_text::flow_end(text, mark);
+    if (close == std::string::npos || !yaml_text::blank_or_comment(std::string_view(text).substr(
+                                          close, yaml_text::line_end(text, close) - close)))
+      refuse(item, path, field, "could not be located in the file's text",
+             "a list item on lines of its own (`- ...`)");
+    end = std::max(end, yaml_text::line_end(text, close));
+  }
   const std::size_t after = std::min(
       text.size(), yaml_text::line_end(text, end) + yaml_text::line_break_at(text, end).size());
   return {line, after, {}};
+}
+
+// The text a mount item spans, from its mark: a flow map to its brace, a block map over the
+// lines indented at least as far as its first key. Only where an alias is looked for.
+std::pair<std::size_t, std::size_t> item_span(const std::string& text, const YAML::Node& item) {
+  const std::size_t begin = offset_of_node(text, item);
+  if (begin < text.size() && text[begin] == '{') {
+    const std::size_t end = yaml_text::flow_end(text, begin);
+    return {begin, end == std::string::npos ? text.size() : end};
+  }
+  return {begin,
+          yaml_text::block_content_end(text, begin, static_cast<std::size_t>(item.Mark().column))};
 }
 
 std::string new_item_text(const MountEdit& edit) {
@@ -175,39 +306,43 @@ std::string new_item_text(const MountEdit& edit) {
 }
 
 // Changes of a mount's sensor, mode and pose.
-void change_mount(const std::string& text, const std::string& path, const YAML::Node& mount,
-                  const MountEdit& edit, const std::string& field,
+void change_mount(const MountScope& scope, const YAML::Node& mount, const MountEdit& edit,
                   std::vector<Replacement>& replacements) {
+  const std::string& path = scope.rig.path;
   for (const auto& [key, value] :
        {std::pair{"sensor", edit.sensor}, std::pair{"mode", edit.mode}}) {
     if (!value) continue;
-    Replacement r = token_of(text, mount[key], path, field + "." + key);
-    r.text = name_text(*value, text[r.begin]);
+    Replacement r = token_of(scope, mount[key], std::string(".") + key);
+    r.text = name_text(*value, scope.rig.text[r.begin]);
     replacements.push_back(std::move(r));
   }
   if (!edit.xyz && !edit.rpy_deg) return;
-  const YAML::Node pose = mount["pose"];
+  const YAML::Node pose = scope.checked(mount["pose"], ".pose");
   if (!pose.IsDefined() || !pose.IsMap())
-    refuse(mount, path, field + ".pose", "is missing", "a map with xyz and rpy_deg");
+    refuse(mount, path, scope.field + ".pose", "is missing", "a map with xyz and rpy_deg");
   if (pose["urdf_link"].IsDefined()) {
-    replacements.push_back(pose_as_numbers(text, path, pose, edit, field + ".pose"));
+    // Every value of the map is replaced: none of them may be shared.
+    for (auto it = pose.begin(); it != pose.end(); ++it)
+      scope.checked(it->second, ".pose." + (it->first.IsScalar() ? it->first.Scalar() : "?"));
+    replacements.push_back(pose_as_numbers(scope, pose, edit));
     return;
   }
   const YAML::Node frame = pose["frame"];
   if (frame.IsDefined() && !(frame.IsScalar() && frame.Scalar() == "body"))
-    refuse(frame, path, field + ".pose.frame",
+    refuse(frame, path, scope.field + ".pose.frame",
            "is not `body`: the edited numbers are the sensor frame's (x along the optical axis)",
            "frame: body, or no frame");
-  if (edit.xyz) edit_triple(text, path, pose, "xyz", *edit.xyz, field + ".pose", replacements);
-  if (edit.rpy_deg)
-    edit_triple(text, path, pose, "rpy_deg", *edit.rpy_deg, field + ".pose", replacements);
+  if (edit.xyz) edit_triple(scope, pose, "xyz", *edit.xyz, replacements);
+  if (edit.rpy_deg) edit_triple(scope, pose, "rpy_deg", *edit.rpy_deg, replacements);
 }
 
-YAML::Node mounts_of(const std::string& path, const YAML::Node& root) {
-  if (!root.IsMap()) refuse(root, path, "file", "is not a map", "a rig file");
+YAML::Node mounts_of(const RigText& rig, const YAML::Node& root) {
+  if (!root.IsMap()) refuse(root, rig.path, "file", "is not a map", "a rig file");
+  refuse_merge(rig.path, root, "file");
   const YAML::Node mounts = root["mounts"];
   if (!mounts.IsDefined() || !mounts.IsSequence())
-    refuse(root, path, "mounts", "is missing or not a list", "the rig's mounts");
+    refuse(root, rig.path, "mounts", "is missing or not a list", "the rig's mounts");
+  refuse_shared(rig, mounts, "mounts", {0, 0});
   return mounts;
 }
 
@@ -223,46 +358,55 @@ std::optional<std::size_t> mount_index(const YAML::Node& mounts, const std::stri
 
 // The replacements for the changes and removals in `edits`; every node is checked for its
 // kind before it is indexed.
-std::vector<Replacement> replacements_of(const std::string& text, const std::string& path,
-                                         const YAML::Node& root, std::span<const MountEdit> edits) {
-  const YAML::Node mounts = mounts_of(path, root);
+std::vector<Replacement> replacements_of(const RigText& rig, const YAML::Node& root,
+                                         std::span<const MountEdit> edits) {
+  const YAML::Node mounts = mounts_of(rig, root);
   std::vector<Replacement> replacements;
   for (const MountEdit& edit : edits) {
     if (edit.kind == MountEdit::Kind::add) continue;
     const std::optional<std::size_t> index = mount_index(mounts, edit.mount_id);
     if (!index)
-      refuse(mounts, path, "mounts", "has no mount '" + edit.mount_id + "'",
+      refuse(mounts, rig.path, "mounts", "has no mount '" + edit.mount_id + "'",
              "an id of the rig's mounts");
-    const std::string field = "mounts[" + std::to_string(*index) + "]";
+    const YAML::Node item = mounts[*index];
+    const MountScope scope{rig, item_span(rig.text, item),
+                           "mounts[" + std::to_string(*index) + "]"};
+    scope.checked(item, "");
+    const std::size_t first = replacements.size();
     if (edit.kind == MountEdit::Kind::remove)
-      replacements.push_back(item_lines(text, path, mounts[*index], field));
+      replacements.push_back(item_lines(rig.text, rig.path, item, scope.field));
     else
-      change_mount(text, path, mounts[*index], edit, field, replacements);
+      change_mount(scope, item, edit, replacements);
+    for (std::size_t i = first; i < replacements.size(); ++i)
+      refuse_anchors_within(rig, replacements[i].begin, replacements[i].end, scope.field);
   }
   return replacements;
 }
 
 // The mounts added, appended after the list's last item at its dash's indentation.
-std::vector<Replacement> additions_of(const std::string& text, const std::string& path,
-                                      const YAML::Node& root, std::span<const MountEdit> edits) {
+std::vector<Replacement> additions_of(const RigText& rig, const YAML::Node& root,
+                                      std::span<const MountEdit> edits) {
+  const std::string& text = rig.text;
   std::vector<Replacement> additions;
   for (const MountEdit& edit : edits) {
     if (edit.kind != MountEdit::Kind::add) continue;
-    const YAML::Node mounts = mounts_of(path, root);
+    const YAML::Node mounts = mounts_of(rig, root);
     if (!edit.sensor || !edit.mode || !edit.xyz || !edit.rpy_deg)
-      refuse(mounts, path, "mounts",
+      refuse(mounts, rig.path, "mounts",
              "cannot take mount '" + edit.mount_id + "' without its sensor, mode and pose",
              "sensor, mode, xyz and rpy_deg");
     const bool added_twice = std::any_of(edits.data(), &edit, [&](const MountEdit& other) {
       return other.kind == MountEdit::Kind::add && other.mount_id == edit.mount_id;
     });
     if (mount_index(mounts, edit.mount_id) || added_twice)
-      refuse(mounts, path, "mounts", "already has a mount '" + edit.mount_id + "'", "a new id");
+      refuse(mounts, rig.path, "mounts", "already has a mount '" + edit.mount_id + "'", "a new id");
     if (mounts.size() == 0)
-      refuse(mounts, path, "mounts", "has no item to place a new mount after",
+      refuse(mounts, rig.path, "mounts", "has no item to place a new mount after",
              "at least one mount in the file");
-    const Replacement last = item_lines(text, path, mounts[mounts.size() - 1],
-                                        "mounts[" + std::to_string(mounts.size() - 1) + "]");
+    const std::string last_field = "mounts[" + std::to_string(mounts.size() - 1) + "]";
+    // An alias as the last item has its anchor's mark: the new mount would land there.
+    refuse_shared(rig, mounts[mounts.size() - 1], last_field, {0, text.size()});
+    const Replacement last = item_lines(text, rig.path, mounts[mounts.size() - 1], last_field);
     const std::size_t dash = text.find('-', last.begin);
     const std::string line_break(yaml_text::line_break_at(text, last.begin));
     // A file whose last mount has no line break after it gets one before the new mount.
@@ -272,6 +416,26 @@ std::vector<Replacement> additions_of(const std::string& text, const std::string
                              "- " + new_item_text(edit) + line_break});
   }
   return additions;
+}
+
+// The list's lines are found by indentation and brackets; a scalar that runs on past them (a
+// quote closed lines later) would make them wrong. The edited text must hold as many mounts as
+// the edits leave, or nothing is written.
+void require_list_kept(const std::string& path, const YAML::Node& root, const std::string& edited,
+                       std::span<const MountEdit> edits) {
+  const auto count = [&](MountEdit::Kind kind) {
+    return std::count_if(edits.begin(), edits.end(),
+                         [kind](const MountEdit& edit) { return edit.kind == kind; });
+  };
+  if (count(MountEdit::Kind::add) == 0 && count(MountEdit::Kind::remove) == 0) return;
+  const YAML::Node mounts = root["mounts"];
+  const YAML::Node after = YAML::Load(edited)["mounts"];
+  const auto expected = static_cast<std::ptrdiff_t>(mounts.size()) + count(MountEdit::Kind::add) -
+                        count(MountEdit::Kind::remove);
+  if (!after.IsSequence() || static_cast<std::ptrdiff_t>(after.size()) != expected)
+    refuse(mounts, path, "mounts",
+           "could not be located in the file's text: an item's text runs past its lines",
+           "list items whose values end on their own lines");
 }
 
 std::string with_replacements(std::string text, std::vector<Replacement> replacements) {
@@ -300,16 +464,19 @@ std::string edit_rig_text(const std::string& text, const std::string& path,
   }
   try {
     // Changes and removals first; additions on the text that results, after its last mount.
-    const std::string changed =
-        with_replacements(text, replacements_of(text, path, YAML::Load(text), edits));
+    const RigText rig{text, path, yaml_text::shared_values(text)};
+    const YAML::Node root = YAML::Load(text);
+    const std::string changed = with_replacements(text, replacements_of(rig, root, edits));
+    const RigText changed_rig{changed, path, yaml_text::shared_values(changed)};
     const std::vector<Replacement> additions =
-        additions_of(changed, path, YAML::Load(changed), edits);
-    if (additions.empty()) return changed;
+        additions_of(changed_rig, YAML::Load(changed), edits);
     // Every addition has the same anchor (the last mount left); they go in the edits' order.
     std::string appended;
     for (const Replacement& r : additions) appended += r.text;
     std::string edited = changed;
-    return edited.insert(additions.front().begin, appended);
+    if (!additions.empty()) edited.insert(additions.front().begin, appended);
+    require_list_kept(path, root, edited, edits);
+    return edited;
   } catch (const YAML::Exception& error) {
     // Syntax errors, and a backstop for any node a check above did not foresee.
     throw model::InputError(model::Diagnostic({path, error.mark.line + 1, error.mark.column + 1},
@@ -326,7 +493,9 @@ std::string save_rig_edits(const std::string& path, const std::string& loaded_te
         "reload the rig, then edit again"));
   }
   const std::string edited = edit_rig_text(loaded_text, path, edits);
-  write_file_atomically(path, edited);
+  // The rig loader's own rules, on the text about to be written: a saved rig always loads.
+  load_rig_text(edited, path);
+  replace_file_keeping_identity(path, edited);
   return edited;
 }
 

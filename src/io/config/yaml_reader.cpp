@@ -35,7 +35,10 @@ std::string unknown_key_problem(const std::string& key, const std::vector<std::s
 }  // namespace
 
 YAML::Node load_yaml_file(const std::string& path) {
-  const std::string text = read_file_bytes(path, "a readable YAML file");
+  return parse_yaml_text(read_file_bytes(path, "a readable YAML file"), path);
+}
+
+YAML::Node parse_yaml_text(const std::string& text, const std::string& path) {
   require_utf8(text, path);
   try {
     return YAML::Load(text);
@@ -263,7 +266,12 @@ std::optional<double> sequence_number(const YAML::Node& element, const std::stri
 
 MapReader read_document_map(const std::string& path, model::Diagnostics& diagnostics,
                             const std::string& expected) {
-  MapReader top(load_yaml_file(path), "", path, diagnostics, {path, 1, 1});
+  return read_document_map(load_yaml_file(path), path, diagnostics, expected);
+}
+
+MapReader read_document_map(YAML::Node document, const std::string& path,
+                            model::Diagnostics& diagnostics, const std::string& expected) {
+  MapReader top(std::move(document), "", path, diagnostics, {path, 1, 1});
   if (!top.valid()) {
     throw model::InputError(
         model::Diagnostic{{path, 1, 1}, "(document)", "is not a map", expected});

@@ -1,16 +1,73 @@
 #include "yaml_text_spans.hpp"
 
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/yaml.h>
+
 #include <algorithm>
+#include <sstream>
 
 namespace rigdesign::io::yaml_text {
 namespace {
+
+// Records every anchored node and every alias of one document, from the parser's events (a
+// yaml-cpp Node resolves an alias to its anchor's node and keeps no trace of either).
+class AnchorEvents : public YAML::EventHandler {
+ public:
+  std::map<YAML::anchor_t, SharedValue> anchored;
+  std::vector<std::pair<YAML::anchor_t, TextMark>> aliases;
+
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnAnchor(const YAML::Mark&, const std::string& name) override { name_ = name; }
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { node(mark, anchor); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    aliases.emplace_back(anchor, TextMark{mark.line, mark.column});
+  }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                const std::string&) override {
+    node(mark, anchor);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                       YAML::EmitterStyle::value) override {
+    node(mark, anchor);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                  YAML::EmitterStyle::value) override {
+    node(mark, anchor);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  std::string name_;  // the last anchor's name: its node's event follows it
+
+  void node(const YAML::Mark& mark, YAML::anchor_t anchor) {
+    if (anchor == YAML::NullAnchor) return;
+    anchored[anchor] = {name_, {mark.line, mark.column}, {}};
+  }
+};
+
+}  // namespace
+
+std::map<TextMark, SharedValue> shared_values(const std::string& text) {
+  std::istringstream stream(text);
+  YAML::Parser parser(stream);
+  AnchorEvents events;
+  parser.HandleNextDocument(events);  // the first document: the one YAML::Load gives
+  std::map<TextMark, SharedValue> shared;
+  for (const auto& [anchor, mark] : events.aliases) {
+    const auto found = events.anchored.find(anchor);
+    if (found == events.anchored.end()) continue;  // the parser refuses an unknown alias itself
+    SharedValue& value = shared.try_emplace(found->second.anchor_mark, found->second).first->second;
+    value.alias_marks.push_back(mark);
+  }
+  return shared;
+}
 
 bool blank_or_comment(std::string_view line) {
   const std::size_t first = line.find_first_not_of(" \t");
   return first == std::string_view::npos || line[first] == '#';
 }
-
-}  // namespace
 
 std::size_t offset_of(const std::string& text, int line, int column) {
   std::size_t offset = 0;

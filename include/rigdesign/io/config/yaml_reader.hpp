@@ -20,6 +20,8 @@ enum class Need { required, optional };
 
 /// Loads and parses a YAML file; missing files and syntax errors throw InputError.
 YAML::Node load_yaml_file(const std::string& path);
+/// As load_yaml_file, on `text` already read from `path` (which names it in errors).
+YAML::Node parse_yaml_text(const std::string& text, const std::string& path);
 
 /// 1-based location of a node (or of the file when the node carries no mark).
 model::SourceLocation location_of(const YAML::Node& node, const std::string& file);
@@ -93,6 +95,9 @@ class MapReader {
 /// (at 1:1, field "(document)", with `expected` saying what the file should hold).
 MapReader read_document_map(const std::string& path, model::Diagnostics& diagnostics,
                             const std::string& expected);
+/// As above, on a document already parsed from `path` (parse_yaml_text).
+MapReader read_document_map(YAML::Node document, const std::string& path,
+                            model::Diagnostics& diagnostics, const std::string& expected);
 
 /// Reads one element of a sequence as a scalar number, with its own location.
 std::optional<double> sequence_number(const YAML::Node& element, const std::string& field,
