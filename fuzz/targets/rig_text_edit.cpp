@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "fuzz_input.hpp"
@@ -73,8 +74,9 @@ void require_same_top(const YAML::Node& before, const YAML::Node& after) {
   }
 }
 
-// `edited` is `text` with `edit` (a change) applied: only that mount's edited values differ.
-void check_change(const std::string& text, const std::string& edited, const MountEdit& edit) {
+// The text before and after an accepted edit, parsed: the edited text must parse as a map
+// whose top-level entries other than `mounts` read as before.
+std::pair<YAML::Node, YAML::Node> parsed_edit(const std::string& text, const std::string& edited) {
   const YAML::Node before = YAML::Load(text);
   YAML::Node after;
   try {
@@ -84,6 +86,12 @@ void check_change(const std::string& text, const std::string& edited, const Moun
   }
   require(after.IsMap(), "gave a text that is no map");
   require_same_top(before, after);
+  return {before, after};
+}
+
+// `edited` is `text` with `edit` (a change) applied: only that mount's edited values differ.
+void check_change(const std::string& text, const std::string& edited, const MountEdit& edit) {
+  const auto [before, after] = parsed_edit(text, edited);
   const YAML::Node old_mounts = before["mounts"];
   const YAML::Node new_mounts = after["mounts"];
   require(new_mounts.IsSequence() && new_mounts.size() == old_mounts.size(), "changed the list");
@@ -112,15 +120,7 @@ void check_change(const std::string& text, const std::string& edited, const Moun
 // `edited` is `text` with mount `removed` taken out and `added` appended.
 void check_list(const std::string& text, const std::string& edited, const std::string& removed,
                 const MountEdit& added) {
-  const YAML::Node before = YAML::Load(text);
-  YAML::Node after;
-  try {
-    after = YAML::Load(edited);
-  } catch (const YAML::Exception&) {
-    finding("gave text that does not parse");
-  }
-  require(after.IsMap(), "gave a text that is no map");
-  require_same_top(before, after);
+  const auto [before, after] = parsed_edit(text, edited);
   const YAML::Node old_mounts = before["mounts"];
   const YAML::Node new_mounts = after["mounts"];
   require(new_mounts.IsSequence() && new_mounts.size() == old_mounts.size(), "lost or won mounts");
