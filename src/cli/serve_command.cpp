@@ -70,6 +70,10 @@ int run_serve(const ServeOptions& options, std::ostream& out, std::ostream& err)
   if (!session.loaded()) {
     // The page shows these too; the server stays up so the file can be mended and reloaded.
     for (const model::Diagnostic& d : session.diagnostics()) err << d.message() << '\n';
+  } else {
+    // The first page asks for the exact numbers: computed before the address is printed, so it
+    // opens at once instead of waiting behind them.
+    session.numbers(true);
   }
   studio::StudioApi api(
       session, [&options](const std::string& path) { return check_saved_rig(path, options); });

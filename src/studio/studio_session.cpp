@@ -60,6 +60,7 @@ StudioSession::StudioSession(std::string rig_path, std::string sensors_path,
 }
 
 void StudioSession::reload() {
+  exact_numbers_.reset();
   raster_.reset();
   inputs_.reset();
   loaded_mounts_.clear();
@@ -92,6 +93,7 @@ MountPose StudioSession::pose(const model::Mount& mount) const {
 }
 
 StudioNumbers StudioSession::numbers(bool exact) const {
+  if (exact && exact_numbers_) return *exact_numbers_;
   const auto start = std::chrono::steady_clock::now();
   const io::RigInputs& in = *inputs_;
   StudioNumbers numbers;
@@ -105,6 +107,7 @@ StudioNumbers StudioSession::numbers(bool exact) const {
                                                           *in.requirements, &numbers.coverage);
   }
   numbers.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (exact) exact_numbers_ = numbers;
   return numbers;
 }
 
@@ -167,6 +170,7 @@ void StudioSession::change_mount(std::size_t index, Change change) {
     throw;
   }
   raster_->set_mount(index, mount);
+  exact_numbers_.reset();
 }
 
 void StudioSession::set_pose(const std::string& mount_id, const MountPose& pose) {
@@ -230,6 +234,7 @@ std::string StudioSession::add_mount(const std::string& sensor, const std::strin
     throw;
   }
   raster_->add_mount(mount);
+  exact_numbers_.reset();
   return id;
 }
 
@@ -250,6 +255,7 @@ void StudioSession::remove_mount(const std::string& mount_id) {
     throw;
   }
   raster_->remove_mount(index);
+  exact_numbers_.reset();
   given_poses_.erase(mount_id);
 }
 

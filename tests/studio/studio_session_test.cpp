@@ -193,6 +193,27 @@ TEST_CASE("studio: mounts added and removed are saved as list items", "[studio]"
   CHECK_THROWS_AS(session.remove_mount("rplidar_a1m8"), model::InputError);
 }
 
+TEST_CASE("studio: the exact numbers kept between requests follow every edit and reload",
+          "[studio]") {
+  test::TempFolder folder;
+  const std::string path = folder.write("cart.yaml", cart_text());
+  studio::StudioSession session(path, library_path(), "");
+  REQUIRE(session.loaded());
+  // sensors.yaml: the A1's 5_5hz mode runs at 5.5 Hz, its 10hz mode at 10 Hz.
+  const studio::StudioNumbers from_file = session.numbers(true);
+  CHECK(from_file.resultant.frequency.value == Approx(5.5));
+  session.set_sensor("front_lidar", "rplidar_a1m8", "10hz");
+  session.set_sensor("rear_lidar", "rplidar_a1m8", "10hz");
+  CHECK(session.numbers(true).resultant.frequency.value == Approx(10.0));
+  // Without the rear scanner the sight behind the cart is gone.
+  session.remove_mount("rear_lidar");
+  CHECK(session.numbers(true).coverage.complete.mean < from_file.coverage.complete.mean);
+  session.reload();  // edits dropped: the file's two 5.5 Hz scanners again
+  const studio::StudioNumbers reloaded = session.numbers(true);
+  CHECK(reloaded.resultant.frequency.value == Approx(5.5));
+  CHECK(reloaded.coverage.complete.mean == Approx(from_file.coverage.complete.mean));
+}
+
 TEST_CASE("studio: another mode is judged and saved as that one word", "[studio]") {
   test::TempFolder folder;
   const std::string path = folder.write("cart.yaml", cart_text());

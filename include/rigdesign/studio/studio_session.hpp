@@ -26,7 +26,7 @@ struct StudioNumbers {
   metrics::ResultantMetrics resultant;
   metrics::RigCoverage coverage;
   std::vector<metrics::RequirementResult> requirements;
-  double seconds = 0.0;  ///< wall time of the computation
+  double seconds = 0.0;  ///< wall time of the computation (when it was made, for kept ones)
 };
 
 /// A mount's pose as the rig file writes it: xyz [m] and rpy [deg] of the sensor frame (x
@@ -55,7 +55,9 @@ class StudioSession {
   /// transform. Precondition: the mount exists.
   MountPose pose(const model::Mount& mount) const;
 
-  /// The numbers for the rig as it stands: exact (CGAL) or raster.
+  /// The numbers for the rig as it stands: exact (CGAL) or raster. The exact ones are kept
+  /// until the rig changes (an edit, a reload, a save): the page asks for them with every
+  /// state, and under a sanitizer one exact cut of a two-scanner cart takes seconds.
   StudioNumbers numbers(bool exact) const;
 
   /// Edits. Each throws model::InputError when the rig would become invalid (the message
@@ -91,6 +93,7 @@ class StudioSession {
   // Poses as typed or dragged (the numbers a save writes, not read back from a rotation).
   std::map<std::string, MountPose> given_poses_;
   std::vector<model::Diagnostic> diagnostics_;
+  mutable std::optional<StudioNumbers> exact_numbers_;  // for the rig as it stands
   // The robot description as read for each request: every edit's text is read by the rig
   // loader, which would otherwise expand and load it again (seconds for the TurtleBot 4).
   mutable std::vector<std::pair<io::RobotDescriptionRequest, model::RobotDescription>>
