@@ -117,13 +117,13 @@ def run_calibrated_wls(binary, directory, stem, walls):
         common += ["--walls", base + "_walls.csv"]
     proc = subprocess.run([binary, "localize", "--calibrate"] + common,
                           capture_output=True, text=True)
+    if proc.returncode == 2:  # a singular or unusable fit (an exponent outside [0.5, 10])
+        return None, ["calibration refused: " + proc.stderr.strip().splitlines()[0]]
     if proc.returncode != 0:
         return None, [f"calibration exit {proc.returncode}"]
     fit = json.loads(proc.stdout)["calibrations"][0]
-    if fit["exponent"] is None:
-        return None, ["not calibrated"]
-    level, exponent = fit["rssi_at_1m_dbm"], min(10.0, max(0.5, fit["exponent"]))
-    notes = [f"calibrated exponent {fit['exponent']:.2f} clamped"] if exponent != fit["exponent"] else []
+    level, exponent = fit["rssi_at_1m_dbm"], fit["exponent"]
+    notes = []
     proc = subprocess.run([binary, "localize", "--method", "wls", "--rssi-at-1m", f"{level:.4f}",
                            "--exponent", f"{exponent:.4f}"] + common,
                           capture_output=True, text=True)

@@ -40,11 +40,16 @@
 namespace rigdesign::cli {
 namespace {
 
-// An update rate above the follower's control rate would update between its commands: the
-// one limit on --update-rate (scenarios::check_scenario_inputs holds the same rule).
+// An update rate above the follower's control rate would update between its commands, one
+// below min_update_rate() leaves the robot blind for minutes (scenarios::check_scenario_inputs
+// holds the same rules).
 double control_rate() {
   const scenarios::ScenarioParams defaults;
   return defaults.control_rate;
+}
+double min_update_rate() {
+  const scenarios::ScenarioParams defaults;
+  return defaults.min_update_rate();
 }
 
 struct CostmapOptions {
@@ -483,9 +488,10 @@ void add_grid_and_driving_options(CLI::App* app, CostmapOptions& options) {
       ->check(positive_up_to(10.0, "a speed in (0, 10] m/s"));
   app->add_option("--update-rate", options.update_rate,
                   "Sensing, costmap and planning rate [Hz] (default 5)")
-      ->check(positive_up_to(control_rate(), "a rate in (0, " +
-                                                 model::format_number(control_rate()) +
-                                                 "] Hz (the follower's control rate)"));
+      ->check(finite_in(min_update_rate(), control_rate(),
+                        "a rate in [" + model::format_number(min_update_rate(), 3) + ", " +
+                            model::format_number(control_rate()) +
+                            "] Hz (an update a minute up to the follower's control rate)"));
   app->add_option("--frame-every", options.frame_every,
                   "Write a PNG frame every N updates (default 5, 0: none)")
       ->check(finite_in(0, 100000, "0 (none) or an update count"));

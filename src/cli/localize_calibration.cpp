@@ -9,10 +9,13 @@
 #include "rigdesign/io/logs/rssi_csv.hpp"
 #include "rigdesign/localize/path_loss_calibration.hpp"
 #include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::cli {
 namespace {
 
+// One log's emitter and its fit; once refuse_unusable_fits has passed the rows, every row holds
+// a usable fit (the two writers below print only such rows).
 struct CalibrationRow {
   std::string log, bssid;
   std::optional<localize::PathLossCalibration> fit;
@@ -27,10 +30,6 @@ void print_rows(const std::vector<CalibrationRow>& rows, std::ostream& out) {
          "off)\n";
   for (const CalibrationRow& row : rows) {
     out << "  " << row.log << " " << row.bssid << ": ";
-    if (!row.fit) {
-      out << "not calibrated: fewer than 3 scans heard, or their distances do not vary\n";
-      continue;
-    }
     const localize::PathLossCalibration& c = *row.fit;
     out << "a " << format_number(c.rssi_at_1m_dbm, 3) << " +- " << format_number(c.level_sd_db, 2)
         << " dBm, n " << format_number(c.exponent, 3) << " +- " << format_number(c.exponent_sd, 2)
@@ -45,25 +44,40 @@ void print_rows(const std::vector<CalibrationRow>& rows, std::ostream& out) {
 nlohmann::json rows_json(const std::vector<CalibrationRow>& rows) {
   nlohmann::json list = nlohmann::json::array();
   for (const CalibrationRow& row : rows) {
-    nlohmann::json item = {{"log", row.log}, {"bssid", row.bssid}};
-    if (row.fit) {
-      const localize::PathLossCalibration& c = *row.fit;
-      item["rssi_at_1m_dbm"] = c.rssi_at_1m_dbm;
-      item["rssi_at_1m_sd_db"] = c.level_sd_db;
-      item["exponent"] = c.exponent;
-      item["exponent_sd"] = c.exponent_sd;
-      item["sigma_db"] = c.sigma_db;
-      item["heard"] = c.heard;
-      item["unheard"] = c.unheard;
-      item["nearest_m"] = c.nearest_m;
-      item["farthest_m"] = c.farthest_m;
-    } else {
-      item["rssi_at_1m_dbm"] = nullptr;
-      item["exponent"] = nullptr;
-    }
-    list.push_back(item);
+    const localize::PathLossCalibration& c = *row.fit;
+    list.push_back({{"log", row.log},
+                    {"bssid", row.bssid},
+                    {"rssi_at_1m_dbm", c.rssi_at_1m_dbm},
+                    {"rssi_at_1m_sd_db", c.level_sd_db},
+                    {"exponent", c.exponent},
+                    {"exponent_sd", c.exponent_sd},
+                    {"sigma_db", c.sigma_db},
+                    {"heard", c.heard},
+                    {"unheard", c.unheard},
+                    {"nearest_m", c.nearest_m},
+                    {"farthest_m", c.farthest_m}});
   }
   return {{"calibrations", list}};
+}
+
+// A fit that is singular (every scan at one distance) or not physical (an exponent <= 0, a
+// sigma of 0) is refused with its reason, never suggested (issue 53 item 6): exit 2, every
+// refused log and emitter listed, nothing on standard output.
+void refuse_unusable_fits(const std::vector<CalibrationRow>& rows) {
+  model::Diagnostics refused;
+  for (const CalibrationRow& row : rows) {
+    const std::string problem =
+        row.fit ? localize::calibration_problem(*row.fit)
+                : "no fit: fewer than 3 scans heard at least " +
+                      model::format_number(localize::kCalibrationMinDistance) +
+                      " m from the emitter, or their distances vary by less than 2.3 % (every "
+                      "reading at one distance: the exponent is singular)";
+    if (problem.empty()) continue;
+    refused.error({row.log, 0, 0}, "rssi", "emitter " + row.bssid + ": " + problem,
+                  "readings at distances that vary (e.g. 2 to 20 m) and fall with distance, "
+                  "with the scatter of a real receiver");
+  }
+  refused.throw_if_errors();
 }
 
 }  // namespace
@@ -90,6 +104,7 @@ int run_calibration(const report::LocalizeOptions& options, std::ostream& out) {
   }
   require_option(!rows.empty(), "--truth", "names no emitter of the logs",
                  "a CSV bssid,x,y,z holding the logs' BSSIDs");
+  refuse_unusable_fits(rows);
   if (options.json) {
     out << rows_json(rows).dump(2) << '\n';
   } else {

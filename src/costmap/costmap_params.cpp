@@ -15,6 +15,9 @@ namespace {
 constexpr double kMaxCellsPerAxis = 32768.0;
 // Voxels per window: 2^31 bytes is already a lot for a local map.
 constexpr double kMaxVoxels = 2147483648.0;
+// Entries of the inflation layer's cost table, (inflation radius / resolution)^2: 10 MB. A
+// radius of 1e300 m asked for more memory than exists (issue 53 item 3).
+constexpr double kMaxInflationTable = 1e7;
 
 struct Checker {
   const model::SourceLocation& where;
@@ -87,13 +90,19 @@ void check_hit(Checker& c, const HitLayerParams& h) {
             "a duration in seconds, >= 0");
 }
 
-void check_inflation(Checker& c, const InflationParams& f) {
+void check_inflation(Checker& c, const InflationParams& f, double resolution) {
   c.require(finite_non_negative(f.inscribed_radius), "inflation.inscribed_radius",
             f.inscribed_radius, "a radius in metres, >= 0");
   c.require(std::isfinite(f.inflation_radius) && f.inflation_radius >= f.inscribed_radius,
             "inflation.inflation_radius", f.inflation_radius,
             "a radius in metres, >= inflation.inscribed_radius (" +
                 model::format_number(f.inscribed_radius) + ")");
+  const double reach = f.inflation_radius / resolution;  // cells; judged before any table
+  if (finite_positive(resolution) && std::isfinite(f.inflation_radius))
+    c.require(reach * reach <= kMaxInflationTable, "inflation.inflation_radius", f.inflation_radius,
+              "a radius of at most " + model::format_number(std::sqrt(kMaxInflationTable), 4) +
+                  " cells of " + model::format_number(resolution) +
+                  " m (a few times the robot's radius, as nav2's examples use)");
   c.require(finite_non_negative(f.cost_scaling_factor), "inflation.cost_scaling_factor",
             f.cost_scaling_factor, "a decay rate in 1/m, >= 0");
 }
@@ -106,7 +115,7 @@ void check_costmap_params(const CostmapParams& params, const model::SourceLocati
   check_window(checker, params);
   check_voxel(checker, params);
   check_hit(checker, params.hit);
-  check_inflation(checker, params.inflation);
+  check_inflation(checker, params.inflation, params.resolution);
   checker.diagnostics.throw_if_errors();
 }
 

@@ -4,6 +4,8 @@
 #include <algorithm>
 
 #include "rigdesign/localize/wls_multilateration.hpp"
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 
 namespace rigdesign::localize {
 
@@ -30,6 +32,23 @@ void break_tie(const LocalizeParams& params, EmitterEstimate* estimate) {
       });
   if (preferred != hypotheses.end()) std::rotate(hypotheses.begin(), preferred, preferred + 1);
   estimate->tie_break = std::string("--prefer-side ") + (prefer_side > 0 ? "left" : "right");
+}
+
+// The range fit's posterior grid covers the search area: a site, not a continent. The same
+// cap as localize --search-area's (10 km sides); a log whose path spans more is refused before
+// the grid is sized from it (issue 53: a path across +-1e8 m overflowed the refinement's count).
+constexpr double kLargestSearchSide = 10000.0;  // [m]
+
+void check_search_area(const RssiLog& log, const ScanSeries& scans, const RangeFitParams& fit) {
+  const std::array<model::Vec2, 2> area = search_area_of(scans, fit);
+  const model::Vec2 sides = area[1] - area[0];
+  if (sides.x() <= kLargestSearchSide && sides.y() <= kLargestSearchSide) return;
+  throw model::InputError(model::Diagnostic{
+      {log.source, 0, 0},
+      "x, y",
+      "the area searched for the emitter (the path's box grown by the search margin) is " +
+          model::format_number(sides.x(), 4) + " x " + model::format_number(sides.y(), 4) + " m",
+      "a path within 10 km on each side, or --search-area X0 Y0 X1 Y1 of sides up to 10 km"});
 }
 
 }  // namespace
@@ -79,6 +98,7 @@ EmitterEstimate localize_emitter(const RssiLog& log, int emitter, LocalizeMethod
       chunk_readings(log, emitter, params.path_loss, params.chunking), method, params);
   if (method == LocalizeMethod::nls) {
     estimate.scans = scan_series(log, emitter, params.scans);
+    check_search_area(log, *estimate.scans, params.fit);
     estimate.fit = fit_ranges(*estimate.scans, params.path_loss, params.fit, params.walls);
     estimate.hypotheses = estimate.fit.hypotheses;
     estimate.ambiguous = estimate.fit.ambiguous;

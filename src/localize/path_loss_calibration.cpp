@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "censored_likelihood.hpp"
+#include "rigdesign/model/format_number.hpp"
 
 namespace rigdesign::localize {
 namespace {
@@ -152,6 +153,32 @@ std::optional<PathLossCalibration> calibrate_path_loss(const ScanSeries& scans,
   c.level_sd_db = errors(0);
   c.exponent_sd = errors(1);
   return c;
+}
+
+std::string calibration_problem(const PathLossCalibration& fit) {
+  // The ranges of --rssi-at-1m and --exponent: a suggestion the command refuses is no use.
+  constexpr double kLowestLevel = -120.0, kHighestLevel = 30.0;  // [dBm]
+  constexpr double kLeastExponent = 0.5, kLargestExponent = 10.0;
+  constexpr double kLeastSigma = 0.01;  // [dB] a hundredth of the receivers' 1 dB step
+  using model::format_number;
+  const bool finite = std::isfinite(fit.rssi_at_1m_dbm) && std::isfinite(fit.exponent) &&
+                      std::isfinite(fit.sigma_db) && std::isfinite(fit.level_sd_db) &&
+                      std::isfinite(fit.exponent_sd);
+  if (!finite) return "the fit did not converge to finite values";
+  if (!(fit.exponent >= kLeastExponent && fit.exponent <= kLargestExponent)) {
+    return "the exponent " + format_number(fit.exponent, 3) +
+           " is not a path loss (it lies outside [0.5, 10]: the readings do not fall with "
+           "distance as a radio's do)";
+  }
+  if (!(fit.rssi_at_1m_dbm >= kLowestLevel && fit.rssi_at_1m_dbm <= kHighestLevel)) {
+    return "the level at 1 m, " + format_number(fit.rssi_at_1m_dbm, 4) +
+           " dBm, lies outside [-120, 30] dBm";
+  }
+  if (!(fit.sigma_db >= kLeastSigma)) {
+    return "the readings lie on the model to " + format_number(fit.sigma_db, 2) +
+           " dB (sigma below 0.01 dB): a degenerate fit, not a measurement";
+  }
+  return {};
 }
 
 const std::vector<EnvironmentPreset>& environment_presets() {

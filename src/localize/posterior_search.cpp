@@ -150,10 +150,11 @@ Grid refine(const Grid& coarse, const std::vector<char>& chosen, int factor,
   return fine;
 }
 
-// Cells of the finer grid `chosen` leads to, with neighbours, at most.
-std::size_t cells_to_refine(const std::vector<char>& chosen, int factor) {
-  const auto count = static_cast<std::size_t>(std::count(chosen.begin(), chosen.end(), 1));
-  return count * 9 * static_cast<std::size_t>(factor * factor);
+// Cells of the finer grid `chosen` leads to, with neighbours, at most. In floating point: over
+// a wide box the factor reaches millions and factor * factor overflows an int (issue 53).
+double cells_to_refine(const std::vector<char>& chosen, int factor) {
+  const auto count = static_cast<double>(std::count(chosen.begin(), chosen.end(), 1));
+  return count * 9.0 * static_cast<double>(factor) * static_cast<double>(factor);
 }
 
 // Each evaluated cell's basin: follow the steepest ascent among the 8 neighbours to a local
@@ -202,7 +203,7 @@ PosteriorSearch search_posterior(const MergedScans& scans, const LikelihoodSetti
   bool half_metre = kLevels[0].half_metre;
   for (int level = 1; level < std::min(levels, 3); ++level) {
     const int factor = std::max(1, static_cast<int>(std::lround(grid.cell / kLevels[level].cell)));
-    const std::size_t max_cells = kLevels[level].max_cells;
+    const auto max_cells = static_cast<double>(kLevels[level].max_cells);
     double keep = kLevels[level - 1].keep;
     std::vector<char> chosen = cells_worth_refining(grid, keep);
     // Out of the coarse grid, a very broad posterior keeps many cells: narrow the band until

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/statistics.hpp"
 
 namespace rigdesign::localize {
@@ -65,6 +67,31 @@ double weakest_reading(const RssiLog& log) {
   return std::isfinite(weakest) ? weakest : std::numeric_limits<double>::lowest();
 }
 
+// Unheard scans a series may hold between its log lines, in all: a scan every 0.1 s for 11
+// days, about 0.5 GB of scans. More means timestamps in another unit than seconds or a scan
+// period far shorter than the log's (issue 53: a 1e8 s gap in a 0.1 s log ran out of memory).
+constexpr double kMaxMissedScans = 1e7;
+
+// The scans missed between lines at `from` and `to` [s], judged in floating point against the
+// cap before they become an integer.
+int missed_scans(const RssiLog& log, double from, double to, double period,
+                 const ScanSeries& series) {
+  const double missed = std::round((to - from) / period) - 1.0;
+  const double so_far = series.unheard_interpolated + series.unheard_unplaced;
+  if (!(missed + so_far <= kMaxMissedScans)) {
+    using model::format_number;
+    throw model::InputError(model::Diagnostic{
+        {log.source, 0, 0},
+        "t",
+        "the gap from t = " + format_number(from) + " s to " + format_number(to) + " s is " +
+            format_number(missed, 3) + " scan periods of " + format_number(period) +
+            " s: more than " + format_number(kMaxMissedScans) + " scans to place in all",
+        "timestamps in seconds and a scan period that fits them (--scan-period or the log's "
+        "'# scan_period_s:')"});
+  }
+  return static_cast<int>(missed);
+}
+
 }  // namespace
 
 std::string to_string(FloorSource source) {
@@ -107,7 +134,7 @@ ScanSeries scan_series(const RssiLog& log, int emitter, const ScanSeriesParams& 
     if (k > 0 && period > 0) {
       const ScanEvent& before = events[k - 1];
       const double dt = event.t - before.t;
-      const int missed = static_cast<int>(std::lround(dt / period)) - 1;
+      const int missed = missed_scans(log, before.t, event.t, period, series);
       if (missed > 0) {
         const double chord = (event.position - before.position).head<2>().norm();
         constexpr double kStandingStill = 0.05;  // [m] covered in the gap: no path to know

@@ -10,6 +10,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "rigdesign/model/format_number.hpp"
+#include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/parallel_for.hpp"
 #include "rigdesign/occupancy/occupancy_actor_points.hpp"
 #include "rigdesign/occupancy/occupancy_hull_region.hpp"
@@ -24,6 +26,23 @@ namespace rigdesign::occupancy {
 namespace {
 
 constexpr double kNoScore = std::numeric_limits<double>::quiet_NaN();
+
+// Frames a run may simulate: an hour at 100 Hz, the largest --duration at the largest --rate.
+// Judged in floating point before it becomes the loop's count (issue 53 item 3).
+constexpr double kMaxFrames = 3600.0 * 100.0;
+
+// The run's frame count, refused below one frame (a run of 1 s at 1e-300 Hz used to score one
+// frame anyway, as if asked for) or above kMaxFrames.
+int frame_count(const OccupancyEvalParams& params) {
+  const double frames = std::floor(params.duration * params.rate + 1e-9);
+  if (frames >= 1.0 && frames <= kMaxFrames) return static_cast<int>(frames);
+  throw model::InputError(model::Diagnostic{
+      {"(command line)", 0, 0},
+      "--duration, --rate",
+      model::format_number(params.duration) + " s at " + model::format_number(params.rate) +
+          " Hz is " + model::format_number(params.duration * params.rate, 3) + " frames",
+      "a run of 1 to " + model::format_number(kMaxFrames) + " frames (duration x rate)"});
+}
 
 model::TriangleMesh static_scenery(const model::Scene& scene) {
   model::TriangleMesh mesh;
@@ -348,6 +367,7 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                                 "' has no moving object");
   }
   const model::MovingObject& object = scene.moving.front();
+  const int frames = frame_count(params);
   OccupancySensing sensing = occupancy_sensing(sensors, params);
   std::vector<std::size_t> truth_of;
   std::vector<LatticeTruth> truths = lattice_truths(scene, mappers, params, truth_of);
@@ -361,8 +381,6 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                         ChangeDelays(window.size())});
   }
   PathOdometer odometer;
-  const int frames =
-      std::max(1, static_cast<int>(std::floor(params.duration * params.rate + 1e-9)));
   std::vector<model::PointCloud> clouds(sensors.size());
   for (int k = 0; k < frames; ++k) {
     const double t = k / params.rate;

@@ -537,8 +537,9 @@ void ScenarioLoop::sense_mount(std::size_t i, double t,
                                std::vector<costmap::CloudObservation>& observations) {
   const detail::SimulatedMount& mount = setup.mounts[i];
   const bool keeps = mount.source.observation_persistence > 0.0;
-  std::vector<long> held = frames_held(mount.timing, t, mount.source.observation_persistence);
-  if (keeps) std::erase_if(held, [&](long index) { return index <= last_passed[i]; });
+  // With persistence the frames already passed on are not walked again.
+  const std::vector<long> held = frames_held(mount.timing, t, mount.source.observation_persistence,
+                                             keeps ? last_passed[i] : -1);
   std::map<long, model::PointCloud>& cache = frames[i];
   std::erase_if(cache, [&](const auto& frame) {
     return !std::binary_search(held.begin(), held.end(), frame.first);

@@ -21,13 +21,13 @@ MountTiming mount_timing(const model::Mount& mount, const model::SensorMode& mod
   return timing;
 }
 
-std::vector<long> frames_held(const MountTiming& timing, double t, double persistence) {
+std::vector<long> frames_held(const MountTiming& timing, double t, double persistence, long after) {
   const double newest_capture = t - timing.latency();
   if (newest_capture < timing.phase - 1e-12) return {};
   const long newest =
       static_cast<long>(std::floor((newest_capture - timing.phase) / timing.period + 1e-9));
   std::vector<long> held;
-  for (long k = newest; k >= 0; --k) {
+  for (long k = newest; k >= 0 && k > after; --k) {
     if (timing.capture(newest) - timing.capture(k) > persistence + 1e-12) break;
     held.push_back(k);
   }

@@ -41,6 +41,14 @@ std::optional<PathLossCalibration> calibrate_path_loss(const ScanSeries& scans,
                                                        const model::Vec3& truth,
                                                        const std::vector<WallSegment>& walls = {});
 
+/// Why `fit` must not be suggested or used, empty when it may: a value that is not finite, a
+/// level outside [-120, 30] dBm or an exponent outside [0.5, 10] (the ranges localize's
+/// --rssi-at-1m and --exponent accept; measured exponents lie between 1.6 and 6, Rappaport
+/// Table 4.2), or a sigma below 0.01 dB (readings on the model to a hundredth of a dB, where
+/// receivers report whole dBm: the likelihood grows without bound as sigma falls, so its
+/// "maximum" there is no fit).
+std::string calibration_problem(const PathLossCalibration& fit);
+
 /// A published exponent for a kind of environment (Rappaport's Table 4.2; the midpoint where
 /// it gives a range).
 struct EnvironmentPreset {

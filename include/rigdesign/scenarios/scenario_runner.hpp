@@ -52,8 +52,14 @@ struct ScenarioParams {
   bool deadlock_recovery = true;
   double deadlock_patience = 2.0;
   double deadlock_clear_radius = 0.5;
-  double update_rate = 5.0;      ///< [Hz] sensing, costmap update and planning
-  double control_rate = 20.0;    ///< [Hz] follower commands and collision checks
+  double update_rate = 5.0;    ///< [Hz] sensing, costmap update and planning
+  double control_rate = 20.0;  ///< [Hz] follower commands and collision checks
+  /// The control loop steps at most this many times between two costmap updates (a minute at
+  /// 20 Hz): slower, the robot drives blind for longer than a scenario's legs take, and an
+  /// update rate of 1e-300 Hz overflowed the step count (issue 53 item 3).
+  static constexpr double kMaxStepsPerUpdate = 1200.0;
+  /// [Hz] the slowest update rate a run takes.
+  double min_update_rate() const { return control_rate / kMaxStepsPerUpdate; }
   double goal_lookahead = 2.0;   ///< [m] local goal distance along the route (capped by the window)
   double goal_tolerance = 0.15;  ///< [m] a stop counts as reached within this distance
   /// [m] a local goal on a blocked cell moves to the nearest passable cell this close to it.

@@ -36,8 +36,11 @@ MountTiming mount_timing(const model::Mount& mount, const model::SensorMode& mod
 /// Indices k of the frames the costmap holds at time `t` [s]: those available by then
 /// (capture(k) + latency <= t) captured no earlier than `persistence` [s] before the newest
 /// available one, as nav2's observation buffer keeps them (persistence 0: the newest only).
-/// Empty before the first frame arrives.
-std::vector<long> frames_held(const MountTiming& timing, double t, double persistence);
+/// Empty before the first frame arrives. Only frames after index `after` are listed: a caller
+/// that has passed the older ones on does not walk them again (with a long persistence, every
+/// frame since the start at every update).
+std::vector<long> frames_held(const MountTiming& timing, double t, double persistence,
+                              long after = -1);
 
 /// One line per timing for reports: "10 Hz, latency 0.012 s (driver 0.004 s + filters 0.008 s)".
 std::string describe(const MountTiming& timing);

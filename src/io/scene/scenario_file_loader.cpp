@@ -44,8 +44,12 @@ void read_route(MapReader& top, scenarios::ScenarioDefinition& scenario) {
     scenarios::RouteStop route_stop;
     route_stop.name = stop.text("name", Need::optional, "the goal's name").value_or("");
     if (const auto xy = read_xy(stop, "xy", Need::required)) route_stop.position = *xy;
-    if (stop.has("wait"))
-      route_stop.wait = non_negative(stop, "wait", Need::required, "seconds to wait there, >= 0");
+    if (stop.has("wait")) {
+      // A wait is part of the run: no longer than the longest run (1e300 s used to pass).
+      constexpr const char* kWaitForm = "seconds to wait there, >= 0 and at most 86400";
+      route_stop.wait = non_negative(stop, "wait", Need::required, kWaitForm);
+      stop.require(route_stop.wait <= kMaxDuration, "wait", "exceeds a day", kWaitForm);
+    }
     stop.reject_unknown_keys();
     scenario.route.push_back(route_stop);
   }
