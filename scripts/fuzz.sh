@@ -125,6 +125,7 @@ run_target() {
 if [ "$1" = "--all" ]; then
   seconds="${2:-15}"
   build_fuzzers
+  echo "fuzz.sh: the targets built in $SECONDS s" >&2
   export -f run_target bundled_seeds dictionary_of
   export root build
   printf '%s\n' "${own_targets[@]}" |
