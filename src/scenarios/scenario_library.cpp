@@ -57,7 +57,7 @@ ScenarioDefinition wall_following(std::uint64_t seed, double body_radius) {
   ScenarioDefinition scenario;
   scenario.name = "wall_following";
   scenario.description =
-      "drive 6 m along the wall past a table whose foam top (0.37-0.45 m) overhangs the lane";
+      "drive 6 m along the wall past a table whose foam top (0.33-0.39 m) overhangs the lane";
   scenario.scene = sim::make_scene("wall_following", seed);
   scenario.start = start_of(scenario.scene);
   scenario.start.position.y() = wall_face_y(scenario.scene) - body_radius - kSideToWall;
