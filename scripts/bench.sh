@@ -9,7 +9,8 @@
 #                                    # errors against paper 4's WLS and 95 % region coverage
 #   scripts/bench.sh paper2_table1   # paper 2's Table 1 on rigs/elektron.yaml: 3 variants x 20
 #                                    # seeds in office_goals with DWA, the critical-distance
-#                                    # sweep included (issue 35: under 5 minutes here)
+#                                    # sweep included (issue 35: under 5 minutes here); the
+#                                    # orderings are reported, never a failure
 #   scripts/bench.sh paper3_sweeps   # paper 3's Tables 2-9 on rigs/cell.yaml (occupancy
 #                                    # --sweep paper3, 32 mappers, 480 frames; issue 36: under
 #                                    # 10 minutes here, checked), beside paper 3's numbers
@@ -40,17 +41,15 @@ for bench in "$build"/tests/bench/*_bench; do
   esac
 done
 if [ -z "$only" ] || [ "$only" = "paper2_table1" ]; then
-  # Also the check of paper 2's ordering over the 20 seeds (too slow for the sanitizer build
-  # of ctest): any of its four statements that does not hold fails the script.
+  # Reports how many of paper 2's four orderings came out, and never fails on them (issue 54:
+  # a benchmark that gates on a paper's answer invites tuning the scene until it passes). It
+  # fails only when the run itself does.
   table_out="$(mktemp -d)"
   (cd "$root" && "$build/src/rigdesign" costmap rigs/elektron.yaml --scenario office_goals \
     --variants --seeds 20 --local-planner dwa --out "$table_out/costmap") | tee "$table_out/table.txt"
   holds="$(grep -c ': holds (' "$table_out/table.txt" || true)"
   rm -rf "$table_out"
-  if [ "$holds" != 4 ]; then
-    echo "paper2_table1: $holds of paper 2's 4 orderings hold" >&2
-    exit 1
-  fi
+  echo "paper2_table1: $holds of paper 2's 4 orderings hold on these 20 seeds (reported, not gated)"
 fi
 if [ -z "$only" ] || [ "$only" = "paper3_sweeps" ]; then
   started=$(date +%s)
