@@ -141,9 +141,9 @@ class BranchAndBound {
     });
   }
 
-  // Whether another option of slot k makes option o pointless: no dearer in price,
-  // bandwidth and CPU, surviving the condition if o does, covering every class o covers;
-  // identical options keep the first.
+  // Whether another option of slot k makes option o pointless: no dearer in price, its own
+  // transfer components, bandwidth and CPU, surviving the condition if o does, covering every class
+  // o covers; identical options keep the first.
   bool dominated(std::size_t k, std::size_t o) const {
     const SearchOption& mine = problem_.slots[k][o];
     const std::uint64_t* my_bits = classes_.bits(k, o);
@@ -152,7 +152,8 @@ class BranchAndBound {
       const SearchOption& other = problem_.slots[k][p];
       // An option whose housing rules others out cannot stand in for one that does not.
       if (clashing_[k][p]) continue;
-      if (other.price > mine.price || other.bandwidth > mine.bandwidth || other.cpu > mine.cpu ||
+      if (other.price > mine.price || other.transfer_price > mine.transfer_price ||
+          other.bandwidth > mine.bandwidth || other.cpu > mine.cpu ||
           (mine.survives_condition && !other.survives_condition)) {
         continue;
       }
@@ -161,8 +162,9 @@ class BranchAndBound {
       for (std::size_t w = 0; w < classes_.words() && covers; ++w)
         covers = (my_bits[w] & ~other_bits[w]) == 0;
       if (!covers) continue;
-      const bool identical = other.price == mine.price && other.bandwidth == mine.bandwidth &&
-                             other.cpu == mine.cpu &&
+      const bool identical = other.price == mine.price &&
+                             other.transfer_price == mine.transfer_price &&
+                             other.bandwidth == mine.bandwidth && other.cpu == mine.cpu &&
                              other.survives_condition == mine.survives_condition &&
                              classes_.span(k, p) == classes_.span(k, o) &&
                              std::equal(my_bits, my_bits + classes_.words(), other_bits);
@@ -403,6 +405,7 @@ class BranchAndBound {
       add(depth, o);
       RigLoad next = load;
       next.sensor_cost += option.price;
+      next.per_sensor_transfer += option.transfer_price;
       next.bandwidth += option.bandwidth;
       next.cpu += option.cpu;
       ++next.sensors;

@@ -1,5 +1,7 @@
 #include "rigdesign/select/cost_model.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "rigdesign/model/format_number.hpp"
@@ -19,21 +21,56 @@ const model::PricedCapacity* cheapest_exceeding(const std::vector<model::PricedC
   return best;
 }
 
+namespace {
+
+// The end of the run of items of one kind starting at `begin` (items of a kind are contiguous).
+std::size_t kind_end(const std::vector<model::PricedCapacity>& items, std::size_t begin) {
+  std::size_t end = begin;
+  while (end < items.size() && items[end].kind == items[begin].kind) ++end;
+  return end;
+}
+
+// The cheapest item of items[begin, end) whose capacity exceeds `load`, or nullptr.
+const model::PricedCapacity* cheapest_in(const std::vector<model::PricedCapacity>& items,
+                                         std::size_t begin, std::size_t end, double load) {
+  const model::PricedCapacity* best = nullptr;
+  for (std::size_t i = begin; i < end; ++i) {
+    if (items[i].capacity > load && (best == nullptr || items[i].price < best->price))
+      best = &items[i];
+  }
+  return best;
+}
+
+}  // namespace
+
 std::vector<const model::PricedCapacity*> cheapest_per_kind(
     const std::vector<model::PricedCapacity>& items, double load) {
   std::vector<const model::PricedCapacity*> chosen;
   for (std::size_t begin = 0; begin < items.size();) {
-    std::size_t end = begin;
-    const model::PricedCapacity* best = nullptr;
-    for (; end < items.size() && items[end].kind == items[begin].kind; ++end) {
-      if (items[end].capacity > load && (best == nullptr || items[end].price < best->price))
-        best = &items[end];
+    const std::size_t end = kind_end(items, begin);
+    if (!items[begin].per_sensor) {
+      const model::PricedCapacity* best = cheapest_in(items, begin, end, load);
+      if (best == nullptr) return {};  // this kind carries no such load: nothing does
+      chosen.push_back(best);
     }
-    if (best == nullptr) return {};  // this kind carries no such load: nothing does
-    chosen.push_back(best);
     begin = end;
   }
   return chosen;
+}
+
+double per_sensor_transfer_price(const std::vector<model::PricedCapacity>& items,
+                                 double bandwidth) {
+  double price = 0.0;
+  for (std::size_t begin = 0; begin < items.size();) {
+    const std::size_t end = kind_end(items, begin);
+    if (items[begin].per_sensor) {
+      const model::PricedCapacity* best = cheapest_in(items, begin, end, bandwidth * kBitsPerByte);
+      if (best == nullptr) return std::numeric_limits<double>::infinity();
+      price += best->price;
+    }
+    begin = end;
+  }
+  return price;
 }
 
 CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
@@ -43,12 +80,18 @@ CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapac
   const std::vector<const model::PricedCapacity*> links =
       cheapest_per_kind(transfer, load.bandwidth * kBitsPerByte);
   const model::PricedCapacity* cpu = cheapest_exceeding(cpus, load.cpu);
-  cost.feasible = !links.empty() && cpu != nullptr;
+  const bool any_shared = std::any_of(transfer.begin(), transfer.end(),
+                                      [](const model::PricedCapacity& t) { return !t.per_sensor; });
+  cost.feasible = !transfer.empty() && (!links.empty() || !any_shared) && cpu != nullptr &&
+                  std::isfinite(load.per_sensor_transfer);
   std::vector<std::string> ids;
   for (const model::PricedCapacity* link : links) {
     cost.transfer += link->price;
     ids.push_back(link->id);
   }
+  for (std::size_t begin = 0; begin < transfer.size(); begin = kind_end(transfer, begin))
+    if (transfer[begin].per_sensor) ids.push_back("per sensor: " + transfer[begin].kind);
+  cost.transfer += load.per_sensor_transfer;
   cost.transfer_id = model::join(ids, " + ");
   if (cpu != nullptr) {
     cost.cpu = cpu->price;
@@ -61,22 +104,22 @@ CostBreakdown rig_cost(const RigLoad& load, const std::vector<model::PricedCapac
 double total_cost(const RigLoad& load, const std::vector<model::PricedCapacity>& transfer,
                   const std::vector<model::PricedCapacity>& cpus) {
   constexpr double kNone = std::numeric_limits<double>::infinity();
+  if (transfer.empty()) return kNone;
   const model::PricedCapacity* cpu = cheapest_exceeding(cpus, load.cpu);
   if (cpu == nullptr) return kNone;
-  // Eq. 4 without the vector: per kind (contiguous) the cheapest item above the bandwidth.
+  // Eq. 4 without the vector: per shared kind the cheapest item above the bandwidth; the
+  // per-sensor kinds' price came with each sensor (load.per_sensor_transfer).
   const double bits = load.bandwidth * kBitsPerByte;
-  double transfer_cost = 0.0;
+  double transfer_cost = load.per_sensor_transfer;
   for (std::size_t begin = 0; begin < transfer.size();) {
-    double best = kNone;
-    std::size_t end = begin;
-    for (; end < transfer.size() && transfer[end].kind == transfer[begin].kind; ++end) {
-      if (transfer[end].capacity > bits && transfer[end].price < best) best = transfer[end].price;
+    const std::size_t end = kind_end(transfer, begin);
+    if (!transfer[begin].per_sensor) {
+      const model::PricedCapacity* best = cheapest_in(transfer, begin, end, bits);
+      if (best == nullptr) return kNone;
+      transfer_cost += best->price;
     }
-    if (best == kNone) return kNone;
-    transfer_cost += best;
     begin = end;
   }
-  if (transfer.empty()) return kNone;
   return load.sensor_cost + transfer_cost + cpu->price;
 }
 

@@ -85,6 +85,7 @@ RigLoad load_of(const SearchProblem& problem, const SearchResult& result) {
     const SearchOption& option = problem.slots[k][result.choice[k]];
     load.cpu += option.cpu;
     load.bandwidth += option.bandwidth;
+    load.per_sensor_transfer += option.transfer_price;
   }
   return load;
 }
@@ -100,14 +101,19 @@ double largest_capacity(const std::vector<model::PricedCapacity>& items, std::st
   return largest;
 }
 
-// The most a rig can send: each transfer kind carries up to its largest item (eq. 4 buys one of
-// each), so the kind whose largest item is smallest bounds it; `id` names that item.
+// The most a rig can send: each shared transfer kind carries up to its largest item (eq. 4
+// buys one of each), so the kind whose largest item is smallest bounds it; `id` names that
+// item. Kinds bought per sensor bound each sensor, not the rig (their prices are the options').
 double transfer_bottleneck(const std::vector<model::PricedCapacity>& items, std::string& id) {
-  double bottleneck = 0.0;
+  double bottleneck = kUnbounded;
   bool first = true;
   for (std::size_t begin = 0; begin < items.size();) {
     std::size_t end = begin;
     while (end < items.size() && items[end].kind == items[begin].kind) ++end;
+    if (items[begin].per_sensor) {
+      begin = end;
+      continue;
+    }
     std::string kind_id;
     const double largest = largest_capacity(
         std::vector<model::PricedCapacity>(items.begin() + static_cast<std::ptrdiff_t>(begin),
@@ -133,6 +139,8 @@ std::string infeasibility_cause(const SearchProblem& problem,
   SearchProblem unlimited = problem;
   unlimited.transfer = {{"unlimited", kUnbounded, 0.0, {}, {}}};
   unlimited.cpus = {{"unlimited", kUnbounded, 0.0, {}, {}}};
+  for (std::vector<SearchOption>& slot : unlimited.slots)
+    for (SearchOption& option : slot) option.transfer_price = 0.0;  // per-sensor cables too
   const bool robust = problem.robustness.any();
   const std::string which =
       robust ? "meeting the requirements and surviving the failures" : "meeting the requirements";
@@ -166,15 +174,19 @@ std::string infeasibility_cause(const SearchProblem& problem,
   const double bits = transfer_bottleneck(problem.transfer, link_id);
   SearchProblem transfer_only = unlimited;
   transfer_only.transfer = {{link_id, bits, 0.0, {}, {}}};
+  transfer_only.slots = problem.slots;  // each sensor's own components priced as they are
   if (!branch_and_bound(transfer_only).found) {
-    causes.push_back("transfer: no rig " + which + " sends less than the " +
-                     model::format_number(bits / 1e9, 4) +
-                     " Gbit/s of the catalog's largest "
-                     "transfer item, " +
-                     link_id +
-                     " (the cheapest rig with unlimited, free transfer "
-                     "sends " +
-                     model::format_number(needed.bandwidth * 8 / 1e9, 4) + " Gbit/s)");
+    const std::string sent = " (the cheapest rig with unlimited, free transfer sends " +
+                             model::format_number(needed.bandwidth * 8 / 1e9, 4) + " Gbit/s)";
+    causes.push_back(
+        link_id.empty()
+            ? "transfer: every rig " + which +
+                  " has a sensor whose bandwidth no per-sensor transfer component of the "
+                  "catalog carries" +
+                  sent
+            : "transfer: no rig " + which + " sends less than the " +
+                  model::format_number(bits / 1e9, 4) +
+                  " Gbit/s of the catalog's largest transfer item, " + link_id + sent);
   }
   if (causes.empty()) {
     return "CPU and transfer together: rigs " + which +

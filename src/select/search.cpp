@@ -107,6 +107,7 @@ SearchResult brute_force(const SearchProblem& problem) {
       if (choice[k] < 0) continue;
       const SearchOption& option = problem.slots[k][choice[k]];
       load.sensor_cost += option.price;
+      load.per_sensor_transfer += option.transfer_price;
       load.bandwidth += option.bandwidth;
       load.cpu += option.cpu;
       ++load.sensors;

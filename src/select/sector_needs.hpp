@@ -41,8 +41,9 @@ struct LeastAddition {
     constexpr double kNone = std::numeric_limits<double>::infinity();
     return {kNone, kNone, kNone};
   }
+  // The option's own transfer components count with its price: both come with it alone.
   static LeastAddition of(const SearchOption& option) {
-    return {option.price, option.bandwidth, option.cpu};
+    return {option.price + option.transfer_price, option.bandwidth, option.cpu};
   }
   bool possible() const { return std::isfinite(price); }
   // Part by part: the smaller (either option may be the one bought).

@@ -490,10 +490,10 @@ SearchProblem SelectionSpace::problem_for(
       if (!meets_alone(option, targets)) continue;
       const bool survives = !targets.robustness || !targets.robustness->condition ||
                             option.metrics.light.immune_to(*targets.robustness->condition);
-      problem.slots.back().push_back({option.metrics.price + support_price,
-                                      option.metrics.bandwidth,
-                                      option.metrics.driver_cpu + option.filtering, option.sections,
-                                      survives, option.housing});
+      problem.slots.back().push_back(
+          {option.metrics.price + support_price, option.metrics.bandwidth,
+           option.metrics.driver_cpu + option.filtering, option.sections, survives, option.housing,
+           per_sensor_transfer_price(catalog_->transfer, option.metrics.bandwidth)});
       kept[k].push_back(&option);
     }
   }

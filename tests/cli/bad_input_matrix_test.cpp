@@ -165,7 +165,8 @@ std::vector<MatrixCase> option_cases() {
       {"costmap --update-rate 50",
        {},
        with(costmap, {"--update-rate", "50"}),
-       "--update-rate: is 50 (expected a rate in (0, 20] Hz"},
+       // 20 Hz control rate; at most 1200 control steps between updates: 20 / 1200 Hz.
+       "--update-rate: is 50 (expected a rate in [0.0167, 20] Hz"},
       {"costmap --window -6", {}, with(costmap, {"--window", "-6"}), "--window: is -6"},
       {"occupancy --voxels 0", {}, with(occupancy, {"--voxels", "0"}), "--voxels: is 0"},
       {"occupancy --rate inf", {}, with(occupancy, {"--rate", "inf"}), "--rate: is inf"},

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -68,6 +69,40 @@ TEST_CASE("cost model: eq. 4 buys one component of each transfer kind and sums t
   // A flat list is one kind: the cheapest item above the load alone, as before.
   for (model::PricedCapacity& item : transfer) item.kind.clear();
   CHECK(select::rig_cost({1000.0, 62.5e6, 1.0, 2}, transfer, cpus).transfer == 10.0);
+}
+
+TEST_CASE("cost model: eq. 4's per-sensor kinds buy one component for each sensor's own load") {
+  // A cable per sensor (issue 54 item 3), one switch for the rig. By hand: a 0.3 Gbit/s sensor
+  // takes the 1 Gbit/s cable (10), a 2 Gbit/s one the 10 Gbit/s cable (50); together they send
+  // 2.3 Gbit/s, which needs the 10 Gbit/s switch (300): C_t = 10 + 50 + 300 = 360.
+  std::vector<model::PricedCapacity> transfer = {component("cat5e", 1.0e9, 10, "cable"),
+                                                 component("cat6a", 10.0e9, 50, "cable"),
+                                                 component("gige_switch", 1.0e9, 100, "switch"),
+                                                 component("10g_switch", 10.0e9, 300, "switch")};
+  transfer[0].per_sensor = transfer[1].per_sensor = true;
+  const std::vector<model::PricedCapacity> cpus = {{"cpu", 8.0, 200, {}, {}}};
+  CHECK(select::per_sensor_transfer_price(transfer, 0.3e9 / 8) == 10.0);
+  CHECK(select::per_sensor_transfer_price(transfer, 2.0e9 / 8) == 50.0);
+  CHECK(std::isinf(select::per_sensor_transfer_price(transfer, 20e9 / 8)));  // no cable
+  select::RigLoad load{1000.0, 2.3e9 / 8, 1.0, 2};
+  load.per_sensor_transfer = 10.0 + 50.0;
+  const select::CostBreakdown cost = select::rig_cost(load, transfer, cpus);
+  CHECK(cost.feasible);
+  CHECK(cost.transfer == 360.0);
+  CHECK(cost.transfer_id == "10g_switch + per sensor: cable");
+  CHECK(cost.total == 1000.0 + 360.0 + 200.0);
+  CHECK(select::total_cost(load, transfer, cpus) == 1560.0);
+  // With a shared cable the rig bought one 10 Gbit/s cable (50) for the 2.3 Gbit/s instead.
+  transfer[0].per_sensor = transfer[1].per_sensor = false;
+  CHECK(select::total_cost({1000.0, 2.3e9 / 8, 1.0, 2}, transfer, cpus) == 1000.0 + 350.0 + 200.0);
+  // Only per-sensor kinds: nothing shared to buy, the sensors' own components are C_t.
+  const std::vector<model::PricedCapacity> cables_only = {transfer[0], transfer[1]};
+  std::vector<model::PricedCapacity> own = cables_only;
+  own[0].per_sensor = own[1].per_sensor = true;
+  CHECK(select::rig_cost(load, own, cpus).feasible);
+  CHECK(select::total_cost(load, own, cpus) == 1000.0 + 60.0 + 200.0);
+  load.per_sensor_transfer = std::numeric_limits<double>::infinity();  // a sensor no cable carries
+  CHECK_FALSE(select::rig_cost(load, own, cpus).feasible);
 }
 
 namespace {
@@ -194,6 +229,27 @@ TEST_CASE("branch and bound finds the brute-force optimum with transfer kinds (e
                         component("cable_fast", 4e9, 30 * unit(rng), "cable"),
                         component("switch_slow", 3e8 + 6e8 * unit(rng), 20, "switch"),
                         component("switch_fast", 4e9, 20 + 150 * unit(rng), "switch")};
+    feasible += agrees_with_brute_force(problem) ? 1 : 0;
+  }
+  CHECK(feasible >= 30);
+}
+
+TEST_CASE("branch and bound finds the brute-force optimum with per-sensor transfer (eq. 4)") {
+  std::mt19937 rng(20261207);  // seeded before the first run: the same catalogs every run
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int feasible = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    INFO("trial " << trial);
+    select::SearchProblem problem = random_problem(rng);
+    problem.transfer = {component("port_slow", 2e8 + 6e8 * unit(rng), 5 * unit(rng), "port"),
+                        component("port_fast", 6e8 + 6e8 * unit(rng), 40 * unit(rng), "port"),
+                        component("switch", 4e9, 20 + 100 * unit(rng), "switch")};
+    problem.transfer[0].per_sensor = problem.transfer[1].per_sensor = true;
+    // Some options send more than either port carries: they can never be bought.
+    for (std::vector<select::SearchOption>& slot : problem.slots)
+      for (select::SearchOption& option : slot)
+        option.transfer_price =
+            select::per_sensor_transfer_price(problem.transfer, option.bandwidth);
     feasible += agrees_with_brute_force(problem) ? 1 : 0;
   }
   CHECK(feasible >= 30);

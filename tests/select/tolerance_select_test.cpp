@@ -119,3 +119,31 @@ TEST_CASE("catalog transfer grouped by kind (eq. 4) is read kind by kind, in ord
       "  cable: 5\n");
   CHECK_THROWS_AS(io::load_catalog(folder.write("bad.yaml", bad)), model::InputError);
 }
+
+TEST_CASE("catalog transfer: a kind bought per sensor is read with its flag, a bad flag refused",
+          "[select][io]") {
+  test::TempFolder folder;
+  folder.write("sensors.yaml", library_with_wide());
+  std::string text = kToleranceCatalog;
+  const std::string flat = "transfer:\n  - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}\n";
+  text.replace(text.find(flat), flat.size(),
+               "transfer:\n  cable: {per_sensor: true, components: [\n"
+               "    {id: usb3_cable, capacity_bps: 5.0e9, price_usd: 12}]}\n"
+               "  interface:\n    - {id: onboard, capacity_bps: 3.0e9, price_usd: 0}\n");
+  const model::Catalog catalog = io::load_catalog(folder.write("per_sensor.yaml", text));
+  REQUIRE(catalog.transfer.size() == 2);
+  CHECK(catalog.transfer[0].id == "usb3_cable");
+  CHECK(catalog.transfer[0].per_sensor);
+  CHECK(catalog.transfer[0].kind == "cable");
+  CHECK_FALSE(catalog.transfer[1].per_sensor);
+  // per_sensor must be true or false, and the components a non-empty list.
+  std::string bad = text;
+  bad.replace(bad.find("per_sensor: true"), std::string("per_sensor: true").size(),
+              "per_sensor: often");
+  try {
+    io::load_catalog(folder.write("bad_flag.yaml", bad));
+    FAIL("a per_sensor that is no boolean was accepted");
+  } catch (const model::InputError& error) {
+    CHECK_THAT(error.what(), Catch::Contains("bad_flag.yaml:") && Catch::Contains("per_sensor"));
+  }
+}

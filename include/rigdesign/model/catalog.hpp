@@ -71,7 +71,9 @@ struct MountingSlot {
 
 /// A transfer component or CPU: of each kind, the cheapest one whose capacity exceeds the
 /// rig's load is bought (paper 1, eqs. 3, 4 and 6): a CPU, and per transfer kind (cable,
-/// switch, interface ...) one component, the transfer cost being their sum.
+/// switch, interface ...) one component, the transfer cost being their sum. A kind bought per
+/// sensor (a cable, a port: `per_sensor: true`) is bought once for every sensor, each the
+/// cheapest component that carries that sensor's own bandwidth.
 struct PricedCapacity {
   std::string id;
   double capacity = 0.0;  ///< transfer: [bit/s]; CPU: [core-equivalents]
@@ -80,6 +82,8 @@ struct PricedCapacity {
   /// The component kind (`transfer:` grouped by kind); empty: the one kind of a flat list.
   /// Items of one kind are contiguous.
   std::string kind;
+  /// One per sensor, carrying that sensor's bandwidth alone (every item of the kind agrees).
+  bool per_sensor = false;
 };
 
 /// The robot (as a rig describes it, so that the chosen rig stands on the same robot) and

@@ -37,6 +37,9 @@ struct SearchOption {
   /// The sensor's housing at the option's pose (issue 52 item 2); null: none. Two options
   /// whose housings overlap (geometry::kHousingTouch) are never chosen together.
   std::shared_ptr<const geometry::ConvexSolid> housing;
+  /// [USD] the per-sensor transfer components (a cable, a port) this option's bandwidth needs
+  /// (select::per_sensor_transfer_price); +infinity when the catalog has none that carries it.
+  double transfer_price = 0.0;
 };
 
 /// Whether two options' housings cut into each other.

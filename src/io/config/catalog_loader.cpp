@@ -47,8 +47,37 @@ model::PricedCapacity read_priced(MapReader& reader, const std::string& capacity
   return item;
 }
 
+/// The components of one transfer kind: a list (one bought for the rig), or a map
+/// `{per_sensor: true, components: [...]}` for a kind every sensor needs its own of (eq. 4's
+/// cables and ports: one per sensor, each carrying that sensor's bandwidth).
+void read_transfer_kind(MapReader& kinds, const std::string& kind, const YAML::Node& value,
+                        model::Catalog& catalog) {
+  const std::string list_expected = "a list of " + kind + " components";
+  std::vector<MapReader> items;
+  bool per_sensor = false;
+  if (value.IsMap()) {
+    auto form = kinds.map(kind, Need::required,
+                          "{per_sensor: true or false, components: " + list_expected + "}");
+    if (!form) return;
+    per_sensor = form->boolean("per_sensor", Need::required).value_or(false);
+    items = form->maps("components", Need::required, list_expected);
+    form->require(!items.empty(), "components", "is empty", "at least one component of the kind");
+    form->reject_unknown_keys();
+  } else {
+    items = kinds.maps(kind, Need::required, list_expected);
+    kinds.require(!items.empty(), kind, "is empty", "at least one component of the kind");
+  }
+  for (MapReader reader : items) {
+    model::PricedCapacity item = read_priced(reader, "capacity_bps", "bits per second, > 0");
+    item.kind = kind;
+    item.per_sensor = per_sensor;
+    catalog.transfer.push_back(std::move(item));
+  }
+}
+
 /// `transfer:` as paper 1's eq. 4 has it, a map of component kinds (cable, switch, interface
-/// ...) each with its items, one of each bought; or a flat list, read as one kind.
+/// ...) each with its items, one of each bought (or one per sensor); or a flat list, read as
+/// one kind.
 void read_transfer(MapReader& top, model::Catalog& catalog) {
   const std::string expected =
       "a list of transfer hardware, or a map from component kind (cable, switch, interface) "
@@ -57,17 +86,8 @@ void read_transfer(MapReader& top, model::Catalog& catalog) {
   if (node.IsMap()) {
     auto kinds = top.map("transfer", Need::required, expected);
     if (!kinds) return;
-    for (const auto& entry : node) {
-      const std::string kind = entry.first.Scalar();
-      const std::vector<MapReader> items =
-          kinds->maps(kind, Need::required, "a list of " + kind + " components");
-      kinds->require(!items.empty(), kind, "is empty", "at least one component of the kind");
-      for (MapReader reader : items) {
-        model::PricedCapacity item = read_priced(reader, "capacity_bps", "bits per second, > 0");
-        item.kind = kind;
-        catalog.transfer.push_back(std::move(item));
-      }
-    }
+    for (const auto& entry : node)
+      read_transfer_kind(*kinds, entry.first.Scalar(), entry.second, catalog);
     return;
   }
   for (MapReader& reader : top.maps("transfer", Need::required, expected))
