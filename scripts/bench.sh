@@ -24,7 +24,9 @@ only="${1:-}"
 "$root/scripts/setup.sh" >&2
 if [ -z "$only" ] || [ "$only" = "filters" ]; then "$root/scripts/install-pcl.sh" >&2; fi
 build="$root/build/bench"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRIGDESIGN_BUILD_TESTS=OFF \
+. "$root/scripts/ninja_build_dir.sh"
+ninja_build_dir "$build"
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIGDESIGN_BUILD_TESTS=OFF \
   -DRIGDESIGN_BUILD_BENCHMARKS=ON -DRIGDESIGN_UNITY_BUILD=ON >/dev/null
 cmake --build "$build" -j"$(nproc)" >/dev/null
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)," \

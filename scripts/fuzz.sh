@@ -75,7 +75,9 @@ dictionary_of() {
 
 build_fuzzers() {
   "$root/scripts/setup.sh" >&2
-  cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang \
+  . "$root/scripts/ninja_build_dir.sh"
+  ninja_build_dir "$build"
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
     -DRIGDESIGN_FUZZ=ON -DRIGDESIGN_BUILD_TESTS=OFF -DRIGDESIGN_WERROR=ON \
     -DRIGDESIGN_UNITY_BUILD=ON >/dev/null

@@ -5,7 +5,10 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh" >&2
-cmake -S "$root" -B "$root/build/release" -DCMAKE_BUILD_TYPE=Release -DRIGDESIGN_BUILD_TESTS=OFF >/dev/null
+. "$root/scripts/ninja_build_dir.sh"
+ninja_build_dir "$root/build/release"
+cmake -S "$root" -B "$root/build/release" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DRIGDESIGN_BUILD_TESTS=OFF >/dev/null
 cmake --build "$root/build/release" --target rigdesign -j"$(nproc)" >/dev/null
 cd "$root"
 rm -rf renders/selection

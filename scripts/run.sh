@@ -8,7 +8,9 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh" >&2
 # Unity build, as CI's: the translation units CI compiles are the ones built here (a file
 # missing an include once built in CI's unity groups and failed here), and it builds faster.
-cmake -S "$root" -B "$root/build/release" -DCMAKE_BUILD_TYPE=Release \
+. "$root/scripts/ninja_build_dir.sh"
+ninja_build_dir "$root/build/release"
+cmake -S "$root" -B "$root/build/release" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DRIGDESIGN_BUILD_TESTS=OFF -DRIGDESIGN_UNITY_BUILD=ON >/dev/null
 cmake --build "$root/build/release" --target rigdesign -j"$(nproc)" >/dev/null
 cd "$root"

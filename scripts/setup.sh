@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git   # compiler and build
+  ninja-build                            # builds every module's objects at once (CI time)
   libeigen3-dev                          # linear algebra, poses
   libyaml-cpp-dev                        # sensors.yaml, rigs, requirements (with line/column marks)
   nlohmann-json3-dev                     # --json and --format json reports
