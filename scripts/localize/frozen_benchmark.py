@@ -16,7 +16,9 @@ null).  A missing emitter or a null error counts as "no solution", separately fr
 
 --calibrated-wls adds paper 4's WLS at its best, "wls_cal": the level and exponent calibrated
 on the log itself with its truth (`localize --calibrate`, wall map included), then
-`--method wls --rssi-at-1m A --exponent N` (N clamped to the tool's [0.5, 10]). Calibrating on
+`--method wls --rssi-at-1m A --exponent N`. An unusable fit (an exponent outside the tool's
+[0.5, 10], a singular or degenerate fit) makes `--calibrate` exit 2: that log is recorded as
+"calibration refused" and counts as unsolved for wls_cal. Calibrating on
 the very log it then solves is an oracle no field team has; it bounds the paper's method from
 above rather than reproducing the thesis's per-environment calibration.
 
@@ -117,16 +119,20 @@ def run_calibrated_wls(binary, directory, stem, walls):
         common += ["--walls", base + "_walls.csv"]
     proc = subprocess.run([binary, "localize", "--calibrate"] + common,
                           capture_output=True, text=True)
+    unsolved = {"error": None, "nearest": None, "in_region": None}
     if proc.returncode == 2:  # a singular or unusable fit (an exponent outside [0.5, 10])
-        return None, ["calibration refused: " + proc.stderr.strip().splitlines()[0]]
+        return dict(unsolved, refused=True), [
+            "calibration refused: " + proc.stderr.strip().splitlines()[0]]
     if proc.returncode != 0:
-        return None, [f"calibration exit {proc.returncode}"]
+        return unsolved, [f"calibration exit {proc.returncode}"]
     fit = json.loads(proc.stdout)["calibrations"][0]
     level, exponent = fit["rssi_at_1m_dbm"], fit["exponent"]
     notes = []
     proc = subprocess.run([binary, "localize", "--method", "wls", "--rssi-at-1m", f"{level:.4f}",
                            "--exponent", f"{exponent:.4f}"] + common,
                           capture_output=True, text=True)
+    if proc.returncode != 0:  # e.g. a binary older than the refusal of unusable fits
+        return unsolved, [f"calibrated wls exit {proc.returncode}: {proc.stderr.strip()[:200]}"]
     emitters = [e for log in json.loads(proc.stdout).get("logs", []) for e in log["emitters"]]
     k = (emitters[0].get("kpis") or {}) if emitters else {}
     return {"error": k.get("error_m"), "nearest": k.get("nearest_hypothesis_error_m"),
@@ -147,6 +153,7 @@ def summarise(rows):
            if r.get(CALIBRATED, {}).get("error") is not None]
     if cal or any(CALIBRATED in r for r in rows):
         out[CALIBRATED] = {"solved": len(cal), "unsolved": len(rows) - len(cal),
+                           "refused": sum(1 for r in rows if r.get(CALIBRATED, {}).get("refused")),
                            "mean_m": statistics.mean(cal) if cal else None,
                            "median_m": statistics.median(cal) if cal else None}
         paired = [r for r in rows if r.get(CALIBRATED, {}).get("error") is not None
@@ -223,11 +230,11 @@ def main(argv):
           f" nls/wls = ratio of means over logs both solved")
     print_table(groups)
     if o["calibrated"]:
-        print(f"\n{'class':<14} | wls_cal mean  median unsol | nls/wls_cal")
+        print(f"\n{'class':<14} | wls_cal mean  median unsol refused | nls/wls_cal")
         for name, g in groups:
             c = g[CALIBRATED]
             print(f"{name:<14} | {fmt(c['mean_m'], '12.2f')}{fmt(c['median_m'], '8.2f')}"
-                  f"{c['unsolved']:>6} | {fmt(g['nls_wls_cal_ratio'], '11.2f')}")
+                  f"{c['unsolved']:>6}{c['refused']:>8} | {fmt(g['nls_wls_cal_ratio'], '11.2f')}")
     elapsed = time.monotonic() - t0
     print(f"\n{len(oddities)} notes" + (":" if oddities else ""))
     for n in oddities:

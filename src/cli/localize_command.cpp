@@ -201,6 +201,16 @@ int run_table(const report::LocalizeOptions& options, std::ostream& out, std::os
 
 int run_resolved(const report::LocalizeOptions& options, std::ostream& out, std::ostream& err);
 
+// --wls-weighting: rows (default: eq. 12 read as weighted least squares), residuals (before
+// issue 33) or paper (eq. 12 as printed, w on the right-hand side only).
+localize::WlsWeighting wls_weighting_of(const std::string& name) {
+  require_option(name.empty() || name == "rows" || name == "residuals" || name == "paper",
+                 "--wls-weighting", "is '" + name + "'", "paper, rows or residuals");
+  if (name == "residuals") return localize::WlsWeighting::squared_residuals;
+  if (name == "paper") return localize::WlsWeighting::paper;
+  return localize::WlsWeighting::rows;
+}
+
 int run_localize(const report::LocalizeOptions& options, std::ostream& out, std::ostream& err) {
   require_option(options.logs.empty() != options.scenario.empty(), "--log",
                  "give either --log FILE... or --scenario NAME",
@@ -221,12 +231,7 @@ int run_localize(const report::LocalizeOptions& options, std::ostream& out, std:
   if (!options.walls.empty()) resolved.params.walls = io::read_walls_csv(options.walls);
   // The range fit lists first the hypothesis most likely within the acceptable error.
   resolved.params.fit.decision_radius = options.kpi.acceptable_error;
-  require_option(options.wls_weighting.empty() || options.wls_weighting == "rows" ||
-                     options.wls_weighting == "residuals",
-                 "--wls-weighting", "is '" + options.wls_weighting + "'", "rows or residuals");
-  resolved.params.chunking.weighting = options.wls_weighting == "residuals"
-                                           ? localize::WlsWeighting::squared_residuals
-                                           : localize::WlsWeighting::rows;
+  resolved.params.chunking.weighting = wls_weighting_of(options.wls_weighting);
   if (!options.environment.empty()) {
     const localize::EnvironmentPreset* preset =
         localize::find_environment_preset(options.environment);
@@ -280,17 +285,22 @@ void add_range_fit_options(CLI::App* app, report::LocalizeOptions& options) {
                               ->check(finite_in(0.5, 10, "an exponent in [0.5, 10]"))
                               ->each(given);
   app->add_option("--environment", options.environment,
-                  "The exponent of a kind of environment (Rappaport's Table 4.2): free-space, "
-                  "building-line-of-sight, building-obstructed, factory-obstructed, ...")
+                  "The exponent of a kind of environment (paper 4, Table 4, its reference [49]; "
+                  "midpoints of ranges): free-space, urban-area, indoor-los, indoor-general, "
+                  "indoor-factories, indoor-through-floor, underground-station (the thesis's "
+                  "2.2-3 at 2.4 GHz)")
       ->excludes(exponent);
   app->add_flag("--calibrate", options.calibrate,
                 "Fit the level at 1 m and the exponent to the logs' readings of the emitters "
                 "--truth places (censored maximum likelihood), and print them");
   app->add_option("--wls-weighting", options.wls_weighting,
-                  "wls: paper 4's chunk weight sqrt(c)/r scales each equation (rows, default) "
-                  "or, as before issue 33, its squared residual (residuals)");
+                  "wls: paper 4's chunk weight sqrt(c)/r scales both sides of each equation "
+                  "(rows, default: eq. 12 as weighted least squares), only its right-hand side "
+                  "(paper: eq. 12 as printed, diag(w) a = B q) or, as before issue 33, its "
+                  "squared residual (residuals)");
   app->add_option("--cutoff", options.params.path_loss.cutoff_dbm,
-                  "Drop readings below this [dBm] (default -80)")
+                  "wls, map: readings at or below this are dropped [dBm] (default -80: paper 4 "
+                  "drops -80 dBm or worse)")
       ->check(finite_in(-150, 0, "a level in [-150, 0] dBm"));
   app->add_option("--level-prior", options.params.fit.level_prior_db,
                   "nls: prior sd of the 1 m level about --rssi-at-1m [dB]")
@@ -370,6 +380,14 @@ void add_kpi_scenario_and_gas_options(CLI::App* app, report::LocalizeOptions& op
   app->add_option("--mad-factor", options.gas.mad_factor,
                   "k of the relative CO2 threshold median + k MAD (default 6)")
       ->check(positive_up_to(1000.0, "a factor in (0, 1000]"));
+  app->add_option("--moving-average", options.gas.moving_average,
+                  "CO2: average this many readings (trailing) before the threshold (default 1: "
+                  "paper 4's ground robot detects on single readings; its 5-sample average is "
+                  "for the UAVs, not its ground-robot method)")
+      ->check(finite_in(1, 1000, "1 to 1000 readings"));
+  app->add_flag("--refine-strongest", options.gas.refine_strongest,
+                "CO2: report the strongest reading in a detection's 5 m area instead of the "
+                "first over the threshold (the thesis's future work, not its method)");
 }
 
 }  // namespace

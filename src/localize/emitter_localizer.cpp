@@ -110,7 +110,7 @@ EmitterEstimate localize_emitter(const RssiLog& log, int emitter, LocalizeMethod
   for (const RssiReading& reading : log.readings) {
     if (reading.emitter != emitter) continue;
     ++estimate.readings;
-    if (reading.heard && reading.rssi_dbm >= params.path_loss.cutoff_dbm) ++estimate.used;
+    if (reading.heard && passes_cutoff(reading.rssi_dbm, params.path_loss)) ++estimate.used;
   }
   return estimate;
 }

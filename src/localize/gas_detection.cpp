@@ -78,7 +78,8 @@ std::vector<GasDetection> detect_gas(const Co2Log& log, GasThreshold threshold,
     sum += log.readings[i].ppm;
     if (i >= width) sum -= log.readings[i - width].ppm;
     if (i + 1 < width) continue;  // the moving average needs its window full
-    const double average = sum / static_cast<double>(width);
+    // A single reading is taken as logged (the running sum could differ from it by rounding).
+    const double average = width == 1 ? log.readings[i].ppm : sum / static_cast<double>(width);
     const model::Vec3& here = log.readings[i].position;
     if (active) {
       if (horizontal(here, log.readings[current.trigger_index].position) <= params.spacing) {
@@ -93,7 +94,7 @@ std::vector<GasDetection> detect_gas(const Co2Log& log, GasThreshold threshold,
     }
     const double limit = threshold == GasThreshold::fixed ? params.fixed_threshold_ppm
                                                           : relative_threshold(log, i, params);
-    if (average < limit) continue;
+    if (!(average > limit)) continue;  // "over" the threshold, as the thesis says
     const bool near_earlier = std::any_of(
         detections.begin(), detections.end(),
         [&](const GasDetection& d) { return horizontal(here, d.position) < params.spacing; });

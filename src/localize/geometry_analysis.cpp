@@ -60,7 +60,7 @@ GeometryAnalysis analyse_geometry(const std::vector<Chunk>& chunks, const Geomet
   analysis.chunks = static_cast<int>(chunks.size());
   double total = 0.0;
   for (const Chunk& chunk : chunks) {
-    analysis.centroid += chunk.position_sum;
+    analysis.centroid += chunk.count * chunk.position();
     total += chunk.count;
   }
   if (total <= 0) return analysis;

@@ -41,7 +41,7 @@ std::vector<std::pair<int, double>> running_errors(const RssiLog& log, int emitt
     const RssiReading& reading = log.readings[line];
     if (reading.emitter != emitter) continue;
     ++count;
-    if (reading.heard && reading.rssi_dbm >= params.path_loss.cutoff_dbm) {
+    if (reading.heard && passes_cutoff(reading.rssi_dbm, params.path_loss)) {
       accumulator.add(reading.position, range_from_rssi(reading.rssi_dbm, params.path_loss),
                       reading.rssi_dbm);
     }

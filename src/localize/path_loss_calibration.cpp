@@ -182,16 +182,19 @@ std::string calibration_problem(const PathLossCalibration& fit) {
 }
 
 const std::vector<EnvironmentPreset>& environment_presets() {
-  // T. S. Rappaport, Wireless Communications: Principles and Practice, 2nd ed. (2002),
-  // Table 4.2 "Path Loss Exponents for Different Environments".
+  // Paper 4 (Roucek 2020), Table 4 "Path loss exponent (propagation constant) examples", its
+  // reference [49], as DESIGN.md section 9 transcribes it; the midpoint where it gives a range.
+  // The last row is the thesis's text beside the table, not a row of it.
   static const std::vector<EnvironmentPreset> presets = {
-      {"free-space", 2.0, "Rappaport Table 4.2: free space, 2"},
-      {"building-line-of-sight", 1.7, "Rappaport Table 4.2: in building line-of-sight, 1.6 to 1.8"},
-      {"building-obstructed", 5.0, "Rappaport Table 4.2: obstructed in building, 4 to 6"},
-      {"factory-obstructed", 2.5, "Rappaport Table 4.2: obstructed in factories, 2 to 3"},
-      {"urban-cellular", 3.1, "Rappaport Table 4.2: urban area cellular radio, 2.7 to 3.5"},
-      {"shadowed-urban-cellular", 4.0,
-       "Rappaport Table 4.2: shadowed urban cellular radio, 3 to 5"},
+      {"free-space", 2.0, "paper 4, Table 4 (its reference [49]): Free Space, 2"},
+      {"urban-area", 3.35, "paper 4, Table 4 (its reference [49]): Urban Area, 2.7 to 4"},
+      {"indoor-los", 1.7, "paper 4, Table 4 (its reference [49]): Indoor LOS, 1.6 to 1.8"},
+      {"indoor-general", 5.0, "paper 4, Table 4 (its reference [49]): Indoor general, 4 to 6"},
+      {"indoor-factories", 2.5, "paper 4, Table 4 (its reference [49]): Indoor factories, 2 to 3"},
+      {"indoor-through-floor", 4.5,
+       "paper 4, Table 4 (its reference [49]): Indoor through floor, 3 to 6"},
+      {"underground-station", 2.6,
+       "paper 4, beside Table 4: underground stations, 2.2 to 3 at 2.4 GHz"},
   };
   return presets;
 }

@@ -140,6 +140,10 @@ json to_json(const GasReport& report) {
           {"readings", report.readings},
           {"timed", report.timed},
           {"lag_s", report.lag_s},
+          {"detection",
+           {{"moving_average", report.moving_average},
+            {"refine_strongest", report.refine_strongest},
+            {"rule", gas_detection_rule(report)}}},
           {"modes", modes}};
 }
 

@@ -28,11 +28,29 @@ EmitterReport locate_emitter(const localize::RssiLog& log, int emitter,
   return report;
 }
 
+std::string gas_detection_rule(const GasReport& report) {
+  const bool thesis = report.moving_average <= 1 && !report.refine_strongest;
+  std::string rule = report.moving_average <= 1
+                         ? "first reading over the threshold"
+                         : "first moving average of " + std::to_string(report.moving_average) +
+                               " readings over the threshold";
+  rule += ", one detection per 5 m";
+  if (report.refine_strongest)
+    rule += ", moved to the strongest in its area (the thesis's future work)";
+  if (report.moving_average > 1) rule += "; the moving average is paper 4's for its UAVs";
+  return rule + (thesis ? " (paper 4's ground robot)" : " (not the thesis's ground-robot method)");
+}
+
 GasReport detect_gas_sources(const localize::Co2Log& log,
                              const std::vector<localize::Artifact>& artifacts,
                              const localize::GasDetectionParams& params) {
-  GasReport report{
-      log.source, log.readings.size(), log.timed, localize::detection_lag(log, params), {}};
+  GasReport report{log.source,
+                   log.readings.size(),
+                   log.timed,
+                   localize::detection_lag(log, params),
+                   {},
+                   params.moving_average,
+                   params.refine_strongest};
   for (const localize::GasThreshold mode :
        {localize::GasThreshold::fixed, localize::GasThreshold::relative}) {
     GasModeReport item;

@@ -20,6 +20,21 @@ std::string side_name(int side) {
   return side > 0 ? "left of the path" : side < 0 ? "right of the path" : "on the path";
 }
 
+// How wls applied paper 4's chunk weight (--wls-weighting).
+const char* weighting_note(localize::WlsWeighting weighting) {
+  switch (weighting) {
+    case localize::WlsWeighting::rows:
+      return "; chunk weight sqrt(c)/r on both sides of each equation (eq. 12 as weighted least "
+             "squares)";
+    case localize::WlsWeighting::squared_residuals:
+      return "; chunk weight sqrt(c)/r on each squared residual (--wls-weighting residuals)";
+    case localize::WlsWeighting::paper:
+      return "; chunk weight sqrt(c)/r on the right-hand side only (eq. 12 as printed, "
+             "--wls-weighting paper)";
+  }
+  return "";
+}
+
 void print_emitter_head(const EmitterReport& report, const LocalizeOptions& options,
                         std::ostream& out) {
   const localize::EmitterEstimate& estimate = report.estimate;
@@ -29,7 +44,7 @@ void print_emitter_head(const EmitterReport& report, const LocalizeOptions& opti
   if (report.method == localize::LocalizeMethod::nls) {
     out << " (every scan, heard or not)\n";
   } else {
-    out << ", " << estimate.used << " heard at or above "
+    out << ", " << estimate.used << " heard above "
         << model::format_number(options.params.path_loss.cutoff_dbm) << " dBm (paper 4's cut-off), "
         << estimate.chunks.size() << " chunks\n";
     // Paper 4 calibrated level and exponent per environment: say where these came from.
@@ -42,10 +57,7 @@ void print_emitter_head(const EmitterReport& report, const LocalizeOptions& opti
                 : std::string("assumed, not calibrated (--calibrate on a log of a phone at "
                               "a known place, or --environment NAME)"))
         << (report.method == localize::LocalizeMethod::wls
-                ? options.params.chunking.weighting == localize::WlsWeighting::rows
-                      ? "; chunk weight sqrt(c)/r on each equation (eq. 12)"
-                      : "; chunk weight sqrt(c)/r on each squared residual (--wls-weighting "
-                        "residuals)"
+                ? weighting_note(options.params.chunking.weighting)
                 : "")
         << '\n';
   }
@@ -190,6 +202,7 @@ void print_gas(const GasReport& report, const LocalizeOptions& options, std::ost
                        : " (untimed: " + model::format_number(options.gas.sample_period) +
                              " s per reading assumed)")
       << ", lag correction " << fixed(report.lag_s, 1) << " s\n";
+  out << "  detection: " << gas_detection_rule(report) << '\n';
   for (const GasModeReport& mode : report.modes) {
     out << "  threshold " << threshold_name(mode.mode, options.gas) << ": "
         << mode.detections.size() << " detection(s)\n";

@@ -208,27 +208,68 @@ TEST_CASE("localize --calibrate fits the level and exponent of a log whose phone
   CHECK(result.err.find("--calibrate: needs the emitters' positions") != std::string::npos);
 }
 
-TEST_CASE("localize --environment sets Rappaport's exponent, bad names and weightings exit 2",
+TEST_CASE("localize --environment sets paper 4's Table 4 exponent, bad names and weightings exit 2",
           "[localize]") {
   TempFolder folder;
   REQUIRE(run_cli({"localize", "--scenario", "corner", "--seed", "1", "--out", folder.path()})
               .exit_code == 0);
   const std::string log = folder.path() + "/corner_seed1_rssi.csv";
-  CliResult result = run_cli({"localize", "--log", log, "--method", "wls", "--environment",
-                              "building-obstructed", "--json"});
+  CliResult result = run_cli(
+      {"localize", "--log", log, "--method", "wls", "--environment", "indoor-general", "--json"});
   INFO(result.out << result.err);
   REQUIRE(result.exit_code == 0);
-  // Table 4.2's "obstructed in building, 4 to 6": 5.
+  // Paper 4's Table 4, "Indoor general, 4 to 6": 5.
   CHECK(nlohmann::json::parse(result.out)["logs"][0]["emitters"][0]["hypotheses"][0]["exponent"]
             .get<double>() == 5.0);
+  // Its "Indoor through floor, 3 to 6": 4.5.
+  result = run_cli({"localize", "--log", log, "--method", "wls", "--environment",
+                    "indoor-through-floor", "--json"});
+  REQUIRE(result.exit_code == 0);
+  CHECK(nlohmann::json::parse(result.out)["logs"][0]["emitters"][0]["hypotheses"][0]["exponent"]
+            .get<double>() == 4.5);
+  // Eq. 12 as printed is an option and the report says which weighting ran.
+  result = run_cli({"localize", "--log", log, "--method", "wls", "--wls-weighting", "paper"});
+  REQUIRE(result.exit_code == 0);
+  CHECK(result.out.find("right-hand side only (eq. 12 as printed") != std::string::npos);
+  result = run_cli({"localize", "--log", log, "--method", "wls"});
+  CHECK(result.out.find("on both sides of each equation (eq. 12 as weighted least squares)") !=
+        std::string::npos);
   result = run_cli({"localize", "--log", log, "--environment", "attic"});
   CHECK(result.exit_code == 2);
   CHECK(result.err.find("--environment: is 'attic' (expected one of free-space") !=
         std::string::npos);
   result = run_cli({"localize", "--log", log, "--wls-weighting", "squares"});
   CHECK(result.exit_code == 2);
-  CHECK(result.err.find("--wls-weighting: is 'squares' (expected rows or residuals)") !=
+  CHECK(result.err.find("--wls-weighting: is 'squares' (expected paper, rows or residuals)") !=
         std::string::npos);
   CHECK(run_cli({"localize", "--log", log, "--environment", "free-space", "--exponent", "2"})
             .exit_code == 2);
+}
+
+TEST_CASE("localize on a CO2 log detects as paper 4's ground robot unless told otherwise",
+          "[localize]") {
+  // 1 reading a second and a metre along x; 2500 ppm at x = 10..12 over 450 ppm.
+  TempFolder folder;
+  std::string text = "t,x,y,z,co2_ppm\n";
+  for (int i = 0; i < 30; ++i) {
+    text += std::to_string(i) + "," + std::to_string(i) + ",0,0.3," +
+            (i >= 10 && i <= 12 ? "2500" : "450") + "\n";
+  }
+  const std::string log = folder.write("co2.csv", text);
+  CliResult result = run_cli({"localize", "--log", log});
+  INFO(result.out << result.err);
+  REQUIRE(result.exit_code == 0);
+  CHECK(result.out.find("detection: first reading over the threshold, one detection per 5 m "
+                        "(paper 4's ground robot)") != std::string::npos);
+  CHECK(result.out.find("reading 10 at (10.00, 0.00): 2500 ppm (threshold 1800)") !=
+        std::string::npos);
+  result =
+      run_cli({"localize", "--log", log, "--moving-average", "5", "--refine-strongest", "--json"});
+  REQUIRE(result.exit_code == 0);
+  const nlohmann::json detection = nlohmann::json::parse(result.out)["logs"][0]["detection"];
+  CHECK(detection["moving_average"] == 5);
+  CHECK(detection["refine_strongest"] == true);
+  const std::string rule = detection["rule"].get<std::string>();
+  CHECK(rule.find("the thesis's future work") != std::string::npos);
+  CHECK(rule.find("(not the thesis's ground-robot method)") != std::string::npos);
 }

@@ -32,13 +32,34 @@ std::string subt(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("CO2: moving average of 5 against 1800 ppm, refined to the strongest reading in the area",
+TEST_CASE("CO2 as paper 4's ground robot: the first reading over 1800 ppm, one per 5 m",
           "[localize]") {
-  // Plumes of 3000 ppm at x = 10..16 and 30..36 over 400 ppm. The average of 5 first reaches
-  // 1800 at x = 12 ((2 x 400 + 3 x 3000) / 5 = 1960) and 3000 at x = 14.
+  // Plumes of 3000 ppm at x = 10..16 and 30..36 over 400 ppm. The first reading over 1800 is
+  // x = 10; readings within 5 m of it (x <= 15) belong to it; x = 16 lies 6 m from it and is
+  // over the threshold again: a second detection. Likewise x = 30 and 36.
+  const localize::Co2Log log = straight_log(
+      50, [](int i) { return (i >= 10 && i <= 16) || (i >= 30 && i <= 36) ? 3000.0 : 400.0; });
+  const auto detections = localize::detect_gas(log, localize::GasThreshold::fixed);
+  CHECK(xs(detections) == std::vector<double>{10, 16, 30, 36});
+  CHECK(detections[0].trigger_index == 10);
+  CHECK(detections[0].ppm == 3000);
+  // "Over" the threshold: a reading of exactly 1800 ppm is not a detection, 1801 is.
+  const localize::Co2Log edge = straight_log(20, [](int i) {
+    return i == 5 ? 1800.0 : i == 12 ? 1801.0 : 400.0;
+  });
+  CHECK(xs(localize::detect_gas(edge, localize::GasThreshold::fixed)) == std::vector<double>{12});
+}
+
+TEST_CASE("CO2 options that are not the thesis's ground-robot method: average of 5, strongest",
+          "[localize]") {
+  // The same plumes. The average of 5 (the thesis's UAVs) first reaches 1800 at x = 12
+  // ((2 x 400 + 3 x 3000) / 5 = 1960) and 3000 at x = 14; the strongest reading in the area
+  // (the thesis's future work) moves the detection there.
   const localize::Co2Log log = straight_log(
       50, [](int i) { return (i >= 10 && i <= 16) || (i >= 30 && i <= 36) ? 3000.0 : 400.0; });
   localize::GasDetectionParams params;
+  params.moving_average = 5;
+  params.refine_strongest = true;
   const auto refined = localize::detect_gas(log, localize::GasThreshold::fixed, params);
   CHECK(xs(refined) == std::vector<double>{14, 34});
   CHECK(refined[0].trigger_index == 12);
@@ -51,12 +72,12 @@ TEST_CASE("CO2: moving average of 5 against 1800 ppm, refined to the strongest r
 }
 
 TEST_CASE("CO2: one detection per 5 m along a long plume", "[localize]") {
-  // 3000 ppm from x = 10 to 30: the first detection is refined to x = 14 (average 3000); the
-  // next may not lie within 5 m of it (x = 19), then each leaves the 5 m area of its trigger.
+  // 3000 ppm from x = 10 to 30: detections at the first reading over 1800 (x = 10), then at
+  // the first reading more than 5 m from the running detection's trigger: 16, 22 and 28.
   const localize::Co2Log log =
       straight_log(45, [](int i) { return i >= 10 && i <= 30 ? 3000.0 : 400.0; });
   const auto detections = localize::detect_gas(log, localize::GasThreshold::fixed);
-  CHECK(xs(detections) == std::vector<double>{14, 19, 25, 31});
+  CHECK(xs(detections) == std::vector<double>{10, 16, 22, 28});
   for (std::size_t i = 1; i < detections.size(); ++i) {
     CHECK(detections[i].position.x() - detections[i - 1].position.x() >= 5.0);
   }
@@ -72,20 +93,22 @@ TEST_CASE(
   localize::GasDetectionParams params;
   const auto detections = localize::detect_gas(log, localize::GasThreshold::relative, params);
   REQUIRE(detections.size() == 1);
-  // Median 490, MAD 1 ppm: threshold 490 + max(6 x 1.4826, 50) = 540. The average passes it
-  // with two plume readings in (x = 41: (3 x ~490 + 2 x 700) / 5 = 574; one gives 532) and
-  // is strongest (700) at x = 44; the tail (x = 47, 616 ppm) lies within 5 m of it.
-  CHECK(detections[0].trigger_index == 41);
-  CHECK(detections[0].position.x() == 44);
+  // Readings 0-39: 14 of 489, 13 of 490, 13 of 491: median 490, MAD 1 ppm, threshold
+  // 490 + max(6 x 1.4826, 50) = 540. The first reading over it is the plume's first, x = 40.
+  CHECK(detections[0].trigger_index == 40);
+  CHECK(detections[0].position.x() == 40);
   CHECK(detections[0].threshold_ppm == Approx(540));
-  // Lag: the SCD30's 20 s time constant + 2 readings of the trailing average at 1 s each =
-  // 22 s = 22 m back at 1 m per reading; with an assumed 5 s sensor, 7 s = 7 m.
-  CHECK(localize::detection_lag(log, params) == Approx(22.0));
-  CHECK(detections[0].lag_corrected.x() == Approx(44.0 - 22.0));
+  // Lag: the SCD30's 20 s time constant, no average: 20 s = 20 m back at 1 m per reading;
+  // with an assumed 5 s sensor, 5 m.
+  CHECK(localize::detection_lag(log, params) == Approx(20.0));
+  CHECK(detections[0].lag_corrected.x() == Approx(40.0 - 20.0));
   params.time_constant = 5.0;
-  CHECK(localize::detection_lag(log, params) == Approx(7.0));
+  CHECK(localize::detection_lag(log, params) == Approx(5.0));
   CHECK(localize::detect_gas(log, localize::GasThreshold::relative, params)[0].lag_corrected.x() ==
-        Approx(37.0));
+        Approx(35.0));
+  // With the UAVs' average of 5 the trailing window adds (5 - 1) / 2 readings: 7 s.
+  params.moving_average = 5;
+  CHECK(localize::detection_lag(log, params) == Approx(7.0));
 }
 
 TEST_CASE(

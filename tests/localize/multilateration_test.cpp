@@ -25,12 +25,25 @@ localize::RssiLog exact_log(const std::vector<model::Vec3>& positions, const mod
   return log;
 }
 
-// An L-shaped ground path (z = 0.4 m) with readings every 0.25 m.
+// An L-shaped ground path with readings every 0.3 m, each at the centre of its 10 cm chunk
+// ((m + 0.5) 0.1 m in x, y and z), so the chunk centres are the reading positions and
+// noise-free ranges are solved exactly.
+constexpr double kAntennaHeight = 0.45;  // [m], a cell centre
 std::vector<model::Vec3> l_path() {
   std::vector<model::Vec3> positions;
-  for (double x = -10; x <= 0; x += 0.25) positions.emplace_back(x, 0.0, 0.4);
-  for (double y = 0.25; y <= 10; y += 0.25) positions.emplace_back(0.0, y, 0.4);
+  for (int k = 0; k <= 33; ++k) positions.emplace_back(-9.95 + 0.3 * k, 0.05, kAntennaHeight);
+  for (int k = 1; k <= 33; ++k) positions.emplace_back(0.05, 0.05 + 0.3 * k, kAntennaHeight);
   return positions;
+}
+
+// A chunk of `count` readings at cell centre `centre`, each `range` from the emitter.
+localize::Chunk make_chunk(const model::Vec3& centre, double range, int count) {
+  localize::Chunk chunk;
+  chunk.centre = centre;
+  chunk.height_sum = count * centre.z();
+  chunk.range_sum = count * range;
+  chunk.count = count;
+  return chunk;
 }
 
 }  // namespace
@@ -44,26 +57,59 @@ TEST_CASE("path loss: range and RSSI are inverse, the paper's model at hand-comp
   CHECK(localize::range_from_rssi(-57.5, model) == Approx(std::sqrt(10.0)));  // 10^(12.5 / 25)
 }
 
-TEST_CASE("chunks average the readings' distances, weights are sqrt(c) / r", "[localize]") {
+TEST_CASE("chunks stand at their cells' centres, average the distances, drop -80 dBm or worse",
+          "[localize]") {
   localize::PathLossParams
       model;  // -45 dBm -> 1 m, -70 dBm -> 10 m, -95 dBm -> 100 m (below the cut-off)
+  // The thesis drops "-80 dBm or worse": -80 itself is not used, -79.9 is.
+  CHECK_FALSE(localize::passes_cutoff(-80.0, model));
+  CHECK_FALSE(localize::passes_cutoff(-95.0, model));
+  CHECK(localize::passes_cutoff(-79.9, model));
   localize::RssiLog log;
   log.emitters = {"a", "b"};
   log.readings = {{0, {0.01, 0.02, 0.4}, 0, -45.0},  {1, {0.05, 0.06, 0.4}, 0, -70.0},
                   {2, {0.15, 0.02, 0.4}, 0, -70.0},  {3, {0.16, 0.03, 0.4}, 0, -95.0},
-                  {4, {-0.05, 0.02, 0.4}, 0, -70.0}, {5, {0.02, 0.02, 0.4}, 1, -40.0}};
+                  {4, {-0.05, 0.02, 0.4}, 0, -70.0}, {5, {0.02, 0.02, 0.4}, 1, -40.0},
+                  {6, {0.03, 0.03, 0.4}, 0, -80.0}};
   const std::vector<localize::Chunk> chunks = localize::chunk_readings(log, 0, model);
   REQUIRE(chunks.size() == 3);  // cells [0, 0.1), [0.1, 0.2) and [-0.1, 0) in x
-  CHECK(chunks[0].count == 2);
-  CHECK(chunks[0].position().x() == Approx(0.03));
-  CHECK(chunks[0].position().y() == Approx(0.04));
+  CHECK(chunks[0].count == 2);  // the -80 dBm reading was dropped
+  // The chunk is the cell [0, 0.1) x [0, 0.1): its centre, not the readings' mean (0.03, 0.04).
+  CHECK(chunks[0].position().x() == Approx(0.05));
+  CHECK(chunks[0].position().y() == Approx(0.05));
+  CHECK(chunks[0].mean_height() == Approx(0.4));  // the antenna's height, for a 2D solve's z
   // Paper 4 averages distances: (1 + 10) / 2 = 5.5 m, not the 3.16 m of the mean RSSI.
   CHECK(chunks[0].mean_range() == Approx(5.5));
   CHECK(chunks[0].mean_rssi() == Approx(-57.5));
   CHECK(localize::wls_weight(chunks[0]) == Approx(std::sqrt(2.0) / 5.5));
   CHECK(chunks[1].count == 1);  // the -95 dBm reading was dropped
+  CHECK(chunks[1].position().x() == Approx(0.15));
   CHECK(localize::wls_weight(chunks[1]) == Approx(0.1));
   CHECK(chunks[2].position().x() == Approx(-0.05));
+}
+
+TEST_CASE("eq. 12 as printed and as weighted least squares, worked by hand on four chunks",
+          "[localize]") {
+  // p1 (0, 0) r 1 (reference: k1 = 0 - 1 = -1); p2 (2, 0) r 2 c 4: w 1, a = (4 - 4) + 1 = 1;
+  // p3 (0, 2) r 1 c 1: w 1, a = (4 - 1) + 1 = 4; p4 (2, 2) r 2 c 1: w 0.5, a = (8 - 4) + 1 = 5.
+  // Rows 2 (p_j - p1): B = [4 0; 0 4; 4 4].
+  const std::vector<localize::Chunk> chunks = {
+      make_chunk({0, 0, 0}, 1.0, 1), make_chunk({2, 0, 0}, 2.0, 4), make_chunk({0, 2, 0}, 1.0, 1),
+      make_chunk({2, 2, 0}, 2.0, 1)};
+  // Literal (paper): least squares of B q = diag(w) a = (1, 4, 2.5): B^T B = [32 16; 16 32],
+  // B^T (w a) = (14, 26), q = [32 -16; -16 32] (14, 26) / 768 = (32, 608) / 768 = (1/24, 19/24).
+  const auto paper = localize::wls_multilateration(chunks, 2, localize::WlsReference::first_chunk,
+                                                   localize::WlsWeighting::paper);
+  REQUIRE(paper);
+  CHECK(paper->position.x() == Approx(1.0 / 24.0));
+  CHECK(paper->position.y() == Approx(19.0 / 24.0));
+  // Weighted least squares (rows): w^2 = (1, 1, 0.25): H = [20 4; 4 20], g = (9, 21),
+  // q = [20 -4; -4 20] (9, 21) / 384 = (96, 384) / 384 = (0.25, 1).
+  const auto rows = localize::wls_multilateration(chunks, 2, localize::WlsReference::first_chunk,
+                                                  localize::WlsWeighting::rows);
+  REQUIRE(rows);
+  CHECK(rows->position.x() == Approx(0.25));
+  CHECK(rows->position.y() == Approx(1.0));
 }
 
 TEST_CASE(
@@ -77,13 +123,7 @@ TEST_CASE(
   const std::vector<Row> rows = {
       {0, 0, 5.0, 1}, {6, 0, 4.0, 3}, {6, 6, 6.5, 2}, {0, 6, 3.0, 4}, {3, -2, 7.0, 1}};
   std::vector<localize::Chunk> chunks;
-  for (const Row& r : rows) {
-    localize::Chunk c;
-    c.position_sum = r.count * model::Vec3(r.x, r.y, 0.0);
-    c.range_sum = r.count * r.range;
-    c.count = r.count;
-    chunks.push_back(c);
-  }
+  for (const Row& r : rows) chunks.push_back(make_chunk({r.x, r.y, 0.0}, r.range, r.count));
   // The linearised system written out row by row (chunk j minus the first chunk):
   // 2 (p_j - p_1)^T q = (|p_j|^2 - r_j^2) - (|p_1|^2 - r_1^2), and its weighted normal equations.
   const auto explicit_solution = [&](bool square_the_weight) {
@@ -113,31 +153,58 @@ TEST_CASE(
   CHECK((rows_weighted->position.head<2>() - expected_rows).norm() < 1e-9);
   CHECK((squares_weighted->position.head<2>() - expected_squares).norm() < 1e-9);
   CHECK((expected_rows - expected_squares).norm() > 0.05);  // the two really differ here
+  // Eq. 12 as printed, diag(w) a = B q, solved with B's pseudo-inverse written out here.
+  Eigen::MatrixXd B(rows.size() - 1, 2);
+  Eigen::VectorXd weighted_a(rows.size() - 1);
+  const Eigen::Vector2d p1(rows[0].x, rows[0].y);
+  const double k1 = p1.squaredNorm() - rows[0].range * rows[0].range;
+  for (std::size_t j = 1; j < rows.size(); ++j) {
+    const Eigen::Vector2d p(rows[j].x, rows[j].y);
+    const auto i = static_cast<Eigen::Index>(j - 1);
+    B.row(i) = 2.0 * (p - p1).transpose();
+    const double w = std::sqrt(static_cast<double>(rows[j].count)) / rows[j].range;
+    weighted_a(i) = w * (p.squaredNorm() - rows[j].range * rows[j].range - k1);
+  }
+  const Eigen::Vector2d expected_paper =
+      B.completeOrthogonalDecomposition().pseudoInverse() * weighted_a;
+  const auto literal = localize::wls_multilateration(chunks, 2, localize::WlsReference::first_chunk,
+                                                     localize::WlsWeighting::paper);
+  REQUIRE(literal);
+  CHECK((literal->position.head<2>() - expected_paper).norm() < 1e-9);
   // The default is the paper's.
   const auto by_default = localize::wls_multilateration(chunks, 2);
   REQUIRE(by_default);
   CHECK((by_default->position.head<2>() - expected_rows).norm() < 1e-9);
 }
 
-TEST_CASE("the incremental system equals the batch system after every reading", "[localize]") {
-  const model::Vec3 emitter(-3.0, 4.0, 0.4);
+TEST_CASE("the incremental system equals the batch system after every reading, every weighting",
+          "[localize]") {
+  const model::Vec3 emitter(-3.0, 4.0, kAntennaHeight);
   localize::PathLossParams model;
   const localize::RssiLog log = exact_log(l_path(), emitter, model);
-  localize::IncrementalWls incremental(model);
-  localize::ChunkAccumulator batch;
-  for (const localize::RssiReading& r : log.readings) {
-    incremental.add(r.position, r.rssi_dbm);
-    batch.add(r.position, localize::range_from_rssi(r.rssi_dbm, model), r.rssi_dbm);
-    const auto a = incremental.solve(2);
-    const auto b = localize::wls_multilateration(batch.chunks(), 2);
-    REQUIRE(a.has_value() == b.has_value());
-    if (a) CHECK((a->position - b->position).norm() < 1e-6);
+  for (const localize::WlsWeighting weighting :
+       {localize::WlsWeighting::rows, localize::WlsWeighting::paper,
+        localize::WlsWeighting::squared_residuals}) {
+    localize::ChunkParams chunking;
+    chunking.weighting = weighting;
+    localize::IncrementalWls incremental(model, chunking);
+    localize::ChunkAccumulator batch(chunking);
+    for (const localize::RssiReading& r : log.readings) {
+      incremental.add(r.position, r.rssi_dbm);
+      batch.add(r.position, localize::range_from_rssi(r.rssi_dbm, model), r.rssi_dbm);
+      const auto a = incremental.solve(2);
+      const auto b = localize::wls_multilateration(batch.chunks(), 2,
+                                                   localize::WlsReference::first_chunk, weighting);
+      REQUIRE(a.has_value() == b.has_value());
+      if (a) CHECK((a->position - b->position).norm() < 1e-6);
+    }
   }
 }
 
 TEST_CASE("noise-free ranges are recovered exactly in 2D by every linear variant and the range fit",
           "[localize]") {
-  const model::Vec3 emitter(-3.0, 4.0, 0.4);  // at the antenna's height: the 2D problem is exact
+  // At the antenna's height: the 2D problem is exact.
+  const model::Vec3 emitter(-3.0, 4.0, kAntennaHeight);
   localize::PathLossParams model;
   const localize::RssiLog log = exact_log(l_path(), emitter, model);
   const std::vector<localize::Chunk> chunks = localize::chunk_readings(log, 0, model);
@@ -150,6 +217,12 @@ TEST_CASE("noise-free ranges are recovered exactly in 2D by every linear variant
     REQUIRE(solution);
     CHECK((solution->position - emitter).norm() < 1e-6);
   }
+  // Eq. 12 as printed weights only the right-hand side, so exact ranges give another point
+  // (the equations hold at the emitter, B q = a, not their rescaled right-hand sides).
+  const auto literal = localize::wls_multilateration(chunks, 2, localize::WlsReference::first_chunk,
+                                                     localize::WlsWeighting::paper);
+  REQUIRE(literal);
+  CHECK((literal->position - emitter).norm() > 0.1);
   // The range fit models a vertical offset between antenna and emitter; these readings have
   // none, so the fit is told so, and the assumed level is 5 dB off: the fit finds -45 dBm.
   localize::RangeFitParams fit;
@@ -174,7 +247,9 @@ TEST_CASE("noise-free ranges are recovered exactly in 3D from a path that climbs
   std::vector<model::Vec3> helix;
   for (int i = 0; i < 400; ++i) {
     const double angle = 0.05 * i;
-    helix.emplace_back(6 * std::cos(angle), 6 * std::sin(angle), 0.01 * i);  // 0 to 4 m up
+    // 0 to 4 m up; each reading at its chunk's centre ((m + 0.5) 0.1 m) so the ranges are exact.
+    const model::Vec3 p(6 * std::cos(angle), 6 * std::sin(angle), 0.01 * i);
+    helix.push_back(((p / 0.1).array().floor() + 0.5).matrix() * 0.1);
   }
   const std::vector<localize::Chunk> chunks =
       localize::chunk_readings(exact_log(helix, emitter, model), 0, model);
@@ -238,10 +313,8 @@ TEST_CASE("collinear positions are reported as degenerate, with both mirror imag
 TEST_CASE("geometry: height spread decides 2D or 3D, the mirror reflects across the path",
           "[localize]") {
   std::vector<localize::Chunk> chunks(2);
-  chunks[0].position_sum = {0, 0, 0.4};
-  chunks[0].count = 1;
-  chunks[1].position_sum = {10, 0, 0.4};
-  chunks[1].count = 1;
+  chunks[0] = make_chunk({0, 0, 0.4}, 1.0, 1);
+  chunks[1] = make_chunk({10, 0, 0.4}, 1.0, 1);
   const localize::GeometryAnalysis g = localize::analyse_geometry(chunks);
   CHECK(g.dimensions == 2);
   CHECK(g.collinear);
@@ -269,7 +342,9 @@ TEST_CASE("a circular path with unknown level reports the inverse-point twin", "
   const std::vector<localize::Chunk> chunks = localize::chunk_readings(log, 0, model);
   const localize::GeometryAnalysis geometry = localize::analyse_geometry(chunks);
   REQUIRE(geometry.circular);
-  CHECK(geometry.circle_radius == Approx(12.0).margin(1e-3));
+  // Chunks stand at cell centres, each within half a 10 cm cell's diagonal (0.071 m) of the
+  // circle, so the fitted radius is within that of 12 m.
+  CHECK(geometry.circle_radius == Approx(12.0).margin(0.071));
   localize::RangeFitParams fit;
   fit.vertical_offset = 0.0;
   fit.level_prior_db = 100;  // the level is free

@@ -115,13 +115,23 @@ TEST_CASE("calibration: a circle round the emitter tells no exponent", "[localiz
   CHECK_FALSE(localize::calibrate_path_loss(scans_at(d, rssi), model::Vec3::Zero()));
 }
 
-TEST_CASE("environment presets are Rappaport's Table 4.2 rows", "[localize]") {
-  // The table's values (Rappaport, Wireless Communications, 2nd ed., Table 4.2), midpoints of
-  // its ranges.
-  REQUIRE(localize::find_environment_preset("free-space"));
-  CHECK(localize::find_environment_preset("free-space")->exponent == 2.0);
-  CHECK(localize::find_environment_preset("building-line-of-sight")->exponent == Approx(1.7));
-  CHECK(localize::find_environment_preset("building-obstructed")->exponent == Approx(5.0));
-  CHECK(localize::find_environment_preset("factory-obstructed")->exponent == Approx(2.5));
+TEST_CASE("environment presets are paper 4's Table 4 rows and its underground stations",
+          "[localize]") {
+  // DESIGN.md section 9, paper 4's Table 4 (its reference [49]), midpoints of its ranges.
+  const auto exponent = [](const char* name) {
+    const localize::EnvironmentPreset* preset = localize::find_environment_preset(name);
+    REQUIRE(preset);
+    return preset->exponent;
+  };
+  CHECK(exponent("free-space") == 2.0);
+  CHECK(exponent("urban-area") == Approx((2.7 + 4.0) / 2));
+  CHECK(exponent("indoor-los") == Approx((1.6 + 1.8) / 2));
+  CHECK(exponent("indoor-general") == Approx((4.0 + 6.0) / 2));
+  CHECK(exponent("indoor-factories") == Approx((2.0 + 3.0) / 2));
+  CHECK(exponent("indoor-through-floor") == Approx((3.0 + 6.0) / 2));
+  // The thesis's text: underground stations "between 2.2 and 3 for 2.4 GHz".
+  CHECK(exponent("underground-station") == Approx((2.2 + 3.0) / 2));
+  CHECK(localize::environment_presets().size() == 7);
   CHECK(localize::find_environment_preset("attic") == nullptr);
+  CHECK(localize::find_environment_preset("building-obstructed") == nullptr);  // Rappaport's
 }

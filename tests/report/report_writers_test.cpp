@@ -172,7 +172,7 @@ TEST_CASE("localize: an emitter and a CO2 log give the same numbers as text and 
   const std::string text = out.str();
   CHECK(contains(text, "walk.csv: 120 readings of 1 emitter(s)\n"));
   CHECK(contains(text,
-                 "emitter 02:00:00:00:00:01 (wls): 120 log lines, 96 heard at or above "
+                 "emitter 02:00:00:00:00:01 (wls): 120 log lines, 96 heard above "
                  "-80 dBm (paper 4's cut-off), 4 chunks\n"));
   // sd = sqrt of the covariance's diagonal: 0.5 and 0.3 m.
   CHECK(contains(text, "  estimate (1.50, -2.25) m, sd x 0.50 y 0.30 m, a -45.3 dBm, n 2.50\n"));

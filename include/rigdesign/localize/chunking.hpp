@@ -1,7 +1,8 @@
 #pragma once
 /// Paper 4's chunks: robot positions binned into 10 cm cells (a spatial grid, so a revisited
 /// place joins its chunk), each keeping running sums so a new reading updates its chunk in
-/// O(1) (one hash look-up) and the chunk's mean position, distance and RSSI are read off.
+/// O(1) (one hash look-up). A chunk stands at the centre of its cell, as the thesis bins
+/// positions into chunks; its distance and RSSI are the means of its readings'.
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -12,15 +13,20 @@
 
 namespace rigdesign::localize {
 
-/// How paper 4's chunk weight w = sqrt(c) / r enters the least-squares system.
+/// How paper 4's chunk weight w = sqrt(c) / r enters the linearised system B q = a (row j:
+/// 2 (p_j - p_1)^T q = k_j - k_1, the first chunk as reference).
 enum class WlsWeighting {
-  /// Paper 4's eq. 12 as issue 33's audit of the thesis reads it: w scales each chunk's
-  /// linearised equation, so its squared residual counts w^2 = c / r^2 (a mean of c readings
-  /// whose range error grows with r: the inverse of its variance, up to a constant).
+  /// Paper 4's eq. 12 read as weighted least squares (issue 33's reading, the default): w
+  /// scales both sides of each row, so its squared residual counts w^2 = c / r^2 (a mean of c
+  /// readings whose range error grows with r: the inverse of its variance, up to a constant).
   rows,
   /// Before issue 33: w multiplied the squared residual (`--wls-weighting residuals`, kept to
   /// compare with).
   squared_residuals,
+  /// Eq. 12 as printed, `diag(w) a = B [x y z]^T` (`--wls-weighting paper`): least squares of
+  /// B q = diag(w) a, w scaling only the right-hand side. Not consistent: even noise-free
+  /// ranges give a point off the emitter unless every w is 1.
+  paper,
 };
 
 struct ChunkParams {
@@ -29,12 +35,18 @@ struct ChunkParams {
 };
 
 struct Chunk {
-  model::Vec3 position_sum = model::Vec3::Zero();  ///< [m]
-  double range_sum = 0.0;                          ///< sum of per-reading distances from RSSI [m]
-  double rssi_sum = 0.0;                           ///< [dBm]
-  int count = 0;                                   ///< readings in the chunk (paper 4's c)
+  model::Vec3 centre = model::Vec3::Zero();  ///< the centre of the chunk's cell [m]
+  /// Sum of the readings' antenna heights [m]: kept because a 2D solve reports the emitter at
+  /// the antenna's mean height, which the cell centre's z (a multiple of the cell size plus
+  /// half) misses by up to half a cell.
+  double height_sum = 0.0;
+  double range_sum = 0.0;  ///< sum of per-reading distances from RSSI [m]
+  double rssi_sum = 0.0;   ///< [dBm]
+  int count = 0;           ///< readings in the chunk (paper 4's c)
 
-  model::Vec3 position() const { return position_sum / count; }
+  /// Where paper 4's methods place the chunk: its cell's centre.
+  const model::Vec3& position() const { return centre; }
+  double mean_height() const { return height_sum / count; }
   /// Paper 4's averaged distance: the mean of the readings' distances (not the distance of
   /// the mean RSSI).
   double mean_range() const { return range_sum / count; }
@@ -44,8 +56,8 @@ struct Chunk {
 /// Paper 4's chunk weight w = sqrt(c) / r.
 double wls_weight(const Chunk& chunk);
 
-/// The weight of the chunk's squared residual in the least-squares sum: w^2 (rows) or w.
-double squared_residual_weight(const Chunk& chunk, WlsWeighting weighting);
+/// The centre of the `size` cell holding `position` (the chunk it joins) [m].
+model::Vec3 chunk_centre(const model::Vec3& position, double size);
 
 class ChunkAccumulator {
  public:
@@ -63,7 +75,7 @@ class ChunkAccumulator {
   std::unordered_map<std::uint64_t, std::size_t> index_of_;
 };
 
-/// The chunks of one emitter's heard readings at or above the cut-off, in order of first visit.
+/// The chunks of one emitter's heard readings stronger than the cut-off, in order of first visit.
 std::vector<Chunk> chunk_readings(const RssiLog& log, int emitter, const PathLossParams& path_loss,
                                   const ChunkParams& params = {});
 

@@ -1,7 +1,7 @@
 #pragma once
 /// One emitter's position from a log by one of three methods: paper 4's linearised weighted
-/// least squares (`wls`) and object map (`map`), both on the chunks of the readings at or
-/// above the cut-off as the paper does, and the range fit (`nls`) on every scan, heard or not.
+/// least squares (`wls`) and object map (`map`), both on the chunks of the readings stronger
+/// than the cut-off as the paper does, and the range fit (`nls`) on every scan, heard or not.
 /// Each states a 95 % region: wls its Gaussian ellipse, map and nls the highest-density
 /// region of their grids.
 #include <optional>
@@ -51,7 +51,7 @@ struct EmitterEstimate {
   std::string bssid;
   LocalizeMethod method = LocalizeMethod::nls;
   int readings = 0;  ///< the emitter's readings in the log
-  int used = 0;      ///< of which at or above the cut-off
+  int used = 0;      ///< of which stronger than the cut-off (paper 4's methods use these)
   std::vector<Chunk> chunks;
   GeometryAnalysis geometry;
   /// Most probable first; empty when the method could not solve (too few chunks, a singular

@@ -2,13 +2,14 @@
 /// Calibrating paper 4's path-loss model on a log whose emitter position is known: the level
 /// at 1 m and the exponent of rssi = a - 10 n log10(d) + e, e ~ N(0, sigma^2), by maximum
 /// likelihood over every scan: a heard one by its density, an unheard one as "below the
-/// receiver's floor" (Tobit). Paper 4 calibrated per environment; the thesis's own procedure
-/// and its Table 4 are not available to this project, so this is the textbook fit (Rappaport,
-/// Wireless Communications, 2nd ed., section 4.9: the exponent that best fits measurements at
-/// known distances) with the floor's censoring modelled: a least-squares line through the
-/// heard readings alone is biased flat, because far away only the strongest readings are heard
-/// (on a loop 6-17 m round a phone with a -87 dBm floor it gave n = -0.15 for a true 3.09).
-/// Presets of the exponent per environment come from Rappaport's Table 4.2.
+/// receiver's floor" (Tobit). Paper 4 calibrated per environment ("on previous runs in that
+/// building"); its fitting procedure is not in the project's sources, so this is the textbook
+/// fit (Rappaport, Wireless Communications, 2nd ed., section 4.9: the exponent that best fits
+/// measurements at known distances) with the floor's censoring modelled: a least-squares line
+/// through the heard readings alone is biased flat, because far away only the strongest
+/// readings are heard (on a loop 6-17 m round a phone with a -87 dBm floor it gave n = -0.15
+/// for a true 3.09).
+/// Presets of the exponent per environment come from paper 4's Table 4 (DESIGN.md section 9).
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,8 +50,8 @@ std::optional<PathLossCalibration> calibrate_path_loss(const ScanSeries& scans,
 /// "maximum" there is no fit).
 std::string calibration_problem(const PathLossCalibration& fit);
 
-/// A published exponent for a kind of environment (Rappaport's Table 4.2; the midpoint where
-/// it gives a range).
+/// A published exponent for a kind of environment (paper 4's Table 4, its reference [49], and
+/// the thesis's underground stations; the midpoint where it gives a range).
 struct EnvironmentPreset {
   std::string name;
   double exponent;

@@ -1,14 +1,16 @@
 #pragma once
 /// Paper 4's estimator: linearised multilateration by weighted least squares over chunks.
 /// Each chunk j gives a sphere |q - p_j|^2 = r_j^2; subtracting a reference sphere gives the
-/// linear row 2 (p_j - p_ref)^T q = k_j - k_ref with k = |p|^2 - r^2, weighted by
-/// w_j = sqrt(c_j) / r_j (minimising sum w_j e_j^2). Paper 4 references the first chunk's
-/// sphere; referencing the weighted mean of the spheres is the better-conditioned variant
-/// the range fit starts from.
+/// linear row 2 (p_j - p_ref)^T q = k_j - k_ref with k = |p|^2 - r^2 (p_j the chunk's centre),
+/// weighted by w_j = sqrt(c_j) / r_j as WlsWeighting says: on both sides (rows, the default),
+/// on the squared residual, or on the right-hand side only (paper: eq. 12 as printed). Paper
+/// 4 references the first chunk's sphere; referencing the weighted mean of the spheres is the
+/// better-conditioned variant the range fit starts from.
 ///
-/// Every quantity is a sum over chunks (sum w, w p, w p p^T, w k, w p k, w k^2), so a new
-/// reading updates the system in O(1): its chunk's old contribution is subtracted and the
+/// Every quantity is a sum over chunks of a power of w times 1, p, p p^T, k, p k or k^2, so a
+/// new reading updates the system in O(1): its chunk's old contribution is subtracted and the
 /// new one added, and solving is a 2x2 or 3x3 system.
+#include <array>
 #include <optional>
 
 #include "rigdesign/localize/chunking.hpp"
@@ -20,8 +22,17 @@ enum class WlsReference { first_chunk, weighted_mean };
 
 struct WlsSolution {
   model::Vec3 position;  ///< [m]; with 2 dimensions z is the chunks' weighted mean height
-  model::Mat3
-      covariance;  ///< [m^2] sigma^2 (A^T W A)^-1 from the linear residuals; z row/column 0 in 2D
+  /// [m^2] sigma^2 (B^T W B)^-1 from the linear residuals (W: the rows' weights on the
+  /// left-hand side, all 1 for WlsWeighting::paper); z row/column 0 in 2D.
+  model::Mat3 covariance;
+};
+
+/// Sums over chunks of one power of the chunk weight times each term of the normal equations.
+struct WlsMoments {
+  double s = 0.0, sk = 0.0, skk = 0.0, sz = 0.0;
+  model::Vec3 sp = model::Vec3::Zero(), spk = model::Vec3::Zero();
+  model::Mat3 spp = model::Mat3::Zero();
+  void add(double weight, const model::Vec3& p, double k, double height);
 };
 
 /// Running weighted sums of the linear system. Positions are taken relative to `origin` to
@@ -29,8 +40,7 @@ struct WlsSolution {
 class WlsSums {
  public:
   explicit WlsSums(const model::Vec3& origin = model::Vec3::Zero(),
-                   WlsWeighting weighting = WlsWeighting::rows)
-      : origin_(origin), weighting_(weighting) {}
+                   WlsWeighting weighting = WlsWeighting::rows);
   /// Adds (sign +1) or removes (sign -1) a chunk's contribution.
   void add(const Chunk& chunk, double sign = 1.0);
   /// Solves in the first `dimensions` (2: x, y; 3: x, y, z) coordinates; the reference chunk
@@ -42,10 +52,10 @@ class WlsSums {
 
  private:
   model::Vec3 origin_;
-  WlsWeighting weighting_;
-  double w_ = 0.0, wk_ = 0.0, wkk_ = 0.0, wz_ = 0.0;
-  model::Vec3 wp_ = model::Vec3::Zero(), wpk_ = model::Vec3::Zero();
-  model::Mat3 wpp_ = model::Mat3::Zero();
+  /// The power of w weighting the left-hand side (B^T B), the cross term (B^T a) and the
+  /// right-hand side (a^T a) of the normal equations.
+  int lhs_power_ = 2, cross_power_ = 2, rhs_power_ = 2;
+  std::array<WlsMoments, 3> by_power_;  ///< indexed by the power of w (0, 1, 2)
   int chunks_ = 0;
 };
 

@@ -42,7 +42,13 @@ struct GasReport {
   bool timed = true;                 ///< false: an untimed trace, a sample period assumed
   double lag_s = 0.0;                ///< the sensor's delay the lag correction undoes [s]
   std::vector<GasModeReport> modes;  ///< fixed, then relative
+  int moving_average = 1;            ///< readings averaged (1: paper 4's ground robot)
+  bool refine_strongest = false;     ///< strongest reading in the area (the thesis's future work)
 };
+
+/// How the detections were made, in words: paper 4's ground-robot rule (the first reading over
+/// the threshold, one detection per 5 m) or which options depart from it.
+std::string gas_detection_rule(const GasReport& report);
 
 /// One --log file: an RSSI log with its emitters, or a CO2 log.
 struct LogReport {
