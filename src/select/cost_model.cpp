@@ -12,15 +12,6 @@ namespace {
 constexpr double kBitsPerByte = 8.0;
 }  // namespace
 
-const model::PricedCapacity* cheapest_exceeding(const std::vector<model::PricedCapacity>& items,
-                                                double load) {
-  const model::PricedCapacity* best = nullptr;
-  for (const model::PricedCapacity& item : items) {
-    if (item.capacity > load && (best == nullptr || item.price < best->price)) best = &item;
-  }
-  return best;
-}
-
 namespace {
 
 // The end of the run of items of one kind starting at `begin` (items of a kind are contiguous).
@@ -42,6 +33,11 @@ const model::PricedCapacity* cheapest_in(const std::vector<model::PricedCapacity
 }
 
 }  // namespace
+
+const model::PricedCapacity* cheapest_exceeding(const std::vector<model::PricedCapacity>& items,
+                                                double load) {
+  return cheapest_in(items, 0, items.size(), load);
+}
 
 std::vector<const model::PricedCapacity*> cheapest_per_kind(
     const std::vector<model::PricedCapacity>& items, double load) {
