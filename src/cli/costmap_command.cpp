@@ -31,6 +31,7 @@
 #include "rigdesign/io/scene/scenario_file_loader.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/idle_cores.hpp"
+#include "rigdesign/model/units.hpp"
 #include "rigdesign/render/costmap_frame.hpp"
 #include "rigdesign/report/costmap_run_report.hpp"
 #include "rigdesign/report/text_table.hpp"
@@ -73,7 +74,10 @@ struct CostmapOptions {
   std::string local_planner = "pure-pursuit";  // or dwa
   bool full_rays = false;                      // every ray of every sensor, no decimation
   double clearance_margin = 0.0;               // [m] footprint padding where the costmap inflates
-  bool variants = false;                       // paper 2's Table 1 over the rig's mount subsets
+  std::optional<double> radius_outlier;        // [m] paper 2's stage on camera frames
+  int radius_outlier_min = model::RadiusOutlierParams{}.min_neighbours;
+  bool no_depth_matching = false;  // every camera ray its own first hit
+  bool variants = false;           // paper 2's Table 1 over the rig's mount subsets
   int seeds = 20;
   std::vector<double> margins = scenarios::SweepSettings{}.margins;
 };
@@ -275,6 +279,30 @@ void print_floor_ahead(std::ostream& out, const RigInputs& inputs,
 }
 
 // Each mount's rate and latency as the run senses them, and the rays it casts.
+// What a camera's frames go through before the costmap: its depth matching window (a thin
+// object at range vanishes) and paper 2's radius outlier removal.
+std::string camera_stages_text(const RigInputs& inputs, const model::Mount& mount,
+                               const scenarios::ScenarioParams& params) {
+  const model::SensorMode* mode = &inputs.library.resolved_mode(mount.sensor_id, mount.mode_id);
+  if (!mode->is_camera()) return "";
+  std::string text;
+  if (mode->depth_matching) {
+    const model::DepthMatching& matching = *mode->depth_matching;
+    text += params.depth_matching
+                ? "; depth from a " + std::to_string(matching.window_px) + "-px window (" +
+                      model::format_number(model::rad_to_deg(matching.window_angle), 2) +
+                      " deg): what fills under half of it at its range is lost"
+                : "; depth matching off (--no-depth-matching)";
+  }
+  if (params.camera_radius_outlier) {
+    text += "; radius outlier removal: " +
+            std::to_string(params.camera_radius_outlier->min_neighbours) + " neighbours within " +
+            model::format_number(params.camera_radius_outlier->radius) + " m (x" +
+            std::to_string(params.camera_decimation) + " with the ray stride)";
+  }
+  return text;
+}
+
 void print_sensing(std::ostream& out, const RigInputs& inputs,
                    const scenarios::ScenarioParams& params, const std::string& loads_file) {
   out << "  sensing at each sensor's own rate, frames reaching the costmap after driver + "
@@ -293,7 +321,8 @@ void print_sensing(std::ostream& out, const RigInputs& inputs,
   for (std::size_t i = 0; i < timings.size(); ++i) {
     const model::Mount& mount = inputs.rig.mounts[i];
     out << "    " << mount.id << ": " << scenarios::describe(timings[i])
-        << (mount.throttle_hz ? " (throttled)" : "") << "\n";
+        << (mount.throttle_hz ? " (throttled)" : "") << camera_stages_text(inputs, mount, params)
+        << "\n";
   }
 }
 
@@ -352,6 +381,11 @@ void apply_driving_options(const CostmapOptions& options, scenarios::ScenarioPar
                  "--local-planner", "is '" + options.local_planner + "'", "pure-pursuit or dwa");
   if (options.local_planner == "dwa") params.local_planner = scenarios::LocalPlanner::dwa;
   params.clearance_margin = options.clearance_margin;
+  if (options.radius_outlier) {
+    params.camera_radius_outlier =
+        model::RadiusOutlierParams{*options.radius_outlier, options.radius_outlier_min};
+  }
+  params.depth_matching = !options.no_depth_matching;
 }
 
 // What the run is: the scenario, the grid, the rates, the sensing, the floor ahead, the planner.
@@ -362,8 +396,11 @@ void print_setup(std::ostream& out, const CostmapOptions& options, const RigInpu
       << "): " << scenario.description << "\n";
   out << "  " << model::format_number(params.costmap.resolution) << " m cells, "
       << window_text(params.costmap) << " m window, " << model::format_number(options.update_rate)
-      << " Hz updates, " << model::format_number(options.speed) << " m/s; Hit Layer hit "
-      << params.costmap.hit.hit << ", hit_max " << params.costmap.hit.hit_max
+      << " Hz updates, " << model::format_number(options.speed) << " m/s; "
+      << (params.costmap.use_hit_layer
+              ? "Hit Layer hit " + std::to_string(params.costmap.hit.hit) + ", hit_max " +
+                    std::to_string(params.costmap.hit.hit_max)
+              : std::string("no Hit Layer"))
       << persistence_text(inputs.rig, params) << "\n";
   print_sensing(out, inputs, params, options.filtering_loads);
   if (!scenario.drops.empty()) print_floor_ahead(out, inputs, params);
@@ -558,6 +595,18 @@ Command setup_costmap(CLI::App& parent) {
                   "Footprint padding [m] where the costmap inflates: how close the planners let "
                   "the robot come to what its sensors see (default 0)")
       ->check(finite_in(0.0, 2.0, "a margin in [0, 2] m"));
+  app->add_option("--radius-outlier", options->radius_outlier,
+                  "Paper 2's radius outlier removal on every camera frame before the costmap: "
+                  "points with fewer than --radius-outlier-min others within this radius [m] go "
+                  "(scaled by the camera ray stride; default: off)")
+      ->check(finite_in(1e-3, 1.0, "a radius in [0.001, 1] m"));
+  app->add_option("--radius-outlier-min", options->radius_outlier_min,
+                  "Neighbours a point needs to stay under --radius-outlier (default 2)")
+      ->check(CLI::Range(1, 1000).description("a count from 1 to 1000"));
+  app->add_flag("--no-depth-matching", options->no_depth_matching,
+                "Every camera ray returns its own first hit (default: a camera with "
+                "depth_matching in its datasheet reports the depth filling most of each "
+                "pixel's window, so thin objects at range vanish)");
   add_table1_options(app, *options);
   add_out_option(*app, options->out, "frames, grids and the summary (default costmap/<scenario>)");
   return {app, [options](std::ostream& out, std::ostream& err) {

@@ -1,6 +1,9 @@
 #include "costmap_variants.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
@@ -9,6 +12,7 @@
 #include "rigdesign/io/atomic_write.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/report/text_table.hpp"
+#include "rigdesign/scenarios/seed_bootstrap.hpp"
 
 namespace rigdesign::cli {
 namespace {
@@ -22,6 +26,11 @@ struct PaperRow {
 };
 constexpr PaperRow kPaper2Table1[] = {
     {"Kinect + lidar", 0.17, 0.05}, {"lidar only", 0.16, 0.20}, {"Kinect only", 0.12, 0.05}};
+
+// The bootstrap's resamples and their generator's seed (fixed: the intervals are part of the
+// deterministic output).
+constexpr int kBootstrapRounds = 2000;
+constexpr std::uint64_t kBootstrapSeed = 54;
 
 bool is_lidar(const model::SensorLibrary& library, const model::Mount& mount) {
   const model::Sensor* sensor = library.find(mount.sensor_id);
@@ -73,9 +82,13 @@ nlohmann::json outcome_json(const scenarios::VariantOutcome& outcome) {
   for (const scenarios::RunSummary& run : outcome.runs) runs.push_back(run_json(run));
   nlohmann::json failures = nlohmann::json::array();
   for (const scenarios::RunSummary& run : outcome.failures) failures.push_back(run_json(run));
+  nlohmann::json seeds = nlohmann::json::array();
+  for (const std::optional<double>& own : outcome.seed_critical_distances)
+    seeds.push_back(own ? nlohmann::json(*own) : nlohmann::json());  // null: never clear
   const scenarios::VariantMeans means = scenarios::means_of(outcome.runs);
   return {
       {"variant", outcome.variant.label},
+      {"clearing_added", outcome.clearing_added},
       {"skipped", outcome.skipped},
       {"critical_distance_m",
        outcome.critical_distance ? nlohmann::json(*outcome.critical_distance) : nlohmann::json()},
@@ -86,14 +99,76 @@ nlohmann::json outcome_json(const scenarios::VariantOutcome& outcome) {
       {"drove_off_runs", means.drove_off},
       {"runs_made", outcome.runs_made},
       {"runs", runs},
-      {"collisions_below", failures}};
+      {"collisions_below", failures},
+      {"seed_critical_distances_m", seeds}};
+}
+
+// The seeds' own critical distances, counted: "0 cm x14, 5 cm x5, > 30 cm x1".
+std::string seed_distances_text(const scenarios::VariantOutcome& outcome,
+                                const scenarios::SweepSettings& settings) {
+  std::map<double, int> counts;
+  int never = 0;
+  for (const std::optional<double>& own : outcome.seed_critical_distances) {
+    if (own) {
+      ++counts[*own];
+    } else {
+      ++never;
+    }
+  }
+  std::string text;
+  for (const auto& [margin, count] : counts)
+    text += (text.empty() ? "" : ", ") + centimetres(margin) + " cm x" + std::to_string(count);
+  if (never > 0)
+    text += (text.empty() ? "" : ", ") + std::string("> ") + centimetres(settings.margins.back()) +
+            " cm x" + std::to_string(never);
+  return text;
+}
+
+// One of paper 2's orderings over seed resamples: the share of resamples in which it holds
+// and the 95 % interval of the quantity that must be positive (or zero, `at_least`) for it to.
+struct Ordering {
+  std::string claim;
+  std::function<double(const std::vector<std::size_t>&)> margin_of;  // > 0 (or >= 0): holds
+  bool at_least = false;
+  std::string unit;  // how the margin prints: "cm/s" or "cm"
+};
+
+std::string signed_centimetres(double metres) {
+  // A variant collided at every margin tried: its distance is beyond the sweep.
+  if (std::isinf(metres)) return metres > 0 ? "+inf (beyond the sweep)" : "-inf (beyond the sweep)";
+  return (metres > 0 ? "+" : "") + report::fixed(metres * 100.0, 2);
+}
+
+void print_ordering(std::ostream& out, const Ordering& ordering,
+                    const std::vector<std::size_t>& all_seeds,
+                    const std::vector<std::vector<std::size_t>>& resamples) {
+  const auto holds = [&](double margin) { return ordering.at_least ? margin >= 0 : margin > 0; };
+  const double observed = ordering.margin_of(all_seeds);
+  std::vector<double> margins;
+  int held = 0;
+  for (const std::vector<std::size_t>& resample : resamples) {
+    margins.push_back(ordering.margin_of(resample));
+    held += holds(margins.back()) ? 1 : 0;
+  }
+  const scenarios::Interval interval = scenarios::percentile_interval(margins);
+  out << "  " << ordering.claim << ": " << (holds(observed) ? "holds" : "does not hold")
+      << " (difference " << signed_centimetres(observed) << " " << ordering.unit
+      << ", 95 % bootstrap interval " << signed_centimetres(interval.low) << " to "
+      << signed_centimetres(interval.high) << "; holds in "
+      << report::fixed(100.0 * held / static_cast<double>(resamples.size()), 1) << " % of "
+      << resamples.size() << " resamples of the seeds)\n";
+}
+
+// Equal distances beyond the sweep (both infinite) differ by nothing.
+double difference(double a, double b) {
+  return std::isinf(a) && std::isinf(b) && (a > 0) == (b > 0) ? 0.0 : a - b;
 }
 
 // Paper 2's qualitative outcome, for a rig of one lidar and one camera: the whole rig first,
-// then each mount alone (rig_variants' order for two mounts).
+// then each mount alone (rig_variants' order for two mounts), each ordering with a paired
+// bootstrap over the seeds (issue 54: reported whether or not it holds).
 void print_paper2_checks(std::ostream& out, const RigInputs& inputs,
-                         const std::vector<scenarios::VariantOutcome>& outcomes,
-                         const scenarios::SweepSettings& settings) {
+                         const std::vector<scenarios::VariantOutcome>& outcomes) {
   const model::Rig& rig = inputs.rig;
   if (rig.mounts.size() != 2 || outcomes.size() != 3) return;
   const bool first_lidar = is_lidar(inputs.library, rig.mounts[0]);
@@ -102,28 +177,34 @@ void print_paper2_checks(std::ostream& out, const RigInputs& inputs,
   const scenarios::VariantOutcome& lidar = outcomes[first_lidar ? 1 : 2];
   const scenarios::VariantOutcome& camera = outcomes[first_lidar ? 2 : 1];
   if (!both.skipped.empty() || !lidar.skipped.empty() || !camera.skipped.empty()) return;
-  const double v_both = scenarios::means_of(both.runs).average_speed;
-  const double v_lidar = scenarios::means_of(lidar.runs).average_speed;
-  const double v_camera = scenarios::means_of(camera.runs).average_speed;
-  // A variant with no clear margin counts as beyond the largest tried.
-  const auto distance = [](const scenarios::VariantOutcome& o) {
-    return o.critical_distance.value_or(1e9);
+  using Picked = std::vector<std::size_t>;
+  const auto speed = [](const scenarios::VariantOutcome& o) {
+    return [&o](const Picked& p) { return scenarios::resampled_average_speed(o, p); };
   };
-  const auto verdict = [](bool holds) { return holds ? "holds" : "does not hold"; };
+  const auto critical = [](const scenarios::VariantOutcome& o) {
+    return [&o](const Picked& p) { return scenarios::resampled_critical_distance(o, p); };
+  };
+  const auto v_both = speed(both), v_lidar = speed(lidar), v_camera = speed(camera);
+  const auto d_both = critical(both), d_lidar = critical(lidar), d_camera = critical(camera);
+  const std::vector<Ordering> orderings = {
+      {"lidar only faster than camera only",
+       [&](const Picked& p) { return v_lidar(p) - v_camera(p); }, false, "cm/s"},
+      {"camera's critical distance smaller than the lidar's",
+       [&](const Picked& p) { return difference(d_lidar(p), d_camera(p)); }, false, "cm"},
+      {"both at least as fast as the faster alone",
+       [&](const Picked& p) { return v_both(p) - std::max(v_lidar(p), v_camera(p)); }, true,
+       "cm/s"},
+      {"both as close as the closer alone",
+       [&](const Picked& p) { return difference(std::min(d_lidar(p), d_camera(p)), d_both(p)); },
+       true, "cm"}};
+  Picked all_seeds(both.seed_critical_distances.size());
+  for (std::size_t i = 0; i < all_seeds.size(); ++i) all_seeds[i] = i;
+  const std::vector<Picked> resamples =
+      scenarios::seed_resamples(all_seeds.size(), kBootstrapRounds, kBootstrapSeed);
   out << "paper 2's qualitative outcome (lidar " << lidar.variant.label << ", camera "
-      << camera.variant.label << "):\n";
-  out << "  lidar only faster than camera only: " << verdict(v_lidar > v_camera) << " ("
-      << centimetres(v_lidar) << " vs " << centimetres(v_camera) << " cm/s)\n";
-  out << "  camera's critical distance smaller than the lidar's: "
-      << verdict(distance(camera) < distance(lidar)) << " (" << critical_text(camera, settings)
-      << " vs " << critical_text(lidar, settings) << " cm)\n";
-  out << "  both at least as fast as the faster alone: "
-      << verdict(v_both >= std::max(v_lidar, v_camera)) << " (" << centimetres(v_both) << " vs "
-      << centimetres(std::max(v_lidar, v_camera)) << " cm/s)\n";
-  const scenarios::VariantOutcome& closer = distance(lidar) <= distance(camera) ? lidar : camera;
-  out << "  both as close as the closer alone: " << verdict(distance(both) <= distance(closer))
-      << " (" << critical_text(both, settings) << " vs " << critical_text(closer, settings)
-      << " cm)\n";
+      << camera.variant.label << "), each with a paired bootstrap over the seeds ("
+      << kBootstrapRounds << " resamples, seed " << kBootstrapSeed << "):\n";
+  for (const Ordering& ordering : orderings) print_ordering(out, ordering, all_seeds, resamples);
 }
 
 }  // namespace
@@ -168,6 +249,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
   table.add_column("recovery [s]", report::TextTable::Align::right);
   table.add_column("drove off", report::TextTable::Align::right);
   table.add_column("collision just below", report::TextTable::Align::left);
+  table.add_column("seeds' own critical distances", report::TextTable::Align::left);
   nlohmann::json outcomes_json = nlohmann::json::array();
   for (const scenarios::VariantOutcome& outcome : outcomes) {
     const scenarios::VariantMeans means = scenarios::means_of(outcome.runs);
@@ -181,10 +263,16 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
          ran ? report::fixed(means.goals_refused, 2) : "-",
          ran ? report::fixed(means.recovery_seconds, 1) : "-",
          ran ? std::to_string(means.drove_off) + "/" + std::to_string(outcome.runs.size()) : "-",
-         below_text(outcome)});
+         below_text(outcome), ran ? seed_distances_text(outcome, settings) : "-"});
     outcomes_json.push_back(outcome_json(outcome));
   }
   table.print(out, "  ");
+  for (const scenarios::VariantOutcome& outcome : outcomes) {
+    if (outcome.clearing_added)
+      out << "  " << outcome.variant.label
+          << ": none of its sources clears, so each clears too (a costmap nothing clears keeps "
+             "every mark)\n";
+  }
   out << "paper 2, Table 1 (Elektron, SICK LMS100 270 deg + Kinect 57 deg, office and workshop, "
          "20 repeats):\n";
   report::TextTable paper;
@@ -195,7 +283,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
     paper.add_row({row.variant, centimetres(row.critical_distance), centimetres(row.speed)});
   }
   paper.print(out, "  ");
-  print_paper2_checks(out, inputs, outcomes, settings);
+  print_paper2_checks(out, inputs, outcomes);
   int made = 0;
   for (const scenarios::VariantOutcome& outcome : outcomes) made += outcome.runs_made;
   out << "  " << made << " runs in " << report::fixed(seconds, 1) << " s on " << settings.threads

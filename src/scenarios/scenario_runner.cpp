@@ -13,6 +13,7 @@
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
 #include "rigdesign/filters/floor_removal.hpp"
+#include "rigdesign/filters/radius_outlier.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/statistics.hpp"
 #include "rigdesign/sim/noise_stream.hpp"
@@ -402,6 +403,7 @@ ScenarioLoop::ScenarioLoop(const ScenarioDefinition& run_definition, const model
   for (std::size_t i = 0; i < setup.mounts.size(); ++i)
     streams.push_back(sim::noise_stream(params.seed, i));
   settings.add_noise = params.add_noise;
+  settings.depth_matching = params.depth_matching;
   for (const detail::SimulatedMount& mount : setup.mounts) result.timings.push_back(mount.timing);
   result.route_size = scenario.route.size();
   recovery.closest = scenario.route.empty()
@@ -569,6 +571,11 @@ model::PointCloud ScenarioLoop::cast_frame(std::size_t i, long index) {
       detail::to_pose3(history.empty() ? pose : history.at(captured)) * mount.mount.T_robot_sensor;
   model::PointCloud frame = sim::simulate_frame(caster, mount.mode, mount.rays, T_world_sensor,
                                                 settings, streams[i], mount.free_ranges);
+  if (params.camera_radius_outlier && mount.mode.is_camera()) {
+    model::RadiusOutlierParams stage = *params.camera_radius_outlier;
+    stage.radius *= std::max(1, params.camera_decimation);
+    frame = filters::radius_outlier_removal(frame, stage);
+  }
   if (params.negative_obstacles) frame = with_negative_obstacles(frame, resolution, drop_marks);
   return frame;
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "rigdesign/model/optical_frame.hpp"
+#include "rigdesign/sim/depth_matching.hpp"
 
 namespace rigdesign::sim {
 std::vector<model::Vec3> ray_pattern(const model::SensorMode& mode) {
@@ -35,6 +36,11 @@ model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode
     throw std::logic_error("simulate_frame: " + std::to_string(free_ranges.size()) +
                            " free ranges for " + std::to_string(rays.size()) + " rays");
   const bool robot = !free_ranges.empty();
+  const model::DepthMatching* matching =
+      settings.depth_matching && mode.depth_matching && mode.is_camera() ? &*mode.depth_matching
+                                                                         : nullptr;
+  const model::Vec3 up = R_world_sensor.col(2);
+  constexpr double kNoRobot = std::numeric_limits<double>::infinity();
   for (std::size_t r = 0; r < rays.size(); ++r) {
     const model::Vec3& ray = rays[r];
     // Draw both numbers for every ray so a hit or miss elsewhere never shifts the sequence.
@@ -48,11 +54,20 @@ model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode
     const std::optional<double> hit = scene.first_hit(origin, direction);
     // The robot (its body, parts, other housings, supports) stops the ray first.
     const bool on_robot = robot && hit && *hit > free_ranges[r];
-    if (on_robot || !hit || *hit < mode.min_range || *hit > mode.max_range) {
+    if (on_robot || !hit) {
       no_return();
       continue;
     }
-    const double range = *hit + (settings.add_noise ? normal * mode.noise.sigma(*hit) : 0.0);
+    // A window-matching camera reports the depth that fills most of the pixel's window.
+    const std::optional<double> seen =
+        matching ? matched_range(scene, origin, direction, up, *hit, *matching,
+                                 robot ? free_ranges[r] : kNoRobot)
+                 : hit;
+    if (!seen || *seen < mode.min_range || *seen > mode.max_range) {
+      no_return();
+      continue;
+    }
+    const double range = *seen + (settings.add_noise ? normal * mode.noise.sigma(*seen) : 0.0);
     const model::Vec3 point =
         settings.sensor_frame ? model::Vec3(ray * range) : model::Vec3(origin + direction * range);
     cloud.points.push_back(point.cast<float>());

@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <set>
 
 #include "rigdesign/costmap/cost_values.hpp"
 #include "rigdesign/costmap/footprint_collision.hpp"
@@ -145,32 +147,87 @@ TEST_CASE("path follower reaches the goal on an empty floor", "[scenario]") {
         params.goal_tolerance);
 }
 
-TEST_CASE("paper 1 Fig. 12: without the Hit Layer the robot drives into the foam, with it not",
+// The lethal cells of `grid` whose centres lie in the foam's footprint (x 3.0-4.2 m, y
+// 0.15-0.6 m), as world cell indices (the window rolls; the indices do not).
+std::set<std::pair<long, long>> foam_cells(const costmap::CostGrid& grid) {
+  std::set<std::pair<long, long>> cells;
+  const costmap::GridWindow& window = grid.window();
+  for (int y = 0; y < window.height; ++y) {
+    for (int x = 0; x < window.width; ++x) {
+      const model::Vec2 c = window.centre_of(x, y);
+      if (c.x() < 3.0 || c.x() > 4.2 || c.y() < 0.15 || c.y() > 0.6) continue;
+      if (grid.at(x, y) != costmap::cost::kLethal) continue;
+      cells.insert({window.origin_cell.x() + x, window.origin_cell.y() + y});
+    }
+  }
+  return cells;
+}
+
+// Paper 1's Fig. 12 as mechanisms, not as its outcome (issue 54: a test that fails unless the
+// paper's collision comes out invites tuning the scene). Whether each run collides is reported
+// in docs/costmap_scenarios.md; here: who can see the foam, that the 2D layer forgets it while
+// it still lies ahead, and that the Hit Layer and the voxel layer hold it at that moment.
+TEST_CASE("paper 1 Fig. 12: the 2D layer forgets the foam ahead, the Hit Layer and voxels keep it",
           "[scenario]") {
+  // Who sees the foam (issue 54 item 3): points inside its box (x 3.0-4.2, y 0.15-0.6, z
+  // 0.33-0.39 m) within nav2's 2.5 m marking range of their sensor, per mount in rig order
+  // (front camera, left, right, back pico flexx, VLP-16). Worked by hand: the VLP-16's lowest
+  // beam (-15 deg, from 1.04 m) is at the foam's top 0.65 / sin 15 deg = 2.51 m along the ray,
+  // beyond 2.5 m, and lower still farther out; the left pico flexx's top ray (+2.5 deg from
+  // 0.30 m) would need 0.69 m to rise to 0.33 m, the wall being 0.14 m away; the others look
+  // away from it. Only the front camera can mark it.
+  std::vector<int> foam_points(5, 0);
+  std::set<std::pair<long, long>> marked;  // foam cells the master grid has held
+  std::optional<double> forgotten_at;      // [s] the first update a held foam cell was cleared
+  std::pair<long, long> forgotten_cell;
+  double forgotten_robot_x = 0.0;
+  const auto watch = [&](const scenarios::ScenarioStep& step) {
+    for (std::size_t m = 0; m < step.clouds.size() && m < foam_points.size(); ++m) {
+      const model::PointCloud& cloud = step.clouds[m];
+      for (const model::Point3f& p : cloud.points) {
+        const bool inside = p.x() >= 3.0f && p.x() <= 4.2f && p.y() >= 0.15f && p.y() <= 0.6f &&
+                            p.z() >= 0.33f && p.z() <= 0.39f;
+        if (inside && (p - cloud.origin).norm() <= 2.5f) ++foam_points[m];
+      }
+    }
+    const std::set<std::pair<long, long>> now = foam_cells(step.costmap->master());
+    for (const auto& cell : marked) {
+      if (now.count(cell) || forgotten_at) continue;
+      forgotten_at = step.time;
+      forgotten_cell = cell;
+      forgotten_robot_x = step.pose.position.x();
+    }
+    marked.insert(now.begin(), now.end());
+  };
   const scenarios::ScenarioResult forgetting =
-      run("wall_following", costmap::ObstacleLayerKind::obstacle, false);
-  CHECK(forgetting.collided);
-  CHECK(forgetting.collision_object == "foam");
-  // Contact is found within one control step: at most 0.4 m/s x 0.05 s = 2 cm deep.
-  CHECK(forgetting.min_clearance < 0.0);
-  CHECK(forgetting.min_clearance >= -0.4 / 20.0);
-  // The foam spans x 3.0-4.2 m; the body (r 0.45) meets it only with its axis past 2.55 m.
-  CHECK(forgetting.collision_position.x() > 3.0 - 0.45);
-  CHECK(forgetting.collision_position.x() < 4.2 + 0.45);
+      run("wall_following", costmap::ObstacleLayerKind::obstacle, false, watch);
+  CHECK(foam_points[0] > 0);
+  CHECK(foam_points[1] == 0);
+  CHECK(foam_points[2] == 0);
+  CHECK(foam_points[3] == 0);
+  CHECK(foam_points[4] == 0);
+  // The 2D layer marked foam cells and cleared one of them before the body (r 0.45 m) could
+  // reach the foam: the VLP-16's rays pass over it to the wall and clear its cells.
+  REQUIRE_FALSE(marked.empty());
+  REQUIRE(forgotten_at);
+  CHECK(forgotten_robot_x < 3.0 - 0.45);
+  if (forgetting.collided) {  // contact is found within one control step: 0.4 m/s x 0.05 s
+    CHECK(forgetting.min_clearance >= -0.4 / 20.0);
+  }
 
-  const scenarios::ScenarioResult remembering =
-      run("wall_following", costmap::ObstacleLayerKind::obstacle, true);
-  CHECK_FALSE(remembering.collided);
-  CHECK(remembering.reached_goal);
-  CHECK(remembering.min_clearance > 0.0);
-  // At the start the wall is 0.6 m from the axis: 0.15 m clearance, an upper bound.
-  CHECK(remembering.min_clearance <= 0.6 - 0.45 + 1e-9);
-
-  // Paper 2's voxel layer keeps the foam without help: the lidar's rays pass above its voxels.
-  const scenarios::ScenarioResult voxels =
-      run("wall_following", costmap::ObstacleLayerKind::voxel, false);
-  CHECK_FALSE(voxels.collided);
-  CHECK(voxels.reached_goal);
+  // Until the first foam cell is cleared the three runs see, plan and drive alike; at the
+  // update the 2D layer cleared that cell, the Hit Layer (counts of at least 3 per mark) and
+  // the voxel layer (the lidar's rays cross voxels above the foam's) still hold it.
+  const auto held_at = [&](costmap::ObstacleLayerKind layer, bool hit_layer) {
+    bool held = false;
+    run("wall_following", layer, hit_layer, [&](const scenarios::ScenarioStep& step) {
+      if (std::abs(step.time - *forgotten_at) < 1e-9)
+        held = foam_cells(step.costmap->master()).count(forgotten_cell) > 0;
+    });
+    return held;
+  };
+  CHECK(held_at(costmap::ObstacleLayerKind::obstacle, true));
+  CHECK(held_at(costmap::ObstacleLayerKind::voxel, false));
 }
 
 TEST_CASE("stationary: the motion condition keeps the cart's cells while the robot waits",

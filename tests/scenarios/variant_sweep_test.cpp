@@ -1,7 +1,11 @@
-// Issue 35 item 3: the variants paper 2's Table 1 is run over, and its pooled average speed.
+// Issue 35 item 3: the variants paper 2's Table 1 is run over, and its pooled average speed;
+// issue 54: the sources of a subset nothing clears, and the bootstrap over seeds.
 #include "rigdesign/scenarios/variant_sweep.hpp"
 
 #include <catch2/catch.hpp>
+#include <limits>
+
+#include "rigdesign/scenarios/seed_bootstrap.hpp"
 
 using namespace rigdesign;
 using Catch::Matchers::WithinAbs;
@@ -57,4 +61,69 @@ TEST_CASE("variant means: the average speed pooled over the legs to goals reache
   CHECK_THAT(means.recovery_seconds, WithinAbs(6.0, 1e-12));
   CHECK(means.drove_off == 1);
   CHECK(scenarios::means_of({}).average_speed == 0.0);
+}
+
+TEST_CASE("a subset none of whose sources clears has them clear; one that clears is kept",
+          "[scenario]") {
+  scenarios::ScenarioParams params;
+  costmap::ObservationSource marks_only;
+  marks_only.clearing = false;
+  params.mount_sources = {{"scanner", marks_only}};       // paper 2's lidar: marking only
+  const model::Rig both = rig_of({"camera", "scanner"});  // camera: the default source, clears
+  bool added = true;
+  const scenarios::ScenarioParams kept = scenarios::params_for_subset(both, params, added);
+  CHECK_FALSE(added);
+  REQUIRE(kept.mount_sources.size() == 1);
+  CHECK_FALSE(kept.mount_sources[0].source.clearing);
+  const scenarios::ScenarioParams alone =
+      scenarios::params_for_subset(rig_of({"scanner"}), params, added);
+  CHECK(added);
+  REQUIRE(alone.mount_sources.size() == 1);
+  CHECK(alone.mount_sources[0].source.clearing);
+  CHECK(alone.mount_sources[0].source.marking);
+}
+
+TEST_CASE("percentile interval by nearest rank, worked by hand", "[scenario]") {
+  // 1..40 shuffled; 95 %: ranks ceil(40 x 0.025) = 1 and ceil(40 x 0.975) = 39.
+  std::vector<double> values;
+  for (int i = 40; i >= 1; --i) values.push_back(i);
+  const scenarios::Interval ninety_five = scenarios::percentile_interval(values, 0.95);
+  CHECK(ninety_five.low == 1.0);
+  CHECK(ninety_five.high == 39.0);
+  // 50 %: ranks ceil(40 x 0.25) = 10 and ceil(40 x 0.75) = 30.
+  const scenarios::Interval half = scenarios::percentile_interval(values, 0.5);
+  CHECK(half.low == 10.0);
+  CHECK(half.high == 30.0);
+  CHECK_THROWS(scenarios::percentile_interval({}, 0.95));
+  CHECK_THROWS(scenarios::percentile_interval({1.0}, 1.0));
+}
+
+TEST_CASE("seed resamples: indices in range, the same for the same seed", "[scenario]") {
+  const auto a = scenarios::seed_resamples(20, 50, 7);
+  const auto b = scenarios::seed_resamples(20, 50, 7);
+  REQUIRE(a.size() == 50);
+  CHECK(a == b);
+  for (const auto& resample : a) {
+    REQUIRE(resample.size() == 20);
+    for (const std::size_t i : resample) CHECK(i < 20);
+  }
+  CHECK(scenarios::seed_resamples(20, 50, 8) != a);
+}
+
+TEST_CASE("resampled critical distance: the largest own margin, infinite for a seed never clear",
+          "[scenario]") {
+  scenarios::VariantOutcome outcome;
+  outcome.seed_critical_distances = {0.0, 0.10, std::nullopt, 0.05};
+  CHECK(scenarios::resampled_critical_distance(outcome, {0, 3, 3}) == 0.05);
+  CHECK(scenarios::resampled_critical_distance(outcome, {1, 0}) == 0.10);
+  CHECK(scenarios::resampled_critical_distance(outcome, {0, 2}) ==
+        std::numeric_limits<double>::infinity());
+  // Speeds pooled over the picked runs, a seed picked twice counted twice: seed 0 drove 2 m
+  // in 10 s, seed 1 6 m in 10 s: picked {0, 0, 1}: 10 m in 30 s.
+  outcome.runs.resize(2);
+  outcome.runs[0].reached_distance = 2.0;
+  outcome.runs[0].reached_seconds = 10.0;
+  outcome.runs[1].reached_distance = 6.0;
+  outcome.runs[1].reached_seconds = 10.0;
+  CHECK_THAT(scenarios::resampled_average_speed(outcome, {0, 0, 1}), WithinAbs(10.0 / 30.0, 1e-12));
 }

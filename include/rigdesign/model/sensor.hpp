@@ -111,6 +111,19 @@ struct Emitter {
   bool supports(const std::string& measure) const;
 };
 
+/// How a structured-light or stereo camera finds depth (issue 54 item 1): by matching a window
+/// of pixels against a pattern or the other image; a surface that fills less than about half
+/// of the window along a row or a column takes the depth of what fills the rest, or none.
+struct DepthMatching {
+  int window_px = 0;          ///< the matching window's side in pixels
+  double window_angle = 0.0;  ///< [rad] that side as an angle: window_px x FOV / image width
+  /// [m px] baseline times focal length: depths z1, z2 are one surface to the matcher while
+  /// their disparities differ by less than a pixel, |z1 - z2| < z^2 / baseline_focal.
+  double baseline_focal = 0.0;
+  std::string source;
+  SourceLocation where;
+};
+
 struct SensorMode {
   std::string id;
   FieldOfView fov;
@@ -130,6 +143,8 @@ struct SensorMode {
   /// [rad] How much narrower than nominal a unit's full horizontal and vertical angles may be
   /// (a datasheet's "87 +- 3 deg"): the mounting tolerance judges the narrowest (issue 38).
   std::optional<std::array<double, 2>> fov_spread;
+  /// Depth by window matching (structured light, stereo); nothing: each ray its own return.
+  std::optional<DepthMatching> depth_matching;
   SourceLocation where;
 
   /// The coarser of the two ray spacings [rad]: what sets the smallest obstacle seen.

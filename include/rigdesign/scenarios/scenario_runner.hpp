@@ -15,6 +15,7 @@
 #include "rigdesign/costmap/dijkstra_planner.hpp"
 #include "rigdesign/costmap/dwa_planner.hpp"
 #include "rigdesign/costmap/path_follower.hpp"
+#include "rigdesign/model/filter_params.hpp"
 #include "rigdesign/model/filtering_loads.hpp"
 #include "rigdesign/model/rig.hpp"
 #include "rigdesign/model/scene.hpp"
@@ -70,7 +71,10 @@ struct ScenarioParams {
   /// the tests' and default runs' speed. 1 casts every ray.
   int camera_decimation = 8;
   int lidar_decimation = 4;
-  bool add_noise = true;   ///< range noise per sensor model
+  bool add_noise = true;  ///< range noise per sensor model
+  /// Cameras with depth_matching report the depth filling most of each pixel's window
+  /// (sim/depth_matching.hpp); false: every ray its own first hit.
+  bool depth_matching = true;
   std::uint64_t seed = 1;  ///< sensor noise streams and frame phases
   /// Sensors as they run (sensor_timing.hpp): each mount captures at its own rate and its
   /// frame reaches the costmap a latency later; the filters' share of that latency is this
@@ -93,6 +97,13 @@ struct ScenarioParams {
   /// steep angle) marks drops on flat floor, as the stage would on the robot without noise
   /// removal before it; scenarios with drops turn it on (apply_scenario_settings).
   bool negative_obstacles = false;
+  /// Paper 2's "points with too few neighbours removed" (filters::radius_outlier_removal) on
+  /// every camera frame before the costmap; nothing: off. The 2D scanner's scan reaches the
+  /// costmap as a LaserScan, which the point-cloud stage does not see (our reading of paper 2's
+  /// section 3.2). With a camera ray stride k the radius is taken k times larger, which keeps a
+  /// point's neighbour count on a surface what it is at full resolution (k^2 fewer points per
+  /// area, k^2 more area).
+  std::optional<model::RadiusOutlierParams> camera_radius_outlier;
   /// False: frames reach the costmap the moment they are captured (no driver or filter time),
   /// the idealised loop in which, with phases 0 and rates that are multiples of the update
   /// rate, every update sees the world as it is at that update.

@@ -27,6 +27,13 @@ std::vector<RigVariant> rig_variants(const model::Rig& rig);
 /// `rig` with only the mounts of `variant`.
 model::Rig rig_with(const model::Rig& rig, const RigVariant& variant);
 
+/// `params` for a subset of a rig's mounts: when none of the subset's sources clears (paper 2's
+/// lidar, which only marks, driving alone), each of them clears too; a costmap no source clears
+/// keeps every mark for ever, and the trails of people walking by close the office. Sets
+/// `clearing_added` when it did so.
+ScenarioParams params_for_subset(const model::Rig& subset, ScenarioParams params,
+                                 bool& clearing_added);
+
 /// One run's outcome, without its trajectory.
 struct RunSummary {
   std::uint64_t seed = 0;
@@ -63,12 +70,18 @@ struct VariantOutcome {
   RigVariant variant;
   /// Not run: none of its mounts can mark the costmap (the InputError's message).
   std::string skipped;
+  /// None of its mounts' sources cleared, so they were made to (params_for_subset).
+  bool clearing_added = false;
   /// [m] the smallest margin at which no seed collided; none when every margin tried collided.
   std::optional<double> critical_distance;
   /// The runs at the critical distance (every seed), or at the largest margin when none.
   std::vector<RunSummary> runs;
   /// For each margin below the critical distance, the lowest seed that collided there.
   std::vector<RunSummary> failures;
+  /// Per seed, in seed order: the smallest margin at which its own run was clear (its own
+  /// sweep stops there); none when it collided at every margin. The critical distance is at
+  /// least the largest of these.
+  std::vector<std::optional<double>> seed_critical_distances;
   int runs_made = 0;  ///< all runs of the sweep
 };
 
@@ -76,11 +89,12 @@ struct VariantOutcome {
 /// scenario file ignores them).
 using ScenarioFactory = std::function<ScenarioDefinition(std::uint64_t seed, double body_radius)>;
 
-/// Runs the scenario `make_scenario` builds with `variant`'s mounts: for each margin in order,
-/// seeds in order (params.seed and the scenario's layout both take the seed), stopping at a
-/// margin's first collision (the lowest colliding seed: runs go in seed-ordered batches of
-/// `threads`), until a margin runs every seed without collision. `on_run` is called after each run,
-/// from the calling thread. Deterministic for the settings, whatever the thread count.
+/// Runs the scenario `make_scenario` builds with `variant`'s mounts (params.seed and the
+/// scenario's layout both take the seed): each seed sweeps the margins in order until its first
+/// run without a collision; then, from the largest of those margins up, every seed runs at a
+/// margin (reusing its own sweep's run there) until a margin has no collision, the critical
+/// distance. Seeds run in batches of `threads`; `on_run` is called after each run, from the
+/// calling thread. Deterministic for the settings, whatever the thread count.
 VariantOutcome sweep_variant(const ScenarioFactory& make_scenario, const model::Rig& rig,
                              const model::SensorLibrary& library, const ScenarioParams& params,
                              const RigVariant& variant, const SweepSettings& settings,

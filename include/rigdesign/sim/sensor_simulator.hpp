@@ -30,6 +30,10 @@ struct SimulationSettings {
   /// An organised cloud, as depth cameras publish one: every ray keeps its place, a ray that
   /// returns nothing gives a NaN point (what mean pooling of the depth image needs).
   bool keep_misses = false;
+  /// A camera whose mode has depth_matching reports, per pixel, the depth that fills most of
+  /// its matching window (depth_matching.hpp): thin objects at range vanish. False: every ray
+  /// returns its own first hit.
+  bool depth_matching = true;
 };
 
 /// One frame. `T_world_sensor` places the sensor; the cloud's origin and orientation record

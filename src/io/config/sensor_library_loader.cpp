@@ -33,6 +33,7 @@ const std::vector<std::string> kModeKeys = {"id",
                                             "driver_cpu",
                                             "emitter",
                                             "fov_spread_deg",
+                                            "depth_matching",
                                             "note"};
 
 const std::vector<std::string> kMitigations = {"sync", "delay", "phase_lock", "channels",
@@ -203,6 +204,38 @@ std::optional<model::Emitter> read_emitter(MapReader& reader) {
   return emitter;
 }
 
+// `depth_matching: {window_px, image_width_px, baseline_m, source}` of a camera (issue 54).
+std::optional<model::DepthMatching> read_depth_matching(MapReader& reader,
+                                                        const model::SensorMode& mode) {
+  const std::string expected =
+      "a map {window_px: the matching window's side in pixels, 1..64; image_width_px: the image "
+      "it is counted in, 16..10000; baseline_m: projector or second camera to the depth camera, "
+      "metres; source}";
+  auto map = reader.map("depth_matching", Need::optional, expected);
+  if (!map) return std::nullopt;
+  reader.require(mode.fov.shape().is_camera(), "depth_matching", "is given for a scanner",
+                 "depth_matching only on a camera's mode");
+  const auto window = map->integer("window_px", Need::required, "pixels, 1..64");
+  map->require(!window || (*window >= 1 && *window <= 64), "window_px", "is outside 1..64",
+               "pixels, 1..64");
+  const auto width = map->integer("image_width_px", Need::required, "pixels, 16..10000");
+  map->require(!width || (*width >= 16 && *width <= 10000), "image_width_px",
+               "is outside 16..10000", "pixels, 16..10000");
+  const double baseline = io::positive_length(*map, "baseline_m", Need::required, "metres, > 0");
+  model::DepthMatching matching;
+  matching.where = map->location();
+  matching.source = map->text("source", Need::required, "where the facts come from").value_or("");
+  map->reject_unknown_keys();
+  if (!window || !width || !(*window >= 1 && *window <= 64) || !(*width >= 16 && *width <= 10000))
+    return std::nullopt;
+  matching.window_px = static_cast<int>(*window);
+  const double h = mode.fov.horizontal();
+  matching.window_angle = *window * h / static_cast<double>(*width);
+  // A pinhole image: focal length [px] = half the width over tan(half the angle).
+  matching.baseline_focal = baseline * (0.5 * static_cast<double>(*width)) / std::tan(0.5 * h);
+  return matching;
+}
+
 model::SensorMode read_mode(MapReader& reader, std::optional<MapReader>& defaults) {
   model::SensorMode mode;
   mode.where = reader.location();
@@ -253,6 +286,7 @@ model::SensorMode read_mode(MapReader& reader, std::optional<MapReader>& default
       mode.fov_spread =
           std::array<double, 2>{model::deg_to_rad((*spread)[0]), model::deg_to_rad((*spread)[1])};
   }
+  mode.depth_matching = read_depth_matching(source_of("depth_matching", reader, defaults), mode);
   source_of("note", reader, defaults).text("note", Need::optional);
   reader.reject_keys_other_than(kModeKeys);
   return mode;
