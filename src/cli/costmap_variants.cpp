@@ -82,9 +82,8 @@ nlohmann::json outcome_json(const scenarios::VariantOutcome& outcome) {
   for (const scenarios::RunSummary& run : outcome.runs) runs.push_back(run_json(run));
   nlohmann::json failures = nlohmann::json::array();
   for (const scenarios::RunSummary& run : outcome.failures) failures.push_back(run_json(run));
-  nlohmann::json seeds = nlohmann::json::array();
-  for (const std::optional<double>& own : outcome.seed_critical_distances)
-    seeds.push_back(own ? nlohmann::json(*own) : nlohmann::json());  // null: never clear
+  nlohmann::json collided = nlohmann::json::array();  // per margin run, per seed
+  for (const std::vector<bool>& margin : outcome.collided_by_margin) collided.push_back(margin);
   const scenarios::VariantMeans means = scenarios::means_of(outcome.runs);
   return {
       {"variant", outcome.variant.label},
@@ -100,27 +99,20 @@ nlohmann::json outcome_json(const scenarios::VariantOutcome& outcome) {
       {"runs_made", outcome.runs_made},
       {"runs", runs},
       {"collisions_below", failures},
-      {"seed_critical_distances_m", seeds}};
+      {"collided_by_margin", collided}};
 }
 
-// The seeds' own critical distances, counted: "0 cm x14, 5 cm x5, > 30 cm x1".
-std::string seed_distances_text(const scenarios::VariantOutcome& outcome,
-                                const scenarios::SweepSettings& settings) {
-  std::map<double, int> counts;
-  int never = 0;
-  for (const std::optional<double>& own : outcome.seed_critical_distances) {
-    if (own) {
-      ++counts[*own];
-    } else {
-      ++never;
-    }
-  }
+// How many seeds collided at each margin run: "0 cm 3/20, 5 cm 1/20, 10 cm 0/20". A seed clear
+// at one margin may collide at a larger one: the critical distance rests on the worst seed.
+std::string collisions_text(const scenarios::VariantOutcome& outcome,
+                            const scenarios::SweepSettings& settings) {
   std::string text;
-  for (const auto& [margin, count] : counts)
-    text += (text.empty() ? "" : ", ") + centimetres(margin) + " cm x" + std::to_string(count);
-  if (never > 0)
-    text += (text.empty() ? "" : ", ") + std::string("> ") + centimetres(settings.margins.back()) +
-            " cm x" + std::to_string(never);
+  for (std::size_t m = 0; m < outcome.collided_by_margin.size(); ++m) {
+    const std::vector<bool>& collided = outcome.collided_by_margin[m];
+    const auto count = std::count(collided.begin(), collided.end(), true);
+    text += (text.empty() ? "" : ", ") + centimetres(settings.margins.at(m)) + " cm " +
+            std::to_string(count) + "/" + std::to_string(collided.size());
+  }
   return text;
 }
 
@@ -168,7 +160,8 @@ double difference(double a, double b) {
 // then each mount alone (rig_variants' order for two mounts), each ordering with a paired
 // bootstrap over the seeds (issue 54: reported whether or not it holds).
 void print_paper2_checks(std::ostream& out, const RigInputs& inputs,
-                         const std::vector<scenarios::VariantOutcome>& outcomes) {
+                         const std::vector<scenarios::VariantOutcome>& outcomes,
+                         const scenarios::SweepSettings& settings) {
   const model::Rig& rig = inputs.rig;
   if (rig.mounts.size() != 2 || outcomes.size() != 3) return;
   const bool first_lidar = is_lidar(inputs.library, rig.mounts[0]);
@@ -181,8 +174,10 @@ void print_paper2_checks(std::ostream& out, const RigInputs& inputs,
   const auto speed = [](const scenarios::VariantOutcome& o) {
     return [&o](const Picked& p) { return scenarios::resampled_average_speed(o, p); };
   };
-  const auto critical = [](const scenarios::VariantOutcome& o) {
-    return [&o](const Picked& p) { return scenarios::resampled_critical_distance(o, p); };
+  const auto critical = [&](const scenarios::VariantOutcome& o) {
+    return [&o, &settings](const Picked& p) {
+      return scenarios::resampled_critical_distance(o, settings.margins, p);
+    };
   };
   const auto v_both = speed(both), v_lidar = speed(lidar), v_camera = speed(camera);
   const auto d_both = critical(both), d_lidar = critical(lidar), d_camera = critical(camera);
@@ -197,7 +192,7 @@ void print_paper2_checks(std::ostream& out, const RigInputs& inputs,
       {"both as close as the closer alone",
        [&](const Picked& p) { return difference(std::min(d_lidar(p), d_camera(p)), d_both(p)); },
        true, "cm"}};
-  Picked all_seeds(both.seed_critical_distances.size());
+  Picked all_seeds(both.runs.size());
   for (std::size_t i = 0; i < all_seeds.size(); ++i) all_seeds[i] = i;
   const std::vector<Picked> resamples =
       scenarios::seed_resamples(all_seeds.size(), kBootstrapRounds, kBootstrapSeed);
@@ -249,7 +244,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
   table.add_column("recovery [s]", report::TextTable::Align::right);
   table.add_column("drove off", report::TextTable::Align::right);
   table.add_column("collision just below", report::TextTable::Align::left);
-  table.add_column("seeds' own critical distances", report::TextTable::Align::left);
+  table.add_column("seeds colliding at each margin", report::TextTable::Align::left);
   nlohmann::json outcomes_json = nlohmann::json::array();
   for (const scenarios::VariantOutcome& outcome : outcomes) {
     const scenarios::VariantMeans means = scenarios::means_of(outcome.runs);
@@ -263,7 +258,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
          ran ? report::fixed(means.goals_refused, 2) : "-",
          ran ? report::fixed(means.recovery_seconds, 1) : "-",
          ran ? std::to_string(means.drove_off) + "/" + std::to_string(outcome.runs.size()) : "-",
-         below_text(outcome), ran ? seed_distances_text(outcome, settings) : "-"});
+         below_text(outcome), ran ? collisions_text(outcome, settings) : "-"});
     outcomes_json.push_back(outcome_json(outcome));
   }
   table.print(out, "  ");
@@ -283,7 +278,7 @@ void run_costmap_variants(std::ostream& out, std::ostream& err, const RigInputs&
     paper.add_row({row.variant, centimetres(row.critical_distance), centimetres(row.speed)});
   }
   paper.print(out, "  ");
-  print_paper2_checks(out, inputs, outcomes);
+  print_paper2_checks(out, inputs, outcomes, settings);
   int made = 0;
   for (const scenarios::VariantOutcome& outcome : outcomes) made += outcome.runs_made;
   out << "  " << made << " runs in " << report::fixed(seconds, 1) << " s on " << settings.threads

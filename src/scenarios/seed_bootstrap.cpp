@@ -24,13 +24,16 @@ std::vector<std::vector<std::size_t>> seed_resamples(std::size_t count, int roun
 }
 
 double resampled_critical_distance(const VariantOutcome& outcome,
+                                   const std::vector<double>& margins,
                                    const std::vector<std::size_t>& picked) {
-  double largest = -std::numeric_limits<double>::infinity();
-  for (const std::size_t i : picked) {
-    const std::optional<double>& own = outcome.seed_critical_distances.at(i);
-    largest = std::max(largest, own.value_or(std::numeric_limits<double>::infinity()));
+  const std::size_t tried = std::min(margins.size(), outcome.collided_by_margin.size());
+  for (std::size_t m = 0; m < tried; ++m) {
+    const std::vector<bool>& collided = outcome.collided_by_margin[m];
+    const bool clear =
+        std::none_of(picked.begin(), picked.end(), [&](std::size_t i) { return collided.at(i); });
+    if (clear) return margins[m];
   }
-  return largest;
+  return std::numeric_limits<double>::infinity();
 }
 
 double resampled_average_speed(const VariantOutcome& outcome,

@@ -26,56 +26,23 @@ RunSummary run_one(const ScenarioFactory& make_scenario, const model::Rig& rig,
   return summarize_run(seed, margin, run_scenario(scenario, rig, library, run_params));
 }
 
-// Every seed's own sweep: margins ascending until its first run without a collision (issue
-// 54: the critical distance of a variant is the largest of these, and a confidence interval
-// needs each seed's). Seeds run `threads` at a time; results and callbacks in seed order.
-std::vector<std::vector<RunSummary>> sweep_each_seed(
-    const ScenarioFactory& make_scenario, const model::Rig& rig,
-    const model::SensorLibrary& library, const ScenarioParams& params,
-    const SweepSettings& settings, const std::function<void(const RunSummary&)>& on_run) {
-  std::vector<std::vector<RunSummary>> per_seed(static_cast<std::size_t>(settings.seeds));
+// Every seed at `margin`, `threads` at a time; results and callbacks in seed order.
+std::vector<RunSummary> run_all_seeds(const ScenarioFactory& make_scenario, const model::Rig& rig,
+                                      const model::SensorLibrary& library,
+                                      const ScenarioParams& params, double margin,
+                                      const SweepSettings& settings,
+                                      const std::function<void(const RunSummary&)>& on_run) {
+  std::vector<RunSummary> runs(static_cast<std::size_t>(settings.seeds));
   const int threads = std::max(1, settings.threads);
   for (int start = 0; start < settings.seeds; start += threads) {
     const int batch = std::min(threads, settings.seeds - start);
     model::parallel_for(static_cast<std::size_t>(batch), batch, [&](std::size_t j) {
       const std::size_t s = static_cast<std::size_t>(start) + j;
-      const std::uint64_t seed = settings.first_seed + s;
-      for (const double margin : settings.margins) {
-        per_seed[s].push_back(run_one(make_scenario, rig, library, params, seed, margin));
-        if (!per_seed[s].back().collided) break;
-      }
+      runs[s] = run_one(make_scenario, rig, library, params, settings.first_seed + s, margin);
     });
     for (int j = 0; j < batch; ++j)
-      for (const RunSummary& run : per_seed[static_cast<std::size_t>(start + j)])
-        if (on_run) on_run(run);
+      if (on_run) on_run(runs[static_cast<std::size_t>(start + j)]);
   }
-  return per_seed;
-}
-
-// Every seed's run at `margin`: the one its own sweep made there, else a new run.
-std::vector<RunSummary> runs_at(std::size_t margin_index,
-                                const std::vector<std::vector<RunSummary>>& per_seed,
-                                const ScenarioFactory& make_scenario, const model::Rig& rig,
-                                const model::SensorLibrary& library, const ScenarioParams& params,
-                                const SweepSettings& settings, int& runs_made,
-                                const std::function<void(const RunSummary&)>& on_run) {
-  std::vector<RunSummary> runs(per_seed.size());
-  std::vector<std::size_t> missing;
-  for (std::size_t s = 0; s < per_seed.size(); ++s) {
-    if (per_seed[s].size() > margin_index) {
-      runs[s] = per_seed[s][margin_index];
-    } else {
-      missing.push_back(s);
-    }
-  }
-  const double margin = settings.margins[margin_index];
-  model::parallel_for(missing.size(), std::max(1, settings.threads), [&](std::size_t k) {
-    const std::size_t s = missing[k];
-    runs[s] = run_one(make_scenario, rig, library, params, settings.first_seed + s, margin);
-  });
-  runs_made += static_cast<int>(missing.size());
-  for (const std::size_t s : missing)
-    if (on_run) on_run(runs[s]);
   return runs;
 }
 
@@ -173,38 +140,22 @@ VariantOutcome sweep_variant(const ScenarioFactory& make_scenario, const model::
     outcome.skipped = error.what();
     return outcome;
   }
-  const std::vector<std::vector<RunSummary>> per_seed =
-      sweep_each_seed(make_scenario, subset, library, own_params, settings, on_run);
-  std::size_t first_clear_everywhere = 0;  // the largest of the seeds' first clear margins
-  for (const std::vector<RunSummary>& runs : per_seed) {
+  for (const double margin : settings.margins) {
+    std::vector<RunSummary> runs =
+        run_all_seeds(make_scenario, subset, library, own_params, margin, settings, on_run);
     outcome.runs_made += static_cast<int>(runs.size());
-    const bool cleared = !runs.back().collided;
-    outcome.seed_critical_distances.push_back(cleared ? std::optional<double>(runs.back().margin)
-                                                      : std::nullopt);
-    first_clear_everywhere = std::max(first_clear_everywhere, runs.size() - 1);
-  }
-  // Below it some seed collides; from it up, the first margin at which every seed's run is clear
-  // (a seed clear at a smaller margin may still collide at a larger one).
-  for (std::size_t m = 0; m < settings.margins.size(); ++m) {
-    if (m < first_clear_everywhere) {
-      for (const std::vector<RunSummary>& runs : per_seed) {
-        if (runs.size() > m && runs[m].collided) {
-          outcome.failures.push_back(runs[m]);  // the lowest seed that collided there
-          break;
-        }
-      }
-      continue;
-    }
-    std::vector<RunSummary> runs = runs_at(m, per_seed, make_scenario, subset, library, own_params,
-                                           settings, outcome.runs_made, on_run);
+    std::vector<bool> collided;
+    for (const RunSummary& run : runs) collided.push_back(run.collided);
+    outcome.collided_by_margin.push_back(collided);
     const auto collision =
         std::find_if(runs.begin(), runs.end(), [](const RunSummary& r) { return r.collided; });
-    outcome.runs = std::move(runs);  // the largest margin's runs stand when none is clear
-    if (collision == outcome.runs.end()) {
-      outcome.critical_distance = settings.margins[m];
+    if (collision == runs.end()) {
+      outcome.critical_distance = margin;
+      outcome.runs = std::move(runs);
       return outcome;
     }
-    outcome.failures.push_back(*collision);
+    outcome.failures.push_back(*collision);  // the lowest seed that collided there
+    outcome.runs = std::move(runs);          // the largest margin's runs stand when none is clear
   }
   return outcome;
 }

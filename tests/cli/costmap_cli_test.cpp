@@ -199,9 +199,11 @@ TEST_CASE("costmap CLI: a scenario file of one's own, goal by goal, and its vari
   REQUIRE(table.size() == 3);  // both scanners, then each alone
   CHECK(table[0]["variant"].get<std::string>().find(" + ") != std::string::npos);
   CHECK(variants.out.find("paper 2, Table 1") != std::string::npos);
-  for (const auto& variant : table) {  // one seed: its own clear margin is the variant's
-    REQUIRE(variant["seed_critical_distances_m"].size() == 1);
-    CHECK(variant["seed_critical_distances_m"][0] == variant["critical_distance_m"]);
+  for (const auto& variant : table) {  // one margin, one seed: its run is the row's
+    REQUIRE(variant["collided_by_margin"].size() == 1);
+    REQUIRE(variant["collided_by_margin"][0].size() == 1);
+    CHECK(variant["collided_by_margin"][0][0] == variant["runs"][0]["collided"]);
+    CHECK(variant["critical_distance_m"].is_null() == variant["runs"][0]["collided"].get<bool>());
   }
 
   const CliResult missing =

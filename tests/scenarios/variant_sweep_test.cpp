@@ -110,13 +110,19 @@ TEST_CASE("seed resamples: indices in range, the same for the same seed", "[scen
   CHECK(scenarios::seed_resamples(20, 50, 8) != a);
 }
 
-TEST_CASE("resampled critical distance: the largest own margin, infinite for a seed never clear",
+TEST_CASE("resampled critical distance: the first margin none of the picked seeds collided at",
           "[scenario]") {
+  // Four seeds at margins 0, 5 and 10 cm (true: collided). Seed 1 is clear at 5 cm and
+  // collides at 10: a seed has no critical distance of its own.
   scenarios::VariantOutcome outcome;
-  outcome.seed_critical_distances = {0.0, 0.10, std::nullopt, 0.05};
-  CHECK(scenarios::resampled_critical_distance(outcome, {0, 3, 3}) == 0.05);
-  CHECK(scenarios::resampled_critical_distance(outcome, {1, 0}) == 0.10);
-  CHECK(scenarios::resampled_critical_distance(outcome, {0, 2}) ==
+  outcome.collided_by_margin = {{true, false, true, true},    // 0 cm
+                                {false, false, true, true},   // 5 cm
+                                {false, true, true, false}};  // 10 cm
+  const std::vector<double> margins = {0.0, 0.05, 0.10, 0.15};
+  CHECK(scenarios::resampled_critical_distance(outcome, margins, {1, 1}) == 0.0);
+  CHECK(scenarios::resampled_critical_distance(outcome, margins, {0, 1}) == 0.05);
+  CHECK(scenarios::resampled_critical_distance(outcome, margins, {0, 3, 3}) == 0.10);
+  CHECK(scenarios::resampled_critical_distance(outcome, margins, {1, 2}) ==
         std::numeric_limits<double>::infinity());
   // Speeds pooled over the picked runs, a seed picked twice counted twice: seed 0 drove 2 m
   // in 10 s, seed 1 6 m in 10 s: picked {0, 0, 1}: 10 m in 30 s.

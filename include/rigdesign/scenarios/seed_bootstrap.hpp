@@ -17,8 +17,10 @@ std::vector<std::vector<std::size_t>> seed_resamples(std::size_t count, int roun
                                                      std::uint64_t seed);
 
 /// The critical distance [m] of the seeds `picked` (indices into the variant's seeds): the
-/// largest of their own first clear margins; infinity when one of them never cleared.
+/// first of `margins` at which none of them collided (outcome.collided_by_margin); infinity
+/// when they collided at every margin run.
 double resampled_critical_distance(const VariantOutcome& outcome,
+                                   const std::vector<double>& margins,
                                    const std::vector<std::size_t>& picked);
 
 /// The average speed [m/s] of the seeds `picked`, pooled over their runs at the table's margin

@@ -78,10 +78,11 @@ struct VariantOutcome {
   std::vector<RunSummary> runs;
   /// For each margin below the critical distance, the lowest seed that collided there.
   std::vector<RunSummary> failures;
-  /// Per seed, in seed order: the smallest margin at which its own run was clear (its own
-  /// sweep stops there); none when it collided at every margin. The critical distance is at
-  /// least the largest of these.
-  std::vector<std::optional<double>> seed_critical_distances;
+  /// For each margin run, in order (up to the critical distance), whether each seed's run
+  /// collided there, in seed order: the data of the bootstrap over seeds (seed_bootstrap.hpp).
+  /// A seed clear at one margin may collide at a larger one, so a seed has no critical
+  /// distance of its own.
+  std::vector<std::vector<bool>> collided_by_margin;
   int runs_made = 0;  ///< all runs of the sweep
 };
 
@@ -90,11 +91,11 @@ struct VariantOutcome {
 using ScenarioFactory = std::function<ScenarioDefinition(std::uint64_t seed, double body_radius)>;
 
 /// Runs the scenario `make_scenario` builds with `variant`'s mounts (params.seed and the
-/// scenario's layout both take the seed): each seed sweeps the margins in order until its first
-/// run without a collision; then, from the largest of those margins up, every seed runs at a
-/// margin (reusing its own sweep's run there) until a margin has no collision, the critical
-/// distance. Seeds run in batches of `threads`; `on_run` is called after each run, from the
-/// calling thread. Deterministic for the settings, whatever the thread count.
+/// scenario's layout both take the seed): for each margin in order, every seed, until a
+/// margin at which no seed collides (the critical distance). Every seed runs at every margin up
+/// to it, so that a bootstrap over the seeds can find each resample's own critical distance.
+/// Seeds run in batches of `threads`; `on_run` is called after each run, from the calling
+/// thread. Deterministic for the settings, whatever the thread count.
 VariantOutcome sweep_variant(const ScenarioFactory& make_scenario, const model::Rig& rig,
                              const model::SensorLibrary& library, const ScenarioParams& params,
                              const RigVariant& variant, const SweepSettings& settings,
