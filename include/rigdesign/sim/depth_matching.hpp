@@ -7,6 +7,7 @@
 /// gives no depth. The window is sampled as a 3 x 3 grid of rays at a third of its side apart
 /// (each ray the centre of one ninth of the window); two depths are one surface while their
 /// disparities differ by under a pixel.
+#include <functional>
 #include <optional>
 
 #include "rigdesign/model/eigen_types.hpp"
@@ -23,5 +24,12 @@ std::optional<double> matched_range(const RayCaster& scene, const model::Vec3& o
                                     const model::Vec3& direction, const model::Vec3& up,
                                     double centre, const model::DepthMatching& matching,
                                     double free_range);
+
+/// The rule itself: the centre's range [m] if at least 5 of the window's 9 rays agree with it,
+/// else the first of the other rays' ranges that 5 agree with, else nothing. `sample(row,
+/// column)`, row and column in {-1, 0, 1} and not both 0, gives the range of the window's ray a
+/// third of its side up and to the left times row and column (infinity: no return).
+std::optional<double> window_majority(double centre, const std::function<double(int, int)>& sample,
+                                      double baseline_focal);
 
 }  // namespace rigdesign::sim
