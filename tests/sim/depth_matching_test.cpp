@@ -2,6 +2,7 @@
 // expected range worked out by hand from the scene's boxes and the window's geometry.
 #include "rigdesign/sim/depth_matching.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -137,4 +138,40 @@ TEST_CASE("depth_matching in a sensor library: the window's angle and the dispar
     CHECK(message.find("zero.yaml:11:") != std::string::npos);
     CHECK(message.find("window_px") != std::string::npos);
   }
+}
+
+TEST_CASE("depth matching on a native pixel grid: the thin pole vanishes from the whole frame",
+          "[sim]") {
+  // 90 x 90 pixels over 9 x 9 deg: 0.1 deg per pixel; a 0.9 deg window, whose third is 3
+  // pixels, so the window's rays are the grid's own. The 5 mm pole at 2 m spans 0.14 deg, under
+  // two pixels: no window row holds it in more than its centre column, so no pixel reports it.
+  model::SensorMode mode;
+  mode.fov = model::FieldOfView(model::pyramid_fov(model::deg_to_rad(9.0), model::deg_to_rad(9.0)));
+  mode.angular_resolution_h = mode.fov.horizontal() / 90;
+  mode.angular_resolution_v = mode.fov.vertical() / 90;
+  mode.min_range = 0.5;
+  mode.max_range = 4.0;
+  model::DepthMatching matching = kinect_window();
+  matching.window_angle = model::deg_to_rad(0.9);
+  mode.depth_matching = matching;
+  const std::vector<model::Vec3> rays = sim::ray_pattern(mode);
+  REQUIRE(rays.size() == 90 * 90);
+  const sim::RayCaster scene(pole_before_wall(0.005));
+  model::Pose3 T_world_sensor = model::Pose3::Identity();
+  T_world_sensor.translation() = kOrigin;
+  sim::SimulationSettings settings;
+  settings.add_noise = false;
+  std::mt19937_64 rng(1);
+  const auto on_pole = [](const model::PointCloud& cloud) {
+    return std::count_if(cloud.points.begin(), cloud.points.end(),
+                         [](const model::Point3f& p) { return p.x() < 2.5f; });
+  };
+  const model::PointCloud matched =
+      sim::simulate_frame(scene, mode, rays, T_world_sensor, settings, rng);
+  CHECK(on_pole(matched) == 0);
+  CHECK(matched.size() > 8000);  // the wall everywhere else, the pole's pixels included
+  settings.depth_matching = false;
+  const model::PointCloud own =
+      sim::simulate_frame(scene, mode, rays, T_world_sensor, settings, rng);
+  CHECK(on_pole(own) > 0);
 }
