@@ -134,11 +134,9 @@ model::PointCloud simulate_frame(const RayCaster& scene, const model::SensorMode
     // A window-matching camera reports the depth that fills most of the pixel's window.
     const double free_range = robot ? free_ranges[r] : kNoRobot;
     const bool from_grid = grid.columns > 0 && grid.inside(r);
-    const std::optional<double> on_grid =
-        from_grid ? grid_matched_range(grid, window_range, r, *hit, *matching) : std::nullopt;
     const std::optional<double> seen =
         !matching   ? hit
-        : from_grid ? on_grid
+        : from_grid ? grid_matched_range(grid, window_range, r, *hit, *matching)
                     : matched_range(scene, origin, direction, up, *hit, *matching, free_range);
     if (!seen || *seen < mode.min_range || *seen > mode.max_range) {
       no_return();

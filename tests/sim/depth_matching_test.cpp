@@ -45,6 +45,18 @@ const model::Vec3 kForward(1.0, 0.0, 0.0);
 const model::Vec3 kUp(0.0, 0.0, 1.0);
 constexpr double kNoRobot = std::numeric_limits<double>::infinity();
 
+// The camera at kOrigin looking along the world's +x, and settings without range noise.
+model::Pose3 camera_pose() {
+  model::Pose3 T_world_sensor = model::Pose3::Identity();
+  T_world_sensor.translation() = kOrigin;
+  return T_world_sensor;
+}
+sim::SimulationSettings noiseless() {
+  sim::SimulationSettings settings;
+  settings.add_noise = false;
+  return settings;
+}
+
 }  // namespace
 
 TEST_CASE("depth matching: a pole filling the window keeps its depth", "[sim]") {
@@ -94,10 +106,8 @@ TEST_CASE("depth matching in a frame: a mode with a window loses the thin pole, 
   mode.depth_matching = kinect_window();
   const std::vector<model::Vec3> rays = {kForward};
   const sim::RayCaster scene(pole_before_wall(0.005));
-  model::Pose3 T_world_sensor = model::Pose3::Identity();
-  T_world_sensor.translation() = kOrigin;
-  sim::SimulationSettings settings;
-  settings.add_noise = false;
+  const model::Pose3 T_world_sensor = camera_pose();
+  sim::SimulationSettings settings = noiseless();
   std::mt19937_64 rng(1);
   const model::PointCloud matched =
       sim::simulate_frame(scene, mode, rays, T_world_sensor, settings, rng);
@@ -157,10 +167,8 @@ TEST_CASE("depth matching on a native pixel grid: the thin pole vanishes from th
   const std::vector<model::Vec3> rays = sim::ray_pattern(mode);
   REQUIRE(rays.size() == 90 * 90);
   const sim::RayCaster scene(pole_before_wall(0.005));
-  model::Pose3 T_world_sensor = model::Pose3::Identity();
-  T_world_sensor.translation() = kOrigin;
-  sim::SimulationSettings settings;
-  settings.add_noise = false;
+  const model::Pose3 T_world_sensor = camera_pose();
+  sim::SimulationSettings settings = noiseless();
   std::mt19937_64 rng(1);
   const auto on_pole = [](const model::PointCloud& cloud) {
     return std::count_if(cloud.points.begin(), cloud.points.end(),
