@@ -29,6 +29,7 @@
 #include "rigdesign/report/occupancy_report.hpp"
 #include "rigdesign/report/text_table.hpp"
 #include "rigdesign/sim/mean_pooling.hpp"
+#include "rigdesign/sim/person_links.hpp"
 #include "rigdesign/sim/scene_library.hpp"
 #include "rigdesign/sim/sensor_simulator.hpp"
 
@@ -50,9 +51,11 @@ struct OccupancyOptions {
   double robot_radius = 0.3;
   // [m] 3 sigma of the cell's noisiest lidars (3 cm): lower, and floor returns mark ghosts.
   double min_height = 0.1;
-  std::string truth = "points";     // paper 3's sensor points, or the mesh's whole surface
-  std::string region = "hull";      // paper 3's convex hull, or the box + object margin
-  std::vector<std::string> sweeps;  // paper 3's sweeps; empty: the voxels x persistence grid
+  std::string truth = "links";             // paper 3's link volumes, the ray re-cast or the mesh
+  std::string region = "hull";             // paper 3's convex hull, or the box + object margin
+  std::vector<std::string> sweeps;         // paper 3's sweeps; empty: the voxels x persistence grid
+  std::string voxblox_occupied = "nodes";  // which voxblox_ros output is the occupied set
+  std::string sync = "approximate";        // paper 3's approximate-time fusion, or one instant
   int threads = 2;
   std::string out;
   bool json = false;
@@ -135,10 +138,14 @@ occupancy::OccupancyEvalParams evaluation_params(const OccupancyOptions& options
   params.camera_pooling = options.camera_pooling;
   params.robot_radius = options.robot_radius;
   params.min_height = options.min_height;
-  params.truth = options.truth == "surface" ? occupancy::TruthKind::mesh_surface
-                                            : occupancy::TruthKind::sensor_points;
+  params.truth = options.truth == "surface"  ? occupancy::TruthKind::mesh_surface
+                 : options.truth == "points" ? occupancy::TruthKind::sensor_points
+                                             : occupancy::TruthKind::link_volumes;
+  // The scenes' moving people are all sim's person mesh, whose links these are.
+  if (params.truth == occupancy::TruthKind::link_volumes) params.object_links = sim::person_links();
   params.region = options.region == "margin" ? occupancy::ScoringRegion::box_margin
                                              : occupancy::ScoringRegion::hull;
+  params.approximate_sync = options.sync == "approximate";
   params.threads = options.threads;
   return params;
 }
@@ -180,7 +187,11 @@ MapperSet make_mappers(const OccupancyOptions& options, const occupancy::VoxelMa
   set.owned = occupancy::make_sweep_mappers(set.grid, model::SourceLocation{"(command line)"});
   for (const auto& mapper : set.owned) set.extra.push_back(mapper->name());
   set.sweeps = report::paper3_sweeps_named(
-      options.sweeps, occupancy::Paper3Common{options.min_height, base.z_max, params.window_size});
+      options.sweeps,
+      occupancy::Paper3Common{options.min_height, base.z_max, params.window_size,
+                              options.voxblox_occupied == "surface"
+                                  ? occupancy::VoxbloxOccupiedRule::surface_pointcloud
+                                  : occupancy::VoxbloxOccupiedRule::occupied_nodes});
   for (const occupancy::Paper3Sweep& sweep : set.sweeps) {
     for (const occupancy::Paper3Setting& row : sweep.rows) {
       const std::string name = occupancy::paper3_mapper_name(row);
@@ -264,12 +275,18 @@ void add_sensing_and_scoring_options(CLI::App* app, OccupancyOptions& options) {
   // --truth names a ground-truth file elsewhere (localize): here it is what truth is made of.
   CLI::Option* truth_from =
       app->add_option("--truth-from", options.truth,
-                      "points: the person's points in the sensors' clouds, voxelised (paper 3, "
-                      "default); surface: the person's whole mesh surface")
-          ->check(CLI::IsMember({"points", "surface"}));
+                      "links: the fused clouds' points inside volumes round the person's links, "
+                      "as paper 3 finds them (default); points: the points whose ray ends on "
+                      "the person (a noise-free re-cast); surface: the person's whole mesh surface")
+          ->check(CLI::IsMember({"links", "points", "surface"}));
   truth_from->excludes(app->add_option("--truth", options.truth, "Former name of --truth-from")
-                           ->check(CLI::IsMember({"points", "surface"}))
+                           ->check(CLI::IsMember({"links", "points", "surface"}))
                            ->group(""));
+  app->add_option("--sync", options.sync,
+                  "approximate: each sensor at its own rate and phase, fused as ROS's "
+                  "approximate-time filter pairs them (paper 3, default); same-instant: every "
+                  "sensor records at each frame's time")
+      ->check(CLI::IsMember({"approximate", "same-instant"}));
   app->add_option("--fp-region", options.region,
                   "hull: false positives inside the convex hull of the person's truth points "
                   "(paper 3, default); margin: within 0.3 m of the truth's box")
@@ -312,6 +329,10 @@ Command setup_occupancy(CLI::App& parent) {
                   "skimap:resolution|min_weight, voxblox:resolution|truncation|const_weight, or "
                   "paper3 for all; replaces --voxels/--persistence")
       ->check(CLI::IsMember(sweep_names));
+  app->add_option("--voxblox-occupied", options->voxblox_occupied,
+                  "Voxblox's occupied set: nodes, its occupied_nodes markers (weight > 1e-3, "
+                  "d <= voxel; default); surface, its surface_pointcloud (|d| < 0.75 voxel)")
+      ->check(CLI::IsMember({"nodes", "surface"}));
   app->add_option("--threads", options->threads,
                   "Mappers updated at once within a frame (default 2; results do not depend on it)")
       ->check(finite_in(1, 64, "1 to 64 threads"));

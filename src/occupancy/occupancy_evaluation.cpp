@@ -7,14 +7,17 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <random>
 #include <stdexcept>
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/input_error.hpp"
 #include "rigdesign/model/parallel_for.hpp"
+#include "rigdesign/occupancy/approximate_sync.hpp"
 #include "rigdesign/occupancy/occupancy_actor_points.hpp"
 #include "rigdesign/occupancy/occupancy_hull_region.hpp"
+#include "rigdesign/occupancy/occupancy_link_volumes.hpp"
 #include "rigdesign/occupancy/occupancy_trail.hpp"
 #include "rigdesign/sim/decimation.hpp"
 #include "rigdesign/sim/mean_pooling.hpp"
@@ -106,6 +109,18 @@ std::vector<costmap::VoxelKey> in_hull(const std::vector<costmap::VoxelKey>& pre
   return inside;
 }
 
+// The scored band: the voxel rows wholly at or above min_height. The peers' front ends mark
+// the floor (octomap_server and voxblox_ros insert every point), and a row reaching below
+// min_height holds floor returns at any voxel length (at 0.2 m, row 0 spans the floor and the
+// person's ankles), so truth and maps are both scored from the first row above it.
+std::vector<costmap::VoxelKey> in_scored_band(std::vector<costmap::VoxelKey> keys,
+                                              const VoxelLattice& lattice, double min_height) {
+  std::erase_if(keys, [&](const costmap::VoxelKey& key) {
+    return lattice.z_min + key.z * lattice.z_resolution < min_height - 1e-9;
+  });
+  return keys;
+}
+
 // Per mapper: the running state of its whole-window measures.
 struct Tracking {
   TrailTracker trail;
@@ -114,10 +129,11 @@ struct Tracking {
 
 void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*>& frames) {
   phase.frames = frames.size();
-  std::vector<Scores> object, master;
+  std::vector<Scores> object, late, master;
   double seconds = 0.0, points = 0.0;
   for (const OccupancyFrame* frame : frames) {
     object.push_back(scores_of(frame->object));
+    late.push_back(scores_of(frame->object_late));
     if (frame->has_master) master.push_back(scores_of(frame->master));
     phase.ghost_area += frame->ghost_area;
     phase.ghost_area_max = std::max(phase.ghost_area_max, frame->ghost_area);
@@ -132,6 +148,7 @@ void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*
   }
   const double n = frames.empty() ? kNoScore : static_cast<double>(frames.size());
   phase.object = mean_scores(object);
+  phase.object_late = mean_scores(late);
   phase.master = master.empty() ? Scores{kNoScore, kNoScore, kNoScore, kNoScore, kNoScore}
                                 : mean_scores(master);
   phase.ghost_area /= n;
@@ -193,15 +210,63 @@ std::vector<LatticeTruth> lattice_truths(const model::Scene& scene,
   return truths;
 }
 
-// Every sensor's frame in the scene as `caster` holds it, in sensor order (each draws from its
-// own stream); returns the number of points.
-std::size_t simulate_cell_clouds(const sim::RayCaster& caster, std::span<const CellSensor> sensors,
-                                 OccupancySensing& sensing, const OccupancyEvalParams& params,
+// The scene at one sensor stamp: its ray caster and the moving object there.
+struct StampedScene {
+  double stamp;
+  sim::RayCaster caster;
+  model::TriangleMesh object;
+  Eigen::AlignedBox3d object_box;
+};
+
+// What every sensor recorded for one evaluation tick, and the object's truth points in it.
+struct SensedFrame {
+  std::size_t points = 0;
+  model::Pose3 T_world_object;     // at the fused set's latest stamp
+  model::TriangleMesh object_now;  // likewise
+  std::vector<model::Vec3> on_object;
+};
+
+// Each sensor's stamp at `tick`: the approximate-time set, or the tick for all.
+std::vector<double> sensor_stamps(std::span<const FrameClock> clocks, std::size_t sensors,
+                                  double tick) {
+  if (clocks.empty()) return std::vector<double>(sensors, tick);
+  return approximate_time_set(clocks, tick);
+}
+
+// One scene per distinct stamp; `scene_of[i]` is sensor i's.
+std::vector<std::unique_ptr<StampedScene>> stamped_scenes(const model::Scene& scene,
+                                                          const std::vector<double>& stamps,
+                                                          std::vector<std::size_t>& scene_of) {
+  const model::MovingObject& object = scene.moving.front();
+  std::vector<std::unique_ptr<StampedScene>> scenes;
+  scene_of.clear();
+  for (const double stamp : stamps) {
+    const auto found = std::find_if(scenes.begin(), scenes.end(),
+                                    [&](const auto& s) { return s->stamp == stamp; });
+    scene_of.push_back(static_cast<std::size_t>(found - scenes.begin()));
+    if (found != scenes.end()) continue;
+    model::TriangleMesh object_mesh;
+    object_mesh.append(object.mesh, object.T_world_object(stamp));
+    Eigen::AlignedBox3d box;
+    for (const model::Vec3& v : object_mesh.vertices) box.extend(v);
+    scenes.push_back(std::make_unique<StampedScene>(
+        StampedScene{stamp, sim::RayCaster(scene.at(stamp)), std::move(object_mesh), box}));
+  }
+  return scenes;
+}
+
+// Every sensor's frame in its own stamp's scene, in sensor order (each draws from its own
+// stream); returns the number of points.
+std::size_t simulate_cell_clouds(const std::vector<std::unique_ptr<StampedScene>>& scenes,
+                                 const std::vector<std::size_t>& scene_of,
+                                 std::span<const CellSensor> sensors, OccupancySensing& sensing,
+                                 const OccupancyEvalParams& params,
                                  std::vector<model::PointCloud>& clouds) {
   const sim::SimulationSettings settings{0.0, true, false, false};
   const sim::SimulationSettings organised{0.0, true, false, true};
   std::size_t points = 0;
   for (std::size_t i = 0; i < sensors.size(); ++i) {
+    const sim::RayCaster& caster = scenes[scene_of[i]]->caster;
     if (sensing.pooled_columns[i] > 0) {
       clouds[i] = sim::mean_pool(
           sim::simulate_frame(caster, sensing.modes[i], sensing.rays[i], sensors[i].T_world_sensor,
@@ -216,21 +281,42 @@ std::size_t simulate_cell_clouds(const sim::RayCaster& caster, std::span<const C
   return points;
 }
 
-// The sensors' points that lie on the moving object (TruthKind::sensor_points).
-std::vector<model::Vec3> points_on_object(const model::TriangleMesh& object_now,
+// The sensors' points that lie on the moving object (TruthKind::sensor_points), each cloud
+// re-cast in its own stamp's scene.
+std::vector<model::Vec3> points_on_object(const std::vector<std::unique_ptr<StampedScene>>& scenes,
+                                          const std::vector<std::size_t>& scene_of,
                                           const std::vector<model::PointCloud>& clouds,
-                                          const sim::RayCaster& caster,
                                           const OccupancyEvalParams& params) {
+  std::vector<std::unique_ptr<sim::RayCaster>> object_casters(scenes.size());
   std::vector<model::Vec3> seen_on_object;
-  Eigen::AlignedBox3d box;
-  for (const model::Vec3& v : object_now.vertices) box.extend(v);
-  const sim::RayCaster object_caster(object_now);
-  for (const model::PointCloud& cloud : clouds) {
+  for (std::size_t i = 0; i < clouds.size(); ++i) {
+    const StampedScene& at = *scenes[scene_of[i]];
+    std::unique_ptr<sim::RayCaster>& object_caster = object_casters[scene_of[i]];
+    if (!object_caster) object_caster = std::make_unique<sim::RayCaster>(at.object);
     const std::vector<model::Vec3> on_object =
-        actor_points(cloud, caster, object_caster, box, params.truth_reach);
+        actor_points(clouds[i], at.caster, *object_caster, at.object_box, params.truth_reach);
     seen_on_object.insert(seen_on_object.end(), on_object.begin(), on_object.end());
   }
   return seen_on_object;
+}
+
+// One tick's clouds (into `clouds`) and the object's truth points in them.
+SensedFrame sense_frame(const model::Scene& scene, std::span<const CellSensor> sensors,
+                        std::span<const FrameClock> clocks, double tick, OccupancySensing& sensing,
+                        const OccupancyEvalParams& params, std::vector<model::PointCloud>& clouds) {
+  const std::vector<double> stamps = sensor_stamps(clocks, sensors.size(), tick);
+  std::vector<std::size_t> scene_of;
+  const std::vector<std::unique_ptr<StampedScene>> scenes = stamped_scenes(scene, stamps, scene_of);
+  SensedFrame frame;
+  frame.points = simulate_cell_clouds(scenes, scene_of, sensors, sensing, params, clouds);
+  const double fused = *std::max_element(stamps.begin(), stamps.end());
+  frame.T_world_object = scene.moving.front().T_world_object(fused);
+  frame.object_now.append(scene.moving.front().mesh, frame.T_world_object);
+  if (params.truth == TruthKind::sensor_points)
+    frame.on_object = points_on_object(scenes, scene_of, clouds, params);
+  if (params.truth == TruthKind::link_volumes)
+    frame.on_object = points_in_links(clouds, frame.T_world_object, params.object_links);
+  return frame;
 }
 
 // The truth's object, seen and column masks at this frame.
@@ -238,9 +324,11 @@ void refresh_truth(LatticeTruth& truth, const model::TriangleMesh& object_now,
                    const std::vector<model::Vec3>& seen_on_object,
                    const std::vector<model::PointCloud>& clouds,
                    const OccupancyEvalParams& params) {
-  truth.object = params.truth == TruthKind::sensor_points
-                     ? voxelise_points(seen_on_object, truth.lattice, params.min_height)
-                     : voxelise_surface(object_now, truth.lattice, params.min_height);
+  truth.object =
+      in_scored_band(params.truth == TruthKind::mesh_surface
+                         ? voxelise_surface(object_now, truth.lattice, params.min_height)
+                         : voxelise_points(seen_on_object, truth.lattice, params.min_height),
+                     truth.lattice, params.min_height);
   // Only the object's voxels can be misses, so only marking points inside its x span count.
   truth.seen.clear();
   if (!truth.object.empty()) {
@@ -296,15 +384,20 @@ void score_mapper_frame(OccupancyMapper& mapper, const LatticeTruth& truth, Trac
   frame.time = in.t;
   frame.robot_moving = in.moving;
   frame.points = in.points;
+  const auto candidates = [&](const std::vector<costmap::VoxelKey>& shown) {
+    return params.region == ScoringRegion::hull ? in_hull(shown, truth, in.hull)
+                                                : near_object(shown, truth, params.object_margin);
+  };
+  frame.object_late = compare_voxel_sets(
+      candidates(in_scored_band(mapper.occupied(), truth.lattice, params.min_height)),
+      truth.object);
   const auto start = std::chrono::steady_clock::now();
   mapper.update(in.t, in.clouds, in.moving);
   frame.update_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::vector<costmap::VoxelKey> predicted = mapper.occupied();
-  frame.object = compare_voxel_sets(params.region == ScoringRegion::hull
-                                        ? in_hull(predicted, truth, in.hull)
-                                        : near_object(predicted, truth, params.object_margin),
-                                    truth.object);
+  const std::vector<costmap::VoxelKey> predicted =
+      in_scored_band(mapper.occupied(), truth.lattice, params.min_height);
+  frame.object = compare_voxel_sets(candidates(predicted), truth.object);
   frame.misses = split_misses(predicted, truth.object, truth.seen);
   const std::vector<std::uint8_t> shown = column_mask(predicted, truth.window);
   const TrailFrame trail = tracking.trail.record(in.t, truth.columns, shown);
@@ -367,6 +460,10 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
                                 "' has no moving object");
   }
   const model::MovingObject& object = scene.moving.front();
+  if (params.truth == TruthKind::link_volumes && params.object_links.empty()) {
+    throw std::invalid_argument("evaluate_occupancy: the truth from link volumes needs '" +
+                                object.name + "''s links");
+  }
   const int frames = frame_count(params);
   OccupancySensing sensing = occupancy_sensing(sensors, params);
   std::vector<std::size_t> truth_of;
@@ -382,24 +479,22 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
   }
   PathOdometer odometer;
   std::vector<model::PointCloud> clouds(sensors.size());
+  std::vector<FrameClock> clocks;
+  if (params.approximate_sync) {
+    std::vector<double> frequencies;
+    for (const CellSensor& sensor : sensors) frequencies.push_back(sensor.mode.frequency);
+    clocks = frame_clocks(frequencies, params.seed);
+  }
   for (int k = 0; k < frames; ++k) {
     const double t = k / params.rate;
     const bool moving = t < params.moving_until;
-    const sim::RayCaster caster(scene.at(t));
-    const std::size_t points = simulate_cell_clouds(caster, sensors, sensing, params, clouds);
-    const model::Pose3 T_world_object = object.T_world_object(t);
-    odometer.record(t, T_world_object.translation().head<2>());
-    model::TriangleMesh object_now;
-    object_now.append(object.mesh, T_world_object);
-    std::vector<model::Vec3> seen_on_object;
-    if (params.truth == TruthKind::sensor_points)
-      seen_on_object = points_on_object(object_now, clouds, caster, params);
-    std::vector<model::Vec3> hull_points = seen_on_object;
-    if (params.truth == TruthKind::mesh_surface) hull_points = object_now.vertices;
-    const HullRegion hull(hull_points);
+    const SensedFrame sensed = sense_frame(scene, sensors, clocks, t, sensing, params, clouds);
+    odometer.record(t, sensed.T_world_object.translation().head<2>());
+    const HullRegion hull(params.truth == TruthKind::mesh_surface ? sensed.object_now.vertices
+                                                                  : sensed.on_object);
     for (LatticeTruth& truth : truths)
-      refresh_truth(truth, object_now, seen_on_object, clouds, params);
-    const OccupancyFrameInputs inputs{t, moving, points, clouds, hull, odometer};
+      refresh_truth(truth, sensed.object_now, sensed.on_object, clouds, params);
+    const OccupancyFrameInputs inputs{t, moving, sensed.points, clouds, hull, odometer};
     model::parallel_for(mappers.size(), params.threads, [&](std::size_t m) {
       score_mapper_frame(*mappers[m], truths[truth_of[m]], tracking[m], runs[m], inputs, params);
     });

@@ -23,8 +23,7 @@ void check_voxblox_params(const VoxbloxParams& p) {
     throw std::invalid_argument("Voxblox: voxel must lie in [0.01, 1] m");
   if (!(p.truncation > 0.0 && p.truncation <= 2.0))
     throw std::invalid_argument("Voxblox: truncation must lie in (0, 2] m");
-  if (!(p.max_weight > 0.0) || !(p.occupied_band > 0.0))
-    throw std::invalid_argument("Voxblox: max_weight and occupied_band must be positive");
+  if (!(p.max_weight > 0.0)) throw std::invalid_argument("Voxblox: max_weight must be positive");
   if (!(p.min_ray_length >= 0.0 && p.max_ray_length > p.min_ray_length))
     throw std::invalid_argument("Voxblox: need 0 <= min_ray_length < max_ray_length");
   if (!(p.window_size > 0.0 && p.z_max > p.min_height))
@@ -84,13 +83,20 @@ VoxbloxTsdf::Voxel VoxbloxTsdf::at(const costmap::VoxelKey& key) const {
 }
 
 std::vector<costmap::VoxelKey> VoxbloxTsdf::occupied() const {
-  const double band = params_.occupied_band * params_.voxel;
+  // Both rules compare Voxblox's float voxels with float thresholds, as ptcloud_vis.h does.
+  const bool nodes = params_.occupied_rule == VoxbloxOccupiedRule::occupied_nodes;
+  const float min_weight = nodes ? 1e-3f : 0.0f;
+  const auto voxel = static_cast<float>(params_.voxel);
+  const float surface = 0.75f * voxel;
+  const auto shown = [&](float distance) {
+    return nodes ? distance <= voxel : std::abs(distance) < surface;
+  };
   std::vector<costmap::VoxelKey> keys;
   for (int x = 0; x < size_.x(); ++x) {
     for (int y = 0; y < size_.y(); ++y) {
       for (int z = 0; z < layers_; ++z) {
         const auto i = static_cast<std::size_t>(z + x * stride_[0] + y * stride_[1]);
-        if (weight_[i] > 0.0f && std::abs(distance_[i]) < band) {
+        if (weight_[i] > min_weight && shown(distance_[i])) {
           keys.push_back({window_.origin_cell.x() + x, window_.origin_cell.y() + y, z});
         }
       }
@@ -164,7 +170,8 @@ void VoxbloxTsdf::cast(const model::Vec3& origin, const MergedRay& ray, bool cle
 std::string voxblox_label(const VoxbloxParams& params) {
   return "Voxblox " + model::format_number(params.voxel, 3) + " m, trunc " +
          model::format_number(params.truncation, 3) + " m" +
-         (params.use_const_weight ? ", const weight" : "");
+         (params.use_const_weight ? ", const weight" : "") +
+         (params.occupied_rule == VoxbloxOccupiedRule::surface_pointcloud ? ", surface" : "");
 }
 
 std::unique_ptr<OccupancyMapper> make_voxblox_mapper(const VoxbloxParams& params,

@@ -27,14 +27,47 @@ std::vector<std::string> score_cells(const occupancy::Scores& s) {
 }
 
 void add_run_columns(TextTable& table) {
-  for (const char* h : {"trail m2", "ghost m2", "ms/upd", "Mpts/s", "memory MB"})
+  for (const char* h :
+       {"R late", "misses seen %", "trail m2", "ghost m2", "ms/upd", "Mpts/s", "memory MB"})
     table.add_column(h, TextTable::Align::right);
 }
 
+// The share of the person's missed voxels that held a point the mapper was given that frame.
+double seen_share(const occupancy::OccupancyPhase& phase) {
+  const std::size_t misses = phase.never_seen + phase.seen_not_kept;
+  return misses == 0
+             ? std::nan("")
+             : 100.0 * static_cast<double>(phase.seen_not_kept) / static_cast<double>(misses);
+}
+
 std::vector<std::string> run_cells(const occupancy::OccupancyRun& run) {
-  return {fixed_or_dash(run.all.trail_area, 2), fixed_or_dash(run.all.ghost_area, 2),
-          fixed_or_dash(run.all.update_ms, 1), fixed_or_dash(run.all.points_per_second / 1e6, 2),
+  return {fixed_or_dash(run.all.object_late.recall, 3),
+          fixed_or_dash(seen_share(run.all), 1),
+          fixed_or_dash(run.all.trail_area, 2),
+          fixed_or_dash(run.all.ghost_area, 2),
+          fixed_or_dash(run.all.update_ms, 1),
+          fixed_or_dash(run.all.points_per_second / 1e6, 2),
           fixed_or_dash(static_cast<double>(run.memory_bytes) / 1e6, 2)};
+}
+
+// The statements from the text, then those read off the tables, each with how many hold.
+void print_statements(const std::vector<occupancy::Paper3Trend>& trends, std::ostream& out) {
+  for (const bool from_text : {true, false}) {
+    std::size_t listed = 0, hold = 0;
+    out << (from_text
+                ? "\nWhat paper 3's text states (paper: on its own table; here: on this run)\n"
+                : "\nWhat paper 3's tables show: each table's best setting by P, R and F1\n");
+    for (const occupancy::Paper3Trend& trend : trends) {
+      if (trend.from_text != from_text) continue;
+      ++listed;
+      hold += trend.holds_here;
+      out << "  [" << (trend.holds_in_paper ? "paper holds" : "paper FAILS") << ", "
+          << (trend.holds_here ? "here holds" : "here fails") << "] " << trend.statement << " ("
+          << trend.sweeps << ")\n    paper: " << trend.paper_detail
+          << "\n    here:  " << trend.our_detail << '\n';
+    }
+    out << "  " << hold << " of " << listed << " hold here\n";
+  }
 }
 
 }  // namespace
@@ -96,13 +129,9 @@ void print_paper3_report(std::span<const occupancy::Paper3Sweep> sweeps,
     out << "\n";
     table.print(out, "  ");
   }
-  out << "\nPaper 3's trends (paper: on its own table; here: on this run)\n";
-  for (const occupancy::Paper3Trend& trend : occupancy::paper3_trends(sweeps, lookup)) {
-    out << "  [" << (trend.holds_in_paper ? "paper holds" : "paper FAILS") << ", "
-        << (trend.holds_here ? "here holds" : "here fails") << "] " << trend.statement << " ("
-        << trend.sweeps << ")\n    paper: " << trend.paper_detail
-        << "\n    here:  " << trend.our_detail << '\n';
-  }
+  out << "\nR late: recall with the map read one update late; misses seen %: the person's "
+         "missed voxels that held a point the mapper was given that frame\n";
+  print_statements(occupancy::paper3_trends(sweeps, lookup), out);
 }
 
 nlohmann::json paper3_report_json(std::span<const occupancy::Paper3Sweep> sweeps,
@@ -118,6 +147,9 @@ nlohmann::json paper3_report_json(std::span<const occupancy::Paper3Sweep> sweeps
                       {"mapper", run->mapper},
                       {"paper", scores_json(row.paper)},
                       {"rigdesign", scores_json(run->all.object)},
+                      {"rigdesign_map_one_update_late", scores_json(run->all.object_late)},
+                      {"misses_seen", run->all.seen_not_kept},
+                      {"misses_never_seen", run->all.never_seen},
                       {"trail_area_m2", run->all.trail_area},
                       {"ghost_area_m2", run->all.ghost_area},
                       {"update_ms", run->all.update_ms},
@@ -132,6 +164,7 @@ nlohmann::json paper3_report_json(std::span<const occupancy::Paper3Sweep> sweeps
                                 {"sweeps", trend.sweeps},
                                 {"holds_in_paper", trend.holds_in_paper},
                                 {"holds_here", trend.holds_here},
+                                {"from_text", trend.from_text},
                                 {"paper", trend.paper_detail},
                                 {"rigdesign", trend.our_detail}});
   }

@@ -13,9 +13,16 @@ namespace rigdesign::report {
 namespace {
 
 std::string truth_label(occupancy::TruthKind truth) {
-  return truth == occupancy::TruthKind::sensor_points
-             ? "the person's points in the sensors' clouds, voxelised (paper 3, III-B)"
-             : "the person's whole mesh surface, unseen back included (--truth surface)";
+  switch (truth) {
+    case occupancy::TruthKind::link_volumes:
+      return "the fused clouds' points inside volumes round the person's links, voxelised "
+             "(paper 3, III-B, eqs. 1-4)";
+    case occupancy::TruthKind::sensor_points:
+      return "the points whose ray ends on the person, voxelised (--truth-from points)";
+    case occupancy::TruthKind::mesh_surface:
+      return "the person's whole mesh surface, unseen back included (--truth-from surface)";
+  }
+  return "";
 }
 
 std::string region_label(occupancy::ScoringRegion region, double object_margin) {

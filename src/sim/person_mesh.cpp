@@ -1,5 +1,6 @@
 // The walking person of paper 3's cell and of the office_goals scenario's passers-by.
 #include "rigdesign/sim/mesh_primitives.hpp"
+#include "rigdesign/sim/person_links.hpp"
 #include "scene_generators.hpp"
 
 namespace rigdesign::sim {
@@ -21,6 +22,13 @@ constexpr double kHeadBottom = 1.5;
 constexpr double kHeadRadius = 0.1;
 constexpr double kBodyHeight = 1.75;
 
+// [m] how far each link volume reaches past its part of the mesh: one sigma of the cell's
+// noisiest sensors (3 cm range noise), so a noisy point on the body stays inside as a rule.
+constexpr double kVolumeMargin = 0.03;
+// [m] paper 3's own example radius (shoulder to elbow); it holds our 0.14 m legs (half
+// diagonal 0.099 m) and 0.08 m arms.
+constexpr double kLimbRadius = 0.1;
+
 }  // namespace
 
 model::TriangleMesh person_mesh() {
@@ -40,6 +48,30 @@ model::TriangleMesh person_mesh() {
   body.append(cylinder_mesh(kHeadRadius, kBodyHeight - kHeadBottom,
                             model::Pose3(Eigen::Translation3d(0, 0, kHeadBottom))));
   return body;
+}
+
+std::vector<BodyLink> person_links() {
+  using model::Vec3;
+  const double leg_y = kLegSpacing / 2;
+  const double arm_y = kTorsoWidth / 2 + kArmSide / 2;
+  const double elbow = (kTorsoTop + kArmBottom) / 2;
+  const double m = kVolumeMargin;
+  std::vector<BodyLink> links;
+  for (const double side : {1.0, -1.0}) {
+    const std::string name = side > 0 ? "left " : "right ";
+    links.push_back({name + "leg", Vec3(0, side * leg_y, kLegTop), Vec3(0, side * leg_y, 0),
+                     LinkShape::cylinder, kLimbRadius, 0, 0});
+    links.push_back({name + "upper arm", Vec3(0, side * arm_y, kTorsoTop),
+                     Vec3(0, side * arm_y, elbow), LinkShape::cylinder, kLimbRadius, 0, 0});
+    links.push_back({name + "forearm", Vec3(0, side * arm_y, elbow),
+                     Vec3(0, side * arm_y, kArmBottom - m), LinkShape::cylinder, kLimbRadius, 0,
+                     0});
+  }
+  links.push_back({"torso", Vec3(0, 0, kTorsoTop + m), Vec3(0, 0, kLegTop), LinkShape::prism, 0,
+                   kTorsoWidth + 2 * m, kTorsoDepth + 2 * m});
+  links.push_back({"head", Vec3(0, 0, kTorsoTop), Vec3(0, 0, kBodyHeight + m), LinkShape::cylinder,
+                   kHeadRadius + m, 0, 0});
+  return links;
 }
 
 }  // namespace rigdesign::sim

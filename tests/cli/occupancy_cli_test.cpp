@@ -135,10 +135,16 @@ TEST_CASE("occupancy --sweep: paper 3's rows beside ours, its trends, speed and 
   // its five persistence settings (none and four Hit Layers) are 11 mappers.
   CHECK(report["runs"].size() == 11);
   for (const nlohmann::json& run : report["runs"]) CHECK(run["memory_bytes"].get<double>() > 0);
-  // The hit trend and SkiMap's trail are judged on this run; the paper's side holds.
+  // Judged on this run, from the text: hit 1 best, precision at hit 0.7 ~ 1, minimum weight 1
+  // best, recall below precision on OctoMap's and SkiMap's reference rows (both sweeps hold
+  // one) and SkiMap's trail; from the tables: the best P, R and F1 of each (6).
   const nlohmann::json& trends = report["paper3"]["trends"];
-  REQUIRE(trends.size() == 2);
-  for (const nlohmann::json& trend : trends) CHECK(trend["holds_in_paper"] == true);
+  REQUIRE(trends.size() == 6 + 6);
+  std::size_t fail_in_paper = 0;
+  for (const nlohmann::json& trend : trends) fail_in_paper += trend["holds_in_paper"] == false;
+  CHECK(fail_in_paper == 1);  // SkiMap's recall .629 above its precision .606
+  // The map read one update late is scored beside it.
+  CHECK(sweeps[0]["rows"][1].contains("rigdesign_map_one_update_late"));
 }
 
 TEST_CASE("occupancy --sweep refuses an unknown sweep with exit code 2", "[occupancy]") {

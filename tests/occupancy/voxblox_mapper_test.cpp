@@ -3,6 +3,7 @@
 // from -epsilon to -delta, weighted mean, merged integrator).
 #include "rigdesign/occupancy/voxblox_mapper.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 using namespace rigdesign;
@@ -40,10 +41,16 @@ TEST_CASE("Voxblox TSDF: one ray's distances and weights by hand", "[occupancy][
   CHECK(at(12).weight == 0.0f);
   CHECK(at(13).weight == 0.0f);                // beyond the ray's end
   CHECK(tsdf.at({10, 1, 10}).weight == 0.0f);  // off the ray
-  // Occupied: weight and |d| < 0.75 voxel = 0.075 m: only the surface voxel.
+  // voxblox_ros's occupied_nodes: weight > 1e-3 and d <= one voxel (0.1 m): the surface voxel,
+  // the one in front (d = 0.1) and the one behind (d = -0.1).
   const std::vector<costmap::VoxelKey> occupied = tsdf.occupied();
-  REQUIRE(occupied.size() == 1);
-  CHECK(occupied.front() == costmap::VoxelKey{10, 0, 10});
+  CHECK(occupied == std::vector<costmap::VoxelKey>{{9, 0, 10}, {10, 0, 10}, {11, 0, 10}});
+  // Its surface_pointcloud: weight and |d| < 0.75 voxel = 0.075 m: only the surface voxel.
+  occupancy::VoxbloxParams surface_params = params;
+  surface_params.occupied_rule = occupancy::VoxbloxOccupiedRule::surface_pointcloud;
+  occupancy::VoxbloxTsdf surface(surface_params);
+  surface.integrate(ray_cloud({{1.05f, 0.05f, 1.05f}}), occupancy::DepthAxis::optical);
+  CHECK(surface.occupied() == std::vector<costmap::VoxelKey>{{10, 0, 10}});
 
   // A second cloud whose point lies 1.05 m ahead (x = 1.1, voxel 11): weight 1 / 1.05^2.
   // Voxel 10 gets d = 1.05 - 1.0 = 0.05: fused (0 x 1 + 0.05 w) / (1 + w).
@@ -90,6 +97,19 @@ TEST_CASE("Voxblox TSDF: merged points, constant weight, depth axes, clearing ra
     CHECK(tsdf.at({8, 0, 10}).distance == Approx(0.1));
     CHECK(tsdf.at({9, 0, 10}).weight == 0.0f);
     CHECK(tsdf.at({10, 0, 10}).weight == 0.0f);
-    CHECK(tsdf.occupied().empty());
+    // occupied_nodes shows free space too when truncation <= voxel (d = +0.1 <= 0.1): every
+    // voxel the clearing ray crossed, up to voxel 8, and nothing past it.
+    const std::vector<costmap::VoxelKey> nodes = tsdf.occupied();
+    CHECK(std::find(nodes.begin(), nodes.end(), costmap::VoxelKey{8, 0, 10}) != nodes.end());
+    for (const costmap::VoxelKey& key : nodes) {
+      CHECK(key.x <= 8);
+      CHECK(key.y == 0);
+      CHECK(key.z == 10);
+    }
+    // surface_pointcloud (|d| < 0.075 m) shows none of it.
+    params.occupied_rule = occupancy::VoxbloxOccupiedRule::surface_pointcloud;
+    occupancy::VoxbloxTsdf surface(params);
+    surface.integrate(ray_cloud({{1.05f, 0.05f, 1.05f}}), occupancy::DepthAxis::optical);
+    CHECK(surface.occupied().empty());
   }
 }

@@ -19,6 +19,7 @@
 #include "rigdesign/model/sensor.hpp"
 #include "rigdesign/occupancy/occupancy_scores.hpp"
 #include "rigdesign/occupancy/occupancy_voxel_mapper.hpp"
+#include "rigdesign/sim/person_links.hpp"
 
 namespace rigdesign::occupancy {
 
@@ -35,8 +36,13 @@ std::vector<CellSensor> cell_sensors(const model::Rig& rig, const model::SensorL
 
 /// What the scored object's truth voxels are.
 enum class TruthKind {
-  /// Paper 3 (section III-B): the object's points in the sensors' own clouds, voxelised
-  /// (occupancy_actor_points.hpp): what the sensors saw of it this frame.
+  /// Paper 3 as paper 3 finds them (section III-B, eqs. 1-4): the fused clouds' points inside
+  /// the volumes round the object's links (occupancy_link_volumes.hpp,
+  /// OccupancyEvalParams::object_links), voxelised.
+  link_volumes,
+  /// The object's points in the sensors' own clouds found by a noise-free re-cast of each
+  /// point's ray (occupancy_actor_points.hpp): what the sensors saw of it this frame, nothing
+  /// off its surface.
   sensor_points,
   /// The voxels of the object's whole mesh surface, its unseen back included: the project's
   /// earlier truth, kept as a labelled alternative (a miss there may be a coverage gap).
@@ -62,6 +68,8 @@ struct OccupancyEvalParams {
   std::uint64_t seed = 1;      ///< range noise; each sensor draws from (seed, sensor index)
   double object_margin = 0.3;  ///< [m] paper 3's neighbourhood of the object, in x and y
   TruthKind truth = TruthKind::sensor_points;
+  /// The object's links and their volumes, in its own frame (TruthKind::link_volumes).
+  std::vector<sim::BodyLink> object_links;
   ScoringRegion region = ScoringRegion::hull;
   /// [m] how far from the object's box a point may lie and still be re-cast as the object's:
   /// 5 sigma of the cell's noisiest sensors (3 cm), since noise moves points along their rays.
@@ -78,6 +86,11 @@ struct OccupancyEvalParams {
   /// blocks of the organised depth image (sim/mean_pooling.hpp); 1 keeps every pixel. Applies
   /// to cameras whose ray pattern is a full pixel grid (pyramid FOVs).
   int camera_pooling = 1;
+  /// Paper 3's approximate-time fusion (approximate_sync.hpp): each sensor records at its own
+  /// frequency from a phase drawn from `seed`, and each tick takes the set ROS's filter would
+  /// have paired by then; the object's truth uses its pose at the set's latest stamp. false:
+  /// every sensor records at the tick.
+  bool approximate_sync = false;
   /// Mappers updated and scored at once within a frame (their results do not depend on it).
   int threads = 1;
   /// Called after every frame with (frames done, frames in all).
@@ -91,9 +104,13 @@ struct OccupancyFrame {
   std::size_t points = 0;       ///< points of every sensor this frame
   double update_seconds = 0.0;  ///< [s] the mapper's update, one thread
   ConfusionCounts object;       ///< paper 3's counts near the object
-  MissCauses misses;            ///< the object's false negatives by cause
-  double ghost_area = 0.0;      ///< [m^2]
-  double trail_area = 0.0;      ///< [m^2]
+  /// The same truth against the map as it stood before this frame's update: the map read one
+  /// update late, as when a mapper's output lags its input (paper 3 read "the first map
+  /// message after the fused clouds' latest stamp").
+  ConfusionCounts object_late;
+  MissCauses misses;        ///< the object's false negatives by cause
+  double ghost_area = 0.0;  ///< [m^2]
+  double trail_area = 0.0;  ///< [m^2]
   /// [m] of the object's path 90 % of the trail's cells reach back over (trail_p90_time)
   double trail_length = 0.0;
   double trail_length_oldest = 0.0;  ///< [m] back to the trail's oldest cell (stale ones too)
@@ -105,7 +122,8 @@ struct OccupancyFrame {
 /// Means over the frames of one phase.
 struct OccupancyPhase {
   std::size_t frames = 0;
-  Scores object;  ///< mean of the per-frame scores (paper 3)
+  Scores object;       ///< mean of the per-frame scores (paper 3)
+  Scores object_late;  ///< the same with the map read one update late
   Scores master;
   double ghost_area = 0.0;           ///< [m^2] mean
   double ghost_area_max = 0.0;       ///< [m^2]

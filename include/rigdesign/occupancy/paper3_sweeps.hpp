@@ -1,13 +1,12 @@
 #pragma once
 /// Paper 3's parameter sweeps (Gomes, Oliveira, Santos, Tables 2-9; the numbers are in
 /// ../shared/DESIGN.md section 9): each sweep's settings as paper 3 varied them, with its
-/// reported scores, the mappers that run them here, and the trends the paper states, checked
-/// on the paper's own numbers and on ours.
+/// reported scores and the mappers that run them here (paper3_statements.hpp checks what the
+/// paper states on its numbers and on ours).
 ///
 /// Reference rows (the settings a sweep holds while varying one), inferred from the tables
 /// where the text does not say (docs/occupancy.md): OctoMap 0.1 m, hit 1, miss 0.4; SkiMap
 /// 0.1 m, the lowest minimum weight; Voxblox voxel 0.1 m, truncation 0.1 m, 1/z^2 weights.
-#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -40,12 +39,21 @@ struct Paper3Sweep {
   std::vector<Paper3Setting> rows;
 };
 
-/// What every mapper of the sweeps shares with the evaluation.
+/// What every mapper of the sweeps shares with the evaluation. Each peer's lowest marking
+/// height is its ROS front end's default, not the evaluation's min_height: octomap_server
+/// (filter_ground false, pointcloud_min_z -DBL_MAX) and voxblox_ros (no height filter) insert
+/// every point; skimap_ros's map service drops points with z < 0.01 m (camera_min_z) in the
+/// frame of the cloud it is given, here the cell's (docs/occupancy.md cites each).
 struct Paper3Common {
-  double min_height = 0.1;   ///< [m] lower points clear but never mark (never count: SkiMap)
+  double min_height = 0.1;   ///< [m] the evaluation's; kept for the names of older runs
   double z_max = 2.0;        ///< [m]
   double window_size = 6.0;  ///< [m] Voxblox's dense window
+  VoxbloxOccupiedRule voxblox_rule = VoxbloxOccupiedRule::occupied_nodes;
 };
+
+/// [m] skimap_ros's skimap_map_service camera_min_z default (m4nh/skimap_ros 9e2ce55,
+/// src/nodes/skimap_map_service.cpp L234-235, L315).
+inline constexpr double kSkiMapServiceMinZ = 0.01;
 
 /// octomap:resolution, octomap:hit, octomap:miss, skimap:resolution, skimap:min_weight,
 /// voxblox:resolution, voxblox:truncation, voxblox:const_weight (paper 3's table order).
@@ -59,25 +67,8 @@ std::unique_ptr<OccupancyMapper> make_paper3_mapper(const Paper3Setting& row,
                                                     std::span<const CellSensor> sensors);
 std::string paper3_mapper_name(const Paper3Setting& row);
 
-/// A trend paper 3 states, checked on its own table and on our run of the same sweep(s).
-struct Paper3Trend {
-  std::string statement;
-  std::string sweeps;  ///< the sweep(s) it reads
-  bool holds_in_paper = false;
-  bool holds_here = false;
-  std::string paper_detail;  ///< the numbers it was decided on
-  std::string our_detail;
-};
-
-/// Our scores of a row: the run whose mapper has the row's name; NaN scores when none.
-using RunLookup = std::function<const OccupancyRun*(const std::string& mapper_name)>;
-
-/// The trends whose sweeps are among `sweeps`: precision rising with voxel length (each
-/// mapper), OctoMap's recall peaking near 0.1 m and SkiMap's at 0.075-0.1 m, Voxblox's recall
-/// dropping below 0.15 m, a voxel/truncation ratio >= 1.5 beating 1 and 0.5, constant weight
-/// lowering Voxblox's recall, hit 1 best and miss 0.7 collapsing for OctoMap, and SkiMap
-/// keeping the actor's trail (more trail area shown than OctoMap at 0.1 m; no number in the paper,
-/// so "holds in paper" means stated).
-std::vector<Paper3Trend> paper3_trends(std::span<const Paper3Sweep> sweeps, const RunLookup& runs);
+/// The reference row of a mapper: the settings every sweep of it holds while varying one, with
+/// its front end's defaults (Paper3Common).
+Paper3Setting paper3_reference(Paper3Mapper mapper, const Paper3Common& common = {});
 
 }  // namespace rigdesign::occupancy

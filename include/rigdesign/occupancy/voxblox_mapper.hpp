@@ -15,9 +15,8 @@
 /// - points nearer than min_ray_length are dropped; farther than max_ray_length (and points
 ///   below min_height, the comparison's rule for ground) they only clear: the ray stops delta
 ///   before them;
-/// - a voxel is shown occupied when it has weight and |d| < occupied_band x voxel: Voxblox's
-///   own surface output (its surface_pointcloud) takes 0.75 voxel; which rule paper 3 used is
-///   not in its text (docs/occupancy.md discusses the choice).
+/// - the occupied set is one of voxblox_ros's own outputs (VoxbloxOccupiedRule); which one
+///   paper 3 read is not in its text (docs/occupancy.md).
 /// Only voxels inside the scored window are kept (a dense array): voxels outside never change
 /// one inside, since each voxel's update depends on its own ray geometry alone.
 #include <cstdint>
@@ -39,6 +38,19 @@ enum class DepthAxis {
   optical,
 };
 
+/// Which of voxblox_ros's outputs is the occupied set (ethz-asl/voxblox c8066b0,
+/// voxblox_ros/include/voxblox_ros/ptcloud_vis.h). Neither topic is published by default
+/// (tsdf_server.cc: publish_pointclouds false; only the mesh goes out), so paper 3 turned one on.
+enum class VoxbloxOccupiedRule {
+  /// The `occupied_nodes` markers: weight > 1e-3 and d <= one voxel (ptcloud_vis.h L282-290,
+  /// L431-440). Free space is clamped to d = +truncation, so with truncation <= voxel every
+  /// voxel a ray has crossed is "occupied".
+  occupied_nodes,
+  /// The `surface_pointcloud`: weight > 0 and |d| < 0.75 voxel (tsdf_server.cc L429-430,
+  /// ptcloud_vis.h L177-189); with truncation < 0.75 voxel the same fill.
+  surface_pointcloud,
+};
+
 struct VoxbloxParams {
   double voxel = 0.1;       ///< [m] tsdf_voxel_size (paper 3's reference row)
   double truncation = 0.1;  ///< [m] truncation_distance (paper 3's reference row, Tab. 8)
@@ -46,10 +58,10 @@ struct VoxbloxParams {
   double max_weight = 1e4;      ///< documented default
   double min_ray_length = 0.1;  ///< [m] documented default
   double max_ray_length = 5.0;  ///< [m] documented default
-  double occupied_band = 0.75;  ///< in voxels: |d| below this is occupied
-  double min_height = 0.1;      ///< [m] lower points only clear
-  double window_size = 6.0;     ///< [m] square window centred on the world origin
-  double z_max = 2.0;           ///< [m] top of the scored band
+  VoxbloxOccupiedRule occupied_rule = VoxbloxOccupiedRule::occupied_nodes;
+  double min_height = 0.1;   ///< [m] lower points only clear
+  double window_size = 6.0;  ///< [m] square window centred on the world origin
+  double z_max = 2.0;        ///< [m] top of the scored band
 };
 
 /// The TSDF itself, over the window's dense voxel array.
@@ -67,7 +79,7 @@ class VoxbloxTsdf {
   /// The voxel at a lattice key (x, y on the lattice, z layer from 0 m); a zero voxel outside
   /// the window.
   Voxel at(const costmap::VoxelKey& key) const;
-  /// Voxels with weight and |distance| < occupied_band x voxel, ascending.
+  /// The voxels `occupied_rule` shows, ascending.
   std::vector<costmap::VoxelKey> occupied() const;
   const VoxbloxParams& params() const { return params_; }
   /// [bytes] the dense window's distances and weights (Voxblox allocates 16^3 blocks only

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rigdesign/occupancy/paper3_sweeps.hpp"
+#include "rigdesign/occupancy/paper3_statements.hpp"
 
 namespace rigdesign::report {
 

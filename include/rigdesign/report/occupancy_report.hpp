@@ -23,7 +23,7 @@ struct OccupancyReport {
   double moving_until = 0.0;  ///< [s]
   int camera_stride = 1;
   int camera_pooling = 1;
-  occupancy::TruthKind truth = occupancy::TruthKind::sensor_points;
+  occupancy::TruthKind truth = occupancy::TruthKind::link_volumes;
   occupancy::ScoringRegion region = occupancy::ScoringRegion::hull;
   double object_margin = 0.0;  ///< [m], for the box-margin region
   std::vector<occupancy::OccupancyRun> runs;
