@@ -67,7 +67,9 @@ std::vector<BodyLink> person_links() {
                      Vec3(0, side * arm_y, kArmBottom - m), LinkShape::cylinder, kLimbRadius, 0,
                      0});
   }
-  links.push_back({"torso", Vec3(0, 0, kTorsoTop + m), Vec3(0, 0, kLegTop), LinkShape::prism, 0,
+  // The torso's volume reaches past its bottom face so that face lies inside it, not on its
+  // end cap, where rounding decides.
+  links.push_back({"torso", Vec3(0, 0, kTorsoTop + m), Vec3(0, 0, kLegTop - m), LinkShape::prism, 0,
                    kTorsoWidth + 2 * m, kTorsoDepth + 2 * m});
   links.push_back({"head", Vec3(0, 0, kTorsoTop), Vec3(0, 0, kBodyHeight + m), LinkShape::cylinder,
                    kHeadRadius + m, 0, 0});
