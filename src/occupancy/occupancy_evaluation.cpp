@@ -309,7 +309,8 @@ SensedFrame sense_frame(const model::Scene& scene, std::span<const CellSensor> s
   const std::vector<std::unique_ptr<StampedScene>> scenes = stamped_scenes(scene, stamps, scene_of);
   SensedFrame frame;
   frame.points = simulate_cell_clouds(scenes, scene_of, sensors, sensing, params, clouds);
-  const double fused = *std::max_element(stamps.begin(), stamps.end());
+  // The set's latest stamp; with no sensor, the tick itself.
+  const double fused = stamps.empty() ? tick : *std::max_element(stamps.begin(), stamps.end());
   frame.T_world_object = scene.moving.front().T_world_object(fused);
   frame.object_now.append(scene.moving.front().mesh, frame.T_world_object);
   if (params.truth == TruthKind::sensor_points)
