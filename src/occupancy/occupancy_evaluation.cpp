@@ -125,6 +125,9 @@ std::vector<costmap::VoxelKey> in_scored_band(std::vector<costmap::VoxelKey> key
 struct Tracking {
   TrailTracker trail;
   ChangeDelays delays;
+  // The scored voxels the mapper showed after its last update (none before the first): the map
+  // one update late, kept rather than asked for again before the next update.
+  std::vector<costmap::VoxelKey> shown_before;
 };
 
 void finish_phase(OccupancyPhase& phase, const std::vector<const OccupancyFrame*>& frames) {
@@ -389,14 +392,12 @@ void score_mapper_frame(OccupancyMapper& mapper, const LatticeTruth& truth, Trac
     return params.region == ScoringRegion::hull ? in_hull(shown, truth, in.hull)
                                                 : near_object(shown, truth, params.object_margin);
   };
-  frame.object_late = compare_voxel_sets(
-      candidates(in_scored_band(mapper.occupied(), truth.lattice, params.min_height)),
-      truth.object);
+  frame.object_late = compare_voxel_sets(candidates(tracking.shown_before), truth.object);
   const auto start = std::chrono::steady_clock::now();
   mapper.update(in.t, in.clouds, in.moving);
   frame.update_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::vector<costmap::VoxelKey> predicted =
+  std::vector<costmap::VoxelKey> predicted =
       in_scored_band(mapper.occupied(), truth.lattice, params.min_height);
   frame.object = compare_voxel_sets(candidates(predicted), truth.object);
   frame.misses = split_misses(predicted, truth.object, truth.seen);
@@ -417,6 +418,7 @@ void score_mapper_frame(OccupancyMapper& mapper, const LatticeTruth& truth, Trac
     frame.master_ghost_area = ghost_area(blocked, truth.dilated, truth.window.resolution);
   }
   run.frames.push_back(frame);
+  tracking.shown_before = std::move(predicted);
 }
 
 // The run's phases from its frames, and what the mapper's whole-window measures left pending.
@@ -476,7 +478,8 @@ std::vector<OccupancyRun> evaluate_occupancy(const model::Scene& scene,
     runs[m].resolution = truths[truth_of[m]].lattice.resolution;
     const costmap::GridWindow& window = truths[truth_of[m]].window;
     tracking.push_back({TrailTracker(window.size(), window.resolution * window.resolution),
-                        ChangeDelays(window.size())});
+                        ChangeDelays(window.size()),
+                        {}});
   }
   PathOdometer odometer;
   std::vector<model::PointCloud> clouds(sensors.size());

@@ -15,13 +15,14 @@ model::Vec3 width_axis(const model::Vec3& along) {
   return across.normalized();
 }
 
-// How far any point of the link's volume lies from its start joint: the box the cloud's points
-// are first tested against.
-double reach(const sim::BodyLink& link) {
+// How far any point of the link's volume lies from `centre`: the segment's farther joint
+// (a segment lies within its farther end's distance of any point) plus the volume's reach
+// across it.
+double reach_from(const sim::BodyLink& link, const model::Vec3& centre) {
   const double across = link.shape == sim::LinkShape::cylinder
                             ? link.radius
                             : 0.5 * std::hypot(link.width, link.depth);
-  return (link.end - link.start).norm() + across;
+  return std::max((link.start - centre).norm(), (link.end - centre).norm()) + across;
 }
 
 }  // namespace
@@ -47,11 +48,15 @@ std::vector<model::Vec3> points_in_links(std::span<const model::PointCloud> clou
                                          std::span<const sim::BodyLink> links) {
   std::vector<model::Vec3> inside;
   if (links.empty()) return inside;
-  double radius = 0.0;  // about the actor's origin, in its frame
-  for (const sim::BodyLink& link : links)
-    radius = std::max(radius, link.start.norm() + reach(link));
+  // A sphere holding every volume, about the middle of the joints' box (actor frame): the
+  // cloud's points outside it are passed over untransformed.
+  Eigen::AlignedBox3d joints;
+  for (const sim::BodyLink& link : links) joints.extend(link.start), joints.extend(link.end);
+  const model::Vec3 middle = joints.center();
+  double radius = 0.0;
+  for (const sim::BodyLink& link : links) radius = std::max(radius, reach_from(link, middle));
   const model::Pose3 T_actor_world = T_world_actor.inverse();
-  const model::Vec3 centre = T_world_actor.translation();
+  const model::Vec3 centre = T_world_actor * middle;
   for (const model::PointCloud& cloud : clouds) {
     for (const model::Point3f& point : cloud.points) {
       const model::Vec3 p = point.cast<double>();

@@ -246,10 +246,10 @@ std::optional<ReferenceRow> reference_row(std::span<const Paper3Sweep> sweeps, P
     Paper3Common common;
     common.voxblox_rule = sweep.rows.front().voxblox.occupied_rule;
     const std::string name = paper3_mapper_name(paper3_reference(mapper, common));
-    for (const Paper3Setting& row : sweep.rows) {
-      const OccupancyRun* run = runs(name);
-      if (paper3_mapper_name(row) == name && run) return ReferenceRow{row.paper, run};
-    }
+    const OccupancyRun* run = runs(name);
+    if (!run) continue;
+    for (const Paper3Setting& row : sweep.rows)
+      if (paper3_mapper_name(row) == name) return ReferenceRow{row.paper, run};
   }
   return std::nullopt;
 }
