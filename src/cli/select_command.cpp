@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -164,116 +165,166 @@ void check_written(report::SelectReport& report, const std::string& sensors_path
   }
 }
 
-int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
-  const std::optional<model::PoseTolerance> tolerance = tolerance_option(options.tolerance);
-  model::Catalog catalog = io::load_catalog(options.catalog);
-  const model::SensorLibrary library = load_catalog_library(catalog, options.sensors);
-  io::check_catalog_references(catalog, library).throw_if_errors();
-  const model::Requirements requirements = load_select_requirements(options, catalog);
-  // The requirements say how high the area to perceive reaches, as for a rig (cli/inputs).
-  if (requirements.area_height) {
-    if (catalog.body.area_height &&
-        std::abs(*catalog.body.area_height - *requirements.area_height) > 1e-9) {
-      out << model::to_string(requirements.area_height_where)
-          << ": area_height: warning: overrides the catalog's area_height "
-          << model::format_number(*catalog.body.area_height) << " m\n";
-    }
-    catalog.body.area_height = requirements.area_height;
+// The progress line every phase of select reports to: each phase with its own count and
+// clock, titled "select" before and after the relaxation steps and "select #N" within step N.
+class SelectProgress {
+ public:
+  explicit SelectProgress(std::ostream& err)
+      : line_(err, "select: loading", "inputs", ProgressLine::OffTerminal::plain_lines) {
+    line_.keep_alive(kProgressInterval);
   }
-  model::RelaxationPolicy policy;
-  if (!options.policy.empty()) {
-    policy = io::load_policy(options.policy);
-    select::check_policy(requirements, policy);  // a wrong step fails before any search
+  ProgressLine& line() { return line_; }
+  void set_prefix(std::string prefix) { prefix_ = std::move(prefix); }
+  select::ProgressSink sink() {
+    return [this](const select::PhaseProgress& at) { hear(at); };
   }
 
+ private:
+  // [s] between lines: issue 55 asks for one at least every 2 s on a loaded machine.
+  static constexpr double kProgressInterval = 1.0;
+
+  void hear(const select::PhaseProgress& at) {
+    const std::string title = prefix_ + ": " + at.phase;
+    if (at.finished) {
+      line_.finish(title, at.detail, at.seconds);
+      shown_phase_.clear();
+      return;
+    }
+    if (title != shown_phase_) {
+      line_.begin(title, at.unit);
+      shown_phase_ = title;
+    }
+    if (at.unit.empty()) {
+      line_.update_share(at.done, at.detail + ", share of the tree");
+    } else if (at.done < at.total) {  // the phase's end comes as `finished`
+      line_.update(at.done, at.total, at.detail);
+    }
+  }
+
+  ProgressLine line_;
+  std::string prefix_ = "select";
+  std::string shown_phase_;
+};
+
+// The inputs, loaded as the phase "loading" (the catalog with its robot description: xacro
+// expansion and collision meshes, the sensor library, the requirements, the policy).
+struct SelectInputs {
+  model::Catalog catalog;
+  model::SensorLibrary library;
+  model::Requirements requirements;
+  model::RelaxationPolicy policy;
+};
+
+SelectInputs load_select_inputs(const SelectOptions& options, const select::ProgressSink& progress,
+                                std::vector<select::PhaseTime>& phases, std::ostream& out) {
+  select::PhaseClock clock(phases, &progress);
+  clock.start("loading");
+  const double parts = options.policy.empty() ? 3 : 4;
+  progress({"loading", 0, parts, "inputs", "the catalog and its robot description"});
+  SelectInputs in{io::load_catalog(options.catalog), {}, {}, {}};
+  progress({"loading", 1, parts, "inputs", "the sensor library"});
+  in.library = load_catalog_library(in.catalog, options.sensors);
+  io::check_catalog_references(in.catalog, in.library).throw_if_errors();
+  progress({"loading", 2, parts, "inputs", "the requirements"});
+  in.requirements = load_select_requirements(options, in.catalog);
+  // The requirements say how high the area to perceive reaches, as for a rig (cli/inputs).
+  if (in.requirements.area_height) {
+    if (in.catalog.body.area_height &&
+        std::abs(*in.catalog.body.area_height - *in.requirements.area_height) > 1e-9) {
+      out << model::to_string(in.requirements.area_height_where)
+          << ": area_height: warning: overrides the catalog's area_height "
+          << model::format_number(*in.catalog.body.area_height) << " m\n";
+    }
+    in.catalog.body.area_height = in.requirements.area_height;
+  }
+  if (!options.policy.empty()) {
+    progress({"loading", 3, parts, "inputs", "the relaxation policy"});
+    in.policy = io::load_policy(options.policy);
+    select::check_policy(in.requirements, in.policy);  // a wrong step fails before any search
+  }
+  clock.stop(std::to_string(in.catalog.slots.size()) + " slots, " +
+             std::to_string(in.catalog.body.parts.size()) + " body parts of the description");
+  return in;
+}
+
+void print_tolerance_header(const model::PoseTolerance& tolerance, std::size_t poses,
+                            std::ostream& out) {
+  out << "Mounting tolerance: +-" << model::format_number(tolerance.xyz.x() * 1000) << ", "
+      << model::format_number(tolerance.xyz.y() * 1000) << ", "
+      << model::format_number(tolerance.xyz.z() * 1000) << " mm, +-"
+      << model::format_number(model::rad_to_deg(tolerance.rpy.x())) << ", "
+      << model::format_number(model::rad_to_deg(tolerance.rpy.y())) << ", "
+      << model::format_number(model::rad_to_deg(tolerance.rpy.z()))
+      << " deg on every mount: each option keeps the cells it sees at all " << poses
+      << " poses of its box, the winner is verified over the box on the exact path\n\n";
+}
+
+int run_select(const SelectOptions& options, std::ostream& out, std::ostream& err) {
+  const auto started = std::chrono::steady_clock::now();
+  const std::optional<model::PoseTolerance> tolerance = tolerance_option(options.tolerance);
+  SelectProgress progress(err);
+  const select::ProgressSink on_progress = progress.sink();
+  std::vector<select::PhaseTime> before;
+  SelectInputs in = load_select_inputs(options, on_progress, before, out);
+  const model::Catalog& catalog = in.catalog;
+  const model::Requirements& requirements = in.requirements;
   const std::string folder =
       options.out.empty() ? "selection/" + std::filesystem::path(options.catalog).stem().string()
                           : options.out;
   // Checked before the search, not after it; filled only when the run completes.
   io::StagedFolder staged(folder, "--out");
-  staged.refuse_inputs_inside({catalog.file, library.file, requirements.file, options.policy,
+  staged.refuse_inputs_inside({catalog.file, in.library.file, requirements.file, options.policy,
                                catalog.robot ? catalog.robot->description : std::string()});
   // Every option is rasterised at every angle before the search: bounded before that work.
-  const double options_total = checked_option_count(options, catalog);
+  checked_option_count(options, catalog);
 
   metrics::CoverageSettings settings;
   settings.step = model::deg_to_rad(options.step_deg);
   const std::size_t poses =
       1 + (tolerance && tolerance->any() ? metrics::tolerance_samples(*tolerance).size() : 0);
-  ProgressLine progress(err,
-                        "select: rasterising " + model::format_number(options_total) +
-                            " slot options" +
-                            (poses > 1 ? " at " + std::to_string(poses) + " poses each" : ""),
-                        "");
-  progress.update_share(0.0, "at " + model::format_number(options.step_deg) + " deg steps");
-  const select::SelectionSpace space(catalog, library, settings, tolerance);
-  // Every phase of every step (search, exact verification, refinement, robustness cost,
-  // binding requirements, files) shows with its own count and clock.
-  std::size_t step = 0;     // the relaxation steps shown
-  bool steps_done = false;  // then the binding-requirement probes and the files
-  std::string shown_phase;
-  const select::ProgressSink on_progress = [&](const select::PhaseProgress& at) {
-    const std::string title =
-        (steps_done ? std::string("select") : "select #" + std::to_string(step)) + ": " + at.phase;
-    if (at.finished) {
-      progress.finish(title, at.detail, at.seconds);
-      shown_phase.clear();
-      return;
-    }
-    if (title != shown_phase) {
-      progress.begin(title, at.unit);
-      shown_phase = title;
-    }
-    if (at.unit.empty()) {
-      progress.update_share(at.done, at.detail + ", share of the tree");
-    } else if (at.done < at.total) {  // the phase's end comes as `finished`
-      progress.update(at.done, at.total, at.detail);
-    }
-  };
-  report::SelectReport report{&catalog,
-                              space.option_count(),
-                              &requirements,
-                              &policy,
-                              options.budget,
-                              nullptr,
-                              {},
-                              {},
-                              space.left_out(),
-                              {},
-                              {},
-                              0,
-                              0,
-                              {}};
+  const select::SelectionSpace space(catalog, in.library, settings, tolerance, on_progress);
+  before.insert(before.end(), space.phases().begin(), space.phases().end());
+  report::SelectReport report;
+  report.catalog = &catalog;
+  report.option_count = space.option_count();
+  report.options_per_slot = space.options_per_slot();
+  report.requirements = &requirements;
+  report.policy = &in.policy;
+  report.budget = options.budget;
+  report.left_out = space.left_out();
+  report.before_phases = before;
   if (!options.json) {
     report::print_select_header(report, out);
-    if (tolerance && tolerance->any()) {
-      out << "Mounting tolerance: +-" << model::format_number(tolerance->xyz.x() * 1000) << ", "
-          << model::format_number(tolerance->xyz.y() * 1000) << ", "
-          << model::format_number(tolerance->xyz.z() * 1000) << " mm, +-"
-          << model::format_number(model::rad_to_deg(tolerance->rpy.x())) << ", "
-          << model::format_number(model::rad_to_deg(tolerance->rpy.y())) << ", "
-          << model::format_number(model::rad_to_deg(tolerance->rpy.z()))
-          << " deg on every mount: each option keeps the cells it sees at all " << poses
-          << " poses of its box, the winner is verified over the box on the exact path\n\n";
-    }
+    if (tolerance && tolerance->any()) print_tolerance_header(*tolerance, poses, out);
   }
+  std::size_t step = 0;  // the relaxation steps shown
+  progress.set_prefix("select #0");
   const select::RelaxationOutcome outcome = select::select_within_budget(
-      space, requirements, policy, options.budget,
+      space, requirements, in.policy, options.budget,
       [&](const select::RelaxationIteration& iteration) {
-        progress.clear();
+        progress.line().clear();
         // Each step is shown as its search ends, so a long loop shows its progress.
         if (!options.json) report::print_select_iteration(report, step, iteration, out);
         ++step;
-        steps_done = iteration.within_budget || step == policy.steps.size() + 1;
+        const bool steps_done = iteration.within_budget || step == in.policy.steps.size() + 1;
+        progress.set_prefix(steps_done ? "select" : "select #" + std::to_string(step));
       },
       on_progress);
   report.outcome = &outcome;
   report.files = staged.final_names(
       write_selection_files(report, space, staged, !options.no_renders, on_progress,
                             report.file_phases, report.deployment_warnings));
-  progress.clear();
   staged.commit();
-  check_written(report, space.library().file);
+  {
+    select::PhaseClock clock(report.after_phases, &on_progress);
+    clock.start("checking the files written");
+    on_progress({"checking the files written", 0, 1, "checks", "rig, requirements, deployment"});
+    check_written(report, space.library().file);
+    clock.stop(std::to_string(report.check_pass + report.check_fail) + " checks");
+  }
+  progress.line().clear();
+  report.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (options.json) {
     out << report::to_json(report).dump(2) << '\n';
   } else {

@@ -79,6 +79,20 @@ json iteration_json(const select::RelaxationIteration& it, const model::Catalog&
   item["ties"] = selection.search.ties;
   if (selection.refinement.tried) item["refinement"] = refinement_json(selection.refinement);
   item["coverage"] = to_json(selection.coverage, false);
+  // null: no rig with cheaper sensors meets the requirements (absent: not searched).
+  if (selection.cheaper_searched) item["cheaper_excluded"] = nullptr;
+  if (selection.cheaper_excluded) {
+    const select::ExcludedRig& rig = *selection.cheaper_excluded;
+    item["cheaper_excluded"] = {{"rig", describe(rig.chosen, catalog)},
+                                {"sensor_cost_usd", rig.sensor_cost},
+                                {"cpu_cores", rig.cpu},
+                                {"largest_cpu_cores", rig.largest_cpu},
+                                {"largest_cpu", rig.largest_cpu_id},
+                                {"bandwidth_bytes_per_s", rig.bandwidth},
+                                {"cpu_too_small", rig.cpu_too_small},
+                                {"transfer_too_small", rig.transfer_too_small},
+                                {"cost_with_hardware", cost_json(rig.cost)}};
+  }
   return item;
 }
 
@@ -106,19 +120,22 @@ json to_json(const SelectReport& report) {
                         {"reasons", reasons},
                         {"sensors_left_out", sensors}});
   }
-  return {{"budget", report.budget},
-          {"within_budget", outcome.within_budget},
-          {"poses_left_out", left_out},
-          {"check",
-           {{"command", report.check_command},
-            {"pass", report.check_pass},
-            {"fail", report.check_fail},
-            {"failures", report.check_failures}}},
-          {"iterations", iterations},
-          {"binding", binding},
-          {"phases", phases_json(outcome.phases)},
-          {"file_phases", phases_json(report.file_phases)},
-          {"files", report.files}};
+  return {
+      {"budget", report.budget},
+      {"within_budget", outcome.within_budget},
+      {"poses_left_out", left_out},
+      {"check",
+       {{"command", report.check_command},
+        {"pass", report.check_pass},
+        {"fail", report.check_fail},
+        {"failures", report.check_failures}}},
+      {"iterations", iterations},
+      {"binding", binding},
+      {"phases", phases_json(outcome.phases)},
+      {"file_phases", phases_json(report.file_phases)},
+      {"options_per_slot", report.options_per_slot},
+      {"time", {{"wall_seconds", report.wall_seconds}, {"phases", phases_json(time_rows(report))}}},
+      {"files", report.files}};
 }
 
 }  // namespace rigdesign::report

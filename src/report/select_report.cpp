@@ -24,6 +24,21 @@ const select::RelaxationIteration* chosen_iteration(const select::RelaxationOutc
   return nullptr;
 }
 
+std::vector<select::PhaseTime> time_rows(const SelectReport& report) {
+  std::vector<select::PhaseTime> rows = report.before_phases;
+  if (report.outcome != nullptr) {
+    const select::RelaxationOutcome& outcome = *report.outcome;
+    for (std::size_t i = 0; i < outcome.iterations.size(); ++i) {
+      for (const select::PhaseTime& phase : outcome.iterations[i].selection.phases)
+        rows.push_back({"#" + std::to_string(i) + " " + phase.phase, phase.work, phase.seconds});
+    }
+    rows.insert(rows.end(), outcome.phases.begin(), outcome.phases.end());
+  }
+  rows.insert(rows.end(), report.file_phases.begin(), report.file_phases.end());
+  rows.insert(rows.end(), report.after_phases.begin(), report.after_phases.end());
+  return rows;
+}
+
 std::string usd(double value) {
   return fixed(value, 0) + " USD";
 }
@@ -77,14 +92,47 @@ std::string describe(const select::PoseRefinement& refinement) {
 }
 
 std::string describe(const select::Selection& selection, const model::Catalog& catalog) {
+  return describe(selection.chosen, catalog);
+}
+
+std::string describe(const std::vector<const select::CatalogOption*>& chosen,
+                     const model::Catalog& catalog) {
   std::string text;
-  for (const select::CatalogOption* option : selection.chosen) {
+  for (const select::CatalogOption* option : chosen) {
     const model::MountingSlot& slot = catalog.slots[option->slot];
     text +=
         (text.empty() ? "" : ", ") + slot.id + ": " + option->sensor->id + "/" + option->mode->id;
     const std::string& label = slot.poses[option->pose].label;
     if (!label.empty()) text += " at " + label;
   }
+  return text;
+}
+
+std::string describe_excluded(const select::ExcludedRig& rig, const select::CostBreakdown& chosen,
+                              double budget, const model::Catalog& catalog) {
+  std::string text = "a rig with " + usd(rig.sensor_cost) + " of sensors meets the requirements (" +
+                     describe(rig.chosen, catalog) + ") but ";
+  std::vector<std::string> limits;
+  if (rig.cpu_too_small) {
+    limits.push_back("needs " + model::format_number(rig.cpu, 3) +
+                     " core-equivalents of CPU; the catalog's largest CPU, " + rig.largest_cpu_id +
+                     ", carries " + model::format_number(rig.largest_cpu, 3));
+  }
+  if (rig.transfer_too_small) {
+    limits.push_back(
+        rig.per_sensor_transfer_missing
+            ? std::string("a sensor of it sends more than any per-sensor transfer component of "
+                          "the catalog carries")
+            : "sends " + model::format_number(rig.bandwidth * 8 / 1e9, 3) +
+                  " Gbit/s; the catalog's transfer carries at most " +
+                  model::format_number(rig.transfer_bottleneck / 1e9, 3) + " Gbit/s (" +
+                  rig.transfer_bottleneck_id + ")");
+  }
+  if (!limits.empty()) return text + model::join(limits, ", and ");
+  text += "with the CPU and transfer it needs (CPU " + rig.cost.cpu_id + " " + usd(rig.cost.cpu) +
+          ", transfer " + rig.cost.transfer_id + " " + usd(rig.cost.transfer) + ") it costs " +
+          usd(rig.cost.total) + ", not less than this rig's " + usd(chosen.total);
+  if (rig.cost.total > budget) text += " (and over the budget of " + usd(budget) + ")";
   return text;
 }
 

@@ -20,6 +20,16 @@ void print_found_rig(const SelectReport& report, const select::RelaxationIterati
       << selection.cost.cpu_id << ")  "
       << (iteration.within_budget ? "WITHIN BUDGET" : "over budget") << '\n';
   out << "      " << describe(selection, *report.catalog) << '\n';
+  if (selection.cheaper_excluded) {
+    out << "      why not cheaper: "
+        << describe_excluded(*selection.cheaper_excluded, selection.cost, report.budget,
+                             *report.catalog)
+        << '\n';
+  } else if (selection.cheaper_searched) {
+    out << "      no rig with cheaper sensors meets the requirements"
+        << (iteration.targets.robustness ? " and survives the failures" : "")
+        << ", even with free, unlimited CPU and transfer\n";
+  }
   for (const select::FailureImpact& failure : selection.failures) {
     out << "      survives: " << failure.failure << " (every sector still met on the exact path)\n";
   }
@@ -49,6 +59,12 @@ void print_phases(const std::vector<select::PhaseTime>& phases, const std::strin
 }
 
 void print_search_effort(const select::Selection& selection, std::ostream& out) {
+  if (selection.search.nodes == 0) {  // ruled out before any search: nothing was proven
+    out << "    search: none ran (the cause above was found before it)\n";
+    print_phases(selection.phases, "    ", out);
+    out << '\n';
+    return;
+  }
   out << "    search: " << selection.search.nodes << " nodes, " << selection.search.evaluations
       << " rigs evaluated, " << fixed(selection.seconds, 2) << " s ("
       << selection.search.coverage_classes << " coverage classes for "
@@ -63,6 +79,27 @@ void print_search_effort(const select::Selection& selection, std::ostream& out) 
   out << '\n';
   print_phases(selection.phases, "    ", out);
   out << '\n';
+}
+
+// Issue 55: where the whole command's wall time went, phase by phase, and how much of it
+// the phases account for (the rest is the report itself and the glue between phases).
+void print_time_table(const SelectReport& report, std::ostream& out) {
+  const std::vector<select::PhaseTime> rows = time_rows(report);
+  if (rows.empty() || !(report.wall_seconds > 0)) return;
+  using Align = TextTable::Align;
+  TextTable table;
+  table.add_column("phase", Align::left);
+  table.add_column("s", Align::right);
+  table.add_column("% of wall", Align::right);
+  double sum = 0.0;
+  for (const select::PhaseTime& row : rows) {
+    sum += row.seconds;
+    table.add_row(
+        {row.phase, fixed(row.seconds, 2), fixed(100 * row.seconds / report.wall_seconds, 1)});
+  }
+  out << "\nWhere the time went (wall " << fixed(report.wall_seconds, 2) << " s; the phases sum to "
+      << fixed(sum, 2) << " s, " << fixed(100 * sum / report.wall_seconds, 1) << " %)\n";
+  table.print(out, "  ");
 }
 
 void print_trace_table(const select::RelaxationOutcome& outcome, std::ostream& out) {
@@ -103,7 +140,13 @@ void print_chosen(const SelectReport& report, const select::RelaxationIteration&
 // The policy ran out: the cheapest rig found, if any, and the requirements that bind.
 void print_exhausted(const SelectReport& report, const select::RelaxationIteration* cheapest,
                      std::ostream& out) {
-  out << "\nThe policy is exhausted: no rig within " << usd(report.budget) << ".\n";
+  if (report.policy->steps.empty()) {  // no policy: nothing was relaxed, nothing exhausted
+    out << "\nNo rig within " << usd(report.budget)
+        << (cheapest == nullptr ? " (no rig meets the requirements at any cost)" : "")
+        << "; no relaxation policy was given (--policy).\n";
+  } else {
+    out << "\nThe policy is exhausted: no rig within " << usd(report.budget) << ".\n";
+  }
   if (cheapest != nullptr) {
     out << "Cheapest rig found (" << usd(cheapest->selection.cost.total)
         << "): " << describe(cheapest->selection, *report.catalog) << '\n';
@@ -131,6 +174,12 @@ void print_select_header(const SelectReport& report, std::ostream& out) {
   out << "Catalog: " << catalog.name << " (" << catalog.file << "): " << catalog.slots.size()
       << " slots, " << catalog.sensors.size() << " candidate sensors, " << report.option_count
       << " slot options\n";
+  if (report.options_per_slot.size() == catalog.slots.size()) {
+    out << "Options per slot (poses left in x modes allowed):";
+    for (std::size_t k = 0; k < catalog.slots.size(); ++k)
+      out << (k == 0 ? " " : ", ") << catalog.slots[k].id << " " << report.options_per_slot[k];
+    out << '\n';
+  }
   if (!report.left_out.empty()) {
     out << "Left out before the search, a sensor's data origin inside the body or its housing "
            "cutting into it (a rig with them could not be built):\n";
@@ -184,6 +233,7 @@ void print_select_summary(const SelectReport& report, std::ostream& out) {
     }
     for (const std::string& warning : report.deployment_warnings) out << warning << '\n';
   }
+  print_time_table(report, out);
 }
 
 }  // namespace rigdesign::report

@@ -80,10 +80,20 @@ class BranchAndBound {
     }
     union_.assign(words, 0);
     scratch_.assign(words, 0);
+    unmet_.resize(slots + 1);
+    angle_bits_.resize(slots);
+    for (std::size_t k = 0; k < slots; ++k) {
+      for (std::size_t o = 0; o < problem.slots[k].size(); ++o) {
+        std::vector<std::uint64_t> bits((angles + 63) / 64, 0);
+        for (const int a : classes_.span(k, o))
+          bits[static_cast<std::size_t>(a) / 64] |= std::uint64_t{1} << (a % 64);
+        angle_bits_[k].push_back(std::move(bits));
+      }
+    }
     counts_.assign(angles, {});
     choice_.assign(slots, -1);
     position_.assign(slots, 0);
-    result_.cost.total = kNoBound;
+    result_.cost.total = problem.cost_below;
   }
 
   SearchResult run() {
@@ -362,7 +372,8 @@ class BranchAndBound {
     // No catalog CPU or transfer item carries the least load a completion adds.
     if (!std::isfinite(least_cost) || least_cost > result_.cost.total + kCostTie) return false;
     // No completion is cheaper than the incumbent: only wider margins can win.
-    return !result_.found || least_cost < result_.cost.total - kCostTie || may_widen_margins(depth);
+    return !result_.found || least_cost < result_.cost.total - kCostTie ||
+           (problem_.widen_margins && may_widen_margins(depth));
   }
 
   // Whether the chosen sensors and every option of slots depth.. together meet `need`.
@@ -373,6 +384,53 @@ class BranchAndBound {
     if (have.cells + rest.cells < need.cells || have.floor + rest.floor < need.floor) return false;
     return classes_.reaches(need.angle, rest_[depth].data(), union_.data(), have,
                             {need.cells, need.floor});
+  }
+
+  // The needs still unmet, with the least addition from slots `next`.. each asks for,
+  // dearest first: a child that leaves one of them unmet must still buy its addition.
+  struct Deficit {
+    std::size_t angle = 0;
+    LeastAddition addition;
+  };
+  void unmet_needs(std::size_t next, std::vector<Deficit>& unmet) const {
+    unmet.clear();
+    if (next > problem_.slots.size()) return;
+    for (const Need& need : needs_) {
+      const CellCounts& have = counts_[need.angle];
+      const bool cells = have.cells < need.cells;
+      const bool floor = have.floor < need.floor;
+      if (!cells && !floor) continue;
+      LeastAddition adds{0, 0, 0};
+      if (cells) adds = adds.most(cheapest_cells_[next][need.angle]);
+      if (floor) adds = adds.most(cheapest_floor_[next][need.angle]);
+      unmet.push_back({need.angle, adds});
+    }
+    std::sort(unmet.begin(), unmet.end(), [](const Deficit& x, const Deficit& y) {
+      return x.addition.price > y.addition.price;
+    });
+  }
+
+  // Whether adding option o of slot `depth` cannot lead to a rig for no more than the
+  // incumbent, decided before adding it: o covers nothing at the dearest unmet need it does
+  // not reach, so every completion through o still buys that need's least addition (what
+  // promising() would find at the child, without merging o's coverage first).
+  bool cut_before_adding(std::size_t depth, int o, const RigLoad& load,
+                         const std::vector<Deficit>& unmet) const {
+    if (unmet.empty() || !result_.found) return false;
+    const std::vector<std::uint64_t>& reaches = angle_bits_[depth][static_cast<std::size_t>(o)];
+    const auto missed = std::find_if(unmet.begin(), unmet.end(), [&](const Deficit& d) {
+      return ((reaches[d.angle / 64] >> (d.angle % 64)) & 1U) == 0;
+    });
+    if (missed == unmet.end()) return false;
+    const SearchOption& option = problem_.slots[depth][o];
+    RigLoad bound = load;
+    bound.sensor_cost += option.price + missed->addition.price;
+    bound.per_sensor_transfer += option.transfer_price;
+    bound.bandwidth += option.bandwidth + missed->addition.bandwidth;
+    bound.cpu += option.cpu + missed->addition.cpu;
+    ++bound.sensors;
+    const double least_cost = total_cost(bound, problem_.transfer, problem_.cpus);
+    return !std::isfinite(least_cost) || least_cost > result_.cost.total + kCostTie;
   }
 
   void report_progress(std::size_t depth) {
@@ -393,14 +451,19 @@ class BranchAndBound {
     // No transfer item or CPU carries this load: none carries a larger one either.
     // An equal cost is explored too: it may hold a rig with a larger margin.
     if (!std::isfinite(cost) || cost > result_.cost.total + kCostTie) return;
+    // Without the margins' tie-break an equal cost is no better than the incumbent.
+    if (!problem_.widen_margins && result_.found && cost > result_.cost.total - kCostTie) return;
     // A feasible rig needs nothing more: any addition costs more.
     if (just_added && evaluate(load, cost)) return;
     if (depth == problem_.slots.size() || !promising(depth, load)) return;
+    std::vector<Deficit>& unmet = unmet_[depth];
+    unmet_needs(depth + 1, unmet);
     for (std::size_t i = 0; i < order_[depth].size(); ++i) {
       const int o = order_[depth][i];
       const SearchOption& option = problem_.slots[depth][o];
       position_[depth] = static_cast<int>(i);
       if (clashes_with_choice(depth, o)) continue;
+      if (cut_before_adding(depth, o, load, unmet)) continue;
       choice_[depth] = o;
       add(depth, o);
       RigLoad next = load;
@@ -439,6 +502,9 @@ class BranchAndBound {
   std::vector<int> choice_;
   std::vector<int> position_;
   std::vector<std::size_t> tightest_;  // the incumbent's tightest need per sector
+  std::vector<std::vector<std::vector<std::uint64_t>>>
+      angle_bits_;                           // per option: its span's angles
+  std::vector<std::vector<Deficit>> unmet_;  // per depth: scratch
   // Per slot, per option: the (slot, option) pairs of earlier slots whose housings overlap
   // it, and whether it overlaps any option at all.
   std::vector<std::vector<std::vector<std::pair<int, int>>>> clashes_;

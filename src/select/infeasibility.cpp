@@ -6,6 +6,7 @@
 
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/units.hpp"
+#include "select/hardware_limits.hpp"
 #include "select/search_rules.hpp"
 
 namespace rigdesign::select {
@@ -77,58 +78,6 @@ std::optional<std::string> uncoverable_sector(const SearchProblem& problem,
   return std::nullopt;
 }
 
-// The CPU load and bandwidth of a search's rig.
-RigLoad load_of(const SearchProblem& problem, const SearchResult& result) {
-  RigLoad load;
-  for (std::size_t k = 0; k < result.choice.size(); ++k) {
-    if (result.choice[k] < 0) continue;
-    const SearchOption& option = problem.slots[k][result.choice[k]];
-    load.cpu += option.cpu;
-    load.bandwidth += option.bandwidth;
-    load.per_sensor_transfer += option.transfer_price;
-  }
-  return load;
-}
-
-double largest_capacity(const std::vector<model::PricedCapacity>& items, std::string& id) {
-  double largest = 0.0;
-  for (const model::PricedCapacity& item : items) {
-    if (item.capacity > largest) {
-      largest = item.capacity;
-      id = item.id;
-    }
-  }
-  return largest;
-}
-
-// The most a rig can send: each shared transfer kind carries up to its largest item (eq. 4
-// buys one of each), so the kind whose largest item is smallest bounds it; `id` names that
-// item. Kinds bought per sensor bound each sensor, not the rig (their prices are the options').
-double transfer_bottleneck(const std::vector<model::PricedCapacity>& items, std::string& id) {
-  double bottleneck = kUnbounded;
-  bool first = true;
-  for (std::size_t begin = 0; begin < items.size();) {
-    std::size_t end = begin;
-    while (end < items.size() && items[end].kind == items[begin].kind) ++end;
-    if (items[begin].per_sensor) {
-      begin = end;
-      continue;
-    }
-    std::string kind_id;
-    const double largest = largest_capacity(
-        std::vector<model::PricedCapacity>(items.begin() + static_cast<std::ptrdiff_t>(begin),
-                                           items.begin() + static_cast<std::ptrdiff_t>(end)),
-        kind_id);
-    if (first || largest < bottleneck) {
-      bottleneck = largest;
-      id = kind_id;
-      first = false;
-    }
-    begin = end;
-  }
-  return bottleneck;
-}
-
 }  // namespace
 
 std::string infeasibility_cause(const SearchProblem& problem,
@@ -136,11 +85,7 @@ std::string infeasibility_cause(const SearchProblem& problem,
                                 const SatisficingTargets& targets, const SelectionSpace& space) {
   if (auto metric = unmet_metric(options, targets)) return *metric;
   if (auto sector = uncoverable_sector(problem, targets, space)) return *sector;
-  SearchProblem unlimited = problem;
-  unlimited.transfer = {{"unlimited", kUnbounded, 0.0, {}, {}}};
-  unlimited.cpus = {{"unlimited", kUnbounded, 0.0, {}, {}}};
-  for (std::vector<SearchOption>& slot : unlimited.slots)
-    for (SearchOption& option : slot) option.transfer_price = 0.0;  // per-sensor cables too
+  const SearchProblem unlimited = with_unlimited_hardware(problem);
   const bool robust = problem.robustness.any();
   const std::string which =
       robust ? "meeting the requirements and surviving the failures" : "meeting the requirements";

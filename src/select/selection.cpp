@@ -4,17 +4,20 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <thread>
 
 #include "rigdesign/geometry/cross_section.hpp"
 #include "rigdesign/geometry/housing_clearance.hpp"
+#include "rigdesign/geometry/mount_placement.hpp"
 #include "rigdesign/metrics/failure_coverage.hpp"
 #include "rigdesign/model/format_number.hpp"
 #include "rigdesign/model/parallel_for.hpp"
 #include "rigdesign/model/units.hpp"
 #include "rigdesign/select/pose_refinement.hpp"
+#include "select/excluded_rig.hpp"
 #include "select/infeasibility.hpp"
 #include "select/search_rules.hpp"
 
@@ -126,6 +129,7 @@ struct CheapestSearch {
   bool verify();
   void accept();
   void robustness_cost();
+  void cheaper_rig(CheaperRigSearch& beside);
   void explain_infeasible();
 };
 
@@ -150,6 +154,8 @@ bool CheapestSearch::search(const std::vector<std::vector<int>>& excluded) {
                                 : "search " + std::to_string(excluded.size() + 1) +
                                       " (raster winners the exact path rejected excluded)";
   clock.start(phase);
+  // Shown before the coverage classes are built, which takes a while on large catalogs.
+  if (progress) progress({phase, 0, 1, "", "0 nodes"});
   selection.search = branch_and_bound(problem, excluded, search_progress_for(progress, phase));
   clock.stop(std::to_string(selection.search.nodes) + " nodes, " +
              std::to_string(selection.search.evaluations) + " rigs evaluated");
@@ -221,11 +227,27 @@ void CheapestSearch::accept() {
   }
 }
 
+// Issue 55 item 3: the cheapest rig that meets the coverage and sensor requirements with
+// free, unlimited CPU and transfer, when it is cheaper than the one chosen: the user sees
+// what ruled it out instead of guessing. Its search ran beside the main one; this phase is
+// the wait for it.
+void CheapestSearch::cheaper_rig(CheaperRigSearch& beside) {
+  const std::string phase = "why not cheaper (waiting for its search beside the main one)";
+  clock.start(phase);
+  if (progress)
+    progress({phase, 0, 1, "searches", "a search with free, unlimited CPU and transfer"});
+  selection.cheaper_excluded = beside.result(kept, selection.cost);
+  selection.cheaper_searched = true;
+  clock.stop(selection.cheaper_excluded ? "a rig with cheaper sensors lost on CPU or transfer"
+                                        : "no rig with cheaper sensors meets the requirements");
+}
+
 // What robustness costs: the cheapest rig of a search without it.
 void CheapestSearch::robustness_cost() {
   SearchProblem plain = problem;
   plain.robustness = {};
   clock.start("robustness cost");
+  if (progress) progress({"robustness cost (search without it)", 0, 1, "", "0 nodes"});
   const SearchResult without = branch_and_bound(
       plain, {}, search_progress_for(progress, "robustness cost (search without it)"));
   clock.stop("a search without robustness: " + std::to_string(without.nodes) + " nodes");
@@ -379,7 +401,8 @@ SatisficingTargets satisficing_targets(const model::Requirements& requirements) 
 
 SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::SensorLibrary& library,
                                const metrics::CoverageSettings& settings,
-                               const std::optional<model::PoseTolerance>& tolerance)
+                               const std::optional<model::PoseTolerance>& tolerance,
+                               const ProgressSink& progress)
     : catalog_(&catalog), library_(&library), settings_(settings), tolerance_(tolerance) {
   const geometry::BodyOccluder body(catalog.body);
   const int angles = std::max(1, static_cast<int>(std::lround(kSelectionTwoPi / settings.step)));
@@ -391,18 +414,33 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
         {std::max(1, static_cast<int>(std::ceil(frames.back().width() / settings.raster_cell))),
          std::max(1, static_cast<int>(std::ceil(frames.back().h / settings.raster_cell)))});
   }
+  place_options(progress);
+  rasterise_options(body, frames, progress);
+}
+
+// Every slot pose and sensor that can be bolted on: the pose not inside the body, the
+// housing not cutting into it; each mode an option with its metrics.
+void SelectionSpace::place_options(const ProgressSink& progress) {
+  const model::Catalog& catalog = *catalog_;
+  PhaseClock clock(phases_, &progress);
+  clock.start("placing");
+  double poses_total = 0;
+  for (const model::MountingSlot& slot : catalog.slots)
+    poses_total += static_cast<double>(slot.poses.size());
+  if (progress) progress({"placing", 0, poses_total, "slot poses", "inside the body?"});
   options_.resize(catalog.slots.size());
   BuriedPoses buried = find_buried_poses(catalog);
   std::vector<std::map<std::string, std::size_t>> sensor_reasons(catalog.slots.size());
-  std::vector<CatalogOption*> all;
+  double poses_done = 0;
   for (std::size_t k = 0; k < catalog.slots.size(); ++k) {
     const model::MountingSlot& slot = catalog.slots[k];
     const double distance = slot.distance_of_interest.value_or(catalog.distance_of_interest);
     for (std::size_t p = 0; p < slot.poses.size(); ++p) {
+      if (progress) progress({"placing", poses_done++, poses_total, "slot poses", "housings"});
       if (buried.buried[k][p]) continue;
       for (const model::CandidateSensor& candidate : catalog.sensors) {
         if (!slot_allows(slot, candidate.sensor_id)) continue;
-        const model::Sensor* sensor = library.find(candidate.sensor_id);
+        const model::Sensor* sensor = library_->find(candidate.sensor_id);
         model::Mount mount;
         mount.id = slot.id;
         mount.T_robot_sensor = seated_pose(*sensor, slot.poses[p].T_robot_sensor, slot.seat);
@@ -429,14 +467,36 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
     }
   }
   left_out_ = with_sensor_reasons(catalog, std::move(buried.left_out), sensor_reasons);
+  clock.stop(model::format_number(poses_total) + " slot poses tested against the body, " +
+             std::to_string(option_count()) + " options left");
+}
+
+// Every option's sections at every angle, on every core; with a tolerance only the cells
+// seen at every pose of the box.
+void SelectionSpace::rasterise_options(const geometry::BodyOccluder& body,
+                                       const std::vector<geometry::SectionFrame>& frames,
+                                       const ProgressSink& progress) {
+  const model::Catalog& catalog = *catalog_;
+  PhaseClock clock(phases_, &progress);
+  clock.start("rasterising");
+  std::vector<CatalogOption*> all;
   for (auto& slot : options_)
     for (CatalogOption& option : slot) all.push_back(&option);
+  const double total = static_cast<double>(all.size());
   // The poses each option is rasterised at: the nominal one, and the tolerance box's samples.
   std::vector<metrics::PoseError> errors = {metrics::PoseError{}};
   if (tolerance_ && tolerance_->any()) {
     for (const metrics::PoseError& error : metrics::tolerance_samples(*tolerance_))
       errors.push_back(error);
   }
+  const std::string detail =
+      std::to_string(grids_.size()) + " angles each" +
+      (errors.size() > 1 ? ", " + std::to_string(errors.size()) + " poses of the tolerance box"
+                         : std::string());
+  if (progress) progress({"rasterising", 0, total, "options", detail});
+  std::mutex heard;  // the sink hears one thread at a time
+  std::size_t done = 0;
+  const int angles = static_cast<int>(grids_.size());
   const int threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
   model::parallel_for(all.size(), threads, [&](std::size_t i) {
     CatalogOption& option = *all[i];
@@ -461,7 +521,17 @@ SelectionSpace::SelectionSpace(const model::Catalog& catalog, const model::Senso
     }
     option.sections =
         std::make_shared<const std::vector<geometry::SectionRaster>>(std::move(sections));
+    const std::lock_guard<std::mutex> lock(heard);
+    ++done;
+    if (progress) progress({"rasterising", static_cast<double>(done), total, "options", detail});
   });
+  clock.stop(std::to_string(all.size()) + " options, " + detail);
+}
+
+std::vector<std::size_t> SelectionSpace::options_per_slot() const {
+  std::vector<std::size_t> counts;
+  for (const auto& slot : options_) counts.push_back(slot.size());
+  return counts;
 }
 
 std::size_t SelectionSpace::option_count() const {
@@ -570,7 +640,11 @@ Selection select_cheapest(const SelectionSpace& space, const model::Requirements
   metrics::CoverageSettings exact = space.settings();
   exact.exact = true;
   CheapestSearch search{space, targets, progress, probe, problem, kept, selection, exact};
+  std::optional<CheaperRigSearch> beside;
+  if (!probe) beside.emplace(problem);
   search.run();
+  if (selection.found && beside) search.cheaper_rig(*beside);
+  beside.reset();  // stopped if the main search found no rig
   if (problem.robustness.any() && !probe) search.robustness_cost();
   if (!selection.found && selection.infeasible_reason.empty()) search.explain_infeasible();
   return finish();

@@ -328,4 +328,10 @@ TEST_CASE(
   CHECK(result.out.find("the sector 'front' needs slot 'front': without it every other option "
                         "together covers 0 %") != std::string::npos);
   CHECK(result.out.find("budget is below") == std::string::npos);
+  // Issue 55: nothing was searched and no policy given: nothing is "proven optimal", no
+  // policy "exhausted".
+  CHECK(result.out.find("proven optimal") == std::string::npos);
+  CHECK(result.out.find("policy is exhausted") == std::string::npos);
+  CHECK(result.out.find("search: none ran") != std::string::npos);
+  CHECK(result.out.find("no relaxation policy was given") != std::string::npos);
 }

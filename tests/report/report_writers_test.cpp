@@ -266,7 +266,11 @@ TEST_CASE("select: a relaxation trace gives the same costs in text, JSON and HTM
                                     "rigdesign check out/chosen_rig.yaml --requirements x",
                                     30,
                                     1,
-                                    {"B2 housing clear of body and sensors: front: cuts 3 mm"}};
+                                    {"B2 housing clear of body and sensors: front: cuts 3 mm"},
+                                    {},
+                                    {},
+                                    {},
+                                    0.0};
 
   CHECK(report::chosen_iteration(outcome) == &relaxed);
   CHECK(report::describe(relaxed.targets) == "F >= 10 Hz, R <= 150 mm");

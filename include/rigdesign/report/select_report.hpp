@@ -32,7 +32,19 @@ struct SelectReport {
   std::size_t check_pass = 0;
   std::size_t check_fail = 0;
   std::vector<std::string> check_failures;
+  /// Issue 55: per slot (catalog order), the options it gave after the poses left out.
+  std::vector<std::size_t> options_per_slot;
+  /// The phases before the relaxation loop (loading, placing, rasterising) and after the
+  /// files (checking them), and the whole command's wall time, so the report says where
+  /// every second went.
+  std::vector<select::PhaseTime> before_phases;
+  std::vector<select::PhaseTime> after_phases;
+  double wall_seconds = 0.0;
 };
+
+/// Every phase of the run in order: before the loop, each step's ("#1 search"), the binding
+/// probes, the files and after them; their seconds sum to about the wall time.
+std::vector<select::PhaseTime> time_rows(const SelectReport& report);
 
 /// The iteration whose rig is written: the first within budget, else the last that found a
 /// rig (the cheapest found); null when none did.
@@ -49,6 +61,15 @@ std::string describe(const select::SatisficingTargets& targets);
 
 /// The chosen rig: per slot its sensor/mode and, for a pose range, the pose chosen.
 std::string describe(const select::Selection& selection, const model::Catalog& catalog);
+
+/// Options of a rig, as describe(Selection) names them.
+std::string describe(const std::vector<const select::CatalogOption*>& chosen,
+                     const model::Catalog& catalog);
+
+/// Issue 55 item 3: why the cheaper rig lost against the chosen rig of cost `chosen`: the
+/// CPU or transfer it needs beyond the catalog's, or what its CPU and transfer cost.
+std::string describe_excluded(const select::ExcludedRig& rig, const select::CostBreakdown& chosen,
+                              double budget, const model::Catalog& catalog);
 
 /// The axes the refinement moved, the smallest margin before and after, and its verdict.
 std::string describe(const select::PoseRefinement& refinement);

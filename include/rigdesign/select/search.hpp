@@ -14,6 +14,7 @@
 /// to the sector thresholds wins, then the largest next smallest (leximin over the sectors'
 /// margins), so a pose range's most robust pose is chosen, not the first found.
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -69,6 +70,12 @@ struct SearchProblem {
   std::vector<model::PricedCapacity> transfer;
   std::vector<model::PricedCapacity> cpus;
   std::vector<geometry::RasterGrid> grids;  ///< per angle
+  /// Only rigs cheaper than this [USD] are of interest: the cost bound starts here instead of
+  /// at +infinity (a search for a cheaper rig than one already known).
+  double cost_below = std::numeric_limits<double>::infinity();
+  /// Among rigs of equal cost, search on for the largest margins (leximin); false: the first
+  /// cheapest rig found is the answer (a search that asks only what the cheapest rig costs).
+  bool widen_margins = true;
 };
 
 /// A rig the search found meeting every requirement, for the cost-versus-coverage Pareto plot.

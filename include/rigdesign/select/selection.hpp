@@ -58,12 +58,15 @@ std::size_t count_catalog_options(const model::Catalog& catalog);
 /// (metrics::tolerance_samples): a union of such rasters is seen wherever in their boxes the
 /// mounts sit (at the samples), so a rig the search accepts meets the sectors over the box,
 /// and the search's leximin tie-break prefers the poses whose worst case keeps the largest
-/// margins. Options are rasterised on every core.
+/// margins. Options are rasterised on every core. `progress` hears two phases: "placing"
+/// (slot poses and housings tested against the body, counted in slot poses) and
+/// "rasterising" (counted in options, heard from one thread at a time).
 class SelectionSpace {
  public:
   SelectionSpace(const model::Catalog& catalog, const model::SensorLibrary& library,
                  const metrics::CoverageSettings& settings = {},
-                 const std::optional<model::PoseTolerance>& tolerance = {});
+                 const std::optional<model::PoseTolerance>& tolerance = {},
+                 const ProgressSink& progress = {});
 
   const model::Catalog& catalog() const { return *catalog_; }
   const model::SensorLibrary& library() const { return *library_; }
@@ -74,6 +77,10 @@ class SelectionSpace {
   std::size_t option_count() const;
   /// The slot poses left out before rasterising: the sensor would be inside the body.
   const std::vector<LeftOutPoses>& left_out() const { return left_out_; }
+  /// How long placing and rasterising took, in order.
+  const std::vector<PhaseTime>& phases() const { return phases_; }
+  /// Per slot, how many options it gave (its poses left in times the modes allowed there).
+  std::vector<std::size_t> options_per_slot() const;
   /// Every option, per slot (before any requirement filters them).
   const std::vector<std::vector<CatalogOption>>& options() const { return options_; }
   double angle(std::size_t index) const;
@@ -95,6 +102,12 @@ class SelectionSpace {
   std::vector<geometry::RasterGrid> grids_;
   std::vector<std::vector<CatalogOption>> options_;  // per slot
   std::vector<LeftOutPoses> left_out_;
+  std::vector<PhaseTime> phases_;
+
+  void place_options(const ProgressSink& progress);
+  void rasterise_options(const geometry::BodyOccluder& body,
+                         const std::vector<geometry::SectionFrame>& frames,
+                         const ProgressSink& progress);
 };
 
 /// One failure the chosen rig was checked against (exact path) and the sectors it breaks.
@@ -128,6 +141,27 @@ struct PoseRefinement {
   std::vector<FailureImpact> failures;        ///< with robustness: its failures on the exact path
 };
 
+/// Issue 55 item 3: a rig cheaper than the chosen one in its sensors that meets the
+/// coverage and sensor requirements (and survives the failures asked), but that the
+/// catalog's CPUs or transfer rule out, or whose CPU and transfer cost more than they save.
+/// The cheapest such rig, from a search with the CPU and transfer free and unlimited.
+struct ExcludedRig {
+  std::vector<const CatalogOption*> chosen;  ///< its options
+  double sensor_cost = 0.0;                  ///< [USD] sensors and supports
+  double cpu = 0.0;                          ///< U [core-equivalents] it needs
+  double largest_cpu = 0.0;                  ///< the catalog's largest CPU [core-equivalents]
+  std::string largest_cpu_id;
+  double bandwidth = 0.0;            ///< B [bytes/s] it sends
+  double transfer_bottleneck = 0.0;  ///< [bit/s] the most the catalog's transfer carries
+  std::string transfer_bottleneck_id;
+  /// Some sensor of it needs a per-sensor transfer component the catalog does not have.
+  bool per_sensor_transfer_missing = false;
+  bool cpu_too_small = false;       ///< no catalog CPU carries U
+  bool transfer_too_small = false;  ///< no catalog transfer carries B (or a sensor's share)
+  /// With the catalog's CPU and transfer (feasible false: they cannot carry it).
+  CostBreakdown cost;
+};
+
 struct Selection {
   bool found = false;
   std::string infeasible_reason;  ///< when nothing can meet the requirements
@@ -149,6 +183,10 @@ struct Selection {
   PoseRefinement refinement;
   model::Rig grid_rig;
   std::vector<PhaseTime> phases;  ///< what ran, in order, and how long
+  /// Why a cheaper rig lost (found rigs only, not in probes); none: no cheaper rig meets the
+  /// coverage and sensor requirements even with free, unlimited CPU and transfer.
+  std::optional<ExcludedRig> cheaper_excluded;
+  bool cheaper_searched = false;  ///< that search ran (not in probes, not without a rig)
 };
 
 /// The sectors a robust rig must keep after a failure: the targets' with relaxed thresholds.
