@@ -405,6 +405,9 @@ class BranchAndBound {
       if (floor) adds = adds.most(cheapest_floor_[next][need.angle]);
       unmet.push_back({need.angle, adds});
     }
+    robust_unmet_.clear();
+    robust_->append_unmet(next, robust_unmet_);
+    for (const auto& [angle, adds] : robust_unmet_) unmet.push_back({angle, adds});
     std::sort(unmet.begin(), unmet.end(), [](const Deficit& x, const Deficit& y) {
       return x.addition.price > y.addition.price;
     });
@@ -505,6 +508,7 @@ class BranchAndBound {
   std::vector<std::vector<std::vector<std::uint64_t>>>
       angle_bits_;                           // per option: its span's angles
   std::vector<std::vector<Deficit>> unmet_;  // per depth: scratch
+  mutable std::vector<std::pair<std::size_t, LeastAddition>> robust_unmet_;  // scratch
   // Per slot, per option: the (slot, option) pairs of earlier slots whose housings overlap
   // it, and whether it overlaps any option at all.
   std::vector<std::vector<std::vector<std::pair<int, int>>>> clashes_;

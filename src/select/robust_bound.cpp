@@ -155,4 +155,17 @@ LeastAddition RobustBound::least_addition(std::size_t depth) const {
   return extra;
 }
 
+void RobustBound::append_unmet(std::size_t depth,
+                               std::vector<std::pair<std::size_t, LeastAddition>>& unmet) const {
+  for (std::size_t i = 0; i < needs_.size(); ++i) {
+    const LeastAddition extra =
+        extra_for(needs_[i].cells, coverers_cells_[i], surviving_cells_[i],
+                  cheapest_cells_[depth][i])
+            .most(extra_for(needs_[i].floor, coverers_floor_[i], surviving_floor_[i],
+                            cheapest_floor_[depth][i]));
+    if (extra.price > 0 || extra.bandwidth > 0 || extra.cpu > 0 || !extra.possible())
+      unmet.emplace_back(needs_[i].angle, extra);
+  }
+}
+
 }  // namespace rigdesign::select

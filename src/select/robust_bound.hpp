@@ -11,6 +11,7 @@
 //   a condition, one that survives the condition. A node with fewer must still buy such
 //   options of distinct undecided slots: at least their least price, bandwidth and load.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "rigdesign/select/class_coverage.hpp"
@@ -40,6 +41,12 @@ class RobustBound {
   /// The least price, bandwidth and CPU load any surviving completion of a node at `depth`
   /// still adds, part by part (not possible(): none exists).
   LeastAddition least_addition(std::size_t depth) const;
+
+  /// Per need still short of covering sensors, its angle and the least a surviving
+  /// completion of a node at `depth` adds for it: a child that adds an option covering
+  /// nothing at that angle still adds at least that.
+  void append_unmet(std::size_t depth,
+                    std::vector<std::pair<std::size_t, LeastAddition>>& unmet) const;
 
  private:
   // One of an option's covers at a need's angle: anything of the cells, of the floor.

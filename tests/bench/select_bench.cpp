@@ -11,7 +11,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "rigdesign/io/config/catalog_loader.hpp"
@@ -167,6 +169,68 @@ void BM_SelectRobust(benchmark::State& state) {
   state.counters["nodes"] = static_cast<double>(selection.search.nodes);
 }
 
+// Issue 55: the Jackal description catalog made finer, for the growth from about 150 to
+// more than 1,000 options (counted after the poses the body or a housing rules out): the
+// bundled steps (131 options), the issue's 579-option catalog (front pitch 1.25 deg, yaw
+// -10/0/10 deg; rear pitch 1.25 deg; sides 5 deg: 375 left), and a finer one (front yaw every
+// 2.5 deg, rear yaw every 5 deg, sides 2.5 deg: 1,215 left).
+std::string jackal_catalog(int size) {
+  std::ifstream in(RIGDESIGN_SOURCE_DIR "/rigs/catalogs/jackal_pose_ranges.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const bool finest = size > 579;
+  const std::pair<std::string, std::string> edits[] = {
+      {"sensor_library: ../../sensors.yaml",
+       "sensor_library: " RIGDESIGN_SOURCE_DIR "/sensors.yaml"},
+      {"description: ../robots/", "description: " RIGDESIGN_SOURCE_DIR "/rigs/robots/"},
+      {"package_paths: [../robots]", "package_paths: [" RIGDESIGN_SOURCE_DIR "/rigs/robots]"},
+      {"rpy_deg: [0, {min: 0, max: 40, step: 2.5}, 0]}",
+       std::string("rpy_deg: [0, {min: 0, max: 40, step: 1.25}, {min: -10, max: 10, step: ") +
+           (finest ? "2.5" : "10") + "}]}"},
+      {"rpy_deg: [0, {min: 0, max: 40, step: 2.5}, 180]}",
+       finest ? "rpy_deg: [0, {min: 0, max: 40, step: 1.25}, {min: 170, max: 190, step: 5}]}"
+              : "rpy_deg: [0, {min: 0, max: 40, step: 1.25}, 180]}"},
+      {"{min: 0, max: 40, step: 10}, 90]",
+       finest ? "{min: 0, max: 40, step: 2.5}, 90]" : "{min: 0, max: 40, step: 5}, 90]"},
+      {"{min: 0, max: 40, step: 10}, -90]",
+       finest ? "{min: 0, max: 40, step: 2.5}, -90]" : "{min: 0, max: 40, step: 5}, -90]"}};
+  for (std::size_t i = 0; i < std::size(edits); ++i) {
+    if (size <= 171 && i >= 3) break;  // the bundled steps
+    const std::size_t at = yaml.find(edits[i].first);
+    if (at == std::string::npos) throw std::runtime_error("bench catalog: no " + edits[i].first);
+    yaml.replace(at, edits[i].first.size(), edits[i].second);
+  }
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("rigdesign_bench_jackal_" + std::to_string(size) + ".yaml"))
+                               .string();
+  std::ofstream(path) << yaml;
+  return path;
+}
+
+// The whole search side of `select` on the Jackal's description (no files written): load the
+// catalog with its xacro and meshes, place and rasterise every option, search, verify,
+// refine, and the search for a cheaper rig beside it. Arg: 171, 579 or 1000 (see above).
+void BM_SelectJackalGrowth(benchmark::State& state) {
+  const std::string file = jackal_catalog(static_cast<int>(state.range(0)));
+  const model::SensorLibrary library =
+      io::load_sensor_library(RIGDESIGN_SOURCE_DIR "/sensors.yaml");
+  const model::Requirements requirements =
+      io::load_requirements(RIGDESIGN_SOURCE_DIR "/rigs/requirements/jackal.yaml");
+  std::size_t options = 0;
+  select::Selection selection;
+  for (auto _ : state) {
+    model::Catalog catalog = io::load_catalog(file);
+    catalog.body.area_height = requirements.area_height;
+    const select::SelectionSpace space(catalog, library);
+    options = space.option_count();
+    selection = select::select_cheapest(space, requirements);
+  }
+  state.counters["options"] = static_cast<double>(options);
+  state.counters["nodes"] = static_cast<double>(selection.search.nodes);
+  state.counters["cost_usd"] = selection.found ? selection.cost.total : 0.0;
+}
+
 void BM_BruteForce(benchmark::State& state) {
   select::SearchResult result;
   for (auto _ : state) result = select::brute_force(bundled().problem);
@@ -204,6 +268,14 @@ BENCHMARK(BM_SelectPoseRanges159)
     ->Repetitions(3)
     ->ReportAggregatesOnly();
 BENCHMARK(BM_SelectJackalDescription171)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
+BENCHMARK(BM_SelectJackalGrowth)
+    ->Arg(171)
+    ->Arg(579)
+    ->Arg(1000)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Repetitions(3)
