@@ -165,7 +165,7 @@ model::Catalog load_catalog(const std::string& path) {
     slot.id = io::ros_name(reader, "id", "a slot id (the chosen rig's mount id)");
     if (auto pose = reader.map("pose", Need::required,
                                "a map with xyz and rpy_deg (numbers or ranges), or urdf_link")) {
-      slot.poses = io::read_pose_set(*pose, urdf, slot.ranges);
+      slot.poses = io::read_pose_set(*pose, urdf, catalog.body.parts, slot.ranges);
       for (model::SlotPose& candidate : slot.poses) {
         const io::MountLink link{candidate.urdf_link, candidate.urdf_link_optical,
                                  candidate.housing_link};

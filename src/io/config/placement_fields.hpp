@@ -75,8 +75,35 @@ std::string read_housing(MapReader& pose, const MountLink& link, const model::De
 /// six numbers, `{min: 0, max: 40, step: 5}`: every combination of their values, in order
 /// (x, y, z, roll, pitch, yaw; the last varying fastest). Errors at the range for min > max,
 /// a step <= 0, a step that does not divide max - min, or more than kMaxSlotPoses poses.
+/// Or a position swept along a path (issue 55 item 4, read_pose_sweep) with rpy_deg as here.
 std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<RobotLinks>& robot,
+                                           const std::vector<model::BodyPart>& parts,
                                            std::vector<model::PoseAxisRange>& ranges);
+
+/// One element of xyz or rpy_deg: a number, or a range {min, max, step} (in the file's unit,
+/// m or deg) whose step divides max - min; no values after an error (recorded on `pose`).
+struct PoseAxisValues {
+  std::vector<double> values;
+  bool varies = false;
+};
+PoseAxisValues read_pose_axis(MapReader& pose, const YAML::Node& element, const std::string& field);
+
+/// A slot pose whose position sweeps a path instead of xyz (issue 55 item 4), each position
+/// with every orientation rpy_deg gives (numbers or ranges):
+/// - `along: {from: [x, y, z], to: [x, y, z], step: m}`: points of the segment, `step` apart
+///   (it must divide the length, so `to` is one of them);
+/// - `arc: {centre: [x, y, z], radius: m, from_deg: a, to_deg: b, step_deg: s,
+///   face_outward: true}`: points of a horizontal arc about `centre` (azimuths a, a + s, ...,
+///   b); facing outward (the default) the yaw is the azimuth plus rpy_deg's yaw;
+/// - `on_link: {link: NAME, face: top|bottom|front|back|left|right, edge: FACE, step: m,
+///   inset: m}`: points 1 mm proud of a face of the box bounding the link's collision geometry
+///   (robot frame: front +x, left +y, top +z), `step` apart on both of the face's axes and `inset`
+///   in from its edges; with `edge`, only the face's edge shared with that face.
+/// Only rpy_deg's ranges become the slot's ranges (the refinement moves the orientation, not
+/// the position along the path). `parts`: the description's collision geometry.
+std::vector<model::SlotPose> read_pose_sweep(MapReader& pose,
+                                             const std::vector<model::BodyPart>& parts,
+                                             std::vector<model::PoseAxisRange>& ranges);
 
 /// Most poses one slot may offer: each costs a raster per angle in memory (about 0.2 MB).
 inline constexpr std::size_t kMaxSlotPoses = 400;

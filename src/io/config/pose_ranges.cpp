@@ -14,14 +14,11 @@ namespace {
 constexpr const char* kRange =
     "a number, or a range {min: a, max: b, step: s} with s > 0 dividing b - a";
 
-struct Axis {
-  std::vector<double> values;  // in the file's unit (m or deg)
-  bool varies = false;
-};
+}  // namespace
 
-// One element of xyz or rpy_deg: a finite number or a range; empty values after an error.
-Axis read_axis(MapReader& pose, const YAML::Node& element, const std::string& field) {
-  Axis axis;
+PoseAxisValues read_pose_axis(MapReader& pose, const YAML::Node& element,
+                              const std::string& field) {
+  PoseAxisValues axis;
   const model::SourceLocation at = location_of(element, pose.file());
   if (element.IsScalar()) {
     double value = 0.0;
@@ -73,6 +70,8 @@ Axis read_axis(MapReader& pose, const YAML::Node& element, const std::string& fi
   return axis;
 }
 
+namespace {
+
 bool holds_range(const YAML::Node& list) {
   if (!list.IsSequence()) return false;
   for (const YAML::Node& element : list) {
@@ -84,7 +83,10 @@ bool holds_range(const YAML::Node& list) {
 }  // namespace
 
 std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<RobotLinks>& robot,
+                                           const std::vector<model::BodyPart>& parts,
                                            std::vector<model::PoseAxisRange>& ranges) {
+  if (pose.has("along") || pose.has("arc") || pose.has("on_link"))
+    return read_pose_sweep(pose, parts, ranges);
   const YAML::Node xyz = pose.node("xyz");
   const YAML::Node rpy = pose.node("rpy_deg");
   if (!holds_range(xyz) && !holds_range(rpy)) {
@@ -93,7 +95,7 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
         read_pose(pose, robot, &link), "", {}, link.name, link.optical, link.housing};
     return {single};
   }
-  std::vector<Axis> axes(6);
+  std::vector<PoseAxisValues> axes(6);
   bool valid = true;
   for (const auto& [key, node, first] :
        {std::tuple{"xyz", xyz, 0}, std::tuple{"rpy_deg", rpy, 3}}) {
@@ -111,7 +113,8 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
       continue;
     }
     for (int i = 0; i < 3; ++i) {
-      axes[first + i] = read_axis(pose, node[i], pose.field(key) + "[" + std::to_string(i) + "]");
+      axes[first + i] =
+          read_pose_axis(pose, node[i], pose.field(key) + "[" + std::to_string(i) + "]");
       valid = valid && !axes[first + i].values.empty();
     }
   }
@@ -122,7 +125,7 @@ std::vector<model::SlotPose> read_pose_set(MapReader& pose, const std::optional<
   pose.reject_unknown_keys();
   if (!valid) return {model::SlotPose{}};
   double poses_named = 1.0;  // at most 400^6 = 4.1e15 (axes are bounded above): exact in double
-  for (const Axis& axis : axes) poses_named *= static_cast<double>(axis.values.size());
+  for (const PoseAxisValues& axis : axes) poses_named *= static_cast<double>(axis.values.size());
   if (poses_named > static_cast<double>(kMaxSlotPoses)) {
     pose.require(false, "xyz", model::format_number(poses_named, 3) + " poses in one slot",
                  "at most " + std::to_string(kMaxSlotPoses) + " (coarser steps, or more slots)");
