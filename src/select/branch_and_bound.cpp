@@ -354,9 +354,7 @@ class BranchAndBound {
     LeastAddition extra;
     for (const Need& need : needs_) {
       if (!reachable(depth, need)) return false;
-      const CellCounts& have = counts_[need.angle];
-      if (have.cells < need.cells) extra = extra.most(cheapest_cells_[depth][need.angle]);
-      if (have.floor < need.floor) extra = extra.most(cheapest_floor_[depth][need.angle]);
+      extra = extra.most(still_adds(depth, need));
     }
     // A surviving rig meets the after-failure thresholds before any failure too.
     for (const Need& need : robust_->needs())
@@ -386,29 +384,24 @@ class BranchAndBound {
                             {need.cells, need.floor});
   }
 
-  // The needs still unmet, with the least addition from slots `next`.. each asks for,
-  // dearest first: a child that leaves one of them unmet must still buy its addition.
-  struct Deficit {
-    std::size_t angle = 0;
-    LeastAddition addition;
-  };
-  void unmet_needs(std::size_t next, std::vector<Deficit>& unmet) const {
+  // What `need` still asks a completion from slots `depth`.. to add: nothing once it is met.
+  LeastAddition still_adds(std::size_t depth, const Need& need) const {
+    const CellCounts& have = counts_[need.angle];
+    LeastAddition adds;
+    if (have.cells < need.cells) adds = adds.most(cheapest_cells_[depth][need.angle]);
+    if (have.floor < need.floor) adds = adds.most(cheapest_floor_[depth][need.angle]);
+    return adds;
+  }
+
+  // The needs still unmet (plain, and robustness needs short of covering sensors), each with
+  // what it asks of slots `next`.., dearest first.
+  void unmet_needs(std::size_t next, std::vector<UnmetNeed>& unmet) const {
     unmet.clear();
-    if (next > problem_.slots.size()) return;
     for (const Need& need : needs_) {
-      const CellCounts& have = counts_[need.angle];
-      const bool cells = have.cells < need.cells;
-      const bool floor = have.floor < need.floor;
-      if (!cells && !floor) continue;
-      LeastAddition adds{0, 0, 0};
-      if (cells) adds = adds.most(cheapest_cells_[next][need.angle]);
-      if (floor) adds = adds.most(cheapest_floor_[next][need.angle]);
-      unmet.push_back({need.angle, adds});
+      if (!met(counts_[need.angle], need)) unmet.push_back({need.angle, still_adds(next, need)});
     }
-    robust_unmet_.clear();
-    robust_->append_unmet(next, robust_unmet_);
-    for (const auto& [angle, adds] : robust_unmet_) unmet.push_back({angle, adds});
-    std::sort(unmet.begin(), unmet.end(), [](const Deficit& x, const Deficit& y) {
+    robust_->append_unmet(next, unmet);
+    std::sort(unmet.begin(), unmet.end(), [](const UnmetNeed& x, const UnmetNeed& y) {
       return x.addition.price > y.addition.price;
     });
   }
@@ -418,10 +411,10 @@ class BranchAndBound {
   // not reach, so every completion through o still buys that need's least addition (what
   // promising() would find at the child, without merging o's coverage first).
   bool cut_before_adding(std::size_t depth, int o, const RigLoad& load,
-                         const std::vector<Deficit>& unmet) const {
+                         const std::vector<UnmetNeed>& unmet) const {
     if (unmet.empty() || !result_.found) return false;
     const std::vector<std::uint64_t>& reaches = angle_bits_[depth][static_cast<std::size_t>(o)];
-    const auto missed = std::find_if(unmet.begin(), unmet.end(), [&](const Deficit& d) {
+    const auto missed = std::find_if(unmet.begin(), unmet.end(), [&](const UnmetNeed& d) {
       return ((reaches[d.angle / 64] >> (d.angle % 64)) & 1U) == 0;
     });
     if (missed == unmet.end()) return false;
@@ -459,7 +452,7 @@ class BranchAndBound {
     // A feasible rig needs nothing more: any addition costs more.
     if (just_added && evaluate(load, cost)) return;
     if (depth == problem_.slots.size() || !promising(depth, load)) return;
-    std::vector<Deficit>& unmet = unmet_[depth];
+    std::vector<UnmetNeed>& unmet = unmet_[depth];
     unmet_needs(depth + 1, unmet);
     for (std::size_t i = 0; i < order_[depth].size(); ++i) {
       const int o = order_[depth][i];
@@ -506,9 +499,8 @@ class BranchAndBound {
   std::vector<int> position_;
   std::vector<std::size_t> tightest_;  // the incumbent's tightest need per sector
   std::vector<std::vector<std::vector<std::uint64_t>>>
-      angle_bits_;                           // per option: its span's angles
-  std::vector<std::vector<Deficit>> unmet_;  // per depth: scratch
-  mutable std::vector<std::pair<std::size_t, LeastAddition>> robust_unmet_;  // scratch
+      angle_bits_;                             // per option: its span's angles
+  std::vector<std::vector<UnmetNeed>> unmet_;  // per depth: scratch
   // Per slot, per option: the (slot, option) pairs of earlier slots whose housings overlap
   // it, and whether it overlaps any option at all.
   std::vector<std::vector<std::vector<std::pair<int, int>>>> clashes_;

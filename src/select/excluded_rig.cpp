@@ -53,8 +53,7 @@ std::optional<ExcludedRig> CheaperRigSearch::result(
   rig.cost = rig_cost(load, problem_.transfer, problem_.cpus);
   rig.cpu_too_small = cheapest_exceeding(problem_.cpus, load.cpu) == nullptr;
   // The transfer alone: with the free, unlimited CPU it still carries nothing.
-  rig.transfer_too_small =
-      !rig_cost(load, problem_.transfer, with_unlimited_hardware(problem_).cpus).feasible;
+  rig.transfer_too_small = !rig_cost(load, problem_.transfer, unlimited_capacity()).feasible;
   return rig;
 }
 

@@ -60,10 +60,14 @@ double transfer_bottleneck(const std::vector<model::PricedCapacity>& items, std:
   return bottleneck;
 }
 
+std::vector<model::PricedCapacity> unlimited_capacity() {
+  return {{"unlimited", kNoLimit, 0.0, {}, {}}};
+}
+
 SearchProblem with_unlimited_hardware(const SearchProblem& problem) {
   SearchProblem unlimited = problem;
-  unlimited.transfer = {{"unlimited", kNoLimit, 0.0, {}, {}}};
-  unlimited.cpus = {{"unlimited", kNoLimit, 0.0, {}, {}}};
+  unlimited.transfer = unlimited_capacity();
+  unlimited.cpus = unlimited_capacity();
   for (std::vector<SearchOption>& slot : unlimited.slots)
     for (SearchOption& option : slot) option.transfer_price = 0.0;  // per-sensor cables too
   return unlimited;

@@ -22,6 +22,9 @@ double largest_capacity(const std::vector<model::PricedCapacity>& items, std::st
 /// that item. +infinity when only per-sensor kinds (or none) exist.
 double transfer_bottleneck(const std::vector<model::PricedCapacity>& items, std::string& id);
 
+/// One free item of unlimited capacity: a CPU or transfer list that carries any load.
+std::vector<model::PricedCapacity> unlimited_capacity();
+
 /// `problem` with one free CPU and one free transfer item of unlimited capacity and no
 /// per-sensor transfer price: its cost is the sensors' alone.
 SearchProblem with_unlimited_hardware(const SearchProblem& problem);

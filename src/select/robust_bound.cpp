@@ -143,28 +143,24 @@ LeastAddition RobustBound::extra_for(std::int64_t needed, int coverers, int surv
   return extra;
 }
 
+LeastAddition RobustBound::need_extra(std::size_t depth, std::size_t i) const {
+  return extra_for(needs_[i].cells, coverers_cells_[i], surviving_cells_[i],
+                   cheapest_cells_[depth][i])
+      .most(extra_for(needs_[i].floor, coverers_floor_[i], surviving_floor_[i],
+                      cheapest_floor_[depth][i]));
+}
+
 LeastAddition RobustBound::least_addition(std::size_t depth) const {
   LeastAddition extra;
-  for (std::size_t i = 0; i < needs_.size(); ++i) {
-    extra = extra
-                .most(extra_for(needs_[i].cells, coverers_cells_[i], surviving_cells_[i],
-                                cheapest_cells_[depth][i]))
-                .most(extra_for(needs_[i].floor, coverers_floor_[i], surviving_floor_[i],
-                                cheapest_floor_[depth][i]));
-  }
+  for (std::size_t i = 0; i < needs_.size(); ++i) extra = extra.most(need_extra(depth, i));
   return extra;
 }
 
-void RobustBound::append_unmet(std::size_t depth,
-                               std::vector<std::pair<std::size_t, LeastAddition>>& unmet) const {
+void RobustBound::append_unmet(std::size_t depth, std::vector<UnmetNeed>& unmet) const {
   for (std::size_t i = 0; i < needs_.size(); ++i) {
-    const LeastAddition extra =
-        extra_for(needs_[i].cells, coverers_cells_[i], surviving_cells_[i],
-                  cheapest_cells_[depth][i])
-            .most(extra_for(needs_[i].floor, coverers_floor_[i], surviving_floor_[i],
-                            cheapest_floor_[depth][i]));
+    const LeastAddition extra = need_extra(depth, i);
     if (extra.price > 0 || extra.bandwidth > 0 || extra.cpu > 0 || !extra.possible())
-      unmet.emplace_back(needs_[i].angle, extra);
+      unmet.push_back({needs_[i].angle, extra});
   }
 }
 

@@ -11,7 +11,6 @@
 //   a condition, one that survives the condition. A node with fewer must still buy such
 //   options of distinct undecided slots: at least their least price, bandwidth and load.
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "rigdesign/select/class_coverage.hpp"
@@ -42,11 +41,9 @@ class RobustBound {
   /// still adds, part by part (not possible(): none exists).
   LeastAddition least_addition(std::size_t depth) const;
 
-  /// Per need still short of covering sensors, its angle and the least a surviving
-  /// completion of a node at `depth` adds for it: a child that adds an option covering
-  /// nothing at that angle still adds at least that.
-  void append_unmet(std::size_t depth,
-                    std::vector<std::pair<std::size_t, LeastAddition>>& unmet) const;
+  /// Each need still short of covering sensors, with the least a surviving completion of a
+  /// node at `depth` adds for it.
+  void append_unmet(std::size_t depth, std::vector<UnmetNeed>& unmet) const;
 
  private:
   // One of an option's covers at a need's angle: anything of the cells, of the floor.
@@ -63,6 +60,8 @@ class RobustBound {
   };
   LeastAddition extra_for(std::int64_t needed, int coverers, int surviving,
                           const Cheapest& cheapest) const;
+  // What need i still asks a completion of a node at `depth` to add, cells and floor.
+  LeastAddition need_extra(std::size_t depth, std::size_t i) const;
 
   const SearchProblem& problem_;
   const ClassCoverage& classes_;

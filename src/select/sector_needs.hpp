@@ -61,4 +61,11 @@ struct LeastAddition {
   }
 };
 
+// A need not yet met at a search node, and the least a completion still adds for it: a child
+// that adds an option covering nothing at `angle` still adds at least `addition`.
+struct UnmetNeed {
+  std::size_t angle = 0;
+  LeastAddition addition;
+};
+
 }  // namespace rigdesign::select

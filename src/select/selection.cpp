@@ -102,9 +102,11 @@ std::optional<std::string> catalog_mismatch(const model::Catalog& catalog,
   return std::nullopt;
 }
 
-// A search's progress reported as the phase `phase`.
+// A search's progress reported as the phase `phase`, which starts now: shown before the
+// search builds its coverage classes, which takes a while on large catalogs.
 std::function<void(const SearchProgress&)> search_progress_for(const ProgressSink& progress,
                                                                const std::string& phase) {
+  if (progress) progress({phase, 0, 1, "", "0 nodes"});
   return [&progress, phase](const SearchProgress& at) {
     if (progress) progress({phase, at.fraction, 1.0, "", std::to_string(at.nodes) + " nodes"});
   };
@@ -154,8 +156,6 @@ bool CheapestSearch::search(const std::vector<std::vector<int>>& excluded) {
                                 : "search " + std::to_string(excluded.size() + 1) +
                                       " (raster winners the exact path rejected excluded)";
   clock.start(phase);
-  // Shown before the coverage classes are built, which takes a while on large catalogs.
-  if (progress) progress({phase, 0, 1, "", "0 nodes"});
   selection.search = branch_and_bound(problem, excluded, search_progress_for(progress, phase));
   clock.stop(std::to_string(selection.search.nodes) + " nodes, " +
              std::to_string(selection.search.evaluations) + " rigs evaluated");
@@ -247,7 +247,6 @@ void CheapestSearch::robustness_cost() {
   SearchProblem plain = problem;
   plain.robustness = {};
   clock.start("robustness cost");
-  if (progress) progress({"robustness cost (search without it)", 0, 1, "", "0 nodes"});
   const SearchResult without = branch_and_bound(
       plain, {}, search_progress_for(progress, "robustness cost (search without it)"));
   clock.stop("a search without robustness: " + std::to_string(without.nodes) + " nodes");
